@@ -1,0 +1,387 @@
+package org.skinlab.collada;
+
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.Deque;
+import java.util.HashMap;
+import java.util.IdentityHashMap;
+import java.util.List;
+import java.util.Map;
+
+import org.skinlab.model.AnimationChannel;
+import org.skinlab.model.AnimationClip;
+import org.skinlab.model.Interpolation;
+import org.skinlab.model.KeyframeTrack;
+import org.skinlab.model.Node;
+import org.skinlab.model.TransformElement;
+
+/**
+ * Reads {@code <library_animations>} (nested {@code <animation>}s included) into channels that
+ * drive transform values of scene nodes, and groups them into clips: one per
+ * {@code <animation_clip>}, or one clip over all channels when the file has none.
+ *
+ * <p>Target syntax handled: {@code node/sid} (the whole element), {@code node/sid.X|Y|Z|ANGLE}
+ * (also {@code .W}), {@code node/sid(i)} and, for matrices, {@code node/sid(i)(j)}, which selects
+ * column i of row j (the reading of three.js and assimp; the value index in the row-major element
+ * is {@code 4 * j + i}).
+ *
+ * <p>Lenient (with a warning): channels whose target is not a transform of a scene node (a
+ * material, a node outside the visual scene, an unknown sid or member) are skipped; CARDINAL and
+ * BSPLINE keys and BEZIER/HERMITE keys without tangents are read as LINEAR; a keyed matrix whose
+ * bottom row is not (0 0 0 1) keeps its values (the bottom row is ignored when evaluated).
+ * Refused: a sampler whose INPUT and OUTPUT disagree in key count, OUTPUT or tangent widths that
+ * do not fit the target, decreasing key times, and dangling sampler or clip references.
+ */
+final class AnimationLoader {
+    private final ImportContext ctx;
+    private final List<Node> nodes;
+    private final Map<String, IntList> nodesById;
+    private final Map<XmlElement, List<AnimationChannel>> channelsByAnimation = new IdentityHashMap<>();
+    private final Map<XmlElement, Map<Integer, KeyframeTrack>> tracks = new IdentityHashMap<>();
+
+    AnimationLoader(ImportContext ctx, List<Node> nodes, Map<String, IntList> nodesById) {
+        this.ctx = ctx;
+        this.nodes = nodes;
+        this.nodesById = nodesById;
+    }
+
+    List<AnimationClip> load(XmlElement collada) throws ColladaException {
+        List<XmlElement> topLevel = new ArrayList<>();
+        List<AnimationChannel> all = new ArrayList<>();
+        for (XmlElement library : collada.children("library_animations")) {
+            topLevel.addAll(library.children("animation"));
+        }
+        for (XmlElement animation : topLevel) {
+            for (XmlElement a : withNested(animation)) {
+                List<AnimationChannel> own = new ArrayList<>();
+                for (XmlElement channel : a.children("channel")) {
+                    readChannel(channel, own);
+                }
+                channelsByAnimation.put(a, own);
+                all.addAll(own);
+            }
+        }
+
+        List<AnimationClip> clips = new ArrayList<>();
+        List<XmlElement> clipElements = new ArrayList<>();
+        for (XmlElement library : collada.children("library_animation_clips")) {
+            clipElements.addAll(library.children("animation_clip"));
+        }
+        for (int i = 0; i < clipElements.size(); i++) {
+            clips.add(readClip(clipElements.get(i), i));
+        }
+        if (clipElements.isEmpty() && !all.isEmpty()) {
+            float start = Float.POSITIVE_INFINITY;
+            float end = Float.NEGATIVE_INFINITY;
+            for (AnimationChannel c : all) {
+                start = Math.min(start, c.track().startTime());
+                end = Math.max(end, c.track().endTime());
+            }
+            clips.add(new AnimationClip(null, AnimationClip.DEFAULT_NAME, start, end, all));
+        }
+        return clips;
+    }
+
+    /** The animation and all animations nested in it, in document order. */
+    private static List<XmlElement> withNested(XmlElement animation) {
+        List<XmlElement> result = new ArrayList<>();
+        Deque<XmlElement> todo = new ArrayDeque<>();
+        todo.push(animation);
+        while (!todo.isEmpty()) {
+            XmlElement a = todo.pop();
+            result.add(a);
+            List<XmlElement> nested = a.children("animation");
+            for (int i = nested.size() - 1; i >= 0; i--) {
+                todo.push(nested.get(i));
+            }
+        }
+        return result;
+    }
+
+    private AnimationClip readClip(XmlElement clip, int ordinal) throws ColladaException {
+        List<AnimationChannel> channels = new ArrayList<>();
+        for (XmlElement instance : clip.children("instance_animation")) {
+            XmlElement animation = ctx.resolve(instance, "url", "animation");
+            for (XmlElement a : withNested(animation)) {
+                List<AnimationChannel> own = channelsByAnimation.get(a);
+                if (own == null) {
+                    throw ctx.error(instance, "url=\"" + instance.attr("url")
+                            + "\" refers to an <animation> outside <library_animations>");
+                }
+                channels.addAll(own);
+            }
+        }
+        float start = (float) ctx.number(clip, "start", 0.0);
+        float end;
+        if (clip.attr("end") != null) {
+            end = (float) ctx.number(clip, "end", 0.0);
+        } else {
+            end = start;
+            for (AnimationChannel c : channels) {
+                end = Math.max(end, c.track().endTime());
+            }
+            ctx.warn(clip, "no end attribute; the clip ends at its last key (" + end + " s)");
+        }
+        if (end < start) {
+            throw ctx.error(clip, "end=\"" + clip.attr("end") + "\" is before start=\"" + clip.attr("start") + "\"");
+        }
+        String name = clip.attr("name") != null ? clip.attr("name")
+                : clip.id() != null ? clip.id() : "clip-" + (ordinal + 1);
+        return new AnimationClip(clip.id(), name, start, end, channels);
+    }
+
+    // ------------------------------------------------------------------------------- channels
+
+    private void readChannel(XmlElement channel, List<AnimationChannel> out) throws ColladaException {
+        XmlElement sampler = ctx.resolve(channel, "source", "sampler");
+        String target = ctx.attr(channel, "target");
+        int slash = target.indexOf('/');
+        if (slash <= 0 || slash == target.length() - 1) {
+            ctx.warn(channel, "target=\"" + target + "\" is not of the form node/sid; skipped");
+            return;
+        }
+        String nodeId = target.substring(0, slash);
+        String rest = target.substring(slash + 1);
+        int selectorAt = rest.length();
+        for (int i = 0; i < rest.length(); i++) {
+            char c = rest.charAt(i);
+            if (c == '.' || c == '(') {
+                selectorAt = i;
+                break;
+            }
+        }
+        String sid = rest.substring(0, selectorAt);
+        String selector = rest.substring(selectorAt);
+        if (sid.contains("/")) {
+            ctx.warn(channel, "target=\"" + target + "\" addresses a nested sid path; only node/sid is supported;"
+                    + " skipped");
+            return;
+        }
+        IntList copies = nodesById.get(nodeId);
+        if (copies == null) {
+            XmlElement e = ctx.byId(nodeId);
+            String why = e == null ? "no element has id \"" + nodeId + "\""
+                    : e.name().equals("node") ? "node \"" + nodeId + "\" is not part of the visual scene"
+                    : "it animates a <" + e.name() + ">, not a node transform";
+            ctx.warn(channel, "target=\"" + target + "\" skipped: " + why);
+            return;
+        }
+        for (int i = 0; i < copies.size(); i++) {
+            Node node = nodes.get(copies.get(i));
+            int transformIndex = node.transformIndex(sid);
+            if (transformIndex < 0) {
+                ctx.warn(channel, "target=\"" + target + "\" skipped: node \"" + nodeId
+                        + "\" has no transform element with sid \"" + sid + "\"");
+                return;
+            }
+            TransformElement.Kind kind = node.transforms().get(transformIndex).kind();
+            int[] range = select(kind, selector);
+            if (range == null) {
+                ctx.warn(channel, "target=\"" + target + "\" skipped: \"" + selector + "\" does not select values of a <"
+                        + kind.elementName() + ">");
+                return;
+            }
+            KeyframeTrack track = track(sampler, range[1], kind == TransformElement.Kind.MATRIX && range[1] == 16);
+            out.add(new AnimationChannel(node.index(), transformIndex, range[0], track, target));
+        }
+    }
+
+    /** {offset, width} of the values a selector picks from an element of the given kind, or null. */
+    static int[] select(TransformElement.Kind kind, String selector) {
+        if (selector.isEmpty()) {
+            return new int[] {0, kind.size()};
+        }
+        if (selector.charAt(0) == '.') {
+            String member = selector.substring(1);
+            int index;
+            switch (member) {
+                case "X": index = 0; break;
+                case "Y": index = 1; break;
+                case "Z": index = 2; break;
+                case "W": index = 3; break;
+                case "ANGLE": index = kind == TransformElement.Kind.ROTATE ? 3 : -1; break;
+                default: index = -1; break;
+            }
+            if (index < 0 || kind == TransformElement.Kind.MATRIX || index >= kind.size()) {
+                return null;
+            }
+            return new int[] {index, 1};
+        }
+        // Array syntax: (i) or (i)(j).
+        List<Integer> indices = new ArrayList<>(2);
+        int i = 0;
+        while (i < selector.length()) {
+            if (selector.charAt(i) != '(') {
+                return null;
+            }
+            int close = selector.indexOf(')', i);
+            if (close < 0) {
+                return null;
+            }
+            try {
+                indices.add(Integer.parseInt(selector.substring(i + 1, close).trim()));
+            } catch (NumberFormatException e) {
+                return null;
+            }
+            i = close + 1;
+        }
+        int index;
+        if (indices.size() == 1) {
+            index = indices.get(0);
+        } else if (indices.size() == 2 && kind == TransformElement.Kind.MATRIX) {
+            int column = indices.get(0);
+            int row = indices.get(1);
+            if (column < 0 || column > 3 || row < 0 || row > 3) {
+                return null;
+            }
+            index = 4 * row + column;
+        } else {
+            return null;
+        }
+        return index < 0 || index >= kind.size() ? null : new int[] {index, 1};
+    }
+
+    // ------------------------------------------------------------------------------- samplers
+
+    private KeyframeTrack track(XmlElement sampler, int width, boolean matrix) throws ColladaException {
+        Map<Integer, KeyframeTrack> byWidth = tracks.computeIfAbsent(sampler, s -> new HashMap<>());
+        KeyframeTrack track = byWidth.get(width);
+        if (track == null) {
+            track = readSampler(sampler, width, matrix);
+            byWidth.put(width, track);
+        }
+        return track;
+    }
+
+    private KeyframeTrack readSampler(XmlElement sampler, int width, boolean matrix) throws ColladaException {
+        XmlElement inputIn = null;
+        XmlElement outputIn = null;
+        XmlElement interpolationIn = null;
+        XmlElement inTangentIn = null;
+        XmlElement outTangentIn = null;
+        for (XmlElement input : sampler.children("input")) {
+            switch (ctx.attr(input, "semantic")) {
+                case "INPUT": inputIn = input; break;
+                case "OUTPUT": outputIn = input; break;
+                case "INTERPOLATION": interpolationIn = input; break;
+                case "IN_TANGENT": inTangentIn = input; break;
+                case "OUT_TANGENT": outTangentIn = input; break;
+                default: break;
+            }
+        }
+        if (inputIn == null || outputIn == null) {
+            throw ctx.error(sampler, "needs an INPUT and an OUTPUT input");
+        }
+        Source timeSource = ctx.inputSource(inputIn);
+        float[] times = timeSource.floats(ctx, inputIn, 1, "INPUT");
+        int keys = times.length;
+        for (int k = 1; k < keys; k++) {
+            if (times[k] < times[k - 1]) {
+                throw ctx.error(timeSource.element, "key times decrease at key " + k + " (" + times[k - 1] + " then "
+                        + times[k] + ")");
+            }
+        }
+        float[] values = keyValues(outputIn, keys, width, "OUTPUT");
+        if (matrix) {
+            for (int k = 0; k < keys; k++) {
+                if (!RowMajor.checkBottomRow(ctx, values, 16 * k, outputIn, "keyed matrix " + k)) {
+                    break; // one warning per track is enough
+                }
+            }
+        }
+
+        Interpolation[] interpolations = new Interpolation[keys];
+        java.util.Arrays.fill(interpolations, Interpolation.LINEAR);
+        if (interpolationIn != null) {
+            Source s = ctx.inputSource(interpolationIn);
+            String[] names = s.names(ctx, interpolationIn, "INTERPOLATION");
+            if (names.length != keys) {
+                throw ctx.error(interpolationIn, "INTERPOLATION has " + names.length + " entries for " + keys + " keys");
+            }
+            for (int k = 0; k < keys; k++) {
+                interpolations[k] = interpolation(names[k], interpolationIn);
+            }
+        }
+        boolean curved = false;
+        for (Interpolation i : interpolations) {
+            curved |= i == Interpolation.BEZIER || i == Interpolation.HERMITE;
+        }
+        float[] inTangents = null;
+        float[] outTangents = null;
+        if (curved) {
+            if (inTangentIn == null || outTangentIn == null) {
+                ctx.warn(sampler, "BEZIER/HERMITE keys without IN_TANGENT and OUT_TANGENT; read as LINEAR");
+                for (int k = 0; k < keys; k++) {
+                    if (interpolations[k] == Interpolation.BEZIER || interpolations[k] == Interpolation.HERMITE) {
+                        interpolations[k] = Interpolation.LINEAR;
+                    }
+                }
+            } else {
+                inTangents = tangents(inTangentIn, times, width, true);
+                outTangents = tangents(outTangentIn, times, width, false);
+            }
+        }
+        return new KeyframeTrack(times, values, width, interpolations, inTangents, outTangents);
+    }
+
+    private Interpolation interpolation(String name, XmlElement where) {
+        switch (name) {
+            case "LINEAR": return Interpolation.LINEAR;
+            case "STEP": return Interpolation.STEP;
+            case "BEZIER": return Interpolation.BEZIER;
+            case "HERMITE": return Interpolation.HERMITE;
+            default:
+                ctx.warn(where, "interpolation " + name + " is not supported; read as LINEAR");
+                return Interpolation.LINEAR;
+        }
+    }
+
+    /** {@code keys * width} values of an OUTPUT-like input, checked against the key count. */
+    private float[] keyValues(XmlElement input, int keys, int width, String what) throws ColladaException {
+        Source s = ctx.inputSource(input);
+        s.requireFloats(ctx, input, what);
+        if (s.count() != keys) {
+            throw ctx.error(input, what + " source \"" + s.id() + "\" has " + s.count() + " entries for " + keys
+                    + " keys");
+        }
+        if (s.width() != width) {
+            throw ctx.error(input, what + " source \"" + s.id() + "\" has " + s.width()
+                    + " values per key, but the channel's target takes " + width);
+        }
+        return s.floats(ctx, input, width, what);
+    }
+
+    /** Tangents as 2-D (time, value) control points, 2 * width floats per key. */
+    private float[] tangents(XmlElement input, float[] times, int width, boolean in) throws ColladaException {
+        Source s = ctx.inputSource(input);
+        s.requireFloats(ctx, input, input.attr("semantic"));
+        int keys = times.length;
+        if (s.count() != keys) {
+            throw ctx.error(input, input.attr("semantic") + " source \"" + s.id() + "\" has " + s.count()
+                    + " entries for " + keys + " keys");
+        }
+        if (s.width() == 2 * width) {
+            return s.floats(ctx, input, 2 * width, input.attr("semantic"));
+        }
+        if (s.width() != width) {
+            throw ctx.error(input, input.attr("semantic") + " source \"" + s.id() + "\" has " + s.width()
+                    + " values per key; expected " + (2 * width) + " (time, value per component) or " + width);
+        }
+        // 1-D tangents: place the control point a third of the way to the neighbouring key.
+        float[] v = s.floats(ctx, input, width, input.attr("semantic"));
+        float[] out = new float[2 * keys * width];
+        for (int k = 0; k < keys; k++) {
+            float dt;
+            if (in) {
+                dt = k > 0 ? -(times[k] - times[k - 1]) / 3f : 0f;
+            } else {
+                dt = k + 1 < keys ? (times[k + 1] - times[k]) / 3f : 0f;
+            }
+            for (int c = 0; c < width; c++) {
+                out[2 * (k * width + c)] = times[k] + dt;
+                out[2 * (k * width + c) + 1] = v[k * width + c];
+            }
+        }
+        return out;
+    }
+}

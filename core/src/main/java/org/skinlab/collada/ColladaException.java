@@ -1,0 +1,46 @@
+package org.skinlab.collada;
+
+/**
+ * The one exception type for a COLLADA file that cannot be imported: malformed XML, a refused
+ * DOCTYPE or entity, a missing or dangling reference, counts that disagree with the data, an
+ * index out of range, a non-finite number or an absurd size.
+ *
+ * <p>The message always names the file, the element (with its id, or the nearest ancestor that
+ * has one, and the line) and the problem, e.g.
+ * {@code cube.dae: <float_array id="Cube-pos-array"> at line 12: count="30" but 27 values}.
+ * It is meant to be shown to a user as one line.
+ */
+public final class ColladaException extends Exception {
+    private static final long serialVersionUID = 1L;
+
+    private final String file;
+    private final String element;
+    private final String problem;
+
+    public ColladaException(String file, String element, String problem) {
+        super(file + ": " + element + ": " + problem);
+        this.file = file;
+        this.element = element;
+        this.problem = problem;
+    }
+
+    public ColladaException(String file, String element, String problem, Throwable cause) {
+        this(file, element, problem);
+        initCause(cause);
+    }
+
+    /** The file (or stream name) being imported. */
+    public String file() {
+        return file;
+    }
+
+    /** The element the problem was found in, e.g. {@code <skin> in <controller id="c1"> at line 40}. */
+    public String element() {
+        return element;
+    }
+
+    /** What is wrong, without the file and element. */
+    public String problem() {
+        return problem;
+    }
+}

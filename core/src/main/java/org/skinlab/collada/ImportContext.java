@@ -1,0 +1,174 @@
+package org.skinlab.collada;
+
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.Deque;
+import java.util.HashMap;
+import java.util.IdentityHashMap;
+import java.util.List;
+import java.util.Map;
+
+import org.skinlab.model.ImportWarning;
+
+/**
+ * State shared by the loaders while one file is imported: the file name for messages, the
+ * document's id index, the parsed {@code <source>} cache and the warnings collected so far.
+ * Every error and warning goes through here so that all of them name the file and the element.
+ */
+final class ImportContext {
+    /** At most this many warnings are kept; a hostile file could otherwise produce millions. */
+    static final int MAX_WARNINGS = 200;
+
+    final String file;
+    private final Map<String, XmlElement> ids = new HashMap<>();
+    private final Map<XmlElement, Source> sources = new IdentityHashMap<>();
+    private final List<ImportWarning> warnings = new ArrayList<>();
+    private int droppedWarnings;
+
+    ImportContext(String file, XmlElement root) {
+        this.file = file;
+        // Iterative walk: the tree may be as deep as SafeXmlReader allows.
+        Deque<XmlElement> todo = new ArrayDeque<>();
+        todo.push(root);
+        List<XmlElement> duplicates = new ArrayList<>();
+        while (!todo.isEmpty()) {
+            XmlElement e = todo.pop();
+            String id = e.id();
+            if (id != null && ids.putIfAbsent(id, e) != null) {
+                duplicates.add(e);
+            }
+            List<XmlElement> children = e.children();
+            for (int i = children.size() - 1; i >= 0; i--) {
+                todo.push(children.get(i));
+            }
+        }
+        for (XmlElement d : duplicates) {
+            warn(d, "duplicate id \"" + d.id() + "\"; references resolve to the first element with it");
+        }
+    }
+
+    ColladaException error(XmlElement e, String problem) {
+        return new ColladaException(file, e == null ? "document" : e.describe(), problem);
+    }
+
+    void warn(XmlElement e, String message) {
+        if (warnings.size() < MAX_WARNINGS) {
+            warnings.add(new ImportWarning(e == null ? "document" : e.describe(), message));
+        } else {
+            droppedWarnings++;
+        }
+    }
+
+    List<ImportWarning> warnings() {
+        List<ImportWarning> result = new ArrayList<>(warnings);
+        if (droppedWarnings > 0) {
+            result.add(new ImportWarning("document", droppedWarnings + " more warnings not shown"));
+        }
+        return result;
+    }
+
+    /** The element with the given id, or null. */
+    XmlElement byId(String id) {
+        return ids.get(id);
+    }
+
+    /** A required attribute. */
+    String attr(XmlElement e, String name) throws ColladaException {
+        String v = e.attr(name);
+        if (v == null) {
+            throw error(e, "missing attribute " + name);
+        }
+        return v;
+    }
+
+    /** A required child element. */
+    XmlElement child(XmlElement e, String name) throws ColladaException {
+        XmlElement c = e.child(name);
+        if (c == null) {
+            throw error(e, "missing <" + name + ">");
+        }
+        return c;
+    }
+
+    /** A non-negative integer attribute, or {@code fallback} when absent. */
+    int count(XmlElement e, String name, int fallback) throws ColladaException {
+        String v = e.attr(name);
+        if (v == null) {
+            return fallback;
+        }
+        try {
+            long n = Long.parseLong(v.trim());
+            if (n < 0 || n > Integer.MAX_VALUE) {
+                throw error(e, name + "=\"" + v + "\" is out of range");
+            }
+            return (int) n;
+        } catch (NumberFormatException ex) {
+            throw error(e, name + "=\"" + v + "\" is not a non-negative integer");
+        }
+    }
+
+    /** A finite float attribute, or {@code fallback} when absent. */
+    double number(XmlElement e, String name, double fallback) throws ColladaException {
+        String v = e.attr(name);
+        if (v == null) {
+            return fallback;
+        }
+        try {
+            double d = Double.parseDouble(v.trim());
+            if (!Double.isFinite(d)) {
+                throw error(e, name + "=\"" + v + "\" is not a finite number");
+            }
+            return d;
+        } catch (NumberFormatException ex) {
+            throw error(e, name + "=\"" + v + "\" is not a number");
+        }
+    }
+
+    /**
+     * Resolves a URI fragment reference ({@code "#id"}) held in attribute {@code attribute} (or in
+     * the text when {@code attribute} is null) to an element with one of the expected names.
+     * References to other documents are refused: the importer never opens other files.
+     */
+    XmlElement resolve(XmlElement from, String attribute, String... expected) throws ColladaException {
+        String ref = attribute == null ? from.text().trim() : attr(from, attribute);
+        String where = attribute == null ? "reference \"" + ref + "\"" : attribute + "=\"" + ref + "\"";
+        String id;
+        if (ref.startsWith("#")) {
+            id = ref.substring(1);
+        } else if (ref.contains("#")) {
+            throw error(from, where + " points into another document; only references within the file are"
+                    + " supported");
+        } else {
+            id = ref; // not a URI fragment, but some exporters write bare ids
+            if (ids.containsKey(id)) {
+                warn(from, where + " lacks the leading '#'; read as \"#" + id + "\"");
+            }
+        }
+        XmlElement target = ids.get(id);
+        if (target == null) {
+            throw error(from, where + " refers to nothing in the file");
+        }
+        for (String name : expected) {
+            if (target.name().equals(name)) {
+                return target;
+            }
+        }
+        throw error(from, where + " refers to a <" + target.name() + ">, expected <"
+                + String.join("> or <", expected) + ">");
+    }
+
+    /** The parsed {@code <source>} (cached: sources are often shared). */
+    Source source(XmlElement sourceElement) throws ColladaException {
+        Source s = sources.get(sourceElement);
+        if (s == null) {
+            s = Source.parse(this, sourceElement);
+            sources.put(sourceElement, s);
+        }
+        return s;
+    }
+
+    /** Resolves an {@code <input source="#...">} to its parsed source. */
+    Source inputSource(XmlElement input) throws ColladaException {
+        return source(resolve(input, "source", "source"));
+    }
+}

@@ -1,0 +1,401 @@
+package org.skinlab.collada;
+
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.Deque;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+
+import org.skinlab.model.Mesh;
+import org.skinlab.model.MeshInstance;
+import org.skinlab.model.Node;
+import org.skinlab.model.Skin;
+import org.skinlab.model.TransformElement;
+
+/**
+ * Instantiates the visual scene: the node tree in depth-first order (with {@code <instance_node>}
+ * copies), each node's transform stack, and the meshes placed in it, with every skin joint
+ * resolved to a node.
+ *
+ * <p>Lenient (with a warning): no {@code <scene>} (the first visual scene is used); a
+ * {@code <skeleton>} that names no node (ignored); joints found by id or name when no sid
+ * matches under the skeleton roots; {@code <skew>} with a zero axis; a rotation about a zero axis;
+ * a matrix whose bottom row is not (0 0 0 1). Refused: {@code <instance_node>} cycles, more than
+ * {@link #MAX_INSTANCE_DEPTH} nested instances or {@link #MAX_NODES} nodes in all (instancing
+ * bombs), transforms with the wrong number of values, and joints that match no node.
+ */
+final class SceneLoader {
+    static final int MAX_NODES = 1_000_000;
+    static final int MAX_INSTANCE_DEPTH = 64;
+
+    private final ImportContext ctx;
+    private final Map<XmlElement, Mesh> meshes;
+    private final Map<XmlElement, Skin> skins;
+
+    // Drafts of the nodes, in depth-first order.
+    private final List<Draft> drafts = new ArrayList<>();
+    private final Map<String, IntList> byId = new HashMap<>();
+    private final Map<String, IntList> bySid = new HashMap<>();
+    private final Map<String, IntList> byName = new HashMap<>();
+    private int[] subtreeEnd;
+    private int[] parents;
+
+    SceneLoader(ImportContext ctx, Map<XmlElement, Mesh> meshesByGeometry, Map<XmlElement, Skin> skinsByController) {
+        this.ctx = ctx;
+        this.meshes = meshesByGeometry;
+        this.skins = skinsByController;
+    }
+
+    /** The nodes and instances of the scene (empty when the file has no visual scene). */
+    static final class Result {
+        final List<Node> nodes;
+        final List<MeshInstance> instances;
+        final Map<String, IntList> nodesById;
+
+        Result(List<Node> nodes, List<MeshInstance> instances, Map<String, IntList> nodesById) {
+            this.nodes = nodes;
+            this.instances = instances;
+            this.nodesById = nodesById;
+        }
+    }
+
+    private static final class Draft {
+        final XmlElement element;
+        final int index;
+        final int parent;
+        final boolean instanced;
+        final IntList children = new IntList(4);
+        final List<TransformElement> transforms = new ArrayList<>(4);
+        final List<XmlElement> meshInstances = new ArrayList<>(1);
+
+        Draft(XmlElement element, int index, int parent, boolean instanced) {
+            this.element = element;
+            this.index = index;
+            this.parent = parent;
+            this.instanced = instanced;
+        }
+    }
+
+    /** A pending node: its element, parent and the chain of instance_node targets leading to it. */
+    private static final class Pending {
+        final XmlElement element;
+        final int parent;
+        final Chain chain;
+
+        Pending(XmlElement element, int parent, Chain chain) {
+            this.element = element;
+            this.parent = parent;
+            this.chain = chain;
+        }
+    }
+
+    /** Immutable list of the library nodes being instanced, innermost first. */
+    private static final class Chain {
+        final XmlElement target;
+        final Chain outer;
+        final int depth;
+
+        Chain(XmlElement target, Chain outer) {
+            this.target = target;
+            this.outer = outer;
+            this.depth = outer == null ? 1 : outer.depth + 1;
+        }
+
+        boolean contains(XmlElement e) {
+            for (Chain c = this; c != null; c = c.outer) {
+                if (c.target == e) {
+                    return true;
+                }
+            }
+            return false;
+        }
+    }
+
+    Result load(XmlElement collada) throws ColladaException {
+        XmlElement visualScene = visualScene(collada);
+        if (visualScene == null) {
+            return new Result(List.of(), List.of(), Map.of());
+        }
+        // Iterative depth-first walk: the depth of the tree is the file's to choose.
+        Deque<Pending> todo = new ArrayDeque<>();
+        pushChildren(todo, visualScene, -1, null);
+        while (!todo.isEmpty()) {
+            Pending p = todo.pop();
+            if (drafts.size() >= MAX_NODES) {
+                throw ctx.error(p.element, "the scene would have more than " + MAX_NODES + " nodes");
+            }
+            Draft d = new Draft(p.element, drafts.size(), p.parent, p.chain != null);
+            drafts.add(d);
+            if (p.parent >= 0) {
+                drafts.get(p.parent).children.add(d.index);
+            }
+            index(byId, p.element.id(), d.index);
+            index(bySid, p.element.attr("sid"), d.index);
+            index(byName, p.element.attr("name"), d.index);
+            readTransforms(d);
+            pushChildren(todo, p.element, d.index, p.chain);
+        }
+        int n = drafts.size();
+        parents = new int[n];
+        subtreeEnd = new int[n];
+        for (int i = n - 1; i >= 0; i--) {
+            parents[i] = drafts.get(i).parent;
+            int end = i + 1;
+            IntList ch = drafts.get(i).children;
+            if (ch.size() > 0) {
+                end = subtreeEnd[ch.get(ch.size() - 1)];
+            }
+            subtreeEnd[i] = end;
+        }
+        List<Node> nodes = new ArrayList<>(n);
+        for (Draft d : drafts) {
+            XmlElement e = d.element;
+            nodes.add(new Node(d.index, d.parent, d.children.toArray(), e.id(), e.attr("sid"), e.attr("name"),
+                    "JOINT".equals(e.attr("type")), d.instanced, d.transforms));
+        }
+        List<MeshInstance> instances = new ArrayList<>();
+        for (Draft d : drafts) {
+            for (XmlElement inst : d.meshInstances) {
+                MeshInstance mi = instance(d.index, inst);
+                if (mi != null) {
+                    instances.add(mi);
+                }
+            }
+        }
+        return new Result(nodes, instances, byId);
+    }
+
+    private XmlElement visualScene(XmlElement collada) throws ColladaException {
+        XmlElement scene = collada.child("scene");
+        XmlElement instance = scene == null ? null : scene.child("instance_visual_scene");
+        if (instance != null) {
+            return ctx.resolve(instance, "url", "visual_scene");
+        }
+        for (XmlElement library : collada.children("library_visual_scenes")) {
+            XmlElement first = library.child("visual_scene");
+            if (first != null) {
+                ctx.warn(collada, "no <scene><instance_visual_scene>; using the first visual scene"
+                        + (first.id() == null ? "" : " \"" + first.id() + "\""));
+                return first;
+            }
+        }
+        return null;
+    }
+
+    private static void index(Map<String, IntList> map, String key, int node) {
+        if (key != null) {
+            map.computeIfAbsent(key, k -> new IntList(1)).add(node);
+        }
+    }
+
+    private void pushChildren(Deque<Pending> todo, XmlElement parentElement, int parent, Chain chain)
+            throws ColladaException {
+        List<Pending> children = new ArrayList<>();
+        for (XmlElement c : parentElement.children()) {
+            if (c.name().equals("node")) {
+                children.add(new Pending(c, parent, chain));
+            } else if (c.name().equals("instance_node") && parent >= 0) {
+                XmlElement target = ctx.resolve(c, "url", "node");
+                if (chain != null && chain.contains(target)) {
+                    throw ctx.error(c, "instance_node url=\"" + c.attr("url") + "\" instantiates a node that"
+                            + " contains it (a cycle)");
+                }
+                Chain inner = new Chain(target, chain);
+                if (inner.depth > MAX_INSTANCE_DEPTH) {
+                    throw ctx.error(c, "more than " + MAX_INSTANCE_DEPTH + " nested <instance_node> levels");
+                }
+                children.add(new Pending(target, parent, inner));
+            } else if (parent >= 0 && (c.name().equals("instance_geometry") || c.name().equals("instance_controller"))) {
+                drafts.get(parent).meshInstances.add(c);
+            }
+        }
+        for (int i = children.size() - 1; i >= 0; i--) {
+            todo.push(children.get(i));
+        }
+    }
+
+    private void readTransforms(Draft d) throws ColladaException {
+        for (XmlElement c : d.element.children()) {
+            TransformElement.Kind kind;
+            switch (c.name()) {
+                case "matrix": kind = TransformElement.Kind.MATRIX; break;
+                case "translate": kind = TransformElement.Kind.TRANSLATE; break;
+                case "rotate": kind = TransformElement.Kind.ROTATE; break;
+                case "scale": kind = TransformElement.Kind.SCALE; break;
+                case "lookat": kind = TransformElement.Kind.LOOKAT; break;
+                case "skew": kind = TransformElement.Kind.SKEW; break;
+                default: continue;
+            }
+            float[] v = NumberParser.floats(ctx, c, -1);
+            if (v.length != kind.size()) {
+                throw ctx.error(c, "has " + v.length + " values, expected " + kind.size());
+            }
+            if (kind == TransformElement.Kind.MATRIX) {
+                RowMajor.checkBottomRow(ctx, v, 0, c, "matrix");
+            } else if (kind == TransformElement.Kind.ROTATE && v[0] == 0f && v[1] == 0f && v[2] == 0f) {
+                ctx.warn(c, "rotation about a zero axis; treated as no rotation");
+            } else if (kind == TransformElement.Kind.SKEW && (isZero(v, 1) || isZero(v, 4))) {
+                ctx.warn(c, "skew with a zero axis; treated as no skew");
+            }
+            d.transforms.add(new TransformElement(kind, c.attr("sid"), v));
+        }
+    }
+
+    private static boolean isZero(float[] v, int o) {
+        return v[o] == 0f && v[o + 1] == 0f && v[o + 2] == 0f;
+    }
+
+    // ------------------------------------------------------------------------------- instances
+
+    private MeshInstance instance(int node, XmlElement inst) throws ColladaException {
+        List<String> materials = new ArrayList<>();
+        XmlElement bind = inst.child("bind_material");
+        XmlElement common = bind == null ? null : bind.child("technique_common");
+        if (common != null) {
+            for (XmlElement m : common.children("instance_material")) {
+                String target = m.attr("target");
+                if (target != null) {
+                    materials.add(target.startsWith("#") ? target.substring(1) : target);
+                }
+            }
+        }
+        if (inst.name().equals("instance_geometry")) {
+            XmlElement geometry = ctx.resolve(inst, "url", "geometry");
+            Mesh mesh = meshes.get(geometry);
+            if (mesh == null) {
+                return null; // not a <mesh>; warned when the geometry was read
+            }
+            return new MeshInstance(node, mesh, null, new int[0], new int[0], materials);
+        }
+        XmlElement controller = ctx.resolve(inst, "url", "controller");
+        Skin skin = skins.get(controller);
+        if (skin == null) {
+            XmlElement morph = controller.child("morph");
+            if (morph != null) {
+                Mesh base = meshes.get(ctx.resolve(morph, "source", "geometry"));
+                ctx.warn(inst, "morph controller drawn as its base geometry (morphing is not supported)");
+                return base == null ? null : new MeshInstance(node, base, null, new int[0], new int[0], materials);
+            }
+            throw ctx.error(inst, "url=\"" + inst.attr("url") + "\" is a controller without <skin> or <morph>");
+        }
+        IntList roots = new IntList(2);
+        for (XmlElement s : inst.children("skeleton")) {
+            String ref = s.text().trim();
+            String id = ref.startsWith("#") ? ref.substring(1) : ref;
+            int root = nearest(byId.get(id), node);
+            if (root < 0) {
+                ctx.warn(s, "skeleton root \"" + ref + "\" is not a node of the scene; ignored");
+            } else {
+                roots.add(root);
+            }
+        }
+        int[] rootArray = roots.toArray();
+        int[] joints = new int[skin.jointCount()];
+        boolean outsideRoots = false;
+        for (int j = 0; j < joints.length; j++) {
+            String name = skin.jointNames().get(j);
+            int found = rootArray.length == 0 ? -1
+                    : firstUnder((skin.jointsAreIdrefs() ? byId : bySid).get(name), rootArray);
+            if (found < 0) {
+                found = byIdOrName(name, skin.jointsAreIdrefs(), rootArray, node);
+                outsideRoots |= found >= 0 && rootArray.length > 0;
+            }
+            if (found < 0) {
+                throw ctx.error(inst, "joint \"" + name + "\" of controller \"" + controller.id() + "\" matches no node"
+                        + " in the scene (by " + (skin.jointsAreIdrefs() ? "id" : "sid, id or name") + ")");
+            }
+            joints[j] = found;
+        }
+        if (outsideRoots) {
+            ctx.warn(inst, "some joints matched no " + (skin.jointsAreIdrefs() ? "id" : "sid")
+                    + " under the <skeleton> roots and were found by id or name instead");
+        }
+        return new MeshInstance(node, skin.mesh(), skin, joints, rootArray, materials);
+    }
+
+    /**
+     * Fallback joint lookup: by id, then (for Name_array joints) by name and by sid; under the
+     * skeleton roots first, then anywhere, preferring the copy nearest the instance.
+     */
+    private int byIdOrName(String name, boolean idrefs, int[] roots, int node) {
+        List<Map<String, IntList>> maps = idrefs ? List.of(byId) : List.of(byId, byName, bySid);
+        for (Map<String, IntList> map : maps) {
+            int found = firstUnder(map.get(name), roots);
+            if (found >= 0) {
+                return found;
+            }
+        }
+        for (Map<String, IntList> map : maps) {
+            int found = nearest(map.get(name), node);
+            if (found >= 0) {
+                return found;
+            }
+        }
+        return -1;
+    }
+
+    /** The first candidate (in depth-first order) inside the subtree of one of the roots, or -1. */
+    private int firstUnder(IntList candidates, int[] roots) {
+        if (candidates == null) {
+            return -1;
+        }
+        for (int r : roots) {
+            for (int i = 0; i < candidates.size(); i++) {
+                int c = candidates.get(i);
+                if (c >= r && c < subtreeEnd[r]) {
+                    return c;
+                }
+            }
+        }
+        return -1;
+    }
+
+    /**
+     * Of several nodes with the same id (copies made by instance_node), the one that shares the
+     * deepest ancestor with {@code from}; the first one on ties. -1 when there is none.
+     */
+    private int nearest(IntList candidates, int from) {
+        if (candidates == null || candidates.size() == 0) {
+            return -1;
+        }
+        if (candidates.size() == 1) {
+            return candidates.get(0);
+        }
+        int best = candidates.get(0);
+        int bestDepth = -1;
+        for (int i = 0; i < candidates.size(); i++) {
+            int c = candidates.get(i);
+            int depth = commonAncestorDepth(c, from);
+            if (depth > bestDepth) {
+                best = c;
+                bestDepth = depth;
+            }
+        }
+        return best;
+    }
+
+    private int commonAncestorDepth(int a, int b) {
+        int[] pathA = path(a);
+        int[] pathB = path(b);
+        int d = 0;
+        while (d < pathA.length && d < pathB.length && pathA[d] == pathB[d]) {
+            d++;
+        }
+        return d;
+    }
+
+    private int[] path(int node) {
+        IntList up = new IntList(8);
+        for (int n = node; n >= 0; n = parents[n]) {
+            up.add(n);
+        }
+        int[] p = up.toArray();
+        for (int i = 0, j = p.length - 1; i < j; i++, j--) {
+            int t = p[i];
+            p[i] = p[j];
+            p[j] = t;
+        }
+        return p;
+    }
+}

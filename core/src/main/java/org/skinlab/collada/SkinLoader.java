@@ -1,0 +1,221 @@
+package org.skinlab.collada;
+
+import java.util.Arrays;
+import java.util.HashMap;
+import java.util.Map;
+
+import org.joml.Matrix4f;
+import org.skinlab.model.Mesh;
+import org.skinlab.model.Skin;
+
+/**
+ * Reads a {@code <controller><skin>} into a {@link Skin}: bind shape matrix, joints
+ * ({@code Name_array} or {@code IDREF_array}) with inverse bind matrices, and every influence of
+ * every position ({@code <vertex_weights>}), converting COLLADA's row-major matrices to
+ * JOML's column-major order.
+ *
+ * <p>Lenient (with a warning): a skin on a {@code <morph>} uses the morph's base geometry (morph
+ * targets are ignored); positions without influences; weight sums that differ from one; a
+ * bottom matrix row other than (0 0 0 1), which is replaced by it. Refused: a
+ * {@code <vertex_weights count>} other than the mesh's position count, joint and inverse bind
+ * matrix counts that differ, and joint or weight indices out of range.
+ */
+final class SkinLoader {
+    /** Weight sums further than this from one are reported. */
+    static final float WEIGHT_SUM_TOLERANCE = 1e-3f;
+
+    private final ImportContext ctx;
+    private final Map<XmlElement, Mesh> meshes;
+
+    SkinLoader(ImportContext ctx, Map<XmlElement, Mesh> meshesByGeometry) {
+        this.ctx = ctx;
+        this.meshes = meshesByGeometry;
+    }
+
+    Skin load(XmlElement controller, XmlElement skin) throws ColladaException {
+        Mesh mesh = skinnedMesh(skin);
+
+        Matrix4f bindShape = new Matrix4f();
+        XmlElement bsm = skin.child("bind_shape_matrix");
+        if (bsm != null) {
+            float[] v = NumberParser.floats(ctx, bsm, -1);
+            if (v.length != 16) {
+                throw ctx.error(bsm, "has " + v.length + " values, expected 16");
+            }
+            RowMajor.toColumnMajor(ctx, v, 0, bsm, "bind shape matrix");
+            bindShape.set(v);
+        }
+
+        XmlElement joints = ctx.child(skin, "joints");
+        Source jointSource = null;
+        Source inverseBindSource = null;
+        XmlElement jointInput = null;
+        XmlElement inverseBindInput = null;
+        for (XmlElement input : joints.children("input")) {
+            String semantic = ctx.attr(input, "semantic");
+            if (semantic.equals("JOINT")) {
+                jointSource = ctx.inputSource(input);
+                jointInput = input;
+            } else if (semantic.equals("INV_BIND_MATRIX")) {
+                inverseBindSource = ctx.inputSource(input);
+                inverseBindInput = input;
+            }
+        }
+        if (jointSource == null) {
+            throw ctx.error(joints, "has no JOINT input");
+        }
+        if (inverseBindSource == null) {
+            throw ctx.error(joints, "has no INV_BIND_MATRIX input");
+        }
+        String[] jointNames = jointSource.names(ctx, jointInput, "JOINT");
+        float[] inverseBinds = inverseBindSource.floats(ctx, inverseBindInput, 16, "INV_BIND_MATRIX");
+        if (inverseBindSource.count() != jointNames.length) {
+            throw ctx.error(inverseBindInput, jointNames.length + " joints but " + inverseBindSource.count()
+                    + " inverse bind matrices");
+        }
+        for (int j = 0; j < jointNames.length; j++) {
+            RowMajor.toColumnMajor(ctx, inverseBinds, 16 * j, inverseBindInput, "inverse bind matrix of joint \"" + jointNames[j] + "\"");
+        }
+
+        XmlElement weights = ctx.child(skin, "vertex_weights");
+        int count = ctx.count(weights, "count", -1);
+        if (count != mesh.positionCount()) {
+            throw ctx.error(weights, "count=\"" + count + "\" but geometry \"" + mesh.id() + "\" has "
+                    + mesh.positionCount() + " positions");
+        }
+        int jointOffset = -1;
+        int weightOffset = -1;
+        int maxOffset = -1;
+        Source weightSource = null;
+        int[] jointRemap = null; // when <vertex_weights> names joints through another source
+        for (XmlElement input : weights.children("input")) {
+            String semantic = ctx.attr(input, "semantic");
+            int offset = ctx.count(input, "offset", -1);
+            if (offset < 0) {
+                throw ctx.error(input, "missing attribute offset");
+            }
+            maxOffset = Math.max(maxOffset, offset);
+            if (semantic.equals("JOINT")) {
+                jointOffset = offset;
+                Source s = ctx.inputSource(input);
+                if (s != jointSource) {
+                    jointRemap = remap(input, s.names(ctx, input, "JOINT"), jointNames);
+                }
+            } else if (semantic.equals("WEIGHT")) {
+                weightOffset = offset;
+                weightSource = ctx.inputSource(input);
+                weightSource.requireFloats(ctx, input, "WEIGHT");
+            }
+        }
+        if (jointOffset < 0 || weightSource == null) {
+            throw ctx.error(weights, "needs a JOINT and a WEIGHT input");
+        }
+        int stride = maxOffset + 1;
+        XmlElement vcountElement = weights.child("vcount");
+        XmlElement vElement = weights.child("v");
+        int[] vcount = vcountElement == null ? new int[0] : NumberParser.ints(ctx, vcountElement, -1);
+        int[] v = vElement == null ? new int[0] : NumberParser.ints(ctx, vElement, -1);
+        if (vcount.length != count) {
+            throw ctx.error(vcountElement == null ? weights : vcountElement, "has " + vcount.length
+                    + " entries but count=\"" + count + "\"");
+        }
+        long total = 0;
+        for (int n : vcount) {
+            if (n < 0) {
+                throw ctx.error(vcountElement, "negative influence count " + n);
+            }
+            total += n;
+        }
+        if (total * stride != v.length) {
+            throw ctx.error(vElement == null ? weights : vElement, "<vcount> adds up to " + total + " influences, which with "
+                    + stride + " index offsets need " + total * stride + " indices, <v> has " + v.length);
+        }
+        int n = (int) total;
+        int[] start = new int[count + 1];
+        int[] influenceJoints = new int[n];
+        float[] influenceWeights = new float[n];
+        int unweighted = 0;
+        int badSums = 0;
+        float worstSum = 1f;
+        int at = 0;
+        for (int p = 0; p < count; p++) {
+            start[p] = at;
+            float sum = 0f;
+            for (int k = 0; k < vcount[p]; k++, at++) {
+                int base = at * stride;
+                int joint = v[base + jointOffset];
+                int weightIndex = v[base + weightOffset];
+                if (joint < -1 || joint >= jointNames.length) {
+                    throw ctx.error(vElement, "joint index " + joint + " (value " + (base + jointOffset)
+                            + ") is out of range: the skin has " + jointNames.length + " joints");
+                }
+                if (weightIndex < 0 || weightIndex >= weightSource.count()) {
+                    throw ctx.error(vElement, "weight index " + weightIndex + " (value " + (base + weightOffset)
+                            + ") is out of range: source \"" + weightSource.id() + "\" has "
+                            + weightSource.count() + " weights");
+                }
+                influenceJoints[at] = joint < 0 || jointRemap == null ? joint : jointRemap[joint];
+                float w = weightSource.floatAt(weightIndex, 0);
+                influenceWeights[at] = w;
+                sum += w;
+            }
+            if (vcount[p] == 0) {
+                unweighted++;
+            } else if (Math.abs(sum - 1f) > WEIGHT_SUM_TOLERANCE) {
+                badSums++;
+                if (Math.abs(sum - 1f) > Math.abs(worstSum - 1f)) {
+                    worstSum = sum;
+                }
+            }
+        }
+        start[count] = at;
+        if (unweighted > 0) {
+            ctx.warn(weights, unweighted + " of " + count + " positions have no influences; they keep the bind"
+                    + " shape (kept as written)");
+        }
+        if (badSums > 0) {
+            ctx.warn(weights, badSums + " of " + count + " positions have weights that do not sum to 1 (worst "
+                    + worstSum + "); kept as written");
+        }
+        return new Skin(controller.id(), controller.attr("name"), mesh, bindShape, Arrays.asList(jointNames),
+                jointSource.isIdrefs(), inverseBinds, start, influenceJoints, influenceWeights);
+    }
+
+    /** The mesh a skin deforms: its source geometry, or the base geometry of a morph. */
+    private Mesh skinnedMesh(XmlElement skin) throws ColladaException {
+        XmlElement target = ctx.resolve(skin, "source", "geometry", "controller");
+        if (target.name().equals("controller")) {
+            XmlElement morph = target.child("morph");
+            if (morph == null) {
+                throw ctx.error(skin, "source=\"" + skin.attr("source") + "\" is a controller without <morph>;"
+                        + " a skin cannot deform another skin");
+            }
+            ctx.warn(skin, "deforms morph controller \"" + target.id() + "\"; its morph targets are ignored and"
+                    + " its base geometry is skinned");
+            target = ctx.resolve(morph, "source", "geometry");
+        }
+        Mesh mesh = meshes.get(target);
+        if (mesh == null) {
+            throw ctx.error(skin, "source=\"" + skin.attr("source") + "\" is a geometry without a <mesh>");
+        }
+        return mesh;
+    }
+
+    /** Maps joint indices of another name source onto the skin's joints, by name. */
+    private int[] remap(XmlElement input, String[] names, String[] jointNames) throws ColladaException {
+        Map<String, Integer> index = new HashMap<>();
+        for (int j = jointNames.length - 1; j >= 0; j--) {
+            index.put(jointNames[j], j);
+        }
+        int[] map = new int[names.length];
+        for (int i = 0; i < names.length; i++) {
+            Integer j = index.get(names[i]);
+            if (j == null) {
+                throw ctx.error(input, "joint \"" + names[i] + "\" is not among the skin's <joints>");
+            }
+            map[i] = j;
+        }
+        return map;
+    }
+
+}

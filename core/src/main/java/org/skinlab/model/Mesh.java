@@ -1,0 +1,203 @@
+package org.skinlab.model;
+
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.List;
+
+/**
+ * One {@code <geometry>}'s mesh, triangulated and ready to draw, with the link back to the
+ * positions that skin weights refer to.
+ *
+ * <p>Two index spaces:
+ * <ul>
+ * <li><b>positions</b>: the entries of the geometry's {@code <vertices>} POSITION source, in file
+ *     order. Skin influences and the command line's pose output use this space.</li>
+ * <li><b>vertices</b>: the distinct combinations of position, normal, texture coordinate and
+ *     colour indices the primitives use (a position on a UV seam or hard edge becomes several
+ *     vertices). Triangles index vertices; {@link #vertexPosition(int)} maps back, and
+ *     {@link #verticesOfPosition(int)} lists the vertices that share a position (the thesis'
+ *     "vertex groups": deform a position once, copy it to all its vertices).</li>
+ * </ul>
+ * Polygons are fan-triangulated from their first corner. Arrays are copied in and out; the
+ * accessors that return arrays return copies.
+ */
+public final class Mesh {
+    private final String id;
+    private final String name;
+    private final float[] positions;
+    private final int[] vertexPositions;
+    private final float[] normals;
+    private final List<float[]> texCoordSets;
+    private final float[] colors;
+    private final int[] triangles;
+    private final List<MeshPart> parts;
+    private final int[] positionVertexStart;
+    private final int[] positionVertices;
+
+    /**
+     * @param positions       3 floats per position
+     * @param vertexPositions per vertex, its position index
+     * @param normals         3 floats per vertex, or null when the geometry has none
+     * @param texCoordSets    per texture coordinate set (in set order), 2 floats per vertex
+     * @param colors          4 floats (RGBA) per vertex, or null
+     * @param triangles       3 vertex indices per triangle, counter-clockwise as in the file
+     */
+    public Mesh(String id, String name, float[] positions, int[] vertexPositions, float[] normals,
+            List<float[]> texCoordSets, float[] colors, int[] triangles, List<MeshPart> parts) {
+        int vertexCount = vertexPositions.length;
+        int positionCount = positions.length / 3;
+        if (positions.length % 3 != 0) {
+            throw new IllegalArgumentException("positions must hold 3 floats each");
+        }
+        if (normals != null && normals.length != 3 * vertexCount) {
+            throw new IllegalArgumentException("normals must hold 3 floats per vertex");
+        }
+        if (colors != null && colors.length != 4 * vertexCount) {
+            throw new IllegalArgumentException("colors must hold 4 floats per vertex");
+        }
+        for (float[] t : texCoordSets) {
+            if (t.length != 2 * vertexCount) {
+                throw new IllegalArgumentException("texture coordinates must hold 2 floats per vertex");
+            }
+        }
+        if (triangles.length % 3 != 0) {
+            throw new IllegalArgumentException("triangles must hold 3 indices each");
+        }
+        for (int t : triangles) {
+            if (t < 0 || t >= vertexCount) {
+                throw new IllegalArgumentException("triangle index " + t + " out of range");
+            }
+        }
+        this.id = id;
+        this.name = name;
+        this.positions = positions.clone();
+        this.vertexPositions = vertexPositions.clone();
+        this.normals = normals == null ? null : normals.clone();
+        List<float[]> sets = new ArrayList<>(texCoordSets.size());
+        for (float[] t : texCoordSets) {
+            sets.add(t.clone());
+        }
+        this.texCoordSets = Collections.unmodifiableList(sets);
+        this.colors = colors == null ? null : colors.clone();
+        this.triangles = triangles.clone();
+        this.parts = List.copyOf(parts);
+
+        // Vertices grouped by position (CSR), vertices in increasing order within a group.
+        positionVertexStart = new int[positionCount + 1];
+        for (int p : this.vertexPositions) {
+            if (p < 0 || p >= positionCount) {
+                throw new IllegalArgumentException("vertex position index " + p + " out of range");
+            }
+            positionVertexStart[p + 1]++;
+        }
+        for (int p = 0; p < positionCount; p++) {
+            positionVertexStart[p + 1] += positionVertexStart[p];
+        }
+        positionVertices = new int[vertexCount];
+        int[] fill = new int[positionCount];
+        for (int v = 0; v < vertexCount; v++) {
+            int p = this.vertexPositions[v];
+            positionVertices[positionVertexStart[p] + fill[p]++] = v;
+        }
+    }
+
+    /** The geometry's id. */
+    public String id() {
+        return id;
+    }
+
+    /** The geometry's name, or null. */
+    public String name() {
+        return name;
+    }
+
+    public int positionCount() {
+        return positions.length / 3;
+    }
+
+    public int vertexCount() {
+        return vertexPositions.length;
+    }
+
+    public int triangleCount() {
+        return triangles.length / 3;
+    }
+
+    /** A copy of the positions, 3 floats each, in the document's own frame and units. */
+    public float[] positions() {
+        return positions.clone();
+    }
+
+    /** Component {@code c} (0..2) of position {@code p}. */
+    public float position(int p, int c) {
+        return positions[3 * p + c];
+    }
+
+    /** The position index of vertex {@code v}. */
+    public int vertexPosition(int v) {
+        return vertexPositions[v];
+    }
+
+    /** A copy of the vertex-to-position map. */
+    public int[] vertexPositions() {
+        return vertexPositions.clone();
+    }
+
+    /** The vertices that share position {@code p} (a copy, ascending). */
+    public int[] verticesOfPosition(int p) {
+        int from = positionVertexStart[p];
+        int to = positionVertexStart[p + 1];
+        int[] result = new int[to - from];
+        System.arraycopy(positionVertices, from, result, 0, result.length);
+        return result;
+    }
+
+    public boolean hasNormals() {
+        return normals != null;
+    }
+
+    /** A copy of the normals, 3 floats per vertex as written (not renormalised), or null. */
+    public float[] normals() {
+        return normals == null ? null : normals.clone();
+    }
+
+    /** Number of texture coordinate sets. */
+    public int texCoordSetCount() {
+        return texCoordSets.size();
+    }
+
+    /** A copy of texture coordinate set {@code set} (in set order), 2 floats per vertex. */
+    public float[] texCoords(int set) {
+        return texCoordSets.get(set).clone();
+    }
+
+    public boolean hasColors() {
+        return colors != null;
+    }
+
+    /** A copy of the vertex colours, RGBA per vertex (alpha 1 when the file has RGB), or null. */
+    public float[] colors() {
+        return colors == null ? null : colors.clone();
+    }
+
+    /** A copy of the triangles, 3 vertex indices each. */
+    public int[] triangles() {
+        return triangles.clone();
+    }
+
+    /** Vertex {@code corner} (0..2) of triangle {@code t}. */
+    public int triangleVertex(int t, int corner) {
+        return triangles[3 * t + corner];
+    }
+
+    /** The triangle runs, one per primitive element, in document order. */
+    public List<MeshPart> parts() {
+        return parts;
+    }
+
+    @Override
+    public String toString() {
+        return "Mesh[" + id + ", " + positionCount() + " positions, " + vertexCount() + " vertices, "
+                + triangleCount() + " triangles]";
+    }
+}

@@ -1,0 +1,82 @@
+package org.skinlab.model;
+
+import java.util.List;
+
+/**
+ * A mesh placed in the scene: an {@code <instance_geometry>} (static, {@link #skin()} null) or an
+ * {@code <instance_controller>} (skinned), with the skin's joints resolved to scene nodes.
+ *
+ * <p>Joint resolution (COLLADA 1.4.1, skin and instance_controller): with {@code <skeleton>}
+ * roots, a Name_array joint is the node whose sid matches under those roots (first root first,
+ * depth-first); without roots, or when no sid matches, the node whose id and then whose name
+ * matches. IDREF_array joints are node ids. A joint that matches nothing is an import error.
+ */
+public final class MeshInstance {
+    private final int node;
+    private final Mesh mesh;
+    private final Skin skin;
+    private final int[] jointNodes;
+    private final int[] skeletonRoots;
+    private final List<String> materials;
+
+    /**
+     * @param node          index of the node that holds the instance
+     * @param skin          the skin for a controller instance, or null
+     * @param jointNodes    per skin joint, the node index (empty when static)
+     * @param skeletonRoots the {@code <skeleton>} root node indices, in file order
+     * @param materials     bound material ids, one per bind_material instance, in file order
+     */
+    public MeshInstance(int node, Mesh mesh, Skin skin, int[] jointNodes, int[] skeletonRoots,
+            List<String> materials) {
+        if (skin != null && skin.mesh() != mesh) {
+            throw new IllegalArgumentException("the skin deforms a different mesh");
+        }
+        if (jointNodes.length != (skin == null ? 0 : skin.jointCount())) {
+            throw new IllegalArgumentException("need one node per skin joint");
+        }
+        this.node = node;
+        this.mesh = mesh;
+        this.skin = skin;
+        this.jointNodes = jointNodes.clone();
+        this.skeletonRoots = skeletonRoots.clone();
+        this.materials = List.copyOf(materials);
+    }
+
+    /** Index of the node holding the instance. */
+    public int node() {
+        return node;
+    }
+
+    public Mesh mesh() {
+        return mesh;
+    }
+
+    /** The skin, or null for a static mesh. */
+    public Skin skin() {
+        return skin;
+    }
+
+    public boolean isSkinned() {
+        return skin != null;
+    }
+
+    /** Node index of skin joint {@code j}. */
+    public int jointNode(int j) {
+        return jointNodes[j];
+    }
+
+    /** Node indices of all skin joints (a copy). */
+    public int[] jointNodes() {
+        return jointNodes.clone();
+    }
+
+    /** The {@code <skeleton>} roots (a copy; empty when the instance names none). */
+    public int[] skeletonRoots() {
+        return skeletonRoots.clone();
+    }
+
+    /** Material ids bound to the instance's symbols. */
+    public List<String> materials() {
+        return materials;
+    }
+}

@@ -1,0 +1,103 @@
+package org.skinlab.model;
+
+import java.util.List;
+import java.util.Optional;
+
+/**
+ * Everything the importer read from one file: immutable, validated, in the document's own frame
+ * and units (see {@link AssetInfo}).
+ *
+ * <ul>
+ * <li>{@link #meshes()}: one per {@code <geometry>} with a {@code <mesh>}, in document order,
+ *     whether or not anything instantiates it;</li>
+ * <li>{@link #skins()}: one per {@code <controller>} with a {@code <skin>};</li>
+ * <li>{@link #nodes()}: the instantiated visual scene, depth-first;</li>
+ * <li>{@link #instances()}: meshes placed in that scene, static or skinned;</li>
+ * <li>{@link #clips()}: animation clips whose channels target scene nodes;</li>
+ * <li>{@link #warnings()}: everything the importer tolerated rather than refused.</li>
+ * </ul>
+ */
+public final class Model {
+    private final String source;
+    private final AssetInfo asset;
+    private final List<Mesh> meshes;
+    private final List<Skin> skins;
+    private final List<Node> nodes;
+    private final List<MeshInstance> instances;
+    private final List<AnimationClip> clips;
+    private final List<ImportWarning> warnings;
+
+    public Model(String source, AssetInfo asset, List<Mesh> meshes, List<Skin> skins, List<Node> nodes,
+            List<MeshInstance> instances, List<AnimationClip> clips, List<ImportWarning> warnings) {
+        for (int i = 0; i < nodes.size(); i++) {
+            if (nodes.get(i).index() != i) {
+                throw new IllegalArgumentException("node " + i + " has index " + nodes.get(i).index());
+            }
+        }
+        this.source = source;
+        this.asset = asset;
+        this.meshes = List.copyOf(meshes);
+        this.skins = List.copyOf(skins);
+        this.nodes = List.copyOf(nodes);
+        this.instances = List.copyOf(instances);
+        this.clips = List.copyOf(clips);
+        this.warnings = List.copyOf(warnings);
+    }
+
+    /** The file name (or stream name) the model was read from. */
+    public String source() {
+        return source;
+    }
+
+    public AssetInfo asset() {
+        return asset;
+    }
+
+    public List<Mesh> meshes() {
+        return meshes;
+    }
+
+    public List<Skin> skins() {
+        return skins;
+    }
+
+    public List<Node> nodes() {
+        return nodes;
+    }
+
+    public Node node(int index) {
+        return nodes.get(index);
+    }
+
+    public List<MeshInstance> instances() {
+        return instances;
+    }
+
+    public List<AnimationClip> clips() {
+        return clips;
+    }
+
+    public List<ImportWarning> warnings() {
+        return warnings;
+    }
+
+    /** The mesh of the geometry with the given id. */
+    public Optional<Mesh> mesh(String geometryId) {
+        return meshes.stream().filter(m -> geometryId.equals(m.id())).findFirst();
+    }
+
+    /** The first skin that deforms the given mesh. */
+    public Optional<Skin> skinOf(Mesh mesh) {
+        return skins.stream().filter(s -> s.mesh() == mesh).findFirst();
+    }
+
+    /** The clip with the given name. */
+    public Optional<AnimationClip> clip(String name) {
+        return clips.stream().filter(c -> name.equals(c.name())).findFirst();
+    }
+
+    /** The first node with the given id, searching in depth-first order. */
+    public Optional<Node> nodeById(String id) {
+        return nodes.stream().filter(n -> id.equals(n.id())).findFirst();
+    }
+}

@@ -1,0 +1,150 @@
+package org.skinlab.model;
+
+import org.joml.Matrix4f;
+
+/**
+ * One entry of a node's ordered transform stack: {@code <matrix>}, {@code <translate>},
+ * {@code <rotate>}, {@code <scale>}, {@code <lookat>} or {@code <skew>}, with its values exactly
+ * as written in the file. A node's local matrix is the product of its stack in document order
+ * (COLLADA 1.4.1, "Transformation elements": each element post-multiplies the previous ones).
+ *
+ * <p>Value layouts (the same layout animation channels address, see
+ * {@link AnimationChannel#valueOffset()}):
+ * <ul>
+ * <li>MATRIX: 16 values, row-major as in the file (translation in values 3, 7, 11). The bottom row
+ *     is treated as (0 0 0 1) whatever it holds; the importer warns when it is not.</li>
+ * <li>TRANSLATE, SCALE: x y z.</li>
+ * <li>ROTATE: axis x y z, then the angle in degrees.</li>
+ * <li>LOOKAT: eye, interest point, up vector (9 values); it places the node at the eye looking
+ *     at the interest point, i.e. the inverse of a view matrix.</li>
+ * <li>SKEW: angle in degrees, rotation axis, translation axis (7 values); points move along the
+ *     translation axis by tan(angle) times their component along the rotation axis
+ *     (RenderMan's skew, exact when the two axes are perpendicular).</li>
+ * </ul>
+ */
+public final class TransformElement {
+    /** The kinds of transform element and how many values each holds. */
+    public enum Kind {
+        MATRIX(16), TRANSLATE(3), ROTATE(4), SCALE(3), LOOKAT(9), SKEW(7);
+
+        private final int size;
+
+        Kind(int size) {
+            this.size = size;
+        }
+
+        /** Number of values an element of this kind holds. */
+        public int size() {
+            return size;
+        }
+
+        /** The COLLADA element name, e.g. "translate". */
+        public String elementName() {
+            return name().toLowerCase(java.util.Locale.ROOT);
+        }
+    }
+
+    private final Kind kind;
+    private final String sid;
+    private final float[] values;
+
+    public TransformElement(Kind kind, String sid, float[] values) {
+        if (values.length != kind.size) {
+            throw new IllegalArgumentException(kind + " needs " + kind.size + " values, got " + values.length);
+        }
+        this.kind = kind;
+        this.sid = sid;
+        this.values = values.clone();
+    }
+
+    public Kind kind() {
+        return kind;
+    }
+
+    /** The element's sid (what animation channels target), or null. */
+    public String sid() {
+        return sid;
+    }
+
+    /** A copy of the values, in the layout described in the class comment. */
+    public float[] values() {
+        return values.clone();
+    }
+
+    public float value(int i) {
+        return values[i];
+    }
+
+    /** Copies the values into {@code dest} at {@code offset}. */
+    public void copyValues(float[] dest, int offset) {
+        System.arraycopy(values, 0, dest, offset, values.length);
+    }
+
+    /** Post-multiplies {@code dest} by this element: {@code dest = dest * T}. */
+    public Matrix4f multiply(Matrix4f dest, Matrix4f scratch) {
+        return multiply(kind, values, 0, dest, scratch);
+    }
+
+    /**
+     * Post-multiplies {@code dest} by the transform of the given kind whose values start at
+     * {@code v[offset]}: {@code dest = dest * T}. Allocation-free; {@code scratch} is overwritten.
+     * The one place where COLLADA transform elements become matrices.
+     */
+    public static Matrix4f multiply(Kind kind, float[] v, int o, Matrix4f dest, Matrix4f scratch) {
+        switch (kind) {
+            case MATRIX:
+                // Row-major in the file; JOML's set() takes columns. Bottom row forced to 0 0 0 1.
+                scratch.set(v[o], v[o + 4], v[o + 8], 0f,
+                        v[o + 1], v[o + 5], v[o + 9], 0f,
+                        v[o + 2], v[o + 6], v[o + 10], 0f,
+                        v[o + 3], v[o + 7], v[o + 11], 1f);
+                return dest.mul(scratch);
+            case TRANSLATE:
+                return dest.translate(v[o], v[o + 1], v[o + 2]);
+            case ROTATE: {
+                float x = v[o];
+                float y = v[o + 1];
+                float z = v[o + 2];
+                float len = (float) Math.sqrt(x * x + y * y + z * z);
+                if (len == 0f) {
+                    return dest; // a zero axis rotates nothing; the importer warned
+                }
+                return dest.rotate((float) Math.toRadians(v[o + 3]), x / len, y / len, z / len);
+            }
+            case SCALE:
+                return dest.scale(v[o], v[o + 1], v[o + 2]);
+            case LOOKAT:
+                scratch.setLookAt(v[o], v[o + 1], v[o + 2], v[o + 3], v[o + 4], v[o + 5],
+                        v[o + 6], v[o + 7], v[o + 8]).invertAffine();
+                return dest.mul(scratch);
+            case SKEW: {
+                float t = (float) Math.tan(Math.toRadians(v[o]));
+                float rx = v[o + 1];
+                float ry = v[o + 2];
+                float rz = v[o + 3];
+                float tx = v[o + 4];
+                float ty = v[o + 5];
+                float tz = v[o + 6];
+                float rl = (float) Math.sqrt(rx * rx + ry * ry + rz * rz);
+                float tl = (float) Math.sqrt(tx * tx + ty * ty + tz * tz);
+                if (rl == 0f || tl == 0f) {
+                    return dest;
+                }
+                float k = t / (rl * tl);
+                // M = I + k * tAxis * rAxis^T, written column by column.
+                scratch.set(1f + k * tx * rx, k * ty * rx, k * tz * rx, 0f,
+                        k * tx * ry, 1f + k * ty * ry, k * tz * ry, 0f,
+                        k * tx * rz, k * ty * rz, 1f + k * tz * rz, 0f,
+                        0f, 0f, 0f, 1f);
+                return dest.mul(scratch);
+            }
+            default:
+                throw new IllegalStateException(kind.toString());
+        }
+    }
+
+    @Override
+    public String toString() {
+        return "<" + kind.elementName() + (sid == null ? "" : " sid=\"" + sid + "\"") + ">";
+    }
+}
