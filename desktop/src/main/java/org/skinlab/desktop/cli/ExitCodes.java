@@ -1,0 +1,21 @@
+package org.skinlab.desktop.cli;
+
+/**
+ * The exit statuses of every skinlab command (a contract other tools rely on).
+ *
+ * <ul>
+ * <li>0: success</li>
+ * <li>1: an internal error (a bug: please report it with the file)</li>
+ * <li>2: usage error (unknown option, missing argument, a path that does not exist)</li>
+ * <li>3: the file could not be imported (malformed, refused or inconsistent COLLADA, or unreadable)</li>
+ * </ul>
+ */
+public final class ExitCodes {
+    public static final int OK = 0;
+    public static final int INTERNAL = 1;
+    public static final int USAGE = 2;
+    public static final int INVALID_FILE = 3;
+
+    private ExitCodes() {
+    }
+}

@@ -1,0 +1,135 @@
+package org.skinlab.desktop.cli;
+
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.util.Locale;
+import java.util.Optional;
+import java.util.concurrent.Callable;
+
+import com.fasterxml.jackson.core.JsonProcessingException;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.node.ArrayNode;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+
+import org.skinlab.model.AnimationClip;
+import org.skinlab.model.ImportWarning;
+import org.skinlab.model.Mesh;
+import org.skinlab.model.Model;
+import org.skinlab.model.Skin;
+
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+import picocli.CommandLine.Model.CommandSpec;
+
+/**
+ * {@code skinlab inspect FILE [--json]}: what the importer read. The JSON form is a contract:
+ * <pre>
+ * {"file":..., "upAxis":"Z_UP", "unitMeter":1.0,
+ *  "meshes":[{"geometry":ID, "name":NAME, "positions":N, "triangles":N, "skinned":true,
+ *             "joints":N, "maxInfluences":N}],
+ *  "clips":[{"name":..., "duration":S, "channels":N}], "warnings":[...], "loadMillis":X}
+ * </pre>
+ * One mesh entry per {@code <geometry>} with a mesh; {@code positions} counts the entries of its
+ * {@code <vertices>} POSITION source and {@code triangles} the triangles after fan
+ * triangulation (lines not counted). {@code joints} and {@code maxInfluences} come from the first
+ * skin on the geometry (0 when it has none).
+ */
+@Command(name = "inspect", mixinStandardHelpOptions = true,
+        description = "Import a COLLADA file and summarise its meshes, skins, clips and warnings.")
+public final class InspectCommand implements Callable<Integer> {
+    @Parameters(index = "0", paramLabel = "FILE", description = "the .dae file")
+    Path file;
+
+    @Option(names = "--json", description = "print the summary as one line of JSON")
+    boolean json;
+
+    @Spec
+    CommandSpec spec;
+
+    @Override
+    public Integer call() throws JsonProcessingException {
+        ModelFiles.Loaded loaded = ModelFiles.load(file);
+        PrintWriter out = spec.commandLine().getOut();
+        if (json) {
+            ObjectMapper mapper = new ObjectMapper();
+            out.println(mapper.writeValueAsString(summary(mapper, file.toString(), loaded.model, loaded.millis)));
+        } else {
+            out.print(text(file.toString(), loaded.model, loaded.millis));
+        }
+        out.flush();
+        return ExitCodes.OK;
+    }
+
+    /** The JSON summary (key order as in the contract). */
+    static ObjectNode summary(ObjectMapper mapper, String fileName, Model model, double loadMillis) {
+        ObjectNode root = mapper.createObjectNode();
+        root.put("file", fileName);
+        root.put("upAxis", model.asset().upAxis().name());
+        root.put("unitMeter", model.asset().unitMeter());
+        ArrayNode meshes = root.putArray("meshes");
+        for (Mesh mesh : model.meshes()) {
+            Optional<Skin> skin = model.skinOf(mesh);
+            ObjectNode m = meshes.addObject();
+            m.put("geometry", mesh.id());
+            m.put("name", mesh.name());
+            m.put("positions", mesh.positionCount());
+            m.put("triangles", mesh.triangleCount());
+            m.put("skinned", skin.isPresent());
+            m.put("joints", skin.map(Skin::jointCount).orElse(0));
+            m.put("maxInfluences", skin.map(Skin::maxInfluences).orElse(0));
+        }
+        ArrayNode clips = root.putArray("clips");
+        for (AnimationClip clip : model.clips()) {
+            ObjectNode c = clips.addObject();
+            c.put("name", clip.name());
+            c.put("duration", shortest(clip.duration()));
+            c.put("channels", clip.channels().size());
+        }
+        ArrayNode warnings = root.putArray("warnings");
+        for (ImportWarning w : model.warnings()) {
+            warnings.add(w.toString());
+        }
+        root.put("loadMillis", Math.round(loadMillis * 1000.0) / 1000.0);
+        return root;
+    }
+
+    /** The human-readable summary. */
+    static String text(String fileName, Model model, double loadMillis) {
+        StringBuilder sb = new StringBuilder();
+        sb.append(fileName).append('\n');
+        sb.append(String.format(Locale.ROOT, "  frame:    %s, 1 unit = %s m%s%n", model.asset().upAxis(),
+                trim(model.asset().unitMeter()),
+                model.asset().authoringTool() == null ? "" : ", written by " + model.asset().authoringTool()));
+        sb.append(String.format(Locale.ROOT, "  loaded in %.1f ms%n", loadMillis));
+        sb.append("  meshes:   ").append(model.meshes().size()).append('\n');
+        for (Mesh mesh : model.meshes()) {
+            Optional<Skin> skin = model.skinOf(mesh);
+            sb.append(String.format(Locale.ROOT, "    %-28s %7d positions %8d triangles  %s%n",
+                    mesh.id() + (mesh.name() == null || mesh.name().equals(mesh.id()) ? "" : " (" + mesh.name() + ")"),
+                    mesh.positionCount(), mesh.triangleCount(),
+                    skin.map(s -> "skinned: " + s.jointCount() + " joints, up to " + s.maxInfluences()
+                            + " influences per position").orElse("static")));
+        }
+        sb.append("  clips:    ").append(model.clips().size()).append('\n');
+        for (AnimationClip clip : model.clips()) {
+            sb.append(String.format(Locale.ROOT, "    %-28s %8.3f s %5d channels%n", clip.name(), clip.duration(),
+                    clip.channels().size()));
+        }
+        sb.append("  warnings: ").append(model.warnings().size()).append('\n');
+        for (ImportWarning w : model.warnings()) {
+            sb.append("    ").append(w).append('\n');
+        }
+        return sb.toString();
+    }
+
+    /** The float's shortest decimal form as a double, so JSON shows 0.8333333 and not 0.8333333134651184. */
+    static double shortest(float f) {
+        return Double.parseDouble(Float.toString(f));
+    }
+
+    private static String trim(double d) {
+        return d == Math.rint(d) ? String.valueOf((long) d) : String.valueOf(d);
+    }
+}

@@ -1,0 +1,47 @@
+package org.skinlab.desktop.cli;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+
+import org.skinlab.collada.ColladaException;
+import org.skinlab.collada.ColladaImporter;
+import org.skinlab.model.Model;
+
+/** Loads the file a command names, turning failures into {@link CommandFailure}s. */
+final class ModelFiles {
+    private ModelFiles() {
+    }
+
+    /** A model and how long the import took. */
+    static final class Loaded {
+        final Model model;
+        final double millis;
+
+        Loaded(Model model, double millis) {
+            this.model = model;
+            this.millis = millis;
+        }
+    }
+
+    static Loaded load(Path file) {
+        if (!Files.exists(file)) {
+            throw new CommandFailure(ExitCodes.USAGE, "file not found: " + file, null);
+        }
+        if (Files.isDirectory(file)) {
+            throw new CommandFailure(ExitCodes.USAGE, file + " is a directory, not a COLLADA file", null);
+        }
+        long start = System.nanoTime();
+        try {
+            Model model = ColladaImporter.read(file);
+            return new Loaded(model, (System.nanoTime() - start) / 1e6);
+        } catch (ColladaException e) {
+            throw new CommandFailure(ExitCodes.INVALID_FILE, e.getMessage(), e);
+        } catch (NoSuchFileException e) {
+            throw new CommandFailure(ExitCodes.USAGE, "file not found: " + file, e);
+        } catch (IOException e) {
+            throw new CommandFailure(ExitCodes.INVALID_FILE, file.getFileName() + ": cannot be read: " + e.getMessage(), e);
+        }
+    }
+}

@@ -1,0 +1,241 @@
+package org.skinlab.desktop.cli;
+
+import java.io.ByteArrayInputStream;
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+import java.util.stream.Collectors;
+import java.util.stream.Stream;
+
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.node.ArrayNode;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+
+import org.skinlab.collada.ColladaException;
+import org.skinlab.collada.ColladaImporter;
+import org.skinlab.desktop.bench.SyntheticCollada;
+import org.skinlab.model.Mesh;
+import org.skinlab.model.Model;
+
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+import picocli.CommandLine.Model.CommandSpec;
+
+/**
+ * {@code skinlab bench parse}: import speed. Files are read into memory first, so the figures
+ * are the importer's (XML parsing included), not the disk's. Each file is imported repeatedly
+ * after a shared warm-up; the report gives the minimum and median time per import and the
+ * throughput at the median (1 MB = 10^6 bytes).
+ */
+@Command(name = "parse", mixinStandardHelpOptions = true,
+        description = "Import speed on our assets, the shared corpus and a generated large file.")
+public final class ParseBenchCommand implements Callable<Integer> {
+    @Parameters(arity = "0..*", paramLabel = "FILE",
+            description = "files to measure (default: assets/**/*.dae, the shared corpus and a generated file)")
+    List<Path> files = new ArrayList<>();
+
+    @Option(names = "--assets", paramLabel = "DIR", description = "our assets (default: ${DEFAULT-VALUE})")
+    Path assets = Path.of("assets");
+
+    @Option(names = "--corpus", paramLabel = "DIR",
+            description = "third-party corpus, skipped when absent (default: ${DEFAULT-VALUE})")
+    Path corpus = Path.of("../shared/corpus");
+
+    @Option(names = "--generated-triangles", paramLabel = "N",
+            description = "triangles of the generated file; 0 for none (default: ${DEFAULT-VALUE})")
+    long generatedTriangles = 1_000_000;
+
+    @Option(names = "--warmup-seconds", paramLabel = "S", description = "shared warm-up (default: ${DEFAULT-VALUE})")
+    double warmupSeconds = 3.0;
+
+    @Option(names = "--runs", paramLabel = "N",
+            description = "measured imports per file under 10 MB (default: ${DEFAULT-VALUE}); larger files get 5")
+    int runs = 25;
+
+    @Option(names = "--json", description = "print the results as one line of JSON")
+    boolean json;
+
+    @Spec
+    CommandSpec spec;
+
+    /** One file's measurement. */
+    static final class Result {
+        final String name;
+        final long bytes;
+        final long triangles;
+        final double[] millis;
+
+        Result(String name, long bytes, long triangles, double[] millis) {
+            this.name = name;
+            this.bytes = bytes;
+            this.triangles = triangles;
+            this.millis = millis;
+        }
+
+        double min() {
+            return Arrays.stream(millis).min().orElse(Double.NaN);
+        }
+
+        double median() {
+            double[] s = millis.clone();
+            Arrays.sort(s);
+            int n = s.length;
+            return n % 2 == 1 ? s[n / 2] : (s[n / 2 - 1] + s[n / 2]) / 2;
+        }
+
+        double mbPerSecond() {
+            return bytes / 1e6 / (median() / 1000.0);
+        }
+    }
+
+    @Override
+    public Integer call() throws IOException {
+        PrintWriter out = spec.commandLine().getOut();
+        PrintWriter err = spec.commandLine().getErr();
+        List<Path> inputs = new ArrayList<>(files);
+        if (inputs.isEmpty()) {
+            inputs.addAll(daeFiles(assets));
+            if (Files.isDirectory(corpus)) {
+                inputs.addAll(daeFiles(corpus));
+            } else {
+                err.println("bench parse: no corpus at " + corpus + "; measuring our assets only");
+            }
+        }
+        Path generated = null;
+        try {
+            if (generatedTriangles > 0 && files.isEmpty()) {
+                generated = Files.createTempFile("skinlab-generated-", ".dae");
+                long t = SyntheticCollada.write(generated, generatedTriangles);
+                err.printf(Locale.ROOT, "bench parse: generated %s (%d triangles, %.1f MB)%n", generated, t,
+                        Files.size(generated) / 1e6);
+                inputs.add(generated);
+            }
+            List<byte[]> data = new ArrayList<>();
+            for (Path p : inputs) {
+                if (!Files.isRegularFile(p)) {
+                    throw new CommandFailure(ExitCodes.USAGE, "file not found: " + p, null);
+                }
+                data.add(Files.readAllBytes(p));
+            }
+            List<Result> results = measure(inputs, data, generated, err);
+            if (json) {
+                out.println(new ObjectMapper().writeValueAsString(toJson(results)));
+            } else {
+                out.print(table(results));
+            }
+            out.flush();
+            return ExitCodes.OK;
+        } finally {
+            if (generated != null) {
+                Files.deleteIfExists(generated);
+            }
+        }
+    }
+
+    private List<Result> measure(List<Path> inputs, List<byte[]> data, Path generated, PrintWriter err) {
+        // Shared warm-up over the small files, then one import of each large file.
+        long warmupEnd = System.nanoTime() + (long) (warmupSeconds * 1e9);
+        do {
+            for (int i = 0; i < data.size(); i++) {
+                if (data.get(i).length < 10_000_000) {
+                    importOnce(inputs.get(i), data.get(i));
+                }
+            }
+        } while (System.nanoTime() < warmupEnd);
+        List<Result> results = new ArrayList<>();
+        for (int i = 0; i < data.size(); i++) {
+            byte[] bytes = data.get(i);
+            boolean large = bytes.length >= 10_000_000;
+            if (large) {
+                System.gc();
+                importOnce(inputs.get(i), bytes);
+            }
+            int n = large ? 5 : runs;
+            double[] millis = new double[n];
+            Model model = null;
+            for (int r = 0; r < n; r++) {
+                if (large) {
+                    System.gc();
+                }
+                long t0 = System.nanoTime();
+                model = importOnce(inputs.get(i), bytes);
+                millis[r] = (System.nanoTime() - t0) / 1e6;
+            }
+            long triangles = model.meshes().stream().mapToLong(Mesh::triangleCount).sum();
+            String name = inputs.get(i).equals(generated) ? "generated-" + triangles + "-triangles.dae"
+                    : inputs.get(i).getFileName().toString();
+            results.add(new Result(name, bytes.length, triangles, millis));
+            err.printf(Locale.ROOT, "bench parse: %s %.2f ms%n", name, results.get(results.size() - 1).median());
+        }
+        return results;
+    }
+
+    private static Model importOnce(Path path, byte[] bytes) {
+        try {
+            return ColladaImporter.read(new ByteArrayInputStream(bytes), path.getFileName().toString());
+        } catch (ColladaException e) {
+            throw new CommandFailure(ExitCodes.INVALID_FILE, e.getMessage(), e);
+        } catch (IOException e) {
+            throw new CommandFailure(ExitCodes.INVALID_FILE, path + ": " + e.getMessage(), e);
+        }
+    }
+
+    private static List<Path> daeFiles(Path dir) throws IOException {
+        if (!Files.isDirectory(dir)) {
+            return List.of();
+        }
+        try (Stream<Path> s = Files.walk(dir)) {
+            return s.filter(p -> p.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".dae"))
+                    .sorted().collect(Collectors.toList());
+        }
+    }
+
+    private static ObjectNode toJson(List<Result> results) {
+        ObjectMapper mapper = new ObjectMapper();
+        ObjectNode root = mapper.createObjectNode();
+        root.put("benchmark", "parse");
+        root.put("java", System.getProperty("java.version"));
+        root.put("cores", Runtime.getRuntime().availableProcessors());
+        ArrayNode list = root.putArray("files");
+        for (Result r : results) {
+            ObjectNode f = list.addObject();
+            f.put("file", r.name);
+            f.put("bytes", r.bytes);
+            f.put("triangles", r.triangles);
+            f.put("runs", r.millis.length);
+            f.put("minMillis", round(r.min()));
+            f.put("medianMillis", round(r.median()));
+            f.put("mbPerSecond", round(r.mbPerSecond()));
+        }
+        return root;
+    }
+
+    private static double round(double d) {
+        return Math.round(d * 1000.0) / 1000.0;
+    }
+
+    private static String table(List<Result> results) {
+        StringBuilder sb = new StringBuilder();
+        sb.append(String.format(Locale.ROOT, "%-40s %9s %10s %9s %9s %8s%n", "file", "MB", "triangles", "min ms",
+                "median ms", "MB/s"));
+        long bytes = 0;
+        double millis = 0;
+        for (Result r : results) {
+            sb.append(String.format(Locale.ROOT, "%-40s %9.3f %10d %9.2f %9.2f %8.1f%n", r.name, r.bytes / 1e6,
+                    r.triangles, r.min(), r.median(), r.mbPerSecond()));
+            bytes += r.bytes;
+            millis += r.median();
+        }
+        sb.append(String.format(Locale.ROOT, "%-40s %9.3f %10s %9s %9.2f %8.1f%n", "all files (sum of medians)",
+                bytes / 1e6, "", "", millis, bytes / 1e6 / (millis / 1000.0)));
+        return sb.toString();
+    }
+}

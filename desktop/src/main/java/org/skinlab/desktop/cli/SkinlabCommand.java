@@ -1,0 +1,59 @@
+package org.skinlab.desktop.cli;
+
+import java.io.PrintWriter;
+
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+
+/** The {@code skinlab} command and its subcommands. */
+@Command(name = "skinlab", mixinStandardHelpOptions = true, versionProvider = SkinlabCommand.Version.class,
+        description = "Skeletal animation lab: import COLLADA characters, inspect them, benchmark the importer.",
+        subcommands = {InspectCommand.class, BenchCommand.class, CommandLine.HelpCommand.class})
+public final class SkinlabCommand implements Runnable {
+    @CommandLine.Spec
+    CommandLine.Model.CommandSpec spec;
+
+    @Override
+    public void run() {
+        throw new CommandLine.ParameterException(spec.commandLine(), "a subcommand is required");
+    }
+
+    /** Runs the command line and returns the exit status (see {@link ExitCodes}). */
+    public static int run(String... args) {
+        return run(new PrintWriter(System.out, true), new PrintWriter(System.err, true), args);
+    }
+
+    /** Runs with the given output streams (used by tests). */
+    public static int run(PrintWriter out, PrintWriter err, String... args) {
+        CommandLine cl = new CommandLine(new SkinlabCommand());
+        cl.setOut(out);
+        cl.setErr(err);
+        cl.setExitCodeExceptionMapper(e -> ExitCodes.USAGE);
+        // Failures are one line on stderr, never a stack trace.
+        cl.setExecutionExceptionHandler((e, commandLine, parseResult) -> {
+            if (e instanceof CommandFailure) {
+                commandLine.getErr().println("skinlab: " + oneLine(e.getMessage()));
+                return ((CommandFailure) e).status();
+            }
+            commandLine.getErr().println("skinlab: internal error: " + oneLine(String.valueOf(e)));
+            return ExitCodes.INTERNAL;
+        });
+        int status = cl.execute(args);
+        out.flush();
+        err.flush();
+        return status;
+    }
+
+    static String oneLine(String message) {
+        return message == null ? "" : message.replaceAll("\\s+", " ").trim();
+    }
+
+    /** Version from the jar manifest when packaged, else "development". */
+    public static final class Version implements CommandLine.IVersionProvider {
+        @Override
+        public String[] getVersion() {
+            String v = SkinlabCommand.class.getPackage().getImplementationVersion();
+            return new String[] {"skinlab " + (v == null ? "development" : v)};
+        }
+    }
+}
