@@ -1,0 +1,546 @@
+#!/usr/bin/env python3
+"""Check every COLLADA file under assets/ (plain Python 3, standard library only, no Blender).
+
+Usage (from the repository root):  python3 assets/src/check_assets.py [ASSETS_DIR]
+
+For each .dae it prints the geometry (positions, normals, triangles, closed or not, enclosed
+volume), the skin (joints, influences per vertex, bind shape matrix) and the animation (channels,
+key times, rotation step between consecutive keys, bone scale), then asserts the requirements in
+EXPECT below plus generic ones (one mesh, one skin, <= 4 influences, weights sum to 1, every joint
+and channel target resolves, no cameras or lights, steps < 180 degrees, file < 2 MB).
+If assets/reference/<name>.json exists (written by the Blender build scripts: Blender's own
+deformed vertices at each key), it also skins the mesh itself with linear blend skinning,
+  v' = sum_i w_i * JointWorld_i(t) * INV_BIND_MATRIX_i * BIND_SHAPE_MATRIX * v,
+from the file alone and asserts that the result matches Blender's. It also prints the enclosed
+volume of that LBS result at each key (the volume loss the project measures later).
+Exit status 1 if any check fails.
+"""
+import json
+import math
+import os
+import sys
+import xml.etree.ElementTree as ET
+
+NS = "{http://www.collada.org/2005/11/COLLADASchema}"
+MAX_BYTES = 2 * 1024 * 1024
+
+# Requirements per file (paths relative to the assets directory).
+EXPECT = {
+    "cylinders/cylinder-twist-low.dae": dict(
+        joints=(2, 2), triangles=(1000, 1300), closed=True, min_keys=5,
+        motion=("upper", "Y", 165.0, 179.0)),
+    "cylinders/cylinder-twist-high.dae": dict(
+        joints=(2, 2), triangles=(1900, 2200), closed=True, min_keys=5,
+        motion=("upper", "Y", 165.0, 179.0)),
+    "cylinders/cylinder-bend.dae": dict(
+        joints=(2, 2), triangles=(1900, 2200), closed=True, min_keys=5,
+        motion=("upper", "X", 160.0, 179.0), passes_through=("upper", 90.0)),
+    "characters/humanoid-walk.dae": dict(
+        joints=(15, 64), triangles=(1000, 2000), closed=True, min_keys=5, loop=True,
+        duration=(0.8, 1.2)),
+    "creatures/tentacle-wave.dae": dict(
+        joints=(6, 10), triangles=(500, 3000), closed=True, min_keys=5, loop=True,
+        scaled=True, non_uniform=True),
+}
+
+
+class CheckError(Exception):
+    pass
+
+
+FAILURES = []
+
+
+def check(cond, msg):
+    if not cond:
+        FAILURES.append(msg)
+        print("    FAIL: " + msg)
+    return cond
+
+
+# ---------------------------------------------------------------- small 4x4 matrix helpers
+def mat(values):
+    """COLLADA matrices are written row by row."""
+    v = [float(x) for x in values]
+    return [v[0:4], v[4:8], v[8:12], v[12:16]]
+
+
+def mul(a, b):
+    return [[sum(a[i][k] * b[k][j] for k in range(4)) for j in range(4)] for i in range(4)]
+
+
+def identity():
+    return [[1.0 if i == j else 0.0 for j in range(4)] for i in range(4)]
+
+
+def is_identity(m, tol=1e-6):
+    return all(abs(m[i][j] - (1.0 if i == j else 0.0)) < tol for i in range(4) for j in range(4))
+
+
+def transform_point(m, p):
+    return [m[i][0] * p[0] + m[i][1] * p[1] + m[i][2] * p[2] + m[i][3] for i in range(3)]
+
+
+def column_scales(m):
+    return [math.sqrt(sum(m[r][c] ** 2 for r in range(3))) for c in range(3)]
+
+
+def rotation_part(m):
+    s = column_scales(m)
+    return [[m[r][c] / s[c] for c in range(3)] for r in range(3)]
+
+
+def relative_rotation(m0, m1):
+    """Angle (degrees) and axis (in m0's frame) of the rotation taking m0's rotation to m1's."""
+    r0, r1 = rotation_part(m0), rotation_part(m1)
+    rel = [[sum(r0[k][i] * r1[k][j] for k in range(3)) for j in range(3)] for i in range(3)]  # r0^T r1
+    c = max(-1.0, min(1.0, (rel[0][0] + rel[1][1] + rel[2][2] - 1.0) / 2.0))
+    axis = [rel[2][1] - rel[1][2], rel[0][2] - rel[2][0], rel[1][0] - rel[0][1]]
+    n = math.sqrt(sum(a * a for a in axis))
+    axis = [a / n for a in axis] if n > 1e-9 else [0.0, 0.0, 0.0]
+    return math.degrees(math.acos(c)), axis
+
+
+def decompose_rotation_matrix(m):
+    """3x3 rotation matrix of a COLLADA transform row-major list-of-rows."""
+    return rotation_part(m)
+
+
+# ---------------------------------------------------------------- COLLADA reading
+def floats(el):
+    return [float(x) for x in (el.text or "").split()]
+
+
+def ints(el):
+    return [int(x) for x in (el.text or "").split()]
+
+
+def source_by_id(root, ref):
+    ref = ref.lstrip("#")
+    for el in root.iter():
+        if el.get("id") == ref:
+            return el
+    raise CheckError("no element with id %r" % ref)
+
+
+def source_array(root, ref):
+    """(values, stride) of a <source>, values as floats or names."""
+    src = source_by_id(root, ref)
+    acc = src.find(NS + "technique_common/" + NS + "accessor")
+    stride = int(acc.get("stride", "1")) if acc is not None else 1
+    fa = src.find(NS + "float_array")
+    if fa is not None:
+        return floats(fa), stride
+    na = src.find(NS + "Name_array")
+    if na is None:
+        na = src.find(NS + "IDREF_array")
+    return (na.text or "").split(), stride
+
+
+def read_geometry(root, geom):
+    mesh = geom.find(NS + "mesh")
+    verts = mesh.find(NS + "vertices")
+    pos_ref = [i for i in verts.findall(NS + "input") if i.get("semantic") == "POSITION"][0].get("source")
+    positions, stride = source_array(root, pos_ref)
+    assert stride == 3
+    pts = [positions[i:i + 3] for i in range(0, len(positions), 3)]
+    normals = 0
+    tris = []
+    kinds = []
+    for prim in list(mesh):
+        tag = prim.tag.replace(NS, "")
+        if tag not in ("triangles", "polylist", "polygons"):
+            continue
+        kinds.append(tag)
+        inputs = prim.findall(NS + "input")
+        n_off = max(int(i.get("offset", "0")) for i in inputs) + 1
+        v_off = [int(i.get("offset", "0")) for i in inputs if i.get("semantic") == "VERTEX"][0]
+        for i in inputs:
+            if i.get("semantic") == "NORMAL":
+                normals = max(normals, len(source_array(root, i.get("source"))[0]) // 3)
+        if tag == "polygons":
+            polys = [ints(p) for p in prim.findall(NS + "p")]
+            counts = [len(p) // n_off for p in polys]
+            idx = [x for p in polys for x in p]
+        else:
+            idx = ints(prim.find(NS + "p"))
+            if tag == "triangles":
+                counts = [3] * int(prim.get("count"))
+            else:
+                counts = ints(prim.find(NS + "vcount"))
+        at = 0
+        for c in counts:
+            corner = [idx[(at + k) * n_off + v_off] for k in range(c)]
+            for k in range(1, c - 1):       # fan; Blender writes triangles anyway
+                tris.append((corner[0], corner[k], corner[k + 1]))
+            at += c
+    return dict(id=geom.get("id"), points=pts, triangles=tris, normals=normals, kinds=kinds)
+
+
+def closed_manifold(tris):
+    """Every edge used by exactly two triangles, once in each direction (closed, oriented)."""
+    directed = {}
+    for a, b, c in tris:
+        for e in ((a, b), (b, c), (c, a)):
+            directed[e] = directed.get(e, 0) + 1
+    bad = 0
+    for (a, b), n in directed.items():
+        if n != 1 or directed.get((b, a), 0) != 1:
+            bad += 1
+    return bad == 0, bad
+
+
+def volume(points, tris):
+    v = 0.0
+    for a, b, c in tris:
+        p, q, r = points[a], points[b], points[c]
+        v += (p[0] * (q[1] * r[2] - q[2] * r[1]) - p[1] * (q[0] * r[2] - q[2] * r[0])
+              + p[2] * (q[0] * r[1] - q[1] * r[0]))
+    return v / 6.0
+
+
+def node_matrix(node):
+    m = identity()
+    for el in list(node):
+        tag = el.tag.replace(NS, "")
+        if tag == "matrix":
+            m = mul(m, mat(floats(el)))
+        elif tag == "translate":
+            x, y, z = floats(el)
+            m = mul(m, [[1, 0, 0, x], [0, 1, 0, y], [0, 0, 1, z], [0, 0, 0, 1]])
+        elif tag == "scale":
+            x, y, z = floats(el)
+            m = mul(m, [[x, 0, 0, 0], [0, y, 0, 0], [0, 0, z, 0], [0, 0, 0, 1]])
+        elif tag == "rotate":
+            x, y, z, a = floats(el)
+            a = math.radians(a)
+            c, s, t = math.cos(a), math.sin(a), 1 - math.cos(a)
+            m = mul(m, [[t * x * x + c, t * x * y - s * z, t * x * z + s * y, 0],
+                        [t * x * y + s * z, t * y * y + c, t * y * z - s * x, 0],
+                        [t * x * z - s * y, t * y * z + s * x, t * z * z + c, 0], [0, 0, 0, 1]])
+    return m
+
+
+def read_scene(root):
+    nodes = {}     # id -> dict
+    order = []
+
+    def walk(el, parent):
+        for n in el.findall(NS + "node"):
+            nid = n.get("id")
+            nodes[nid] = dict(el=n, parent=parent, sid=n.get("sid"), name=n.get("name"),
+                              type=n.get("type", "NODE"), matrix=node_matrix(n),
+                              has_matrix_el=n.find(NS + "matrix") is not None)
+            order.append(nid)
+            walk(n, nid)
+
+    for vs in root.iter(NS + "visual_scene"):
+        walk(vs, None)
+    return nodes, order
+
+
+def read_animations(root):
+    channels = {}   # target node id -> (times, matrices, interpolations, target string)
+    for anim in root.iter(NS + "animation"):
+        for ch in anim.findall(NS + "channel"):
+            target = ch.get("target")
+            sampler = source_by_id(root, ch.get("source"))
+            inputs = {i.get("semantic"): i.get("source") for i in sampler.findall(NS + "input")}
+            times, _ = source_array(root, inputs["INPUT"])
+            out, stride = source_array(root, inputs["OUTPUT"])
+            interp, _ = source_array(root, inputs["INTERPOLATION"]) if "INTERPOLATION" in inputs else ([], 1)
+            node_id, _, what = target.partition("/")
+            if stride != 16:
+                raise CheckError("channel %s is not a baked matrix (stride %d)" % (target, stride))
+            mats = [mat(out[i:i + 16]) for i in range(0, len(out), 16)]
+            if node_id in channels:
+                raise CheckError("two channels for node %s" % node_id)
+            channels[node_id] = dict(times=times, mats=mats, interp=interp, target=target, what=what)
+    return channels
+
+
+def read_skin(root):
+    skins = list(root.iter(NS + "skin"))
+    if len(skins) != 1:
+        raise CheckError("expected exactly one <skin>, found %d" % len(skins))
+    skin = skins[0]
+    bsm_el = skin.find(NS + "bind_shape_matrix")
+    bsm = mat(floats(bsm_el)) if bsm_el is not None else identity()
+    jinputs = {i.get("semantic"): i.get("source") for i in skin.find(NS + "joints").findall(NS + "input")}
+    joint_names, _ = source_array(root, jinputs["JOINT"])
+    joint_src = source_by_id(root, jinputs["JOINT"])
+    name_kind = "Name_array" if joint_src.find(NS + "Name_array") is not None else "IDREF_array"
+    ibm_vals, _ = source_array(root, jinputs["INV_BIND_MATRIX"])
+    ibms = [mat(ibm_vals[i:i + 16]) for i in range(0, len(ibm_vals), 16)]
+    vw = skin.find(NS + "vertex_weights")
+    vinputs = vw.findall(NS + "input")
+    stride = max(int(i.get("offset")) for i in vinputs) + 1
+    j_off = [int(i.get("offset")) for i in vinputs if i.get("semantic") == "JOINT"][0]
+    w_off = [int(i.get("offset")) for i in vinputs if i.get("semantic") == "WEIGHT"][0]
+    w_src = [i.get("source") for i in vinputs if i.get("semantic") == "WEIGHT"][0]
+    weights, _ = source_array(root, w_src)
+    vcount = ints(vw.find(NS + "vcount"))
+    v = ints(vw.find(NS + "v"))
+    infl = []
+    at = 0
+    for c in vcount:
+        infl.append([(v[(at + k) * stride + j_off], weights[v[(at + k) * stride + w_off]]) for k in range(c)])
+        at += c
+    return dict(source=skin.get("source"), bsm=bsm, joints=joint_names, name_kind=name_kind,
+                ibms=ibms, influences=infl, count=int(vw.get("count")))
+
+
+def resolve_joints(nodes, joint_names):
+    """Skin joint names refer to node sids (COLLADA 1.4 with <skeleton>); fall back to ids/names."""
+    by_sid = {n["sid"]: nid for nid, n in nodes.items() if n["sid"]}
+    by_name = {n["name"]: nid for nid, n in nodes.items() if n["name"]}
+    out, how = [], set()
+    for j in joint_names:
+        if j in by_sid:
+            out.append(by_sid[j]); how.add("sid")
+        elif j in nodes:
+            out.append(j); how.add("id")
+        elif j in by_name:
+            out.append(by_name[j]); how.add("name")
+        else:
+            out.append(None)
+    return out, how
+
+
+def world_matrices(nodes, order, channels, key_index):
+    world = {}
+    for nid in order:
+        n = nodes[nid]
+        local = channels[nid]["mats"][key_index] if nid in channels else n["matrix"]
+        world[nid] = mul(world[n["parent"]], local) if n["parent"] else local
+    return world
+
+
+def lbs(points, skin, joint_nodes, world):
+    mats = [mul(mul(world[jn], ibm), skin["bsm"]) for jn, ibm in zip(joint_nodes, skin["ibms"])]
+    out = []
+    for p, infl in zip(points, skin["influences"]):
+        acc = [0.0, 0.0, 0.0]
+        for j, w in infl:
+            q = transform_point(mats[j], p)
+            acc = [a + w * b for a, b in zip(acc, q)]
+        out.append(acc)
+    return out
+
+
+# ---------------------------------------------------------------- per file
+def check_file(path, rel, ref_dir):
+    exp = EXPECT.get(rel, {})
+    size = os.path.getsize(path)
+    print("\n== %s (%d bytes)%s" % (rel, size, "" if exp else "  [no specific requirements]"))
+    check(size < MAX_BYTES, "%s: file size %d >= 2 MB" % (rel, size))
+    root = ET.parse(path).getroot()
+
+    # no cameras, no lights
+    for tag in ("camera", "light", "instance_camera", "instance_light"):
+        check(next(root.iter(NS + tag), None) is None, "%s: contains <%s>" % (rel, tag))
+    up = root.find(NS + "asset/" + NS + "up_axis")
+    print("  up_axis %s, unit %s" % (up.text if up is not None else "?",
+                                     (root.find(NS + "asset/" + NS + "unit").attrib
+                                      if root.find(NS + "asset/" + NS + "unit") is not None else "?")))
+
+    geoms = list(root.iter(NS + "geometry"))
+    check(len(geoms) == 1, "%s: %d geometries, expected 1" % (rel, len(geoms)))
+    g = read_geometry(root, geoms[0])
+    closed, bad_edges = closed_manifold(g["triangles"])
+    vol0 = volume(g["points"], g["triangles"])
+    print("  geometry %s: %d positions, %d normals, %d triangles (%s), closed: %s%s, volume %.5f m^3"
+          % (g["id"], len(g["points"]), g["normals"], len(g["triangles"]), "+".join(g["kinds"]),
+             closed, "" if closed else " (%d bad edges)" % bad_edges, vol0))
+    if "triangles" in exp:
+        lo, hi = exp["triangles"]
+        check(lo <= len(g["triangles"]) <= hi, "%s: %d triangles not in [%d, %d]" % (rel, len(g["triangles"]), lo, hi))
+    if exp.get("closed"):
+        check(closed, "%s: mesh is not closed (%d bad edges)" % (rel, bad_edges))
+
+    skin = read_skin(root)
+    nodes, order = read_scene(root)
+    joint_nodes, how = resolve_joints(nodes, skin["joints"])
+    max_infl = max(len(i) for i in skin["influences"])
+    hist = {}
+    for i in skin["influences"]:
+        hist[len(i)] = hist.get(len(i), 0) + 1
+    sums = [sum(w for _, w in i) for i in skin["influences"]]
+    print("  skin of %s: %d joints (%s, resolved by %s), bind_shape_matrix %s"
+          % (skin["source"], len(skin["joints"]), skin["name_kind"], "/".join(sorted(how)) or "-",
+             "identity" if is_identity(skin["bsm"]) else skin["bsm"]))
+    print("    joints: %s" % " ".join(skin["joints"]))
+    print("    influences per vertex: max %d, histogram %s; weight sums in [%.6f, %.6f]"
+          % (max_infl, dict(sorted(hist.items())), min(sums), max(sums)))
+    check(skin["source"].lstrip("#") == g["id"], "%s: skin source %s is not the geometry" % (rel, skin["source"]))
+    check(skin["count"] == len(g["points"]), "%s: %d weighted vertices for %d positions" % (rel, skin["count"], len(g["points"])))
+    check(max_infl <= 4, "%s: %d influences per vertex" % (rel, max_infl))
+    check(min(hist) >= 1, "%s: a vertex has no influence" % rel)
+    check(all(abs(s - 1.0) < 1e-3 for s in sums), "%s: weights do not sum to 1" % rel)
+    check(None not in joint_nodes, "%s: unresolved joints %s" % (rel, [j for j, n in zip(skin["joints"], joint_nodes) if n is None]))
+    check(len(skin["ibms"]) == len(skin["joints"]), "%s: %d inverse bind matrices for %d joints" % (rel, len(skin["ibms"]), len(skin["joints"])))
+    if "joints" in exp:
+        lo, hi = exp["joints"]
+        check(lo <= len(skin["joints"]) <= hi, "%s: %d joints not in [%d, %d]" % (rel, len(skin["joints"]), lo, hi))
+    joint_types = {nodes[j]["type"] for j in joint_nodes if j}
+    check(joint_types == {"JOINT"}, "%s: skin joints are nodes of type %s" % (rel, joint_types))
+    # the skinned mesh node and the armature node sit at the origin (the LBS check relies on it)
+    inst = [nid for nid, n in nodes.items() if n["el"].find(NS + "instance_controller") is not None]
+    check(len(inst) == 1, "%s: %d instance_controller nodes" % (rel, len(inst)))
+    skel_roots = [nid for nid in order if nodes[nid]["type"] == "JOINT"
+                  and (nodes[nid]["parent"] is None or nodes[nodes[nid]["parent"]]["type"] != "JOINT")]
+    check(len(skel_roots) == 1, "%s: %d skeleton roots %s" % (rel, len(skel_roots), skel_roots))
+    if inst:
+        sk = nodes[inst[0]]["el"].find(NS + "instance_controller/" + NS + "skeleton")
+        print("  scene: mesh node %s (parent %s), <skeleton> %s, joint root %s, node transforms as %s"
+              % (inst[0], nodes[inst[0]]["parent"], sk.text if sk is not None else "-", skel_roots,
+                 "<matrix>" if all(n["has_matrix_el"] for n in nodes.values()) else "decomposed"))
+
+    channels = read_animations(root)
+    check(len(channels) > 0, "%s: no animation" % rel)
+    for t in channels:
+        check(t in nodes, "%s: channel target %s does not resolve" % (rel, t))
+    joint_set = set(joint_nodes)
+    non_joint = [t for t in channels if t not in joint_set]
+    unanimated = [nodes[j]["sid"] for j in joint_nodes if j not in channels]
+    time_sets = {tuple(c["times"]) for c in channels.values()}
+    print("  animation: %d channels (%d on joints; also on %s), targets like %s, interpolation %s"
+          % (len(channels), len(channels) - len(non_joint), non_joint or "-",
+             next(iter(channels.values()))["target"],
+             sorted({i for c in channels.values() for i in c["interp"]})))
+    if unanimated:
+        print("    joints without a channel: %s" % unanimated)
+    for ts in sorted(time_sets):
+        users = [nodes[t]["sid"] or t for t, c in channels.items() if tuple(c["times"]) == ts]
+        print("    key times (%d keys) %s  <- %d channels" % (len(ts), " ".join("%g" % x for x in ts), len(users)))
+    all_times = sorted({x for ts in time_sets for x in ts})
+    for nid, c in channels.items():
+        ts = c["times"]
+        check(len(c["mats"]) == len(ts), "%s: %s has %d matrices for %d times" % (rel, nid, len(c["mats"]), len(ts)))
+        check(all(b > a for a, b in zip(ts, ts[1:])), "%s: %s key times not increasing" % (rel, nid))
+    if "min_keys" in exp:
+        n_keys = min(len(c["times"]) for t, c in channels.items() if t in joint_set) if joint_set & set(channels) else 0
+        check(n_keys >= exp["min_keys"], "%s: %d keys < %d" % (rel, n_keys, exp["min_keys"]))
+    if "duration" in exp:
+        d = all_times[-1] - all_times[0]
+        check(exp["duration"][0] <= d <= exp["duration"][1], "%s: duration %g s" % (rel, d))
+
+    # rotation steps between consecutive keys, and scales
+    worst_step = (0.0, None)
+    scales_seen = []
+    for nid, c in channels.items():
+        for k in range(1, len(c["mats"])):
+            a, _ = relative_rotation(c["mats"][k - 1], c["mats"][k])
+            if a > worst_step[0]:
+                worst_step = (a, nodes[nid]["sid"] or nid)
+        for m in c["mats"]:
+            scales_seen.append((column_scales(m), nodes[nid]["sid"] or nid))
+    print("    largest rotation step between consecutive keys: %.2f deg (%s)" % worst_step)
+    check(worst_step[0] < 179.0, "%s: a key is %.2f deg from the previous one (ambiguous)" % (rel, worst_step[0]))
+    scaled = [(s, j) for s, j in scales_seen if any(abs(x - 1.0) > 1e-3 for x in s)]
+    if scaled:
+        lo = [min(s[k] for s, _ in scaled) for k in range(3)]
+        hi = [max(s[k] for s, _ in scaled) for k in range(3)]
+        nonuni = [(s, j) for s, j in scaled if max(s) - min(s) > 1e-3]
+        print("    bone scale in keys: %d keyed matrices on %s, scale x [%.3f, %.3f] y [%.3f, %.3f] z [%.3f, %.3f], "
+              "%d non-uniform" % (len(scaled), sorted({j for _, j in scaled}), lo[0], hi[0], lo[1], hi[1],
+                                   lo[2], hi[2], len(nonuni)))
+    else:
+        print("    bone scale in keys: none (all 1)")
+    if exp.get("scaled"):
+        check(bool(scaled), "%s: no bone scale in the animation" % rel)
+    if exp.get("non_uniform"):
+        check(any(max(s) - min(s) > 1e-3 for s, _ in scaled), "%s: no non-uniform bone scale" % rel)
+    if exp.get("loop"):
+        diff = max(abs(c["mats"][0][i][j] - c["mats"][-1][i][j])
+                   for c in channels.values() for i in range(4) for j in range(4))
+        print("    loop: first and last key differ by at most %.2e" % diff)
+        check(diff < 1e-5, "%s: first and last key differ (%.2e), does not loop" % (rel, diff))
+    if "motion" in exp:
+        sid, axis_name, lo, hi = exp["motion"]
+        nid = [j for j in joint_nodes if nodes[j]["sid"] == sid][0]
+        c = channels[nid]
+        angles = []
+        for k, m in enumerate(c["mats"]):
+            a, axis = relative_rotation(c["mats"][0], m)
+            angles.append(a)
+            if a > 1.0:
+                ax = "XYZ"[max(range(3), key=lambda i: abs(axis[i]))]
+                check(ax == axis_name, "%s: %s key %d rotates about %s (%s), expected %s"
+                      % (rel, sid, k, ax, ["%.3f" % x for x in axis], axis_name))
+        steps = [relative_rotation(c["mats"][k - 1], c["mats"][k])[0] for k in range(1, len(c["mats"]))]
+        print("  %s: angle from key 0 about its local %s axis: %s deg; steps %s deg"
+              % (sid, axis_name, " ".join("%.1f" % a for a in angles), " ".join("%.1f" % a for a in steps)))
+        check(lo <= angles[-1] <= hi, "%s: final angle %.1f not in [%g, %g]" % (rel, angles[-1], lo, hi))
+    if "passes_through" in exp:
+        sid, want = exp["passes_through"]
+        nid = [j for j in joint_nodes if nodes[j]["sid"] == sid][0]
+        c = channels[nid]
+        got = [relative_rotation(c["mats"][0], m)[0] for m in c["mats"]]
+        check(any(abs(a - want) < 2.0 for a in got), "%s: no key at %g deg" % (rel, want))
+
+    # linear blend skinning from the file alone, against Blender's own deformation
+    ref_path = os.path.join(ref_dir, os.path.splitext(os.path.basename(rel))[0] + ".json")
+    keyed = [t for t in channels if t in joint_set]
+    base_times = channels[keyed[0]]["times"] if keyed else []
+    same_times = all(channels[t]["times"] == base_times for t in channels)
+    if not same_times:
+        print("  (channels have different key times: LBS check skipped)")
+        return
+    ref = None
+    if os.path.exists(ref_path):
+        with open(ref_path, encoding="utf-8") as fh:
+            ref = json.load(fh)
+        check(ref["vertex_count"] == len(g["points"]), "%s: reference has %d vertices" % (rel, ref["vertex_count"]))
+        check(len(ref["keys"]) == len(base_times), "%s: reference has %d keys for %d key times" % (rel, len(ref["keys"]), len(base_times)))
+    vols = []
+    worst = 0.0
+    for k, t in enumerate(base_times):
+        world = world_matrices(nodes, order, channels, k)
+        pts = lbs(g["points"], skin, joint_nodes, world)
+        vols.append(volume(pts, g["triangles"]))
+        if ref is not None and k < len(ref["keys"]):
+            rk = ref["keys"][k]
+            check(abs(rk["time"] - t) < 1e-4, "%s: reference key %d at %g s, file at %g s" % (rel, k, rk["time"], t))
+            for i, p in rk["vertices"].items():
+                worst = max(worst, max(abs(a - b) for a, b in zip(pts[int(i)], p)))
+            lo = [min(p[a] for p in pts) for a in range(3)]
+            hi = [max(p[a] for p in pts) for a in range(3)]
+            worst = max(worst, max(abs(a - b) for a, b in zip(lo + hi, rk["bbox_min"] + rk["bbox_max"])))
+    print("  LBS volume per key (m^3, rest %.5f): %s" % (vol0, " ".join("%.5f" % v for v in vols)))
+    if ref is not None:
+        print("  LBS from the file vs Blender's deformation (%s): max deviation %.2e m" % (os.path.basename(ref_path), worst))
+        check(worst < 1e-4, "%s: LBS from the file deviates %.2e m from Blender's deformation" % (rel, worst))
+    else:
+        print("  (no reference %s: LBS comparison skipped)" % ref_path)
+
+
+def main():
+    here = os.path.dirname(os.path.abspath(__file__))
+    assets = os.path.abspath(sys.argv[1]) if len(sys.argv) > 1 else os.path.dirname(here)
+    ref_dir = os.path.join(assets, "reference")
+    found = []
+    for dirpath, dirnames, filenames in os.walk(assets):
+        dirnames.sort()
+        for f in sorted(filenames):
+            if f.lower().endswith(".dae"):
+                found.append(os.path.relpath(os.path.join(dirpath, f), assets).replace(os.sep, "/"))
+    for rel in EXPECT:
+        check(rel in found, "%s is missing" % rel)
+    for rel in found:
+        try:
+            check_file(os.path.join(assets, rel), rel, ref_dir)
+        except (CheckError, ET.ParseError, KeyError, IndexError, ValueError) as e:
+            check(False, "%s: %s: %s" % (rel, type(e).__name__, e))
+    print()
+    if FAILURES:
+        print("%d check(s) FAILED" % len(FAILURES))
+        for f in FAILURES:
+            print("  - " + f)
+        return 1
+    print("all checks passed (%d files)" % len(found))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
