@@ -1,0 +1,47 @@
+package org.skinlab.collada;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Path;
+
+import org.junit.jupiter.api.Test;
+import org.skinlab.model.AnimationClip;
+import org.skinlab.model.Mesh;
+import org.skinlab.model.Model;
+import org.skinlab.model.Skin;
+import org.skinlab.model.UpAxis;
+import org.skinlab.testing.TestPaths;
+
+/** Our own assets import with the counts assets/README.md states and without warnings. */
+class OwnAssetsImportTest {
+    private static Model read(String asset) throws Exception {
+        Path file = TestPaths.asset(asset);
+        return ColladaImporter.read(file);
+    }
+
+    @Test
+    void defaultHumanoidHasNineteenJointsFourInfluencesAndALoopingWalk() throws Exception {
+        Model m = read("characters/humanoid-walk.dae");
+        assertEquals(UpAxis.Z_UP, m.asset().upAxis());
+        assertEquals(1, m.meshes().size());
+        Mesh mesh = m.meshes().get(0);
+        assertEquals(951, mesh.positionCount());
+        assertEquals(1896, mesh.triangleCount());
+        Skin skin = m.skins().get(0);
+        assertEquals(19, skin.jointCount());
+        assertEquals(4, skin.maxInfluences());
+        assertEquals(1, m.clips().size());
+        AnimationClip walk = m.clips().get(0);
+        assertEquals(1.0f, walk.duration(), 1e-6f);
+        assertTrue(walk.channels().stream().allMatch(c -> c.track().keyCount() == 9));
+        assertEquals(0, m.warnings().size(), () -> m.warnings().toString());
+    }
+
+    @Test
+    void thesisCylindersHaveTheThesisTriangleCounts() throws Exception {
+        assertEquals(1148, read("cylinders/cylinder-twist-low.dae").meshes().get(0).triangleCount());
+        assertEquals(2044, read("cylinders/cylinder-twist-high.dae").meshes().get(0).triangleCount());
+        assertEquals(2044, read("cylinders/cylinder-bend.dae").meshes().get(0).triangleCount());
+    }
+}
