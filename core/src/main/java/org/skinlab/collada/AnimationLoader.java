@@ -5,8 +5,10 @@ import java.util.ArrayList;
 import java.util.Deque;
 import java.util.HashMap;
 import java.util.IdentityHashMap;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 
 import org.skinlab.model.AnimationChannel;
 import org.skinlab.model.AnimationClip;
@@ -298,8 +300,23 @@ final class AnimationLoader {
             if (names.length != keys) {
                 throw ctx.error(interpolationIn, "INTERPOLATION has " + names.length + " entries for " + keys + " keys");
             }
+            // One warning per sampler, not per key: a long CARDINAL track would otherwise fill
+            // the warning list (ImportContext.MAX_WARNINGS) and hide everything else.
+            Set<String> unsupported = null;
             for (int k = 0; k < keys; k++) {
-                interpolations[k] = interpolation(names[k], interpolationIn);
+                Interpolation i = interpolation(names[k]);
+                if (i == null) {
+                    if (unsupported == null) {
+                        unsupported = new LinkedHashSet<>();
+                    }
+                    unsupported.add(names[k]);
+                    i = Interpolation.LINEAR;
+                }
+                interpolations[k] = i;
+            }
+            if (unsupported != null) {
+                ctx.warn(interpolationIn, "interpolation " + String.join(", ", unsupported)
+                        + " is not supported; read as LINEAR");
             }
         }
         boolean curved = false;
@@ -324,15 +341,14 @@ final class AnimationLoader {
         return new KeyframeTrack(times, values, width, interpolations, inTangents, outTangents);
     }
 
-    private Interpolation interpolation(String name, XmlElement where) {
+    /** The interpolation of that name, or null when it is not supported (CARDINAL, BSPLINE, ...). */
+    private static Interpolation interpolation(String name) {
         switch (name) {
             case "LINEAR": return Interpolation.LINEAR;
             case "STEP": return Interpolation.STEP;
             case "BEZIER": return Interpolation.BEZIER;
             case "HERMITE": return Interpolation.HERMITE;
-            default:
-                ctx.warn(where, "interpolation " + name + " is not supported; read as LINEAR");
-                return Interpolation.LINEAR;
+            default: return null;
         }
     }
 
