@@ -28,9 +28,10 @@ import org.skinlab.model.TransformElement;
  * is {@code 4 * j + i}).
  *
  * <p>Lenient (with a warning): channels whose target is not a transform of a scene node (a
- * material, a node outside the visual scene, an unknown sid or member) are skipped; CARDINAL and
- * BSPLINE keys and BEZIER/HERMITE keys without tangents are read as LINEAR; a keyed matrix whose
- * bottom row is not (0 0 0 1) keeps its values (the bottom row is ignored when evaluated).
+ * material, a node outside the visual scene, an unknown sid or member) and channels whose sampler
+ * has no keys are skipped; CARDINAL and BSPLINE keys and BEZIER/HERMITE keys without tangents are
+ * read as LINEAR; a keyed matrix whose bottom row is not (0 0 0 1) keeps its values (the bottom
+ * row is ignored when evaluated).
  * Refused: a sampler whose INPUT and OUTPUT disagree in key count, OUTPUT or tangent widths that
  * do not fit the target, decreasing key times, and dangling sampler or clip references.
  */
@@ -184,6 +185,11 @@ final class AnimationLoader {
                 return;
             }
             KeyframeTrack track = track(sampler, range[1], kind == TransformElement.Kind.MATRIX && range[1] == 16);
+            if (track.keyCount() == 0) {
+                // Nothing to evaluate, and its start and end (0) would stretch the default clip.
+                ctx.warn(channel, "target=\"" + target + "\" skipped: its sampler has no keys");
+                return;
+            }
             out.add(new AnimationChannel(node.index(), transformIndex, range[0], track, target));
         }
     }
