@@ -2,6 +2,7 @@ package org.skinlab.collada;
 
 import java.util.ArrayDeque;
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.Deque;
 import java.util.HashMap;
 import java.util.IdentityHashMap;
@@ -103,9 +104,15 @@ final class AnimationLoader {
 
     private AnimationClip readClip(XmlElement clip, int ordinal) throws ColladaException {
         List<AnimationChannel> channels = new ArrayList<>();
+        // A clip may instance an animation and also one nested in it (or the same one twice);
+        // each animation's channels go in once, or the clip would drive the same values twice.
+        Set<XmlElement> included = Collections.newSetFromMap(new IdentityHashMap<>());
         for (XmlElement instance : clip.children("instance_animation")) {
             XmlElement animation = ctx.resolve(instance, "url", "animation");
             for (XmlElement a : withNested(animation)) {
+                if (!included.add(a)) {
+                    continue;
+                }
                 List<AnimationChannel> own = channelsByAnimation.get(a);
                 if (own == null) {
                     throw ctx.error(instance, "url=\"" + instance.attr("url")
