@@ -106,9 +106,9 @@ class AnimationCorpusTest {
     @Test
     void s03StormtrooperHasSixtyFiveMatrixChannelsOf116Keys() throws Exception {
         // Script: 65 top-level animations with one channel each, every target node/transform on a
-        // <matrix sid="transform"> of a node in the scene, 116 keys per channel, stride 16,
-        // times "0.0333333" .. "3.866667", no clips. First channel: mixamorig_Hips/transform,
-        // key 0 translation y (value 7) = 1.793601.
+        // <matrix sid="transform"> of a node in the scene (65 different nodes), 116 keys per
+        // channel, stride 16, times "0.0333333" .. "3.866667", no clips. First channel:
+        // mixamorig_Hips/transform, key 0 translation y (value 7) = 1.793601.
         Model m = read("S03_stormtrooper.dae");
         assertEquals(1, m.clips().size());
         AnimationClip clip = m.clips().get(0);
