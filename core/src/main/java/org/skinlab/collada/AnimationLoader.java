@@ -2,11 +2,14 @@ package org.skinlab.collada;
 
 import java.util.ArrayDeque;
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.Deque;
 import java.util.HashMap;
 import java.util.IdentityHashMap;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 
 import org.skinlab.model.AnimationChannel;
 import org.skinlab.model.AnimationClip;
@@ -26,9 +29,10 @@ import org.skinlab.model.TransformElement;
  * is {@code 4 * j + i}).
  *
  * <p>Lenient (with a warning): channels whose target is not a transform of a scene node (a
- * material, a node outside the visual scene, an unknown sid or member) are skipped; CARDINAL and
- * BSPLINE keys and BEZIER/HERMITE keys without tangents are read as LINEAR; a keyed matrix whose
- * bottom row is not (0 0 0 1) keeps its values (the bottom row is ignored when evaluated).
+ * material, a node outside the visual scene, an unknown sid or member) and channels whose sampler
+ * has no keys are skipped; CARDINAL and BSPLINE keys and BEZIER/HERMITE keys without tangents are
+ * read as LINEAR; a keyed matrix whose bottom row is not (0 0 0 1) keeps its values (the bottom
+ * row is ignored when evaluated).
  * Refused: a sampler whose INPUT and OUTPUT disagree in key count, OUTPUT or tangent widths that
  * do not fit the target, decreasing key times, and dangling sampler or clip references.
  */
@@ -100,9 +104,15 @@ final class AnimationLoader {
 
     private AnimationClip readClip(XmlElement clip, int ordinal) throws ColladaException {
         List<AnimationChannel> channels = new ArrayList<>();
+        // A clip may instance an animation and also one nested in it (or the same one twice);
+        // each animation's channels go in once, or the clip would drive the same values twice.
+        Set<XmlElement> included = Collections.newSetFromMap(new IdentityHashMap<>());
         for (XmlElement instance : clip.children("instance_animation")) {
             XmlElement animation = ctx.resolve(instance, "url", "animation");
             for (XmlElement a : withNested(animation)) {
+                if (!included.add(a)) {
+                    continue;
+                }
                 List<AnimationChannel> own = channelsByAnimation.get(a);
                 if (own == null) {
                     throw ctx.error(instance, "url=\"" + instance.attr("url")
@@ -182,6 +192,11 @@ final class AnimationLoader {
                 return;
             }
             KeyframeTrack track = track(sampler, range[1], kind == TransformElement.Kind.MATRIX && range[1] == 16);
+            if (track.keyCount() == 0) {
+                // Nothing to evaluate, and its start and end (0) would stretch the default clip.
+                ctx.warn(channel, "target=\"" + target + "\" skipped: its sampler has no keys");
+                return;
+            }
             out.add(new AnimationChannel(node.index(), transformIndex, range[0], track, target));
         }
     }
@@ -298,8 +313,23 @@ final class AnimationLoader {
             if (names.length != keys) {
                 throw ctx.error(interpolationIn, "INTERPOLATION has " + names.length + " entries for " + keys + " keys");
             }
+            // One warning per sampler, not per key: a long CARDINAL track would otherwise fill
+            // the warning list (ImportContext.MAX_WARNINGS) and hide everything else.
+            Set<String> unsupported = null;
             for (int k = 0; k < keys; k++) {
-                interpolations[k] = interpolation(names[k], interpolationIn);
+                Interpolation i = interpolation(names[k]);
+                if (i == null) {
+                    if (unsupported == null) {
+                        unsupported = new LinkedHashSet<>();
+                    }
+                    unsupported.add(names[k]);
+                    i = Interpolation.LINEAR;
+                }
+                interpolations[k] = i;
+            }
+            if (unsupported != null) {
+                ctx.warn(interpolationIn, "interpolation " + String.join(", ", unsupported)
+                        + " is not supported; read as LINEAR");
             }
         }
         boolean curved = false;
@@ -324,15 +354,14 @@ final class AnimationLoader {
         return new KeyframeTrack(times, values, width, interpolations, inTangents, outTangents);
     }
 
-    private Interpolation interpolation(String name, XmlElement where) {
+    /** The interpolation of that name, or null when it is not supported (CARDINAL, BSPLINE, ...). */
+    private static Interpolation interpolation(String name) {
         switch (name) {
             case "LINEAR": return Interpolation.LINEAR;
             case "STEP": return Interpolation.STEP;
             case "BEZIER": return Interpolation.BEZIER;
             case "HERMITE": return Interpolation.HERMITE;
-            default:
-                ctx.warn(where, "interpolation " + name + " is not supported; read as LINEAR");
-                return Interpolation.LINEAR;
+            default: return null;
         }
     }
 

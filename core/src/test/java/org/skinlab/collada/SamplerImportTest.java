@@ -1,0 +1,323 @@
+package org.skinlab.collada;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.skinlab.collada.AnimationXml.animation;
+import static org.skinlab.collada.AnimationXml.document;
+import static org.skinlab.collada.AnimationXml.floatSource;
+import static org.skinlab.collada.AnimationXml.nameSource;
+
+import java.util.List;
+
+import org.junit.jupiter.api.Test;
+import org.skinlab.model.AnimationChannel;
+import org.skinlab.model.Interpolation;
+import org.skinlab.model.KeyframeTrack;
+import org.skinlab.model.Model;
+
+/**
+ * Samplers: key times, values, interpolations and tangents as the file writes them; the
+ * interpolations read as LINEAR with a warning; and the samplers that are refused with a
+ * {@link ColladaException} naming the file and the element.
+ */
+class SamplerImportTest {
+    /** Exact comparison for values copied from the file. */
+    private static final float EXACT = 0f;
+    /** For tangent times computed as a third of a key interval (one float rounding). */
+    private static final float THIRD = 1e-6f;
+
+    private static final String NODE = """
+                  <node id="N">
+                    <translate sid="translate">0 0 0</translate>
+                    <rotate sid="rotateX">1 0 0 0</rotate>
+                    <matrix sid="transform">1 0 0 0  0 1 0 0  0 0 1 0  0 0 0 1</matrix>
+                  </node>
+            """;
+
+    /**
+     * An animation "a" with one channel and a sampler with INPUT, OUTPUT, and, when not null,
+     * INTERPOLATION, IN_TANGENT and OUT_TANGENT sources ({@code tangentStride} values per key).
+     */
+    private static String curve(String target, String times, String values, int stride, String interpolations,
+            String in, String out, int tangentStride) {
+        StringBuilder sb = new StringBuilder("    <animation id=\"a\">\n");
+        sb.append(floatSource("a-input", times, 1)).append(floatSource("a-output", values, stride));
+        if (interpolations != null) {
+            sb.append(nameSource("a-interpolation", interpolations));
+        }
+        if (in != null) {
+            sb.append(floatSource("a-in", in, tangentStride));
+        }
+        if (out != null) {
+            sb.append(floatSource("a-out", out, tangentStride));
+        }
+        sb.append("      <sampler id=\"a-sampler\">\n");
+        sb.append("        <input semantic=\"INPUT\" source=\"#a-input\"/>\n");
+        sb.append("        <input semantic=\"OUTPUT\" source=\"#a-output\"/>\n");
+        if (interpolations != null) {
+            sb.append("        <input semantic=\"INTERPOLATION\" source=\"#a-interpolation\"/>\n");
+        }
+        if (in != null) {
+            sb.append("        <input semantic=\"IN_TANGENT\" source=\"#a-in\"/>\n");
+        }
+        if (out != null) {
+            sb.append("        <input semantic=\"OUT_TANGENT\" source=\"#a-out\"/>\n");
+        }
+        sb.append("      </sampler>\n");
+        sb.append("      <channel source=\"#a-sampler\" target=\"").append(target).append("\"/>\n");
+        sb.append("    </animation>\n");
+        return sb.toString();
+    }
+
+    private static KeyframeTrack onlyTrack(Model m) {
+        List<AnimationChannel> c = m.clips().get(0).channels();
+        assertEquals(1, c.size(), () -> c.toString());
+        return c.get(0).track();
+    }
+
+    private static Interpolation[] interpolations(KeyframeTrack t) {
+        Interpolation[] result = new Interpolation[t.keyCount()];
+        for (int k = 0; k < result.length; k++) {
+            result[k] = t.interpolation(k);
+        }
+        return result;
+    }
+
+    private static void assertNoWarnings(Model m) {
+        assertEquals(List.of(), m.warnings());
+    }
+
+    // ------------------------------------------------------------------ times and LINEAR/STEP
+
+    @Test
+    void keyTimesAreSecondsAsWrittenAndLinearWhenNoInterpolationIsGiven() {
+        // A 24 fps key (1/24 s written as 0.041666668) and two equal times (a jump) are kept.
+        Model m = Fixtures.read("times.dae", document(NODE,
+                animation("a", "N/translate.X", "0 0.041666668 1.5 1.5 2", "1 2 3 4 5", 1)));
+        KeyframeTrack t = onlyTrack(m);
+        assertArrayEquals(new float[] {0f, 0.041666668f, 1.5f, 1.5f, 2f}, t.times(), EXACT);
+        assertArrayEquals(new float[] {1, 2, 3, 4, 5}, t.values(), EXACT);
+        assertEquals(0f, t.startTime(), EXACT);
+        assertEquals(2f, t.endTime(), EXACT);
+        assertArrayEquals(new Interpolation[] {Interpolation.LINEAR, Interpolation.LINEAR, Interpolation.LINEAR,
+            Interpolation.LINEAR, Interpolation.LINEAR}, interpolations(t));
+        assertFalse(t.hasTangents());
+        assertNoWarnings(m);
+    }
+
+    @Test
+    void linearAndStepKeysAreReadAsWritten() {
+        Model m = Fixtures.read("step.dae", document(NODE,
+                animation("a", "N/rotateX.ANGLE", "0 1 2", "0 90 180", 1, "STEP STEP LINEAR")));
+        KeyframeTrack t = onlyTrack(m);
+        assertArrayEquals(new Interpolation[] {Interpolation.STEP, Interpolation.STEP, Interpolation.LINEAR},
+                interpolations(t));
+        assertFalse(t.hasTangents());
+        assertNoWarnings(m);
+    }
+
+    // ---------------------------------------------------------------------------- tangents
+
+    @Test
+    void bezierTwoDimensionalTangentsAreKeptAsWritten() {
+        // Maya style: (time, value) per key for a one-value channel.
+        String in = "-0.3 0  0.7 12  1.6 -1";
+        String out = "0.4 1  1.2 8  2 -1";
+        Model m = Fixtures.read("bezier-2d.dae", document(NODE,
+                curve("N/rotateX.ANGLE", "0 1 2", "0 10 -1", 1, "BEZIER BEZIER BEZIER", in, out, 2)));
+        KeyframeTrack t = onlyTrack(m);
+        assertTrue(t.hasTangents());
+        assertArrayEquals(new float[] {-0.3f, 0, 0.7f, 12, 1.6f, -1}, t.inTangents(), EXACT);
+        assertArrayEquals(new float[] {0.4f, 1, 1.2f, 8, 2, -1}, t.outTangents(), EXACT);
+        assertArrayEquals(new Interpolation[] {Interpolation.BEZIER, Interpolation.BEZIER, Interpolation.BEZIER},
+                interpolations(t));
+        assertNoWarnings(m);
+    }
+
+    @Test
+    void hermiteTwoDimensionalTangentsOfAThreeValueChannelKeepTheirLayout() {
+        // 6 values per key: (time, x) (time, y) (time, z), i.e. index 2 * (k * 3 + c).
+        String in = "0 1 0 2 0 3   0.5 4 0.5 5 0.5 6";
+        String out = "0.5 7 0.5 8 0.5 9   1 10 1 11 1 12";
+        Model m = Fixtures.read("hermite-2d.dae", document(NODE,
+                curve("N/translate", "0 1", "0 0 0  1 2 3", 3, "HERMITE HERMITE", in, out, 6)));
+        KeyframeTrack t = onlyTrack(m);
+        assertEquals(3, t.width());
+        assertArrayEquals(new float[] {0, 1, 0, 2, 0, 3, 0.5f, 4, 0.5f, 5, 0.5f, 6}, t.inTangents(), EXACT);
+        assertArrayEquals(new float[] {0.5f, 7, 0.5f, 8, 0.5f, 9, 1, 10, 1, 11, 1, 12}, t.outTangents(), EXACT);
+        // Key 1, component z (c = 2): out-tangent value at 2 * (1 * 3 + 2) + 1 = 11.
+        assertEquals(12f, t.outTangents()[11], EXACT);
+        assertArrayEquals(new Interpolation[] {Interpolation.HERMITE, Interpolation.HERMITE}, interpolations(t));
+        assertNoWarnings(m);
+    }
+
+    @Test
+    void oneDimensionalTangentsGetTheirTimeAThirdOfTheWayToTheNeighbouringKey() {
+        // Keys at 0, 1 and 4 s. In-tangent of key k: time t[k] - (t[k] - t[k-1]) / 3 (key 0 has no
+        // previous key: its own time). Out-tangent: t[k] + (t[k+1] - t[k]) / 3 (the last key: its
+        // own time). So in-times 0, 2/3, 3 and out-times 1/3, 2, 4; values as written.
+        Model m = Fixtures.read("bezier-1d.dae", document(NODE,
+                curve("N/rotateX.ANGLE", "0 1 4", "0 3 6", 1, "BEZIER BEZIER BEZIER", "0.5 1.5 2.5",
+                        "-0.5 -1.5 -2.5", 1)));
+        KeyframeTrack t = onlyTrack(m);
+        assertArrayEquals(new float[] {0, 0.5f, 2f / 3f, 1.5f, 3, 2.5f}, t.inTangents(), THIRD);
+        assertArrayEquals(new float[] {1f / 3f, -0.5f, 2, -1.5f, 4, -2.5f}, t.outTangents(), THIRD);
+        assertNoWarnings(m);
+    }
+
+    @Test
+    void oneDimensionalTangentsOfAThreeValueChannelShareTheKeyTimes() {
+        // Keys at 0.5 and 2 s: key 0 out-time 0.5 + 1.5 / 3 = 1, key 1 in-time 2 - 0.5 = 1.5,
+        // for all three components; values in component order.
+        Model m = Fixtures.read("bezier-1d-xyz.dae", document(NODE,
+                curve("N/translate", "0.5 2", "0 0 0  1 2 3", 3, "BEZIER BEZIER", "1 2 3  4 5 6", "7 8 9  10 11 12",
+                        3)));
+        KeyframeTrack t = onlyTrack(m);
+        assertArrayEquals(new float[] {0.5f, 1, 0.5f, 2, 0.5f, 3, 1.5f, 4, 1.5f, 5, 1.5f, 6}, t.inTangents(), THIRD);
+        assertArrayEquals(new float[] {1, 7, 1, 8, 1, 9, 2, 10, 2, 11, 2, 12}, t.outTangents(), THIRD);
+        assertNoWarnings(m);
+    }
+
+    @Test
+    void mixedInterpolationsAreKeptPerKey() {
+        String in = "0 0  1 1  2 2  3 3";
+        String out = "0 0  1 1  2 2  3 3";
+        Model m = Fixtures.read("mixed.dae", document(NODE,
+                curve("N/translate.Y", "0 1 2 3", "0 1 2 3", 1, "LINEAR STEP BEZIER HERMITE", in, out, 2)));
+        KeyframeTrack t = onlyTrack(m);
+        assertArrayEquals(new Interpolation[] {Interpolation.LINEAR, Interpolation.STEP, Interpolation.BEZIER,
+            Interpolation.HERMITE}, interpolations(t));
+        assertTrue(t.hasTangents());
+        assertNoWarnings(m);
+    }
+
+    // ------------------------------------------------------------ lenient: read with a warning
+
+    @Test
+    void cardinalAndBsplineAreReadAsLinearWithOneWarning() {
+        Model m = Fixtures.read("cardinal.dae", document(NODE,
+                animation("a", "N/translate.X", "0 1 2 3", "0 1 2 3", 1, "CARDINAL CARDINAL BSPLINE STEP")));
+        KeyframeTrack t = onlyTrack(m);
+        assertArrayEquals(new Interpolation[] {Interpolation.LINEAR, Interpolation.LINEAR, Interpolation.LINEAR,
+            Interpolation.STEP}, interpolations(t));
+        // One warning for the sampler, naming both unsupported interpolations, not one per key.
+        assertEquals(1, m.warnings().size(), () -> m.warnings().toString());
+        String w = m.warnings().get(0).message();
+        assertTrue(w.contains("CARDINAL") && w.contains("BSPLINE") && w.contains("LINEAR"), w);
+    }
+
+    @Test
+    void bezierWithoutTangentsIsReadAsLinearWithAWarning() {
+        Model m = Fixtures.read("bezier-no-tangents.dae", document(NODE,
+                animation("a", "N/translate.X", "0 1 2", "0 1 2", 1, "STEP BEZIER HERMITE")));
+        KeyframeTrack t = onlyTrack(m);
+        assertArrayEquals(new Interpolation[] {Interpolation.STEP, Interpolation.LINEAR, Interpolation.LINEAR},
+                interpolations(t));
+        assertFalse(t.hasTangents());
+        assertNull(t.inTangents());
+        assertEquals(1, m.warnings().size(), () -> m.warnings().toString());
+        assertTrue(m.warnings().get(0).element().contains("a-sampler"), m.warnings()::toString);
+    }
+
+    @Test
+    void keyedMatrixWithABottomRowOtherThan0001KeepsItsValuesWithAWarning() {
+        // Key 1 has bottom row (0.5 0 0 2); key 0 has (0 0 0 0.9999999), which is float noise
+        // within RowMajor.BOTTOM_ROW_TOLERANCE and not warned about.
+        String key0 = "1 0 0 1  0 1 0 2  0 0 1 3  0 0 0 0.9999999";
+        String key1 = "1 0 0 4  0 1 0 5  0 0 1 6  0.5 0 0 2";
+        Model m = Fixtures.read("bottom-row.dae", document(NODE,
+                animation("a", "N/transform", "0 1", key0 + " " + key1, 16)));
+        KeyframeTrack t = onlyTrack(m);
+        assertEquals(0.9999999f, t.value(0, 15), EXACT);
+        assertEquals(0.5f, t.value(1, 12), EXACT);
+        assertEquals(2f, t.value(1, 15), EXACT);
+        assertEquals(1, m.warnings().size(), () -> m.warnings().toString());
+        assertTrue(m.warnings().get(0).message().contains("bottom row"), m.warnings()::toString);
+    }
+
+    // ----------------------------------------------------------------------------- refused
+
+    /** The refusal names the file and the element; returns it for checks on the problem. */
+    private static ColladaException refused(String name, String animations, String elementPart) {
+        ColladaException e = Fixtures.error(name, document(NODE, animations));
+        assertEquals(name, e.file());
+        assertTrue(e.element().contains(elementPart), () -> "element: " + e.element());
+        assertTrue(e.getMessage().startsWith(name + ": "), e::getMessage);
+        return e;
+    }
+
+    @Test
+    void inputAndOutputKeyCountsThatDifferAreRefused() {
+        // 3 times, 2 values.
+        String a = curve("N/translate.X", "0 1 2", "5 6", 1, null, null, null, 0);
+        ColladaException e = refused("count-mismatch.dae", a, "a-sampler");
+        assertTrue(e.element().startsWith("<input"), e::getMessage);
+        assertTrue(e.problem().contains("2 entries for 3 keys"), e::getMessage);
+    }
+
+    @Test
+    void outputWidthThatDoesNotFitTheTargetIsRefused() {
+        // Three values per key on an angle (one value).
+        String a = curve("N/rotateX.ANGLE", "0 1", "1 2 3  4 5 6", 3, null, null, null, 0);
+        ColladaException e = refused("width-angle.dae", a, "a-sampler");
+        assertTrue(e.problem().contains("3 values per key") && e.problem().contains("takes 1"), e::getMessage);
+    }
+
+    @Test
+    void outputOfTwelveValuesOnAWholeMatrixIsRefused() {
+        String a = curve("N/transform", "0", "1 0 0 0  0 1 0 0  0 0 1 0", 12, null, null, null, 0);
+        ColladaException e = refused("width-matrix.dae", a, "a-sampler");
+        assertTrue(e.problem().contains("12 values per key") && e.problem().contains("takes 16"), e::getMessage);
+    }
+
+    @Test
+    void tangentsOfTheWrongWidthAreRefused() {
+        // A one-value channel takes 1 (value) or 2 (time, value) tangent values per key, not 3.
+        String a = curve("N/translate.X", "0 1", "0 1", 1, "BEZIER BEZIER", "0 0 0  1 1 1", "0 0 0  1 1 1", 3);
+        ColladaException e = refused("tangent-width.dae", a, "a-sampler");
+        assertTrue(e.problem().contains("IN_TANGENT") && e.problem().contains("3 values per key"), e::getMessage);
+    }
+
+    @Test
+    void tangentsWithTheWrongKeyCountAreRefused() {
+        String a = curve("N/translate.X", "0 1 2", "0 1 2", 1, "BEZIER BEZIER BEZIER", "0 0  1 1", "0 0  1 1", 2);
+        ColladaException e = refused("tangent-count.dae", a, "a-sampler");
+        assertTrue(e.problem().contains("2 entries for 3 keys"), e::getMessage);
+    }
+
+    @Test
+    void decreasingKeyTimesAreRefused() {
+        String a = curve("N/translate.X", "0 1 0.5", "0 1 2", 1, null, null, null, 0);
+        ColladaException e = refused("decreasing.dae", a, "<source id=\"a-input\">");
+        assertTrue(e.problem().contains("decrease at key 2"), e::getMessage);
+    }
+
+    @Test
+    void interpolationCountDifferentFromTheKeyCountIsRefused() {
+        String a = curve("N/translate.X", "0 1 2", "0 1 2", 1, "LINEAR STEP", null, null, 0);
+        ColladaException e = refused("interpolation-count.dae", a, "a-sampler");
+        assertTrue(e.problem().contains("2 entries for 3 keys"), e::getMessage);
+    }
+
+    @Test
+    void channelSourceThatRefersToNothingIsRefused() {
+        String a = "    <animation id=\"a\">\n"
+                + "      <channel source=\"#no-such-sampler\" target=\"N/translate.X\"/>\n"
+                + "    </animation>\n";
+        ColladaException e = refused("dangling-sampler.dae", a, "<channel");
+        assertTrue(e.problem().contains("#no-such-sampler"), e::getMessage);
+    }
+
+    @Test
+    void samplerWithoutOutputIsRefused() {
+        String a = "    <animation id=\"a\">\n" + floatSource("a-input", "0 1", 1)
+                + "      <sampler id=\"a-sampler\"><input semantic=\"INPUT\" source=\"#a-input\"/></sampler>\n"
+                + "      <channel source=\"#a-sampler\" target=\"N/translate.X\"/>\n"
+                + "    </animation>\n";
+        ColladaException e = refused("no-output.dae", a, "<sampler id=\"a-sampler\">");
+        assertTrue(e.problem().contains("OUTPUT"), e::getMessage);
+    }
+}
