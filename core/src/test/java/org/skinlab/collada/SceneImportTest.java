@@ -120,6 +120,22 @@ class SceneImportTest {
     }
 
     @Test
+    void degenerateLookatPlacesTheNodeAtTheEyeWithoutRotationWithAWarning() {
+        // No direction to look in: the eye on the interest point, or the up vector along the view.
+        Model m = Fixtures.read("degenerate-lookat.dae", collada("""
+                <library_visual_scenes><visual_scene id="s">
+                  <node id="on-target"><lookat>0 0 5  0 0 5  0 1 0</lookat></node>
+                  <node id="up-along-view"><lookat>0 5 0  0 0 0  0 1 0</lookat></node>
+                </visual_scene></library_visual_scenes>
+                <scene><instance_visual_scene url="#s"/></scene>
+                """));
+        assertRows(new float[][] {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 5}}, local(m, "on-target"), 0f);
+        assertRows(new float[][] {{1, 0, 0, 0}, {0, 1, 0, 5}, {0, 0, 1, 0}}, local(m, "up-along-view"), 0f);
+        assertEquals(2, Snippets.warningsContaining(m, "lookat without a view direction").size(),
+                () -> m.warnings().toString());
+    }
+
+    @Test
     void skewMovesPointsAlongTheTranslationAxisByTanAngleTimesTheirRotationAxisComponent() {
         Model m = Fixtures.resource("scene/transform-stacks.dae");
         // 45 degrees, rotation axis X, translation axis Y: y' = y + tan(45) x = y + x.
