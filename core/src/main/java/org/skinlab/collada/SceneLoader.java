@@ -7,6 +7,7 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 
+import org.joml.Matrix4f;
 import org.skinlab.model.Mesh;
 import org.skinlab.model.MeshInstance;
 import org.skinlab.model.Node;
@@ -21,7 +22,8 @@ import org.skinlab.model.TransformElement;
  * <p>Lenient (with a warning): no {@code <scene>} (the first visual scene is used); a
  * {@code <skeleton>} that names no node (ignored); joints found by id or name when no sid
  * matches under the skeleton roots; {@code <skew>} with a zero axis; a rotation about a zero axis;
- * a matrix whose bottom row is not (0 0 0 1). Refused: {@code <instance_node>} cycles, more than
+ * a {@code <lookat>} without a view direction (the node stays unrotated at the eye); a matrix
+ * whose bottom row is not (0 0 0 1). Refused: {@code <instance_node>} cycles, more than
  * {@link #MAX_INSTANCE_DEPTH} nested instances or {@link #MAX_NODES} nodes in all (instancing
  * bombs), transforms with the wrong number of values, and joints that match no node.
  */
@@ -237,6 +239,10 @@ final class SceneLoader {
                 ctx.warn(c, "rotation about a zero axis; treated as no rotation");
             } else if (kind == TransformElement.Kind.SKEW && (isZero(v, 1) || isZero(v, 4))) {
                 ctx.warn(c, "skew with a zero axis; treated as no skew");
+            } else if (kind == TransformElement.Kind.LOOKAT && !new Matrix4f().setLookAt(v[0], v[1], v[2], v[3], v[4],
+                    v[5], v[6], v[7], v[8]).isFinite()) {
+                ctx.warn(c, "lookat without a view direction (the eye on the interest point, or the up vector"
+                        + " along the view); the node is placed at the eye without rotation");
             }
             d.transforms.add(new TransformElement(kind, c.attr("sid"), v));
         }

@@ -88,6 +88,7 @@ final class SkinLoader {
         int maxOffset = -1;
         Source weightSource = null;
         int[] jointRemap = null; // when <vertex_weights> names joints through another source
+        Source weightJointSource = jointSource; // the names <v>'s joint indices count in
         for (XmlElement input : weights.children("input")) {
             String semantic = ctx.attr(input, "semantic");
             int offset = ctx.count(input, "offset", -1);
@@ -100,6 +101,7 @@ final class SkinLoader {
                 Source s = ctx.inputSource(input);
                 if (s != jointSource) {
                     jointRemap = remap(input, s.names(ctx, input, "JOINT"), jointNames);
+                    weightJointSource = s;
                 }
             } else if (semantic.equals("WEIGHT")) {
                 weightOffset = offset;
@@ -145,9 +147,12 @@ final class SkinLoader {
                 int base = at * stride;
                 int joint = v[base + jointOffset];
                 int weightIndex = v[base + weightOffset];
-                if (joint < -1 || joint >= jointNames.length) {
+                // A remapped index counts in its own name source, which may be shorter than <joints>.
+                if (joint < -1 || joint >= weightJointSource.count()) {
                     throw ctx.error(vElement, "joint index " + joint + " (value " + (base + jointOffset)
-                            + ") is out of range: the skin has " + jointNames.length + " joints");
+                            + ") is out of range: " + (jointRemap == null ? "the skin has " + jointNames.length
+                            + " joints" : "source \"" + weightJointSource.id() + "\" has " + jointRemap.length
+                            + " joint names"));
                 }
                 if (weightIndex < 0 || weightIndex >= weightSource.count()) {
                     throw ctx.error(vElement, "weight index " + weightIndex + " (value " + (base + weightOffset)

@@ -16,7 +16,9 @@ import org.joml.Matrix4f;
  * <li>TRANSLATE, SCALE: x y z.</li>
  * <li>ROTATE: axis x y z, then the angle in degrees.</li>
  * <li>LOOKAT: eye, interest point, up vector (9 values); it places the node at the eye looking
- *     at the interest point, i.e. the inverse of a view matrix.</li>
+ *     at the interest point, i.e. the inverse of a view matrix. Without a view direction (the eye
+ *     on the interest point, or the up vector along the view) it places the node at the eye
+ *     without rotation.</li>
  * <li>SKEW: angle in degrees, rotation axis, translation axis (7 values); points move along the
  *     translation axis by tan(angle) times their component along the rotation axis
  *     (RenderMan's skew, exact when the two axes are perpendicular).</li>
@@ -116,6 +118,11 @@ public final class TransformElement {
             case LOOKAT:
                 scratch.setLookAt(v[o], v[o + 1], v[o + 2], v[o + 3], v[o + 4], v[o + 5],
                         v[o + 6], v[o + 7], v[o + 8]).invertAffine();
+                if (!scratch.isFinite()) {
+                    // No view direction: normalising a zero vector made NaNs that would spread
+                    // through the whole skeleton. Keep the eye, skip the rotation; the importer warned.
+                    scratch.translation(v[o], v[o + 1], v[o + 2]);
+                }
                 return dest.mul(scratch);
             case SKEW: {
                 float t = (float) Math.tan(Math.toRadians(v[o]));
