@@ -2,7 +2,11 @@ package org.skinlab.collada;
 
 import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.HashSet;
+import java.util.IdentityHashMap;
 import java.util.List;
+import java.util.Map;
+import java.util.Set;
 import java.util.TreeSet;
 
 import org.skinlab.model.Mesh;
@@ -64,6 +68,7 @@ final class GeometryLoader {
         private SlotInput[] vertexSlots;
         private final List<Integer> vertexTexCoordSets = new ArrayList<>();
         private final List<SlotInput> vertexTexCoordSources = new ArrayList<>();
+        private final Map<XmlElement, Integer> texCoordSetOfInput = new IdentityHashMap<>();
         private int[] texCoordSets; // sorted set numbers; slot FIRST_TEXCOORD_SLOT + i is set texCoordSets[i]
         private int slotCount;
 
@@ -103,11 +108,11 @@ final class GeometryLoader {
                     case "trifans":
                     case "tristrips":
                         primitives.add(e);
-                        int unnamedSet = 0;
+                        assignTexCoordSets(e);
                         for (XmlElement in : e.children("input")) {
                             String sem = in.attr("semantic");
-                            if ("TEXCOORD".equals(sem)) {
-                                sets.add(texCoordSet(in, unnamedSet++));
+                            if ("TEXCOORD".equals(sem) && texCoordSetOfInput.containsKey(in)) {
+                                sets.add(texCoordSetOfInput.get(in));
                             } else if ("NORMAL".equals(sem)) {
                                 normals = true;
                             } else if ("COLOR".equals(sem)) {
@@ -146,7 +151,7 @@ final class GeometryLoader {
         private void readVertices() throws ColladaException {
             XmlElement vertices = ctx.child(meshElement, "vertices");
             vertexSlots = new SlotInput[FIRST_TEXCOORD_SLOT];
-            int unnamedSet = 0;
+            assignTexCoordSets(vertices);
             for (XmlElement input : vertices.children("input")) {
                 String semantic = ctx.attr(input, "semantic");
                 switch (semantic) {
@@ -163,8 +168,10 @@ final class GeometryLoader {
                         vertexSlots[SLOT_COLOR] = new SlotInput(attributeSource(input, 3, 4), -1);
                         break;
                     case "TEXCOORD":
-                        vertexTexCoordSets.add(texCoordSet(input, unnamedSet++));
-                        vertexTexCoordSources.add(new SlotInput(attributeSource(input, 2, 4), -1));
+                        if (texCoordSetOfInput.containsKey(input)) {
+                            vertexTexCoordSets.add(texCoordSetOfInput.get(input));
+                            vertexTexCoordSources.add(new SlotInput(attributeSource(input, 2, 4), -1));
+                        }
                         break;
                     default:
                         break; // tangents, binormals, ...: not used
@@ -181,8 +188,41 @@ final class GeometryLoader {
             positionCount = positions.count();
         }
 
-        private int texCoordSet(XmlElement input, int unnamedIndex) throws ColladaException {
-            return input.attr("set") == null ? unnamedIndex : ctx.count(input, "set", 0);
+        /**
+         * Numbers the TEXCOORD inputs of one element ({@code <vertices>} or a primitive): a
+         * {@code set} as written; an input without one takes the lowest number no other input of
+         * the element uses (so "set 1, unnamed" are sets 1 and 0). A second input for the same set
+         * is ignored with a warning.
+         */
+        private void assignTexCoordSets(XmlElement owner) throws ColladaException {
+            List<XmlElement> inputs = new ArrayList<>();
+            Set<Integer> explicit = new HashSet<>();
+            for (XmlElement in : owner.children("input")) {
+                if ("TEXCOORD".equals(in.attr("semantic"))) {
+                    inputs.add(in);
+                    if (in.attr("set") != null) {
+                        explicit.add(ctx.count(in, "set", 0));
+                    }
+                }
+            }
+            Set<Integer> taken = new HashSet<>();
+            int next = 0;
+            for (XmlElement in : inputs) {
+                int set;
+                if (in.attr("set") != null) {
+                    set = ctx.count(in, "set", 0);
+                } else {
+                    while (explicit.contains(next)) {
+                        next++;
+                    }
+                    set = next++;
+                }
+                if (taken.add(set)) {
+                    texCoordSetOfInput.put(in, set);
+                } else {
+                    ctx.warn(in, "a second TEXCOORD input for set " + set + "; only the first is used");
+                }
+            }
         }
 
         /** A float source with between {@code min} and {@code max} components. */
@@ -201,7 +241,6 @@ final class GeometryLoader {
             int vertexOffset = -1;
             int maxOffset = -1;
             SlotInput[] layout = vertexSlots.clone();
-            int unnamedSet = 0;
             for (XmlElement input : primitive.children("input")) {
                 String semantic = ctx.attr(input, "semantic");
                 int offset = ctx.count(input, "offset", -1);
@@ -223,9 +262,11 @@ final class GeometryLoader {
                         }
                         break;
                     case "TEXCOORD": {
-                        int set = texCoordSet(input, unnamedSet++);
-                        int slot = FIRST_TEXCOORD_SLOT + Arrays.binarySearch(texCoordSets, set);
-                        layout[slot] = new SlotInput(attributeSource(input, 2, 4), offset);
+                        Integer set = texCoordSetOfInput.get(input);
+                        if (set != null) {
+                            int slot = FIRST_TEXCOORD_SLOT + Arrays.binarySearch(texCoordSets, set);
+                            layout[slot] = new SlotInput(attributeSource(input, 2, 4), offset);
+                        }
                         break;
                     }
                     default:
@@ -237,6 +278,12 @@ final class GeometryLoader {
             }
             if (hasNormals && layout[SLOT_NORMAL] == null) {
                 ctx.warn(primitive, "has no NORMAL input while other primitives do; its normals are zero");
+            }
+            for (int t = 0; t < texCoordSets.length; t++) {
+                if (layout[FIRST_TEXCOORD_SLOT + t] == null) {
+                    ctx.warn(primitive, "has no TEXCOORD set " + texCoordSets[t]
+                            + " while other primitives do; its texture coordinates there are zero");
+                }
             }
             int stride = maxOffset + 1;
             int count = ctx.count(primitive, "count", -1);
@@ -258,7 +305,8 @@ final class GeometryLoader {
                     break;
             }
             if (degenerate > 0) {
-                ctx.warn(primitive, degenerate + " polygons with fewer than 3 corners yield no triangles");
+                ctx.warn(primitive, degenerate + (degenerate == 1 ? " polygon with fewer than 3 corners yields"
+                        : " polygons with fewer than 3 corners yield") + " no triangles");
             }
             int triangleCount = triangles.size() / 3 - firstTriangle;
             parts.add(new MeshPart(primitive.name(), primitive.attr("material"), firstTriangle, triangleCount));

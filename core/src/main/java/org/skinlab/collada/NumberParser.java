@@ -170,9 +170,9 @@ final class NumberParser {
             pos++;
         }
         long mantissa = 0;
-        int significant = 0;      // significant digits kept in the mantissa
+        int significant = 0;      // significant digits kept in the mantissa (at most 18: fits a long)
         int exponent = 0;         // decimal exponent applied to the mantissa
-        boolean dropped = false;  // digits beyond 19 were dropped: not exact any more
+        boolean dropped = false;  // digits beyond 18 were dropped: not exact any more
         int digits = 0;
         while (pos < end) {
             int d = s.charAt(pos) - '0';
@@ -180,7 +180,7 @@ final class NumberParser {
                 break;
             }
             digits++;
-            if (significant < 19) {
+            if (significant < 18) {
                 if (mantissa != 0 || d != 0) {
                     mantissa = mantissa * 10 + d;
                     significant++;
@@ -199,7 +199,7 @@ final class NumberParser {
                     break;
                 }
                 digits++;
-                if (significant < 19) {
+                if (significant < 18) {
                     if (mantissa != 0 || d != 0) {
                         mantissa = mantissa * 10 + d;
                         significant++;

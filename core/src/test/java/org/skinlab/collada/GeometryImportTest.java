@@ -338,8 +338,8 @@ class GeometryImportTest {
         List<String> w = warningTexts(m);
         assertEquals(3, w.size(), w::toString);
         assertTrue(w.get(0).startsWith("<polylist") && w.get(0).contains("3 polygons with fewer than 3 corners"), w.get(0));
-        assertTrue(w.get(1).startsWith("<polygons") && w.get(1).contains("1 polygons with fewer than 3 corners"), w.get(1));
-        assertTrue(w.get(2).startsWith("<tristrips") && w.get(2).contains("1 polygons with fewer than 3 corners"), w.get(2));
+        assertTrue(w.get(1).startsWith("<polygons") && w.get(1).contains("1 polygon with fewer than 3 corners yields no triangles"), w.get(1));
+        assertTrue(w.get(2).startsWith("<tristrips") && w.get(2).contains("1 polygon with fewer than 3 corners yields no triangles"), w.get(2));
     }
 
     // ---- inputs: offsets, sets, semantics
@@ -477,6 +477,72 @@ class GeometryImportTest {
             assertArrayEquals(uv2ByPosition[p], vertexValue(mesh.texCoords(1), 2, v), "uv set 1 at position " + p);
         }
         assertEquals(List.of(), m.warnings());
+    }
+
+    @Test
+    void texcoordInputWithoutSetTakesTheLowestSetNoOtherInputUses() {
+        // "set 1" then an input without a set: the unnamed one becomes set 0, so both survive
+        // (numbering unnamed inputs by their position would make both set 1 and lose one).
+        Model m = Fixtures.read("unnamed-set.dae", doc(positions("0 0 0  1 0 0  0 1 0")
+                + source("uvA", "S T", "1 1  2 2  3 3") + source("uvB", "S T", "7 7  8 8  9 9")
+                + """
+                <triangles count="1">
+                  <input semantic="VERTEX" source="#v" offset="0"/>
+                  <input semantic="TEXCOORD" source="#uvA" offset="0" set="1"/>
+                  <input semantic="TEXCOORD" source="#uvB" offset="0"/>
+                  <p>0 1 2</p>
+                </triangles>
+                """));
+        Mesh mesh = onlyMesh(m);
+        assertEquals(2, mesh.texCoordSetCount());
+        for (int v = 0; v < 3; v++) {
+            int p = mesh.vertexPosition(v);
+            assertArrayEquals(new float[] {7 + p, 7 + p}, vertexValue(mesh.texCoords(0), 2, v), "set 0 (unnamed)");
+            assertArrayEquals(new float[] {1 + p, 1 + p}, vertexValue(mesh.texCoords(1), 2, v), "set 1");
+        }
+        assertEquals(List.of(), m.warnings());
+    }
+
+    @Test
+    void aSecondTexcoordInputForTheSameSetIsIgnoredWithAWarning() {
+        Model m = Fixtures.read("same-set.dae", doc(positions("0 0 0  1 0 0  0 1 0")
+                + source("uvA", "S T", "1 1  2 2  3 3") + source("uvB", "S T", "7 7  8 8  9 9")
+                + """
+                <triangles count="1">
+                  <input semantic="VERTEX" source="#v" offset="0"/>
+                  <input semantic="TEXCOORD" source="#uvA" offset="0" set="0"/>
+                  <input semantic="TEXCOORD" source="#uvB" offset="0" set="0"/>
+                  <p>0 1 2</p>
+                </triangles>
+                """));
+        Mesh mesh = onlyMesh(m);
+        assertEquals(1, mesh.texCoordSetCount());
+        assertArrayEquals(new float[] {1, 1}, vertexValue(mesh.texCoords(0), 2, 0), "the first input wins");
+        assertEquals(1, m.warnings().size(), () -> m.warnings().toString());
+        assertTrue(m.warnings().get(0).toString().contains("a second TEXCOORD input for set 0"));
+    }
+
+    @Test
+    void aPrimitiveWithoutATexcoordSetOthersHaveGetsZeroUvsAndAWarning() {
+        Model m = Fixtures.read("missing-set.dae", doc(positions("0 0 0  1 0 0  0 1 0  1 1 0")
+                + source("uv", "S T", "0.5 0.5")
+                + """
+                <triangles count="1" material="textured">
+                  <input semantic="VERTEX" source="#v" offset="0"/>
+                  <input semantic="TEXCOORD" source="#uv" offset="1" set="0"/>
+                  <p>0 0  1 0  2 0</p>
+                </triangles>
+                <triangles count="1" material="plain">
+                  <input semantic="VERTEX" source="#v" offset="0"/>
+                  <p>1 3 2</p>
+                </triangles>
+                """));
+        Mesh mesh = onlyMesh(m);
+        // Position 3 is only used by the untextured triangle: its vertex has uv (0, 0).
+        int v3 = mesh.verticesOfPosition(3)[0];
+        assertArrayEquals(new float[] {0, 0}, vertexValue(mesh.texCoords(0), 2, v3));
+        assertEquals(1, m.warnings().size(), () -> m.warnings().toString());
+        assertTrue(m.warnings().get(0).toString().contains("has no TEXCOORD set 0 while other primitives do"));
     }
 
     // ---- the vertex merge
