@@ -90,10 +90,7 @@ final class SkinLoader {
         int[] jointRemap = null; // when <vertex_weights> names joints through another source
         for (XmlElement input : weights.children("input")) {
             String semantic = ctx.attr(input, "semantic");
-            int offset = ctx.count(input, "offset", -1);
-            if (offset < 0) {
-                throw ctx.error(input, "missing attribute offset");
-            }
+            int offset = ctx.inputOffset(input);
             maxOffset = Math.max(maxOffset, offset);
             if (semantic.equals("JOINT")) {
                 jointOffset = offset;
