@@ -4,6 +4,7 @@ import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Deque;
 import java.util.HashMap;
+import java.util.IdentityHashMap;
 import java.util.List;
 import java.util.Map;
 
@@ -40,6 +41,8 @@ final class SceneLoader {
     private final Map<String, IntList> byName = new HashMap<>();
     private int[] subtreeEnd;
     private int[] parents;
+    /** The target of each {@code <instance_node>}, resolved once by {@link #checkExpandedSize}. */
+    private final Map<XmlElement, XmlElement> instanceTargets = new IdentityHashMap<>();
 
     SceneLoader(ImportContext ctx, Map<XmlElement, Mesh> meshesByGeometry, Map<XmlElement, Skin> skinsByController) {
         this.ctx = ctx;
@@ -117,6 +120,7 @@ final class SceneLoader {
         if (visualScene == null) {
             return new Result(List.of(), List.of(), Map.of());
         }
+        checkExpandedSize(visualScene);
         // Iterative depth-first walk: the depth of the tree is the file's to choose.
         Deque<Pending> todo = new ArrayDeque<>();
         pushChildren(todo, visualScene, -1, null);
@@ -196,10 +200,9 @@ final class SceneLoader {
             if (c.name().equals("node")) {
                 children.add(new Pending(c, parent, chain));
             } else if (c.name().equals("instance_node") && parent >= 0) {
-                XmlElement target = ctx.resolve(c, "url", "node");
+                XmlElement target = instanceTarget(c);
                 if (chain != null && chain.contains(target)) {
-                    throw ctx.error(c, "instance_node url=\"" + c.attr("url") + "\" instantiates a node that"
-                            + " contains it (a cycle)");
+                    throw cycle(c);
                 }
                 Chain inner = new Chain(target, chain);
                 if (inner.depth > MAX_INSTANCE_DEPTH) {
@@ -213,6 +216,98 @@ final class SceneLoader {
         for (int i = children.size() - 1; i >= 0; i--) {
             todo.push(children.get(i));
         }
+    }
+
+    private XmlElement instanceTarget(XmlElement instanceNode) throws ColladaException {
+        XmlElement target = instanceTargets.get(instanceNode);
+        if (target == null) {
+            target = ctx.resolve(instanceNode, "url", "node");
+            instanceTargets.put(instanceNode, target);
+        }
+        return target;
+    }
+
+    private ColladaException cycle(XmlElement instanceNode) {
+        return ctx.error(instanceNode, "instance_node url=\"" + instanceNode.attr("url")
+                + "\" instantiates a node that contains it (a cycle)");
+    }
+
+    /** A node whose expanded size is being computed: its edges and the sizes summed so far. */
+    private static final class SizeFrame {
+        final XmlElement node;
+        final List<XmlElement> edges = new ArrayList<>(4);   // child nodes and instance targets
+        final List<XmlElement> via = new ArrayList<>(4);     // the <instance_node>, or null for a child
+        int next;
+        long size = 1;
+
+        SizeFrame(XmlElement node) {
+            this.node = node;
+        }
+    }
+
+    /**
+     * Refuses an instancing bomb before anything is built. Library nodes that each instance the
+     * previous one ten times make a 2 KB file that expands to 10^8 nodes; building drafts up to
+     * {@link #MAX_NODES} would cost half a second and hundreds of megabytes (an OutOfMemoryError
+     * on a 128 MB heap, common on phones). So each node's expanded size is computed first, once
+     * per element (memoized; iterative, since nesting and instancing depth are the file's to
+     * choose), saturating above the limit, and the first node found to exceed it is named.
+     * Instance cycles show up here as an edge back to a node on the current path.
+     */
+    private void checkExpandedSize(XmlElement visualScene) throws ColladaException {
+        Map<XmlElement, Long> sizes = new IdentityHashMap<>();
+        Map<XmlElement, Boolean> onPath = new IdentityHashMap<>();
+        Deque<SizeFrame> path = new ArrayDeque<>();
+        long total = 0;
+        for (XmlElement top : visualScene.children("node")) {
+            path.push(sizeFrame(top, onPath));
+            while (!path.isEmpty()) {
+                SizeFrame f = path.peek();
+                if (f.next < f.edges.size()) {
+                    XmlElement target = f.edges.get(f.next);
+                    XmlElement via = f.via.get(f.next);
+                    f.next++;
+                    Long known = sizes.get(target);
+                    if (known != null) {
+                        f.size = Math.min(MAX_NODES + 1L, f.size + known);
+                    } else if (onPath.containsKey(target)) {
+                        throw cycle(via);
+                    } else {
+                        path.push(sizeFrame(target, onPath));
+                    }
+                    continue;
+                }
+                path.pop();
+                onPath.remove(f.node);
+                if (f.size > MAX_NODES) {
+                    throw ctx.error(f.node, "with its <instance_node>s it would expand to more than " + MAX_NODES
+                            + " nodes");
+                }
+                sizes.put(f.node, f.size);
+                if (!path.isEmpty()) {
+                    path.peek().size = Math.min(MAX_NODES + 1L, path.peek().size + f.size);
+                }
+            }
+            total += sizes.get(top);
+            if (total > MAX_NODES) {
+                throw ctx.error(visualScene, "its nodes would expand to more than " + MAX_NODES + " nodes");
+            }
+        }
+    }
+
+    private SizeFrame sizeFrame(XmlElement node, Map<XmlElement, Boolean> onPath) throws ColladaException {
+        SizeFrame f = new SizeFrame(node);
+        onPath.put(node, Boolean.TRUE);
+        for (XmlElement c : node.children()) {
+            if (c.name().equals("node")) {
+                f.edges.add(c);
+                f.via.add(null);
+            } else if (c.name().equals("instance_node")) {
+                f.edges.add(instanceTarget(c));
+                f.via.add(c);
+            }
+        }
+        return f;
     }
 
     private void readTransforms(Draft d) throws ColladaException {
