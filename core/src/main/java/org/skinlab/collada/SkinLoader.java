@@ -102,6 +102,7 @@ final class SkinLoader {
                 weightOffset = offset;
                 weightSource = ctx.inputSource(input);
                 weightSource.requireFloats(ctx, input, "WEIGHT");
+                weightSource.requireComponent(ctx, input, "WEIGHT");
             }
         }
         if (jointOffset < 0 || weightSource == null) {
