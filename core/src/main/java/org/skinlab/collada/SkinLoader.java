@@ -88,16 +88,16 @@ final class SkinLoader {
         int maxOffset = -1;
         Source weightSource = null;
         int[] jointRemap = null; // when <vertex_weights> names joints through another source
+        Source weightJoints = jointSource; // the source <v>'s joint indices refer to
         for (XmlElement input : weights.children("input")) {
             String semantic = ctx.attr(input, "semantic");
             int offset = ctx.inputOffset(input);
             maxOffset = Math.max(maxOffset, offset);
             if (semantic.equals("JOINT")) {
                 jointOffset = offset;
-                Source s = ctx.inputSource(input);
-                if (s != jointSource) {
-                    jointRemap = remap(input, s.names(ctx, input, "JOINT"), jointNames);
-                }
+                weightJoints = ctx.inputSource(input);
+                jointRemap = weightJoints == jointSource ? null
+                        : remap(input, weightJoints.names(ctx, input, "JOINT"), jointNames);
             } else if (semantic.equals("WEIGHT")) {
                 weightOffset = offset;
                 weightSource = ctx.inputSource(input);
@@ -143,9 +143,13 @@ final class SkinLoader {
                 int base = at * stride;
                 int joint = v[base + jointOffset];
                 int weightIndex = v[base + weightOffset];
-                if (joint < -1 || joint >= jointNames.length) {
+                // Indices count in the source <vertex_weights> names, which may be shorter than
+                // <joints> when it is another source.
+                int jointLimit = jointRemap == null ? jointNames.length : jointRemap.length;
+                if (joint < -1 || joint >= jointLimit) {
                     throw ctx.error(vElement, "joint index " + joint + " (value " + (base + jointOffset)
-                            + ") is out of range: the skin has " + jointNames.length + " joints");
+                            + ") is out of range: " + (jointRemap == null ? "the skin has " + jointLimit + " joints"
+                            : "JOINT source \"" + weightJoints.id() + "\" has " + jointLimit + " names"));
                 }
                 if (weightIndex < 0 || weightIndex >= weightSource.count()) {
                     throw ctx.error(vElement, "weight index " + weightIndex + " (value " + (base + weightOffset)
