@@ -430,25 +430,48 @@ final class SceneLoader {
         return -1;
     }
 
-    /** The first candidate (in depth-first order) inside the subtree of one of the roots, or -1. */
+    /**
+     * The first candidate (in depth-first order) inside the subtree of one of the roots, or -1.
+     * Candidates are node indices in ascending (depth-first) order and a subtree is the index
+     * range [root, subtreeEnd[root]), so each root costs one binary search: a file whose many
+     * joints share a name with many nodes must not cost joints x nodes steps.
+     */
     private int firstUnder(IntList candidates, int[] roots) {
         if (candidates == null) {
             return -1;
         }
         for (int r : roots) {
-            for (int i = 0; i < candidates.size(); i++) {
-                int c = candidates.get(i);
-                if (c >= r && c < subtreeEnd[r]) {
-                    return c;
-                }
+            int c = firstInRange(candidates, r, subtreeEnd[r]);
+            if (c >= 0) {
+                return c;
             }
         }
         return -1;
     }
 
+    /** The smallest candidate in [from, to), or -1 (binary search over the ascending list). */
+    private static int firstInRange(IntList candidates, int from, int to) {
+        int lo = 0;
+        int hi = candidates.size();
+        while (lo < hi) {
+            int mid = (lo + hi) >>> 1;
+            if (candidates.get(mid) < from) {
+                lo = mid + 1;
+            } else {
+                hi = mid;
+            }
+        }
+        return lo < candidates.size() && candidates.get(lo) < to ? candidates.get(lo) : -1;
+    }
+
     /**
      * Of several nodes with the same id (copies made by instance_node), the one that shares the
      * deepest ancestor with {@code from}; the first one on ties. -1 when there is none.
+     *
+     * <p>Walks up from {@code from}: the first ancestor whose subtree holds a candidate is the
+     * deepest common ancestor any candidate can share, and every candidate in that subtree shares
+     * exactly it, so the first of them is the answer; when no ancestor holds one, all tie and the
+     * first candidate wins. Cost: depth x log(candidates), not candidates x depth.
      */
     private int nearest(IntList candidates, int from) {
         if (candidates == null || candidates.size() == 0) {
@@ -457,40 +480,12 @@ final class SceneLoader {
         if (candidates.size() == 1) {
             return candidates.get(0);
         }
-        int best = candidates.get(0);
-        int bestDepth = -1;
-        for (int i = 0; i < candidates.size(); i++) {
-            int c = candidates.get(i);
-            int depth = commonAncestorDepth(c, from);
-            if (depth > bestDepth) {
-                best = c;
-                bestDepth = depth;
+        for (int a = from; a >= 0; a = parents[a]) {
+            int c = firstInRange(candidates, a, subtreeEnd[a]);
+            if (c >= 0) {
+                return c;
             }
         }
-        return best;
-    }
-
-    private int commonAncestorDepth(int a, int b) {
-        int[] pathA = path(a);
-        int[] pathB = path(b);
-        int d = 0;
-        while (d < pathA.length && d < pathB.length && pathA[d] == pathB[d]) {
-            d++;
-        }
-        return d;
-    }
-
-    private int[] path(int node) {
-        IntList up = new IntList(8);
-        for (int n = node; n >= 0; n = parents[n]) {
-            up.add(n);
-        }
-        int[] p = up.toArray();
-        for (int i = 0, j = p.length - 1; i < j; i++, j--) {
-            int t = p[i];
-            p[i] = p[j];
-            p[j] = t;
-        }
-        return p;
+        return candidates.get(0);
     }
 }
