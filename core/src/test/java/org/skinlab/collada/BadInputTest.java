@@ -259,6 +259,20 @@ class BadInputTest {
                 "OUTPUT source \"tip-anim-angle\" has 1 entries for 2 keys");
     }
 
+    @Test
+    void weightSourceWithoutNamedParamIsRefused() {
+        // An unnamed <param> skips its slot: the accessor selects no weight at all.
+        refused("weight-param.dae", with("<param name=\"WEIGHT\" type=\"float\"/>", "<param type=\"float\"/>"),
+                "<input> in <controller id=\"quad-skin\">",
+                "WEIGHT source \"quad-weights\" has 0 components per element (no <param> has a name), expected 1");
+    }
+
+    @Test
+    void jointSourceWithoutNamedParamIsRefused() {
+        refused("joint-param.dae", with("<param name=\"JOINT\" type=\"name\"/>", "<param type=\"name\"/>"),
+                "<input> in <controller id=\"quad-skin\">", "JOINT source \"quad-joints\" has 0 components per element");
+    }
+
     // ----------------------------------------------------------------------- indices out of range
 
     @Test
@@ -294,6 +308,45 @@ class BadInputTest {
         refused("v-weight.dae", with("<v>0 0  0 1 1 2  0 1 1 2  1 0</v>", "<v>0 0  0 1 1 2  0 1 1 2  1 3</v>"),
                 "<v> in <controller id=\"quad-skin\">",
                 "weight index 3 (value 11) is out of range: source \"quad-weights\" has 3 weights");
+    }
+
+    @Test
+    void jointIndexPastTheVertexWeightsOwnJointSourceIsRefused() {
+        // <vertex_weights> names its joints through a one-name source ("Tip"): joint index 1 is
+        // valid for <joints> (Root, Tip) but not for that source. The first influence is value 0.
+        String tipOnly = "<source id=\"tip-only\"><Name_array id=\"tip-only-array\" count=\"1\">Tip</Name_array>"
+                + "<technique_common><accessor source=\"#tip-only-array\" count=\"1\" stride=\"1\">"
+                + "<param name=\"JOINT\" type=\"name\"/></accessor></technique_common></source>\n        <joints>";
+        String xml = with("<joints>", tipOnly).replace("<input semantic=\"JOINT\" source=\"#quad-joints\" offset=\"0\"/>",
+                "<input semantic=\"JOINT\" source=\"#tip-only\" offset=\"0\"/>")
+                .replace("<v>0 0  0 1 1 2  0 1 1 2  1 0</v>", "<v>1 0  0 1 0 2  0 1 0 2  0 0</v>");
+        refused("remap.dae", xml, "<v> in <controller id=\"quad-skin\">",
+                "joint index 1 (value 0) is out of range: JOINT source \"tip-only\" has 1 names");
+    }
+
+    @Test
+    void vertexWeightsJointSourceIsMappedByName() {
+        // The control for the case above: the same one-name source with index 0 everywhere means
+        // every influence is joint "Tip", which is joint 1 of the skin.
+        String tipOnly = "<source id=\"tip-only\"><Name_array id=\"tip-only-array\" count=\"1\">Tip</Name_array>"
+                + "<technique_common><accessor source=\"#tip-only-array\" count=\"1\" stride=\"1\">"
+                + "<param name=\"JOINT\" type=\"name\"/></accessor></technique_common></source>\n        <joints>";
+        String xml = with("<joints>", tipOnly).replace("<input semantic=\"JOINT\" source=\"#quad-joints\" offset=\"0\"/>",
+                "<input semantic=\"JOINT\" source=\"#tip-only\" offset=\"0\"/>")
+                .replace("<v>0 0  0 1 1 2  0 1 1 2  1 0</v>", "<v>0 0  0 1 0 2  0 1 0 2  0 0</v>");
+        Skin skin = Fixtures.read("remap-ok.dae", xml).skins().get(0);
+        for (int i = 0; i < skin.influenceTotal(); i++) {
+            assertEquals(1, skin.influenceJoint(i));
+        }
+    }
+
+    @Test
+    void clipTimeBeyondFloatRangeIsRefused() {
+        // 1e39 is a finite double but an infinite float: the clip's duration would be NaN.
+        refused("clip-start.dae", with("start=\"0\" end=\"1\"", "start=\"1e39\""),
+                "<animation_clip id=\"wave\">", "start=\"1e39\" is out of float range");
+        refused("clip-end.dae", with("start=\"0\" end=\"1\"", "start=\"0\" end=\"1e39\""),
+                "<animation_clip id=\"wave\">", "end=\"1e39\" is out of float range");
     }
 
     // ------------------------------------------------------------------------- non-finite numbers
@@ -430,6 +483,43 @@ class BadInputTest {
                 + "<node id=\"pong\"><instance_node url=\"#ping\"/></node><node id=\"marker\" name=\"marker\">"
                 + "<instance_node url=\"#ping\"/>");
         refused("ping-pong.dae", xml, "<instance_node> in <node id=\"pong\">", "(a cycle)");
+    }
+
+    @Test
+    void manyJointsSharingOneNameWithManyNodesResolveQuickly() {
+        // 20,000 joints all named "x" and 20,000 nodes with id and sid "x", none under the
+        // skeleton root: every joint falls back to the id lookup. Scanning every candidate per
+        // joint (4 * 10^8 steps, about 20 s before the lookup was made logarithmic) is a denial of
+        // service from a 1 MB file. The instance node quad-node is a top-level node, so no
+        // candidate shares an ancestor with it and every joint takes the first "x" node: index 5
+        // (after Armature, Root, Tip, the marker copy and quad-node).
+        int n = 20_000;
+        StringBuilder names = new StringBuilder();
+        StringBuilder matrices = new StringBuilder();
+        StringBuilder nodes = new StringBuilder();
+        for (int i = 0; i < n; i++) {
+            names.append("x ");
+            matrices.append("1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1 ");
+            nodes.append("<node id=\"x\" sid=\"x\"/>\n");
+        }
+        String xml = with("<Name_array id=\"quad-joints-array\" count=\"2\">Root Tip</Name_array>",
+                "<Name_array id=\"quad-joints-array\" count=\"" + n + "\">" + names + "</Name_array>")
+                .replace("<accessor source=\"#quad-joints-array\" count=\"2\"",
+                        "<accessor source=\"#quad-joints-array\" count=\"" + n + "\"")
+                .replace("count=\"32\">1 0 0 0  0 1 0 0  0 0 1 0  0 0 0 1\n            1 0 0 -1  0 1 0 0  0 0 1 0  0 0 0 1<",
+                        "count=\"" + 16 * n + "\">" + matrices + "<")
+                .replace("<accessor source=\"#quad-ibm-array\" count=\"2\"",
+                        "<accessor source=\"#quad-ibm-array\" count=\"" + n + "\"")
+                .replace("<node id=\"static-quad\"", nodes + "<node id=\"static-quad\"");
+        Model m = assertTimeoutPreemptively(FAST, () -> Fixtures.read("shared-names.dae", xml));
+        assertEquals(n, m.skins().get(0).jointCount());
+        int[] joints = m.instances().stream().filter(i -> i.isSkinned()).findFirst().orElseThrow().jointNodes();
+        assertEquals(n, joints.length);
+        assertEquals("quad-node", m.node(4).id());
+        assertEquals("x", m.node(5).id());
+        for (int j : joints) {
+            assertEquals(5, j);
+        }
     }
 
     @Test
