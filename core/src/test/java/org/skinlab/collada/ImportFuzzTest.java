@@ -3,6 +3,7 @@ package org.skinlab.collada;
 import static org.junit.jupiter.api.Assertions.assertTimeoutPreemptively;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assertions.fail;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.io.ByteArrayInputStream;
 import java.io.IOException;
@@ -19,15 +20,18 @@ import java.util.Random;
 import java.util.Set;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
+import java.util.stream.Stream;
 
+import org.junit.jupiter.api.DynamicTest;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.TestFactory;
 import org.skinlab.model.Mesh;
 import org.skinlab.model.Model;
 import org.skinlab.testing.TestPaths;
 
 /**
- * Robustness fuzzing with fixed seeds: valid documents (our skinned quad fixture and two of our
- * assets) get one to three random mutations each (truncation, byte and token deletion,
+ * Robustness fuzzing with fixed seeds: valid documents (our skinned quad fixture, two of our
+ * assets and, when present, seven small corpus files) get one to three random mutations each (truncation, byte and token deletion,
  * duplication and replacement, numbers turned huge, negative or non-finite, element names swapped
  * throughout, attribute values exchanged, leaf elements deleted, duplicated or moved) and are
  * imported. Every import must either succeed with
@@ -81,6 +85,25 @@ class ImportFuzzTest {
     void mutatedCylinderNeverCrashes() throws IOException {
         fuzz("cylinder-twist-low.dae", Files.readString(TestPaths.asset("cylinders/cylinder-twist-low.dae")), 500,
                 1148L);
+    }
+
+    /**
+     * Small corpus files bring constructs our own files lack: {@code <polygons>} and clips (S12),
+     * nested animations (S11), several skeleton roots (S14), control bones (S15), a skin without
+     * animation (K01), Cinema 4D's and an empty-tag writer's habits (T01, M03). Skipped, saying
+     * so, without the corpus.
+     */
+    @TestFactory
+    Stream<DynamicTest> mutatedCorpusFilesNeverCrash() {
+        String[] names = {"K01_simple_bone.dae", "M03_cube_empty_tags.dae", "S11_box_nested_animation.dae",
+            "S12_library_animation_clips.dae", "S14_two_skinned_cubes.dae", "S15_leg_control_bones.dae",
+            "T01_cinema4d.dae"};
+        Path corpus = TestPaths.corpusOrSkip();
+        return Stream.of(names).map(name -> DynamicTest.dynamicTest(name, () -> {
+            Path file = corpus.resolve(name);
+            assumeTrue(Files.isRegularFile(file), () -> file + " not found: skipped");
+            fuzz(name, Files.readString(file), 300, name.hashCode());
+        }));
     }
 
     /** One mutated document and how it was made. */
