@@ -4,12 +4,15 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTimeoutPreemptively;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.io.File;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
+import java.util.LinkedHashSet;
 import java.util.List;
+import java.util.Set;
 import java.util.concurrent.TimeUnit;
 
 import com.fasterxml.jackson.databind.JsonNode;
@@ -76,13 +79,27 @@ class LargeFileImportTest {
         assertEquals(0, m.warnings().size(), () -> m.warnings().toString());
     }
 
+    /**
+     * The jars and class folders of the application, found from its classes (a test runner's
+     * own {@code java.class.path} need not list them).
+     */
+    private static String classPath() throws Exception {
+        Set<String> entries = new LinkedHashSet<>();
+        for (Class<?> c : new Class<?>[] {SkinlabMain.class, ColladaImporter.class, org.joml.Matrix4f.class,
+                picocli.CommandLine.class, ObjectMapper.class, com.fasterxml.jackson.core.JsonParser.class,
+                com.fasterxml.jackson.annotation.JsonProperty.class}) {
+            entries.add(Path.of(c.getProtectionDomain().getCodeSource().getLocation().toURI()).toString());
+        }
+        return String.join(File.pathSeparator, entries);
+    }
+
     @Test
     void commandLineInspectsItWithinHalfAGigabyteOfHeap() throws Exception {
         // A separate JVM with a small heap: an OutOfMemoryError there is exit status 1, not a
         // test JVM that happens to have 3 GB.
         Path java = Path.of(System.getProperty("java.home"), "bin", "java");
         Path out = dir.resolve("inspect.json");
-        Process p = new ProcessBuilder(java.toString(), HEAP, "-cp", System.getProperty("java.class.path"),
+        Process p = new ProcessBuilder(java.toString(), HEAP, "-cp", classPath(),
                 SkinlabMain.class.getName(), "inspect", "--json", file.toString())
                 .redirectOutput(out.toFile()).redirectErrorStream(false).redirectError(dir.resolve("inspect.err").toFile())
                 .start();
