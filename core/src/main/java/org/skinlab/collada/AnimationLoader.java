@@ -121,10 +121,10 @@ final class AnimationLoader {
                 channels.addAll(own);
             }
         }
-        float start = (float) ctx.number(clip, "start", 0.0);
+        float start = clipTime(clip, "start");
         float end;
         if (clip.attr("end") != null) {
-            end = (float) ctx.number(clip, "end", 0.0);
+            end = clipTime(clip, "end");
         } else {
             end = start;
             for (AnimationChannel c : channels) {
@@ -138,6 +138,18 @@ final class AnimationLoader {
         String name = clip.attr("name") != null ? clip.attr("name")
                 : clip.id() != null ? clip.id() : "clip-" + (ordinal + 1);
         return new AnimationClip(clip.id(), name, start, end, channels);
+    }
+
+    /**
+     * A clip's start or end (0 when absent). Finite as a double is not enough: start="1e39" would
+     * become an infinite float and an infinite or NaN duration.
+     */
+    private float clipTime(XmlElement clip, String attribute) throws ColladaException {
+        float t = (float) ctx.number(clip, attribute, 0.0);
+        if (Float.isInfinite(t)) {
+            throw ctx.error(clip, attribute + "=\"" + clip.attr(attribute) + "\" is out of float range");
+        }
+        return t;
     }
 
     // ------------------------------------------------------------------------------- channels

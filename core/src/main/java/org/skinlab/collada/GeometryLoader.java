@@ -243,10 +243,7 @@ final class GeometryLoader {
             SlotInput[] layout = vertexSlots.clone();
             for (XmlElement input : primitive.children("input")) {
                 String semantic = ctx.attr(input, "semantic");
-                int offset = ctx.count(input, "offset", -1);
-                if (offset < 0) {
-                    throw ctx.error(input, "missing attribute offset");
-                }
+                int offset = ctx.inputOffset(input);
                 maxOffset = Math.max(maxOffset, offset);
                 switch (semantic) {
                     case "VERTEX":

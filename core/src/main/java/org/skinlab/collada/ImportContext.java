@@ -107,6 +107,22 @@ final class ImportContext {
         }
     }
 
+    /**
+     * The required {@code offset} of an {@code <input>} in a primitive or {@code <vertex_weights>}.
+     * The index stride is the largest offset + 1, so the largest int is refused here: its stride
+     * would overflow to a negative number and turn every later count check into nonsense.
+     */
+    int inputOffset(XmlElement input) throws ColladaException {
+        int offset = count(input, "offset", -1);
+        if (offset < 0) {
+            throw error(input, "missing attribute offset");
+        }
+        if (offset == Integer.MAX_VALUE) {
+            throw error(input, "offset=\"" + input.attr("offset") + "\" is out of range");
+        }
+        return offset;
+    }
+
     /** A finite float attribute, or {@code fallback} when absent. */
     double number(XmlElement e, String name, double fallback) throws ColladaException {
         String v = e.attr(name);

@@ -1,7 +1,9 @@
 package org.skinlab.collada;
 
+import java.io.CharConversionException;
 import java.io.IOException;
 import java.io.InputStream;
+import java.io.UnsupportedEncodingException;
 import java.util.Arrays;
 
 import javax.xml.XMLConstants;
@@ -101,9 +103,18 @@ final class SafeXmlReader {
             throw r.exception;
         } catch (SAXParseException e) {
             throw new ColladaException(fileName, "XML at line " + e.getLineNumber() + ", column "
-                    + e.getColumnNumber(), explain(e), e);
+                    + e.getColumnNumber() + builder.openElement(), explain(e), e);
         } catch (SAXException e) {
-            throw new ColladaException(fileName, "XML", explain(e), e);
+            throw new ColladaException(fileName, "XML" + builder.openElement(), explain(e), e);
+        } catch (UnsupportedEncodingException e) {
+            // The XML declaration names an encoding this platform cannot decode (UTF-7, or
+            // nonsense): a property of the file, not an I/O failure.
+            throw new ColladaException(fileName, "XML declaration", "encoding \"" + e.getMessage()
+                    + "\" is not supported (use UTF-8 or UTF-16)", e);
+        } catch (CharConversionException e) {
+            // Bytes that are not valid in the document's encoding, when the parser throws them
+            // rather than reporting a fatal error.
+            throw new ColladaException(fileName, "XML" + builder.openElement(), "malformed XML: " + e.getMessage(), e);
         }
         if (builder.root == null) {
             throw new ColladaException(fileName, "XML", "the document has no root element");
@@ -153,6 +164,11 @@ final class SafeXmlReader {
 
         private int line() {
             return locator == null ? -1 : locator.getLineNumber();
+        }
+
+        /** ", inside <p> in <geometry id="g"> at line 40" for the innermost open element, or "". */
+        String openElement() {
+            return depth == 0 || stack[depth - 1] == null ? "" : ", inside " + stack[depth - 1].describe();
         }
 
         private Refusal refuse(String element, String problem) {

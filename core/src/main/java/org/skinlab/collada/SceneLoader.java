@@ -4,6 +4,7 @@ import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Deque;
 import java.util.HashMap;
+import java.util.IdentityHashMap;
 import java.util.List;
 import java.util.Map;
 
@@ -42,6 +43,8 @@ final class SceneLoader {
     private final Map<String, IntList> byName = new HashMap<>();
     private int[] subtreeEnd;
     private int[] parents;
+    /** The target of each {@code <instance_node>}, resolved once by {@link #checkExpandedSize}. */
+    private final Map<XmlElement, XmlElement> instanceTargets = new IdentityHashMap<>();
 
     SceneLoader(ImportContext ctx, Map<XmlElement, Mesh> meshesByGeometry, Map<XmlElement, Skin> skinsByController) {
         this.ctx = ctx;
@@ -119,6 +122,7 @@ final class SceneLoader {
         if (visualScene == null) {
             return new Result(List.of(), List.of(), Map.of());
         }
+        checkExpandedSize(visualScene);
         // Iterative depth-first walk: the depth of the tree is the file's to choose.
         Deque<Pending> todo = new ArrayDeque<>();
         pushChildren(todo, visualScene, -1, null);
@@ -198,10 +202,9 @@ final class SceneLoader {
             if (c.name().equals("node")) {
                 children.add(new Pending(c, parent, chain));
             } else if (c.name().equals("instance_node") && parent >= 0) {
-                XmlElement target = ctx.resolve(c, "url", "node");
+                XmlElement target = instanceTarget(c);
                 if (chain != null && chain.contains(target)) {
-                    throw ctx.error(c, "instance_node url=\"" + c.attr("url") + "\" instantiates a node that"
-                            + " contains it (a cycle)");
+                    throw cycle(c);
                 }
                 Chain inner = new Chain(target, chain);
                 if (inner.depth > MAX_INSTANCE_DEPTH) {
@@ -215,6 +218,98 @@ final class SceneLoader {
         for (int i = children.size() - 1; i >= 0; i--) {
             todo.push(children.get(i));
         }
+    }
+
+    private XmlElement instanceTarget(XmlElement instanceNode) throws ColladaException {
+        XmlElement target = instanceTargets.get(instanceNode);
+        if (target == null) {
+            target = ctx.resolve(instanceNode, "url", "node");
+            instanceTargets.put(instanceNode, target);
+        }
+        return target;
+    }
+
+    private ColladaException cycle(XmlElement instanceNode) {
+        return ctx.error(instanceNode, "instance_node url=\"" + instanceNode.attr("url")
+                + "\" instantiates a node that contains it (a cycle)");
+    }
+
+    /** A node whose expanded size is being computed: its edges and the sizes summed so far. */
+    private static final class SizeFrame {
+        final XmlElement node;
+        final List<XmlElement> edges = new ArrayList<>(4);   // child nodes and instance targets
+        final List<XmlElement> via = new ArrayList<>(4);     // the <instance_node>, or null for a child
+        int next;
+        long size = 1;
+
+        SizeFrame(XmlElement node) {
+            this.node = node;
+        }
+    }
+
+    /**
+     * Refuses an instancing bomb before anything is built. Library nodes that each instance the
+     * previous one ten times make a 2 KB file that expands to 10^8 nodes; building drafts up to
+     * {@link #MAX_NODES} would cost half a second and hundreds of megabytes (an OutOfMemoryError
+     * on a 128 MB heap, common on phones). So each node's expanded size is computed first, once
+     * per element (memoized; iterative, since nesting and instancing depth are the file's to
+     * choose), saturating above the limit, and the first node found to exceed it is named.
+     * Instance cycles show up here as an edge back to a node on the current path.
+     */
+    private void checkExpandedSize(XmlElement visualScene) throws ColladaException {
+        Map<XmlElement, Long> sizes = new IdentityHashMap<>();
+        Map<XmlElement, Boolean> onPath = new IdentityHashMap<>();
+        Deque<SizeFrame> path = new ArrayDeque<>();
+        long total = 0;
+        for (XmlElement top : visualScene.children("node")) {
+            path.push(sizeFrame(top, onPath));
+            while (!path.isEmpty()) {
+                SizeFrame f = path.peek();
+                if (f.next < f.edges.size()) {
+                    XmlElement target = f.edges.get(f.next);
+                    XmlElement via = f.via.get(f.next);
+                    f.next++;
+                    Long known = sizes.get(target);
+                    if (known != null) {
+                        f.size = Math.min(MAX_NODES + 1L, f.size + known);
+                    } else if (onPath.containsKey(target)) {
+                        throw cycle(via);
+                    } else {
+                        path.push(sizeFrame(target, onPath));
+                    }
+                    continue;
+                }
+                path.pop();
+                onPath.remove(f.node);
+                if (f.size > MAX_NODES) {
+                    throw ctx.error(f.node, "with its <instance_node>s it would expand to more than " + MAX_NODES
+                            + " nodes");
+                }
+                sizes.put(f.node, f.size);
+                if (!path.isEmpty()) {
+                    path.peek().size = Math.min(MAX_NODES + 1L, path.peek().size + f.size);
+                }
+            }
+            total += sizes.get(top);
+            if (total > MAX_NODES) {
+                throw ctx.error(visualScene, "its nodes would expand to more than " + MAX_NODES + " nodes");
+            }
+        }
+    }
+
+    private SizeFrame sizeFrame(XmlElement node, Map<XmlElement, Boolean> onPath) throws ColladaException {
+        SizeFrame f = new SizeFrame(node);
+        onPath.put(node, Boolean.TRUE);
+        for (XmlElement c : node.children()) {
+            if (c.name().equals("node")) {
+                f.edges.add(c);
+                f.via.add(null);
+            } else if (c.name().equals("instance_node")) {
+                f.edges.add(instanceTarget(c));
+                f.via.add(c);
+            }
+        }
+        return f;
     }
 
     private void readTransforms(Draft d) throws ColladaException {
@@ -341,25 +436,48 @@ final class SceneLoader {
         return -1;
     }
 
-    /** The first candidate (in depth-first order) inside the subtree of one of the roots, or -1. */
+    /**
+     * The first candidate (in depth-first order) inside the subtree of one of the roots, or -1.
+     * Candidates are node indices in ascending (depth-first) order and a subtree is the index
+     * range [root, subtreeEnd[root]), so each root costs one binary search: a file whose many
+     * joints share a name with many nodes must not cost joints x nodes steps.
+     */
     private int firstUnder(IntList candidates, int[] roots) {
         if (candidates == null) {
             return -1;
         }
         for (int r : roots) {
-            for (int i = 0; i < candidates.size(); i++) {
-                int c = candidates.get(i);
-                if (c >= r && c < subtreeEnd[r]) {
-                    return c;
-                }
+            int c = firstInRange(candidates, r, subtreeEnd[r]);
+            if (c >= 0) {
+                return c;
             }
         }
         return -1;
     }
 
+    /** The smallest candidate in [from, to), or -1 (binary search over the ascending list). */
+    private static int firstInRange(IntList candidates, int from, int to) {
+        int lo = 0;
+        int hi = candidates.size();
+        while (lo < hi) {
+            int mid = (lo + hi) >>> 1;
+            if (candidates.get(mid) < from) {
+                lo = mid + 1;
+            } else {
+                hi = mid;
+            }
+        }
+        return lo < candidates.size() && candidates.get(lo) < to ? candidates.get(lo) : -1;
+    }
+
     /**
      * Of several nodes with the same id (copies made by instance_node), the one that shares the
      * deepest ancestor with {@code from}; the first one on ties. -1 when there is none.
+     *
+     * <p>Walks up from {@code from}: the first ancestor whose subtree holds a candidate is the
+     * deepest common ancestor any candidate can share, and every candidate in that subtree shares
+     * exactly it, so the first of them is the answer; when no ancestor holds one, all tie and the
+     * first candidate wins. Cost: depth x log(candidates), not candidates x depth.
      */
     private int nearest(IntList candidates, int from) {
         if (candidates == null || candidates.size() == 0) {
@@ -368,40 +486,12 @@ final class SceneLoader {
         if (candidates.size() == 1) {
             return candidates.get(0);
         }
-        int best = candidates.get(0);
-        int bestDepth = -1;
-        for (int i = 0; i < candidates.size(); i++) {
-            int c = candidates.get(i);
-            int depth = commonAncestorDepth(c, from);
-            if (depth > bestDepth) {
-                best = c;
-                bestDepth = depth;
+        for (int a = from; a >= 0; a = parents[a]) {
+            int c = firstInRange(candidates, a, subtreeEnd[a]);
+            if (c >= 0) {
+                return c;
             }
         }
-        return best;
-    }
-
-    private int commonAncestorDepth(int a, int b) {
-        int[] pathA = path(a);
-        int[] pathB = path(b);
-        int d = 0;
-        while (d < pathA.length && d < pathB.length && pathA[d] == pathB[d]) {
-            d++;
-        }
-        return d;
-    }
-
-    private int[] path(int node) {
-        IntList up = new IntList(8);
-        for (int n = node; n >= 0; n = parents[n]) {
-            up.add(n);
-        }
-        int[] p = up.toArray();
-        for (int i = 0, j = p.length - 1; i < j; i++, j--) {
-            int t = p[i];
-            p[i] = p[j];
-            p[j] = t;
-        }
-        return p;
+        return candidates.get(0);
     }
 }

@@ -88,25 +88,21 @@ final class SkinLoader {
         int maxOffset = -1;
         Source weightSource = null;
         int[] jointRemap = null; // when <vertex_weights> names joints through another source
-        Source weightJointSource = jointSource; // the names <v>'s joint indices count in
+        Source weightJoints = jointSource; // the source <v>'s joint indices refer to
         for (XmlElement input : weights.children("input")) {
             String semantic = ctx.attr(input, "semantic");
-            int offset = ctx.count(input, "offset", -1);
-            if (offset < 0) {
-                throw ctx.error(input, "missing attribute offset");
-            }
+            int offset = ctx.inputOffset(input);
             maxOffset = Math.max(maxOffset, offset);
             if (semantic.equals("JOINT")) {
                 jointOffset = offset;
-                Source s = ctx.inputSource(input);
-                if (s != jointSource) {
-                    jointRemap = remap(input, s.names(ctx, input, "JOINT"), jointNames);
-                    weightJointSource = s;
-                }
+                weightJoints = ctx.inputSource(input);
+                jointRemap = weightJoints == jointSource ? null
+                        : remap(input, weightJoints.names(ctx, input, "JOINT"), jointNames);
             } else if (semantic.equals("WEIGHT")) {
                 weightOffset = offset;
                 weightSource = ctx.inputSource(input);
                 weightSource.requireFloats(ctx, input, "WEIGHT");
+                weightSource.requireComponent(ctx, input, "WEIGHT");
             }
         }
         if (jointOffset < 0 || weightSource == null) {
@@ -147,12 +143,13 @@ final class SkinLoader {
                 int base = at * stride;
                 int joint = v[base + jointOffset];
                 int weightIndex = v[base + weightOffset];
-                // A remapped index counts in its own name source, which may be shorter than <joints>.
-                if (joint < -1 || joint >= weightJointSource.count()) {
+                // Indices count in the source <vertex_weights> names, which may be shorter than
+                // <joints> when it is another source.
+                int jointLimit = jointRemap == null ? jointNames.length : jointRemap.length;
+                if (joint < -1 || joint >= jointLimit) {
                     throw ctx.error(vElement, "joint index " + joint + " (value " + (base + jointOffset)
-                            + ") is out of range: " + (jointRemap == null ? "the skin has " + jointNames.length
-                            + " joints" : "source \"" + weightJointSource.id() + "\" has " + jointRemap.length
-                            + " joint names"));
+                            + ") is out of range: " + (jointRemap == null ? "the skin has " + jointLimit + " joints"
+                            : "JOINT source \"" + weightJoints.id() + "\" has " + jointLimit + " names"));
                 }
                 if (weightIndex < 0 || weightIndex >= weightSource.count()) {
                     throw ctx.error(vElement, "weight index " + weightIndex + " (value " + (base + weightOffset)

@@ -214,6 +214,7 @@ final class Source {
         if (names == null) {
             throw ctx.error(user, what + " source \"" + id() + "\" holds numbers, expected names");
         }
+        requireComponent(ctx, user, what);
         String[] out = new String[count];
         for (int i = 0; i < count; i++) {
             out[i] = nameAt(i);
@@ -224,6 +225,17 @@ final class Source {
     void requireFloats(ImportContext ctx, XmlElement user, String what) throws ColladaException {
         if (floats == null && ints == null) {
             throw ctx.error(user, what + " source \"" + id() + "\" holds names, expected numbers");
+        }
+    }
+
+    /**
+     * Refuses a source whose accessor selects no component (every {@code <param>} unnamed) where
+     * the caller reads component 0 of each element.
+     */
+    void requireComponent(ImportContext ctx, XmlElement user, String what) throws ColladaException {
+        if (components.length == 0) {
+            throw ctx.error(user, what + " source \"" + id() + "\" has 0 components per element (no <param> has"
+                    + " a name), expected 1");
         }
     }
 

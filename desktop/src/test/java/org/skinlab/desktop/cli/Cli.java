@@ -1,0 +1,58 @@
+package org.skinlab.desktop.cli;
+
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+
+/** Runs the command line in this JVM and keeps what it printed. */
+final class Cli {
+    final int status;
+    final String out;
+    final String err;
+
+    private Cli(int status, String out, String err) {
+        this.status = status;
+        this.out = out;
+        this.err = err;
+    }
+
+    static Cli run(String... args) {
+        StringWriter out = new StringWriter();
+        StringWriter err = new StringWriter();
+        int status = SkinlabCommand.run(new PrintWriter(out), new PrintWriter(err), args);
+        return new Cli(status, out.toString(), err.toString());
+    }
+
+    /** The lines printed on stderr. */
+    String[] errLines() {
+        return err.lines().toArray(String[]::new);
+    }
+
+    @Override
+    public String toString() {
+        return "status " + status + "\n--- stdout\n" + out + "--- stderr\n" + err;
+    }
+
+    /**
+     * The repository root: the build passes {@code skinlab.root}; otherwise the folder above the
+     * working directory that holds {@code settings.gradle}.
+     */
+    static Path root() {
+        String p = System.getProperty("skinlab.root");
+        if (p != null) {
+            return Path.of(p);
+        }
+        for (Path d = Path.of("").toAbsolutePath(); d != null; d = d.getParent()) {
+            if (Files.exists(d.resolve("settings.gradle"))) {
+                return d;
+            }
+        }
+        throw new IllegalStateException("cannot find the repository root from " + Path.of("").toAbsolutePath());
+    }
+
+    /** The default asset, as an absolute path. */
+    static Path defaultAsset() {
+        return root().resolve("assets/characters/humanoid-walk.dae");
+    }
+}

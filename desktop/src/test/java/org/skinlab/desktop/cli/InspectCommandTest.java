@@ -1,0 +1,90 @@
+package org.skinlab.desktop.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.ArrayList;
+import java.util.Iterator;
+import java.util.List;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+
+import org.junit.jupiter.api.Test;
+
+/**
+ * {@code skinlab inspect} on the default asset. The JSON form is a contract other tools parse, so
+ * the exact keys and their order are checked, with the values assets/README.md states for
+ * humanoid-walk.dae (951 positions, 1896 triangles, 19 joints, at most 4 influences, one
+ * one-second walk; 20 channels: one per joint and one for the armature node).
+ */
+class InspectCommandTest {
+    private static List<String> keys(JsonNode object) {
+        List<String> keys = new ArrayList<>();
+        for (Iterator<String> it = object.fieldNames(); it.hasNext();) {
+            keys.add(it.next());
+        }
+        return keys;
+    }
+
+    @Test
+    void jsonHasTheContractKeysInOrderAndTheAssetsCounts() throws Exception {
+        String file = Cli.defaultAsset().toString();
+        Cli r = Cli.run("inspect", "--json", file);
+        assertEquals(ExitCodes.OK, r.status, r::toString);
+        assertEquals("", r.err, r::toString);
+        // One line of JSON.
+        assertTrue(r.out.endsWith("\n") && r.out.indexOf('\n') == r.out.length() - 1, r::toString);
+
+        JsonNode root = new ObjectMapper().readTree(r.out);
+        assertEquals(List.of("file", "upAxis", "unitMeter", "meshes", "clips", "warnings", "loadMillis"), keys(root));
+        assertEquals(file, root.get("file").asText());
+        assertEquals("Z_UP", root.get("upAxis").asText());
+        assertTrue(root.get("unitMeter").isDouble());
+        assertEquals(1.0, root.get("unitMeter").doubleValue(), 0.0);
+
+        assertEquals(1, root.get("meshes").size());
+        JsonNode mesh = root.get("meshes").get(0);
+        assertEquals(List.of("geometry", "name", "positions", "triangles", "skinned", "joints", "maxInfluences"),
+                keys(mesh));
+        assertEquals("Humanoid-mesh", mesh.get("geometry").asText());
+        assertEquals("Humanoid", mesh.get("name").asText());
+        assertEquals(951, mesh.get("positions").intValue());
+        assertEquals(1896, mesh.get("triangles").intValue());
+        assertTrue(mesh.get("skinned").isBoolean());
+        assertTrue(mesh.get("skinned").booleanValue());
+        assertEquals(19, mesh.get("joints").intValue());
+        assertEquals(4, mesh.get("maxInfluences").intValue());
+
+        assertEquals(1, root.get("clips").size());
+        JsonNode clip = root.get("clips").get(0);
+        assertEquals(List.of("name", "duration", "channels"), keys(clip));
+        assertEquals("default", clip.get("name").asText());
+        assertEquals(1.0, clip.get("duration").doubleValue(), 0.0);
+        assertEquals(20, clip.get("channels").intValue());
+
+        assertTrue(root.get("warnings").isArray());
+        assertEquals(0, root.get("warnings").size());
+        assertTrue(root.get("loadMillis").isNumber());
+        assertTrue(root.get("loadMillis").doubleValue() >= 0.0);
+    }
+
+    @Test
+    void textSummaryStatesFrameMeshSkinClipAndWarnings() {
+        String file = Cli.defaultAsset().toString();
+        Cli r = Cli.run("inspect", file);
+        assertEquals(ExitCodes.OK, r.status, r::toString);
+        assertEquals("", r.err, r::toString);
+        String[] lines = r.out.split("\n");
+        assertEquals(8, lines.length, r::toString);
+        assertEquals(file, lines[0]);
+        assertTrue(lines[1].startsWith("  frame:    Z_UP, 1 unit = 1 m, written by Blender"), lines[1]);
+        assertTrue(lines[2].matches("  loaded in \\d+\\.\\d ms"), lines[2]);
+        assertEquals("  meshes:   1", lines[3]);
+        assertTrue(lines[4].matches("    Humanoid-mesh \\(Humanoid\\) +951 positions +1896 triangles  "
+                + "skinned: 19 joints, up to 4 influences per position"), lines[4]);
+        assertEquals("  clips:    1", lines[5]);
+        assertTrue(lines[6].matches("    default +1\\.000 s +20 channels"), lines[6]);
+        assertEquals("  warnings: 0", lines[7]);
+    }
+}
