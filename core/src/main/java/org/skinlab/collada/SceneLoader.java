@@ -41,6 +41,7 @@ final class SceneLoader {
     private final Map<String, IntList> byId = new HashMap<>();
     private final Map<String, IntList> bySid = new HashMap<>();
     private final Map<String, IntList> byName = new HashMap<>();
+    private final Map<String, RootScope> scopes = new HashMap<>();
     private int[] subtreeEnd;
     private int[] parents;
     /** The target of each {@code <instance_node>}, resolved once by {@link #checkExpandedSize}. */
@@ -392,15 +393,24 @@ final class SceneLoader {
             }
         }
         int[] rootArray = roots.toArray();
+        RootScope scope = rootArray.length == 0 ? null
+                : scopes.computeIfAbsent(java.util.Arrays.toString(rootArray), k -> new RootScope(rootArray));
         int[] joints = new int[skin.jointCount()];
         boolean outsideRoots = false;
+        Map<String, Integer> resolved = new HashMap<>(); // joints of one skin may repeat a name
         for (int j = 0; j < joints.length; j++) {
             String name = skin.jointNames().get(j);
-            int found = rootArray.length == 0 ? -1
-                    : firstUnder((skin.jointsAreIdrefs() ? byId : bySid).get(name), rootArray);
-            if (found < 0) {
-                found = byIdOrName(name, skin.jointsAreIdrefs(), rootArray, node);
-                outsideRoots |= found >= 0 && rootArray.length > 0;
+            Integer known = resolved.get(name);
+            int found;
+            if (known != null) {
+                found = known;
+            } else {
+                found = scope == null ? -1 : scope.firstUnder((skin.jointsAreIdrefs() ? byId : bySid).get(name));
+                if (found < 0) {
+                    found = byIdOrName(name, skin.jointsAreIdrefs(), scope, node);
+                    outsideRoots |= found >= 0 && scope != null;
+                }
+                resolved.put(name, found);
             }
             if (found < 0) {
                 throw ctx.error(inst, "joint \"" + name + "\" of controller \"" + controller.id() + "\" matches no node"
@@ -417,14 +427,17 @@ final class SceneLoader {
 
     /**
      * Fallback joint lookup: by id, then (for Name_array joints) by name and by sid; under the
-     * skeleton roots first, then anywhere, preferring the copy nearest the instance.
+     * skeleton roots first (when there are any), then anywhere, preferring the copy nearest the
+     * instance.
      */
-    private int byIdOrName(String name, boolean idrefs, int[] roots, int node) {
+    private int byIdOrName(String name, boolean idrefs, RootScope scope, int node) {
         List<Map<String, IntList>> maps = idrefs ? List.of(byId) : List.of(byId, byName, bySid);
-        for (Map<String, IntList> map : maps) {
-            int found = firstUnder(map.get(name), roots);
-            if (found >= 0) {
-                return found;
+        if (scope != null) {
+            for (Map<String, IntList> map : maps) {
+                int found = scope.firstUnder(map.get(name));
+                if (found >= 0) {
+                    return found;
+                }
             }
         }
         for (Map<String, IntList> map : maps) {
@@ -437,22 +450,46 @@ final class SceneLoader {
     }
 
     /**
-     * The first candidate (in depth-first order) inside the subtree of one of the roots, or -1.
-     * Candidates are node indices in ascending (depth-first) order and a subtree is the index
-     * range [root, subtreeEnd[root]), so each root costs one binary search: a file whose many
-     * joints share a name with many nodes must not cost joints x nodes steps.
+     * The {@code <skeleton>} roots of an instance, as a rank per node: the file-order position of
+     * the first root whose subtree holds the node. "The first candidate under the first root that
+     * has one" is then the candidate of lowest rank (lowest index on ties), found in one pass over
+     * the candidates, whatever the number of roots: a file with many roots and many joints must
+     * not cost roots x joints steps. Built once per distinct root list, in one forward pass
+     * (parents come before children).
      */
-    private int firstUnder(IntList candidates, int[] roots) {
-        if (candidates == null) {
-            return -1;
-        }
-        for (int r : roots) {
-            int c = firstInRange(candidates, r, subtreeEnd[r]);
-            if (c >= 0) {
-                return c;
+    private final class RootScope {
+        private final int[] rank;
+
+        RootScope(int[] roots) {
+            int n = drafts.size();
+            int[] own = new int[n];
+            java.util.Arrays.fill(own, Integer.MAX_VALUE);
+            for (int k = roots.length - 1; k >= 0; k--) {
+                own[roots[k]] = k; // the first occurrence of a root wins
+            }
+            rank = new int[n];
+            for (int i = 0; i < n; i++) {
+                int inherited = parents[i] < 0 ? Integer.MAX_VALUE : rank[parents[i]];
+                rank[i] = Math.min(own[i], inherited);
             }
         }
-        return -1;
+
+        /** The candidate under the first root that holds one (lowest index), or -1. */
+        int firstUnder(IntList candidates) {
+            if (candidates == null) {
+                return -1;
+            }
+            int best = -1;
+            int bestRank = Integer.MAX_VALUE;
+            for (int i = 0; i < candidates.size(); i++) {
+                int c = candidates.get(i);
+                if (rank[c] < bestRank) {
+                    best = c;
+                    bestRank = rank[c];
+                }
+            }
+            return best;
+        }
     }
 
     /** The smallest candidate in [from, to), or -1 (binary search over the ascending list). */

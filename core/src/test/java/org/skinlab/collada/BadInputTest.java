@@ -523,6 +523,47 @@ class BadInputTest {
     }
 
     @Test
+    void manySkeletonRootsAndManyJointsResolveQuickly() {
+        // 100,000 <skeleton> roots (leaf nodes r0..r99999) and 100,000 joints named "x", while the
+        // only sid "x" sits outside every root: each joint searches every root before it falls
+        // back. Looping over the roots per joint is 10^10 steps (minutes); with a rank per node it
+        // is one pass per joint name. The fallback finds the node with id "x" (index 4: marker 0,
+        // Armature 1, Root 2, Tip 3, then the "x" node).
+        int n = 100_000;
+        StringBuilder names = new StringBuilder();
+        StringBuilder matrices = new StringBuilder();
+        StringBuilder rootNodes = new StringBuilder("<node id=\"x\" sid=\"x\"/>\n");
+        StringBuilder skeletons = new StringBuilder();
+        for (int i = 0; i < n; i++) {
+            names.append("x ");
+            matrices.append("1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1 ");
+            rootNodes.append("<node id=\"r").append(i).append("\"/>\n");
+            skeletons.append("<skeleton>#r").append(i).append("</skeleton>");
+        }
+        String xml = with("<Name_array id=\"quad-joints-array\" count=\"2\">Root Tip</Name_array>",
+                "<Name_array id=\"quad-joints-array\" count=\"" + n + "\">" + names + "</Name_array>")
+                .replace("<accessor source=\"#quad-joints-array\" count=\"2\"",
+                        "<accessor source=\"#quad-joints-array\" count=\"" + n + "\"")
+                .replace("count=\"32\">1 0 0 0  0 1 0 0  0 0 1 0  0 0 0 1\n            1 0 0 -1  0 1 0 0  0 0 1 0  0 0 0 1<",
+                        "count=\"" + 16 * n + "\">" + matrices + "<")
+                .replace("<accessor source=\"#quad-ibm-array\" count=\"2\"",
+                        "<accessor source=\"#quad-ibm-array\" count=\"" + n + "\"")
+                .replace("<skeleton>#Root</skeleton>", skeletons.toString())
+                .replace("<node id=\"quad-node\"", rootNodes + "<node id=\"quad-node\"");
+        Model m = assertTimeoutPreemptively(FAST, () -> Fixtures.read("many-roots.dae", xml));
+        int[] joints = m.instances().stream().filter(i -> i.isSkinned()).findFirst().orElseThrow().jointNodes();
+        assertEquals(n, joints.length);
+        assertEquals(n, m.instances().stream().filter(i -> i.isSkinned()).findFirst().orElseThrow()
+                .skeletonRoots().length);
+        assertEquals("x", m.node(4).id());
+        for (int j : joints) {
+            assertEquals(4, j);
+        }
+        assertTrue(m.warnings().stream().anyMatch(w -> w.message().contains("found by id or name instead")),
+                () -> m.warnings().toString());
+    }
+
+    @Test
     void instancingBombIsRefusedQuickly() {
         // Library node n_k instances n_(k-1) ten times, 8 levels: n8 expands to 10^8 + ... nodes.
         // n6 is the first to exceed 1,000,000 (1,111,111 nodes), so it is the one named.
