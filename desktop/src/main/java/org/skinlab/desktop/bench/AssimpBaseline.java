@@ -38,6 +38,11 @@ public final class AssimpBaseline implements AutoCloseable {
         data.put(bytes).flip();
     }
 
+    /** The file's size in bytes. */
+    public int size() {
+        return data.limit();
+    }
+
     /**
      * Loads assimp's native library now, so that a machine without it fails before any
      * measurement. Returns assimp's version, e.g. "5.4.1".

@@ -81,10 +81,17 @@ public final class ParseBenchCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    /** Per input file with --compare-assimp: assimp's message when it refuses the file, else null. */
-    private String[] assimpFailures;
-    /** Per input file with --compare-assimp: triangles in assimp's scene. */
-    private long[] assimpTriangles;
+    /** One file for assimp: its bytes in native memory and what the untimed first import gave. */
+    private static final class AssimpFile {
+        final AssimpBaseline assimp;
+        long triangles;
+        /** assimp's message when it refuses the file, else null. */
+        String failure;
+
+        AssimpFile(byte[] bytes) {
+            assimp = new AssimpBaseline(bytes);
+        }
+    }
 
     /** One file's measurement. */
     static final class Result {
@@ -198,7 +205,25 @@ public final class ParseBenchCommand implements Callable<Integer> {
                 }
             }
         } while (System.nanoTime() < warmupEnd);
-        AssimpBaseline[] assimp = compareAssimp ? assimpWarmup(data, err) : null;
+        List<AssimpFile> assimp = new ArrayList<>();
+        try {
+            if (compareAssimp) {
+                for (byte[] bytes : data) {
+                    assimp.add(new AssimpFile(bytes));
+                }
+                assimpWarmup(assimp);
+            }
+            return measureEach(inputs, data, generated, assimp, err);
+        } finally {
+            for (AssimpFile a : assimp) {
+                a.assimp.close();
+            }
+        }
+    }
+
+    /** Ours on each file, then assimp on it when compared ({@code assimp} empty otherwise). */
+    private List<Result> measureEach(List<Path> inputs, List<byte[]> data, Path generated, List<AssimpFile> assimp,
+            PrintWriter err) {
         List<Result> results = new ArrayList<>();
         for (int i = 0; i < data.size(); i++) {
             byte[] bytes = data.get(i);
@@ -223,8 +248,8 @@ public final class ParseBenchCommand implements Callable<Integer> {
                     : inputs.get(i).getFileName().toString();
             Result result = new Result(name, bytes.length, triangles, millis);
             results.add(result);
-            if (assimp != null) {
-                measureAssimp(assimp, i, large, n, result, err);
+            if (!assimp.isEmpty()) {
+                measureAssimp(assimp.get(i), large, n, result, err);
             } else {
                 err.printf(Locale.ROOT, "bench parse: %s %.2f ms%n", name, result.median());
             }
@@ -233,65 +258,52 @@ public final class ParseBenchCommand implements Callable<Integer> {
     }
 
     /**
-     * Copies every file into native memory, imports each once with assimp (counting triangles and
-     * noting the files it refuses), then warms assimp up as ours: the same seconds over the small
-     * files it accepts.
+     * Imports each file once with assimp (counting triangles, noting the files it refuses), then
+     * warms assimp up as ours: the same seconds over the small files it accepts.
      */
-    private AssimpBaseline[] assimpWarmup(List<byte[]> data, PrintWriter err) {
-        AssimpBaseline[] assimp = new AssimpBaseline[data.size()];
-        for (int i = 0; i < data.size(); i++) {
-            assimp[i] = new AssimpBaseline(data.get(i));
-        }
-        assimpFailures = new String[data.size()];
-        assimpTriangles = new long[data.size()];
-        for (int i = 0; i < data.size(); i++) {
+    private void assimpWarmup(List<AssimpFile> files) {
+        for (AssimpFile f : files) {
             try {
-                assimpTriangles[i] = assimp[i].triangles(assimpFlags);
+                f.triangles = f.assimp.triangles(assimpFlags);
             } catch (IllegalArgumentException e) {
-                assimpFailures[i] = e.getMessage();
+                f.failure = e.getMessage();
             }
         }
         long warmupEnd = System.nanoTime() + (long) (warmupSeconds * 1e9);
         do {
-            for (int i = 0; i < data.size(); i++) {
-                if (data.get(i).length < 10_000_000 && assimpFailures[i] == null) {
-                    assimp[i].importOnce(assimpFlags);
+            for (AssimpFile f : files) {
+                if (f.assimp.size() < 10_000_000 && f.failure == null) {
+                    f.assimp.importOnce(assimpFlags);
                 }
             }
         } while (System.nanoTime() < warmupEnd);
-        return assimp;
     }
 
-    /** assimp on file {@code i}: the same protocol as ours (one untimed import first when large). */
-    private void measureAssimp(AssimpBaseline[] assimp, int i, boolean large, int n, Result result,
-            PrintWriter err) {
-        try {
-            result.assimpTriangles = assimpTriangles[i];
-            if (assimpFailures[i] != null) {
-                result.assimpError = assimpFailures[i];
-                err.printf(Locale.ROOT, "bench parse: %s %.2f ms, assimp failed: %s%n", result.name, result.median(),
-                        result.assimpError);
-                return;
-            }
+    /** assimp on one file: the same protocol as ours (one untimed import first when large). */
+    private void measureAssimp(AssimpFile f, boolean large, int n, Result result, PrintWriter err) {
+        if (f.failure != null) {
+            result.assimpError = f.failure;
+            err.printf(Locale.ROOT, "bench parse: %s %.2f ms, assimp failed: %s%n", result.name, result.median(),
+                    result.assimpError);
+            return;
+        }
+        result.assimpTriangles = f.triangles;
+        if (large) {
+            System.gc();
+            f.assimp.importOnce(assimpFlags);
+        }
+        double[] millis = new double[n];
+        for (int r = 0; r < n; r++) {
             if (large) {
                 System.gc();
-                assimp[i].importOnce(assimpFlags);
             }
-            double[] millis = new double[n];
-            for (int r = 0; r < n; r++) {
-                if (large) {
-                    System.gc();
-                }
-                long t0 = System.nanoTime();
-                assimp[i].importOnce(assimpFlags);
-                millis[r] = (System.nanoTime() - t0) / 1e6;
-            }
-            result.assimpMillis = millis;
-            err.printf(Locale.ROOT, "bench parse: %s %.2f ms, assimp %.2f ms (%.1fx)%n", result.name,
-                    result.median(), Result.median(millis), result.assimpRatio());
-        } finally {
-            assimp[i].close();
+            long t0 = System.nanoTime();
+            f.assimp.importOnce(assimpFlags);
+            millis[r] = (System.nanoTime() - t0) / 1e6;
         }
+        result.assimpMillis = millis;
+        err.printf(Locale.ROOT, "bench parse: %s %.2f ms, assimp %.2f ms (%.1fx)%n", result.name,
+                result.median(), Result.median(millis), result.assimpRatio());
     }
 
     private static Model importOnce(Path path, byte[] bytes) {
