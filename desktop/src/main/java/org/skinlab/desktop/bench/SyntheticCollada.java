@@ -23,6 +23,18 @@ public final class SyntheticCollada {
     private SyntheticCollada() {
     }
 
+    /**
+     * Writes the file for benchmarks outside skinlab ({@code bench/compare-parse.sh} gives the
+     * same bytes to every tool): {@code SyntheticCollada FILE TRIANGLES}; prints the triangle count.
+     */
+    public static void main(String[] args) throws IOException {
+        if (args.length != 2) {
+            System.err.println("usage: SyntheticCollada FILE TRIANGLES");
+            System.exit(2);
+        }
+        System.out.println(write(Path.of(args[0]), Long.parseLong(args[1])));
+    }
+
     /** Grid cells per side so that the grid has at least {@code triangles} triangles. */
     public static int cellsPerSide(long triangles) {
         return (int) Math.ceil(Math.sqrt(triangles / 2.0));

@@ -19,6 +19,7 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 
 import org.skinlab.collada.ColladaException;
 import org.skinlab.collada.ColladaImporter;
+import org.skinlab.desktop.bench.AssimpBaseline;
 import org.skinlab.desktop.bench.SyntheticCollada;
 import org.skinlab.model.Mesh;
 import org.skinlab.model.Model;
@@ -34,6 +35,11 @@ import picocli.CommandLine.Model.CommandSpec;
  * are the importer's (XML parsing included), not the disk's. Each file is imported repeatedly
  * after a shared warm-up; the report gives the minimum and median time per import and the
  * throughput at the median (1 MB = 10^6 bytes).
+ *
+ * <p>{@code --compare-assimp} also imports every file with assimp (LWJGL's binding, from the same
+ * bytes in memory, after its own warm-up of the same length, with the same number of runs, right
+ * after ours on each file) and reports assimp's times and the ratio assimp median / our median.
+ * A file assimp refuses is reported as failed, with assimp's message, and measured for us alone.
  */
 @Command(name = "parse", mixinStandardHelpOptions = true,
         description = "Import speed on our assets, the shared corpus and a generated large file.")
@@ -63,8 +69,29 @@ public final class ParseBenchCommand implements Callable<Integer> {
     @Option(names = "--json", description = "print the results as one line of JSON")
     boolean json;
 
+    @Option(names = "--compare-assimp",
+            description = "also import each file with assimp (LWJGL) and report its median and assimp/ours")
+    boolean compareAssimp;
+
+    @Option(names = "--assimp-flags", paramLabel = "N",
+            description = "assimp post-processing flags (default: ${DEFAULT-VALUE} = aiProcess_Triangulate"
+                    + " | aiProcess_JoinIdenticalVertices, what our importer does)")
+    int assimpFlags = AssimpBaseline.FAIR_FLAGS;
+
     @Spec
     CommandSpec spec;
+
+    /** One file for assimp: its bytes in native memory and what the untimed first import gave. */
+    private static final class AssimpFile {
+        final AssimpBaseline assimp;
+        long triangles;
+        /** assimp's message when it refuses the file, else null. */
+        String failure;
+
+        AssimpFile(byte[] bytes) {
+            assimp = new AssimpBaseline(bytes);
+        }
+    }
 
     /** One file's measurement. */
     static final class Result {
@@ -72,6 +99,11 @@ public final class ParseBenchCommand implements Callable<Integer> {
         final long bytes;
         final long triangles;
         final double[] millis;
+        /** assimp's times, or null when not compared or when assimp failed. */
+        double[] assimpMillis;
+        long assimpTriangles;
+        /** assimp's message when it refused the file, else null. */
+        String assimpError;
 
         Result(String name, long bytes, long triangles, double[] millis) {
             this.name = name;
@@ -81,14 +113,27 @@ public final class ParseBenchCommand implements Callable<Integer> {
         }
 
         double min() {
-            return Arrays.stream(millis).min().orElse(Double.NaN);
+            return min(millis);
         }
 
         double median() {
+            return median(millis);
+        }
+
+        static double min(double[] millis) {
+            return Arrays.stream(millis).min().orElse(Double.NaN);
+        }
+
+        static double median(double[] millis) {
             double[] s = millis.clone();
             Arrays.sort(s);
             int n = s.length;
             return n % 2 == 1 ? s[n / 2] : (s[n / 2 - 1] + s[n / 2]) / 2;
+        }
+
+        /** assimp median / our median: how many times faster we are. */
+        double assimpRatio() {
+            return median(assimpMillis) / median();
         }
 
         double mbPerSecond() {
@@ -125,11 +170,21 @@ public final class ParseBenchCommand implements Callable<Integer> {
                 }
                 data.add(Files.readAllBytes(p));
             }
+            String assimpVersion = null;
+            if (compareAssimp) {
+                try {
+                    assimpVersion = AssimpBaseline.loadAndVersion();
+                } catch (IllegalStateException e) {
+                    throw new CommandFailure(ExitCodes.INTERNAL, "bench parse --compare-assimp: " + e.getMessage(), e);
+                }
+                err.printf(Locale.ROOT, "bench parse: comparing with assimp %s, flags %s%n", assimpVersion,
+                        AssimpBaseline.describe(assimpFlags));
+            }
             List<Result> results = measure(inputs, data, generated, err);
             if (json) {
-                out.println(new ObjectMapper().writeValueAsString(toJson(results)));
+                out.println(new ObjectMapper().writeValueAsString(toJson(results, assimpVersion)));
             } else {
-                out.print(table(results));
+                out.print(table(results, compareAssimp));
             }
             out.flush();
             return ExitCodes.OK;
@@ -150,6 +205,25 @@ public final class ParseBenchCommand implements Callable<Integer> {
                 }
             }
         } while (System.nanoTime() < warmupEnd);
+        List<AssimpFile> assimp = new ArrayList<>();
+        try {
+            if (compareAssimp) {
+                for (byte[] bytes : data) {
+                    assimp.add(new AssimpFile(bytes));
+                }
+                assimpWarmup(assimp);
+            }
+            return measureEach(inputs, data, generated, assimp, err);
+        } finally {
+            for (AssimpFile a : assimp) {
+                a.assimp.close();
+            }
+        }
+    }
+
+    /** Ours on each file, then assimp on it when compared ({@code assimp} empty otherwise). */
+    private List<Result> measureEach(List<Path> inputs, List<byte[]> data, Path generated, List<AssimpFile> assimp,
+            PrintWriter err) {
         List<Result> results = new ArrayList<>();
         for (int i = 0; i < data.size(); i++) {
             byte[] bytes = data.get(i);
@@ -172,10 +246,64 @@ public final class ParseBenchCommand implements Callable<Integer> {
             long triangles = model.meshes().stream().mapToLong(Mesh::triangleCount).sum();
             String name = inputs.get(i).equals(generated) ? "generated-" + triangles + "-triangles.dae"
                     : inputs.get(i).getFileName().toString();
-            results.add(new Result(name, bytes.length, triangles, millis));
-            err.printf(Locale.ROOT, "bench parse: %s %.2f ms%n", name, results.get(results.size() - 1).median());
+            Result result = new Result(name, bytes.length, triangles, millis);
+            results.add(result);
+            if (!assimp.isEmpty()) {
+                measureAssimp(assimp.get(i), large, n, result, err);
+            } else {
+                err.printf(Locale.ROOT, "bench parse: %s %.2f ms%n", name, result.median());
+            }
         }
         return results;
+    }
+
+    /**
+     * Imports each file once with assimp (counting triangles, noting the files it refuses), then
+     * warms assimp up as ours: the same seconds over the small files it accepts.
+     */
+    private void assimpWarmup(List<AssimpFile> files) {
+        for (AssimpFile f : files) {
+            try {
+                f.triangles = f.assimp.triangles(assimpFlags);
+            } catch (IllegalArgumentException e) {
+                f.failure = e.getMessage();
+            }
+        }
+        long warmupEnd = System.nanoTime() + (long) (warmupSeconds * 1e9);
+        do {
+            for (AssimpFile f : files) {
+                if (f.assimp.size() < 10_000_000 && f.failure == null) {
+                    f.assimp.importOnce(assimpFlags);
+                }
+            }
+        } while (System.nanoTime() < warmupEnd);
+    }
+
+    /** assimp on one file: the same protocol as ours (one untimed import first when large). */
+    private void measureAssimp(AssimpFile f, boolean large, int n, Result result, PrintWriter err) {
+        if (f.failure != null) {
+            result.assimpError = f.failure;
+            err.printf(Locale.ROOT, "bench parse: %s %.2f ms, assimp failed: %s%n", result.name, result.median(),
+                    result.assimpError);
+            return;
+        }
+        result.assimpTriangles = f.triangles;
+        if (large) {
+            System.gc();
+            f.assimp.importOnce(assimpFlags);
+        }
+        double[] millis = new double[n];
+        for (int r = 0; r < n; r++) {
+            if (large) {
+                System.gc();
+            }
+            long t0 = System.nanoTime();
+            f.assimp.importOnce(assimpFlags);
+            millis[r] = (System.nanoTime() - t0) / 1e6;
+        }
+        result.assimpMillis = millis;
+        err.printf(Locale.ROOT, "bench parse: %s %.2f ms, assimp %.2f ms (%.1fx)%n", result.name,
+                result.median(), Result.median(millis), result.assimpRatio());
     }
 
     private static Model importOnce(Path path, byte[] bytes) {
@@ -198,12 +326,16 @@ public final class ParseBenchCommand implements Callable<Integer> {
         }
     }
 
-    private static ObjectNode toJson(List<Result> results) {
+    private ObjectNode toJson(List<Result> results, String assimpVersion) {
         ObjectMapper mapper = new ObjectMapper();
         ObjectNode root = mapper.createObjectNode();
         root.put("benchmark", "parse");
         root.put("java", System.getProperty("java.version"));
         root.put("cores", Runtime.getRuntime().availableProcessors());
+        if (assimpVersion != null) {
+            root.put("assimpVersion", assimpVersion);
+            root.put("assimpFlags", AssimpBaseline.describe(assimpFlags));
+        }
         ArrayNode list = root.putArray("files");
         for (Result r : results) {
             ObjectNode f = list.addObject();
@@ -214,6 +346,20 @@ public final class ParseBenchCommand implements Callable<Integer> {
             f.put("minMillis", round(r.min()));
             f.put("medianMillis", round(r.median()));
             f.put("mbPerSecond", round(r.mbPerSecond()));
+            if (assimpVersion != null) {
+                // Present for every file when compared; null times (and assimpError) where assimp failed.
+                f.put("assimpTriangles", r.assimpError == null ? r.assimpTriangles : null);
+                if (r.assimpMillis != null) {
+                    f.put("assimpMinMillis", round(Result.min(r.assimpMillis)));
+                    f.put("assimpMedianMillis", round(Result.median(r.assimpMillis)));
+                    f.put("assimpRatio", round(r.assimpRatio()));
+                } else {
+                    f.putNull("assimpMinMillis");
+                    f.putNull("assimpMedianMillis");
+                    f.putNull("assimpRatio");
+                    f.put("assimpError", r.assimpError);
+                }
+            }
         }
         return root;
     }
@@ -222,15 +368,24 @@ public final class ParseBenchCommand implements Callable<Integer> {
         return Math.round(d * 1000.0) / 1000.0;
     }
 
-    private static String table(List<Result> results) {
+    private static String table(List<Result> results, boolean withAssimp) {
         StringBuilder sb = new StringBuilder();
-        sb.append(String.format(Locale.ROOT, "%-40s %9s %10s %9s %9s %8s%n", "file", "MB", "triangles", "min ms",
+        sb.append(String.format(Locale.ROOT, "%-40s %9s %10s %9s %9s %8s", "file", "MB", "triangles", "min ms",
                 "median ms", "MB/s"));
+        sb.append(withAssimp ? String.format(Locale.ROOT, " %10s %12s%n", "assimp ms", "assimp/ours") : System.lineSeparator());
         long bytes = 0;
         double millis = 0;
         for (Result r : results) {
-            sb.append(String.format(Locale.ROOT, "%-40s %9.3f %10d %9.2f %9.2f %8.1f%n", r.name, r.bytes / 1e6,
+            sb.append(String.format(Locale.ROOT, "%-40s %9.3f %10d %9.2f %9.2f %8.1f", r.name, r.bytes / 1e6,
                     r.triangles, r.min(), r.median(), r.mbPerSecond()));
+            if (!withAssimp) {
+                sb.append(System.lineSeparator());
+            } else if (r.assimpMillis != null) {
+                sb.append(String.format(Locale.ROOT, " %10.2f %12.2f%n", Result.median(r.assimpMillis),
+                        r.assimpRatio()));
+            } else {
+                sb.append(String.format(Locale.ROOT, " %10s%n", "failed"));
+            }
             bytes += r.bytes;
             millis += r.median();
         }
