@@ -48,6 +48,20 @@ final class SafeXmlReader {
 
     private static final SAXParserFactory FACTORY = createFactory();
 
+    /**
+     * One parser per thread, reused: creating a JDK SAX parser costs about as much as importing a
+     * small file. A parser is not thread-safe, hence one per thread.
+     */
+    private static final ThreadLocal<SAXParser> PARSERS = ThreadLocal.withInitial(() -> {
+        try {
+            synchronized (FACTORY) {
+                return FACTORY.newSAXParser();
+            }
+        } catch (ParserConfigurationException | SAXException e) {
+            throw new IllegalStateException("no usable SAX parser", e);
+        }
+    });
+
     private SafeXmlReader() {
     }
 
@@ -80,11 +94,9 @@ final class SafeXmlReader {
      */
     static XmlElement read(InputStream in, String fileName) throws ColladaException, IOException {
         TreeBuilder builder = new TreeBuilder(fileName);
+        SAXParser parser = null;
         try {
-            SAXParser parser;
-            synchronized (FACTORY) {
-                parser = FACTORY.newSAXParser();
-            }
+            parser = PARSERS.get();
             XMLReader reader = parser.getXMLReader();
             reader.setContentHandler(builder);
             reader.setErrorHandler(builder);
@@ -97,8 +109,6 @@ final class SafeXmlReader {
                 // still refuse; every parser we ship on supports the property.
             }
             reader.parse(new InputSource(in));
-        } catch (ParserConfigurationException e) {
-            throw new IllegalStateException("no usable SAX parser", e);
         } catch (Refusal r) {
             throw r.exception;
         } catch (SAXParseException e) {
@@ -115,6 +125,16 @@ final class SafeXmlReader {
             // Bytes that are not valid in the document's encoding, when the parser throws them
             // rather than reporting a fatal error.
             throw new ColladaException(fileName, "XML" + builder.openElement(), "malformed XML: " + e.getMessage(), e);
+        } finally {
+            if (parser != null) {
+                // Drop the handlers (and with them the tree) so a parser kept for the thread
+                // holds no document; reset() restores the configured features.
+                try {
+                    parser.reset();
+                } catch (UnsupportedOperationException e) {
+                    PARSERS.remove(); // a parser that cannot be reset is not reused
+                }
+            }
         }
         if (builder.root == null) {
             throw new ColladaException(fileName, "XML", "the document has no root element");
@@ -204,7 +224,10 @@ final class SafeXmlReader {
                 hasText = Arrays.copyOf(hasText, size);
             }
             stack[depth] = e;
-            if (text[depth] == null) {
+            int numeric = numericKind(e.name());
+            if (numeric != NOT_NUMERIC) {
+                e.setNumbers(new NumberScanner(numeric == FLOATS, countHint(e.attr("count"))));
+            } else if (text[depth] == null) {
                 text[depth] = new StringBuilder(64);
             } else {
                 text[depth].setLength(0);
@@ -219,6 +242,11 @@ final class SafeXmlReader {
                 return;
             }
             int d = depth - 1;
+            NumberScanner numbers = stack[d].numbers();
+            if (numbers != null) {
+                numbers.feed(ch, start, length); // straight from the parser's buffer, no String
+                return;
+            }
             if (!hasText[d]) {
                 // Skip leading whitespace so indentation between child elements costs nothing.
                 int end = start + length;
@@ -237,7 +265,10 @@ final class SafeXmlReader {
         @Override
         public void endElement(String uri, String localName, String qName) {
             depth--;
-            if (hasText[depth]) {
+            NumberScanner numbers = stack[depth].numbers();
+            if (numbers != null) {
+                numbers.finish();
+            } else if (hasText[depth]) {
                 StringBuilder sb = text[depth];
                 stack[depth].setText(sb.toString());
                 if (sb.capacity() > (1 << 16)) {
@@ -298,6 +329,52 @@ final class SafeXmlReader {
         @Override
         public void error(SAXParseException e) throws SAXException {
             throw e;
+        }
+    }
+
+    private static final int NOT_NUMERIC = 0;
+    private static final int FLOATS = 1;
+    private static final int INTS = 2;
+
+    /**
+     * Whether COLLADA elements of this name only ever hold a list of numbers, which are then
+     * parsed while the XML is read instead of being kept as text.
+     */
+    static boolean isNumeric(String elementName) {
+        return numericKind(elementName) != NOT_NUMERIC;
+    }
+
+    private static int numericKind(String name) {
+        switch (name) {
+            case "float_array":
+            case "matrix":
+            case "translate":
+            case "rotate":
+            case "scale":
+            case "lookat":
+            case "skew":
+            case "bind_shape_matrix":
+                return FLOATS;
+            case "int_array":
+            case "p":
+            case "v":
+            case "vcount":
+            case "h":
+                return INTS;
+            default:
+                return NOT_NUMERIC;
+        }
+    }
+
+    /** A count attribute as a capacity hint; -1 when absent or not a number. */
+    private static int countHint(String count) {
+        if (count == null) {
+            return -1;
+        }
+        try {
+            return Integer.parseInt(count.trim());
+        } catch (NumberFormatException e) {
+            return -1;
         }
     }
 

@@ -18,6 +18,7 @@ final class XmlElement {
     private final String[] attributes; // name, value, name, value, ...
     private List<XmlElement> children = Collections.emptyList();
     private String text = "";
+    private NumberScanner numbers;
 
     XmlElement(String name, XmlElement parent, int line, String[] attributes) {
         this.name = name;
@@ -35,6 +36,15 @@ final class XmlElement {
 
     void setText(String text) {
         this.text = text;
+    }
+
+    /** Numbers scanned while the XML was read (numeric elements only), or null. */
+    NumberScanner numbers() {
+        return numbers;
+    }
+
+    void setNumbers(NumberScanner numbers) {
+        this.numbers = numbers;
     }
 
     String name() {
@@ -91,7 +101,10 @@ final class XmlElement {
         return null;
     }
 
-    /** The element's character content (whitespace-only content is the empty string). */
+    /**
+     * The element's character content (whitespace-only content is the empty string). Numeric
+     * elements keep no text: see {@link #numbers()}.
+     */
     String text() {
         return text;
     }

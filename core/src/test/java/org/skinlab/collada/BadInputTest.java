@@ -405,7 +405,7 @@ class BadInputTest {
         assertTimeoutPreemptively(Duration.ofSeconds(2), () -> {
             long before = allocatedBytes();
             refused("huge-count.dae", xml, "<float_array id=\"quad-pos-array\">",
-                    "count=\"2000000000\" but the element holds only 12 values");
+                    "count=\"2000000000\" but only 12 values");
             long after = allocatedBytes();
             if (before >= 0) {
                 assertTrue(after - before < 16_000_000, "allocated " + (after - before) + " bytes");

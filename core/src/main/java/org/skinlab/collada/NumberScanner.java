@@ -1,0 +1,430 @@
+package org.skinlab.collada;
+
+import java.util.Arrays;
+
+/**
+ * Parses a whitespace-separated list of numbers from character chunks, as the SAX parser
+ * delivers an element's text, without building a String: the numbers of a {@code float_array} or
+ * {@code <p>} go straight from the parser's buffer into a {@code float[]} or {@code int[]}. A
+ * token split between two chunks is carried over.
+ *
+ * <p>Floats are correctly rounded: the common case (at most 18 significant digits, a decimal
+ * exponent within +-22) is computed exactly in double precision (Clinger's fast path) and then
+ * rounded to float; the only double-rounding hazard, a double that lands exactly halfway between
+ * two floats, and every other case fall back to {@link Float#parseFloat}. NaN and infinities
+ * (and MSVC spellings such as {@code 1.#QNAN}) are not numbers here: a non-finite coordinate,
+ * weight or key time is never meaningful and would silently poison everything downstream.
+ *
+ * <p>Problems do not stop the scan: the first bad token is remembered (with its index) and
+ * counted as a value, so the importer can report it, or a count mismatch, when someone asks for
+ * the values ({@link NumberParser}). A file may hold arrays nobody uses; their problems stay
+ * silent.
+ */
+final class NumberScanner {
+    /** Longer tokens are refused; no real number needs this many characters. */
+    static final int MAX_TOKEN = 400;
+    /** The largest array allocated on the word of a count attribute before any value is seen. */
+    private static final int MAX_CAPACITY_HINT = 1 << 16;
+
+    /** 10^k and 10^-k as doubles (rounded where not exact: 10^k is exact up to k = 22). */
+    private static final double[] POWERS_OF_TEN = new double[41];
+    private static final double[] NEGATIVE_POWERS_OF_TEN = new double[66];
+
+    static {
+        for (int k = 0; k < POWERS_OF_TEN.length; k++) {
+            POWERS_OF_TEN[k] = Double.parseDouble("1e" + k);
+        }
+        for (int k = 0; k < NEGATIVE_POWERS_OF_TEN.length; k++) {
+            NEGATIVE_POWERS_OF_TEN[k] = Double.parseDouble("1e-" + k);
+        }
+    }
+
+    /** Mask of the 29 double mantissa bits below float precision, and the pattern of a float midpoint. */
+    private static final long BELOW_FLOAT = 0x1FFF_FFFFL;
+    private static final long FLOAT_MIDPOINT = 0x1000_0000L;
+
+    private final boolean floats;
+    private float[] floatValues;
+    private int[] intValues;
+    private int size;
+
+    private char[] carry = new char[32];
+    private int carryLength;
+
+    private String badToken;
+    private String badReason;
+    private int badIndex = -1;
+
+    /** Where the token parsed last ended (the first character after it). */
+    private int tokenEnd;
+
+    /**
+     * @param floats       parse floats (else ints)
+     * @param capacityHint expected number of values (e.g. a count attribute), or -1; only a hint
+     */
+    NumberScanner(boolean floats, int capacityHint) {
+        this.floats = floats;
+        int capacity = capacityHint < 4 ? 16 : Math.min(capacityHint, MAX_CAPACITY_HINT);
+        if (floats) {
+            floatValues = new float[capacity];
+        } else {
+            intValues = new int[capacity];
+        }
+    }
+
+    /** Scans a whole text at once. */
+    static NumberScanner scan(String text, boolean floats) {
+        NumberScanner s = new NumberScanner(floats, -1);
+        char[] chars = text.toCharArray();
+        s.feed(chars, 0, chars.length);
+        s.finish();
+        return s;
+    }
+
+    boolean isFloats() {
+        return floats;
+    }
+
+    /** Number of values (bad tokens included). */
+    int size() {
+        return size;
+    }
+
+    /** The values as floats, exactly {@link #size()} of them (after {@link #finish()}). */
+    float[] floats() {
+        if (floats) {
+            return floatValues;
+        }
+        float[] f = new float[size];
+        for (int i = 0; i < size; i++) {
+            f[i] = intValues[i];
+        }
+        return f;
+    }
+
+    /** The values as ints (after {@link #finish()}); only for an int scanner. */
+    int[] ints() {
+        if (floats) {
+            throw new IllegalStateException("a float list has no ints");
+        }
+        return intValues;
+    }
+
+    /** Index of the first bad token, or -1. */
+    int badIndex() {
+        return badIndex;
+    }
+
+    /** The first bad token (at most 40 characters), or null. */
+    String badToken() {
+        return badToken;
+    }
+
+    /** Why the first bad token is bad, e.g. "not a finite number". */
+    String badReason() {
+        return badReason;
+    }
+
+    /** Consumes the next chunk of the element's text. */
+    void feed(char[] ch, int start, int length) {
+        int pos = start;
+        int limit = start + length;
+        if (carryLength > 0) {
+            // The previous chunk ended inside a token: it goes on until the next whitespace.
+            while (pos < limit && !SafeXmlReader.isXmlWhitespace(ch[pos])) {
+                appendCarry(ch[pos++]);
+            }
+            if (pos == limit) {
+                return;
+            }
+            parseCarry();
+        }
+        while (true) {
+            while (pos < limit && SafeXmlReader.isXmlWhitespace(ch[pos])) {
+                pos++;
+            }
+            if (pos == limit) {
+                return;
+            }
+            if (!parseToken(ch, pos, limit, false)) {
+                // The token runs to the end of the chunk and may go on in the next one.
+                for (int k = pos; k < limit; k++) {
+                    appendCarry(ch[k]);
+                }
+                return;
+            }
+            pos = tokenEnd;
+        }
+    }
+
+    /** Ends the text: parses a carried token and trims the arrays to their size. */
+    void finish() {
+        if (carryLength > 0) {
+            parseCarry();
+        }
+        if (floats) {
+            if (floatValues.length != size) {
+                floatValues = Arrays.copyOf(floatValues, size);
+            }
+        } else if (intValues.length != size) {
+            intValues = Arrays.copyOf(intValues, size);
+        }
+        carry = null;
+    }
+
+    private void appendCarry(char c) {
+        if (carryLength == carry.length) {
+            if (carryLength >= MAX_TOKEN) {
+                carryLength++; // remember that it is too long; keep the start for the message
+                return;
+            }
+            carry = Arrays.copyOf(carry, Math.min(MAX_TOKEN, carry.length * 2));
+        }
+        if (carryLength < carry.length) {
+            carry[carryLength] = c;
+        }
+        carryLength++;
+    }
+
+    private void parseCarry() {
+        if (carryLength > MAX_TOKEN) {
+            bad(carry, 0, Math.min(carryLength, carry.length), "longer than " + MAX_TOKEN + " characters");
+            add(0);
+        } else {
+            parseToken(carry, 0, carryLength, true);
+        }
+        carryLength = 0;
+    }
+
+    /**
+     * Parses the token at {@code b[from]}. Returns false, consuming nothing, when the token
+     * reaches {@code limit} and {@code limitEndsToken} is false (it may continue elsewhere);
+     * otherwise records the value (or the problem) and sets {@link #tokenEnd}.
+     */
+    private boolean parseToken(char[] b, int from, int limit, boolean limitEndsToken) {
+        pendingProblem = null;
+        int stop = floats ? scanFloat(b, from, limit) : scanInt(b, from, limit);
+        if (stop == limit && !limitEndsToken) {
+            return false;
+        }
+        if (stop < limit && !SafeXmlReader.isXmlWhitespace(b[stop])) {
+            // Not a number: find the whole token for the message.
+            int end = stop;
+            while (end < limit && !SafeXmlReader.isXmlWhitespace(b[end])) {
+                end++;
+            }
+            if (end == limit && !limitEndsToken) {
+                return false;
+            }
+            bad(b, from, end, floats ? "not a finite number" : "not an integer");
+            add(0);
+            tokenEnd = end;
+            return true;
+        }
+        tokenEnd = stop;
+        if (stop - from > MAX_TOKEN) {
+            bad(b, from, stop, "longer than " + MAX_TOKEN + " characters");
+            add(0);
+        } else if (pendingProblem != null) {
+            bad(b, from, stop, pendingProblem);
+            add(0);
+        } else if (floats) {
+            add(pendingFloat);
+        } else {
+            add(pendingInt);
+        }
+        return true;
+    }
+
+    // Results of the scanners below, handed to parseToken.
+    private float pendingFloat;
+    private int pendingInt;
+    private String pendingProblem;
+
+    /**
+     * Scans a float at {@code b[from]}; returns the index after it (where it stopped). Sets
+     * {@link #pendingFloat}, or {@link #pendingProblem} when the characters form no number.
+     */
+    private int scanFloat(char[] b, int from, int limit) {
+        int pos = from;
+        boolean negative = false;
+        char c = b[pos];
+        if (c == '-' || c == '+') {
+            negative = c == '-';
+            pos++;
+        }
+        long mantissa = 0;
+        int significant = 0;      // significant digits kept in the mantissa (at most 18: fits a long)
+        int exponent = 0;         // decimal exponent applied to the mantissa
+        boolean dropped = false;  // digits beyond 18 were dropped: not exact any more
+        int digits = 0;
+        while (pos < limit) {
+            int d = b[pos] - '0';
+            if (d < 0 || d > 9) {
+                break;
+            }
+            digits++;
+            if (significant < 18) {
+                if (mantissa != 0 || d != 0) {
+                    mantissa = mantissa * 10 + d;
+                    significant++;
+                }
+            } else {
+                exponent++;
+                dropped |= d != 0;
+            }
+            pos++;
+        }
+        if (pos < limit && b[pos] == '.') {
+            pos++;
+            while (pos < limit) {
+                int d = b[pos] - '0';
+                if (d < 0 || d > 9) {
+                    break;
+                }
+                digits++;
+                if (significant < 18) {
+                    if (mantissa != 0 || d != 0) {
+                        mantissa = mantissa * 10 + d;
+                        significant++;
+                    }
+                    exponent--;
+                } else {
+                    dropped |= d != 0;
+                }
+                pos++;
+            }
+        }
+        if (digits == 0) {
+            pendingProblem = "not a finite number";
+            return pos == from ? Math.min(from + 1, limit) : pos;
+        }
+        if (pos < limit && (b[pos] == 'e' || b[pos] == 'E')) {
+            pos++;
+            boolean negExp = false;
+            if (pos < limit && (b[pos] == '-' || b[pos] == '+')) {
+                negExp = b[pos] == '-';
+                pos++;
+            }
+            int e = 0;
+            int expDigits = 0;
+            while (pos < limit) {
+                int d = b[pos] - '0';
+                if (d < 0 || d > 9) {
+                    break;
+                }
+                if (e < 100_000) {
+                    e = e * 10 + d;
+                }
+                expDigits++;
+                pos++;
+            }
+            if (expDigits == 0) {
+                pendingProblem = "not a finite number";
+                return pos;
+            }
+            exponent += negExp ? -e : e;
+        }
+        float f;
+        if (mantissa == 0) {
+            f = 0f;
+        } else {
+            f = toFloat(mantissa, exponent, dropped, b, from, pos);
+        }
+        if (Float.isInfinite(f)) {
+            pendingProblem = "out of float range";
+            return pos;
+        }
+        pendingFloat = negative ? -f : f;
+        return pos;
+    }
+
+    /**
+     * The float nearest to the decimal {@code mantissa * 10^exponent} (plus the digits beyond the
+     * 18th, {@code dropped}), i.e. what {@link Float#parseFloat} returns for {@code b[from, to)}.
+     *
+     * <p>Computed in double: the mantissa (at most 18 digits, so converting it loses at most half a
+     * double ulp), times 10^exponent from a table (exact up to 10^22, else within half an ulp),
+     * one rounding for the product; the dropped digits change the value by less than one ulp. So
+     * the double is within 3 ulps of the exact value, and rounding it to float gives the right
+     * answer unless it lies within those 3 ulps of a point halfway between two floats: then, and
+     * for exponents outside the table or results outside the normal float range, the exact
+     * {@link Float#parseFloat} decides. When the double is exact or correctly rounded (no dropped
+     * digits, mantissa below 2^53, 0 <= exponent <= 22) only an exact halfway point is in doubt.
+     */
+    private static float toFloat(long mantissa, int exponent, boolean dropped, char[] b, int from, int to) {
+        if (exponent >= POWERS_OF_TEN.length || exponent <= -NEGATIVE_POWERS_OF_TEN.length) {
+            return Math.abs(Float.parseFloat(new String(b, from, to - from)));
+        }
+        double d = exponent >= 0 ? mantissa * POWERS_OF_TEN[exponent] : mantissa * NEGATIVE_POWERS_OF_TEN[-exponent];
+        boolean correctlyRounded = !dropped && mantissa < (1L << 53) && exponent >= 0 && exponent <= 22;
+        long distance = Math.abs((Double.doubleToRawLongBits(d) & BELOW_FLOAT) - FLOAT_MIDPOINT);
+        if (distance <= (correctlyRounded ? 0 : 16) || d < Float.MIN_NORMAL || d > Float.MAX_VALUE) {
+            return Math.abs(Float.parseFloat(new String(b, from, to - from)));
+        }
+        return (float) d;
+    }
+
+    /** Scans an int at {@code b[from]} (see {@link #scanFloat}). */
+    private int scanInt(char[] b, int from, int limit) {
+        int pos = from;
+        boolean negative = false;
+        char c = b[pos];
+        if (c == '-' || c == '+') {
+            negative = c == '-';
+            pos++;
+        }
+        long value = 0;
+        int digits = 0;
+        boolean tooLarge = false;
+        while (pos < limit) {
+            int d = b[pos] - '0';
+            if (d < 0 || d > 9) {
+                break;
+            }
+            if (!tooLarge) {
+                value = value * 10 + d;
+                tooLarge = value > Integer.MAX_VALUE + 1L;
+            }
+            digits++;
+            pos++;
+        }
+        if (digits == 0) {
+            pendingProblem = "not an integer";
+            return pos == from ? Math.min(from + 1, limit) : pos;
+        }
+        long v = negative ? -value : value;
+        if (tooLarge || v > Integer.MAX_VALUE) {
+            pendingProblem = "integer out of range";
+            return pos;
+        }
+        pendingInt = (int) v;
+        return pos;
+    }
+
+    private void bad(char[] b, int from, int to, String reason) {
+        if (badIndex < 0) {
+            badIndex = size;
+            badToken = new String(b, from, Math.min(to - from, 40));
+            badReason = reason;
+        }
+    }
+
+    private void add(float value) {
+        if (size == floatValues.length) {
+            floatValues = Arrays.copyOf(floatValues, size * 2);
+        }
+        floatValues[size++] = value;
+    }
+
+    private void add(int value) {
+        if (floats) {
+            add((float) value);
+            return;
+        }
+        if (size == intValues.length) {
+            intValues = Arrays.copyOf(intValues, size * 2);
+        }
+        intValues[size++] = value;
+    }
+}
