@@ -109,6 +109,8 @@ final class SafeXmlReader {
                 // still refuse; every parser we ship on supports the property.
             }
             reader.parse(new InputSource(in));
+        } catch (DocumentComplete done) {
+            // the root element closed: the tree is complete
         } catch (Refusal r) {
             throw r.exception;
         } catch (SAXParseException e) {
@@ -149,6 +151,21 @@ final class SafeXmlReader {
                     + " external entities)";
         }
         return "malformed XML: " + m;
+    }
+
+    /** Ends parsing once the root element is closed; shared, without a stack trace (it is no error). */
+    private static final class DocumentComplete extends SAXException {
+        private static final long serialVersionUID = 1L;
+        static final DocumentComplete INSTANCE = new DocumentComplete();
+
+        private DocumentComplete() {
+            super("document complete");
+        }
+
+        @Override
+        public synchronized Throwable fillInStackTrace() {
+            return this;
+        }
     }
 
     /** A refusal raised inside the SAX callbacks, carrying the exception to rethrow. */
@@ -263,7 +280,7 @@ final class SafeXmlReader {
         }
 
         @Override
-        public void endElement(String uri, String localName, String qName) {
+        public void endElement(String uri, String localName, String qName) throws SAXException {
             depth--;
             NumberScanner numbers = stack[depth].numbers();
             if (numbers != null) {
@@ -276,6 +293,12 @@ final class SafeXmlReader {
                 }
             }
             stack[depth] = null;
+            if (depth == 0) {
+                // The document is complete. Stop here: after the root only comments and processing
+                // instructions may follow, and the JDK parser detects the end of the input by
+                // throwing and catching an exception, which costs as much as importing a small file.
+                throw DocumentComplete.INSTANCE;
+            }
         }
 
         // ---- refusals: DTDs and every kind of entity

@@ -76,6 +76,17 @@ class BadInputTest {
     // ---------------------------------------------------------------------------- malformed XML
 
     @Test
+    void anythingAfterTheRootElementIsIgnored() {
+        // Parsing stops when </COLLADA> closes the document (the JDK parser would otherwise pay
+        // for an exception at the end of every input): trailing comments, junk or even a second
+        // root change nothing.
+        String xml = QuadFixture.text().trim() + "\n<!-- c --> junk <COLLADA><unclosed>";
+        Model m = Fixtures.read("trailing.dae", xml);
+        assertEquals(2, m.meshes().get(0).triangleCount());
+        assertEquals(0, m.warnings().size(), () -> m.warnings().toString());
+    }
+
+    @Test
     void unclosedTagNamesTheElementLeftOpen() {
         // </asset> removed: the parser stops at </COLLADA> while <asset> is still open.
         ColladaException e = refused("unclosed.dae", with("</asset>", ""), "inside <asset> at line",
