@@ -38,7 +38,14 @@ public final class SkinlabCommand implements Runnable {
             commandLine.getErr().println("skinlab: internal error: " + oneLine(String.valueOf(e)));
             return ExitCodes.INTERNAL;
         });
-        int status = cl.execute(args);
+        int status;
+        try {
+            status = cl.execute(args);
+        } catch (OutOfMemoryError e) {
+            // Errors bypass picocli's exception handler; this one is worth a clear line.
+            err.println("skinlab: out of memory; give Java more with SKINLAB_OPTS=-Xmx4g (or JAVA_OPTS)");
+            status = ExitCodes.INTERNAL;
+        }
         out.flush();
         err.flush();
         return status;

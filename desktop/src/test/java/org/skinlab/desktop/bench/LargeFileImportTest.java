@@ -113,4 +113,19 @@ class LargeFileImportTest {
                 mesh.get("triangles").intValue(), mesh.get("joints").intValue(), mesh.get("maxInfluences").intValue()));
         assertEquals(8, root.get("clips").get(0).get("channels").intValue());
     }
+
+    @Test
+    void tooLittleHeapIsOneLineAndExitStatusOneNotAStackTrace() throws Exception {
+        // 48 MB cannot hold this file's model: the command must say so on one line.
+        Path java = Path.of(System.getProperty("java.home"), "bin", "java");
+        Path err = dir.resolve("oom.err");
+        Process p = new ProcessBuilder(java.toString(), "-Xmx48m", "-cp", classPath(),
+                SkinlabMain.class.getName(), "inspect", file.toString())
+                .redirectOutput(ProcessBuilder.Redirect.DISCARD).redirectError(err.toFile()).start();
+        assertTrue(p.waitFor(120, TimeUnit.SECONDS), "inspect did not finish in 120 s");
+        List<String> lines = Files.readAllLines(err, StandardCharsets.UTF_8);
+        assertEquals(1, p.exitValue(), () -> String.join("\n", lines));
+        assertEquals(1, lines.size(), () -> String.join("\n", lines));
+        assertTrue(lines.get(0).startsWith("skinlab: out of memory"), lines.get(0));
+    }
 }
