@@ -258,42 +258,31 @@ final class NumberScanner {
         int exponent = 0;         // decimal exponent applied to the mantissa
         boolean dropped = false;  // digits beyond 18 were dropped: not exact any more
         int digits = 0;
+        boolean point = false;    // the decimal point has been seen
         while (pos < limit) {
             int d = b[pos] - '0';
-            if (d < 0 || d > 9) {
-                break;
-            }
-            digits++;
-            if (significant < 18) {
-                if (mantissa != 0 || d != 0) {
-                    mantissa = mantissa * 10 + d;
-                    significant++;
-                }
-            } else {
-                exponent++;
-                dropped |= d != 0;
-            }
-            pos++;
-        }
-        if (pos < limit && b[pos] == '.') {
-            pos++;
-            while (pos < limit) {
-                int d = b[pos] - '0';
-                if (d < 0 || d > 9) {
-                    break;
-                }
+            if (d >= 0 && d <= 9) {
                 digits++;
                 if (significant < 18) {
                     if (mantissa != 0 || d != 0) {
                         mantissa = mantissa * 10 + d;
                         significant++;
                     }
-                    exponent--;
+                    if (point) {
+                        exponent--;
+                    }
                 } else {
+                    if (!point) {
+                        exponent++;
+                    }
                     dropped |= d != 0;
                 }
-                pos++;
+            } else if (b[pos] == '.' && !point) {
+                point = true;
+            } else {
+                break;
             }
+            pos++;
         }
         if (digits == 0) {
             pendingProblem = "not a finite number";
