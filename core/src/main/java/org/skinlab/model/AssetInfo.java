@@ -1,9 +1,11 @@
 package org.skinlab.model;
 
+import org.joml.Matrix4f;
+
 /**
- * What {@code <asset>} says about the document's frame. Recorded as written: converting to the
- * app's frame (up axis, metres) is a separate, explicit step, so the model stays comparable to
- * other tools that read the same file.
+ * What {@code <asset>} says about the document's frame. Recorded as written: the model stays in
+ * the document's own frame and units, comparable to other tools that read the same file, and
+ * converting to the app's frame is a separate, explicit step ({@link #toYUpMeters}).
  *
  * @param upAxis        the up axis, {@link UpAxis#Y_UP} when not given
  * @param unitMeter     length of one document unit in metres, 1.0 when not given
@@ -12,4 +14,25 @@ package org.skinlab.model;
  * @param present       false when the file has no {@code <asset>} at all (tolerated, with a warning)
  */
 public record AssetInfo(UpAxis upAxis, double unitMeter, String unitName, String authoringTool, boolean present) {
+    /**
+     * The transform from the document's frame to a right-handed Y-up frame in metres, written
+     * into {@code dest}. COLLADA 1.4.1 ({@code up_axis}) names the axes of each convention as
+     * (right, up, in): Y_UP (+X, +Y, +Z), Z_UP (+X, +Z, -Y), X_UP (-Y, +X, +Z); the result maps
+     * them to (+X, +Y, +Z) and scales by {@link #unitMeter()}. Z_UP is a -90 degree rotation about
+     * X, X_UP a +90 degree rotation about Z.
+     */
+    public Matrix4f toYUpMeters(Matrix4f dest) {
+        dest.identity();
+        switch (upAxis) {
+            case Z_UP:
+                dest.rotateX((float) (-Math.PI / 2));
+                break;
+            case X_UP:
+                dest.rotateZ((float) (Math.PI / 2));
+                break;
+            default:
+                break;
+        }
+        return dest.scaleLocal((float) unitMeter);
+    }
 }
