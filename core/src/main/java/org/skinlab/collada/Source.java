@@ -51,6 +51,14 @@ final class Source {
                     break;
             }
         }
+        XmlElement technique = source.child("technique_common");
+        XmlElement accessor = technique == null ? null : technique.child("accessor");
+        if (accessor != null) {
+            // Usually the source's own array, but the specification lets an accessor read any
+            // array (several sources may share one); only arrays in this file are followed.
+            array = ctx.resolve(accessor, "source", "float_array", "int_array", "Name_array", "IDREF_array",
+                    "SIDREF_array", "bool_array");
+        }
         if (array == null) {
             throw ctx.error(source, "has no data array (float_array, int_array, Name_array or IDREF_array)");
         }
@@ -77,16 +85,9 @@ final class Source {
         }
         boolean idrefs = array.name().equals("IDREF_array");
 
-        XmlElement technique = source.child("technique_common");
-        XmlElement accessor = technique == null ? null : technique.child("accessor");
         if (accessor == null) {
             ctx.warn(source, "no <technique_common><accessor>; every value read as one element");
             return new Source(source, floats, ints, names, idrefs, length, 1, 0, new int[] {0});
-        }
-        XmlElement target = ctx.resolve(accessor, "source", array.name());
-        if (target != array) {
-            throw ctx.error(accessor, "source=\"" + accessor.attr("source")
-                    + "\" must refer to the array of its own <source>");
         }
         int count = ctx.count(accessor, "count", -1);
         if (count < 0) {

@@ -161,9 +161,24 @@ class BadInputTest {
     }
 
     @Test
-    void accessorReadingAnotherSourcesArrayIsRefused() {
-        refused("accessor-other.dae", with("<accessor source=\"#quad-nrm-array\"", "<accessor source=\"#quad-pos-array\""),
-                "<accessor> in <source id=\"quad-nrm\">", "must refer to the array of its own <source>");
+    void accessorMayReadAnotherSourcesArray() {
+        // COLLADA lets an accessor read any array: here the normals' accessor reads the
+        // positions' array, so the normals are the first position values.
+        Model m = Fixtures.read("accessor-other.dae",
+                with("<accessor source=\"#quad-nrm-array\"", "<accessor source=\"#quad-pos-array\""));
+        Mesh quad = m.meshes().get(0);
+        float[] positions = quad.positions();
+        float[] normals = quad.normals();
+        for (int c = 0; c < 3; c++) {
+            assertEquals(positions[c], normals[c], 0f);
+        }
+        assertEquals(0, m.warnings().size(), () -> m.warnings().toString());
+    }
+
+    @Test
+    void accessorReadingSomethingThatIsNoArrayIsRefused() {
+        refused("accessor-node.dae", with("<accessor source=\"#quad-nrm-array\"", "<accessor source=\"#quad-node\""),
+                "<accessor> in <source id=\"quad-nrm\">", "refers to a <node>");
     }
 
     @Test
