@@ -5,7 +5,7 @@ package org.skinlab.collada;
  * ({@code float_array}, {@code int_array}, {@code <p>}, {@code <v>}, {@code <matrix>}, ...).
  *
  * <p>Elements that only ever hold numbers are scanned while the XML is parsed
- * ({@link SafeXmlReader#isNumeric}, {@link NumberScanner}); any other element is scanned from its
+ * (by {@link SafeXmlReader}, with a {@link NumberScanner}); any other element is scanned from its
  * text here. Either way the first bad token, or a count that disagrees with the values, becomes a
  * {@link ColladaException} naming the element.
  */

@@ -360,13 +360,9 @@ final class SafeXmlReader {
     private static final int INTS = 2;
 
     /**
-     * Whether COLLADA elements of this name only ever hold a list of numbers, which are then
-     * parsed while the XML is read instead of being kept as text.
+     * Whether COLLADA elements of this name only ever hold a list of numbers (and which kind):
+     * those are parsed while the XML is read instead of being kept as text.
      */
-    static boolean isNumeric(String elementName) {
-        return numericKind(elementName) != NOT_NUMERIC;
-    }
-
     private static int numericKind(String name) {
         switch (name) {
             case "float_array":

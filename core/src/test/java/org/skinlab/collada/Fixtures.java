@@ -48,14 +48,6 @@ public final class Fixtures {
         return assertThrows(ColladaException.class, () -> ColladaImporter.read(new ByteArrayInputStream(bytes), name));
     }
 
-    /** Asserts that importing {@code src/test/resources/fixtures/<name>} fails. */
-    public static ColladaException resourceError(String name) {
-        return assertThrows(ColladaException.class, () -> {
-            try (InputStream in = open(name)) {
-                ColladaImporter.read(in, name);
-            }
-        });
-    }
 
     private static InputStream open(String name) {
         InputStream in = Fixtures.class.getResourceAsStream("/fixtures/" + name);

@@ -24,6 +24,13 @@ final class Cli {
         return new Cli(status, out.toString(), err.toString());
     }
 
+    /** The field names of a JSON object, in order. */
+    static java.util.List<String> keys(com.fasterxml.jackson.databind.JsonNode object) {
+        java.util.List<String> keys = new java.util.ArrayList<>();
+        object.fieldNames().forEachRemaining(keys::add);
+        return keys;
+    }
+
     /** The lines printed on stderr. */
     String[] errLines() {
         return err.lines().toArray(String[]::new);

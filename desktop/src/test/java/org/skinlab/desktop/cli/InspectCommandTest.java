@@ -3,8 +3,6 @@ package org.skinlab.desktop.cli;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.util.ArrayList;
-import java.util.Iterator;
 import java.util.List;
 
 import com.fasterxml.jackson.databind.JsonNode;
@@ -19,14 +17,6 @@ import org.junit.jupiter.api.Test;
  * one-second walk; 20 channels: one per joint and one for the armature node).
  */
 class InspectCommandTest {
-    private static List<String> keys(JsonNode object) {
-        List<String> keys = new ArrayList<>();
-        for (Iterator<String> it = object.fieldNames(); it.hasNext();) {
-            keys.add(it.next());
-        }
-        return keys;
-    }
-
     @Test
     void jsonHasTheContractKeysInOrderAndTheAssetsCounts() throws Exception {
         String file = Cli.defaultAsset().toString();
@@ -37,7 +27,7 @@ class InspectCommandTest {
         assertTrue(r.out.endsWith("\n") && r.out.indexOf('\n') == r.out.length() - 1, r::toString);
 
         JsonNode root = new ObjectMapper().readTree(r.out);
-        assertEquals(List.of("file", "upAxis", "unitMeter", "meshes", "clips", "warnings", "loadMillis"), keys(root));
+        assertEquals(List.of("file", "upAxis", "unitMeter", "meshes", "clips", "warnings", "loadMillis"), Cli.keys(root));
         assertEquals(file, root.get("file").asText());
         assertEquals("Z_UP", root.get("upAxis").asText());
         assertTrue(root.get("unitMeter").isDouble());
@@ -46,7 +36,7 @@ class InspectCommandTest {
         assertEquals(1, root.get("meshes").size());
         JsonNode mesh = root.get("meshes").get(0);
         assertEquals(List.of("geometry", "name", "positions", "triangles", "skinned", "joints", "maxInfluences"),
-                keys(mesh));
+                Cli.keys(mesh));
         assertEquals("Humanoid-mesh", mesh.get("geometry").asText());
         assertEquals("Humanoid", mesh.get("name").asText());
         assertEquals(951, mesh.get("positions").intValue());
@@ -58,7 +48,7 @@ class InspectCommandTest {
 
         assertEquals(1, root.get("clips").size());
         JsonNode clip = root.get("clips").get(0);
-        assertEquals(List.of("name", "duration", "channels"), keys(clip));
+        assertEquals(List.of("name", "duration", "channels"), Cli.keys(clip));
         assertEquals("default", clip.get("name").asText());
         assertEquals(1.0, clip.get("duration").doubleValue(), 0.0);
         assertEquals(20, clip.get("channels").intValue());

@@ -5,8 +5,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
-import java.util.Iterator;
 import java.util.List;
 
 import com.fasterxml.jackson.databind.JsonNode;
@@ -16,14 +14,6 @@ import org.junit.jupiter.api.Test;
 
 /** {@code skinlab bench parse FILE --json}: the keys ParseBenchCommand writes, with sane values. */
 class ParseBenchCommandTest {
-    private static List<String> keys(JsonNode object) {
-        List<String> keys = new ArrayList<>();
-        for (Iterator<String> it = object.fieldNames(); it.hasNext();) {
-            keys.add(it.next());
-        }
-        return keys;
-    }
-
     @Test
     void jsonReportsOneFileWithItsSizeTrianglesAndTimes() throws Exception {
         Path file = Cli.defaultAsset();
@@ -33,13 +23,13 @@ class ParseBenchCommandTest {
         assertTrue(r.out.indexOf('\n') == r.out.length() - 1, r::toString);
 
         JsonNode root = new ObjectMapper().readTree(r.out);
-        assertEquals(List.of("benchmark", "java", "cores", "files"), keys(root));
+        assertEquals(List.of("benchmark", "java", "cores", "files"), Cli.keys(root));
         assertEquals("parse", root.get("benchmark").asText());
         assertEquals(System.getProperty("java.version"), root.get("java").asText());
         assertEquals(Runtime.getRuntime().availableProcessors(), root.get("cores").intValue());
         assertEquals(1, root.get("files").size());
         JsonNode f = root.get("files").get(0);
-        assertEquals(List.of("file", "bytes", "triangles", "runs", "minMillis", "medianMillis", "mbPerSecond"), keys(f));
+        assertEquals(List.of("file", "bytes", "triangles", "runs", "minMillis", "medianMillis", "mbPerSecond"), Cli.keys(f));
         assertEquals("humanoid-walk.dae", f.get("file").asText());
         assertEquals(Files.size(file), f.get("bytes").longValue());
         assertEquals(1896, f.get("triangles").longValue());
