@@ -1,0 +1,255 @@
+package org.skinlab.animation;
+
+import org.joml.Matrix3d;
+import org.joml.Matrix4f;
+import org.joml.Matrix4fc;
+import org.joml.Quaterniond;
+import org.joml.Quaternionf;
+import org.joml.Quaternionfc;
+import org.joml.Vector3f;
+import org.joml.Vector3fc;
+
+/**
+ * Conversions between matrices, quaternions and dual quaternions, and rotation interpolation
+ * (the thesis' {@code AnimationHelper}). Every method writes into a caller-supplied {@code dest}
+ * and allocates nothing except where noted, so it can run per frame.
+ *
+ * <p>Matrices follow JOML: column vectors, {@code p' = M p}. Quaternions are (x, y, z, w).
+ */
+public final class AnimationHelper {
+    /** Squared column-length deviation below which a matrix counts as unscaled (as Blender). */
+    static final float SCALE_EPSILON_SQ = 1e-8f;
+
+    private AnimationHelper() {
+    }
+
+    /**
+     * The rotation of the upper 3x3 of {@code m}, robust to scale, shear and float noise: the
+     * orthogonal factor of its polar decomposition (the rotation nearest to it in the Frobenius
+     * norm), for a reflection (negative determinant) that of {@code -m}. A singular matrix (a
+     * zero scale) falls back to Gram-Schmidt on its non-zero columns; an all-zero one gives the
+     * identity. Allocates a few JOML temporaries; meant for offline work and per-joint (not
+     * per-vertex) use.
+     */
+    public static Quaternionf rotationOf(Matrix4fc m, Quaternionf dest) {
+        Matrix3d a = new Matrix3d(m.m00(), m.m01(), m.m02(), m.m10(), m.m11(), m.m12(), m.m20(), m.m21(), m.m22());
+        double det = a.determinant();
+        if (det < 0) {
+            a.scale(-1);
+            det = -det;
+        }
+        Matrix3d r = polarRotation(a, det);
+        Quaterniond q = new Quaterniond().setFromNormalized(r);
+        return dest.set((float) q.x, (float) q.y, (float) q.z, (float) q.w).normalize();
+    }
+
+    /**
+     * Orthogonal polar factor by Newton's iteration {@code X <- (g X + X^-T / g) / 2} with Higham's
+     * scaling g = sqrt(|X^-1|_F / |X|_F) (Higham 1986, "Computing the polar decomposition"): it
+     * converges quadratically from any non-singular start, so a handful of steps reach double
+     * precision even for scales of 1e-3 or 1e3.
+     */
+    private static Matrix3d polarRotation(Matrix3d a, double det) {
+        double norm = frobenius(a);
+        if (!(norm > 0) || !(det > 1e-12 * norm * norm * norm)) {
+            return gramSchmidt(a);
+        }
+        Matrix3d x = new Matrix3d(a);
+        Matrix3d inv = new Matrix3d();
+        for (int i = 0; i < 30; i++) {
+            x.invert(inv).transpose();
+            double g = Math.sqrt(frobenius(inv) / frobenius(x));
+            double change = 0;
+            for (int c = 0; c < 3; c++) {
+                for (int r = 0; r < 3; r++) {
+                    double next = 0.5 * (g * x.get(c, r) + inv.get(c, r) / g);
+                    change = Math.max(change, Math.abs(next - x.get(c, r)));
+                    x.set(c, r, next);
+                }
+            }
+            if (change < 1e-14) {
+                break;
+            }
+        }
+        return x;
+    }
+
+    private static double frobenius(Matrix3d m) {
+        return Math.sqrt(m.m00 * m.m00 + m.m01 * m.m01 + m.m02 * m.m02 + m.m10 * m.m10 + m.m11 * m.m11
+                + m.m12 * m.m12 + m.m20 * m.m20 + m.m21 * m.m21 + m.m22 * m.m22);
+    }
+
+    /** Rotation from the usable columns of a singular matrix: keep what directions it still has. */
+    private static Matrix3d gramSchmidt(Matrix3d a) {
+        double[][] c = {{a.m00, a.m01, a.m02}, {a.m10, a.m11, a.m12}, {a.m20, a.m21, a.m22}};
+        double[][] basis = new double[3][];
+        int found = 0;
+        for (int i = 0; i < 3 && found < 2; i++) {
+            double[] v = c[i].clone();
+            for (int k = 0; k < found; k++) {
+                double d = dot(v, basis[k]);
+                for (int j = 0; j < 3; j++) {
+                    v[j] -= d * basis[k][j];
+                }
+            }
+            double len = Math.sqrt(dot(v, v));
+            if (len > 1e-9) {
+                for (int j = 0; j < 3; j++) {
+                    v[j] /= len;
+                }
+                basis[found++] = v;
+            }
+        }
+        if (found == 0) {
+            return new Matrix3d();
+        }
+        if (found == 1) {
+            // Any unit vector not parallel to the first completes the frame.
+            double[] e = Math.abs(basis[0][0]) < 0.9 ? new double[] {1, 0, 0} : new double[] {0, 1, 0};
+            double d = dot(e, basis[0]);
+            double[] v = {e[0] - d * basis[0][0], e[1] - d * basis[0][1], e[2] - d * basis[0][2]};
+            double len = Math.sqrt(dot(v, v));
+            basis[1] = new double[] {v[0] / len, v[1] / len, v[2] / len};
+        }
+        double[] u = basis[0];
+        double[] v = basis[1];
+        double[] w = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+        // The two kept directions may be columns 0 and 2 etc.; any right-handed frame holding them
+        // is as good, since the matrix says nothing about the lost axis.
+        return new Matrix3d(u[0], u[1], u[2], v[0], v[1], v[2], w[0], w[1], w[2]);
+    }
+
+    private static double dot(double[] a, double[] b) {
+        return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    }
+
+    /**
+     * Splits an affine matrix into translation, rotation and per-axis scale so that
+     * {@code m = T * R * S} ({@link #compose}). The rotation is {@link #rotationOf}; the scale is
+     * the diagonal of {@code R^T M}, so column noise does not leak into it and a reflection shows
+     * as negative scales. Shear has no place in T*R*S and is dropped.
+     */
+    public static void decompose(Matrix4fc m, Vector3f translation, Quaternionf rotation, Vector3f scale) {
+        m.getTranslation(translation);
+        rotationOf(m, rotation);
+        // Columns of R from the unit quaternion, dotted with the columns of M.
+        float x = rotation.x();
+        float y = rotation.y();
+        float z = rotation.z();
+        float w = rotation.w();
+        float r00 = 1 - 2 * (y * y + z * z);
+        float r10 = 2 * (x * y + w * z);
+        float r20 = 2 * (x * z - w * y);
+        float r01 = 2 * (x * y - w * z);
+        float r11 = 1 - 2 * (x * x + z * z);
+        float r21 = 2 * (y * z + w * x);
+        float r02 = 2 * (x * z + w * y);
+        float r12 = 2 * (y * z - w * x);
+        float r22 = 1 - 2 * (x * x + y * y);
+        scale.set(r00 * m.m00() + r10 * m.m01() + r20 * m.m02(),
+                r01 * m.m10() + r11 * m.m11() + r21 * m.m12(),
+                r02 * m.m20() + r12 * m.m21() + r22 * m.m22());
+    }
+
+    /**
+     * {@code dest = T * R * S}. The rotation uses the homogeneous form (entries like
+     * {@code w^2 + x^2 - y^2 - z^2}), which equals the usual one for unit quaternions and scales
+     * by {@code |q|^2} otherwise, so an un-normalised {@link RotationInterpolation#LERP} result
+     * shows as the shrinking it is rather than as a shear.
+     */
+    public static Matrix4f compose(Vector3fc translation, Quaternionfc rotation, Vector3fc scale, Matrix4f dest) {
+        rotationMatrix(rotation, dest);
+        float sx = scale.x();
+        float sy = scale.y();
+        float sz = scale.z();
+        return dest.set(dest.m00() * sx, dest.m01() * sx, dest.m02() * sx, 0f,
+                dest.m10() * sy, dest.m11() * sy, dest.m12() * sy, 0f,
+                dest.m20() * sz, dest.m21() * sz, dest.m22() * sz, 0f,
+                translation.x(), translation.y(), translation.z(), 1f);
+    }
+
+    /** The rotation matrix of {@code q} in homogeneous form: {@code |q|^2} times that of q/|q|. */
+    public static Matrix4f rotationMatrix(Quaternionfc q, Matrix4f dest) {
+        float x = q.x();
+        float y = q.y();
+        float z = q.z();
+        float w = q.w();
+        float ww = w * w;
+        float xx = x * x;
+        float yy = y * y;
+        float zz = z * z;
+        return dest.set(ww + xx - yy - zz, 2 * (x * y + w * z), 2 * (x * z - w * y), 0f,
+                2 * (x * y - w * z), ww - xx + yy - zz, 2 * (y * z + w * x), 0f,
+                2 * (x * z + w * y), 2 * (y * z - w * x), ww - xx - yy + zz, 0f,
+                0f, 0f, 0f, 1f);
+    }
+
+    /** Interpolates from {@code a} (t = 0) to {@code b} (t = 1) the way {@code mode} says. */
+    public static Quaternionf interpolate(RotationInterpolation mode, Quaternionfc a, Quaternionfc b, float t,
+            Quaternionf dest) {
+        switch (mode) {
+            case LERP:
+                return lerp(a, b, t, dest);
+            case SLERP:
+                return slerp(a, b, t, dest);
+            case NLERP:
+                return nlerp(a, b, t, dest);
+            default:
+                throw new IllegalArgumentException(String.valueOf(mode));
+        }
+    }
+
+    /** Component-wise blend along the shortest arc, not renormalised. */
+    public static Quaternionf lerp(Quaternionfc a, Quaternionfc b, float t, Quaternionf dest) {
+        float s = 1 - t;
+        // copySign rather than a branch: same result, and the sign of a dot of exactly 0 (90
+        // degrees apart either way) stays deterministic.
+        float u = Math.copySign(t, a.x() * b.x() + a.y() * b.y() + a.z() * b.z() + a.w() * b.w());
+        return dest.set(s * a.x() + u * b.x(), s * a.y() + u * b.y(), s * a.z() + u * b.z(), s * a.w() + u * b.w());
+    }
+
+    /** {@link #lerp}, then normalised. */
+    public static Quaternionf nlerp(Quaternionfc a, Quaternionfc b, float t, Quaternionf dest) {
+        lerp(a, b, t, dest);
+        float len = (float) Math.sqrt(dest.lengthSquared());
+        return len > 0 ? dest.div(len) : dest.set(a);
+    }
+
+    /**
+     * Spherical interpolation along the shortest arc: {@code (sin((1-t)O) a + sin(tO) b) / sin O}
+     * with O the angle between a and b (Shoemake 1985). Falls back to {@link #nlerp} when the keys
+     * are within ~0.03 degrees, where sin O loses its precision.
+     */
+    public static Quaternionf slerp(Quaternionfc a, Quaternionfc b, float t, Quaternionf dest) {
+        double dot = (double) a.x() * b.x() + (double) a.y() * b.y() + (double) a.z() * b.z() + (double) a.w() * b.w();
+        double sign = dot < 0 ? -1 : 1;
+        double cos = Math.min(1.0, Math.abs(dot));
+        if (cos > 0.9999999) {
+            return nlerp(a, b, t, dest);
+        }
+        double angle = Math.acos(cos);
+        double sin = Math.sin(angle);
+        double wa = Math.sin((1 - t) * angle) / sin;
+        double wb = sign * Math.sin(t * angle) / sin;
+        return dest.set((float) (wa * a.x() + wb * b.x()), (float) (wa * a.y() + wb * b.y()),
+                (float) (wa * a.z() + wb * b.z()), (float) (wa * a.w() + wb * b.w()));
+    }
+
+    /**
+     * The unit dual quaternion of the rigid part of {@code m}: rotation {@link #rotationOf}, and
+     * the translation column. Exact for rigid matrices; for others it keeps the rotation and
+     * translation and drops scale (use the two-phase split of the DQS skinner for those).
+     */
+    public static DualQuaternion toDualQuaternion(Matrix4fc m, DualQuaternion dest) {
+        Quaternionf r = rotationOf(m, new Quaternionf());
+        return dest.set(r.x, r.y, r.z, r.w, m.m30(), m.m31(), m.m32());
+    }
+
+    /** The rigid matrix of a dual quaternion (normalised first, so any non-zero one works). */
+    public static Matrix4f toMatrix(DualQuaternion dq, Matrix4f dest) {
+        DualQuaternion n = new DualQuaternion(dq).normalize();
+        Vector3f t = n.getTranslation(new Vector3f());
+        rotationMatrix(new Quaternionf(n.rx, n.ry, n.rz, n.rw), dest);
+        return dest.setTranslation(t);
+    }
+}

@@ -1,0 +1,247 @@
+package org.skinlab.animation;
+
+import org.joml.Quaternionfc;
+import org.joml.Vector3f;
+import org.joml.Vector3fc;
+
+/**
+ * A dual quaternion {@code q = r + e d} (e^2 = 0) with real part r and dual part d, in the JOML
+ * style: public fields, mutating methods that return {@code this}, an explicit {@code dest} where
+ * a result goes elsewhere, no allocation.
+ *
+ * <p>A unit dual quaternion is a rigid transform: rotation r (|r| = 1) followed by translation t,
+ * with {@code d = t r / 2} (t read as the pure quaternion (t, 0)); Kavan et al. 2008, "Geometric
+ * skinning with approximate dual quaternion blending", section 3.
+ */
+public final class DualQuaternion {
+    public float rx;
+    public float ry;
+    public float rz;
+    public float rw = 1f;
+    public float dx;
+    public float dy;
+    public float dz;
+    public float dw;
+
+    /** The identity transform. */
+    public DualQuaternion() {
+    }
+
+    public DualQuaternion(DualQuaternion other) {
+        set(other);
+    }
+
+    public DualQuaternion identity() {
+        rx = ry = rz = 0f;
+        rw = 1f;
+        dx = dy = dz = dw = 0f;
+        return this;
+    }
+
+    public DualQuaternion set(DualQuaternion o) {
+        rx = o.rx;
+        ry = o.ry;
+        rz = o.rz;
+        rw = o.rw;
+        dx = o.dx;
+        dy = o.dy;
+        dz = o.dz;
+        dw = o.dw;
+        return this;
+    }
+
+    /** Rotation {@code rotation} (unit) followed by translation {@code translation}. */
+    public DualQuaternion set(Quaternionfc rotation, Vector3fc translation) {
+        return set(rotation.x(), rotation.y(), rotation.z(), rotation.w(), translation.x(), translation.y(),
+                translation.z());
+    }
+
+    /** Rotation (x, y, z, w), unit, followed by translation (tx, ty, tz): d = (t, 0) r / 2. */
+    public DualQuaternion set(float x, float y, float z, float w, float tx, float ty, float tz) {
+        rx = x;
+        ry = y;
+        rz = z;
+        rw = w;
+        dx = 0.5f * (tx * w + ty * z - tz * y);
+        dy = 0.5f * (-tx * z + ty * w + tz * x);
+        dz = 0.5f * (tx * y - ty * x + tz * w);
+        dw = -0.5f * (tx * x + ty * y + tz * z);
+        return this;
+    }
+
+    /** The 8 components r.x, r.y, r.z, r.w, d.x, d.y, d.z, d.w from {@code src} at {@code offset}. */
+    public DualQuaternion set(float[] src, int offset) {
+        rx = src[offset];
+        ry = src[offset + 1];
+        rz = src[offset + 2];
+        rw = src[offset + 3];
+        dx = src[offset + 4];
+        dy = src[offset + 5];
+        dz = src[offset + 6];
+        dw = src[offset + 7];
+        return this;
+    }
+
+    /** Writes the 8 components in the order of {@link #set(float[], int)}. */
+    public float[] get(float[] dest, int offset) {
+        dest[offset] = rx;
+        dest[offset + 1] = ry;
+        dest[offset + 2] = rz;
+        dest[offset + 3] = rw;
+        dest[offset + 4] = dx;
+        dest[offset + 5] = dy;
+        dest[offset + 6] = dz;
+        dest[offset + 7] = dw;
+        return dest;
+    }
+
+    /** Dot product of the real parts: negative when the rotations lie in opposite hemispheres. */
+    public float realDot(DualQuaternion o) {
+        return rx * o.rx + ry * o.ry + rz * o.rz + rw * o.rw;
+    }
+
+    /** {@code this += weight * o}, the blending step of DLB (Kavan et al. 2008, eq. 6). */
+    public DualQuaternion addScaled(float weight, DualQuaternion o) {
+        rx += weight * o.rx;
+        ry += weight * o.ry;
+        rz += weight * o.rz;
+        rw += weight * o.rw;
+        dx += weight * o.dx;
+        dy += weight * o.dy;
+        dz += weight * o.dz;
+        dw += weight * o.dw;
+        return this;
+    }
+
+    /** Multiplies all eight components by {@code s}. */
+    public DualQuaternion scale(float s) {
+        rx *= s;
+        ry *= s;
+        rz *= s;
+        rw *= s;
+        dx *= s;
+        dy *= s;
+        dz *= s;
+        dw *= s;
+        return this;
+    }
+
+    /**
+     * Makes this a unit dual quaternion: divides both parts by |r| and removes the part of d
+     * along r, so that {@code r . d = 0} holds exactly (Kavan et al. 2008, section 3.1). The
+     * zero dual quaternion (blend weights cancelling out) becomes the identity.
+     */
+    public DualQuaternion normalize() {
+        float len = (float) Math.sqrt(rx * rx + ry * ry + rz * rz + rw * rw);
+        if (!(len > 0f)) {
+            return identity();
+        }
+        float inv = 1f / len;
+        rx *= inv;
+        ry *= inv;
+        rz *= inv;
+        rw *= inv;
+        dx *= inv;
+        dy *= inv;
+        dz *= inv;
+        dw *= inv;
+        float along = rx * dx + ry * dy + rz * dz + rw * dw;
+        dx -= along * rx;
+        dy -= along * ry;
+        dz -= along * rz;
+        dw -= along * rw;
+        return this;
+    }
+
+    /** {@code dest = this * o}: apply o first, then this. */
+    public DualQuaternion mul(DualQuaternion o, DualQuaternion dest) {
+        float nrx = rw * o.rx + rx * o.rw + ry * o.rz - rz * o.ry;
+        float nry = rw * o.ry - rx * o.rz + ry * o.rw + rz * o.rx;
+        float nrz = rw * o.rz + rx * o.ry - ry * o.rx + rz * o.rw;
+        float nrw = rw * o.rw - rx * o.rx - ry * o.ry - rz * o.rz;
+        // dual = r1 d2 + d1 r2
+        float ndx = rw * o.dx + rx * o.dw + ry * o.dz - rz * o.dy + dw * o.rx + dx * o.rw + dy * o.rz - dz * o.ry;
+        float ndy = rw * o.dy - rx * o.dz + ry * o.dw + rz * o.dx + dw * o.ry - dx * o.rz + dy * o.rw + dz * o.rx;
+        float ndz = rw * o.dz + rx * o.dy - ry * o.dx + rz * o.dw + dw * o.rz + dx * o.ry - dy * o.rx + dz * o.rw;
+        float ndw = rw * o.dw - rx * o.dx - ry * o.dy - rz * o.dz + dw * o.rw - dx * o.rx - dy * o.ry - dz * o.rz;
+        dest.rx = nrx;
+        dest.ry = nry;
+        dest.rz = nrz;
+        dest.rw = nrw;
+        dest.dx = ndx;
+        dest.dy = ndy;
+        dest.dz = ndz;
+        dest.dw = ndw;
+        return dest;
+    }
+
+    /** The inverse of a unit dual quaternion: its quaternion conjugate (both parts conjugated). */
+    public DualQuaternion conjugate() {
+        rx = -rx;
+        ry = -ry;
+        rz = -rz;
+        dx = -dx;
+        dy = -dy;
+        dz = -dz;
+        return this;
+    }
+
+    /**
+     * The translation of a unit dual quaternion: {@code t = 2 d r*}, written out as
+     * {@code 2 (r.w d.xyz - d.w r.xyz + r.xyz x d.xyz)}.
+     */
+    public Vector3f getTranslation(Vector3f dest) {
+        return dest.set(2 * (rw * dx - dw * rx + (ry * dz - rz * dy)),
+                2 * (rw * dy - dw * ry + (rz * dx - rx * dz)),
+                2 * (rw * dz - dw * rz + (rx * dy - ry * dx)));
+    }
+
+    /** Transforms a point of a unit dual quaternion: rotate by r, then translate. */
+    public Vector3f transformPosition(Vector3f v) {
+        float tx = 2 * (rw * dx - dw * rx + (ry * dz - rz * dy));
+        float ty = 2 * (rw * dy - dw * ry + (rz * dx - rx * dz));
+        float tz = 2 * (rw * dz - dw * rz + (rx * dy - ry * dx));
+        transformDirection(v);
+        return v.add(tx, ty, tz);
+    }
+
+    /** Rotates a direction by the real part (unit): {@code v + 2 r x (r x v + w v)}. */
+    public Vector3f transformDirection(Vector3f v) {
+        float cx = ry * v.z - rz * v.y + rw * v.x;
+        float cy = rz * v.x - rx * v.z + rw * v.y;
+        float cz = rx * v.y - ry * v.x + rw * v.z;
+        return v.set(v.x + 2 * (ry * cz - rz * cy), v.y + 2 * (rz * cx - rx * cz), v.z + 2 * (rx * cy - ry * cx));
+    }
+
+    /**
+     * Dual quaternion linear blending between this (t = 0) and {@code o} (t = 1) along the
+     * shortest arc, normalised: DLB of two transforms (Kavan et al. 2008, eq. 6).
+     */
+    public DualQuaternion blend(DualQuaternion o, float t, DualQuaternion dest) {
+        float wo = Math.copySign(t, realDot(o));
+        float wt = 1 - t;
+        dest.rx = wt * rx + wo * o.rx;
+        dest.ry = wt * ry + wo * o.ry;
+        dest.rz = wt * rz + wo * o.rz;
+        dest.rw = wt * rw + wo * o.rw;
+        dest.dx = wt * dx + wo * o.dx;
+        dest.dy = wt * dy + wo * o.dy;
+        dest.dz = wt * dz + wo * o.dz;
+        dest.dw = wt * dw + wo * o.dw;
+        return dest.normalize();
+    }
+
+    /** True when all components equal within {@code eps}, or all equal after negating o (same transform). */
+    public boolean equalsTransform(DualQuaternion o, float eps) {
+        float s = realDot(o) < 0 ? -1 : 1;
+        return Math.abs(rx - s * o.rx) <= eps && Math.abs(ry - s * o.ry) <= eps && Math.abs(rz - s * o.rz) <= eps
+                && Math.abs(rw - s * o.rw) <= eps && Math.abs(dx - s * o.dx) <= eps && Math.abs(dy - s * o.dy) <= eps
+                && Math.abs(dz - s * o.dz) <= eps && Math.abs(dw - s * o.dw) <= eps;
+    }
+
+    @Override
+    public String toString() {
+        return "DualQuaternion[r=(" + rx + ", " + ry + ", " + rz + ", " + rw + "), d=(" + dx + ", " + dy + ", " + dz
+                + ", " + dw + ")]";
+    }
+}

@@ -1,0 +1,209 @@
+package org.skinlab.skinning;
+
+import org.joml.Matrix4f;
+import org.joml.Quaternionf;
+import org.skinlab.animation.AnimationHelper;
+
+/**
+ * One frame's joint data for a skinner: the skinning matrices, and what DQS derives from them once
+ * per joint per frame (not per vertex, as the thesis did).
+ *
+ * <p>{@link #matrices()}: per joint a 3x4 affine matrix, row-major (r00 r01 r02 tx, r10 ...), the
+ * layout of the shared benchmark reference. Filled by
+ * {@link org.skinlab.animation.Skeleton#skinningMatrices}.
+ *
+ * <p><b>DQS with scale: the two-phase split.</b> A dual quaternion holds only rotation and
+ * translation. Following Kavan et al. 2008 (section 4, "scale and shear") each skinning matrix is
+ * split into {@code M = D * S}, D rigid and S a scale/shear; per vertex the S are blended
+ * linearly (unscaled joints contribute the identity), the D as dual quaternions, and the vertex
+ * goes through the blended S first. Where S is centred matters once blended; we centre it on the
+ * joint's bind frame, as Blender's armature modifier does with "preserve volume" (its
+ * {@code mat4_to_dquat} uses the bone's rest matrix), so that scaling a bone along its own axis
+ * scales the skin about that bone. Concretely, with {@code B} the rigid part of the joint's bind
+ * frame {@code inverse(INV_BIND * BIND_SHAPE)}: {@code X = M B} is the joint's posed frame;
+ * {@code X = [R|t] S0} with R the polar rotation of X; then {@code S = B S0 B^-1} and
+ * {@code D = [R|t] B^-1}. Joints whose posed frame has unit columns (within 1e-4, Blender's
+ * threshold) and no reflection skip the split: S is the identity and D = M.
+ */
+public final class JointPalette {
+    private final int joints;
+    private final float[] matrices;
+    private final float[] dualQuaternions;
+    private final float[] scales;
+    private final float[] pivots;
+    private final float[] pivotInverses;
+    private boolean scaled;
+
+    private final Matrix4f m = new Matrix4f();
+    private final Matrix4f x = new Matrix4f();
+    private final Matrix4f t = new Matrix4f();
+    private final Quaternionf q = new Quaternionf();
+
+    /**
+     * @param bindMatrices per joint 16 floats column-major, the matrix that takes bind-shape
+     *                     coordinates into the joint's frame (INV_BIND * BIND_SHAPE)
+     */
+    public JointPalette(float[] bindMatrices) {
+        if (bindMatrices.length % 16 != 0) {
+            throw new IllegalArgumentException("bind matrices need 16 floats each");
+        }
+        joints = bindMatrices.length / 16;
+        matrices = new float[12 * joints];
+        dualQuaternions = new float[8 * joints];
+        scales = new float[12 * joints];
+        pivots = new float[16 * joints];
+        pivotInverses = new float[16 * joints];
+        Matrix4f bind = new Matrix4f();
+        Matrix4f base = new Matrix4f();
+        Quaternionf r = new Quaternionf();
+        for (int j = 0; j < joints; j++) {
+            bind.set(bindMatrices, 16 * j);
+            bind.invert(base);
+            if (!base.isFinite()) {
+                base.identity(); // a singular bind matrix: the importer warned; centre scale at the origin
+            }
+            AnimationHelper.rotationOf(base, r);
+            Matrix4f pivot = new Matrix4f().translationRotate(base.m30(), base.m31(), base.m32(), r);
+            pivot.get(pivots, 16 * j);
+            pivot.invertAffine().get(pivotInverses, 16 * j);
+            setIdentity3x4(matrices, 12 * j);
+        }
+    }
+
+    /** A palette of {@code joints} joints whose bind frames are at the origin (e.g. benchmarks). */
+    public static JointPalette withoutBindFrames(int joints) {
+        float[] identities = new float[16 * joints];
+        for (int j = 0; j < joints; j++) {
+            identities[16 * j] = identities[16 * j + 5] = identities[16 * j + 10] = identities[16 * j + 15] = 1f;
+        }
+        return new JointPalette(identities);
+    }
+
+    public int jointCount() {
+        return joints;
+    }
+
+    /** Per joint 12 floats, row-major 3x4 skinning matrix. Written by the skeleton, read by skinners. */
+    public float[] matrices() {
+        return matrices;
+    }
+
+    /** Per joint 8 floats (real x y z w, dual x y z w): the rigid part D, after {@link #prepareDualQuaternions()}. */
+    public float[] dualQuaternions() {
+        return dualQuaternions;
+    }
+
+    /** Per joint 12 floats, row-major 3x4: the scale/shear part S, after {@link #prepareDualQuaternions()}. */
+    public float[] scales() {
+        return scales;
+    }
+
+    /** True when some joint has a scale part this frame (DQS must run its first phase). */
+    public boolean hasScale() {
+        return scaled;
+    }
+
+    /** Sets joint {@code j}'s skinning matrix from a JOML matrix (its affine part). */
+    public void setMatrix(int j, Matrix4f matrix) {
+        int o = 12 * j;
+        matrices[o] = matrix.m00();
+        matrices[o + 1] = matrix.m10();
+        matrices[o + 2] = matrix.m20();
+        matrices[o + 3] = matrix.m30();
+        matrices[o + 4] = matrix.m01();
+        matrices[o + 5] = matrix.m11();
+        matrices[o + 6] = matrix.m21();
+        matrices[o + 7] = matrix.m31();
+        matrices[o + 8] = matrix.m02();
+        matrices[o + 9] = matrix.m12();
+        matrices[o + 10] = matrix.m22();
+        matrices[o + 11] = matrix.m32();
+    }
+
+    /** Joint {@code j}'s skinning matrix as a JOML matrix. */
+    public Matrix4f getMatrix(int j, Matrix4f dest) {
+        int o = 12 * j;
+        float[] a = matrices;
+        return dest.set(a[o], a[o + 4], a[o + 8], 0f, a[o + 1], a[o + 5], a[o + 9], 0f,
+                a[o + 2], a[o + 6], a[o + 10], 0f, a[o + 3], a[o + 7], a[o + 11], 1f);
+    }
+
+    /**
+     * Derives each joint's dual quaternion (and scale part) from {@link #matrices()}: once per
+     * frame, before DQS skinning. See the class comment for the split.
+     */
+    public void prepareDualQuaternions() {
+        boolean anyScale = false;
+        for (int j = 0; j < joints; j++) {
+            getMatrix(j, m);
+            x.set(pivots, 16 * j);
+            m.mul(x, x); // X = M B: the posed joint frame
+            float l0 = x.m00() * x.m00() + x.m01() * x.m01() + x.m02() * x.m02() - 1f;
+            float l1 = x.m10() * x.m10() + x.m11() * x.m11() + x.m12() * x.m12() - 1f;
+            float l2 = x.m20() * x.m20() + x.m21() * x.m21() + x.m22() * x.m22() - 1f;
+            // Blender compares |size - 1|^2 with 1e-8; |len^2 - 1| ~ 2 |len - 1| near one.
+            boolean hasScale = l0 * l0 + l1 * l1 + l2 * l2 > 4 * 1e-8f || x.determinant3x3() < 0f;
+            if (!hasScale) {
+                // M is rigid to float noise: Shepperd's conversion, then renormalised.
+                q.setFromNormalized(m).normalize();
+                writeDualQuaternion(j, q, m.m30(), m.m31(), m.m32());
+                setIdentity3x4(scales, 12 * j);
+                continue;
+            }
+            anyScale = true;
+            AnimationHelper.rotationOf(x, q);
+            // [R|t]^-1 X = S0 (pure linear), then S = B S0 B^-1.
+            t.translationRotate(x.m30(), x.m31(), x.m32(), q).invertAffine().mul(x, t);
+            t.m30(0f).m31(0f).m32(0f);
+            x.set(pivots, 16 * j).mul(t, t);
+            x.set(pivotInverses, 16 * j);
+            t.mul(x);
+            writeScale(j, t);
+            // D = [R|t] B^-1 = M S^-1
+            t.invertAffine();
+            m.mul(t, t);
+            AnimationHelper.rotationOf(t, q);
+            writeDualQuaternion(j, q, t.m30(), t.m31(), t.m32());
+        }
+        scaled = anyScale;
+    }
+
+    private void writeDualQuaternion(int j, Quaternionf r, float tx, float ty, float tz) {
+        int o = 8 * j;
+        float x0 = r.x;
+        float y0 = r.y;
+        float z0 = r.z;
+        float w0 = r.w;
+        dualQuaternions[o] = x0;
+        dualQuaternions[o + 1] = y0;
+        dualQuaternions[o + 2] = z0;
+        dualQuaternions[o + 3] = w0;
+        dualQuaternions[o + 4] = 0.5f * (tx * w0 + ty * z0 - tz * y0);
+        dualQuaternions[o + 5] = 0.5f * (-tx * z0 + ty * w0 + tz * x0);
+        dualQuaternions[o + 6] = 0.5f * (tx * y0 - ty * x0 + tz * w0);
+        dualQuaternions[o + 7] = -0.5f * (tx * x0 + ty * y0 + tz * z0);
+    }
+
+    private void writeScale(int j, Matrix4f s) {
+        int o = 12 * j;
+        scales[o] = s.m00();
+        scales[o + 1] = s.m10();
+        scales[o + 2] = s.m20();
+        scales[o + 3] = s.m30();
+        scales[o + 4] = s.m01();
+        scales[o + 5] = s.m11();
+        scales[o + 6] = s.m21();
+        scales[o + 7] = s.m31();
+        scales[o + 8] = s.m02();
+        scales[o + 9] = s.m12();
+        scales[o + 10] = s.m22();
+        scales[o + 11] = s.m32();
+    }
+
+    private static void setIdentity3x4(float[] a, int o) {
+        java.util.Arrays.fill(a, o, o + 12, 0f);
+        a[o] = 1f;
+        a[o + 5] = 1f;
+        a[o + 10] = 1f;
+    }
+}

@@ -1,0 +1,156 @@
+package org.skinlab.skinning;
+
+/**
+ * Dual Quaternion Skinning in plain Java, any number of influences (Kavan et al. 2008, with the
+ * two-phase scale split of {@link JointPalette}). Per point:
+ * <ol>
+ * <li>if any joint is scaled this frame, {@code S = sum_k w_k S_(j_k)}, {@code p1 = S p}, the
+ *     normal by {@link NormalTransform} applied to S;</li>
+ * <li>{@code b = sum_k s_k w_k q_(j_k)} with {@code s_k = sign(q_(j_0) . q_(j_k))} on the real
+ *     parts, j_0 the dominant influence: antipodal quaternions (the same rotation) are flipped
+ *     onto the pivot's hemisphere so the blend takes the short way (Kavan et al. 2008, section
+ *     4). The sign comes from {@code Math.copySign}, not a branch: with joints in random order a
+ *     branch mispredicts about half the time;</li>
+ * <li>normalise b by its real part and apply it: rotate p1 and the normal, translate p1.</li>
+ * </ol>
+ * Since every flipped term has a non-negative dot with the pivot, |b.real| >= w_0 > 0: the
+ * normalisation never divides by zero.
+ */
+public final class ScalarDqsSkinner implements Skinner {
+    private final SkinnedGeometry geometry;
+    private final NormalTransform normals;
+    private final float[] positions;
+    private final float[] restNormals;
+    private final int[] joints;
+    private final float[] weights;
+    private final int width;
+
+    public ScalarDqsSkinner(SkinnedGeometry geometry, NormalTransform normals) {
+        this.geometry = geometry;
+        this.normals = normals;
+        this.positions = geometry.positionArray();
+        this.restNormals = geometry.normalArray();
+        this.joints = geometry.jointArray();
+        this.weights = geometry.weightArray();
+        this.width = geometry.influencesPerPoint();
+    }
+
+    @Override
+    public SkinningMethod method() {
+        return SkinningMethod.DQS;
+    }
+
+    @Override
+    public NormalTransform normalTransform() {
+        return normals;
+    }
+
+    @Override
+    public SkinnedGeometry geometry() {
+        return geometry;
+    }
+
+    @Override
+    public String implementation() {
+        return "scalar";
+    }
+
+    @Override
+    public void skin(JointPalette palette, float[] outPositions, float[] outNormals, int from, int to) {
+        final float[] dq = palette.dualQuaternions();
+        final float[] sc = palette.scales();
+        final boolean scaled = palette.hasScale();
+        final boolean exactNormals = normals == NormalTransform.INVERSE_TRANSPOSE;
+        for (int i = from; i < to; i++) {
+            int o = width * i;
+            int q = 8 * joints[o];
+            float w = weights[o];
+            float p0 = dq[q], p1 = dq[q + 1], p2 = dq[q + 2], p3 = dq[q + 3];
+            float r0 = w * p0, r1 = w * p1, r2 = w * p2, r3 = w * p3;
+            float d0 = w * dq[q + 4], d1 = w * dq[q + 5], d2 = w * dq[q + 6], d3 = w * dq[q + 7];
+            for (int k = 1; k < width; k++) {
+                q = 8 * joints[o + k];
+                w = Math.copySign(weights[o + k], p0 * dq[q] + p1 * dq[q + 1] + p2 * dq[q + 2] + p3 * dq[q + 3]);
+                r0 += w * dq[q];
+                r1 += w * dq[q + 1];
+                r2 += w * dq[q + 2];
+                r3 += w * dq[q + 3];
+                d0 += w * dq[q + 4];
+                d1 += w * dq[q + 5];
+                d2 += w * dq[q + 6];
+                d3 += w * dq[q + 7];
+            }
+            int v = 3 * i;
+            float px = positions[v], py = positions[v + 1], pz = positions[v + 2];
+            float nx = restNormals[v], ny = restNormals[v + 1], nz = restNormals[v + 2];
+            if (scaled) {
+                int s = 12 * joints[o];
+                w = weights[o];
+                float s0 = w * sc[s], s1 = w * sc[s + 1], s2 = w * sc[s + 2], s3 = w * sc[s + 3];
+                float s4 = w * sc[s + 4], s5 = w * sc[s + 5], s6 = w * sc[s + 6], s7 = w * sc[s + 7];
+                float s8 = w * sc[s + 8], s9 = w * sc[s + 9], s10 = w * sc[s + 10], s11 = w * sc[s + 11];
+                for (int k = 1; k < width; k++) {
+                    s = 12 * joints[o + k];
+                    w = weights[o + k];
+                    s0 += w * sc[s];
+                    s1 += w * sc[s + 1];
+                    s2 += w * sc[s + 2];
+                    s3 += w * sc[s + 3];
+                    s4 += w * sc[s + 4];
+                    s5 += w * sc[s + 5];
+                    s6 += w * sc[s + 6];
+                    s7 += w * sc[s + 7];
+                    s8 += w * sc[s + 8];
+                    s9 += w * sc[s + 9];
+                    s10 += w * sc[s + 10];
+                    s11 += w * sc[s + 11];
+                }
+                float qx = s0 * px + s1 * py + s2 * pz + s3;
+                float qy = s4 * px + s5 * py + s6 * pz + s7;
+                float qz = s8 * px + s9 * py + s10 * pz + s11;
+                px = qx;
+                py = qy;
+                pz = qz;
+                float mx;
+                float my;
+                float mz;
+                if (exactNormals) {
+                    mx = (s5 * s10 - s9 * s6) * nx + (s9 * s2 - s1 * s10) * ny + (s1 * s6 - s5 * s2) * nz;
+                    my = (s6 * s8 - s10 * s4) * nx + (s10 * s0 - s2 * s8) * ny + (s2 * s4 - s6 * s0) * nz;
+                    mz = (s4 * s9 - s8 * s5) * nx + (s8 * s1 - s0 * s9) * ny + (s0 * s5 - s4 * s1) * nz;
+                    float len2 = mx * mx + my * my + mz * mz;
+                    float inv = len2 > 0f ? (float) (1.0 / Math.sqrt(len2)) : 0f;
+                    mx *= inv;
+                    my *= inv;
+                    mz *= inv;
+                } else {
+                    mx = s0 * nx + s1 * ny + s2 * nz;
+                    my = s4 * nx + s5 * ny + s6 * nz;
+                    mz = s8 * nx + s9 * ny + s10 * nz;
+                }
+                nx = mx;
+                ny = my;
+                nz = mz;
+            }
+            float inv = (float) (1.0 / Math.sqrt(r0 * r0 + r1 * r1 + r2 * r2 + r3 * r3));
+            float rx = r0 * inv, ry = r1 * inv, rz = r2 * inv, rw = r3 * inv;
+            float dx = d0 * inv, dy = d1 * inv, dz = d2 * inv, dw = d3 * inv;
+            // t = 2 (rw d.xyz - dw r.xyz + r.xyz x d.xyz); v' = v + 2 r x (r x v + rw v) + t
+            float tx = 2 * (rw * dx - dw * rx + (ry * dz - rz * dy));
+            float ty = 2 * (rw * dy - dw * ry + (rz * dx - rx * dz));
+            float tz = 2 * (rw * dz - dw * rz + (rx * dy - ry * dx));
+            float cx = ry * pz - rz * py + rw * px;
+            float cy = rz * px - rx * pz + rw * py;
+            float cz = rx * py - ry * px + rw * pz;
+            outPositions[v] = px + 2 * (ry * cz - rz * cy) + tx;
+            outPositions[v + 1] = py + 2 * (rz * cx - rx * cz) + ty;
+            outPositions[v + 2] = pz + 2 * (rx * cy - ry * cx) + tz;
+            cx = ry * nz - rz * ny + rw * nx;
+            cy = rz * nx - rx * nz + rw * ny;
+            cz = rx * ny - ry * nx + rw * nz;
+            outNormals[v] = nx + 2 * (ry * cz - rz * cy);
+            outNormals[v + 1] = ny + 2 * (rz * cx - rx * cz);
+            outNormals[v + 2] = nz + 2 * (rx * cy - ry * cx);
+        }
+    }
+}

@@ -1,0 +1,98 @@
+package org.skinlab.skinning;
+
+/**
+ * Linear Blend Skinning in plain Java, any number of influences: per point
+ * {@code M = sum_k w_k M_(j_k)}, {@code p' = M p}, and the normal by {@link NormalTransform}.
+ * The portable kernel (Android) and the reference the SIMD kernels are tested against.
+ */
+public final class ScalarLbsSkinner implements Skinner {
+    private final SkinnedGeometry geometry;
+    private final NormalTransform normals;
+    private final float[] positions;
+    private final float[] restNormals;
+    private final int[] joints;
+    private final float[] weights;
+    private final int width;
+
+    public ScalarLbsSkinner(SkinnedGeometry geometry, NormalTransform normals) {
+        this.geometry = geometry;
+        this.normals = normals;
+        this.positions = geometry.positionArray();
+        this.restNormals = geometry.normalArray();
+        this.joints = geometry.jointArray();
+        this.weights = geometry.weightArray();
+        this.width = geometry.influencesPerPoint();
+    }
+
+    @Override
+    public SkinningMethod method() {
+        return SkinningMethod.LBS;
+    }
+
+    @Override
+    public NormalTransform normalTransform() {
+        return normals;
+    }
+
+    @Override
+    public SkinnedGeometry geometry() {
+        return geometry;
+    }
+
+    @Override
+    public String implementation() {
+        return "scalar";
+    }
+
+    @Override
+    public void skin(JointPalette palette, float[] outPositions, float[] outNormals, int from, int to) {
+        final float[] mat = palette.matrices();
+        final boolean exactNormals = normals == NormalTransform.INVERSE_TRANSPOSE;
+        for (int i = from; i < to; i++) {
+            int o = width * i;
+            float w = weights[o];
+            int m = 12 * joints[o];
+            float b0 = w * mat[m], b1 = w * mat[m + 1], b2 = w * mat[m + 2], b3 = w * mat[m + 3];
+            float b4 = w * mat[m + 4], b5 = w * mat[m + 5], b6 = w * mat[m + 6], b7 = w * mat[m + 7];
+            float b8 = w * mat[m + 8], b9 = w * mat[m + 9], b10 = w * mat[m + 10], b11 = w * mat[m + 11];
+            for (int k = 1; k < width; k++) {
+                w = weights[o + k];
+                m = 12 * joints[o + k];
+                b0 += w * mat[m];
+                b1 += w * mat[m + 1];
+                b2 += w * mat[m + 2];
+                b3 += w * mat[m + 3];
+                b4 += w * mat[m + 4];
+                b5 += w * mat[m + 5];
+                b6 += w * mat[m + 6];
+                b7 += w * mat[m + 7];
+                b8 += w * mat[m + 8];
+                b9 += w * mat[m + 9];
+                b10 += w * mat[m + 10];
+                b11 += w * mat[m + 11];
+            }
+            int v = 3 * i;
+            float px = positions[v], py = positions[v + 1], pz = positions[v + 2];
+            outPositions[v] = b0 * px + b1 * py + b2 * pz + b3;
+            outPositions[v + 1] = b4 * px + b5 * py + b6 * pz + b7;
+            outPositions[v + 2] = b8 * px + b9 * py + b10 * pz + b11;
+            float nx = restNormals[v], ny = restNormals[v + 1], nz = restNormals[v + 2];
+            if (exactNormals) {
+                // Columns c0 = (b0 b4 b8), c1 = (b1 b5 b9), c2 = (b2 b6 b10); the inverse-transpose
+                // times det has columns c1 x c2, c2 x c0, c0 x c1.
+                float rx = (b5 * b10 - b9 * b6) * nx + (b9 * b2 - b1 * b10) * ny + (b1 * b6 - b5 * b2) * nz;
+                float ry = (b6 * b8 - b10 * b4) * nx + (b10 * b0 - b2 * b8) * ny + (b2 * b4 - b6 * b0) * nz;
+                float rz = (b4 * b9 - b8 * b5) * nx + (b8 * b1 - b0 * b9) * ny + (b0 * b5 - b4 * b1) * nz;
+                float len2 = rx * rx + ry * ry + rz * rz;
+                float inv = len2 > 0f ? (float) (1.0 / Math.sqrt(len2)) : 0f;
+                outNormals[v] = rx * inv;
+                outNormals[v + 1] = ry * inv;
+                outNormals[v + 2] = rz * inv;
+            } else {
+                outNormals[v] = b0 * nx + b1 * ny + b2 * nz;
+                outNormals[v + 1] = b4 * nx + b5 * ny + b6 * nz;
+                outNormals[v + 2] = b8 * nx + b9 * ny + b10 * nz;
+            }
+        }
+    }
+}

@@ -1,0 +1,309 @@
+package org.skinlab.skinning;
+
+import java.util.Arrays;
+
+import org.joml.Matrix4f;
+import org.skinlab.model.Mesh;
+import org.skinlab.model.MeshInstance;
+import org.skinlab.model.Skin;
+
+/**
+ * The runtime form of one placed mesh, built once from a {@link MeshInstance}: flat arrays a
+ * skinning kernel can stream through, nothing else (the ozz-animation split between offline data
+ * and runtime data).
+ *
+ * <p><b>Points.</b> The kernels deform <em>points</em>: first the mesh's render vertices in
+ * vertex order (each with its position, its normal and the influences of its position), then
+ * every position no triangle uses (normal zero), so that every entry of the {@code <vertices>}
+ * POSITION source is deformed somewhere: {@link #pointOfPosition(int)} says where.
+ *
+ * <p><b>Influences.</b> A fixed number {@link #influencesPerPoint()} per point (the most any
+ * position of the skin has: all influences are kept), sorted by decreasing weight so the first is
+ * the dominant one (the DQS antipodality pivot), padded with weight 0 on the dominant joint.
+ * Weights are divided by their sum, as Blender's armature deform does, so files whose weights do
+ * not add up to one still deform rigidly. A position without weight (or with weights summing to
+ * zero) stays where the bind shape puts it.
+ *
+ * <p><b>Joints.</b> {@link #jointCount()} palette entries: the skin's joints in skin order, plus,
+ * when needed, one pseudo-joint for COLLADA's joint index -1 (the bind shape itself) and for
+ * unweighted positions. Each has a scene node ({@link #jointNode}, -1 for the pseudo-joint) and a
+ * bind matrix (INV_BIND_MATRIX * BIND_SHAPE_MATRIX; the pseudo-joint's is the bind shape matrix),
+ * so that the skinning matrix is {@code world(node) * bind}. A static mesh becomes a geometry with
+ * one joint, its own node, and identity bind: the same code places it.
+ */
+public final class SkinnedGeometry {
+    private final MeshInstance instance;
+    private final int vertexCount;
+    private final int pointCount;
+    private final float[] positions;
+    private final float[] normals;
+    private final int influences;
+    private final int[] joints;
+    private final float[] weights;
+    private final int[] jointNodes;
+    private final float[] bindMatrices;
+    private final int[] pointOfPosition;
+
+    private SkinnedGeometry(MeshInstance instance, int vertexCount, float[] positions, float[] normals,
+            int influences, int[] joints, float[] weights, int[] jointNodes, float[] bindMatrices,
+            int[] pointOfPosition) {
+        this.instance = instance;
+        this.vertexCount = vertexCount;
+        this.pointCount = positions.length / 3;
+        this.positions = positions;
+        this.normals = normals;
+        this.influences = influences;
+        this.joints = joints;
+        this.weights = weights;
+        this.jointNodes = jointNodes;
+        this.bindMatrices = bindMatrices;
+        this.pointOfPosition = pointOfPosition;
+    }
+
+    /** The runtime geometry of a placed mesh, skinned or static. */
+    public static SkinnedGeometry of(MeshInstance instance) {
+        Mesh mesh = instance.mesh();
+        int vertices = mesh.vertexCount();
+        int[] pointOfPosition = new int[mesh.positionCount()];
+        Arrays.fill(pointOfPosition, -1);
+        for (int v = vertices - 1; v >= 0; v--) {
+            pointOfPosition[mesh.vertexPosition(v)] = v; // the first vertex of each position wins
+        }
+        int orphans = 0;
+        for (int p = 0; p < pointOfPosition.length; p++) {
+            if (pointOfPosition[p] < 0) {
+                pointOfPosition[p] = vertices + orphans++;
+            }
+        }
+        int points = vertices + orphans;
+        int[] positionOfPoint = new int[points];
+        for (int v = 0; v < vertices; v++) {
+            positionOfPoint[v] = mesh.vertexPosition(v);
+        }
+        for (int p = 0; p < pointOfPosition.length; p++) {
+            if (pointOfPosition[p] >= vertices) {
+                positionOfPoint[pointOfPosition[p]] = p;
+            }
+        }
+        float[] meshPositions = mesh.positions();
+        float[] positions = new float[3 * points];
+        for (int i = 0; i < points; i++) {
+            System.arraycopy(meshPositions, 3 * positionOfPoint[i], positions, 3 * i, 3);
+        }
+        float[] normals = new float[3 * points];
+        if (mesh.hasNormals()) {
+            System.arraycopy(mesh.normals(), 0, normals, 0, 3 * vertices);
+        }
+        Skin skin = instance.skin();
+        if (skin == null) {
+            int[] joints = new int[points];
+            float[] weights = new float[points];
+            Arrays.fill(weights, 1f);
+            return new SkinnedGeometry(instance, vertices, positions, normals, 1, joints, weights,
+                    new int[] {instance.node()}, new Matrix4f().get(new float[16]), pointOfPosition);
+        }
+        return skinned(instance, skin, vertices, positions, normals, positionOfPoint, pointOfPosition);
+    }
+
+    /**
+     * A geometry straight from arrays, without a mesh (synthetic benchmark data, tests). Influences
+     * are taken in the order given, so the first one is the DQS pivot; weights are used as given.
+     *
+     * @param positions    3 floats per point
+     * @param normals      3 floats per point
+     * @param influences   influences per point
+     * @param joints       palette joint per influence
+     * @param weights      weight per influence
+     * @param bindMatrices 16 floats column-major per joint (identity where there is no bind frame)
+     */
+    public static SkinnedGeometry fromArrays(float[] positions, float[] normals, int influences, int[] joints,
+            float[] weights, float[] bindMatrices) {
+        int points = positions.length / 3;
+        if (positions.length != 3 * points || normals.length != 3 * points || influences < 1
+                || joints.length != influences * points || weights.length != influences * points
+                || bindMatrices.length % 16 != 0) {
+            throw new IllegalArgumentException("array sizes disagree");
+        }
+        int jointCount = bindMatrices.length / 16;
+        for (int j : joints) {
+            if (j < 0 || j >= jointCount) {
+                throw new IllegalArgumentException("joint " + j + " outside the palette of " + jointCount);
+            }
+        }
+        int[] identity = new int[points];
+        for (int i = 0; i < points; i++) {
+            identity[i] = i;
+        }
+        int[] nodes = new int[jointCount];
+        Arrays.fill(nodes, -1);
+        return new SkinnedGeometry(null, points, positions, normals, influences, joints, weights, nodes,
+                bindMatrices, identity);
+    }
+
+    private static SkinnedGeometry skinned(MeshInstance instance, Skin skin, int vertices, float[] positions,
+            float[] normals, int[] positionOfPoint, int[] pointOfPosition) {
+        int points = positionOfPoint.length;
+        int skinJoints = skin.jointCount();
+        int bindShapeJoint = skinJoints; // the pseudo-joint's palette index, used only if needed
+        boolean needsBindShapeJoint = false;
+        int width = Math.max(1, skin.maxInfluences());
+        int[] joints = new int[width * points];
+        float[] weights = new float[width * points];
+        int[] order = new int[width];
+        for (int i = 0; i < points; i++) {
+            int p = positionOfPoint[i];
+            int start = skin.influenceStart(p);
+            int n = skin.influenceCount(p);
+            float sum = 0f;
+            for (int k = 0; k < n; k++) {
+                sum += skin.influenceWeight(start + k);
+                order[k] = start + k;
+            }
+            int o = width * i;
+            if (n == 0 || !(Math.abs(sum) > 1e-12f)) {
+                needsBindShapeJoint = true;
+                Arrays.fill(joints, o, o + width, bindShapeJoint);
+                weights[o] = 1f;
+                continue;
+            }
+            // Insertion sort by decreasing weight (n is small): the dominant influence goes first.
+            for (int a = 1; a < n; a++) {
+                int e = order[a];
+                int b = a - 1;
+                while (b >= 0 && skin.influenceWeight(order[b]) < skin.influenceWeight(e)) {
+                    order[b + 1] = order[b];
+                    b--;
+                }
+                order[b + 1] = e;
+            }
+            for (int k = 0; k < width; k++) {
+                if (k < n) {
+                    int j = skin.influenceJoint(order[k]);
+                    if (j < 0) {
+                        needsBindShapeJoint = true;
+                        j = bindShapeJoint;
+                    }
+                    joints[o + k] = j;
+                    weights[o + k] = skin.influenceWeight(order[k]) / sum;
+                } else {
+                    joints[o + k] = joints[o];
+                    weights[o + k] = 0f;
+                }
+            }
+        }
+        int paletteSize = skinJoints + (needsBindShapeJoint ? 1 : 0);
+        int[] jointNodes = new int[paletteSize];
+        float[] bind = new float[16 * paletteSize];
+        Matrix4f m = new Matrix4f();
+        for (int j = 0; j < skinJoints; j++) {
+            jointNodes[j] = instance.jointNode(j);
+            skin.inverseBindMatrix(j, m).mul(skin.bindShapeMatrix()).get(bind, 16 * j);
+        }
+        if (needsBindShapeJoint) {
+            jointNodes[skinJoints] = -1;
+            m.set(skin.bindShapeMatrix()).get(bind, 16 * skinJoints);
+        }
+        return new SkinnedGeometry(instance, vertices, positions, normals, width, joints, weights, jointNodes, bind,
+                pointOfPosition);
+    }
+
+    /** The placed mesh this geometry was built from, or null for {@link #fromArrays}. */
+    public MeshInstance instance() {
+        return instance;
+    }
+
+    /** The mesh, or null for {@link #fromArrays}. */
+    public Mesh mesh() {
+        return instance == null ? null : instance.mesh();
+    }
+
+    public boolean isSkinned() {
+        return instance == null || instance.isSkinned();
+    }
+
+    /** Number of points (render vertices, then unused positions). */
+    public int pointCount() {
+        return pointCount;
+    }
+
+    /** Number of render vertices: points {@code [0, vertexCount)} are the mesh's vertices in order. */
+    public int vertexCount() {
+        return vertexCount;
+    }
+
+    /** The point that carries position {@code p} of the mesh's POSITION source. */
+    public int pointOfPosition(int p) {
+        return pointOfPosition[p];
+    }
+
+    public int positionCount() {
+        return pointOfPosition.length;
+    }
+
+    /** Influences per point (fixed width, zero-weight padded). */
+    public int influencesPerPoint() {
+        return influences;
+    }
+
+    /** Palette size: skin joints plus the bind-shape pseudo-joint when used. */
+    public int jointCount() {
+        return jointNodes.length;
+    }
+
+    /** Scene node of palette joint {@code j}, -1 for the bind-shape pseudo-joint. */
+    public int jointNode(int j) {
+        return jointNodes[j];
+    }
+
+    // The arrays below are handed out without copying: they are read by every kernel every
+    // frame. Callers must not modify them.
+
+    /** Bind-shape positions, 3 per point. Read-only. */
+    public float[] positionArray() {
+        return positions;
+    }
+
+    /** Bind-shape normals, 3 per point (zero where the mesh has none). Read-only. */
+    public float[] normalArray() {
+        return normals;
+    }
+
+    /** Palette joint of each influence, {@link #influencesPerPoint()} per point. Read-only. */
+    public int[] jointArray() {
+        return joints;
+    }
+
+    /** Normalised weight of each influence, {@link #influencesPerPoint()} per point. Read-only. */
+    public float[] weightArray() {
+        return weights;
+    }
+
+    /** Scene node per palette joint (-1: no node, identity world). Read-only. */
+    public int[] jointNodeArray() {
+        return jointNodes;
+    }
+
+    /** Per palette joint, 16 floats column-major: INV_BIND_MATRIX * BIND_SHAPE_MATRIX. Read-only. */
+    public float[] bindMatrixArray() {
+        return bindMatrices;
+    }
+
+    /** A palette sized for this geometry, with its DQS pivots. */
+    public JointPalette newPalette() {
+        return new JointPalette(bindMatrices);
+    }
+
+    /** Copies the deformed positions of points into position order (3 floats per POSITION entry). */
+    public float[] positionsInSourceOrder(float[] pointPositions, float[] dest) {
+        for (int p = 0; p < pointOfPosition.length; p++) {
+            System.arraycopy(pointPositions, 3 * pointOfPosition[p], dest, 3 * p, 3);
+        }
+        return dest;
+    }
+
+    @Override
+    public String toString() {
+        return "SkinnedGeometry[" + (instance == null ? "arrays" : instance.mesh().id()) + ", " + pointCount + " points, " + jointCount()
+                + " joints, " + influences + " influences per point]";
+    }
+}

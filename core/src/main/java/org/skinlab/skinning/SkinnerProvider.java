@@ -1,0 +1,14 @@
+package org.skinlab.skinning;
+
+/**
+ * A source of faster skinners than the scalar ones, found with {@link java.util.ServiceLoader}
+ * (e.g. the desktop's JDK Vector API kernels). Core stays plain Java that Android can run; a
+ * platform adds a provider by putting it on the class path.
+ */
+public interface SkinnerProvider {
+    /**
+     * A skinner for the geometry, or null when this provider does not handle the case (e.g. an
+     * influence count it has no kernel for, or no SIMD support on this machine).
+     */
+    Skinner create(SkinningMethod method, SkinnedGeometry geometry, NormalTransform normals);
+}

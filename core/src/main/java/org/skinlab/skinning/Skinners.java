@@ -1,0 +1,63 @@
+package org.skinlab.skinning;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.ServiceLoader;
+
+/**
+ * Where skinners come from: the one place that decides between a platform's faster kernels
+ * ({@link SkinnerProvider}s on the class path, e.g. the desktop's SIMD ones) and the portable
+ * scalar ones. Callers never branch on it.
+ */
+public final class Skinners {
+    private static final List<SkinnerProvider> PROVIDERS = loadProviders();
+
+    private Skinners() {
+    }
+
+    private static List<SkinnerProvider> loadProviders() {
+        List<SkinnerProvider> found = new ArrayList<>();
+        try {
+            for (SkinnerProvider p : ServiceLoader.load(SkinnerProvider.class, Skinners.class.getClassLoader())) {
+                found.add(p);
+            }
+        } catch (java.util.ServiceConfigurationError | LinkageError e) {
+            // A provider that cannot load here (e.g. a JVM without the incubator module) is skipped:
+            // the scalar kernels always work.
+        }
+        return List.copyOf(found);
+    }
+
+    /** The fastest skinner available for the geometry. */
+    public static Skinner create(SkinningMethod method, SkinnedGeometry geometry, NormalTransform normals) {
+        for (SkinnerProvider p : PROVIDERS) {
+            Skinner s;
+            try {
+                s = p.create(method, geometry, normals);
+            } catch (LinkageError e) {
+                continue;
+            }
+            if (s != null) {
+                return s;
+            }
+        }
+        return scalar(method, geometry, normals);
+    }
+
+    /** The fastest skinner with exact normals ({@link NormalTransform#INVERSE_TRANSPOSE}). */
+    public static Skinner create(SkinningMethod method, SkinnedGeometry geometry) {
+        return create(method, geometry, NormalTransform.INVERSE_TRANSPOSE);
+    }
+
+    /** The portable plain-Java skinner. */
+    public static Skinner scalar(SkinningMethod method, SkinnedGeometry geometry, NormalTransform normals) {
+        switch (method) {
+            case LBS:
+                return new ScalarLbsSkinner(geometry, normals);
+            case DQS:
+                return new ScalarDqsSkinner(geometry, normals);
+            default:
+                throw new IllegalArgumentException(String.valueOf(method));
+        }
+    }
+}
