@@ -1,0 +1,239 @@
+package org.skinlab.simd;
+
+import static org.skinlab.simd.Lanes.HI;
+import static org.skinlab.simd.Lanes.S;
+import static org.skinlab.simd.Lanes.SWAP;
+import static org.skinlab.simd.Lanes.YZX;
+import static org.skinlab.simd.Lanes.ZXY;
+
+import jdk.incubator.vector.FloatVector;
+import jdk.incubator.vector.VectorOperators;
+import jdk.incubator.vector.VectorShuffle;
+
+import org.skinlab.skinning.JointPalette;
+import org.skinlab.skinning.NormalTransform;
+import org.skinlab.skinning.ScalarLbsSkinner;
+import org.skinlab.skinning.SkinnedGeometry;
+import org.skinlab.skinning.Skinner;
+import org.skinlab.skinning.SkinningMethod;
+
+/**
+ * Linear Blend Skinning on 8-lane vectors, one point at a time with the matrix spread over the
+ * lanes (the layout of ozz-animation's SSE skinning job, at twice the width):
+ *
+ * <ul>
+ * <li>per call, the palette's row-major 3x4 matrices are copied into column-major 4x4 blocks
+ *     {@code [c0 | c1]}, {@code [c2 | c3]} (c3 the translation, row 3 zero): two vector loads per
+ *     joint, no gather (gathers are slow on the machines we measured: about 1 cycle per lane);</li>
+ * <li>per point, {@code [c0 | c1] = sum_k w_k [c0 | c1]_(j_k)} and the same for {@code [c2 | c3]}
+ *     (two fused multiply-adds per influence), then {@code p' = c0 px + c1 py + c2 pz + c3} as
+ *     {@code [c0|c1] * [px px px px | py py py py] + [c2|c3] * [pz.. | 1..]} and the sum of the two
+ *     halves;</li>
+ * <li>the geometry is repacked once, in the constructor, into one stream of 12 floats per point
+ *     ({@code px py pz 1 nx ny nz 0 w0 w1 w2 w3}) plus one of joint offsets, so a point's
+ *     broadcast operands are one vector load and four lane permutations.</li>
+ * </ul>
+ *
+ * <p>Each point's result is written with one 8-lane store at {@code 3 * point}, whose last five
+ * lanes spill into the next points and are overwritten when those are done; the last two points
+ * of a range therefore go through the scalar kernel, so a range never writes outside itself.
+ * Geometries with up to 4 influences per point are padded to 4 with weight 0.
+ */
+final class VectorLbsSkinner implements Skinner {
+    static final int INFLUENCES = 4;
+    /** Floats per point in {@link #points}. */
+    private static final int STRIDE = 12;
+
+    private static final VectorShuffle<Float> PX_PY = shuffleOf(0, 0, 0, 0, 1, 1, 1, 1);
+    private static final VectorShuffle<Float> PZ_ONE = shuffleOf(2, 2, 2, 2, 3, 3, 3, 3);
+    private static final VectorShuffle<Float> NX_NY = shuffleOf(4, 4, 4, 4, 5, 5, 5, 5);
+    private static final VectorShuffle<Float> NZ_ZERO = shuffleOf(6, 6, 6, 6, 7, 7, 7, 7);
+
+    private final SkinnedGeometry geometry;
+    private final NormalTransform normals;
+    private final ScalarLbsSkinner scalar;
+    private final float[] points;
+    private final int[] offsets;
+    private final int jointCount;
+    private final ThreadLocal<float[]> columns;
+
+    VectorLbsSkinner(SkinnedGeometry geometry, NormalTransform normals) {
+        int width = geometry.influencesPerPoint();
+        if (width > INFLUENCES) {
+            throw new IllegalArgumentException(width + " influences per point; this kernel takes up to " + INFLUENCES);
+        }
+        this.geometry = geometry;
+        this.normals = normals;
+        this.scalar = new ScalarLbsSkinner(geometry, normals);
+        this.jointCount = geometry.jointCount();
+        int n = geometry.pointCount();
+        float[] pos = geometry.positionArray();
+        float[] nrm = geometry.normalArray();
+        int[] joints = geometry.jointArray();
+        float[] weights = geometry.weightArray();
+        points = new float[STRIDE * n];
+        offsets = new int[INFLUENCES * n];
+        for (int i = 0; i < n; i++) {
+            int o = STRIDE * i;
+            points[o] = pos[3 * i];
+            points[o + 1] = pos[3 * i + 1];
+            points[o + 2] = pos[3 * i + 2];
+            points[o + 3] = 1f;
+            points[o + 4] = nrm[3 * i];
+            points[o + 5] = nrm[3 * i + 1];
+            points[o + 6] = nrm[3 * i + 2];
+            for (int k = 0; k < INFLUENCES; k++) {
+                // Padding: weight 0 on the first joint adds exactly nothing.
+                points[o + 8 + k] = k < width ? weights[width * i + k] : 0f;
+                offsets[INFLUENCES * i + k] = 16 * joints[width * i + (k < width ? k : 0)];
+            }
+        }
+        int size = 16 * jointCount;
+        columns = ThreadLocal.withInitial(() -> new float[size]);
+    }
+
+    @Override
+    public SkinningMethod method() {
+        return SkinningMethod.LBS;
+    }
+
+    @Override
+    public NormalTransform normalTransform() {
+        return normals;
+    }
+
+    @Override
+    public SkinnedGeometry geometry() {
+        return geometry;
+    }
+
+    @Override
+    public String implementation() {
+        return "vector-256";
+    }
+
+    @Override
+    public void skin(JointPalette palette, float[] outPositions, float[] outNormals, int from, int to) {
+        if (to - from < 3) {
+            scalar.skin(palette, outPositions, outNormals, from, to);
+            return;
+        }
+        float[] c = columnMajor(palette);
+        int end = to - 2;
+        if (normals == NormalTransform.BLENDED_MATRIX) {
+            blendedNormals(c, outPositions, outNormals, from, end);
+        } else {
+            exactNormals(c, outPositions, outNormals, from, end);
+        }
+        scalar.skin(palette, outPositions, outNormals, end, to);
+    }
+
+    /** This thread's copy of the palette as column-major 4x4 blocks (row 3 zero). */
+    private float[] columnMajor(JointPalette palette) {
+        if (palette.jointCount() != jointCount) {
+            throw new IllegalArgumentException("palette of " + palette.jointCount() + " joints for a geometry of "
+                    + jointCount);
+        }
+        float[] m = palette.matrices();
+        float[] c = columns.get();
+        for (int j = 0; j < jointCount; j++) {
+            int s = 12 * j;
+            int d = 16 * j;
+            c[d] = m[s];
+            c[d + 1] = m[s + 4];
+            c[d + 2] = m[s + 8];
+            c[d + 4] = m[s + 1];
+            c[d + 5] = m[s + 5];
+            c[d + 6] = m[s + 9];
+            c[d + 8] = m[s + 2];
+            c[d + 9] = m[s + 6];
+            c[d + 10] = m[s + 10];
+            c[d + 12] = m[s + 3];
+            c[d + 13] = m[s + 7];
+            c[d + 14] = m[s + 11];
+        }
+        return c;
+    }
+
+    private void blendedNormals(float[] c, float[] outPositions, float[] outNormals, int from, int end) {
+        final float[] pts = points;
+        final int[] off = offsets;
+        for (int i = from; i < end; i++) {
+            int o = STRIDE * i;
+            int q = INFLUENCES * i;
+            int m0 = off[q];
+            int m1 = off[q + 1];
+            int m2 = off[q + 2];
+            int m3 = off[q + 3];
+            FloatVector w0 = FloatVector.broadcast(S, pts[o + 8]);
+            FloatVector w1 = FloatVector.broadcast(S, pts[o + 9]);
+            FloatVector w2 = FloatVector.broadcast(S, pts[o + 10]);
+            FloatVector w3 = FloatVector.broadcast(S, pts[o + 11]);
+            FloatVector a = FloatVector.fromArray(S, c, m0).mul(w0);
+            FloatVector b = FloatVector.fromArray(S, c, m0 + 8).mul(w0);
+            a = FloatVector.fromArray(S, c, m1).fma(w1, a);
+            b = FloatVector.fromArray(S, c, m1 + 8).fma(w1, b);
+            a = FloatVector.fromArray(S, c, m2).fma(w2, a);
+            b = FloatVector.fromArray(S, c, m2 + 8).fma(w2, b);
+            a = FloatVector.fromArray(S, c, m3).fma(w3, a);
+            b = FloatVector.fromArray(S, c, m3 + 8).fma(w3, b);
+            FloatVector r = FloatVector.fromArray(S, pts, o);
+            FloatVector p = a.mul(r.rearrange(PX_PY)).add(b.mul(r.rearrange(PZ_ONE)));
+            FloatVector n = a.mul(r.rearrange(NX_NY)).add(b.mul(r.rearrange(NZ_ZERO)));
+            p.add(p.rearrange(SWAP)).intoArray(outPositions, 3 * i);
+            n.add(n.rearrange(SWAP)).intoArray(outNormals, 3 * i);
+        }
+    }
+
+    /**
+     * As {@link #blendedNormals}, but the normal goes through the cofactor matrix of the blended
+     * linear part, whose columns are c1 x c2, c2 x c0, c0 x c1 (the inverse-transpose times det),
+     * and is renormalised; a zero result stays zero, as in the scalar kernel.
+     */
+    private void exactNormals(float[] c, float[] outPositions, float[] outNormals, int from, int end) {
+        final float[] pts = points;
+        final int[] off = offsets;
+        final FloatVector zero = FloatVector.zero(S);
+        final FloatVector one = FloatVector.broadcast(S, 1f);
+        for (int i = from; i < end; i++) {
+            int o = STRIDE * i;
+            int q = INFLUENCES * i;
+            int m0 = off[q];
+            int m1 = off[q + 1];
+            int m2 = off[q + 2];
+            int m3 = off[q + 3];
+            FloatVector w0 = FloatVector.broadcast(S, pts[o + 8]);
+            FloatVector w1 = FloatVector.broadcast(S, pts[o + 9]);
+            FloatVector w2 = FloatVector.broadcast(S, pts[o + 10]);
+            FloatVector w3 = FloatVector.broadcast(S, pts[o + 11]);
+            FloatVector a = FloatVector.fromArray(S, c, m0).mul(w0);
+            FloatVector b = FloatVector.fromArray(S, c, m0 + 8).mul(w0);
+            a = FloatVector.fromArray(S, c, m1).fma(w1, a);
+            b = FloatVector.fromArray(S, c, m1 + 8).fma(w1, b);
+            a = FloatVector.fromArray(S, c, m2).fma(w2, a);
+            b = FloatVector.fromArray(S, c, m2 + 8).fma(w2, b);
+            a = FloatVector.fromArray(S, c, m3).fma(w3, a);
+            b = FloatVector.fromArray(S, c, m3 + 8).fma(w3, b);
+            FloatVector r = FloatVector.fromArray(S, pts, o);
+            FloatVector p = a.mul(r.rearrange(PX_PY)).add(b.mul(r.rearrange(PZ_ONE)));
+            p.add(p.rearrange(SWAP)).intoArray(outPositions, 3 * i);
+            // [c1 | c2] x [c2 | c0] = [c1 x c2 | c2 x c0]; [c0 | c1] x [c1 | c0] = [c0 x c1 | ...]
+            FloatVector aSwap = a.rearrange(SWAP);
+            FloatVector left = aSwap.blend(b.rearrange(SWAP), HI);
+            FloatVector right = b.blend(aSwap, HI);
+            FloatVector k01 = left.rearrange(YZX).mul(right.rearrange(ZXY))
+                    .sub(left.rearrange(ZXY).mul(right.rearrange(YZX)));
+            FloatVector k2 = a.rearrange(YZX).mul(aSwap.rearrange(ZXY)).sub(a.rearrange(ZXY).mul(aSwap.rearrange(YZX)));
+            FloatVector t = k01.mul(r.rearrange(NX_NY));
+            FloatVector n = t.add(t.rearrange(SWAP)).add(k2.mul(r.rearrange(NZ_ZERO)));
+            FloatVector n2 = n.mul(n);
+            FloatVector len2 = n2.add(n2.rearrange(YZX)).add(n2.rearrange(ZXY));
+            FloatVector inv = one.div(len2.sqrt()).blend(zero, len2.compare(VectorOperators.LE, 0f));
+            n.mul(inv).intoArray(outNormals, 3 * i);
+        }
+    }
+
+    private static VectorShuffle<Float> shuffleOf(int... lanes) {
+        return VectorShuffle.fromArray(S, lanes, 0);
+    }
+}
