@@ -117,9 +117,9 @@ public final class ScalarDqsSkinner implements Skinner {
                 float my;
                 float mz;
                 if (exactNormals) {
-                    mx = (s5 * s10 - s9 * s6) * nx + (s9 * s2 - s1 * s10) * ny + (s1 * s6 - s5 * s2) * nz;
-                    my = (s6 * s8 - s10 * s4) * nx + (s10 * s0 - s2 * s8) * ny + (s2 * s4 - s6 * s0) * nz;
-                    mz = (s4 * s9 - s8 * s5) * nx + (s8 * s1 - s0 * s9) * ny + (s0 * s5 - s4 * s1) * nz;
+                    mx = (s5 * s10 - s9 * s6) * nx + (s6 * s8 - s10 * s4) * ny + (s4 * s9 - s8 * s5) * nz;
+                    my = (s9 * s2 - s1 * s10) * nx + (s10 * s0 - s2 * s8) * ny + (s8 * s1 - s0 * s9) * nz;
+                    mz = (s1 * s6 - s5 * s2) * nx + (s2 * s4 - s6 * s0) * ny + (s0 * s5 - s4 * s1) * nz;
                     float len2 = mx * mx + my * my + mz * mz;
                     float inv = len2 > 0f ? (float) (1.0 / Math.sqrt(len2)) : 0f;
                     mx *= inv;
