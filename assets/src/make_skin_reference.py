@@ -38,7 +38,6 @@ import os
 import sys
 
 import bpy
-from mathutils import Matrix, Vector
 
 sys.dont_write_bytecode = True   # no __pycache__ in the source folder
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -54,10 +53,6 @@ ASSETS = [
     "creatures/tentacle-wave.dae",
 ]
 MATCH = 1e-5   # metres (and matrix entries): float32 import and pose evaluation vs the file
-
-
-def to_matrix(rows):
-    return Matrix([list(r) for r in rows])
 
 
 def max_matrix_diff(a, b):
