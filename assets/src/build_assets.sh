@@ -2,6 +2,7 @@
 # Regenerate every asset under assets/ from the Blender scripts in assets/src/, then check them.
 #
 #   bash assets/src/build_assets.sh              # build + check_assets.py + Blender re-import check
+#                                                # + skinning references (make/check_skin_reference.py)
 #   bash assets/src/build_assets.sh --previews   # also render assets/src/previews/*.png
 #
 # Needs Blender 3.4 (`blender` on PATH, or set BLENDER=/path/to/blender) and python3.
@@ -37,7 +38,7 @@ run_blender() {
     echo "FAILED: $script $*" >&2
     exit 1
   fi
-  grep -E '^(skin:|cylinder |humanoid:|tentacle:|wrote |  imported:|  re-imported|re-import check)' "$log" || true
+  grep -E '^(skin:|cylinder |humanoid:|tentacle:|wrote |  imported:|  re-imported|re-import check|  [0-9]+ key times|  skip )' "$log" || true
 }
 
 mkdir -p assets/cylinders assets/characters assets/creatures "$REF"
@@ -62,6 +63,11 @@ python3 "$SRC/check_assets.py" assets
 
 echo "--- Blender re-import check"
 run_blender reimport "$SRC/reimport_check.py" assets
+
+echo "--- skinning references: Blender's LBS and DQS of every vertex at every key (docs/references.md)"
+rm -f assets/reference/skinning/*.json
+run_blender skinref "$SRC/make_skin_reference.py" assets
+python3 "$SRC/check_skin_reference.py" assets
 
 if [ "$PREVIEWS" = 1 ]; then
   echo "--- previews"

@@ -1,0 +1,294 @@
+package org.skinlab.animation;
+
+import java.util.List;
+
+import org.joml.Matrix4f;
+import org.joml.Quaternionf;
+import org.joml.Vector3f;
+import org.skinlab.model.AnimationChannel;
+import org.skinlab.model.AnimationClip;
+import org.skinlab.model.Interpolation;
+import org.skinlab.model.KeyframeTrack;
+import org.skinlab.model.TransformElement;
+
+/**
+ * Samples one {@link AnimationClip} at any time into a {@link Pose}: writes the value of every
+ * channel into the transform values it drives. Immutable and thread-safe; all scratch space lives
+ * in the pose.
+ *
+ * <p>How a channel's keys are blended:
+ * <ul>
+ * <li><b>Whole matrices</b> (a channel that drives all 16 values of a {@code <matrix>}, as
+ *     Blender, the thesis and most exporters write): each key is decomposed once, here, into
+ *     translation, rotation and scale ({@link AnimationHelper#decompose}, robust to slightly
+ *     non-orthonormal keys). Between LINEAR keys translation and scale are interpolated
+ *     linearly and rotation by the caller's {@link RotationInterpolation}, along the shortest
+ *     arc; the result is recomposed. On a key time, and for STEP keys, the key's own matrix is
+ *     written unchanged (shear included), so sampling at a key reproduces the file exactly.</li>
+ * <li><b>Everything else</b> (a single value or a partial matrix, a {@code <rotate>} angle, a
+ *     {@code <translate>} vector), and BEZIER/HERMITE matrices: each value on its own, by the key's
+ *     interpolation: STEP holds, LINEAR blends, BEZIER and HERMITE follow the cubic Bezier through
+ *     the two keys and their 2-D control points (as the importer stores tangents, see
+ *     {@link KeyframeTrack}), solved for the parameter whose time is the sample time.</li>
+ * </ul>
+ * Before the first key a channel holds the first key, after the last the last. Channels apply in
+ * clip order, so when two drive the same value the later wins.
+ */
+public final class AnimationSampler {
+    private final AnimationClip clip;
+    private final Channel[] channels;
+
+    public AnimationSampler(Skeleton skeleton, AnimationClip clip) {
+        this.clip = clip;
+        List<AnimationChannel> list = clip.channels();
+        channels = new Channel[list.size()];
+        for (int i = 0; i < channels.length; i++) {
+            AnimationChannel c = list.get(i);
+            int slot = skeleton.valueOffset(c.node(), c.transformIndex()) + c.valueOffset();
+            boolean matrix = skeleton.kind(c.node(), c.transformIndex()) == TransformElement.Kind.MATRIX
+                    && c.valueOffset() == 0 && c.valueCount() == 16;
+            channels[i] = new Channel(slot, c.track(), matrix);
+        }
+    }
+
+    /** A sampler over no channels: every pose stays at rest. */
+    public static AnimationSampler rest(Skeleton skeleton) {
+        return new AnimationSampler(skeleton, new AnimationClip(null, "rest", 0f, 0f, List.of()));
+    }
+
+    public AnimationClip clip() {
+        return clip;
+    }
+
+    /** Clip start (seconds). */
+    public float start() {
+        return clip.start();
+    }
+
+    /** Clip end (seconds). */
+    public float end() {
+        return clip.end();
+    }
+
+    /**
+     * The clip time reached {@code elapsed} seconds of playback after the clip's start: wrapped
+     * into {@code [start, end)} for {@link WrapMode#LOOP} (negative elapsed time plays backwards
+     * from the end), held at the ends for {@link WrapMode#CLAMP}. A clip of zero length is
+     * always at its start.
+     */
+    public float clipTime(double elapsed, WrapMode mode) {
+        double duration = (double) clip.end() - clip.start();
+        if (!(duration > 0)) {
+            return clip.start();
+        }
+        double t;
+        if (mode == WrapMode.LOOP) {
+            t = elapsed % duration;
+            if (t < 0) {
+                t += duration;
+            }
+        } else {
+            t = Math.max(0, Math.min(duration, elapsed));
+        }
+        return (float) Math.min(clip.start() + t, clip.end());
+    }
+
+    /** Time {@code t} clamped to the clip: what the command line's times mean. */
+    public float clamp(float t) {
+        return Math.max(clip.start(), Math.min(clip.end(), t));
+    }
+
+    /**
+     * Writes every channel's value at clip time {@code time} into {@code pose.values()}. Values no
+     * channel drives are left as they are (at rest for a fresh or reset pose). Allocation-free.
+     * Call {@link Skeleton#evaluate} afterwards.
+     */
+    public void sample(float time, RotationInterpolation rotations, Pose pose) {
+        if (Float.isNaN(time)) {
+            throw new IllegalArgumentException("sample time is NaN");
+        }
+        float[] values = pose.values();
+        for (Channel c : channels) {
+            c.sample(time, rotations, values, pose);
+        }
+    }
+
+    /** One channel as flat arrays, with whole-matrix keys pre-decomposed. */
+    private static final class Channel {
+        private final int slot;
+        private final int width;
+        private final float[] times;
+        private final float[] values;
+        private final Interpolation[] interpolations;
+        private final float[] in;
+        private final float[] out;
+        /** Per key translation (3), rotation (4), scale (3), or null when not a whole matrix. */
+        private final float[] trs;
+
+        Channel(int slot, KeyframeTrack track, boolean matrix) {
+            this.slot = slot;
+            this.width = track.width();
+            this.times = track.times();
+            this.values = track.values();
+            int keys = times.length;
+            this.interpolations = new Interpolation[keys];
+            for (int k = 0; k < keys; k++) {
+                interpolations[k] = track.interpolation(k);
+            }
+            this.in = track.inTangents();
+            this.out = track.outTangents();
+            this.trs = matrix ? decomposeKeys(values, keys) : null;
+        }
+
+        private static float[] decomposeKeys(float[] values, int keys) {
+            float[] trs = new float[10 * keys];
+            Matrix4f m = new Matrix4f();
+            Matrix4f scratch = new Matrix4f();
+            Vector3f t = new Vector3f();
+            Quaternionf r = new Quaternionf();
+            Vector3f s = new Vector3f();
+            for (int k = 0; k < keys; k++) {
+                TransformElement.multiply(TransformElement.Kind.MATRIX, values, 16 * k, m.identity(), scratch);
+                AnimationHelper.decompose(m, t, r, s);
+                int o = 10 * k;
+                trs[o] = t.x;
+                trs[o + 1] = t.y;
+                trs[o + 2] = t.z;
+                trs[o + 3] = r.x;
+                trs[o + 4] = r.y;
+                trs[o + 5] = r.z;
+                trs[o + 6] = r.w;
+                trs[o + 7] = s.x;
+                trs[o + 8] = s.y;
+                trs[o + 9] = s.z;
+            }
+            return trs;
+        }
+
+        void sample(float time, RotationInterpolation rotations, float[] dest, Pose pose) {
+            int keys = times.length;
+            if (keys == 0) {
+                return;
+            }
+            // The segment [k, k+1] holding time: the last key whose time is <= time.
+            int k;
+            if (time <= times[0]) {
+                k = 0;
+                time = times[0];
+            } else if (time >= times[keys - 1]) {
+                k = keys - 1;
+            } else {
+                int lo = 0;
+                int hi = keys - 1;
+                while (hi - lo > 1) {
+                    int mid = (lo + hi) >>> 1;
+                    if (times[mid] <= time) {
+                        lo = mid;
+                    } else {
+                        hi = mid;
+                    }
+                }
+                k = lo;
+            }
+            Interpolation how = interpolations[k];
+            if (k == keys - 1 || time == times[k] || how == Interpolation.STEP) {
+                System.arraycopy(values, k * width, dest, slot, width);
+                return;
+            }
+            float t0 = times[k];
+            float t1 = times[k + 1];
+            if (how == Interpolation.LINEAR) {
+                float u = t1 > t0 ? (time - t0) / (t1 - t0) : 1f;
+                if (trs != null) {
+                    blendMatrix(k, u, rotations, dest, pose);
+                } else {
+                    int a = k * width;
+                    int b = a + width;
+                    for (int c = 0; c < width; c++) {
+                        dest[slot + c] = values[a + c] + u * (values[b + c] - values[a + c]);
+                    }
+                }
+                return;
+            }
+            // BEZIER / HERMITE: per value, a cubic through (t0, v0), out[k], in[k+1], (t1, v1).
+            for (int c = 0; c < width; c++) {
+                int oa = 2 * (k * width + c);
+                int ob = 2 * ((k + 1) * width + c);
+                dest[slot + c] = (float) bezier(time, t0, values[k * width + c], out[oa], out[oa + 1], in[ob],
+                        in[ob + 1], t1, values[(k + 1) * width + c]);
+            }
+        }
+
+        private void blendMatrix(int k, float u, RotationInterpolation rotations, float[] dest, Pose pose) {
+            int a = 10 * k;
+            int b = a + 10;
+            Vector3f t = pose.v1.set(lerp(trs[a], trs[b], u), lerp(trs[a + 1], trs[b + 1], u),
+                    lerp(trs[a + 2], trs[b + 2], u));
+            Vector3f s = pose.v2.set(lerp(trs[a + 7], trs[b + 7], u), lerp(trs[a + 8], trs[b + 8], u),
+                    lerp(trs[a + 9], trs[b + 9], u));
+            Quaternionf qa = pose.q1.set(trs[a + 3], trs[a + 4], trs[a + 5], trs[a + 6]);
+            Quaternionf qb = pose.q2.set(trs[b + 3], trs[b + 4], trs[b + 5], trs[b + 6]);
+            AnimationHelper.interpolate(rotations, qa, qb, u, qa);
+            Matrix4f m = AnimationHelper.compose(t, qa, s, pose.m1);
+            // Row-major as in the file: value 4 * row + column is JOML's m<column><row>.
+            int o = slot;
+            dest[o] = m.m00();
+            dest[o + 1] = m.m10();
+            dest[o + 2] = m.m20();
+            dest[o + 3] = m.m30();
+            dest[o + 4] = m.m01();
+            dest[o + 5] = m.m11();
+            dest[o + 6] = m.m21();
+            dest[o + 7] = m.m31();
+            dest[o + 8] = m.m02();
+            dest[o + 9] = m.m12();
+            dest[o + 10] = m.m22();
+            dest[o + 11] = m.m32();
+            dest[o + 12] = 0f;
+            dest[o + 13] = 0f;
+            dest[o + 14] = 0f;
+            dest[o + 15] = 1f;
+        }
+
+        private static float lerp(float a, float b, float u) {
+            return a + u * (b - a);
+        }
+    }
+
+    /**
+     * The value of the cubic Bezier with control points (x0,y0) .. (x3,y3) where its time
+     * coordinate equals {@code x}: Newton's method on x(s), kept inside a shrinking bracket by
+     * bisection so that control points which make x(s) non-monotonic still give an answer.
+     */
+    static double bezier(double x, double x0, double y0, double x1, double y1, double x2, double y2, double x3,
+            double y3) {
+        double lo = 0;
+        double hi = 1;
+        double s = x3 > x0 ? (x - x0) / (x3 - x0) : 0;
+        for (int i = 0; i < 50; i++) {
+            double f = cubic(s, x0, x1, x2, x3) - x;
+            if (Math.abs(f) < 1e-9 * Math.max(1, Math.abs(x3 - x0))) {
+                break;
+            }
+            if (f < 0) {
+                lo = s;
+            } else {
+                hi = s;
+            }
+            double d = cubicDerivative(s, x0, x1, x2, x3);
+            double next = d != 0 ? s - f / d : Double.NaN;
+            s = next > lo && next < hi ? next : 0.5 * (lo + hi);
+        }
+        return cubic(s, y0, y1, y2, y3);
+    }
+
+    private static double cubic(double s, double p0, double p1, double p2, double p3) {
+        double r = 1 - s;
+        return r * r * r * p0 + 3 * r * r * s * p1 + 3 * r * s * s * p2 + s * s * s * p3;
+    }
+
+    private static double cubicDerivative(double s, double p0, double p1, double p2, double p3) {
+        double r = 1 - s;
+        return 3 * r * r * (p1 - p0) + 6 * r * s * (p2 - p1) + 3 * s * s * (p3 - p2);
+    }
+}

@@ -1,0 +1,54 @@
+package org.skinlab.animation;
+
+import org.joml.Matrix4f;
+import org.joml.Quaternionf;
+import org.joml.Vector3f;
+
+/**
+ * One state of a {@link Skeleton}: the transform values of every node (rest values where nothing
+ * animates them) and, after {@link Skeleton#evaluate}, every node's world matrix. Also holds the
+ * scratch matrices evaluation needs, so evaluating allocates nothing and different threads can
+ * evaluate the same skeleton into their own poses.
+ */
+public final class Pose {
+    private final Skeleton skeleton;
+    private final float[] values;
+    private final float[] world;
+    final Matrix4f local = new Matrix4f();
+    final Matrix4f scratch = new Matrix4f();
+    final Matrix4f parentWorld = new Matrix4f();
+    // Scratch for AnimationSampler's whole-matrix blending.
+    final Matrix4f m1 = new Matrix4f();
+    final Vector3f v1 = new Vector3f();
+    final Vector3f v2 = new Vector3f();
+    final Quaternionf q1 = new Quaternionf();
+    final Quaternionf q2 = new Quaternionf();
+
+    Pose(Skeleton skeleton) {
+        this.skeleton = skeleton;
+        this.values = skeleton.restValues().clone();
+        this.world = new float[16 * skeleton.nodeCount()];
+    }
+
+    public Skeleton skeleton() {
+        return skeleton;
+    }
+
+    /**
+     * The transform values, laid out per node and element as {@link Skeleton#valueOffset} says,
+     * each element in its {@link org.skinlab.model.TransformElement} layout. Animation writes here.
+     */
+    public float[] values() {
+        return values;
+    }
+
+    /** World matrices, 16 floats column-major per node. Valid after {@link Skeleton#evaluate}. */
+    public float[] worldArray() {
+        return world;
+    }
+
+    /** Node {@code node}'s world matrix. */
+    public Matrix4f world(int node, Matrix4f dest) {
+        return dest.set(world, 16 * node);
+    }
+}

@@ -1,0 +1,124 @@
+package org.skinlab.skinning;
+
+import java.util.ArrayList;
+import java.util.List;
+
+import org.skinlab.animation.AnimationSampler;
+import org.skinlab.animation.Pose;
+import org.skinlab.animation.RotationInterpolation;
+import org.skinlab.animation.Skeleton;
+import org.skinlab.model.AnimationClip;
+import org.skinlab.model.MeshInstance;
+import org.skinlab.model.Model;
+
+/**
+ * A model ready to deform, frame by frame: its skeleton, one clip's sampler, and per placed mesh
+ * a {@link SkinnedGeometry}, a {@link JointPalette} and a skinner for each method. The per-frame
+ * path is {@link #pose} (sample, evaluate, skinning matrices) then {@link #skin} per geometry;
+ * neither allocates.
+ *
+ * <p>Not thread-safe: one instance per thread that drives it (the simulation thread, a command).
+ */
+public final class SkinnedModel {
+    private final Model model;
+    private final Skeleton skeleton;
+    private final AnimationSampler sampler;
+    private final Pose pose;
+    private final List<SkinnedGeometry> geometries;
+    private final JointPalette[] palettes;
+    private final boolean[] dualQuaternionsReady;
+    private final Skinner[][] skinners;
+
+    /**
+     * @param clip the clip to play, or null to keep the model at rest
+     * @param normals how the skinners move normals
+     */
+    public SkinnedModel(Model model, AnimationClip clip, NormalTransform normals) {
+        this.model = model;
+        this.skeleton = Skeleton.of(model);
+        this.sampler = clip == null ? AnimationSampler.rest(skeleton) : new AnimationSampler(skeleton, clip);
+        this.pose = skeleton.newPose();
+        List<SkinnedGeometry> list = new ArrayList<>();
+        for (MeshInstance instance : model.instances()) {
+            list.add(SkinnedGeometry.of(instance));
+        }
+        this.geometries = List.copyOf(list);
+        int n = geometries.size();
+        palettes = new JointPalette[n];
+        dualQuaternionsReady = new boolean[n];
+        skinners = new Skinner[n][SkinningMethod.values().length];
+        for (int g = 0; g < n; g++) {
+            SkinnedGeometry geometry = geometries.get(g);
+            palettes[g] = geometry.newPalette();
+            for (SkinningMethod m : SkinningMethod.values()) {
+                skinners[g][m.ordinal()] = Skinners.create(m, geometry, normals);
+            }
+        }
+        pose(sampler.start(), RotationInterpolation.SLERP);
+    }
+
+    /** The model with its first clip (or at rest when it has none) and exact normals. */
+    public static SkinnedModel of(Model model) {
+        return new SkinnedModel(model, model.clips().isEmpty() ? null : model.clips().get(0),
+                NormalTransform.INVERSE_TRANSPOSE);
+    }
+
+    public Model model() {
+        return model;
+    }
+
+    public Skeleton skeleton() {
+        return skeleton;
+    }
+
+    public AnimationSampler sampler() {
+        return sampler;
+    }
+
+    /** The current pose (read-only use). */
+    public Pose pose() {
+        return pose;
+    }
+
+    /** One geometry per placed mesh, in {@link Model#instances()} order. */
+    public List<SkinnedGeometry> geometries() {
+        return geometries;
+    }
+
+    /** The palette of geometry {@code g}, holding the skinning matrices of the current pose. */
+    public JointPalette palette(int g) {
+        return palettes[g];
+    }
+
+    /** The skinner geometry {@code g} uses for a method. */
+    public Skinner skinner(int g, SkinningMethod method) {
+        return skinners[g][method.ordinal()];
+    }
+
+    /**
+     * Poses the model at clip time {@code clipTime} (seconds; clamped to the keys of each
+     * channel): samples the clip, evaluates the skeleton and fills every palette.
+     */
+    public void pose(float clipTime, RotationInterpolation rotations) {
+        sampler.sample(clipTime, rotations, pose);
+        skeleton.evaluate(pose);
+        for (int g = 0; g < palettes.length; g++) {
+            SkinnedGeometry geometry = geometries.get(g);
+            skeleton.skinningMatrices(pose, geometry.jointNodeArray(), geometry.bindMatrixArray(),
+                    palettes[g].matrices());
+            dualQuaternionsReady[g] = false;
+        }
+    }
+
+    /**
+     * Deforms geometry {@code g} in the current pose: 3 floats per point into each output array
+     * (size {@code 3 * pointCount()}). DQS derives the palette's dual quaternions once per pose.
+     */
+    public void skin(int g, SkinningMethod method, float[] outPositions, float[] outNormals) {
+        if (method == SkinningMethod.DQS && !dualQuaternionsReady[g]) {
+            palettes[g].prepareDualQuaternions();
+            dualQuaternionsReady[g] = true;
+        }
+        skinners[g][method.ordinal()].skinAll(palettes[g], outPositions, outNormals);
+    }
+}
