@@ -25,16 +25,20 @@ import org.skinlab.skinning.SkinningMethod;
  * same arithmetic as {@link ScalarDqsSkinner} written once per lane.
  *
  * <p><b>Layout.</b> The constructor repacks the geometry into blocks of 8 points (AoSoA): px[8]
- * py[8] pz[8] nx[8] ny[8] nz[8] w0[8] .. w3[8] (80 floats) and the 4 x 8 row offsets
- * {@code 8 * joint}. A block starts at a point index that is a multiple of 8
+ * py[8] pz[8] nx[8] ny[8] nz[8] (48 floats), and per influence one array of weights and one of row
+ * offsets {@code 8 * joint}, in point order: each pass below then reads its inputs as sequential
+ * streams, which the hardware prefetchers follow (with all of a block's data in one record, the
+ * first pass touched every record at a stride and paid memory latency at 1M points). A block starts at a point index that is a multiple of 8
  * ({@link #rangeAlignment()}); points of a range outside whole blocks go through the scalar kernel.
  *
  * <p><b>No gathers.</b> Per block and influence the 8 joints' dual quaternions are loaded as 8 rows
  * of 8 floats and transposed in registers (three stages of permute + blend, 48 operations), which
  * is cheaper than 8 gathers on the AMD machines we measured.
  *
- * <p><b>Passes.</b> C2 stops inlining Vector API calls in a method beyond a node budget, and a
- * call that is not inlined boxes every vector; so the work for up to {@link #CHUNK} blocks is cut
+ * <p><b>Passes.</b> C2 stops inlining calls of our own methods beyond a node budget (Vector API
+ * methods are force-inlined), and a call that is not inlined boxes every vector; one loop doing
+ * everything per block also measured 1.7x slower (register pressure). So the work for up to
+ * {@link #CHUNK} blocks is cut
  * into small loops that meet in a per-thread scratch array that stays in L1: one per influence
  * (transpose, antipodality sign, weighted sum), apply (normalise, rotate, translate), interleave (lanes back
  * to x y z x y z ...).
@@ -49,8 +53,8 @@ import org.skinlab.skinning.SkinningMethod;
 final class VectorDqsSkinner implements Skinner {
     static final int INFLUENCES = 4;
     static final int BLOCK = 8;
-    /** Floats per block in {@link #blocks}. */
-    private static final int BLOCK_FLOATS = 80;
+    /** Floats per block in {@link #points}: px py pz nx ny nz, 8 lanes each. */
+    private static final int BLOCK_FLOATS = 48;
     /** Blocks per pass; the scratch holds 96 floats per block (blended dq, pivot real part / results). */
     static final int CHUNK = 32;
     private static final int SCRATCH = 96;
@@ -59,8 +63,10 @@ final class VectorDqsSkinner implements Skinner {
     private final NormalTransform normals;
     private final ScalarDqsSkinner scalar;
     private final int blockCount;
-    private final float[] blocks;
-    private final int[] rows;
+    private final float[] points;
+    /** Per influence k, per point (in block order): its weight, and 8 * its joint. */
+    private final float[][] weightLanes;
+    private final int[][] rowOffsets;
     private final int jointCount;
     private final ThreadLocal<float[]> scratch = ThreadLocal.withInitial(() -> new float[CHUNK * SCRATCH]);
 
@@ -78,19 +84,20 @@ final class VectorDqsSkinner implements Skinner {
         float[] nrm = geometry.normalArray();
         int[] joints = geometry.jointArray();
         float[] weights = geometry.weightArray();
-        blocks = new float[BLOCK_FLOATS * blockCount];
-        rows = new int[INFLUENCES * BLOCK * blockCount];
-        for (int i = 0; i < BLOCK * blockCount; i++) {
+        int n = BLOCK * blockCount;
+        points = new float[BLOCK_FLOATS * blockCount];
+        weightLanes = new float[INFLUENCES][n];
+        rowOffsets = new int[INFLUENCES][n];
+        for (int i = 0; i < n; i++) {
             int o = BLOCK_FLOATS * (i / BLOCK) + i % BLOCK;
             for (int c = 0; c < 3; c++) {
-                blocks[o + BLOCK * c] = pos[3 * i + c];
-                blocks[o + BLOCK * (3 + c)] = nrm[3 * i + c];
+                points[o + BLOCK * c] = pos[3 * i + c];
+                points[o + BLOCK * (3 + c)] = nrm[3 * i + c];
             }
-            int r = INFLUENCES * BLOCK * (i / BLOCK) + i % BLOCK;
             for (int k = 0; k < INFLUENCES; k++) {
                 // Padding: weight 0 on the pivot joint adds +-0.
-                blocks[o + BLOCK * (6 + k)] = k < width ? weights[width * i + k] : 0f;
-                rows[r + BLOCK * k] = 8 * joints[width * i + (k < width ? k : 0)];
+                weightLanes[k][i] = k < width ? weights[width * i + k] : 0f;
+                rowOffsets[k][i] = 8 * joints[width * i + (k < width ? k : 0)];
             }
         }
     }
@@ -157,11 +164,11 @@ final class VectorDqsSkinner implements Skinner {
      * the halves, each a permute and a blend per output.
      */
     private void pivot(float[] dq, float[] s, int firstBlock, int endBlock) {
-        final float[] blk = blocks;
-        final int[] row = rows;
+        final float[] wk = weightLanes[0];
+        final int[] row = rowOffsets[0];
         for (int b = firstBlock; b < endBlock; b++) {
             int so = SCRATCH * (b - firstBlock);
-            int o = INFLUENCES * BLOCK * b;
+            int o = BLOCK * b;
             FloatVector r0 = FloatVector.fromArray(S, dq, row[o]);
             FloatVector r1 = FloatVector.fromArray(S, dq, row[o + 1]);
             FloatVector r2 = FloatVector.fromArray(S, dq, row[o + 2]);
@@ -197,7 +204,7 @@ final class VectorDqsSkinner implements Skinner {
             FloatVector t6 = c2.rearrange(SWAP).blend(c6, HI);
             FloatVector t3 = c3.blend(c7.rearrange(SWAP), HI);
             FloatVector t7 = c3.rearrange(SWAP).blend(c7, HI);
-            FloatVector w = FloatVector.fromArray(S, blk, BLOCK_FLOATS * b + BLOCK * 6);
+            FloatVector w = FloatVector.fromArray(S, wk, o);
             t0.intoArray(s, so + 64);
             t1.intoArray(s, so + 72);
             t2.intoArray(s, so + 80);
@@ -218,11 +225,11 @@ final class VectorDqsSkinner implements Skinner {
      * scratch. One influence per pass keeps the method within C2's inlining budget.
      */
     private void accumulate(float[] dq, float[] s, int firstBlock, int endBlock, int k) {
-        final float[] blk = blocks;
-        final int[] row = rows;
+        final float[] wk = weightLanes[k];
+        final int[] row = rowOffsets[k];
         for (int b = firstBlock; b < endBlock; b++) {
             int so = SCRATCH * (b - firstBlock);
-            int o = INFLUENCES * BLOCK * b + BLOCK * k;
+            int o = BLOCK * b;
             FloatVector r0 = FloatVector.fromArray(S, dq, row[o]);
             FloatVector r1 = FloatVector.fromArray(S, dq, row[o + 1]);
             FloatVector r2 = FloatVector.fromArray(S, dq, row[o + 2]);
@@ -258,7 +265,7 @@ final class VectorDqsSkinner implements Skinner {
             FloatVector t6 = c2.rearrange(SWAP).blend(c6, HI);
             FloatVector t3 = c3.blend(c7.rearrange(SWAP), HI);
             FloatVector t7 = c3.rearrange(SWAP).blend(c7, HI);
-            FloatVector w = FloatVector.fromArray(S, blk, BLOCK_FLOATS * b + BLOCK * (6 + k));
+            FloatVector w = FloatVector.fromArray(S, wk, o);
             FloatVector dot = FloatVector.fromArray(S, s, so + 64).mul(t0)
                     .add(FloatVector.fromArray(S, s, so + 72).mul(t1))
                     .add(FloatVector.fromArray(S, s, so + 80).mul(t2))
@@ -286,7 +293,7 @@ final class VectorDqsSkinner implements Skinner {
      * normal rotated the same way. Results (px py pz nx ny nz, 8 lanes each) go to scratch 0..47.
      */
     private void apply(float[] s, int firstBlock, int endBlock) {
-        final float[] blk = blocks;
+        final float[] blk = points;
         final FloatVector one = FloatVector.broadcast(S, 1f);
         for (int b = firstBlock; b < endBlock; b++) {
             int so = SCRATCH * (b - firstBlock);
