@@ -1,29 +1,62 @@
 package org.skinlab.skinning;
 
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.concurrent.atomic.AtomicReference;
 import java.util.concurrent.locks.LockSupport;
 
 /**
- * Runs any {@link Skinner} over several threads: {@link #skin} cuts its range into one part per
- * thread, at multiples of the kernel's {@link Skinner#rangeAlignment()}, hands all parts but the
- * first to a small persistent pool and does the first itself, then waits for the others. Plain
- * Java (Android-safe).
+ * Runs any {@link Skinner} over several threads: {@link #skin} cuts its range into a few chunks
+ * per thread, starting at multiples of the kernel's {@link Skinner#rangeAlignment()}, and the
+ * calling thread and a small persistent pool take chunks from a shared counter until none is left.
+ * Plain Java (Android-safe).
  *
- * <p>Per frame it allocates nothing and starts no thread: each worker owns one slot whose fields
- * carry the call's arguments; publishing is a volatile write of a generation counter. A worker
- * spins briefly on that counter ({@link Thread#onSpinWait()}; a frame's handoff is microseconds
- * apart when animating) and then parks, and the caller unparks it only if it parked. The caller
- * waits for the others the same way (spin, then yield). Results are identical to the single-thread
- * kernel's, bit for bit: every point is computed by the same code, only on another thread.
+ * <p><b>Why chunks, not one part per thread.</b> On a shared machine a pool thread may not get a
+ * core for milliseconds; with fixed parts the frame would wait for it. Here the caller simply
+ * takes the chunks nobody took: a late worker costs at most the chunk it holds, and a frame never
+ * takes longer than on one thread by more than that.
  *
- * <p>One caller at a time: {@code skin} is not reentrant across threads (its slots are shared),
- * unlike the kernels it wraps. The workers are daemon threads; {@link #close()} stops them.
+ * <p><b>Per frame</b> nothing is allocated and no thread started: the call's arguments go into
+ * fields, published by the volatile write of a claim word that holds the frame's generation in
+ * its high half and the next chunk in its low half. A worker claims chunks by compare-and-set
+ * only while the generation is the one it saw, so a worker that wakes late cannot take a chunk of
+ * a later frame with the arguments of an earlier one. Workers spin briefly ({@link
+ * Thread#onSpinWait()}: frames are microseconds apart while animating), then park, and are
+ * unparked only if they parked. The caller waits until every chunk is done (spin, then yield).
+ *
+ * <p>Results are identical to the single-thread kernel's when the kernel's results do not depend
+ * on how a mesh is cut into ranges at its alignment (true of the kernels in this project).
+ *
+ * <p>One caller at a time: {@code skin} must not be called concurrently on one instance (the
+ * kernels it wraps may be). Workers are daemon threads; {@link #close()} stops them.
  */
 public final class ParallelSkinner implements Skinner, AutoCloseable {
-    /** Spins before a waiting thread parks (worker) or yields (caller); about 10-50 µs. */
+    /** Spins before a waiting thread parks (worker) or yields (caller); some tens of µs. */
     private static final int SPIN = 20_000;
+    /** Chunks per thread: enough to even out a late start, few enough to keep per-call costs small. */
+    private static final int CHUNKS_PER_THREAD = 4;
+    /** Points below which a chunk is not worth a handoff. */
+    private static final int MIN_CHUNK = 2048;
 
     private final Skinner kernel;
-    private final Worker[] workers;
+    private final Thread[] workers;
+    private final int alignment;
+
+    // The frame being skinned: written by the caller before the claim word is published.
+    private JointPalette palette;
+    private float[] outPositions;
+    private float[] outNormals;
+    private int from;
+    private int to;
+    private int chunkSize;
+    private int chunkCount;
+
+    /** Generation (high 32 bits) and next unclaimed chunk (low 32 bits). */
+    private final AtomicLong claim = new AtomicLong();
+    private final AtomicInteger completed = new AtomicInteger();
+    private final AtomicReference<Throwable> failure = new AtomicReference<>();
+    private final AtomicInteger parked = new AtomicInteger();
+    private int generation;
     private volatile boolean closed;
 
     /**
@@ -36,10 +69,12 @@ public final class ParallelSkinner implements Skinner, AutoCloseable {
             throw new IllegalArgumentException("threads must be at least 1, was " + threads);
         }
         this.kernel = kernel;
-        this.workers = new Worker[threads - 1];
+        this.alignment = Math.max(1, kernel.rangeAlignment());
+        this.workers = new Thread[threads - 1];
         for (int i = 0; i < workers.length; i++) {
-            workers[i] = new Worker(kernel, "skinlab-skinning-" + (i + 1));
-            workers[i].thread.start();
+            workers[i] = new Thread(this::work, "skinlab-skinning-" + (i + 1));
+            workers[i].setDaemon(true);
+            workers[i].start();
         }
     }
 
@@ -74,155 +109,138 @@ public final class ParallelSkinner implements Skinner, AutoCloseable {
     }
 
     @Override
-    public void skin(JointPalette palette, float[] outPositions, float[] outNormals, int from, int to) {
+    public void skin(JointPalette p, float[] positions, float[] normals, int start, int end) {
         if (closed) {
             throw new IllegalStateException("ParallelSkinner is closed");
         }
-        int parts = workers.length + 1;
-        if (parts == 1 || to - from < 2L * parts * kernel.rangeAlignment()) {
-            kernel.skin(palette, outPositions, outNormals, from, to);
+        int n = end - start;
+        int chunks = Math.min(threads() * CHUNKS_PER_THREAD, n / MIN_CHUNK);
+        if (workers.length == 0 || chunks < 2) {
+            kernel.skin(p, positions, normals, start, end);
             return;
         }
-        int firstEnd = boundary(from, to, 1, parts);
-        for (int i = 1; i < parts; i++) {
-            workers[i - 1].start(palette, outPositions, outNormals, boundary(from, to, i, parts),
-                    boundary(from, to, i + 1, parts));
-        }
-        Throwable failure = null;
-        try {
-            kernel.skin(palette, outPositions, outNormals, from, firstEnd);
-        } catch (RuntimeException | Error e) {
-            failure = e;
-        }
-        for (Worker w : workers) {
-            Throwable t = w.await();
-            if (failure == null) {
-                failure = t;
+        int size = (n + chunks - 1) / chunks;
+        size = (size + alignment - 1) / alignment * alignment;
+        palette = p;
+        outPositions = positions;
+        outNormals = normals;
+        from = start;
+        to = end;
+        chunkSize = size;
+        // Chunk c starts at the first multiple of the alignment at or after from + c * size.
+        chunkCount = (int) ((end - firstBoundary(start) + size - 1) / size);
+        completed.set(0);
+        failure.set(null);
+        generation++;
+        claim.set((long) generation << 32); // publishes the fields above
+        if (parked.get() > 0) {
+            for (Thread w : workers) {
+                LockSupport.unpark(w);
             }
         }
-        if (failure instanceof RuntimeException) {
-            throw (RuntimeException) failure;
+        int done = runChunks(generation, true);
+        for (int spins = 0; completed.get() + done < chunkCount; spins++) {
+            if (spins < SPIN) {
+                Thread.onSpinWait();
+            } else {
+                Thread.yield();
+            }
         }
-        if (failure instanceof Error) {
-            throw (Error) failure;
+        palette = null;
+        Throwable t = failure.get();
+        if (t instanceof RuntimeException) {
+            throw (RuntimeException) t;
+        }
+        if (t instanceof Error) {
+            throw (Error) t;
         }
     }
 
-    /** Start of part {@code i} of {@code parts}: an even split, rounded up to the kernel's alignment. */
-    private int boundary(int from, int to, int i, int parts) {
-        if (i >= parts) {
-            return to;
-        }
-        long even = from + (long) (to - from) * i / parts;
-        int align = kernel.rangeAlignment();
-        long aligned = (even + align - 1) / align * align;
-        return (int) Math.max(from, Math.min(to, aligned));
+    /** The first chunk boundary after {@code start}: aligned absolute index (blocks are absolute). */
+    private long firstBoundary(int start) {
+        return (long) start / alignment * alignment;
     }
 
-    /** Stops the worker threads (waiting for them); skinning afterwards throws. */
+    /** Chunk c's range: [bound(c), bound(c + 1)) clipped to [from, to). */
+    private int bound(int c) {
+        long b = firstBoundary(from) + (long) c * chunkSize;
+        return (int) Math.max(from, Math.min(to, b));
+    }
+
+    /**
+     * Takes and runs chunks of frame {@code gen} until none is left. The caller counts its own
+     * chunks (returned); a worker adds each to {@link #completed}, after its outputs are written.
+     */
+    private int runChunks(int gen, boolean caller) {
+        int ran = 0;
+        while (true) {
+            long c = claim.get();
+            if ((int) (c >>> 32) != gen || (int) c >= chunkCount) {
+                return ran;
+            }
+            if (!claim.compareAndSet(c, c + 1)) {
+                continue;
+            }
+            int chunk = (int) c;
+            try {
+                kernel.skin(palette, outPositions, outNormals, bound(chunk), bound(chunk + 1));
+            } catch (RuntimeException | Error e) {
+                failure.compareAndSet(null, e);
+            }
+            if (caller) {
+                ran++;
+            } else {
+                completed.incrementAndGet();
+            }
+        }
+    }
+
+    private void work() {
+        int seen = 0;
+        while (!closed) {
+            int gen = (int) (claim.get() >>> 32);
+            if (gen == seen) {
+                waitForFrame(seen);
+                continue;
+            }
+            seen = gen;
+            runChunks(gen, false);
+        }
+    }
+
+    private void waitForFrame(int seen) {
+        for (int spins = 0; (int) (claim.get() >>> 32) == seen && !closed; spins++) {
+            if (spins < SPIN) {
+                Thread.onSpinWait();
+            } else {
+                parked.incrementAndGet();
+                // Re-check after announcing: a frame published before the increment would
+                // otherwise find no one to unpark (lost wake-up).
+                if ((int) (claim.get() >>> 32) == seen && !closed) {
+                    LockSupport.park(this);
+                }
+                parked.decrementAndGet();
+                spins = 0;
+            }
+        }
+    }
+
+    /** Stops the worker threads (waiting up to a second for each); skinning afterwards throws. */
     @Override
     public void close() {
         if (closed) {
             return;
         }
         closed = true;
-        for (Worker w : workers) {
-            w.stop();
+        for (Thread w : workers) {
+            LockSupport.unpark(w);
         }
-        for (Worker w : workers) {
+        for (Thread w : workers) {
             try {
-                w.thread.join(1000);
+                w.join(1000);
             } catch (InterruptedException e) {
                 Thread.currentThread().interrupt();
                 return;
-            }
-        }
-    }
-
-    /** One pool thread and its slot: the arguments of the part it runs this frame. */
-    private static final class Worker implements Runnable {
-        final Thread thread;
-        private final Skinner kernel;
-        // Written by the caller before the volatile write of 'requested', read by the worker after
-        // its volatile read (happens-before through 'requested'); the same for 'failure' and 'done'.
-        private JointPalette palette;
-        private float[] outPositions;
-        private float[] outNormals;
-        private int from;
-        private int to;
-        private Throwable failure;
-        private volatile int requested;
-        private volatile int done;
-        private volatile boolean parked;
-        private volatile boolean stop;
-
-        Worker(Skinner kernel, String name) {
-            this.kernel = kernel;
-            this.thread = new Thread(this, name);
-            thread.setDaemon(true);
-        }
-
-        void start(JointPalette p, float[] positions, float[] normals, int f, int t) {
-            palette = p;
-            outPositions = positions;
-            outNormals = normals;
-            from = f;
-            to = t;
-            requested = requested + 1;
-            if (parked) {
-                LockSupport.unpark(thread);
-            }
-        }
-
-        /** Waits for the part started last; its exception, or null. */
-        Throwable await() {
-            int target = requested;
-            for (int spins = 0; done != target; spins++) {
-                if (spins < SPIN) {
-                    Thread.onSpinWait();
-                } else {
-                    Thread.yield();
-                }
-            }
-            Throwable t = failure;
-            failure = null;
-            palette = null;
-            return t;
-        }
-
-        void stop() {
-            stop = true;
-            LockSupport.unpark(thread);
-        }
-
-        @Override
-        public void run() {
-            int seen = 0;
-            while (true) {
-                int spins = 0;
-                while (requested == seen) {
-                    if (stop) {
-                        return;
-                    }
-                    if (spins++ < SPIN) {
-                        Thread.onSpinWait();
-                    } else {
-                        parked = true;
-                        // Re-check after announcing: a request published before 'parked' was set
-                        // would otherwise find no one to unpark (lost wake-up).
-                        if (requested == seen && !stop) {
-                            LockSupport.park(this);
-                        }
-                        parked = false;
-                    }
-                }
-                seen = requested;
-                try {
-                    kernel.skin(palette, outPositions, outNormals, from, to);
-                } catch (RuntimeException | Error e) {
-                    failure = e;
-                }
-                done = seen;
             }
         }
     }

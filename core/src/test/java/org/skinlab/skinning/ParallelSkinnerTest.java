@@ -50,18 +50,20 @@ class ParallelSkinnerTest {
     @Test
     void givesBitIdenticalResultsToOneThreadForEveryMethodAndThreadCount() {
         // Each point is computed by the same kernel code whichever thread runs it: equal bits.
-        SkinnedGeometry g = geometry(1001);
+        // 10007 points: chunks of at least 2048 points, so 2 to 4 threads really split it.
+        int points = 10007;
+        SkinnedGeometry g = geometry(points);
         JointPalette palette = palette();
         for (SkinningMethod m : SkinningMethod.values()) {
             Skinner kernel = Skinners.scalar(m, g, NormalTransform.INVERSE_TRANSPOSE);
-            float[] p1 = new float[3 * 1001];
-            float[] n1 = new float[3 * 1001];
+            float[] p1 = new float[3 * points];
+            float[] n1 = new float[3 * points];
             kernel.skinAll(palette, p1, n1);
             for (int threads = 1; threads <= 4; threads++) {
                 try (ParallelSkinner parallel = new ParallelSkinner(kernel, threads)) {
                     for (int frame = 0; frame < 50; frame++) { // many handoffs: spin and park paths
-                        float[] p = new float[3 * 1001];
-                        float[] n = new float[3 * 1001];
+                        float[] p = new float[3 * points];
+                        float[] n = new float[3 * points];
                         parallel.skinAll(palette, p, n);
                         assertArrayEquals(p1, p, m + ", " + threads + " threads, frame " + frame);
                         assertArrayEquals(n1, n, m + ", " + threads + " threads, frame " + frame);
@@ -76,6 +78,7 @@ class ParallelSkinnerTest {
         final List<int[]> ranges = Collections.synchronizedList(new ArrayList<>());
         final SkinnedGeometry geometry;
         final int alignment;
+        int throwAt = -1;
 
         Recorder(SkinnedGeometry geometry, int alignment) {
             this.geometry = geometry;
@@ -100,8 +103,8 @@ class ParallelSkinnerTest {
         @Override
         public void skin(JointPalette palette, float[] outPositions, float[] outNormals, int from, int to) {
             ranges.add(new int[] {from, to});
-            if (to - from == 13) {
-                throw new IllegalStateException("range of 13");
+            if (from <= throwAt && throwAt < to) {
+                throw new IllegalStateException("point 50000");
             }
         }
 
@@ -120,7 +123,7 @@ class ParallelSkinnerTest {
     void partsCoverTheRangeOnceAndStartOnTheKernelsAlignment() {
         SkinnedGeometry g = geometry(10);
         for (int threads = 2; threads <= 3; threads++) {
-            for (int[] range : new int[][] {{0, 1000}, {3, 997}, {5, 100}, {0, 17}, {8, 9}}) {
+            for (int[] range : new int[][] {{0, 100_000}, {3, 99_997}, {5, 9000}, {0, 17}, {8, 9}, {4095, 8193}}) {
                 Recorder k = new Recorder(g, 8);
                 try (ParallelSkinner parallel = new ParallelSkinner(k, threads)) {
                     parallel.skin(null, null, null, range[0], range[1]);
@@ -131,22 +134,28 @@ class ParallelSkinnerTest {
                 for (int[] p : parts) {
                     assertEquals(next, p[0], "parts are contiguous: " + describe(parts));
                     assertTrue(p[0] == range[0] || p[0] % 8 == 0, "inner boundaries are aligned: " + describe(parts));
+                    assertTrue(p[1] > p[0], "no empty parts: " + describe(parts));
                     next = p[1];
                 }
                 assertEquals(range[1], next, describe(parts));
+                assertEquals(range[1] - range[0] >= 2 * 2048 ? Math.min(4 * threads, (range[1] - range[0]) / 2048) : 1,
+                        parts.size(), "chunks: " + describe(parts));
             }
         }
     }
 
     @Test
-    void aWorkersExceptionReachesTheCaller() {
+    void anExceptionInAnyChunkReachesTheCaller() {
         Recorder k = new Recorder(geometry(10), 1);
+        k.throwAt = 50_000;
         try (ParallelSkinner parallel = new ParallelSkinner(k, 2)) {
-            // 0..26: the worker gets [13, 26), a range of 13, and throws.
-            IllegalStateException e = assertThrows(IllegalStateException.class,
-                    () -> parallel.skin(null, null, null, 0, 26));
-            assertEquals("range of 13", e.getMessage());
-            parallel.skin(null, null, null, 0, 30); // the pool still works afterwards
+            // Whichever thread runs the chunk holding point 50000, the call throws its exception.
+            for (int i = 0; i < 20; i++) {
+                IllegalStateException e = assertThrows(IllegalStateException.class,
+                        () -> parallel.skin(null, null, null, 0, 100_000));
+                assertEquals("point 50000", e.getMessage());
+            }
+            parallel.skin(null, null, null, 60_000, 100_000); // the pool still works afterwards
         }
     }
 

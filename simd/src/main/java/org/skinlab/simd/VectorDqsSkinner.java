@@ -25,8 +25,8 @@ import org.skinlab.skinning.SkinningMethod;
  * same arithmetic as {@link ScalarDqsSkinner} written once per lane.
  *
  * <p><b>Layout.</b> The constructor repacks the geometry into blocks of 8 points (AoSoA): px[8]
- * py[8] pz[8] nx[8] ny[8] nz[8] (48 floats), and per influence one array of weights and one of row
- * offsets {@code 8 * joint}, in point order: each pass below then reads its inputs as sequential
+ * py[8] pz[8] nx[8] ny[8] nz[8] (48 floats), and per influence one array of weights and one of
+ * joints, in point order: each pass below then reads its inputs as sequential
  * streams, which the hardware prefetchers follow (with all of a block's data in one record, the
  * first pass touched every record at a stride and paid memory latency at 1M points). A block starts at a point index that is a multiple of 8
  * ({@link #rangeAlignment()}); points of a range outside whole blocks go through the scalar kernel.
@@ -64,9 +64,9 @@ final class VectorDqsSkinner implements Skinner {
     private final ScalarDqsSkinner scalar;
     private final int blockCount;
     private final float[] points;
-    /** Per influence k, per point (in block order): its weight, and 8 * its joint. */
+    /** Per influence k, per point (in block order): its weight, and its joint (char: up to 65536). */
     private final float[][] weightLanes;
-    private final int[][] rowOffsets;
+    private final char[][] rowJoints;
     private final int jointCount;
     private final ThreadLocal<float[]> scratch = ThreadLocal.withInitial(() -> new float[CHUNK * SCRATCH]);
 
@@ -87,7 +87,7 @@ final class VectorDqsSkinner implements Skinner {
         int n = BLOCK * blockCount;
         points = new float[BLOCK_FLOATS * blockCount];
         weightLanes = new float[INFLUENCES][n];
-        rowOffsets = new int[INFLUENCES][n];
+        rowJoints = new char[INFLUENCES][n];
         for (int i = 0; i < n; i++) {
             int o = BLOCK_FLOATS * (i / BLOCK) + i % BLOCK;
             for (int c = 0; c < 3; c++) {
@@ -97,7 +97,7 @@ final class VectorDqsSkinner implements Skinner {
             for (int k = 0; k < INFLUENCES; k++) {
                 // Padding: weight 0 on the pivot joint adds +-0.
                 weightLanes[k][i] = k < width ? weights[width * i + k] : 0f;
-                rowOffsets[k][i] = 8 * joints[width * i + (k < width ? k : 0)];
+                rowJoints[k][i] = (char) joints[width * i + (k < width ? k : 0)];
             }
         }
     }
@@ -165,18 +165,18 @@ final class VectorDqsSkinner implements Skinner {
      */
     private void pivot(float[] dq, float[] s, int firstBlock, int endBlock) {
         final float[] wk = weightLanes[0];
-        final int[] row = rowOffsets[0];
+        final char[] row = rowJoints[0];
         for (int b = firstBlock; b < endBlock; b++) {
             int so = SCRATCH * (b - firstBlock);
             int o = BLOCK * b;
-            FloatVector r0 = FloatVector.fromArray(S, dq, row[o]);
-            FloatVector r1 = FloatVector.fromArray(S, dq, row[o + 1]);
-            FloatVector r2 = FloatVector.fromArray(S, dq, row[o + 2]);
-            FloatVector r3 = FloatVector.fromArray(S, dq, row[o + 3]);
-            FloatVector r4 = FloatVector.fromArray(S, dq, row[o + 4]);
-            FloatVector r5 = FloatVector.fromArray(S, dq, row[o + 5]);
-            FloatVector r6 = FloatVector.fromArray(S, dq, row[o + 6]);
-            FloatVector r7 = FloatVector.fromArray(S, dq, row[o + 7]);
+            FloatVector r0 = FloatVector.fromArray(S, dq, row[o] << 3);
+            FloatVector r1 = FloatVector.fromArray(S, dq, row[o + 1] << 3);
+            FloatVector r2 = FloatVector.fromArray(S, dq, row[o + 2] << 3);
+            FloatVector r3 = FloatVector.fromArray(S, dq, row[o + 3] << 3);
+            FloatVector r4 = FloatVector.fromArray(S, dq, row[o + 4] << 3);
+            FloatVector r5 = FloatVector.fromArray(S, dq, row[o + 5] << 3);
+            FloatVector r6 = FloatVector.fromArray(S, dq, row[o + 6] << 3);
+            FloatVector r7 = FloatVector.fromArray(S, dq, row[o + 7] << 3);
             // a_i: components (0 2 4 6) or (1 3 5 7) of two points, interleaved
             FloatVector a0 = r0.blend(r1.rearrange(RIGHT1), ODD);
             FloatVector a1 = r0.rearrange(LEFT1).blend(r1, ODD);
@@ -226,18 +226,18 @@ final class VectorDqsSkinner implements Skinner {
      */
     private void accumulate(float[] dq, float[] s, int firstBlock, int endBlock, int k) {
         final float[] wk = weightLanes[k];
-        final int[] row = rowOffsets[k];
+        final char[] row = rowJoints[k];
         for (int b = firstBlock; b < endBlock; b++) {
             int so = SCRATCH * (b - firstBlock);
             int o = BLOCK * b;
-            FloatVector r0 = FloatVector.fromArray(S, dq, row[o]);
-            FloatVector r1 = FloatVector.fromArray(S, dq, row[o + 1]);
-            FloatVector r2 = FloatVector.fromArray(S, dq, row[o + 2]);
-            FloatVector r3 = FloatVector.fromArray(S, dq, row[o + 3]);
-            FloatVector r4 = FloatVector.fromArray(S, dq, row[o + 4]);
-            FloatVector r5 = FloatVector.fromArray(S, dq, row[o + 5]);
-            FloatVector r6 = FloatVector.fromArray(S, dq, row[o + 6]);
-            FloatVector r7 = FloatVector.fromArray(S, dq, row[o + 7]);
+            FloatVector r0 = FloatVector.fromArray(S, dq, row[o] << 3);
+            FloatVector r1 = FloatVector.fromArray(S, dq, row[o + 1] << 3);
+            FloatVector r2 = FloatVector.fromArray(S, dq, row[o + 2] << 3);
+            FloatVector r3 = FloatVector.fromArray(S, dq, row[o + 3] << 3);
+            FloatVector r4 = FloatVector.fromArray(S, dq, row[o + 4] << 3);
+            FloatVector r5 = FloatVector.fromArray(S, dq, row[o + 5] << 3);
+            FloatVector r6 = FloatVector.fromArray(S, dq, row[o + 6] << 3);
+            FloatVector r7 = FloatVector.fromArray(S, dq, row[o + 7] << 3);
             // a_i: components (0 2 4 6) or (1 3 5 7) of two points, interleaved
             FloatVector a0 = r0.blend(r1.rearrange(RIGHT1), ODD);
             FloatVector a1 = r0.rearrange(LEFT1).blend(r1, ODD);

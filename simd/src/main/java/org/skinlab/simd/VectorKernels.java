@@ -11,6 +11,8 @@ import org.skinlab.skinning.SkinningMethod;
 final class VectorKernels {
     /** Influences per point the kernels take (fewer are padded with weight 0). */
     static final int MAX_INFLUENCES = 4;
+    /** Joints the kernels index (stored as char). */
+    static final int MAX_JOINTS = 65536;
 
     private VectorKernels() {
     }

@@ -12,7 +12,6 @@ import jdk.incubator.vector.VectorShuffle;
 
 import org.skinlab.skinning.JointPalette;
 import org.skinlab.skinning.NormalTransform;
-import org.skinlab.skinning.ScalarLbsSkinner;
 import org.skinlab.skinning.SkinnedGeometry;
 import org.skinlab.skinning.Skinner;
 import org.skinlab.skinning.SkinningMethod;
@@ -30,13 +29,14 @@ import org.skinlab.skinning.SkinningMethod;
  *     {@code [c0|c1] * [px px px px | py py py py] + [c2|c3] * [pz.. | 1..]} and the sum of the two
  *     halves;</li>
  * <li>the geometry is repacked once, in the constructor, into one stream of 12 floats per point
- *     ({@code px py pz 1 nx ny nz 0 w0 w1 w2 w3}) plus one of joint offsets, so a point's
+ *     ({@code px py pz 1 nx ny nz 0 w0 w1 w2 w3}) plus one of joint indices (char), so a point's
  *     broadcast operands are one vector load and four lane permutations.</li>
  * </ul>
  *
  * <p>Each point's result is written with one 8-lane store at {@code 3 * point}, whose last five
  * lanes spill into the next points and are overwritten when those are done; the last two points
- * of a range therefore go through the scalar kernel, so a range never writes outside itself.
+ * of a range therefore go through a scratch array, so a range never writes outside itself (and
+ * the results do not depend on how a mesh is split into ranges).
  * Geometries with up to 4 influences per point are padded to 4 with weight 0.
  */
 final class VectorLbsSkinner implements Skinner {
@@ -51,11 +51,12 @@ final class VectorLbsSkinner implements Skinner {
 
     private final SkinnedGeometry geometry;
     private final NormalTransform normals;
-    private final ScalarLbsSkinner scalar;
     private final float[] points;
-    private final int[] offsets;
+    /** Palette joint per influence (4 per point; char: joint counts up to 65536). */
+    private final char[] joints;
     private final int jointCount;
     private final ThreadLocal<float[]> columns;
+    private final ThreadLocal<float[]> lastPointScratch = ThreadLocal.withInitial(() -> new float[16]);
 
     VectorLbsSkinner(SkinnedGeometry geometry, NormalTransform normals) {
         int width = geometry.influencesPerPoint();
@@ -64,7 +65,6 @@ final class VectorLbsSkinner implements Skinner {
         }
         this.geometry = geometry;
         this.normals = normals;
-        this.scalar = new ScalarLbsSkinner(geometry, normals);
         this.jointCount = geometry.jointCount();
         int n = geometry.pointCount();
         float[] pos = geometry.positionArray();
@@ -72,7 +72,7 @@ final class VectorLbsSkinner implements Skinner {
         int[] joints = geometry.jointArray();
         float[] weights = geometry.weightArray();
         points = new float[STRIDE * n];
-        offsets = new int[INFLUENCES * n];
+        this.joints = new char[INFLUENCES * n];
         for (int i = 0; i < n; i++) {
             int o = STRIDE * i;
             points[o] = pos[3 * i];
@@ -85,7 +85,7 @@ final class VectorLbsSkinner implements Skinner {
             for (int k = 0; k < INFLUENCES; k++) {
                 // Padding: weight 0 on the first joint adds exactly nothing.
                 points[o + 8 + k] = k < width ? weights[width * i + k] : 0f;
-                offsets[INFLUENCES * i + k] = 16 * joints[width * i + (k < width ? k : 0)];
+                this.joints[INFLUENCES * i + k] = (char) joints[width * i + (k < width ? k : 0)];
             }
         }
         int size = 16 * jointCount;
@@ -114,18 +114,35 @@ final class VectorLbsSkinner implements Skinner {
 
     @Override
     public void skin(JointPalette palette, float[] outPositions, float[] outNormals, int from, int to) {
-        if (to - from < 3) {
-            scalar.skin(palette, outPositions, outNormals, from, to);
-            return;
-        }
         float[] c = columnMajor(palette);
-        int end = to - 2;
+        int end = Math.max(from, to - 2);
         if (normals == NormalTransform.BLENDED_MATRIX) {
             blendedNormals(c, outPositions, outNormals, from, end);
         } else {
             exactNormals(c, outPositions, outNormals, from, end);
         }
-        scalar.skin(palette, outPositions, outNormals, end, to);
+        for (int i = end; i < to; i++) {
+            lastPoint(c, outPositions, outNormals, i);
+        }
+    }
+
+    /**
+     * One point with the loops' arithmetic, written lane by lane (no spill past the point): so a
+     * range's last points, and therefore any split of a mesh into ranges, give the same bits as
+     * one range. Slow (lane extraction, boxed vectors when not inlined), used for two points per
+     * range.
+     */
+    private void lastPoint(float[] c, float[] outPositions, float[] outNormals, int i) {
+        float[] tmp = lastPointScratch.get();
+        int v = 3 * i;
+        if (normals == NormalTransform.BLENDED_MATRIX) {
+            // The loop writes [v, v + 8) of both arrays; here it writes a scratch copy instead.
+            blendedNormals(c, tmp, tmp, i, i + 1, -v, 8 - v);
+        } else {
+            exactNormals(c, tmp, tmp, i, i + 1, -v, 8 - v);
+        }
+        System.arraycopy(tmp, 0, outPositions, v, 3);
+        System.arraycopy(tmp, 8, outNormals, v, 3);
     }
 
     /** This thread's copy of the palette as column-major 4x4 blocks (row 3 zero). */
@@ -156,15 +173,21 @@ final class VectorLbsSkinner implements Skinner {
     }
 
     private void blendedNormals(float[] c, float[] outPositions, float[] outNormals, int from, int end) {
+        blendedNormals(c, outPositions, outNormals, from, end, 0, 0);
+    }
+
+    /** The loop; point i's results go to {@code 3 i + positionShift} and {@code 3 i + normalShift}. */
+    private void blendedNormals(float[] c, float[] outPositions, float[] outNormals, int from, int end,
+            int positionShift, int normalShift) {
         final float[] pts = points;
-        final int[] off = offsets;
+        final char[] off = joints;
         for (int i = from; i < end; i++) {
             int o = STRIDE * i;
             int q = INFLUENCES * i;
-            int m0 = off[q];
-            int m1 = off[q + 1];
-            int m2 = off[q + 2];
-            int m3 = off[q + 3];
+            int m0 = off[q] << 4;
+            int m1 = off[q + 1] << 4;
+            int m2 = off[q + 2] << 4;
+            int m3 = off[q + 3] << 4;
             FloatVector w0 = FloatVector.broadcast(S, pts[o + 8]);
             FloatVector w1 = FloatVector.broadcast(S, pts[o + 9]);
             FloatVector w2 = FloatVector.broadcast(S, pts[o + 10]);
@@ -180,8 +203,8 @@ final class VectorLbsSkinner implements Skinner {
             FloatVector r = FloatVector.fromArray(S, pts, o);
             FloatVector p = a.mul(r.rearrange(PX_PY)).add(b.mul(r.rearrange(PZ_ONE)));
             FloatVector n = a.mul(r.rearrange(NX_NY)).add(b.mul(r.rearrange(NZ_ZERO)));
-            p.add(p.rearrange(SWAP)).intoArray(outPositions, 3 * i);
-            n.add(n.rearrange(SWAP)).intoArray(outNormals, 3 * i);
+            p.add(p.rearrange(SWAP)).intoArray(outPositions, 3 * i + positionShift);
+            n.add(n.rearrange(SWAP)).intoArray(outNormals, 3 * i + normalShift);
         }
     }
 
@@ -191,17 +214,22 @@ final class VectorLbsSkinner implements Skinner {
      * and is renormalised; a zero result stays zero, as in the scalar kernel.
      */
     private void exactNormals(float[] c, float[] outPositions, float[] outNormals, int from, int end) {
+        exactNormals(c, outPositions, outNormals, from, end, 0, 0);
+    }
+
+    private void exactNormals(float[] c, float[] outPositions, float[] outNormals, int from, int end,
+            int positionShift, int normalShift) {
         final float[] pts = points;
-        final int[] off = offsets;
+        final char[] off = joints;
         final FloatVector zero = FloatVector.zero(S);
         final FloatVector one = FloatVector.broadcast(S, 1f);
         for (int i = from; i < end; i++) {
             int o = STRIDE * i;
             int q = INFLUENCES * i;
-            int m0 = off[q];
-            int m1 = off[q + 1];
-            int m2 = off[q + 2];
-            int m3 = off[q + 3];
+            int m0 = off[q] << 4;
+            int m1 = off[q + 1] << 4;
+            int m2 = off[q + 2] << 4;
+            int m3 = off[q + 3] << 4;
             FloatVector w0 = FloatVector.broadcast(S, pts[o + 8]);
             FloatVector w1 = FloatVector.broadcast(S, pts[o + 9]);
             FloatVector w2 = FloatVector.broadcast(S, pts[o + 10]);
@@ -216,7 +244,7 @@ final class VectorLbsSkinner implements Skinner {
             b = FloatVector.fromArray(S, c, m3 + 8).fma(w3, b);
             FloatVector r = FloatVector.fromArray(S, pts, o);
             FloatVector p = a.mul(r.rearrange(PX_PY)).add(b.mul(r.rearrange(PZ_ONE)));
-            p.add(p.rearrange(SWAP)).intoArray(outPositions, 3 * i);
+            p.add(p.rearrange(SWAP)).intoArray(outPositions, 3 * i + positionShift);
             // [c1 | c2] x [c2 | c0] = [c1 x c2 | c2 x c0]; [c0 | c1] x [c1 | c0] = [c0 x c1 | ...]
             FloatVector aSwap = a.rearrange(SWAP);
             FloatVector left = aSwap.blend(b.rearrange(SWAP), HI);
@@ -229,7 +257,7 @@ final class VectorLbsSkinner implements Skinner {
             FloatVector n2 = n.mul(n);
             FloatVector len2 = n2.add(n2.rearrange(YZX)).add(n2.rearrange(ZXY));
             FloatVector inv = one.div(len2.sqrt()).blend(zero, len2.compare(VectorOperators.LE, 0f));
-            n.mul(inv).intoArray(outNormals, 3 * i);
+            n.mul(inv).intoArray(outNormals, 3 * i + normalShift);
         }
     }
 

@@ -10,7 +10,7 @@ import org.skinlab.skinning.SkinningMethod;
  * Offers the Vector API kernels when they can run fast here: the JVM was started with
  * {@code --add-modules jdk.incubator.vector}, its vectors are at least 256 bits wide (otherwise the
  * API silently falls back to a Java loop per lane, far slower than the scalar kernels), and the
- * geometry has at most 4 influences per point. In every other case it returns null and core's
+ * geometry has at most 4 influences per point and 65536 joints. In every other case it returns null and core's
  * scalar kernels run.
  *
  * <p>This class must load without the incubator module, so it names no class of it: the check
@@ -22,6 +22,7 @@ public final class VectorSkinnerProvider implements SkinnerProvider {
     @Override
     public Skinner create(SkinningMethod method, SkinnedGeometry geometry, NormalTransform normals) {
         if (!moduleAvailable() || geometry.influencesPerPoint() > VectorKernels.MAX_INFLUENCES
+                || geometry.jointCount() > VectorKernels.MAX_JOINTS
                 || !VectorKernels.fastOnThisMachine()) {
             return null;
         }
