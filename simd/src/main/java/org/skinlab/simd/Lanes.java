@@ -30,7 +30,8 @@ final class Lanes {
     static final VectorMask<Float> PAIRS = mask(2, 3, 6, 7);
 
     // Interleaving three 8-lane vectors x, y, z into x0 y0 z0 x1 ... z7 (three output vectors):
-    // output vector o, lane l holds element IL[o][l] of the 24 (x = 0..7, y = 8..15, z = 16..23).
+    // output vector o, lane l holds element IL[o][l] of the 24 (x = 0..7, y = 8..15, z = 16..23);
+    // output o = x.rearrange(Xo).blend(y.rearrange(Yo), MYo).blend(z.rearrange(Zo), MZo).
     private static final int[][] IL = {{0, 8, 16, 1, 9, 17, 2, 10}, {18, 3, 11, 19, 4, 12, 20, 5},
         {13, 21, 6, 14, 22, 7, 15, 23}};
     static final VectorShuffle<Float> X0 = interleave(0, 0), Y0 = interleave(0, 1), Z0 = interleave(0, 2);
@@ -43,12 +44,6 @@ final class Lanes {
     private Lanes() {
     }
 
-    /** Writes 8 points given as x, y, z lanes to {@code out[o .. o + 24)} as x y z x y z ... */
-    static void storeInterleaved(FloatVector x, FloatVector y, FloatVector z, float[] out, int o) {
-        x.rearrange(X0).blend(y.rearrange(Y0), MY0).blend(z.rearrange(Z0), MZ0).intoArray(out, o);
-        x.rearrange(X1).blend(y.rearrange(Y1), MY1).blend(z.rearrange(Z1), MZ1).intoArray(out, o + 8);
-        x.rearrange(X2).blend(y.rearrange(Y2), MY2).blend(z.rearrange(Z2), MZ2).intoArray(out, o + 16);
-    }
 
     private static VectorShuffle<Float> shuffle(int... lanes) {
         return VectorShuffle.fromArray(S, lanes, 0);

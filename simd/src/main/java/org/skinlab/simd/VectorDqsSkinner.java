@@ -40,8 +40,9 @@ import org.skinlab.skinning.SkinningMethod;
  * everything per block also measured 1.7x slower (register pressure). So the work for up to
  * {@link #CHUNK} blocks is cut
  * into small loops that meet in a per-thread scratch array that stays in L1: one per influence
- * (transpose, antipodality sign, weighted sum), apply (normalise, rotate, translate), interleave (lanes back
- * to x y z x y z ...).
+ * (transpose, antipodality sign, weighted sum into the scratch), then one that normalises, rotates,
+ * translates and interleaves the lanes back into x y z x y z ... (merging the blend loops into one
+ * measured slower, merging the last two a little faster).
  *
  * <p><b>Sign.</b> {@code copySign(w_k, q_0 . q_k + 0)} as a lane compare and blend: branch-free
  * like the scalar kernel and identical to it, a dot of -0 included.
@@ -151,8 +152,7 @@ final class VectorDqsSkinner implements Skinner {
             for (int k = 1; k < INFLUENCES; k++) {
                 accumulate(dq, s, b, e, k);
             }
-            apply(s, b, e);
-            interleave(s, outPositions, outNormals, b, e);
+            applyAndStore(s, outPositions, outNormals, b, e);
         }
         scalar.skin(palette, outPositions, outNormals, BLOCK * endBlock, to);
     }
@@ -290,9 +290,10 @@ final class VectorDqsSkinner implements Skinner {
     /**
      * Per block: normalise the blended dual quaternion by its real part, then
      * {@code p' = p + 2 r x (r x p + w p) + t} with {@code t = 2 (w d - d_w r + r x d)}, and the
-     * normal rotated the same way. Results (px py pz nx ny nz, 8 lanes each) go to scratch 0..47.
+     * normal rotated the same way; the x, y, z lanes are interleaved into the outputs (x y z x y z
+     * ..., see {@link Lanes}) with the store written out here, not called, to stay inlined.
      */
-    private void apply(float[] s, int firstBlock, int endBlock) {
+    private void applyAndStore(float[] s, float[] outPositions, float[] outNormals, int firstBlock, int endBlock) {
         final float[] blk = points;
         final FloatVector one = FloatVector.broadcast(S, 1f);
         for (int b = firstBlock; b < endBlock; b++) {
@@ -323,9 +324,13 @@ final class VectorDqsSkinner implements Skinner {
             FloatVector ex = ry.mul(cz).sub(rz.mul(cy));
             FloatVector ey = rz.mul(cx).sub(rx.mul(cz));
             FloatVector ez = rx.mul(cy).sub(ry.mul(cx));
-            px.add(ex.add(ex)).add(tx.add(tx)).intoArray(s, so);
-            py.add(ey.add(ey)).add(ty.add(ty)).intoArray(s, so + 8);
-            pz.add(ez.add(ez)).add(tz.add(tz)).intoArray(s, so + 16);
+            FloatVector ox = px.add(ex.add(ex)).add(tx.add(tx));
+            FloatVector oy = py.add(ey.add(ey)).add(ty.add(ty));
+            FloatVector oz = pz.add(ez.add(ez)).add(tz.add(tz));
+            int out = 3 * BLOCK * b;
+            ox.rearrange(Lanes.X0).blend(oy.rearrange(Lanes.Y0), Lanes.MY0).blend(oz.rearrange(Lanes.Z0), Lanes.MZ0).intoArray(outPositions, out);
+            ox.rearrange(Lanes.X1).blend(oy.rearrange(Lanes.Y1), Lanes.MY1).blend(oz.rearrange(Lanes.Z1), Lanes.MZ1).intoArray(outPositions, out + 8);
+            ox.rearrange(Lanes.X2).blend(oy.rearrange(Lanes.Y2), Lanes.MY2).blend(oz.rearrange(Lanes.Z2), Lanes.MZ2).intoArray(outPositions, out + 16);
             FloatVector nx = FloatVector.fromArray(S, blk, fo + 24);
             FloatVector ny = FloatVector.fromArray(S, blk, fo + 32);
             FloatVector nz = FloatVector.fromArray(S, blk, fo + 40);
@@ -335,20 +340,14 @@ final class VectorDqsSkinner implements Skinner {
             ex = ry.mul(cz).sub(rz.mul(cy));
             ey = rz.mul(cx).sub(rx.mul(cz));
             ez = rx.mul(cy).sub(ry.mul(cx));
-            nx.add(ex.add(ex)).intoArray(s, so + 24);
-            ny.add(ey.add(ey)).intoArray(s, so + 32);
-            nz.add(ez.add(ez)).intoArray(s, so + 40);
+            ox = nx.add(ex.add(ex));
+            oy = ny.add(ey.add(ey));
+            oz = nz.add(ez.add(ez));
+            ox.rearrange(Lanes.X0).blend(oy.rearrange(Lanes.Y0), Lanes.MY0).blend(oz.rearrange(Lanes.Z0), Lanes.MZ0).intoArray(outNormals, out);
+            ox.rearrange(Lanes.X1).blend(oy.rearrange(Lanes.Y1), Lanes.MY1).blend(oz.rearrange(Lanes.Z1), Lanes.MZ1).intoArray(outNormals, out + 8);
+            ox.rearrange(Lanes.X2).blend(oy.rearrange(Lanes.Y2), Lanes.MY2).blend(oz.rearrange(Lanes.Z2), Lanes.MZ2).intoArray(outNormals, out + 16);
         }
     }
 
-    private static void interleave(float[] s, float[] outPositions, float[] outNormals, int firstBlock, int endBlock) {
-        for (int b = firstBlock; b < endBlock; b++) {
-            int so = SCRATCH * (b - firstBlock);
-            int o = 3 * BLOCK * b;
-            Lanes.storeInterleaved(FloatVector.fromArray(S, s, so), FloatVector.fromArray(S, s, so + 8),
-                    FloatVector.fromArray(S, s, so + 16), outPositions, o);
-            Lanes.storeInterleaved(FloatVector.fromArray(S, s, so + 24), FloatVector.fromArray(S, s, so + 32),
-                    FloatVector.fromArray(S, s, so + 40), outNormals, o);
-        }
-    }
+
 }
