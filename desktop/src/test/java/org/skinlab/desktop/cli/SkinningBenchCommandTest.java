@@ -59,6 +59,7 @@ class SkinningBenchCommandTest {
         double expected = checksum(SkinningMethod.DQS, 500);
         assertEquals(expected, root.get("checksum").doubleValue(), 1e-3);
         assertEquals(expected, root.get("baselineChecksum").doubleValue(), 1e-2);
+        assertTrue(root.get("baselineMinNsPerVertex").doubleValue() <= root.get("baselineMedianNsPerVertex").doubleValue());
         double ratio = root.get("baselineRatio").doubleValue();
         assertEquals(root.get("baselineMedianNsPerVertex").doubleValue() / root.get("medianNsPerVertex").doubleValue(),
                 ratio, ratio * 0.01 + 0.01);
