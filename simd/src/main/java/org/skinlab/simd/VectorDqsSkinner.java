@@ -38,11 +38,11 @@ import org.skinlab.skinning.SkinningMethod;
  * <p><b>Passes.</b> C2 stops inlining calls of our own methods beyond a node budget (Vector API
  * methods are force-inlined), and a call that is not inlined boxes every vector; one loop doing
  * everything per block also measured 1.7x slower (register pressure). So the work for up to
- * {@link #CHUNK} blocks is cut
- * into small loops that meet in a per-thread scratch array that stays in L1: one per influence
- * (transpose, antipodality sign, weighted sum into the scratch), then one that normalises, rotates,
- * translates and interleaves the lanes back into x y z x y z ... (merging the blend loops into one
- * measured slower, merging the last two a little faster).
+ * {@link #CHUNK} blocks is cut into small loops that meet in a per-thread scratch array that stays
+ * in L1: one for the first two influences, one per further influence (transpose, antipodality
+ * sign, weighted sum), then one that normalises, rotates, translates and interleaves the lanes
+ * back into x y z x y z ... (a loop with three transposes measured slower, these a little faster
+ * than one loop per step).
  *
  * <p><b>Sign.</b> {@code copySign(w_k, q_0 . q_k + 0)} as a lane compare and blend: branch-free
  * like the scalar kernel and identical to it, a dot of -0 included.
@@ -148,8 +148,8 @@ final class VectorDqsSkinner implements Skinner {
         }
         for (int b = firstBlock; b < endBlock; b += CHUNK) {
             int e = Math.min(endBlock, b + CHUNK);
-            pivot(dq, s, b, e);
-            for (int k = 1; k < INFLUENCES; k++) {
+            pivotAndFirst(dq, s, b, e);
+            for (int k = 2; k < INFLUENCES; k++) {
                 accumulate(dq, s, b, e, k);
             }
             applyAndStore(s, outPositions, outNormals, b, e);
@@ -157,73 +157,115 @@ final class VectorDqsSkinner implements Skinner {
         scalar.skin(palette, outPositions, outNormals, BLOCK * endBlock, to);
     }
 
+
     /**
-     * Influence 0 (the pivot) of each block, into the scratch: {@code w_0 q_0} as 8 lane vectors
-     * (floats 0..63) and the pivot's real part (64..95). The 8 joints' dual quaternions are loaded
-     * as rows and transposed: stage 1 interleaves pairs of points, stage 2 pairs of pairs, stage 3
-     * the halves, each a permute and a blend per output.
+     * Influence {@code k >= 2} of each block: {@code b += copySign(w_k, q_0 . q_k + 0) q_k}, in the
+     * scratch. Two transposes per method at most: with three, register pressure made it slower.
      */
-    private void pivot(float[] dq, float[] s, int firstBlock, int endBlock) {
-        final float[] wk = weightLanes[0];
-        final char[] row = rowJoints[0];
+    /**
+     * Influences 0 (the pivot) and 1 of each block, into the scratch: {@code w_0 q_0 + copySign(w_1,
+     * q_0 . q_1 + 0) q_1} as 8 lane vectors (floats 0..63) and the pivot's real part (64..95).
+     * Per influence the 8 joints' dual quaternions are loaded as rows and transposed: stage 1
+     * interleaves pairs of points, stage 2 pairs of pairs, stage 3 the halves, each a permute and a
+     * blend per output.
+     */
+    private void pivotAndFirst(float[] dq, float[] s, int firstBlock, int endBlock) {
+        final float[] wl0 = weightLanes[0];
+        final float[] wl1 = weightLanes[1];
+        final char[] row0 = rowJoints[0];
+        final char[] row1 = rowJoints[1];
         for (int b = firstBlock; b < endBlock; b++) {
             int so = SCRATCH * (b - firstBlock);
             int o = BLOCK * b;
-            FloatVector r0 = FloatVector.fromArray(S, dq, row[o] << 3);
-            FloatVector r1 = FloatVector.fromArray(S, dq, row[o + 1] << 3);
-            FloatVector r2 = FloatVector.fromArray(S, dq, row[o + 2] << 3);
-            FloatVector r3 = FloatVector.fromArray(S, dq, row[o + 3] << 3);
-            FloatVector r4 = FloatVector.fromArray(S, dq, row[o + 4] << 3);
-            FloatVector r5 = FloatVector.fromArray(S, dq, row[o + 5] << 3);
-            FloatVector r6 = FloatVector.fromArray(S, dq, row[o + 6] << 3);
-            FloatVector r7 = FloatVector.fromArray(S, dq, row[o + 7] << 3);
+            FloatVector r0_0 = FloatVector.fromArray(S, dq, row0[o] << 3);
+            FloatVector r1_0 = FloatVector.fromArray(S, dq, row0[o + 1] << 3);
+            FloatVector r2_0 = FloatVector.fromArray(S, dq, row0[o + 2] << 3);
+            FloatVector r3_0 = FloatVector.fromArray(S, dq, row0[o + 3] << 3);
+            FloatVector r4_0 = FloatVector.fromArray(S, dq, row0[o + 4] << 3);
+            FloatVector r5_0 = FloatVector.fromArray(S, dq, row0[o + 5] << 3);
+            FloatVector r6_0 = FloatVector.fromArray(S, dq, row0[o + 6] << 3);
+            FloatVector r7_0 = FloatVector.fromArray(S, dq, row0[o + 7] << 3);
             // a_i: components (0 2 4 6) or (1 3 5 7) of two points, interleaved
-            FloatVector a0 = r0.blend(r1.rearrange(RIGHT1), ODD);
-            FloatVector a1 = r0.rearrange(LEFT1).blend(r1, ODD);
-            FloatVector a2 = r2.blend(r3.rearrange(RIGHT1), ODD);
-            FloatVector a3 = r2.rearrange(LEFT1).blend(r3, ODD);
-            FloatVector a4 = r4.blend(r5.rearrange(RIGHT1), ODD);
-            FloatVector a5 = r4.rearrange(LEFT1).blend(r5, ODD);
-            FloatVector a6 = r6.blend(r7.rearrange(RIGHT1), ODD);
-            FloatVector a7 = r6.rearrange(LEFT1).blend(r7, ODD);
+            FloatVector a0_0 = r0_0.blend(r1_0.rearrange(RIGHT1), ODD);
+            FloatVector a1_0 = r0_0.rearrange(LEFT1).blend(r1_0, ODD);
+            FloatVector a2_0 = r2_0.blend(r3_0.rearrange(RIGHT1), ODD);
+            FloatVector a3_0 = r2_0.rearrange(LEFT1).blend(r3_0, ODD);
+            FloatVector a4_0 = r4_0.blend(r5_0.rearrange(RIGHT1), ODD);
+            FloatVector a5_0 = r4_0.rearrange(LEFT1).blend(r5_0, ODD);
+            FloatVector a6_0 = r6_0.blend(r7_0.rearrange(RIGHT1), ODD);
+            FloatVector a7_0 = r6_0.rearrange(LEFT1).blend(r7_0, ODD);
             // c_i: components (0 4), (1 5), (2 6), (3 7) of four points
-            FloatVector c0 = a0.blend(a2.rearrange(RIGHT2), PAIRS);
-            FloatVector c2 = a0.rearrange(LEFT2).blend(a2, PAIRS);
-            FloatVector c1 = a1.blend(a3.rearrange(RIGHT2), PAIRS);
-            FloatVector c3 = a1.rearrange(LEFT2).blend(a3, PAIRS);
-            FloatVector c4 = a4.blend(a6.rearrange(RIGHT2), PAIRS);
-            FloatVector c6 = a4.rearrange(LEFT2).blend(a6, PAIRS);
-            FloatVector c5 = a5.blend(a7.rearrange(RIGHT2), PAIRS);
-            FloatVector c7 = a5.rearrange(LEFT2).blend(a7, PAIRS);
+            FloatVector c0_0 = a0_0.blend(a2_0.rearrange(RIGHT2), PAIRS);
+            FloatVector c2_0 = a0_0.rearrange(LEFT2).blend(a2_0, PAIRS);
+            FloatVector c1_0 = a1_0.blend(a3_0.rearrange(RIGHT2), PAIRS);
+            FloatVector c3_0 = a1_0.rearrange(LEFT2).blend(a3_0, PAIRS);
+            FloatVector c4_0 = a4_0.blend(a6_0.rearrange(RIGHT2), PAIRS);
+            FloatVector c6_0 = a4_0.rearrange(LEFT2).blend(a6_0, PAIRS);
+            FloatVector c5_0 = a5_0.blend(a7_0.rearrange(RIGHT2), PAIRS);
+            FloatVector c7_0 = a5_0.rearrange(LEFT2).blend(a7_0, PAIRS);
             // t_c: component c of all eight points
-            FloatVector t0 = c0.blend(c4.rearrange(SWAP), HI);
-            FloatVector t4 = c0.rearrange(SWAP).blend(c4, HI);
-            FloatVector t1 = c1.blend(c5.rearrange(SWAP), HI);
-            FloatVector t5 = c1.rearrange(SWAP).blend(c5, HI);
-            FloatVector t2 = c2.blend(c6.rearrange(SWAP), HI);
-            FloatVector t6 = c2.rearrange(SWAP).blend(c6, HI);
-            FloatVector t3 = c3.blend(c7.rearrange(SWAP), HI);
-            FloatVector t7 = c3.rearrange(SWAP).blend(c7, HI);
-            FloatVector w = FloatVector.fromArray(S, wk, o);
-            t0.intoArray(s, so + 64);
-            t1.intoArray(s, so + 72);
-            t2.intoArray(s, so + 80);
-            t3.intoArray(s, so + 88);
-            t0.mul(w).intoArray(s, so);
-            t1.mul(w).intoArray(s, so + 8);
-            t2.mul(w).intoArray(s, so + 16);
-            t3.mul(w).intoArray(s, so + 24);
-            t4.mul(w).intoArray(s, so + 32);
-            t5.mul(w).intoArray(s, so + 40);
-            t6.mul(w).intoArray(s, so + 48);
-            t7.mul(w).intoArray(s, so + 56);
+            FloatVector t0_0 = c0_0.blend(c4_0.rearrange(SWAP), HI);
+            FloatVector t4_0 = c0_0.rearrange(SWAP).blend(c4_0, HI);
+            FloatVector t1_0 = c1_0.blend(c5_0.rearrange(SWAP), HI);
+            FloatVector t5_0 = c1_0.rearrange(SWAP).blend(c5_0, HI);
+            FloatVector t2_0 = c2_0.blend(c6_0.rearrange(SWAP), HI);
+            FloatVector t6_0 = c2_0.rearrange(SWAP).blend(c6_0, HI);
+            FloatVector t3_0 = c3_0.blend(c7_0.rearrange(SWAP), HI);
+            FloatVector t7_0 = c3_0.rearrange(SWAP).blend(c7_0, HI);
+            FloatVector r0_1 = FloatVector.fromArray(S, dq, row1[o] << 3);
+            FloatVector r1_1 = FloatVector.fromArray(S, dq, row1[o + 1] << 3);
+            FloatVector r2_1 = FloatVector.fromArray(S, dq, row1[o + 2] << 3);
+            FloatVector r3_1 = FloatVector.fromArray(S, dq, row1[o + 3] << 3);
+            FloatVector r4_1 = FloatVector.fromArray(S, dq, row1[o + 4] << 3);
+            FloatVector r5_1 = FloatVector.fromArray(S, dq, row1[o + 5] << 3);
+            FloatVector r6_1 = FloatVector.fromArray(S, dq, row1[o + 6] << 3);
+            FloatVector r7_1 = FloatVector.fromArray(S, dq, row1[o + 7] << 3);
+            // a_i: components (0 2 4 6) or (1 3 5 7) of two points, interleaved
+            FloatVector a0_1 = r0_1.blend(r1_1.rearrange(RIGHT1), ODD);
+            FloatVector a1_1 = r0_1.rearrange(LEFT1).blend(r1_1, ODD);
+            FloatVector a2_1 = r2_1.blend(r3_1.rearrange(RIGHT1), ODD);
+            FloatVector a3_1 = r2_1.rearrange(LEFT1).blend(r3_1, ODD);
+            FloatVector a4_1 = r4_1.blend(r5_1.rearrange(RIGHT1), ODD);
+            FloatVector a5_1 = r4_1.rearrange(LEFT1).blend(r5_1, ODD);
+            FloatVector a6_1 = r6_1.blend(r7_1.rearrange(RIGHT1), ODD);
+            FloatVector a7_1 = r6_1.rearrange(LEFT1).blend(r7_1, ODD);
+            // c_i: components (0 4), (1 5), (2 6), (3 7) of four points
+            FloatVector c0_1 = a0_1.blend(a2_1.rearrange(RIGHT2), PAIRS);
+            FloatVector c2_1 = a0_1.rearrange(LEFT2).blend(a2_1, PAIRS);
+            FloatVector c1_1 = a1_1.blend(a3_1.rearrange(RIGHT2), PAIRS);
+            FloatVector c3_1 = a1_1.rearrange(LEFT2).blend(a3_1, PAIRS);
+            FloatVector c4_1 = a4_1.blend(a6_1.rearrange(RIGHT2), PAIRS);
+            FloatVector c6_1 = a4_1.rearrange(LEFT2).blend(a6_1, PAIRS);
+            FloatVector c5_1 = a5_1.blend(a7_1.rearrange(RIGHT2), PAIRS);
+            FloatVector c7_1 = a5_1.rearrange(LEFT2).blend(a7_1, PAIRS);
+            // t_c: component c of all eight points
+            FloatVector t0_1 = c0_1.blend(c4_1.rearrange(SWAP), HI);
+            FloatVector t4_1 = c0_1.rearrange(SWAP).blend(c4_1, HI);
+            FloatVector t1_1 = c1_1.blend(c5_1.rearrange(SWAP), HI);
+            FloatVector t5_1 = c1_1.rearrange(SWAP).blend(c5_1, HI);
+            FloatVector t2_1 = c2_1.blend(c6_1.rearrange(SWAP), HI);
+            FloatVector t6_1 = c2_1.rearrange(SWAP).blend(c6_1, HI);
+            FloatVector t3_1 = c3_1.blend(c7_1.rearrange(SWAP), HI);
+            FloatVector t7_1 = c3_1.rearrange(SWAP).blend(c7_1, HI);
+            t0_0.intoArray(s, so + 64);
+            t1_0.intoArray(s, so + 72);
+            t2_0.intoArray(s, so + 80);
+            t3_0.intoArray(s, so + 88);
+            FloatVector w0 = FloatVector.fromArray(S, wl0, o);
+            FloatVector w1 = FloatVector.fromArray(S, wl1, o).abs();
+            FloatVector dot = t0_0.mul(t0_1).add(t1_0.mul(t1_1)).add(t2_0.mul(t2_1)).add(t3_0.mul(t3_1));
+            w1 = w1.blend(w1.neg(), dot.compare(VectorOperators.LT, 0f));
+            t0_1.fma(w1, t0_0.mul(w0)).intoArray(s, so);
+            t1_1.fma(w1, t1_0.mul(w0)).intoArray(s, so + 8);
+            t2_1.fma(w1, t2_0.mul(w0)).intoArray(s, so + 16);
+            t3_1.fma(w1, t3_0.mul(w0)).intoArray(s, so + 24);
+            t4_1.fma(w1, t4_0.mul(w0)).intoArray(s, so + 32);
+            t5_1.fma(w1, t5_0.mul(w0)).intoArray(s, so + 40);
+            t6_1.fma(w1, t6_0.mul(w0)).intoArray(s, so + 48);
+            t7_1.fma(w1, t7_0.mul(w0)).intoArray(s, so + 56);
         }
     }
 
-    /**
-     * Influence {@code k > 0} of each block: {@code b += copySign(w_k, q_0 . q_k) q_k}, in the
-     * scratch. One influence per pass keeps the method within C2's inlining budget.
-     */
     private void accumulate(float[] dq, float[] s, int firstBlock, int endBlock, int k) {
         final float[] wk = weightLanes[k];
         final char[] row = rowJoints[k];
