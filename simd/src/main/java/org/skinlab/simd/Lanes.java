@@ -41,7 +41,38 @@ final class Lanes {
     static final VectorMask<Float> MY1 = from(1, 1), MZ1 = from(1, 2);
     static final VectorMask<Float> MY2 = from(2, 1), MZ2 = from(2, 2);
 
+    // The inverse: lane l of component c (x = 0, y = 1, z = 2) is element 3 l + c of the 24, taken
+    // from v0, v1 or v2 (element / 8): c = v0.rearrange(Gc0).blend(v1.rearrange(Gc1), MGc1)
+    // .blend(v2.rearrange(Gc2), MGc2).
+    static final VectorShuffle<Float> GX0 = gather(0, 0), GX1 = gather(0, 1), GX2 = gather(0, 2);
+    static final VectorShuffle<Float> GY0 = gather(1, 0), GY1 = gather(1, 1), GY2 = gather(1, 2);
+    static final VectorShuffle<Float> GZ0 = gather(2, 0), GZ1 = gather(2, 1), GZ2 = gather(2, 2);
+    static final VectorMask<Float> MGX1 = gatherMask(0, 1), MGX2 = gatherMask(0, 2);
+    static final VectorMask<Float> MGY1 = gatherMask(1, 1), MGY2 = gatherMask(1, 2);
+    static final VectorMask<Float> MGZ1 = gatherMask(2, 1), MGZ2 = gatherMask(2, 2);
+    /** One value per point spread over that point's three floats, for output vectors 0, 1, 2. */
+    static final VectorShuffle<Float> TRIPLE0 = shuffle(0, 0, 0, 1, 1, 1, 2, 2);
+    static final VectorShuffle<Float> TRIPLE1 = shuffle(2, 3, 3, 3, 4, 4, 4, 5);
+    static final VectorShuffle<Float> TRIPLE2 = shuffle(5, 5, 6, 6, 6, 7, 7, 7);
+
     private Lanes() {
+    }
+
+    private static VectorShuffle<Float> gather(int component, int source) {
+        int[] lanes = new int[8];
+        for (int l = 0; l < 8; l++) {
+            int e = 3 * l + component;
+            lanes[l] = e / 8 == source ? e % 8 : 0;
+        }
+        return shuffle(lanes);
+    }
+
+    private static VectorMask<Float> gatherMask(int component, int source) {
+        boolean[] set = new boolean[8];
+        for (int l = 0; l < 8; l++) {
+            set[l] = (3 * l + component) / 8 == source;
+        }
+        return VectorMask.fromArray(S, set, 0);
     }
 
 

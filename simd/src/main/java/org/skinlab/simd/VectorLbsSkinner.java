@@ -8,7 +8,6 @@ import static org.skinlab.simd.Lanes.ZXY;
 
 import jdk.incubator.vector.FloatVector;
 import jdk.incubator.vector.VectorOperators;
-import jdk.incubator.vector.VectorShuffle;
 
 import org.skinlab.skinning.JointPalette;
 import org.skinlab.skinning.NormalTransform;
@@ -28,9 +27,10 @@ import org.skinlab.skinning.SkinningMethod;
  *     (two fused multiply-adds per influence), then {@code p' = c0 px + c1 py + c2 pz + c3} as
  *     {@code [c0|c1] * [px px px px | py py py py] + [c2|c3] * [pz.. | 1..]} and the sum of the two
  *     halves;</li>
- * <li>the geometry is repacked once, in the constructor, into one stream of 12 floats per point
- *     ({@code px py pz 1 nx ny nz 0 w0 w1 w2 w3}) plus one of joint indices (char), so a point's
- *     broadcast operands are one vector load and four lane permutations.</li>
+ * <li>the geometry is repacked once, in the constructor, into one stream of 10 floats per point
+ *     ({@code px py pz nx ny nz w0 w1 w2 w3}) plus one of joint indices (char); a point's
+ *     operands {@code [px.. | py..]} etc. are two broadcasts and a blend (JDK 17 checks a
+ *     shuffle's indexes at every lane permutation, which measured 10-15% slower).</li>
  * </ul>
  *
  * <p>Each point's result is written with one 8-lane store at {@code 3 * point}, whose last five
@@ -42,12 +42,8 @@ import org.skinlab.skinning.SkinningMethod;
 final class VectorLbsSkinner implements Skinner {
     static final int INFLUENCES = 4;
     /** Floats per point in {@link #points}. */
-    private static final int STRIDE = 12;
+    private static final int STRIDE = 10;
 
-    private static final VectorShuffle<Float> PX_PY = shuffleOf(0, 0, 0, 0, 1, 1, 1, 1);
-    private static final VectorShuffle<Float> PZ_ONE = shuffleOf(2, 2, 2, 2, 3, 3, 3, 3);
-    private static final VectorShuffle<Float> NX_NY = shuffleOf(4, 4, 4, 4, 5, 5, 5, 5);
-    private static final VectorShuffle<Float> NZ_ZERO = shuffleOf(6, 6, 6, 6, 7, 7, 7, 7);
 
     private final SkinnedGeometry geometry;
     private final NormalTransform normals;
@@ -78,13 +74,12 @@ final class VectorLbsSkinner implements Skinner {
             points[o] = pos[3 * i];
             points[o + 1] = pos[3 * i + 1];
             points[o + 2] = pos[3 * i + 2];
-            points[o + 3] = 1f;
-            points[o + 4] = nrm[3 * i];
-            points[o + 5] = nrm[3 * i + 1];
-            points[o + 6] = nrm[3 * i + 2];
+            points[o + 3] = nrm[3 * i];
+            points[o + 4] = nrm[3 * i + 1];
+            points[o + 5] = nrm[3 * i + 2];
             for (int k = 0; k < INFLUENCES; k++) {
                 // Padding: weight 0 on the first joint adds exactly nothing.
-                points[o + 8 + k] = k < width ? weights[width * i + k] : 0f;
+                points[o + 6 + k] = k < width ? weights[width * i + k] : 0f;
                 this.joints[INFLUENCES * i + k] = (char) joints[width * i + (k < width ? k : 0)];
             }
         }
@@ -123,6 +118,9 @@ final class VectorLbsSkinner implements Skinner {
         }
         for (int i = end; i < to; i++) {
             lastPoint(c, outPositions, outNormals, i);
+        }
+        if (normals == NormalTransform.INVERSE_TRANSPOSE) {
+            normalise(outNormals, from, to);
         }
     }
 
@@ -181,6 +179,8 @@ final class VectorLbsSkinner implements Skinner {
             int positionShift, int normalShift) {
         final float[] pts = points;
         final char[] off = joints;
+        final FloatVector one = FloatVector.broadcast(S, 1f);
+        final FloatVector zero = FloatVector.zero(S);
         for (int i = from; i < end; i++) {
             int o = STRIDE * i;
             int q = INFLUENCES * i;
@@ -188,10 +188,10 @@ final class VectorLbsSkinner implements Skinner {
             int m1 = off[q + 1] << 4;
             int m2 = off[q + 2] << 4;
             int m3 = off[q + 3] << 4;
-            FloatVector w0 = FloatVector.broadcast(S, pts[o + 8]);
-            FloatVector w1 = FloatVector.broadcast(S, pts[o + 9]);
-            FloatVector w2 = FloatVector.broadcast(S, pts[o + 10]);
-            FloatVector w3 = FloatVector.broadcast(S, pts[o + 11]);
+            FloatVector w0 = FloatVector.broadcast(S, pts[o + 6]);
+            FloatVector w1 = FloatVector.broadcast(S, pts[o + 7]);
+            FloatVector w2 = FloatVector.broadcast(S, pts[o + 8]);
+            FloatVector w3 = FloatVector.broadcast(S, pts[o + 9]);
             FloatVector a = FloatVector.fromArray(S, c, m0).mul(w0);
             FloatVector b = FloatVector.fromArray(S, c, m0 + 8).mul(w0);
             a = FloatVector.fromArray(S, c, m1).fma(w1, a);
@@ -200,9 +200,14 @@ final class VectorLbsSkinner implements Skinner {
             b = FloatVector.fromArray(S, c, m2 + 8).fma(w2, b);
             a = FloatVector.fromArray(S, c, m3).fma(w3, a);
             b = FloatVector.fromArray(S, c, m3 + 8).fma(w3, b);
-            FloatVector r = FloatVector.fromArray(S, pts, o);
-            FloatVector p = a.mul(r.rearrange(PX_PY)).add(b.mul(r.rearrange(PZ_ONE)));
-            FloatVector n = a.mul(r.rearrange(NX_NY)).add(b.mul(r.rearrange(NZ_ZERO)));
+            // Broadcasts and blends, not lane permutations of one load: JDK 17 checks a shuffle's
+            // indexes at every rearrange, a constant mask costs nothing.
+            FloatVector pxy = FloatVector.broadcast(S, pts[o]).blend(FloatVector.broadcast(S, pts[o + 1]), HI);
+            FloatVector pz1 = FloatVector.broadcast(S, pts[o + 2]).blend(one, HI);
+            FloatVector nxy = FloatVector.broadcast(S, pts[o + 3]).blend(FloatVector.broadcast(S, pts[o + 4]), HI);
+            FloatVector nz0 = FloatVector.broadcast(S, pts[o + 5]).blend(zero, HI);
+            FloatVector p = a.mul(pxy).add(b.mul(pz1));
+            FloatVector n = a.mul(nxy).add(b.mul(nz0));
             p.add(p.rearrange(SWAP)).intoArray(outPositions, 3 * i + positionShift);
             n.add(n.rearrange(SWAP)).intoArray(outNormals, 3 * i + normalShift);
         }
@@ -210,8 +215,9 @@ final class VectorLbsSkinner implements Skinner {
 
     /**
      * As {@link #blendedNormals}, but the normal goes through the cofactor matrix of the blended
-     * linear part, whose columns are c1 x c2, c2 x c0, c0 x c1 (the inverse-transpose times det),
-     * and is renormalised; a zero result stays zero, as in the scalar kernel.
+     * linear part, whose columns are c1 x c2, c2 x c0, c0 x c1 (the inverse-transpose times det);
+     * {@link #normalise} then scales it to unit length (a zero result stays zero, as in the scalar
+     * kernel).
      */
     private void exactNormals(float[] c, float[] outPositions, float[] outNormals, int from, int end) {
         exactNormals(c, outPositions, outNormals, from, end, 0, 0);
@@ -221,7 +227,6 @@ final class VectorLbsSkinner implements Skinner {
             int positionShift, int normalShift) {
         final float[] pts = points;
         final char[] off = joints;
-        final FloatVector zero = FloatVector.zero(S);
         final FloatVector one = FloatVector.broadcast(S, 1f);
         for (int i = from; i < end; i++) {
             int o = STRIDE * i;
@@ -230,10 +235,10 @@ final class VectorLbsSkinner implements Skinner {
             int m1 = off[q + 1] << 4;
             int m2 = off[q + 2] << 4;
             int m3 = off[q + 3] << 4;
-            FloatVector w0 = FloatVector.broadcast(S, pts[o + 8]);
-            FloatVector w1 = FloatVector.broadcast(S, pts[o + 9]);
-            FloatVector w2 = FloatVector.broadcast(S, pts[o + 10]);
-            FloatVector w3 = FloatVector.broadcast(S, pts[o + 11]);
+            FloatVector w0 = FloatVector.broadcast(S, pts[o + 6]);
+            FloatVector w1 = FloatVector.broadcast(S, pts[o + 7]);
+            FloatVector w2 = FloatVector.broadcast(S, pts[o + 8]);
+            FloatVector w3 = FloatVector.broadcast(S, pts[o + 9]);
             FloatVector a = FloatVector.fromArray(S, c, m0).mul(w0);
             FloatVector b = FloatVector.fromArray(S, c, m0 + 8).mul(w0);
             a = FloatVector.fromArray(S, c, m1).fma(w1, a);
@@ -242,26 +247,63 @@ final class VectorLbsSkinner implements Skinner {
             b = FloatVector.fromArray(S, c, m2 + 8).fma(w2, b);
             a = FloatVector.fromArray(S, c, m3).fma(w3, a);
             b = FloatVector.fromArray(S, c, m3 + 8).fma(w3, b);
-            FloatVector r = FloatVector.fromArray(S, pts, o);
-            FloatVector p = a.mul(r.rearrange(PX_PY)).add(b.mul(r.rearrange(PZ_ONE)));
+            FloatVector pxy = FloatVector.broadcast(S, pts[o]).blend(FloatVector.broadcast(S, pts[o + 1]), HI);
+            FloatVector pz1 = FloatVector.broadcast(S, pts[o + 2]).blend(one, HI);
+            FloatVector p = a.mul(pxy).add(b.mul(pz1));
             p.add(p.rearrange(SWAP)).intoArray(outPositions, 3 * i + positionShift);
             // [c1 | c2] x [c2 | c0] = [c1 x c2 | c2 x c0]; [c0 | c1] x [c1 | c0] = [c0 x c1 | ...]
             FloatVector aSwap = a.rearrange(SWAP);
             FloatVector left = aSwap.blend(b.rearrange(SWAP), HI);
             FloatVector right = b.blend(aSwap, HI);
-            FloatVector k01 = left.rearrange(YZX).mul(right.rearrange(ZXY))
-                    .sub(left.rearrange(ZXY).mul(right.rearrange(YZX)));
-            FloatVector k2 = a.rearrange(YZX).mul(aSwap.rearrange(ZXY)).sub(a.rearrange(ZXY).mul(aSwap.rearrange(YZX)));
-            FloatVector t = k01.mul(r.rearrange(NX_NY));
-            FloatVector n = t.add(t.rearrange(SWAP)).add(k2.mul(r.rearrange(NZ_ZERO)));
-            FloatVector n2 = n.mul(n);
-            FloatVector len2 = n2.add(n2.rearrange(YZX)).add(n2.rearrange(ZXY));
-            FloatVector inv = one.div(len2.sqrt()).blend(zero, len2.compare(VectorOperators.LE, 0f));
-            n.mul(inv).intoArray(outNormals, 3 * i + normalShift);
+            // u x v = (u v.yzx - u.yzx v).yzx: three permutations per cross product instead of four
+            FloatVector k01 = left.mul(right.rearrange(YZX)).sub(left.rearrange(YZX).mul(right)).rearrange(YZX);
+            FloatVector k2 = a.mul(aSwap.rearrange(YZX)).sub(a.rearrange(YZX).mul(aSwap)).rearrange(YZX);
+            FloatVector nxy = FloatVector.broadcast(S, pts[o + 3]).blend(FloatVector.broadcast(S, pts[o + 4]), HI);
+            FloatVector t = k01.mul(nxy);
+            // Unnormalised here; normalise() does 8 points per square root and division.
+            t.add(t.rearrange(SWAP)).add(k2.mul(FloatVector.broadcast(S, pts[o + 5])))
+                    .intoArray(outNormals, 3 * i + normalShift);
         }
     }
 
-    private static VectorShuffle<Float> shuffleOf(int... lanes) {
-        return VectorShuffle.fromArray(S, lanes, 0);
+    /**
+     * Scales the normals of points {@code [from, to)} (interleaved, at {@code 3 * point}) to unit
+     * length, zero ones staying zero: eight points per step, de-interleaved into x, y, z lanes, so
+     * that a square root and a division serve eight normals. Points past the last whole group of
+     * eight take the same float operations one by one, so results do not depend on where groups
+     * start.
+     */
+    private static void normalise(float[] normals, int from, int to) {
+        final FloatVector zero = FloatVector.zero(S);
+        final FloatVector one = FloatVector.broadcast(S, 1f);
+        int i = from;
+        for (; i + 8 <= to; i += 8) {
+            int o = 3 * i;
+            FloatVector v0 = FloatVector.fromArray(S, normals, o);
+            FloatVector v1 = FloatVector.fromArray(S, normals, o + 8);
+            FloatVector v2 = FloatVector.fromArray(S, normals, o + 16);
+            FloatVector x = v0.rearrange(Lanes.GX0).blend(v1.rearrange(Lanes.GX1), Lanes.MGX1)
+                    .blend(v2.rearrange(Lanes.GX2), Lanes.MGX2);
+            FloatVector y = v0.rearrange(Lanes.GY0).blend(v1.rearrange(Lanes.GY1), Lanes.MGY1)
+                    .blend(v2.rearrange(Lanes.GY2), Lanes.MGY2);
+            FloatVector z = v0.rearrange(Lanes.GZ0).blend(v1.rearrange(Lanes.GZ1), Lanes.MGZ1)
+                    .blend(v2.rearrange(Lanes.GZ2), Lanes.MGZ2);
+            FloatVector len2 = x.mul(x).add(y.mul(y)).add(z.mul(z));
+            FloatVector scale = zero.blend(one.div(len2.sqrt()), len2.compare(VectorOperators.GT, 0f));
+            v0.mul(scale.rearrange(Lanes.TRIPLE0)).intoArray(normals, o);
+            v1.mul(scale.rearrange(Lanes.TRIPLE1)).intoArray(normals, o + 8);
+            v2.mul(scale.rearrange(Lanes.TRIPLE2)).intoArray(normals, o + 16);
+        }
+        for (; i < to; i++) {
+            int o = 3 * i;
+            float x = normals[o];
+            float y = normals[o + 1];
+            float z = normals[o + 2];
+            float len2 = x * x + y * y + z * z;
+            float scale = len2 > 0f ? 1f / (float) Math.sqrt(len2) : 0f;
+            normals[o] = x * scale;
+            normals[o + 1] = y * scale;
+            normals[o + 2] = z * scale;
+        }
     }
 }
