@@ -16,6 +16,7 @@ import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.locks.LockSupport;
 import java.util.function.BooleanSupplier;
 
 import org.junit.jupiter.api.Test;
@@ -103,6 +104,17 @@ class SimulationThreadTest {
         AnimationConfig config = new AnimationConfig();
         SkeletalAnimatedMesh mesh = ribbon(config);
         mesh.setStepRate(2000);
+        // A listener that now and then works a little, then stops the thread from the thread
+        // itself ("stop after N frames"), racing the spammers' own stops and starts. The work
+        // widens the window in which a spammer's stop() waits for this thread while this thread
+        // calls stop(): a stop() that held its lock while joining would deadlock here.
+        AtomicInteger published = new AtomicInteger();
+        mesh.setFrameListener(() -> {
+            if (published.incrementAndGet() % 8 == 0) {
+                LockSupport.parkNanos(200_000);
+                mesh.stop();
+            }
+        });
         int threads = 6;
         int operations = 3000;
         ConcurrentLinkedQueue<Throwable> unexpected = new ConcurrentLinkedQueue<>();
@@ -148,6 +160,8 @@ class SimulationThreadTest {
                                 }
                             }
                         }
+                        // Let the thread live a little between operations, as a user's clicks would.
+                        LockSupport.parkNanos(random.nextInt(100_000));
                     }
                 } catch (Throwable e) {
                     unexpected.add(e);
@@ -159,7 +173,7 @@ class SimulationThreadTest {
             workers.add(t);
         }
         go.countDown();
-        if (!finished.await(20, TimeUnit.SECONDS)) {
+        if (!finished.await(10, TimeUnit.SECONDS)) {
             StringBuilder dump = new StringBuilder();
             Thread.getAllStackTraces().forEach((t, stack) -> {
                 dump.append(t.getName()).append(' ').append(t.getState()).append('\n');
@@ -167,7 +181,7 @@ class SimulationThreadTest {
                     dump.append("    at ").append(e).append('\n');
                 }
             });
-            fail("spam did not finish within 20 s (deadlock?)\n" + dump);
+            fail("spam did not finish within 10 s (deadlock?)\n" + dump);
         }
         for (Thread t : workers) {
             t.join();
