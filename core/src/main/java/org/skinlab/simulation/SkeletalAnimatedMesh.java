@@ -35,23 +35,19 @@ import org.skinlab.skinning.SkinnedModel;
  * renderers that drive the simulation themselves.
  *
  * <p><b>Snapshots: a pool of leased buffers instead of the thesis' mutex.</b> The thesis guarded
- * one mesh with a mutex that the simulation held while skinning and the renderer while reading,
- * so each side could stall the other for a whole skinning or upload. Here the simulation writes
- * into a buffer no reader holds and publishes it with one atomic store ({@code latest}); a reader
- * {@link #acquire() acquires} the latest buffer by counting itself in (increment its lease count,
- * then check it is still the latest, else step back and retry) and {@link Frame#close() closes}
- * it when done. The simulation picks for writing only a buffer that is neither the latest nor
- * leased: it checks the lease count <em>after</em> the buffer stopped being the latest, and a
- * reader counts itself in <em>before</em> checking that it still is, so (all of it sequentially
- * consistent atomics) either the writer sees the lease and skips the buffer, or the reader sees a
- * newer latest and retries. A reader therefore never sees a buffer being written and never waits
- * for the simulation; the simulation never waits for a reader. With one reader three buffers
- * always leave one free (the classic triple buffer); more readers holding frames at once make the
- * pool grow, up to {@value #MAX_BUFFERS} buffers, after which a step skips publishing (counted in
- * {@link #droppedFrames()}) rather than block. Reads copy nothing and allocate nothing, which
- * matters to renderers that upload positions and normals every frame; any number of threads may
- * read. The price against a mutex-guarded copy is memory (three frames instead of two) and the
- * rule that a reader must close what it acquires.
+ * one mesh with a mutex that the simulation held while skinning and the renderer while drawing,
+ * so each side could stall the other for a whole skinning or upload. Here the simulation skins
+ * into a buffer no reader holds and publishes it with one atomic store; a reader
+ * {@link #acquire() acquires} the latest frame (counting itself in as a lease) and
+ * {@link Frame#close() closes} it when done, and the simulation never writes a leased buffer
+ * ({@link FramePool} has the protocol and why it is safe). A reader therefore never sees a frame
+ * being written and never waits for the simulation, and the simulation never waits for a reader.
+ * With one reader this is the classic triple buffer; more readers holding frames at once make
+ * the pool grow, up to {@value #MAX_BUFFERS} buffers, after which a step skips publishing
+ * (counted in {@link #droppedFrames()}) rather than block. Reads copy nothing and allocate
+ * nothing, which matters to renderers that upload positions and normals every frame; any number
+ * of threads may read. The price against a mutex-guarded double buffer is memory (three frames
+ * instead of two) and the rule that a reader closes what it acquires.
  *
  * <p><b>Thread rules.</b> Every method may be called from any thread. {@link #start()},
  * {@link #stop()} and {@link #close()} are idempotent; stop and close return once the thread has
@@ -79,7 +75,6 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
     public static final double MAX_STEP_SECONDS = 0.25;
     /** Most buffers the frame pool grows to when many readers hold frames at once. */
     public static final int MAX_BUFFERS = 8;
-    private static final int INITIAL_BUFFERS = 3;
     /** How often a simulation thread waiting for the step lock checks whether it was stopped. */
     private static final long LOCK_POLL_NANOS = TimeUnit.MILLISECONDS.toNanos(5);
     private static final AtomicInteger THREAD_NUMBERS = new AtomicInteger();
@@ -88,19 +83,17 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
     private final AnimationClip clip;
     private final AnimationConfig config;
     private final int[] pointCounts;
-    private final boolean publishInPlace;
 
     // Simulation side: touched only while holding stepLock.
     private final ReentrantLock stepLock = new ReentrantLock();
     private final SkinnedModel skinned;
     private final AnimationSampler sampler;
     private final double duration;
-    private Frame[] buffers;
+    private final FramePool pool;
     private double playback;
     private long sequence;
 
     // Shared with readers.
-    private final AtomicReference<Frame> latest = new AtomicReference<>();
     private volatile double playbackTime;
     private volatile long publishedSequence;
     private volatile long steps;
@@ -157,7 +150,6 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
         this.model = Objects.requireNonNull(model, "model");
         this.clip = clip;
         this.config = Objects.requireNonNull(config, "config");
-        this.publishInPlace = publishInPlace;
         this.skinned = new SkinnedModel(model, clip, Objects.requireNonNull(normals, "normals"));
         this.sampler = skinned.sampler();
         this.duration = Math.max(0.0, (double) sampler.end() - sampler.start());
@@ -166,10 +158,7 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
         for (int g = 0; g < pointCounts.length; g++) {
             pointCounts[g] = geometries.get(g).pointCount();
         }
-        buffers = new Frame[INITIAL_BUFFERS];
-        for (int i = 0; i < buffers.length; i++) {
-            buffers[i] = new Frame(pointCounts);
-        }
+        pool = new FramePool(pointCounts, MAX_BUFFERS, publishInPlace);
         // Frame 0: the clip's start, so acquire() always has something to give, whatever the switches say.
         stepLock.lock();
         try {
@@ -208,14 +197,7 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
      * between its two reads) and allocation-free; any thread, any number of readers.
      */
     public Frame acquire() {
-        while (true) {
-            Frame f = latest.get();
-            f.leases.incrementAndGet();
-            if (latest.get() == f) {
-                return f;
-            }
-            f.leases.decrementAndGet();
-        }
+        return pool.acquire();
     }
 
     /** The sequence number of the latest published frame. */
@@ -376,6 +358,16 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
         }
     }
 
+    /** Buffers the frame pool holds so far (three, more while many readers hold frames). */
+    int bufferCount() {
+        stepLock.lock();
+        try {
+            return pool.bufferCount();
+        } finally {
+            stepLock.unlock();
+        }
+    }
+
     /** The thread of the current runner, for tests; null before the first start. */
     Thread simulationThread() {
         Runner r = current;
@@ -414,7 +406,7 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
 
     /** Poses, skins into a free buffer and publishes it; the caller holds stepLock. */
     private void publish(AnimationConfig.Settings s) {
-        Frame f = claim();
+        Frame f = pool.claim();
         if (f == null) {
             droppedFrames++;
             return;
@@ -428,32 +420,12 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
         long nanos = System.nanoTime() - t0;
         long seq = sequence++;
         f.describe(seq, playback, clipTime, s.method(), s.interpolation(), nanos);
-        latest.set(f); // the volatile store that makes the buffer's contents visible to acquire()
+        pool.publish(f);
         publishedSequence = seq;
         Runnable listener = frameListener;
         if (listener != null) {
             listener.run();
         }
-    }
-
-    /** A buffer neither latest nor leased (see the class comment for why this check suffices). */
-    private Frame claim() {
-        if (publishInPlace) {
-            return buffers[0];
-        }
-        Frame shown = latest.get();
-        for (Frame f : buffers) {
-            if (f != shown && f.leases.get() == 0) {
-                return f;
-            }
-        }
-        if (buffers.length < MAX_BUFFERS) {
-            Frame[] more = java.util.Arrays.copyOf(buffers, buffers.length + 1);
-            more[buffers.length] = new Frame(pointCounts);
-            buffers = more;
-            return more[more.length - 1];
-        }
-        return null;
     }
 
     private void run(Runner r) {

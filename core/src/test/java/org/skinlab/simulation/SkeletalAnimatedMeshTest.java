@@ -228,6 +228,7 @@ class SkeletalAnimatedMeshTest {
             }
             // Holding MAX_BUFFERS - 1 frames leaves the writer only the latest: it must drop, not wait.
             assertTrue(mesh.droppedFrames() > 0, "no step was dropped although every buffer was held");
+            assertEquals(SkeletalAnimatedMesh.MAX_BUFFERS, mesh.bufferCount());
             long before = mesh.latestSequence();
             held.forEach(Frame::close);
             mesh.step(0.05);
