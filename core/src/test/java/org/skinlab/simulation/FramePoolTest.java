@@ -11,6 +11,7 @@ import java.util.ArrayList;
 import java.util.List;
 
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
 
 /**
  * The snapshot protocol, one interleaving at a time: each test plays the reader's two steps
@@ -19,6 +20,7 @@ import org.junit.jupiter.api.Test;
  * stress test ({@link TornFrameTest}) cannot aim at the few nanoseconds between a reader's two
  * steps; these tests can.
  */
+@Timeout(5)
 class FramePoolTest {
     private static FramePool pool() {
         FramePool pool = new FramePool(new int[] {4}, SkeletalAnimatedMesh.MAX_BUFFERS, false);
@@ -85,7 +87,8 @@ class FramePoolTest {
         FramePool pool = pool();
         List<Frame> held = new ArrayList<>();
         int published = 1;
-        while (true) {
+        // Bounded: a pool that ignored leases would hand out buffers forever.
+        for (int i = 0; i < 2 * SkeletalAnimatedMesh.MAX_BUFFERS; i++) {
             held.add(pool.acquire());
             Frame next = pool.claim();
             if (next == null) {
