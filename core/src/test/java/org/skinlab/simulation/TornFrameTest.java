@@ -27,6 +27,13 @@ import org.skinlab.skinning.SkinningMethod;
  */
 class TornFrameTest {
     private static final int SNAPSHOTS = 100_000;
+    /**
+     * Distinct frames a clean run must have seen, so that it cannot pass by reading one frame
+     * while a starved writer stands still; the reader goes on past {@link #SNAPSHOTS} until it has.
+     */
+    private static final int MIN_DISTINCT_FRAMES = 500;
+    /** The reader gives up after this long even without enough distinct frames (and the test fails). */
+    private static final long READ_NANOS = 20_000_000_000L;
     private static final Model RIBBON = TwistRibbon.model();
 
     /** What one run of the harness saw. */
@@ -72,17 +79,19 @@ class TornFrameTest {
     private static void assertClean(Result r) {
         assertEquals(0, r.torn(), () -> r.torn() + " torn frames, first: " + r.firstProblem());
         assertEquals(0, r.backwards(), "sequence numbers went backwards");
-        assertEquals(SNAPSHOTS, r.snapshots());
+        assertTrue(r.snapshots() >= SNAPSHOTS, () -> "only " + r.snapshots() + " snapshots");
         // Not a vacuous pass: the reader saw the simulation move and the switches change.
-        assertTrue(r.distinctFrames() >= 100, () -> "only " + r.distinctFrames() + " distinct frames seen");
+        assertTrue(r.distinctFrames() >= MIN_DISTINCT_FRAMES,
+                () -> "only " + r.distinctFrames() + " distinct frames seen in " + r.snapshots() + " snapshots");
         assertEquals(EnumSet.allOf(SkinningMethod.class), r.methods());
         assertTrue(r.interpolations().size() >= 2, () -> "interpolations seen: " + r.interpolations());
     }
 
     /**
      * Runs a writer (the simulation thread, or a thread stepping by hand as fast as it can) and a
-     * settings flipper while this thread takes {@code snapshots} snapshots and checks each; stops
-     * early after {@code maxTorn} torn ones.
+     * settings flipper while this thread takes at least {@code snapshots} snapshots and checks
+     * each, going on until it has seen {@link #MIN_DISTINCT_FRAMES} frames (or
+     * {@link #READ_NANOS} passed); stops early after {@code maxTorn} torn ones.
      */
     private static Result hammer(SkeletalAnimatedMesh mesh, boolean useThread, int snapshots, int maxTorn)
             throws InterruptedException {
@@ -137,8 +146,10 @@ class TornFrameTest {
         Set<SkinningMethod> methods = EnumSet.noneOf(SkinningMethod.class);
         Set<RotationInterpolation> interpolations = EnumSet.noneOf(RotationInterpolation.class);
         int taken = 0;
+        long giveUp = System.nanoTime() + READ_NANOS;
         try {
-            while (taken < snapshots && torn < maxTorn) {
+            while ((taken < snapshots || distinct < MIN_DISTINCT_FRAMES && System.nanoTime() - giveUp < 0)
+                    && torn < maxTorn) {
                 try (Frame frame = mesh.acquire()) {
                     taken++;
                     String problem = checker.problem(frame);
