@@ -229,8 +229,9 @@ public final class AnimationHelper {
 
     /**
      * Spherical interpolation along the shortest arc: {@code (sin((1-t)O) a + sin(tO) b) / sin O}
-     * with O the angle between a and b (Shoemake 1985). Falls back to {@link #nlerp} when the keys
-     * are within ~0.03 degrees, where sin O loses its precision.
+     * with O the angle between a and b (Shoemake 1985). Falls back to {@link #nlerp} when
+     * |a.b| > 0.9999999 (keys less than about 0.05 degrees of rotation apart), where sin O loses
+     * its precision.
      */
     public static Quaternionf slerp(Quaternionfc a, Quaternionfc b, float t, Quaternionf dest) {
         double dot = (double) a.x() * b.x() + (double) a.y() * b.y() + (double) a.z() * b.z() + (double) a.w() * b.w();
@@ -251,13 +252,17 @@ public final class AnimationHelper {
      * The unit dual quaternion of the rigid part of {@code m}: rotation {@link #rotationOf}, and
      * the translation column. Exact for rigid matrices; for others it keeps the rotation and
      * translation and drops scale (use the two-phase split of the DQS skinner for those).
+     * Allocates (through {@link #rotationOf}).
      */
     public static DualQuaternion toDualQuaternion(Matrix4fc m, DualQuaternion dest) {
         Quaternionf r = rotationOf(m, new Quaternionf());
         return dest.set(r.x, r.y, r.z, r.w, m.m30(), m.m31(), m.m32());
     }
 
-    /** The rigid matrix of a dual quaternion (normalised first, so any non-zero one works). */
+    /**
+     * The rigid matrix of a dual quaternion (normalised first, so any non-zero one works).
+     * Allocates a few temporaries: for tests and offline use.
+     */
     public static Matrix4f toMatrix(DualQuaternion dq, Matrix4f dest) {
         DualQuaternion n = new DualQuaternion(dq).normalize();
         Vector3f t = n.getTranslation(new Vector3f());
