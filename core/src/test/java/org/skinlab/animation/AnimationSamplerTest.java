@@ -391,6 +391,19 @@ class AnimationSamplerTest {
     }
 
     @Test
+    void aKeyScaledToZeroOnOneAxisKeepsTheRotation() {
+        // Rz(30) with scale 1, then Rz(30) flattened along Y (scale (1 0 1)): half way is
+        // Rz(30) S(1 0.5 1). The rotation must not turn on the way (before the fix of
+        // AnimationHelper's singular fallback, the second key read as Rz(30) Rx(90)).
+        Quaternionf r = axisAngle(30, 0, 0, 1);
+        AnimationSampler s = matrixSampler(rowMajor(new Matrix4f().rotation(r)),
+                rowMajor(new Matrix4f().rotation(r).scale(1, 0, 1)));
+        for (RotationInterpolation mode : RotationInterpolation.values()) {
+            assertMatrixEquals(new Matrix4f().rotation(r).scale(1, 0.5f, 1), sampleMatrix(s, 0.5f, mode), 1e-6);
+        }
+    }
+
+    @Test
     void slightlyNonOrthonormalMatrixKeysBlendWithoutShear() {
         // Keys Rz(0) and Rz(90), each entry off by up to 1e-3 (exporter float noise). Between them
         // the result is still T*R*S: orthogonal columns (to float precision, 1e-6, while an
