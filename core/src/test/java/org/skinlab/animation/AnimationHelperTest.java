@@ -185,6 +185,17 @@ class AnimationHelperTest {
         assertSameRotation(r, rotationOf(new Matrix4f().rotation(r).scale(1e3f, 1e-3f, 1)), ROTATION);
     }
 
+    @Test
+    void rotationOfExtremeScalesConverges() {
+        // Unscaled Newton only halves a large singular value per step (X/2 + X^-T/2), so 1e12
+        // would need 40 steps before converging; Higham's scaling brings it to 1 at once.
+        Quaternionf r = axisAngle(-100, 3, 1, -2);
+        for (float s : new float[] {1e12f, 1e-12f}) {
+            assertSameRotation(r, rotationOf(new Matrix4f().rotation(r).scale(s)), ROTATION);
+        }
+        assertSameRotation(r, rotationOf(new Matrix4f().rotation(r).scale(1e12f, 1, 1e-6f)), ROTATION);
+    }
+
     // ------------------------------------------------------------------------ decompose / compose
 
     @Test
