@@ -1,5 +1,6 @@
 package org.skinlab.skinning;
 
+import org.joml.Matrix3f;
 import org.joml.Matrix4f;
 import org.joml.Quaternionf;
 import org.skinlab.animation.AnimationHelper;
@@ -21,9 +22,16 @@ import org.skinlab.animation.AnimationHelper;
  * {@code mat4_to_dquat} uses the bone's rest matrix), so that scaling a bone along its own axis
  * scales the skin about that bone. Concretely, with {@code B} the rigid part of the joint's bind
  * frame {@code inverse(INV_BIND * BIND_SHAPE)}: {@code X = M B} is the joint's posed frame;
- * {@code X = [R|t] S0} with R the polar rotation of X; then {@code S = B S0 B^-1} and
- * {@code D = [R|t] B^-1}. Joints whose posed frame has unit columns (within 1e-4, Blender's
- * threshold) and no reflection skip the split: S is the identity and D = M.
+ * {@code X = [R|t] S0}; then {@code S = B S0 B^-1} and {@code D = [R|t] B^-1}. Joints whose posed
+ * frame has unit columns (within 1e-4, Blender's threshold) and no reflection skip the split: S
+ * is the identity and D = M.
+ *
+ * <p>Which rotation R a scaled frame has is a convention once the frame is sheared (a child of a
+ * non-uniformly scaled joint is). We take Blender 3.4's: keep the frame's Y axis (the bone axis
+ * in Blender's rigs and in files exported from them) and orthogonalise the others to it
+ * ({@code orthogonalize_m4(m, 1)}), so our DQS agrees with Blender's to float precision on our
+ * own assets; the polar rotation would differ by 0.7% of the tentacle's size (see
+ * docs/references.md). Frames without a usable Y axis fall back to the polar rotation.
  */
 public final class JointPalette {
     private final int joints;
@@ -38,6 +46,7 @@ public final class JointPalette {
     private final Matrix4f x = new Matrix4f();
     private final Matrix4f t = new Matrix4f();
     private final Quaternionf q = new Quaternionf();
+    private final Matrix3f r3 = new Matrix3f();
 
     /**
      * @param bindMatrices per joint 16 floats column-major, the matrix that takes bind-shape
@@ -151,7 +160,7 @@ public final class JointPalette {
                 continue;
             }
             anyScale = true;
-            AnimationHelper.rotationOf(x, q);
+            boneAxisRotation(x, q);
             // [R|t]^-1 X = S0 (pure linear), then S = B S0 B^-1.
             t.translationRotate(x.m30(), x.m31(), x.m32(), q).invertAffine().mul(x, t);
             t.m30(0f).m31(0f).m32(0f);
@@ -166,6 +175,39 @@ public final class JointPalette {
             writeDualQuaternion(j, q, t.m30(), t.m31(), t.m32());
         }
         scaled = anyScale;
+    }
+
+    /**
+     * The rotation of a scaled frame that keeps its Y axis: y = Y/|Y|, z = X x y normalised,
+     * x = y x z (Blender's {@code orthogonalize_m4} with axis 1).
+     */
+    private Quaternionf boneAxisRotation(Matrix4f frame, Quaternionf dest) {
+        float yx = frame.m10();
+        float yy = frame.m11();
+        float yz = frame.m12();
+        float yl = (float) Math.sqrt(yx * yx + yy * yy + yz * yz);
+        float xx = frame.m00();
+        float xy = frame.m01();
+        float xz = frame.m02();
+        if (yl > 1e-12f) {
+            yx /= yl;
+            yy /= yl;
+            yz /= yl;
+            float zx = xy * yz - xz * yy;
+            float zy = xz * yx - xx * yz;
+            float zz = xx * yy - xy * yx;
+            float zl = (float) Math.sqrt(zx * zx + zy * zy + zz * zz);
+            if (zl > 1e-12f) {
+                zx /= zl;
+                zy /= zl;
+                zz /= zl;
+                float ax = yy * zz - yz * zy;
+                float ay = yz * zx - yx * zz;
+                float az = yx * zy - yy * zx;
+                return dest.setFromNormalized(r3.set(ax, ay, az, yx, yy, yz, zx, zy, zz)).normalize();
+            }
+        }
+        return AnimationHelper.rotationOf(frame, dest);
     }
 
     private void writeDualQuaternion(int j, Quaternionf r, float tx, float ty, float tz) {

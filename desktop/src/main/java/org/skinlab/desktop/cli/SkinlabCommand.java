@@ -7,8 +7,8 @@ import picocli.CommandLine.Command;
 
 /** The {@code skinlab} command and its subcommands. */
 @Command(name = "skinlab", mixinStandardHelpOptions = true, versionProvider = SkinlabCommand.Version.class,
-        description = "Skeletal animation lab: import COLLADA characters, inspect them, benchmark the importer.",
-        subcommands = {InspectCommand.class, BenchCommand.class, CommandLine.HelpCommand.class})
+        description = "Skeletal animation lab: import COLLADA characters, inspect them, pose them, benchmark the importer.",
+        subcommands = {InspectCommand.class, PoseCommand.class, BenchCommand.class, CommandLine.HelpCommand.class})
 public final class SkinlabCommand implements Runnable {
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;

@@ -1,0 +1,95 @@
+package org.skinlab.skinning;
+
+import org.joml.Vector3f;
+import org.joml.Vector3fc;
+
+/**
+ * Numbers for the artifacts the thesis could only show: how much volume a closed mesh keeps, and
+ * how far a ring of vertices around a joint stays from the bone (LBS's "candy wrapper" collapses
+ * it toward the axis under twist). All sums in double.
+ */
+public final class ArtifactMetrics {
+    private ArtifactMetrics() {
+    }
+
+    /**
+     * The signed volume enclosed by a triangle mesh: the sum over triangles of
+     * {@code p0 . (p1 x p2) / 6} (divergence theorem). Positive for a closed mesh whose triangles
+     * wind counter-clockwise seen from outside; meaningless for an open one.
+     *
+     * @param pointPositions 3 floats per point (vertex indices of {@code triangles} index them)
+     * @param triangles      3 vertex indices per triangle
+     */
+    public static double signedVolume(float[] pointPositions, int[] triangles) {
+        double sum = 0;
+        for (int t = 0; t < triangles.length; t += 3) {
+            int a = 3 * triangles[t];
+            int b = 3 * triangles[t + 1];
+            int c = 3 * triangles[t + 2];
+            double ax = pointPositions[a], ay = pointPositions[a + 1], az = pointPositions[a + 2];
+            double bx = pointPositions[b], by = pointPositions[b + 1], bz = pointPositions[b + 2];
+            double cx = pointPositions[c], cy = pointPositions[c + 1], cz = pointPositions[c + 2];
+            sum += ax * (by * cz - bz * cy) + ay * (bz * cx - bx * cz) + az * (bx * cy - by * cx);
+        }
+        return sum / 6;
+    }
+
+    /** Deformed volume over rest volume of a geometry's closed mesh. */
+    public static double relativeVolume(SkinnedGeometry geometry, float[] deformedPoints) {
+        int[] triangles = geometry.mesh().triangles();
+        return signedVolume(deformedPoints, triangles) / signedVolume(geometry.positionArray(), triangles);
+    }
+
+    /**
+     * The points of the joint ring: those whose rest position is nearest to the plane through
+     * {@code jointPosition} perpendicular to {@code axis}, i.e. within {@code tolerance} of the
+     * smallest plane distance any point has. A joint between two rings of vertices (an odd number
+     * of segments) gets both.
+     */
+    public static int[] ringPoints(SkinnedGeometry geometry, Vector3fc jointPosition, Vector3fc axis,
+            float tolerance) {
+        Vector3f n = new Vector3f(axis).normalize();
+        float[] p = geometry.positionArray();
+        int points = geometry.pointCount();
+        float[] distance = new float[points];
+        float nearest = Float.POSITIVE_INFINITY;
+        for (int i = 0; i < points; i++) {
+            distance[i] = Math.abs((p[3 * i] - jointPosition.x()) * n.x + (p[3 * i + 1] - jointPosition.y()) * n.y
+                    + (p[3 * i + 2] - jointPosition.z()) * n.z);
+            nearest = Math.min(nearest, distance[i]);
+        }
+        int count = 0;
+        int[] found = new int[points];
+        for (int i = 0; i < points; i++) {
+            if (distance[i] <= nearest + tolerance) {
+                found[count++] = i;
+            }
+        }
+        return java.util.Arrays.copyOf(found, count);
+    }
+
+    /**
+     * Mean distance of the given points from the line through {@code origin} along {@code axis}:
+     * the ring radius. Compare a deformed ring's with its rest value.
+     */
+    public static double meanDistanceFromAxis(float[] pointPositions, int[] points, Vector3fc origin,
+            Vector3fc axis) {
+        if (points.length == 0) {
+            throw new IllegalArgumentException("no ring points");
+        }
+        double len = Math.sqrt(axis.lengthSquared());
+        double ux = axis.x() / len, uy = axis.y() / len, uz = axis.z() / len;
+        double sum = 0;
+        for (int i : points) {
+            double dx = pointPositions[3 * i] - origin.x();
+            double dy = pointPositions[3 * i + 1] - origin.y();
+            double dz = pointPositions[3 * i + 2] - origin.z();
+            double along = dx * ux + dy * uy + dz * uz;
+            dx -= along * ux;
+            dy -= along * uy;
+            dz -= along * uz;
+            sum += Math.sqrt(dx * dx + dy * dy + dz * dz);
+        }
+        return sum / points.length;
+    }
+}

@@ -1,0 +1,293 @@
+package org.skinlab.desktop.cli;
+
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.io.Writer;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+import java.util.regex.Pattern;
+import java.util.stream.Collectors;
+
+import com.fasterxml.jackson.core.JsonFactory;
+import com.fasterxml.jackson.core.JsonGenerator;
+
+import org.skinlab.animation.RotationInterpolation;
+import org.skinlab.model.AnimationClip;
+import org.skinlab.model.Mesh;
+import org.skinlab.model.Model;
+import org.skinlab.skinning.NormalTransform;
+import org.skinlab.skinning.SkinnedGeometry;
+import org.skinlab.skinning.SkinnedModel;
+import org.skinlab.skinning.SkinningMethod;
+
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+import picocli.CommandLine.Model.CommandSpec;
+
+/**
+ * {@code skinlab pose FILE --time T1[,T2...] --method lbs|dqs [--clip NAME] [--json OUT]}: the
+ * deformed positions of every placed mesh at the given clip times. The JSON form is a contract
+ * other tools compare against:
+ * <pre>
+ * {"file":..., "clip":..., "method":..., "times":[T1,...],
+ *  "meshes":[{"geometry":ID, "name":NAME, "poses":[[x,y,z, x,y,z, ...] one array per time]}]}
+ * </pre>
+ * <ul>
+ * <li>{@code file}: the path as given on the command line.</li>
+ * <li>{@code clip}: the name of the clip played ({@code --clip}, else the file's first clip);
+ *     null when the file has no animation: then every time gives the rest pose.</li>
+ * <li>{@code method}: {@code "lbs"} or {@code "dqs"}.</li>
+ * <li>{@code times}: the times actually used, in the order given: clamped to
+ *     [clip start, clip end]; as given when there is no clip.</li>
+ * <li>{@code meshes}: one entry per placed mesh ({@code <instance_controller>} or
+ *     {@code <instance_geometry>}), in scene order, skinned or static; a static mesh is placed
+ *     by its node's world matrix at that time. {@code geometry} is the {@code <geometry>} id,
+ *     {@code name} its name (null if none).</li>
+ * <li>{@code poses}: per time, the deformed world position of every entry of the mesh's
+ *     {@code <vertices>} POSITION source, in source order (3 numbers each), in the document's own
+ *     frame: no up-axis or unit conversion.</li>
+ * </ul>
+ * Numbers are the float results printed so that they read back to the same float (Java's
+ * {@link Float#toString(float)}).
+ */
+@Command(name = "pose", mixinStandardHelpOptions = true, sortOptions = false,
+        description = {"Deform every placed mesh of a COLLADA file at given clip times (LBS or DQS) and write the "
+                + "world positions.",
+                "",
+                "JSON (--json OUT, '-' for stdout): {\"file\", \"clip\", \"method\", \"times\", \"meshes\":[{\"geometry\", "
+                        + "\"name\", \"poses\":[[x,y,z, ...] per time]}]}. One mesh entry per placed mesh in scene order "
+                        + "(static meshes placed by their node); one x,y,z per entry of the mesh's <vertices> POSITION "
+                        + "source, in source order; world coordinates in the document's own frame (no up-axis or unit "
+                        + "conversion). \"times\" are the times used: clamped to the clip's [start, end]. \"clip\" is "
+                        + "null when the file has no animation (every time is then the rest pose). \"name\" is null "
+                        + "when the geometry has none. Floats print so that they read back exactly.",
+                "Without --json: a short summary (bounding box per mesh and time)."})
+public final class PoseCommand implements Callable<Integer> {
+    @Parameters(index = "0", paramLabel = "FILE", description = "the .dae file")
+    Path file;
+
+    @Option(names = "--time", required = true, split = ",", paramLabel = "T", converter = TimeConverter.class,
+            description = "clip times in seconds, comma-separated; clamped to the clip")
+    List<Float> times = new ArrayList<>();
+
+    @Option(names = "--method", required = true, paramLabel = "lbs|dqs", converter = MethodConverter.class,
+            description = "skinning method: lbs (linear blend) or dqs (dual quaternion)")
+    SkinningMethod method;
+
+    @Option(names = "--clip", paramLabel = "NAME", description = "the clip to play (default: the file's first clip)")
+    String clipName;
+
+    @Option(names = "--interpolation", paramLabel = "slerp|nlerp|lerp", converter = RotationConverter.class,
+            description = "rotation blending between keys (default: slerp)")
+    RotationInterpolation interpolation = RotationInterpolation.SLERP;
+
+    @Option(names = "--json", paramLabel = "OUT", description = "write the poses as JSON to OUT ('-': stdout)")
+    String json;
+
+    @Spec
+    CommandSpec spec;
+
+    /** Deformed positions per mesh and time: the command's result before it is printed. */
+    static final class Result {
+        final String file;
+        final String clip;
+        final SkinningMethod method;
+        final float[] times;
+        final List<Mesh> meshes;
+        /** [mesh][time]: 3 floats per POSITION entry. */
+        final float[][][] poses;
+
+        Result(String file, String clip, SkinningMethod method, float[] times, List<Mesh> meshes, float[][][] poses) {
+            this.file = file;
+            this.clip = clip;
+            this.method = method;
+            this.times = times;
+            this.meshes = meshes;
+            this.poses = poses;
+        }
+    }
+
+    @Override
+    public Integer call() throws IOException {
+        Model model = ModelFiles.load(file).model;
+        AnimationClip clip = chooseClip(model);
+        Result result = compute(file.toString(), model, clip, method, interpolation, times);
+        PrintWriter out = spec.commandLine().getOut();
+        if (json == null) {
+            out.print(text(result));
+        } else if (json.equals("-")) {
+            writeJson(result, out);
+            out.println();
+        } else {
+            Path target = Path.of(json);
+            try (Writer w = Files.newBufferedWriter(target, StandardCharsets.UTF_8)) {
+                writeJson(result, w);
+                w.write('\n');
+            } catch (IOException e) {
+                throw new CommandFailure(ExitCodes.USAGE, "cannot write " + target + ": " + e.getMessage(), e);
+            }
+        }
+        out.flush();
+        return ExitCodes.OK;
+    }
+
+    private AnimationClip chooseClip(Model model) {
+        if (clipName == null) {
+            return model.clips().isEmpty() ? null : model.clips().get(0);
+        }
+        return model.clip(clipName).orElseThrow(() -> new CommandLine.ParameterException(spec.commandLine(),
+                "unknown clip '" + clipName + "' in " + file + "; available clips: "
+                        + (model.clips().isEmpty() ? "(none)"
+                                : model.clips().stream().map(c -> "'" + c.name() + "'").collect(Collectors.joining(", ")))));
+    }
+
+    /** Poses the model at each time (clamped to the clip) and keeps every mesh's positions in source order. */
+    static Result compute(String fileName, Model model, AnimationClip clip, SkinningMethod method,
+            RotationInterpolation rotations, List<Float> requested) {
+        // Normals are computed by the skinners anyway; the command reports positions only.
+        SkinnedModel skinned = new SkinnedModel(model, clip, NormalTransform.INVERSE_TRANSPOSE);
+        List<SkinnedGeometry> geometries = skinned.geometries();
+        float[] used = new float[requested.size()];
+        for (int i = 0; i < used.length; i++) {
+            used[i] = clip == null ? requested.get(i) : skinned.sampler().clamp(requested.get(i));
+        }
+        float[][][] poses = new float[geometries.size()][used.length][];
+        float[][] points = new float[geometries.size()][];
+        float[][] normals = new float[geometries.size()][];
+        for (int g = 0; g < geometries.size(); g++) {
+            points[g] = new float[3 * geometries.get(g).pointCount()];
+            normals[g] = new float[3 * geometries.get(g).pointCount()];
+        }
+        for (int t = 0; t < used.length; t++) {
+            skinned.pose(clip == null ? 0f : used[t], rotations);
+            for (int g = 0; g < geometries.size(); g++) {
+                SkinnedGeometry geometry = geometries.get(g);
+                skinned.skin(g, method, points[g], normals[g]);
+                poses[g][t] = geometry.positionsInSourceOrder(points[g], new float[3 * geometry.positionCount()]);
+            }
+        }
+        List<Mesh> meshes = geometries.stream().map(SkinnedGeometry::mesh).collect(Collectors.toList());
+        return new Result(fileName, clip == null ? null : clip.name(), method, used, meshes, poses);
+    }
+
+    /** The contract's JSON, streamed (a pose of a large mesh is millions of numbers). */
+    static void writeJson(Result r, Writer w) throws IOException {
+        try (JsonGenerator json = new JsonFactory().createGenerator(w)) {
+            json.disable(JsonGenerator.Feature.AUTO_CLOSE_TARGET);
+            write(r, json);
+        }
+    }
+
+    private static void write(Result r, JsonGenerator json) throws IOException {
+        json.writeStartObject();
+        json.writeStringField("file", r.file);
+        json.writeStringField("clip", r.clip);
+        json.writeStringField("method", r.method.key());
+        json.writeArrayFieldStart("times");
+        for (float t : r.times) {
+            json.writeNumber(t);
+        }
+        json.writeEndArray();
+        json.writeArrayFieldStart("meshes");
+        for (int g = 0; g < r.meshes.size(); g++) {
+            Mesh mesh = r.meshes.get(g);
+            json.writeStartObject();
+            json.writeStringField("geometry", mesh.id());
+            json.writeStringField("name", mesh.name());
+            json.writeArrayFieldStart("poses");
+            for (float[] pose : r.poses[g]) {
+                json.writeStartArray();
+                for (float v : pose) {
+                    // Jackson prints a float with Float.toString: the digits that read back to it.
+                    json.writeNumber(v);
+                }
+                json.writeEndArray();
+            }
+            json.writeEndArray();
+            json.writeEndObject();
+        }
+        json.writeEndArray();
+        json.writeEndObject();
+    }
+
+    /** The human summary: what was played, then each mesh's bounding box at each time. */
+    static String text(Result r) {
+        StringBuilder sb = new StringBuilder();
+        sb.append(r.file).append('\n');
+        sb.append("  clip:   ").append(r.clip == null ? "none (rest pose)" : r.clip).append(", method ")
+                .append(r.method.key()).append('\n');
+        sb.append("  times:  ");
+        for (int t = 0; t < r.times.length; t++) {
+            sb.append(t == 0 ? "" : ", ").append(Float.toString(r.times[t]));
+        }
+        sb.append(" s\n");
+        for (int g = 0; g < r.meshes.size(); g++) {
+            Mesh mesh = r.meshes.get(g);
+            sb.append(String.format(Locale.ROOT, "  %s%s: %d positions%n", mesh.id(),
+                    mesh.name() == null || mesh.name().equals(mesh.id()) ? "" : " (" + mesh.name() + ")",
+                    mesh.positionCount()));
+            for (int t = 0; t < r.times.length; t++) {
+                float[] p = r.poses[g][t];
+                float[] lo = {Float.POSITIVE_INFINITY, Float.POSITIVE_INFINITY, Float.POSITIVE_INFINITY};
+                float[] hi = {Float.NEGATIVE_INFINITY, Float.NEGATIVE_INFINITY, Float.NEGATIVE_INFINITY};
+                for (int i = 0; i < p.length; i++) {
+                    lo[i % 3] = Math.min(lo[i % 3], p[i]);
+                    hi[i % 3] = Math.max(hi[i % 3], p[i]);
+                }
+                sb.append(String.format(Locale.ROOT, "    t=%-9s box (%.4f, %.4f, %.4f) .. (%.4f, %.4f, %.4f)%n",
+                        Float.toString(r.times[t]), lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]));
+            }
+        }
+        return sb.toString();
+    }
+
+    /** A decimal number (no NaN, no infinity, no hexadecimal or type suffix as Java would accept). */
+    private static final Pattern DECIMAL = Pattern.compile("[+-]?(\\d+\\.?\\d*|\\.\\d+)([eE][+-]?\\d+)?");
+
+    static final class TimeConverter implements CommandLine.ITypeConverter<Float> {
+        @Override
+        public Float convert(String value) {
+            String s = value.trim();
+            if (!DECIMAL.matcher(s).matches()) {
+                throw new CommandLine.TypeConversionException("'" + value + "' is not a time in seconds (a decimal number)");
+            }
+            float t = Float.parseFloat(s);
+            if (Float.isInfinite(t)) {
+                throw new CommandLine.TypeConversionException("'" + value + "' is beyond the float range");
+            }
+            return t;
+        }
+    }
+
+    static final class MethodConverter implements CommandLine.ITypeConverter<SkinningMethod> {
+        @Override
+        public SkinningMethod convert(String value) {
+            try {
+                return SkinningMethod.fromKey(value);
+            } catch (IllegalArgumentException e) {
+                throw new CommandLine.TypeConversionException("'" + value + "' is not a skinning method (expected lbs or dqs)");
+            }
+        }
+    }
+
+    static final class RotationConverter implements CommandLine.ITypeConverter<RotationInterpolation> {
+        @Override
+        public RotationInterpolation convert(String value) {
+            for (RotationInterpolation r : RotationInterpolation.values()) {
+                if (r.name().equalsIgnoreCase(value)) {
+                    return r;
+                }
+            }
+            throw new CommandLine.TypeConversionException("'" + value + "' is not a rotation interpolation (expected "
+                    + "slerp, nlerp or lerp)");
+        }
+    }
+}
