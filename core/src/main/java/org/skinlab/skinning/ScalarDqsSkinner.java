@@ -10,7 +10,9 @@ package org.skinlab.skinning;
  *     parts, j_0 the dominant influence: antipodal quaternions (the same rotation) are flipped
  *     onto the pivot's hemisphere so the blend takes the short way (Kavan et al. 2008, section
  *     4). The sign comes from {@code Math.copySign}, not a branch: with joints in random order a
- *     branch mispredicts about half the time;</li>
+ *     branch mispredicts about half the time. Its argument is {@code dot + 0}, so a dot of -0
+ *     (orthogonal rotations) counts as +0, as in a lane compare {@code dot < 0}: the SIMD kernels
+ *     then pick the same sign in that tie;</li>
  * <li>normalise b by its real part and apply it: rotate p1 and the normal, translate p1.</li>
  * </ol>
  * Since every flipped term has a non-negative dot with the pivot, |b.real| >= w_0 > 0: the
@@ -70,7 +72,7 @@ public final class ScalarDqsSkinner implements Skinner {
             float d0 = w * dq[q + 4], d1 = w * dq[q + 5], d2 = w * dq[q + 6], d3 = w * dq[q + 7];
             for (int k = 1; k < width; k++) {
                 q = 8 * joints[o + k];
-                w = Math.copySign(weights[o + k], p0 * dq[q] + p1 * dq[q + 1] + p2 * dq[q + 2] + p3 * dq[q + 3]);
+                w = Math.copySign(weights[o + k], p0 * dq[q] + p1 * dq[q + 1] + p2 * dq[q + 2] + p3 * dq[q + 3] + 0f);
                 r0 += w * dq[q];
                 r1 += w * dq[q + 1];
                 r2 += w * dq[q + 2];
@@ -115,9 +117,9 @@ public final class ScalarDqsSkinner implements Skinner {
                 float my;
                 float mz;
                 if (exactNormals) {
-                    mx = (s5 * s10 - s9 * s6) * nx + (s9 * s2 - s1 * s10) * ny + (s1 * s6 - s5 * s2) * nz;
-                    my = (s6 * s8 - s10 * s4) * nx + (s10 * s0 - s2 * s8) * ny + (s2 * s4 - s6 * s0) * nz;
-                    mz = (s4 * s9 - s8 * s5) * nx + (s8 * s1 - s0 * s9) * ny + (s0 * s5 - s4 * s1) * nz;
+                    mx = (s5 * s10 - s9 * s6) * nx + (s6 * s8 - s10 * s4) * ny + (s4 * s9 - s8 * s5) * nz;
+                    my = (s9 * s2 - s1 * s10) * nx + (s10 * s0 - s2 * s8) * ny + (s8 * s1 - s0 * s9) * nz;
+                    mz = (s1 * s6 - s5 * s2) * nx + (s2 * s4 - s6 * s0) * ny + (s0 * s5 - s4 * s1) * nz;
                     float len2 = mx * mx + my * my + mz * mz;
                     float inv = len2 > 0f ? (float) (1.0 / Math.sqrt(len2)) : 0f;
                     mx *= inv;

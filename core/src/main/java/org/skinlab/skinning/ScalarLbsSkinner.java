@@ -80,9 +80,9 @@ public final class ScalarLbsSkinner implements Skinner {
             if (exactNormals) {
                 // Columns c0 = (b0 b4 b8), c1 = (b1 b5 b9), c2 = (b2 b6 b10); the inverse-transpose
                 // times det has columns c1 x c2, c2 x c0, c0 x c1.
-                float rx = (b5 * b10 - b9 * b6) * nx + (b9 * b2 - b1 * b10) * ny + (b1 * b6 - b5 * b2) * nz;
-                float ry = (b6 * b8 - b10 * b4) * nx + (b10 * b0 - b2 * b8) * ny + (b2 * b4 - b6 * b0) * nz;
-                float rz = (b4 * b9 - b8 * b5) * nx + (b8 * b1 - b0 * b9) * ny + (b0 * b5 - b4 * b1) * nz;
+                float rx = (b5 * b10 - b9 * b6) * nx + (b6 * b8 - b10 * b4) * ny + (b4 * b9 - b8 * b5) * nz;
+                float ry = (b9 * b2 - b1 * b10) * nx + (b10 * b0 - b2 * b8) * ny + (b8 * b1 - b0 * b9) * nz;
+                float rz = (b1 * b6 - b5 * b2) * nx + (b2 * b4 - b6 * b0) * ny + (b0 * b5 - b4 * b1) * nz;
                 float len2 = rx * rx + ry * ry + rz * rz;
                 float inv = len2 > 0f ? (float) (1.0 / Math.sqrt(len2)) : 0f;
                 outNormals[v] = rx * inv;

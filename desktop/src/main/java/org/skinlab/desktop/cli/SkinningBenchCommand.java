@@ -1,0 +1,239 @@
+package org.skinlab.desktop.cli;
+
+import java.io.PrintWriter;
+import java.util.Arrays;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+
+import org.skinlab.desktop.bench.SyntheticSkinData;
+import org.skinlab.desktop.bench.ThesisSkinningBaseline;
+import org.skinlab.skinning.JointPalette;
+import org.skinlab.skinning.NormalTransform;
+import org.skinlab.skinning.ParallelSkinner;
+import org.skinlab.skinning.SkinnedGeometry;
+import org.skinlab.skinning.Skinner;
+import org.skinlab.skinning.Skinners;
+import org.skinlab.skinning.SkinningMethod;
+
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
+import picocli.CommandLine.Model.CommandSpec;
+
+/**
+ * {@code skinlab bench skinning}: skinning speed on the synthetic data of the shared C++ reference
+ * ({@code ../shared/perf/skin_ref.cpp}, bit-identical input: {@link SyntheticSkinData}), with the
+ * reference's protocol: one untimed run for the checksum, a warm-up, then timed runs of the whole
+ * mesh for a given time (at least 5); the report gives the minimum and median time per vertex. By
+ * default the work is the reference's: normals by the blended matrix
+ * ({@link NormalTransform#BLENDED_MATRIX}), the joint matrices straight from the data, DQS's dual
+ * quaternions derived from them once per frame by the palette, influences in the order drawn.
+ */
+@Command(name = "skinning", mixinStandardHelpOptions = true,
+        description = "Skinning speed on the synthetic data of the shared C++ reference (ns per vertex).")
+public final class SkinningBenchCommand implements Callable<Integer> {
+    @Option(names = "--vertices", paramLabel = "N", description = "points of the synthetic mesh (default: ${DEFAULT-VALUE})")
+    int vertices = 100_000;
+
+    @Option(names = "--threads", paramLabel = "T", description = "threads, the caller's included (default: ${DEFAULT-VALUE})")
+    int threads = 1;
+
+    @Option(names = "--method", paramLabel = "lbs|dqs", description = "skinning method (default: ${DEFAULT-VALUE})")
+    String method = "lbs";
+
+    @Option(names = "--implementation", paramLabel = "auto|scalar|vector",
+            description = "kernel: the fastest available, core's scalar one, or the Vector API one (default: ${DEFAULT-VALUE})")
+    String implementation = "auto";
+
+    @Option(names = "--normals", paramLabel = "blended|exact",
+            description = "normal rule: the blended matrix (the C++ reference's) or the renormalised inverse-transpose"
+                    + " (default: ${DEFAULT-VALUE})")
+    String normals = "blended";
+
+    @Option(names = "--warmup-seconds", paramLabel = "S", description = "warm-up before timing (default: ${DEFAULT-VALUE})")
+    double warmupSeconds = 2.0;
+
+    @Option(names = "--seconds", paramLabel = "S", description = "timed runs for this long, at least 5 (default: ${DEFAULT-VALUE})")
+    double seconds = 3.0;
+
+    @Option(names = "--baseline", paramLabel = "thesis",
+            description = "also time the thesis-style loop (objects per vertex; for DQS a matrix to dual quaternion"
+                    + " conversion per influence and vertex) with the same protocol and report its median / ours")
+    String baseline;
+
+    @Option(names = "--json", description = "print the result as one line of JSON")
+    boolean json;
+
+    @Spec
+    CommandSpec spec;
+
+    /** Times of one implementation, in ns per vertex, and its checksum. */
+    static final class Timing {
+        final double[] nsPerVertex;
+        final double checksum;
+
+        Timing(double[] nsPerVertex, double checksum) {
+            this.nsPerVertex = nsPerVertex;
+            this.checksum = checksum;
+        }
+
+        double min() {
+            return Arrays.stream(nsPerVertex).min().orElse(Double.NaN);
+        }
+
+        /** The upper median, as the reference ({@code samples[n / 2]} of the sorted samples). */
+        double median() {
+            double[] s = nsPerVertex.clone();
+            Arrays.sort(s);
+            return s[s.length / 2];
+        }
+    }
+
+    @Override
+    public Integer call() {
+        SkinningMethod m = parseMethod();
+        NormalTransform rule = parseNormals();
+        if (vertices < 1) {
+            throw usage("--vertices must be at least 1");
+        }
+        if (threads < 1) {
+            throw usage("--threads must be at least 1");
+        }
+        if (baseline != null && !baseline.equals("thesis")) {
+            throw usage("unknown baseline \"" + baseline + "\" (expected thesis)");
+        }
+        SyntheticSkinData data = new SyntheticSkinData(vertices);
+        SkinnedGeometry geometry = data.geometry();
+        JointPalette palette = data.palette();
+        Skinner kernel = kernel(m, geometry, rule);
+        PrintWriter out = spec.commandLine().getOut();
+        PrintWriter err = spec.commandLine().getErr();
+        float[] positions = new float[3 * vertices];
+        float[] normalsOut = new float[3 * vertices];
+        Timing ours;
+        String name;
+        try (ParallelSkinner skinner = new ParallelSkinner(kernel, threads)) {
+            name = kernel.implementation();
+            ours = measure(() -> skinner.skinAll(palette, positions, normalsOut), positions, normalsOut);
+        }
+        Timing thesis = null;
+        if (baseline != null) {
+            ThesisSkinningBaseline b = new ThesisSkinningBaseline(geometry, m);
+            thesis = measure(() -> b.skinAll(palette, positions, normalsOut), positions, normalsOut);
+        }
+        if (json) {
+            out.println(toJson(m, name, ours, thesis));
+        } else {
+            out.printf(Locale.ROOT, "skinning %s, %d vertices, %d thread%s, %s, normals %s%n", m.key(), vertices,
+                    threads, threads == 1 ? "" : "s", name, rule == NormalTransform.BLENDED_MATRIX
+                            ? "by the blended matrix" : "by the inverse-transpose");
+            out.printf(Locale.ROOT, "min %.3f ns/vertex, median %.3f ns/vertex (%d runs), checksum %.6f%n",
+                    ours.min(), ours.median(), ours.nsPerVertex.length, ours.checksum);
+            if (thesis != null) {
+                out.printf(Locale.ROOT, "thesis-style baseline: min %.3f, median %.3f ns/vertex (%d runs),"
+                        + " checksum %.6f; baseline / ours: %.1fx at the median, %.1fx at the minimum%n", thesis.min(),
+                        thesis.median(), thesis.nsPerVertex.length, thesis.checksum, thesis.median() / ours.median(),
+                        thesis.min() / ours.min());
+            }
+        }
+        out.flush();
+        err.flush();
+        return ExitCodes.OK;
+    }
+
+    private Skinner kernel(SkinningMethod m, SkinnedGeometry geometry, NormalTransform rule) {
+        switch (implementation.toLowerCase(Locale.ROOT)) {
+            case "auto":
+                return Skinners.create(m, geometry, rule);
+            case "scalar":
+                return Skinners.scalar(m, geometry, rule);
+            case "vector":
+                Skinner s = Skinners.create(m, geometry, rule);
+                if (s.implementation().equals("scalar")) {
+                    throw new CommandFailure(ExitCodes.USAGE, "bench skinning: no vector kernel here (the JVM needs"
+                            + " --add-modules jdk.incubator.vector and 256-bit vectors)", null);
+                }
+                return s;
+            default:
+                throw usage("unknown implementation \"" + implementation + "\" (expected auto, scalar or vector)");
+        }
+    }
+
+    /** The reference's protocol: checksum of one run on zeroed outputs, warm-up, timed runs. */
+    private Timing measure(Runnable frame, float[] positions, float[] normalsOut) {
+        Arrays.fill(positions, 0f);
+        Arrays.fill(normalsOut, 0f);
+        frame.run();
+        double checksum = SyntheticSkinData.checksum(positions, normalsOut);
+        long warmupEnd = System.nanoTime() + (long) (warmupSeconds * 1e9);
+        do {
+            frame.run();
+        } while (System.nanoTime() < warmupEnd);
+        double[] samples = new double[64];
+        int n = 0;
+        long end = System.nanoTime() + (long) (seconds * 1e9);
+        while (n < 5 || System.nanoTime() < end) {
+            long t0 = System.nanoTime();
+            frame.run();
+            long t1 = System.nanoTime();
+            if (n == samples.length) {
+                samples = Arrays.copyOf(samples, 2 * n);
+            }
+            samples[n++] = (t1 - t0) / (double) vertices;
+        }
+        return new Timing(Arrays.copyOf(samples, n), checksum);
+    }
+
+    private String toJson(SkinningMethod m, String name, Timing ours, Timing thesis) {
+        ObjectMapper mapper = new ObjectMapper();
+        ObjectNode root = mapper.createObjectNode();
+        root.put("method", m.key());
+        root.put("vertices", vertices);
+        root.put("threads", threads);
+        root.put("minNsPerVertex", round(ours.min()));
+        root.put("medianNsPerVertex", round(ours.median()));
+        root.put("checksum", ours.checksum);
+        root.put("implementation", name);
+        if (thesis != null) {
+            root.put("baselineMinNsPerVertex", round(thesis.min()));
+            root.put("baselineMedianNsPerVertex", round(thesis.median()));
+            root.put("baselineChecksum", thesis.checksum);
+            root.put("baselineRatio", round(thesis.median() / ours.median()));
+        }
+        try {
+            return mapper.writeValueAsString(root);
+        } catch (com.fasterxml.jackson.core.JsonProcessingException e) {
+            throw new IllegalStateException(e);
+        }
+    }
+
+    private SkinningMethod parseMethod() {
+        try {
+            return SkinningMethod.fromKey(method);
+        } catch (IllegalArgumentException e) {
+            throw usage(e.getMessage());
+        }
+    }
+
+    private NormalTransform parseNormals() {
+        switch (normals.toLowerCase(Locale.ROOT)) {
+            case "blended":
+                return NormalTransform.BLENDED_MATRIX;
+            case "exact":
+                return NormalTransform.INVERSE_TRANSPOSE;
+            default:
+                throw usage("unknown normal rule \"" + normals + "\" (expected blended or exact)");
+        }
+    }
+
+    private CommandFailure usage(String message) {
+        return new CommandFailure(ExitCodes.USAGE, "bench skinning: " + message, null);
+    }
+
+    private static double round(double d) {
+        return Math.round(d * 1000.0) / 1000.0;
+    }
+}

@@ -1,0 +1,36 @@
+package org.skinlab.simd;
+
+import org.skinlab.skinning.NormalTransform;
+import org.skinlab.skinning.SkinnedGeometry;
+import org.skinlab.skinning.Skinner;
+import org.skinlab.skinning.SkinnerProvider;
+import org.skinlab.skinning.SkinningMethod;
+
+/**
+ * Offers the Vector API kernels when they can run fast here: the JVM was started with
+ * {@code --add-modules jdk.incubator.vector}, its vectors are at least 256 bits wide (otherwise the
+ * API silently falls back to a Java loop per lane, far slower than the scalar kernels), and the
+ * geometry has at most 4 influences per point and 65536 joints. In every other case it returns null and core's
+ * scalar kernels run.
+ *
+ * <p>This class must load without the incubator module, so it names no class of it: the check
+ * goes through the module layer, and {@link VectorKernels} is touched only after it passes.
+ */
+public final class VectorSkinnerProvider implements SkinnerProvider {
+    static final String MODULE = "jdk.incubator.vector";
+
+    @Override
+    public Skinner create(SkinningMethod method, SkinnedGeometry geometry, NormalTransform normals) {
+        if (!moduleAvailable() || geometry.influencesPerPoint() > VectorKernels.MAX_INFLUENCES
+                || geometry.jointCount() > VectorKernels.MAX_JOINTS
+                || !VectorKernels.fastOnThisMachine()) {
+            return null;
+        }
+        return VectorKernels.create(method, geometry, normals);
+    }
+
+    /** True when the incubator module is in the boot layer (the JVM got {@code --add-modules}). */
+    public static boolean moduleAvailable() {
+        return ModuleLayer.boot().findModule(MODULE).isPresent();
+    }
+}
