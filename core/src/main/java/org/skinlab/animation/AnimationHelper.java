@@ -27,8 +27,8 @@ public final class AnimationHelper {
      * The rotation of the upper 3x3 of {@code m}, robust to scale, shear and float noise: the
      * orthogonal factor of its polar decomposition (the rotation nearest to it in the Frobenius
      * norm), for a reflection (negative determinant) that of {@code -m}. A singular matrix (a
-     * zero scale) falls back to Gram-Schmidt on its non-zero columns; an all-zero one gives the
-     * identity. Allocates a few JOML temporaries; meant for offline work and per-joint (not
+     * zero scale) falls back to Gram-Schmidt on its non-zero columns, each kept on its own axis;
+     * an all-zero one gives the identity. Allocates a few JOML temporaries; meant for offline work and per-joint (not
      * per-vertex) use.
      */
     public static Quaternionf rotationOf(Matrix4fc m, Quaternionf dest) {
@@ -79,17 +79,22 @@ public final class AnimationHelper {
                 + m.m12 * m.m12 + m.m20 * m.m20 + m.m21 * m.m21 + m.m22 * m.m22);
     }
 
-    /** Rotation from the usable columns of a singular matrix: keep what directions it still has. */
+    /**
+     * Rotation from the usable columns of a singular matrix, each kept in its own slot: a zero
+     * scale on one axis says nothing about that axis, but the other columns still fix the rotation
+     * (diag(1, 0, 1) is the identity with Y flattened, not a turn about X), so T*R*S still holds.
+     */
     private static Matrix3d gramSchmidt(Matrix3d a) {
         double[][] c = {{a.m00, a.m01, a.m02}, {a.m10, a.m11, a.m12}, {a.m20, a.m21, a.m22}};
-        double[][] basis = new double[3][];
-        int found = 0;
-        for (int i = 0; i < 3 && found < 2; i++) {
+        double[][] u = new double[3][];
+        int first = -1;
+        int second = -1;
+        for (int i = 0; i < 3 && second < 0; i++) {
             double[] v = c[i].clone();
-            for (int k = 0; k < found; k++) {
-                double d = dot(v, basis[k]);
+            if (first >= 0) {
+                double d = dot(v, u[first]);
                 for (int j = 0; j < 3; j++) {
-                    v[j] -= d * basis[k][j];
+                    v[j] -= d * u[first][j];
                 }
             }
             double len = Math.sqrt(dot(v, v));
@@ -97,26 +102,33 @@ public final class AnimationHelper {
                 for (int j = 0; j < 3; j++) {
                     v[j] /= len;
                 }
-                basis[found++] = v;
+                u[i] = v;
+                if (first < 0) {
+                    first = i;
+                } else {
+                    second = i;
+                }
             }
         }
-        if (found == 0) {
+        if (first < 0) {
             return new Matrix3d();
         }
-        if (found == 1) {
-            // Any unit vector not parallel to the first completes the frame.
-            double[] e = Math.abs(basis[0][0]) < 0.9 ? new double[] {1, 0, 0} : new double[] {0, 1, 0};
-            double d = dot(e, basis[0]);
-            double[] v = {e[0] - d * basis[0][0], e[1] - d * basis[0][1], e[2] - d * basis[0][2]};
+        if (second < 0) {
+            // One direction left: any unit vector perpendicular to it completes the frame.
+            double[] k = u[first];
+            double[] e = Math.abs(k[0]) < 0.9 ? new double[] {1, 0, 0} : new double[] {0, 1, 0};
+            double d = dot(e, k);
+            double[] v = {e[0] - d * k[0], e[1] - d * k[1], e[2] - d * k[2]};
             double len = Math.sqrt(dot(v, v));
-            basis[1] = new double[] {v[0] / len, v[1] / len, v[2] / len};
+            second = (first + 1) % 3;
+            u[second] = new double[] {v[0] / len, v[1] / len, v[2] / len};
         }
-        double[] u = basis[0];
-        double[] v = basis[1];
-        double[] w = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-        // The two kept directions may be columns 0 and 2 etc.; any right-handed frame holding them
-        // is as good, since the matrix says nothing about the lost axis.
-        return new Matrix3d(u[0], u[1], u[2], v[0], v[1], v[2], w[0], w[1], w[2]);
+        // The lost axis k completes a right-handed frame: column k = column k+1 x column k+2.
+        int k = 3 - first - second;
+        double[] p = u[(k + 1) % 3];
+        double[] q = u[(k + 2) % 3];
+        u[k] = new double[] {p[1] * q[2] - p[2] * q[1], p[2] * q[0] - p[0] * q[2], p[0] * q[1] - p[1] * q[0]};
+        return new Matrix3d(u[0][0], u[0][1], u[0][2], u[1][0], u[1][1], u[1][2], u[2][0], u[2][1], u[2][2]);
     }
 
     private static double dot(double[] a, double[] b) {
@@ -217,8 +229,9 @@ public final class AnimationHelper {
 
     /**
      * Spherical interpolation along the shortest arc: {@code (sin((1-t)O) a + sin(tO) b) / sin O}
-     * with O the angle between a and b (Shoemake 1985). Falls back to {@link #nlerp} when the keys
-     * are within ~0.03 degrees, where sin O loses its precision.
+     * with O the angle between a and b (Shoemake 1985). Falls back to {@link #nlerp} when
+     * |a.b| > 0.9999999 (keys less than about 0.05 degrees of rotation apart), where sin O loses
+     * its precision.
      */
     public static Quaternionf slerp(Quaternionfc a, Quaternionfc b, float t, Quaternionf dest) {
         double dot = (double) a.x() * b.x() + (double) a.y() * b.y() + (double) a.z() * b.z() + (double) a.w() * b.w();
@@ -239,13 +252,17 @@ public final class AnimationHelper {
      * The unit dual quaternion of the rigid part of {@code m}: rotation {@link #rotationOf}, and
      * the translation column. Exact for rigid matrices; for others it keeps the rotation and
      * translation and drops scale (use the two-phase split of the DQS skinner for those).
+     * Allocates (through {@link #rotationOf}).
      */
     public static DualQuaternion toDualQuaternion(Matrix4fc m, DualQuaternion dest) {
         Quaternionf r = rotationOf(m, new Quaternionf());
         return dest.set(r.x, r.y, r.z, r.w, m.m30(), m.m31(), m.m32());
     }
 
-    /** The rigid matrix of a dual quaternion (normalised first, so any non-zero one works). */
+    /**
+     * The rigid matrix of a dual quaternion (normalised first, so any non-zero one works).
+     * Allocates a few temporaries: for tests and offline use.
+     */
     public static Matrix4f toMatrix(DualQuaternion dq, Matrix4f dest) {
         DualQuaternion n = new DualQuaternion(dq).normalize();
         Vector3f t = n.getTranslation(new Vector3f());

@@ -34,6 +34,15 @@ public final class KeyframeTrack {
                 || (outTangents != null && outTangents.length != 2 * keys * width)) {
             throw new IllegalArgumentException("tangents need 2 floats per value per key");
         }
+        if (inTangents == null || outTangents == null) {
+            for (Interpolation i : interpolations) {
+                if (i == Interpolation.BEZIER || i == Interpolation.HERMITE) {
+                    // The sampler needs both tangent arrays for curved keys; the importer reads such
+                    // keys without tangents as LINEAR, so only hand-built tracks can get here.
+                    throw new IllegalArgumentException(i + " keys need in- and out-tangents");
+                }
+            }
+        }
         for (int k = 1; k < keys; k++) {
             if (times[k] < times[k - 1]) {
                 throw new IllegalArgumentException("key times decrease at key " + k);

@@ -4,24 +4,25 @@ package org.skinlab.collada;
  * Builds small COLLADA documents for the animation tests: a visual scene with the given nodes, a
  * {@code <library_animations>} and optionally a {@code <library_animation_clips>}. The pieces are
  * written out by the tests (text blocks) or by {@link #animation} for the common one-channel case,
- * so that every fixture stays short enough to read next to its assertions.
+ * so that every fixture stays short enough to read next to its assertions. Public for the sampler
+ * tests in {@code org.skinlab.animation}.
  */
-final class AnimationXml {
+public final class AnimationXml {
     private AnimationXml() {
     }
 
     /** A document whose visual scene holds {@code nodes} and whose animations are {@code animations}. */
-    static String document(String nodes, String animations) {
+    public static String document(String nodes, String animations) {
         return document(nodes, animations, null);
     }
 
     /** As {@link #document(String, String)}, plus {@code <library_animation_clips>} when clips is not null. */
-    static String document(String nodes, String animations, String clips) {
+    public static String document(String nodes, String animations, String clips) {
         return document("", nodes, animations, clips);
     }
 
     /** As above, with extra libraries (e.g. {@code <library_nodes>}) written before the scene. */
-    static String document(String libraries, String nodes, String animations, String clips) {
+    public static String document(String libraries, String nodes, String animations, String clips) {
         return """
                 <?xml version="1.0" encoding="utf-8"?>
                 <COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">
@@ -46,12 +47,12 @@ final class AnimationXml {
      * One {@code <animation id=id>} with one LINEAR channel: INPUT {@code times}, OUTPUT
      * {@code values} with {@code stride} values per key, sampler {@code id-sampler}.
      */
-    static String animation(String id, String target, String times, String values, int stride) {
+    public static String animation(String id, String target, String times, String values, int stride) {
         return animation(id, target, times, values, stride, null);
     }
 
     /** As above, with an INTERPOLATION source of the given names (one per key) when not null. */
-    static String animation(String id, String target, String times, String values, int stride,
+    public static String animation(String id, String target, String times, String values, int stride,
             String interpolations) {
         StringBuilder sb = new StringBuilder();
         sb.append("    <animation id=\"").append(id).append("\">\n");
@@ -76,7 +77,7 @@ final class AnimationXml {
      * A float {@code <source>} with {@code stride} named components per element (one
      * {@code float4x4} param when the stride is 16, as Blender writes keyed matrices).
      */
-    static String floatSource(String id, String values, int stride) {
+    public static String floatSource(String id, String values, int stride) {
         int n = count(values);
         if (n % stride != 0) {
             throw new IllegalArgumentException(n + " values are not a multiple of " + stride);
@@ -97,7 +98,7 @@ final class AnimationXml {
     }
 
     /** A {@code Name_array} source with one name per element (interpolations). */
-    static String nameSource(String id, String names) {
+    public static String nameSource(String id, String names) {
         int n = count(names);
         return "      <source id=\"" + id + "\">\n"
                 + "        <Name_array id=\"" + id + "-array\" count=\"" + n + "\">" + names.trim() + "</Name_array>\n"

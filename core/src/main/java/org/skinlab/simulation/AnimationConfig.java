@@ -1,0 +1,251 @@
+package org.skinlab.simulation;
+
+import java.util.Objects;
+import java.util.concurrent.atomic.AtomicReference;
+import java.util.function.UnaryOperator;
+
+import org.skinlab.animation.RotationInterpolation;
+import org.skinlab.animation.WrapMode;
+import org.skinlab.skinning.SkinningMethod;
+
+/**
+ * The user-facing switches of the animation (the thesis' {@code AnimationConfig}, section 5.5):
+ * start/stop the animation, start/stop mesh updates, the skinning method, the rotation
+ * interpolation, the playback speed, the wrap mode at the clip's end, and "follow the camera".
+ *
+ * <p><b>Threads.</b> Every setter may be called from any thread at any moment (a UI thread, a
+ * touch handler, a test hammering it). The state is one immutable {@link Settings} record behind
+ * an {@link AtomicReference}: a setter swaps in a new record (compare-and-set, retried on a
+ * race), a reader takes the current one with a single volatile read and no lock. The simulation
+ * reads it once per step, so one step never mixes two states: a caller that changes method and
+ * interpolation together through {@link #update} is seen with both changed or neither. Setters
+ * allocate one small record; they are user actions, not per-frame work. Volatile fields per
+ * switch would read as cheaply but could not offer that atomic multi-field change.
+ *
+ * <p>One config may drive several {@link SkeletalAnimatedMesh}es (the desktop scene's "all
+ * meshes" switches); meshes only read it. No listeners: the simulation polls every step, which is
+ * already more often than a user can press a button.
+ */
+public final class AnimationConfig {
+    /** Slowest playback as a factor of real time (magnitude; reverse playback may be as slow). */
+    public static final double MIN_SPEED = 0.05;
+    /** Fastest playback as a factor of real time (magnitude). */
+    public static final double MAX_SPEED = 20.0;
+    /** What {@link #faster()} multiplies the speed by, {@link #slower()} divides: two presses double it. */
+    public static final double SPEED_STEP = Math.sqrt(2.0);
+
+    /**
+     * One consistent state of every switch.
+     *
+     * @param speed              playback speed as a factor of real time; negative plays backwards;
+     *                           magnitude in [{@link #MIN_SPEED}, {@link #MAX_SPEED}]
+     * @param method             how the mesh is skinned
+     * @param interpolation      how key rotations are blended
+     * @param animationRunning   whether playback time advances (the thesis' start/stop animation)
+     * @param meshUpdatesRunning whether the mesh is re-skinned each step (start/stop mesh updates);
+     *                           with the animation stopped it still is, so a method switch shows
+     * @param followCamera       whether the presenter turns the model toward the camera (AR app)
+     * @param wrapMode           what playback does at the clip's ends
+     */
+    public record Settings(double speed, SkinningMethod method, RotationInterpolation interpolation,
+            boolean animationRunning, boolean meshUpdatesRunning, boolean followCamera, WrapMode wrapMode) {
+        /** Speed 1, LBS, SLERP, animation and mesh updates running, no camera following, looping. */
+        public static final Settings DEFAULT = new Settings(1.0, SkinningMethod.LBS, RotationInterpolation.SLERP,
+                true, true, false, WrapMode.LOOP);
+
+        public Settings {
+            Objects.requireNonNull(method, "method");
+            Objects.requireNonNull(interpolation, "interpolation");
+            Objects.requireNonNull(wrapMode, "wrapMode");
+            double magnitude = Math.abs(speed);
+            if (!(magnitude >= MIN_SPEED && magnitude <= MAX_SPEED)) {
+                throw new IllegalArgumentException("speed " + speed + " outside +-[" + MIN_SPEED + ", " + MAX_SPEED
+                        + "] (use clampSpeed, or pause with animationRunning)");
+            }
+        }
+
+        public Settings withSpeed(double speed) {
+            return new Settings(speed, method, interpolation, animationRunning, meshUpdatesRunning, followCamera,
+                    wrapMode);
+        }
+
+        public Settings withMethod(SkinningMethod method) {
+            return new Settings(speed, method, interpolation, animationRunning, meshUpdatesRunning, followCamera,
+                    wrapMode);
+        }
+
+        public Settings withInterpolation(RotationInterpolation interpolation) {
+            return new Settings(speed, method, interpolation, animationRunning, meshUpdatesRunning, followCamera,
+                    wrapMode);
+        }
+
+        public Settings withAnimationRunning(boolean animationRunning) {
+            return new Settings(speed, method, interpolation, animationRunning, meshUpdatesRunning, followCamera,
+                    wrapMode);
+        }
+
+        public Settings withMeshUpdatesRunning(boolean meshUpdatesRunning) {
+            return new Settings(speed, method, interpolation, animationRunning, meshUpdatesRunning, followCamera,
+                    wrapMode);
+        }
+
+        public Settings withFollowCamera(boolean followCamera) {
+            return new Settings(speed, method, interpolation, animationRunning, meshUpdatesRunning, followCamera,
+                    wrapMode);
+        }
+
+        public Settings withWrapMode(WrapMode wrapMode) {
+            return new Settings(speed, method, interpolation, animationRunning, meshUpdatesRunning, followCamera,
+                    wrapMode);
+        }
+    }
+
+    private final AtomicReference<Settings> settings;
+
+    /** A config with {@link Settings#DEFAULT}. */
+    public AnimationConfig() {
+        this(Settings.DEFAULT);
+    }
+
+    public AnimationConfig(Settings initial) {
+        settings = new AtomicReference<>(Objects.requireNonNull(initial, "initial"));
+    }
+
+    /** The current state: one volatile read, no lock, no allocation. */
+    public Settings settings() {
+        return settings.get();
+    }
+
+    /**
+     * Applies {@code change} atomically (retried if another thread changed the settings
+     * meanwhile, so {@code change} must have no side effects) and returns the new state. The way
+     * to change several switches so that no step sees only some of them changed.
+     */
+    public Settings update(UnaryOperator<Settings> change) {
+        return settings.updateAndGet(s -> Objects.requireNonNull(change.apply(s), "change returned null"));
+    }
+
+    /**
+     * A speed brought into range: its magnitude clamped to [{@link #MIN_SPEED}, {@link #MAX_SPEED}],
+     * its sign kept (negative plays backwards: handy to scrub a twist back and forth). Zero and NaN
+     * are refused: zero would be a second, silent way to pause, and NaN would poison the clock.
+     */
+    public static double clampSpeed(double speed) {
+        if (Double.isNaN(speed) || speed == 0) {
+            throw new IllegalArgumentException("speed " + speed + " is not a playback speed (pause with stopAnimation)");
+        }
+        double magnitude = Math.max(MIN_SPEED, Math.min(MAX_SPEED, Math.abs(speed)));
+        return Math.copySign(magnitude, speed);
+    }
+
+    public double speed() {
+        return settings().speed();
+    }
+
+    /** Sets the speed, clamped as {@link #clampSpeed} says; returns the speed set. */
+    public double setSpeed(double speed) {
+        double clamped = clampSpeed(speed);
+        update(s -> s.withSpeed(clamped));
+        return clamped;
+    }
+
+    /** Speed times {@link #SPEED_STEP} (clamped); returns the new speed. */
+    public double faster() {
+        return update(s -> s.withSpeed(clampSpeed(s.speed() * SPEED_STEP))).speed();
+    }
+
+    /** Speed divided by {@link #SPEED_STEP} (clamped); returns the new speed. */
+    public double slower() {
+        return update(s -> s.withSpeed(clampSpeed(s.speed() / SPEED_STEP))).speed();
+    }
+
+    public SkinningMethod method() {
+        return settings().method();
+    }
+
+    public void setMethod(SkinningMethod method) {
+        Objects.requireNonNull(method, "method");
+        update(s -> s.withMethod(method));
+    }
+
+    /** Switches to the next method (LBS, DQS, then round again); returns it. */
+    public SkinningMethod nextMethod() {
+        SkinningMethod[] all = SkinningMethod.values();
+        return update(s -> s.withMethod(all[(s.method().ordinal() + 1) % all.length])).method();
+    }
+
+    public RotationInterpolation interpolation() {
+        return settings().interpolation();
+    }
+
+    public void setInterpolation(RotationInterpolation interpolation) {
+        Objects.requireNonNull(interpolation, "interpolation");
+        update(s -> s.withInterpolation(interpolation));
+    }
+
+    /** Switches to the next interpolation (LERP, SLERP, NLERP, then round again); returns it. */
+    public RotationInterpolation nextInterpolation() {
+        RotationInterpolation[] all = RotationInterpolation.values();
+        return update(s -> s.withInterpolation(all[(s.interpolation().ordinal() + 1) % all.length]))
+                .interpolation();
+    }
+
+    public boolean isAnimationRunning() {
+        return settings().animationRunning();
+    }
+
+    /** Playback time advances again. */
+    public void startAnimation() {
+        setAnimationRunning(true);
+    }
+
+    /** Playback time stands still; the mesh is still re-skinned while mesh updates run. */
+    public void stopAnimation() {
+        setAnimationRunning(false);
+    }
+
+    public void setAnimationRunning(boolean running) {
+        update(s -> s.withAnimationRunning(running));
+    }
+
+    public boolean isMeshUpdatesRunning() {
+        return settings().meshUpdatesRunning();
+    }
+
+    /** The mesh is re-skinned every step again. */
+    public void startMeshUpdates() {
+        setMeshUpdatesRunning(true);
+    }
+
+    /** Nothing is re-skinned: readers keep getting the last published frame. */
+    public void stopMeshUpdates() {
+        setMeshUpdatesRunning(false);
+    }
+
+    public void setMeshUpdatesRunning(boolean running) {
+        update(s -> s.withMeshUpdatesRunning(running));
+    }
+
+    public boolean isFollowCamera() {
+        return settings().followCamera();
+    }
+
+    /** Whether the presenter (the AR scene) turns the model toward the camera; a plain flag here. */
+    public void setFollowCamera(boolean follow) {
+        update(s -> s.withFollowCamera(follow));
+    }
+
+    public WrapMode wrapMode() {
+        return settings().wrapMode();
+    }
+
+    public void setWrapMode(WrapMode mode) {
+        Objects.requireNonNull(mode, "mode");
+        update(s -> s.withWrapMode(mode));
+    }
+
+    @Override
+    public String toString() {
+        return "AnimationConfig" + settings();
+    }
+}

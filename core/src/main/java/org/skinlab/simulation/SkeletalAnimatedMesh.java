@@ -1,0 +1,522 @@
+package org.skinlab.simulation;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Objects;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicReference;
+import java.util.concurrent.locks.LockSupport;
+import java.util.concurrent.locks.ReentrantLock;
+
+import org.skinlab.animation.AnimationSampler;
+import org.skinlab.animation.WrapMode;
+import org.skinlab.model.AnimationClip;
+import org.skinlab.model.Model;
+import org.skinlab.skinning.NormalTransform;
+import org.skinlab.skinning.SkinnedGeometry;
+import org.skinlab.skinning.SkinnedModel;
+
+/**
+ * A model playing one clip, simulated on its own thread (the thesis' {@code SkeletalAnimatedMesh},
+ * section 5.6): it owns the mesh, the skeleton and the clip (through a {@link SkinnedModel}) and
+ * reads its switches from an {@link AnimationConfig}. After {@link #start()} one daemon thread
+ * steps at {@link #stepRate()} steps per second; each step
+ * <ol>
+ * <li>advances the playback time by {@code dt * speed} when the animation runs, wrapped or held
+ *     at the clip's ends as the wrap mode says;</li>
+ * <li>when mesh updates run, poses the skeleton at that time and skins every geometry with the
+ *     configured method and interpolation into a free buffer, then publishes it as the latest
+ *     {@link Frame}. A stopped animation is still re-skinned every step, so switching LBS/DQS or
+ *     the interpolation shows at once; with mesh updates stopped nothing is skinned and readers
+ *     keep the last frame (the playback time still advances while the animation runs).</li>
+ * </ol>
+ * {@link #step(double)} runs the same step on the caller's thread, for tests, the command line and
+ * renderers that drive the simulation themselves.
+ *
+ * <p><b>Snapshots: a pool of leased buffers instead of the thesis' mutex.</b> The thesis guarded
+ * one mesh with a mutex that the simulation held while skinning and the renderer while drawing,
+ * so each side could stall the other for a whole skinning or upload. Here the simulation skins
+ * into a buffer no reader holds and publishes it with one atomic store; a reader
+ * {@link #acquire() acquires} the latest frame (counting itself in as a lease) and
+ * {@link Frame#close() closes} it when done, and the simulation never writes a leased buffer
+ * ({@link FramePool} has the protocol and why it is safe). A reader therefore never sees a frame
+ * being written and never waits for the simulation, and the simulation never waits for a reader.
+ * With one reader this is the classic triple buffer; more readers holding frames at once make
+ * the pool grow, up to {@value #MAX_BUFFERS} buffers, after which a step skips publishing
+ * (counted in {@link #droppedFrames()}) rather than block. Reads copy nothing and allocate
+ * nothing, which matters to renderers that upload positions and normals every frame; any number
+ * of threads may read. The price against a mutex-guarded double buffer is memory (three frames
+ * instead of two) and the rule that a reader closes what it acquires.
+ *
+ * <p><b>Thread rules.</b> Every method may be called from any thread. {@link #start()},
+ * {@link #stop()} and {@link #close()} are idempotent; stop and close return once the thread has
+ * ended (unless called from the simulation thread itself, e.g. from the frame listener). Stepping
+ * is serialised by one lock, so a thread that is still finishing its last step after a stop never
+ * overlaps a new one. {@link #step(double)} refuses while the thread runs: two clocks driving one
+ * playback would make its time meaningless. Interrupting the simulation thread stops it.
+ *
+ * <p><b>Failures.</b> Anything the simulation thread throws (a skinning bug, the frame listener)
+ * is kept in {@link #failure()}, the thread ends cleanly, readers keep the last good frame, and
+ * {@link #start()} and {@link #step(double)} then refuse with the failure as the cause, so it
+ * cannot vanish. {@link #throwIfFailed()} lets a render loop surface it.
+ *
+ * <p>In steady state a step allocates nothing.
+ */
+public final class SkeletalAnimatedMesh implements AutoCloseable {
+    /** Steps per second unless {@link #setStepRate} says otherwise: a display's refresh rate. */
+    public static final double DEFAULT_STEP_RATE = 60.0;
+    public static final double MIN_STEP_RATE = 1.0;
+    public static final double MAX_STEP_RATE = 10_000.0;
+    /**
+     * The longest time one threaded step advances playback by (seconds): after a stall (a
+     * debugger, a phone suspending the app) the animation resumes instead of jumping ahead.
+     */
+    public static final double MAX_STEP_SECONDS = 0.25;
+    /** Most buffers the frame pool grows to when many readers hold frames at once. */
+    public static final int MAX_BUFFERS = 8;
+    /** How often a simulation thread waiting for the step lock checks whether it was stopped. */
+    private static final long LOCK_POLL_NANOS = TimeUnit.MILLISECONDS.toNanos(5);
+    private static final AtomicInteger THREAD_NUMBERS = new AtomicInteger();
+
+    private final Model model;
+    private final AnimationClip clip;
+    private final AnimationConfig config;
+    private final int[] pointCounts;
+
+    // Simulation side: touched only while holding stepLock.
+    private final ReentrantLock stepLock = new ReentrantLock();
+    private final SkinnedModel skinned;
+    private final AnimationSampler sampler;
+    private final double duration;
+    private final FramePool pool;
+    private double playback;
+    private long sequence;
+
+    // Shared with readers.
+    private volatile double playbackTime;
+    private volatile long publishedSequence;
+    private volatile long steps;
+    private volatile long droppedFrames;
+    private volatile long periodNanos = Math.round(1e9 / DEFAULT_STEP_RATE);
+    private volatile Runnable frameListener;
+    private final AtomicReference<Throwable> failure = new AtomicReference<>();
+
+    // Thread lifecycle, guarded by `lifecycle` (never held while stepping or joining).
+    private final Object lifecycle = new Object();
+    private volatile Runner current;
+    private volatile boolean closed;
+
+    /** The model's first clip (at rest if it has none), a fresh config, exact normals. */
+    public static SkeletalAnimatedMesh of(Model model) {
+        return new SkeletalAnimatedMesh(model, model.clips().isEmpty() ? null : model.clips().get(0),
+                new AnimationConfig());
+    }
+
+    /**
+     * The model playing the clip named {@code clipName}.
+     *
+     * @throws IllegalArgumentException when the model has no such clip (the message lists those it has)
+     */
+    public static SkeletalAnimatedMesh of(Model model, String clipName, AnimationConfig config) {
+        AnimationClip clip = model.clip(clipName).orElseThrow(() -> {
+            List<String> names = new ArrayList<>();
+            model.clips().forEach(c -> names.add(c.name()));
+            return new IllegalArgumentException(model.source() + ": no animation clip \"" + clipName + "\" (clips: "
+                    + (names.isEmpty() ? "none" : String.join(", ", names)) + ")");
+        });
+        return new SkeletalAnimatedMesh(model, clip, config);
+    }
+
+    /**
+     * @param clip   the clip to play, or null to keep the model at rest
+     * @param config the switches to follow; may be shared with other meshes
+     */
+    public SkeletalAnimatedMesh(Model model, AnimationClip clip, AnimationConfig config) {
+        this(model, clip, config, NormalTransform.INVERSE_TRANSPOSE);
+    }
+
+    public SkeletalAnimatedMesh(Model model, AnimationClip clip, AnimationConfig config, NormalTransform normals) {
+        this(model, clip, config, normals, false);
+    }
+
+    /**
+     * @param publishInPlace test-only: write every step into the buffer readers are given (what the
+     *                       snapshot design exists to prevent), so the torn-frame test can show its
+     *                       check catches tearing
+     */
+    SkeletalAnimatedMesh(Model model, AnimationClip clip, AnimationConfig config, NormalTransform normals,
+            boolean publishInPlace) {
+        this.model = Objects.requireNonNull(model, "model");
+        this.clip = clip;
+        this.config = Objects.requireNonNull(config, "config");
+        this.skinned = new SkinnedModel(model, clip, Objects.requireNonNull(normals, "normals"));
+        this.sampler = skinned.sampler();
+        this.duration = Math.max(0.0, (double) sampler.end() - sampler.start());
+        List<SkinnedGeometry> geometries = skinned.geometries();
+        pointCounts = new int[geometries.size()];
+        for (int g = 0; g < pointCounts.length; g++) {
+            pointCounts[g] = geometries.get(g).pointCount();
+        }
+        pool = new FramePool(pointCounts, MAX_BUFFERS, publishInPlace);
+        // Frame 0: the clip's start, so acquire() always has something to give, whatever the switches say.
+        stepLock.lock();
+        try {
+            publish(config.settings());
+        } finally {
+            stepLock.unlock();
+        }
+    }
+
+    public Model model() {
+        return model;
+    }
+
+    /** The clip being played, or null when the model stays at rest. */
+    public AnimationClip clip() {
+        return clip;
+    }
+
+    public AnimationConfig config() {
+        return config;
+    }
+
+    /**
+     * The geometries in frame order (immutable runtime data: bind-shape arrays, influences,
+     * the mapping from points to the mesh's vertices and positions).
+     */
+    public List<SkinnedGeometry> geometries() {
+        return skinned.geometries();
+    }
+
+    // ------------------------------------------------------------------------------- readers
+
+    /**
+     * The latest published frame, lent until its {@link Frame#close()}. Never null: a mesh
+     * publishes frame 0 when it is built. Lock-free (it retries only if a frame is published
+     * between its two reads) and allocation-free; any thread, any number of readers.
+     */
+    public Frame acquire() {
+        return pool.acquire();
+    }
+
+    /** The sequence number of the latest published frame. */
+    public long latestSequence() {
+        return publishedSequence;
+    }
+
+    /** Playback time (seconds since the clip's start) after the latest step, published or not. */
+    public double playbackTime() {
+        return playbackTime;
+    }
+
+    /** Steps taken so far (threaded and by hand), whether or not they published a frame. */
+    public long stepCount() {
+        return steps;
+    }
+
+    /** Steps that skinned nothing because every buffer was leased to readers (see the class comment). */
+    public long droppedFrames() {
+        return droppedFrames;
+    }
+
+    /** What ended the simulation thread, or null. */
+    public Throwable failure() {
+        return failure.get();
+    }
+
+    /** Throws if the simulation thread has failed, with the failure as cause. */
+    public void throwIfFailed() {
+        Throwable t = failure.get();
+        if (t != null) {
+            throw new IllegalStateException(describe() + ": simulation thread failed: " + t, t);
+        }
+    }
+
+    // ---------------------------------------------------------------------------- settings
+
+    public double stepRate() {
+        return 1e9 / periodNanos;
+    }
+
+    /**
+     * Steps per second of the simulation thread, in [{@link #MIN_STEP_RATE}, {@link #MAX_STEP_RATE}];
+     * any thread, any time; the running thread uses it from its next step on.
+     */
+    public void setStepRate(double stepsPerSecond) {
+        if (!(stepsPerSecond >= MIN_STEP_RATE && stepsPerSecond <= MAX_STEP_RATE)) {
+            throw new IllegalArgumentException("step rate " + stepsPerSecond + " outside [" + MIN_STEP_RATE + ", "
+                    + MAX_STEP_RATE + "] steps per second");
+        }
+        periodNanos = Math.round(1e9 / stepsPerSecond);
+    }
+
+    /**
+     * Called after every published frame, on the thread that stepped (e.g. to ask a render view
+     * for a redraw: Android's {@code GLSurfaceView.requestRender()}). Must be quick. What it
+     * throws on the simulation thread ends that thread as a {@link #failure()}. Null for none.
+     */
+    public void setFrameListener(Runnable listener) {
+        frameListener = listener;
+    }
+
+    // ---------------------------------------------------------------------------- lifecycle
+
+    /**
+     * Starts the simulation thread (a daemon named {@code skinlab-simulation-N}).
+     *
+     * @return true if this call started it, false if it was already running
+     * @throws IllegalStateException after {@link #close()}, or after the thread failed
+     */
+    public boolean start() {
+        synchronized (lifecycle) {
+            if (closed) {
+                throw new IllegalStateException(describe() + ": closed, cannot start again");
+            }
+            Throwable t = failure.get();
+            if (t != null) {
+                throw new IllegalStateException(describe() + ": the simulation failed earlier: " + t, t);
+            }
+            Runner r = current;
+            if (r != null && !r.stopRequested && r.thread.isAlive()) {
+                return false;
+            }
+            Runner next = new Runner("skinlab-simulation-" + THREAD_NUMBERS.incrementAndGet());
+            current = next;
+            next.thread.start();
+            return true;
+        }
+    }
+
+    /** Whether the simulation thread runs (started, not stopped, not ended by failure or interrupt). */
+    public boolean isRunning() {
+        Runner r = current;
+        return r != null && !r.stopRequested && r.thread.isAlive();
+    }
+
+    /**
+     * Stops the simulation thread and waits for it to end (not when called from that thread).
+     * Does nothing before {@link #start()} or when already stopped; the published frame stays.
+     *
+     * @return true if this call asked a running thread to stop
+     */
+    public boolean stop() {
+        Runner r;
+        boolean stopped;
+        synchronized (lifecycle) {
+            r = current;
+            if (r == null) {
+                return false;
+            }
+            stopped = !r.stopRequested && r.thread.isAlive();
+            r.stopRequested = true;
+        }
+        LockSupport.unpark(r.thread);
+        if (Thread.currentThread() != r.thread) {
+            joinUninterruptibly(r.thread);
+        }
+        return stopped;
+    }
+
+    /** Stops the thread (as {@link #stop()}) for good: start and step refuse afterwards. Idempotent. */
+    @Override
+    public void close() {
+        synchronized (lifecycle) {
+            closed = true;
+        }
+        stop();
+    }
+
+    public boolean isClosed() {
+        return closed;
+    }
+
+    /**
+     * One simulation step on the caller's thread: advance playback by {@code dtSeconds} times the
+     * speed (when the animation runs), then skin and publish (when mesh updates run).
+     *
+     * @throws IllegalArgumentException for a negative, infinite or NaN step
+     * @throws IllegalStateException    while the simulation thread runs, after close, after a failure
+     */
+    public void step(double dtSeconds) {
+        if (!(dtSeconds >= 0) || Double.isInfinite(dtSeconds)) {
+            throw new IllegalArgumentException("step of " + dtSeconds + " s (need a finite time >= 0)");
+        }
+        stepLock.lock();
+        try {
+            if (closed) {
+                throw new IllegalStateException(describe() + ": closed, cannot step");
+            }
+            throwIfFailed();
+            if (isRunning()) {
+                throw new IllegalStateException(describe()
+                        + ": the simulation thread is running; stop() it before stepping by hand");
+            }
+            advance(dtSeconds);
+        } finally {
+            stepLock.unlock();
+        }
+    }
+
+    /** Buffers the frame pool holds so far (three, more while many readers hold frames). */
+    int bufferCount() {
+        stepLock.lock();
+        try {
+            return pool.bufferCount();
+        } finally {
+            stepLock.unlock();
+        }
+    }
+
+    /** The thread of the current runner, for tests; null before the first start. */
+    Thread simulationThread() {
+        Runner r = current;
+        return r == null ? null : r.thread;
+    }
+
+    // ---------------------------------------------------------------------------- simulation
+
+    /** One step; the caller holds stepLock. */
+    private void advance(double dt) {
+        AnimationConfig.Settings s = config.settings();
+        if (s.animationRunning()) {
+            playback = wrap(playback + dt * s.speed(), s.wrapMode());
+        }
+        playbackTime = playback;
+        steps++;
+        if (s.meshUpdatesRunning()) {
+            publish(s);
+        }
+    }
+
+    /** Playback time brought back into the clip: [0, duration) looping, [0, duration] clamped. */
+    private double wrap(double t, WrapMode mode) {
+        if (!(duration > 0)) {
+            return 0;
+        }
+        if (mode == WrapMode.LOOP) {
+            t %= duration;
+            if (t < 0) {
+                t += duration;
+            }
+            return t < duration ? t : 0; // -tiny + duration can round up to duration
+        }
+        return Math.max(0, Math.min(duration, t));
+    }
+
+    /** Poses, skins into a free buffer and publishes it; the caller holds stepLock. */
+    private void publish(AnimationConfig.Settings s) {
+        Frame f = pool.claim();
+        if (f == null) {
+            droppedFrames++;
+            return;
+        }
+        float clipTime = sampler.clipTime(playback, s.wrapMode());
+        long t0 = System.nanoTime();
+        skinned.pose(clipTime, s.interpolation());
+        for (int g = 0; g < pointCounts.length; g++) {
+            skinned.skin(g, s.method(), f.positionsForWriting(g), f.normalsForWriting(g));
+        }
+        long nanos = System.nanoTime() - t0;
+        long seq = sequence++;
+        f.describe(seq, playback, clipTime, s.method(), s.interpolation(), nanos);
+        pool.publish(f);
+        publishedSequence = seq;
+        Runnable listener = frameListener;
+        if (listener != null) {
+            listener.run();
+        }
+    }
+
+    private void run(Runner r) {
+        long last = System.nanoTime();
+        long deadline = last;
+        try {
+            while (!r.stopRequested && !Thread.currentThread().isInterrupted()) {
+                long period = periodNanos;
+                // Absolute deadlines: oversleeping one step shortens the next wait, so the rate
+                // does not drift the way sleeping a fixed period after each step would.
+                deadline += period;
+                long now = System.nanoTime();
+                while (now - deadline < 0) {
+                    LockSupport.parkNanos(this, deadline - now);
+                    if (r.stopRequested || Thread.currentThread().isInterrupted()) {
+                        return;
+                    }
+                    now = System.nanoTime();
+                }
+                if (now - deadline > period) {
+                    deadline = now; // more than a step behind: carry on from now rather than catch up in a burst
+                }
+                if (!lockForStep(r)) {
+                    return;
+                }
+                try {
+                    if (r.stopRequested) {
+                        return;
+                    }
+                    // dt is the time actually elapsed, so playback follows the wall clock even
+                    // when steps come late.
+                    advance(Math.min((now - last) * 1e-9, MAX_STEP_SECONDS));
+                } finally {
+                    stepLock.unlock();
+                }
+                last = now;
+            }
+        } catch (Throwable t) {
+            failure.compareAndSet(null, t);
+        }
+    }
+
+    /**
+     * Takes stepLock, polling for a stop while someone else steps (a hand step whose frame
+     * listener stops this thread must not wait for it forever).
+     */
+    private boolean lockForStep(Runner r) {
+        try {
+            while (!stepLock.tryLock(LOCK_POLL_NANOS, TimeUnit.NANOSECONDS)) {
+                if (r.stopRequested) {
+                    return false;
+                }
+            }
+            return true;
+        } catch (InterruptedException e) {
+            return false; // an interrupt stops the simulation thread
+        }
+    }
+
+    private static void joinUninterruptibly(Thread t) {
+        boolean interrupted = false;
+        while (true) {
+            try {
+                t.join();
+                break;
+            } catch (InterruptedException e) {
+                interrupted = true;
+            }
+        }
+        if (interrupted) {
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    private String describe() {
+        return "SkeletalAnimatedMesh[" + model.source() + (clip == null ? ", at rest" : ", clip " + clip.name()) + "]";
+    }
+
+    @Override
+    public String toString() {
+        return describe();
+    }
+
+    /** One simulation thread and its own stop flag, so a stopped thread can never be mistaken for its successor. */
+    private final class Runner {
+        final Thread thread;
+        volatile boolean stopRequested;
+
+        Runner(String name) {
+            thread = new Thread(() -> run(this), name);
+            thread.setDaemon(true);
+        }
+    }
+}

@@ -1,0 +1,186 @@
+package org.skinlab.simulation;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.EnumSet;
+import java.util.Set;
+import java.util.SplittableRandom;
+import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.atomic.AtomicReference;
+import java.util.concurrent.locks.LockSupport;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.skinlab.animation.RotationInterpolation;
+import org.skinlab.animation.WrapMode;
+import org.skinlab.model.Model;
+import org.skinlab.skinning.NormalTransform;
+import org.skinlab.skinning.SkinningMethod;
+
+/**
+ * A reader takes 100,000 snapshots while the simulation steps as fast as it can and another
+ * thread flips every switch at random; {@link FrameChecker} recomputes each snapshot from the step
+ * it claims to be and demands bit-for-bit equality, so a frame mixing two steps fails the test.
+ * The last test runs the same harness against a mesh that writes into the published buffer (the
+ * race the snapshot design prevents) and requires the checker to catch it: the check can fail.
+ */
+class TornFrameTest {
+    private static final int SNAPSHOTS = 100_000;
+    /**
+     * Distinct frames a clean run must have seen, so that it cannot pass by reading one frame
+     * while a starved writer stands still; the reader goes on past {@link #SNAPSHOTS} until it has.
+     */
+    private static final int MIN_DISTINCT_FRAMES = 500;
+    /** The reader gives up after this long even without enough distinct frames (and the test fails). */
+    private static final long READ_NANOS = 20_000_000_000L;
+    private static final Model RIBBON = TwistRibbon.model();
+
+    /** What one run of the harness saw. */
+    private record Result(int snapshots, int torn, String firstProblem, long distinctFrames, int backwards,
+            Set<SkinningMethod> methods, Set<RotationInterpolation> interpolations) {
+    }
+
+    @Test
+    @Timeout(value = 60, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
+    void readerNeverSeesATornFrameWhileStepsRunFlatOutOnAnotherThread() throws Exception {
+        try (SkeletalAnimatedMesh mesh = new SkeletalAnimatedMesh(RIBBON, RIBBON.clips().get(0), new AnimationConfig())) {
+            Result r = hammer(mesh, false, SNAPSHOTS, Integer.MAX_VALUE);
+            assertClean(r);
+        }
+    }
+
+    @Test
+    @Timeout(value = 60, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
+    void readerNeverSeesATornFrameFromTheSimulationThread() throws Exception {
+        try (SkeletalAnimatedMesh mesh = new SkeletalAnimatedMesh(RIBBON, RIBBON.clips().get(0), new AnimationConfig())) {
+            mesh.setStepRate(SkeletalAnimatedMesh.MAX_STEP_RATE);
+            Result r = hammer(mesh, true, SNAPSHOTS, Integer.MAX_VALUE);
+            assertClean(r);
+            assertTrue(mesh.failure() == null, () -> "simulation failed: " + mesh.failure());
+        }
+    }
+
+    @Test
+    @Timeout(value = 60, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
+    void theCheckCatchesTornFramesWhenTheSimulationWritesIntoThePublishedBuffer() throws Exception {
+        // The same harness, but every step is skinned straight into the buffer readers hold (the
+        // thesis' design without its mutex). The writer spends most of its time inside that write,
+        // so readers land in half-written frames, on two cores or one (a writer preempted mid-frame
+        // leaves its frame half-written for the whole time slice).
+        try (SkeletalAnimatedMesh mesh = new SkeletalAnimatedMesh(RIBBON, RIBBON.clips().get(0), new AnimationConfig(),
+                NormalTransform.INVERSE_TRANSPOSE, true)) {
+            Result r = hammer(mesh, false, SNAPSHOTS, 20);
+            assertTrue(r.torn() > 0, () -> "no torn frame detected in " + r.snapshots() + " snapshots of "
+                    + r.distinctFrames() + " frames written in place: the check would not notice tearing");
+        }
+    }
+
+    private static void assertClean(Result r) {
+        assertEquals(0, r.torn(), () -> r.torn() + " torn frames, first: " + r.firstProblem());
+        assertEquals(0, r.backwards(), "sequence numbers went backwards");
+        assertTrue(r.snapshots() >= SNAPSHOTS, () -> "only " + r.snapshots() + " snapshots");
+        // Not a vacuous pass: the reader saw the simulation move and the switches change.
+        assertTrue(r.distinctFrames() >= MIN_DISTINCT_FRAMES,
+                () -> "only " + r.distinctFrames() + " distinct frames seen in " + r.snapshots() + " snapshots");
+        assertEquals(EnumSet.allOf(SkinningMethod.class), r.methods());
+        assertTrue(r.interpolations().size() >= 2, () -> "interpolations seen: " + r.interpolations());
+    }
+
+    /**
+     * Runs a writer (the simulation thread, or a thread stepping by hand as fast as it can) and a
+     * settings flipper while this thread takes at least {@code snapshots} snapshots and checks
+     * each, going on until it has seen {@link #MIN_DISTINCT_FRAMES} frames (or
+     * {@link #READ_NANOS} passed); stops early after {@code maxTorn} torn ones.
+     */
+    private static Result hammer(SkeletalAnimatedMesh mesh, boolean useThread, int snapshots, int maxTorn)
+            throws InterruptedException {
+        AnimationConfig config = mesh.config();
+        AtomicBoolean done = new AtomicBoolean();
+        AtomicReference<Throwable> helperFailure = new AtomicReference<>();
+        Thread writer = null;
+        if (useThread) {
+            mesh.start();
+        } else {
+            writer = new Thread(() -> {
+                try {
+                    while (!done.get()) {
+                        mesh.step(0.001);
+                    }
+                } catch (Throwable t) {
+                    helperFailure.compareAndSet(null, t);
+                }
+            }, "test-writer");
+            writer.start();
+        }
+        Thread flipper = new Thread(() -> {
+            SplittableRandom random = new SplittableRandom(42);
+            SkinningMethod[] methods = SkinningMethod.values();
+            RotationInterpolation[] interpolations = RotationInterpolation.values();
+            WrapMode[] wraps = WrapMode.values();
+            try {
+                while (!done.get()) {
+                    switch (random.nextInt(7)) {
+                        case 0 -> config.setMethod(methods[random.nextInt(methods.length)]);
+                        case 1 -> config.setInterpolation(interpolations[random.nextInt(interpolations.length)]);
+                        case 2 -> config.setSpeed((random.nextBoolean() ? 1 : -1) * random.nextDouble(0.05, 20));
+                        case 3 -> config.setAnimationRunning(random.nextInt(5) > 0); // mostly running
+                        case 4 -> config.setMeshUpdatesRunning(random.nextInt(10) > 0); // mostly on
+                        case 5 -> config.setWrapMode(wraps[random.nextInt(wraps.length)]);
+                        default -> config.setFollowCamera(random.nextBoolean());
+                    }
+                    LockSupport.parkNanos(20_000);
+                }
+            } catch (Throwable t) {
+                helperFailure.compareAndSet(null, t);
+            }
+        }, "test-flipper");
+        flipper.start();
+
+        FrameChecker checker = FrameChecker.ribbon(mesh.model());
+        int torn = 0;
+        int backwards = 0;
+        String first = null;
+        long distinct = 0;
+        long lastSequence = -1;
+        Set<SkinningMethod> methods = EnumSet.noneOf(SkinningMethod.class);
+        Set<RotationInterpolation> interpolations = EnumSet.noneOf(RotationInterpolation.class);
+        int taken = 0;
+        long giveUp = System.nanoTime() + READ_NANOS;
+        try {
+            while ((taken < snapshots || distinct < MIN_DISTINCT_FRAMES && System.nanoTime() - giveUp < 0)
+                    && torn < maxTorn) {
+                try (Frame frame = mesh.acquire()) {
+                    taken++;
+                    String problem = checker.problem(frame);
+                    if (problem != null) {
+                        torn++;
+                        if (first == null) {
+                            first = problem;
+                        }
+                    }
+                    long s = frame.sequence();
+                    if (s < lastSequence) {
+                        backwards++;
+                    } else if (s > lastSequence) {
+                        distinct++;
+                    }
+                    lastSequence = s;
+                    methods.add(frame.method());
+                    interpolations.add(frame.interpolation());
+                }
+            }
+        } finally {
+            done.set(true);
+            flipper.join();
+            if (writer != null) {
+                writer.join();
+            }
+            mesh.stop();
+        }
+        if (helperFailure.get() != null) {
+            throw new AssertionError("a helper thread failed", helperFailure.get());
+        }
+        return new Result(taken, torn, first, distinct, backwards, methods, interpolations);
+    }
+}
