@@ -18,9 +18,7 @@ package org.skinlab.skinning;
  * Since every flipped term has a non-negative dot with the pivot, |b.real| >= w_0 > 0: the
  * normalisation never divides by zero.
  */
-public final class ScalarDqsSkinner implements Skinner {
-    private final SkinnedGeometry geometry;
-    private final NormalTransform normals;
+public final class ScalarDqsSkinner extends AbstractSkinner {
     private final float[] positions;
     private final float[] restNormals;
     private final int[] joints;
@@ -28,33 +26,12 @@ public final class ScalarDqsSkinner implements Skinner {
     private final int width;
 
     public ScalarDqsSkinner(SkinnedGeometry geometry, NormalTransform normals) {
-        this.geometry = geometry;
-        this.normals = normals;
+        super(SkinningMethod.DQS, "scalar", geometry, normals);
         this.positions = geometry.positionArray();
         this.restNormals = geometry.normalArray();
         this.joints = geometry.jointArray();
         this.weights = geometry.weightArray();
         this.width = geometry.influencesPerPoint();
-    }
-
-    @Override
-    public SkinningMethod method() {
-        return SkinningMethod.DQS;
-    }
-
-    @Override
-    public NormalTransform normalTransform() {
-        return normals;
-    }
-
-    @Override
-    public SkinnedGeometry geometry() {
-        return geometry;
-    }
-
-    @Override
-    public String implementation() {
-        return "scalar";
     }
 
     @Override

@@ -5,9 +5,7 @@ package org.skinlab.skinning;
  * {@code M = sum_k w_k M_(j_k)}, {@code p' = M p}, and the normal by {@link NormalTransform}.
  * The portable kernel (Android) and the reference the SIMD kernels are tested against.
  */
-public final class ScalarLbsSkinner implements Skinner {
-    private final SkinnedGeometry geometry;
-    private final NormalTransform normals;
+public final class ScalarLbsSkinner extends AbstractSkinner {
     private final float[] positions;
     private final float[] restNormals;
     private final int[] joints;
@@ -15,33 +13,12 @@ public final class ScalarLbsSkinner implements Skinner {
     private final int width;
 
     public ScalarLbsSkinner(SkinnedGeometry geometry, NormalTransform normals) {
-        this.geometry = geometry;
-        this.normals = normals;
+        super(SkinningMethod.LBS, "scalar", geometry, normals);
         this.positions = geometry.positionArray();
         this.restNormals = geometry.normalArray();
         this.joints = geometry.jointArray();
         this.weights = geometry.weightArray();
         this.width = geometry.influencesPerPoint();
-    }
-
-    @Override
-    public SkinningMethod method() {
-        return SkinningMethod.LBS;
-    }
-
-    @Override
-    public NormalTransform normalTransform() {
-        return normals;
-    }
-
-    @Override
-    public SkinnedGeometry geometry() {
-        return geometry;
-    }
-
-    @Override
-    public String implementation() {
-        return "scalar";
     }
 
     @Override

@@ -13,11 +13,11 @@ import static org.skinlab.simd.Lanes.SWAP;
 import jdk.incubator.vector.FloatVector;
 import jdk.incubator.vector.VectorOperators;
 
+import org.skinlab.skinning.AbstractSkinner;
 import org.skinlab.skinning.JointPalette;
 import org.skinlab.skinning.NormalTransform;
 import org.skinlab.skinning.ScalarDqsSkinner;
 import org.skinlab.skinning.SkinnedGeometry;
-import org.skinlab.skinning.Skinner;
 import org.skinlab.skinning.SkinningMethod;
 
 /**
@@ -50,7 +50,7 @@ import org.skinlab.skinning.SkinningMethod;
  * the whole range goes through the scalar kernel, which runs the two-phase split: correct, at
  * scalar speed. Without scale both {@link NormalTransform}s are the same rotation.
  */
-final class VectorDqsSkinner implements Skinner {
+final class VectorDqsSkinner extends AbstractSkinner {
     static final int INFLUENCES = 4;
     static final int BLOCK = 8;
     /** Floats per block in {@link #points}: px py pz nx ny nz, 8 lanes each. */
@@ -59,8 +59,6 @@ final class VectorDqsSkinner implements Skinner {
     static final int CHUNK = 32;
     private static final int SCRATCH = 96;
 
-    private final SkinnedGeometry geometry;
-    private final NormalTransform normals;
     private final ScalarDqsSkinner scalar;
     private final int blockCount;
     private final float[] points;
@@ -72,12 +70,11 @@ final class VectorDqsSkinner implements Skinner {
     private final ThreadLocal<float[]> scratch = ThreadLocal.withInitial(() -> new float[CHUNK * SCRATCH]);
 
     VectorDqsSkinner(SkinnedGeometry geometry, NormalTransform normals) {
+        super(SkinningMethod.DQS, "vector-256", geometry, normals);
         int width = geometry.influencesPerPoint();
         if (width > INFLUENCES) {
             throw new IllegalArgumentException(width + " influences per point; this kernel takes up to " + INFLUENCES);
         }
-        this.geometry = geometry;
-        this.normals = normals;
         this.scalar = new ScalarDqsSkinner(geometry, normals);
         this.jointCount = geometry.jointCount();
         blockCount = geometry.pointCount() / BLOCK;
@@ -102,26 +99,6 @@ final class VectorDqsSkinner implements Skinner {
                 blockJoints[q] = (char) joints[width * i + (k < width ? k : 0)];
             }
         }
-    }
-
-    @Override
-    public SkinningMethod method() {
-        return SkinningMethod.DQS;
-    }
-
-    @Override
-    public NormalTransform normalTransform() {
-        return normals;
-    }
-
-    @Override
-    public SkinnedGeometry geometry() {
-        return geometry;
-    }
-
-    @Override
-    public String implementation() {
-        return "vector-256";
     }
 
     @Override

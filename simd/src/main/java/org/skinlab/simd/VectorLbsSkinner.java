@@ -9,10 +9,10 @@ import static org.skinlab.simd.Lanes.ZXY;
 import jdk.incubator.vector.FloatVector;
 import jdk.incubator.vector.VectorOperators;
 
+import org.skinlab.skinning.AbstractSkinner;
 import org.skinlab.skinning.JointPalette;
 import org.skinlab.skinning.NormalTransform;
 import org.skinlab.skinning.SkinnedGeometry;
-import org.skinlab.skinning.Skinner;
 import org.skinlab.skinning.SkinningMethod;
 
 /**
@@ -39,14 +39,12 @@ import org.skinlab.skinning.SkinningMethod;
  * the results do not depend on how a mesh is split into ranges).
  * Geometries with up to 4 influences per point are padded to 4 with weight 0.
  */
-final class VectorLbsSkinner implements Skinner {
+final class VectorLbsSkinner extends AbstractSkinner {
     static final int INFLUENCES = 4;
     /** Floats per point in {@link #points}. */
     private static final int STRIDE = 10;
 
 
-    private final SkinnedGeometry geometry;
-    private final NormalTransform normals;
     private final float[] points;
     /** Palette joint per influence (4 per point; char: joint counts up to 65536). */
     private final char[] joints;
@@ -55,12 +53,11 @@ final class VectorLbsSkinner implements Skinner {
     private final ThreadLocal<float[]> lastPointScratch = ThreadLocal.withInitial(() -> new float[16]);
 
     VectorLbsSkinner(SkinnedGeometry geometry, NormalTransform normals) {
+        super(SkinningMethod.LBS, "vector-256", geometry, normals);
         int width = geometry.influencesPerPoint();
         if (width > INFLUENCES) {
             throw new IllegalArgumentException(width + " influences per point; this kernel takes up to " + INFLUENCES);
         }
-        this.geometry = geometry;
-        this.normals = normals;
         this.jointCount = geometry.jointCount();
         int n = geometry.pointCount();
         float[] pos = geometry.positionArray();
@@ -85,26 +82,6 @@ final class VectorLbsSkinner implements Skinner {
         }
         int size = 16 * jointCount;
         columns = ThreadLocal.withInitial(() -> new float[size]);
-    }
-
-    @Override
-    public SkinningMethod method() {
-        return SkinningMethod.LBS;
-    }
-
-    @Override
-    public NormalTransform normalTransform() {
-        return normals;
-    }
-
-    @Override
-    public SkinnedGeometry geometry() {
-        return geometry;
-    }
-
-    @Override
-    public String implementation() {
-        return "vector-256";
     }
 
     @Override
