@@ -77,20 +77,27 @@ public final class AnimationSampler {
      * always at its start.
      */
     public float clipTime(double elapsed, WrapMode mode) {
+        return (float) Math.min(clip.start() + wrapElapsed(elapsed, mode), clip.end());
+    }
+
+    /**
+     * Playback time brought back into the clip, measured from its start: {@code [0, duration)}
+     * for {@link WrapMode#LOOP}, {@code [0, duration]} for {@link WrapMode#CLAMP}, 0 for a clip of
+     * zero length. A player keeps its clock in this form so it never grows without bound.
+     */
+    public double wrapElapsed(double elapsed, WrapMode mode) {
         double duration = (double) clip.end() - clip.start();
         if (!(duration > 0)) {
-            return clip.start();
+            return 0;
         }
-        double t;
         if (mode == WrapMode.LOOP) {
-            t = elapsed % duration;
+            double t = elapsed % duration;
             if (t < 0) {
                 t += duration;
             }
-        } else {
-            t = Math.max(0, Math.min(duration, elapsed));
+            return t < duration ? t : 0; // -tiny + duration can round up to duration
         }
-        return (float) Math.min(clip.start() + t, clip.end());
+        return Math.max(0, Math.min(duration, elapsed));
     }
 
     /** Time {@code t} clamped to the clip: what the command line's times mean. */

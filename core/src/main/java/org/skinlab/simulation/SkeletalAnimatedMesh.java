@@ -10,7 +10,6 @@ import java.util.concurrent.locks.LockSupport;
 import java.util.concurrent.locks.ReentrantLock;
 
 import org.skinlab.animation.AnimationSampler;
-import org.skinlab.animation.WrapMode;
 import org.skinlab.model.AnimationClip;
 import org.skinlab.model.Model;
 import org.skinlab.skinning.NormalTransform;
@@ -88,7 +87,6 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
     private final ReentrantLock stepLock = new ReentrantLock();
     private final SkinnedModel skinned;
     private final AnimationSampler sampler;
-    private final double duration;
     private final FramePool pool;
     private double playback;
     private long sequence;
@@ -152,7 +150,6 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
         this.config = Objects.requireNonNull(config, "config");
         this.skinned = new SkinnedModel(model, clip, Objects.requireNonNull(normals, "normals"));
         this.sampler = skinned.sampler();
-        this.duration = Math.max(0.0, (double) sampler.end() - sampler.start());
         List<SkinnedGeometry> geometries = skinned.geometries();
         pointCounts = new int[geometries.size()];
         for (int g = 0; g < pointCounts.length; g++) {
@@ -380,28 +377,13 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
     private void advance(double dt) {
         AnimationConfig.Settings s = config.settings();
         if (s.animationRunning()) {
-            playback = wrap(playback + dt * s.speed(), s.wrapMode());
+            playback = sampler.wrapElapsed(playback + dt * s.speed(), s.wrapMode());
         }
         playbackTime = playback;
         steps++;
         if (s.meshUpdatesRunning()) {
             publish(s);
         }
-    }
-
-    /** Playback time brought back into the clip: [0, duration) looping, [0, duration] clamped. */
-    private double wrap(double t, WrapMode mode) {
-        if (!(duration > 0)) {
-            return 0;
-        }
-        if (mode == WrapMode.LOOP) {
-            t %= duration;
-            if (t < 0) {
-                t += duration;
-            }
-            return t < duration ? t : 0; // -tiny + duration can round up to duration
-        }
-        return Math.max(0, Math.min(duration, t));
     }
 
     /** Poses, skins into a free buffer and publishes it; the caller holds stepLock. */

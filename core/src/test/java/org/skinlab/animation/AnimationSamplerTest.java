@@ -488,6 +488,19 @@ class AnimationSamplerTest {
     }
 
     @Test
+    void wrappedElapsedTimeStaysBelowTheDurationWhenLooping() {
+        // -1e-17 mod 2 is -1e-17; adding the duration 2 rounds to exactly 2.0 in double, which is
+        // not in [0, 2): it must come back as 0, the same instant of the loop.
+        AnimationSampler s = clip(1, 3);
+        assertEquals(2.0, -1e-17 + 2.0, "the rounding this test is about");
+        assertEquals(0.0, s.wrapElapsed(-1e-17, WrapMode.LOOP));
+        assertEquals(0.5, s.wrapElapsed(4.5, WrapMode.LOOP), 1e-12);
+        assertEquals(2.0, s.wrapElapsed(9, WrapMode.CLAMP));
+        assertEquals(0.0, s.wrapElapsed(-9, WrapMode.CLAMP));
+        assertEquals(0.0, clip(2, 2).wrapElapsed(7, WrapMode.LOOP), "zero-length clip");
+    }
+
+    @Test
     void clampHoldsTheEnds() {
         AnimationSampler s = clip(1, 3);
         assertEquals(1f, s.clipTime(-1, WrapMode.CLAMP));
