@@ -196,6 +196,33 @@ public final class AnimationHelper {
                 0f, 0f, 0f, 1f);
     }
 
+    /**
+     * Writes the affine part of {@code m} as a row-major 3x4 matrix (r00 r01 r02 tx, r10 ...) at
+     * {@code dest[offset]}: the layout of COLLADA's rows and of the skinning kernels' joints.
+     */
+    public static void putRowMajor3x4(Matrix4fc m, float[] dest, int offset) {
+        dest[offset] = m.m00();
+        dest[offset + 1] = m.m10();
+        dest[offset + 2] = m.m20();
+        dest[offset + 3] = m.m30();
+        dest[offset + 4] = m.m01();
+        dest[offset + 5] = m.m11();
+        dest[offset + 6] = m.m21();
+        dest[offset + 7] = m.m31();
+        dest[offset + 8] = m.m02();
+        dest[offset + 9] = m.m12();
+        dest[offset + 10] = m.m22();
+        dest[offset + 11] = m.m32();
+    }
+
+    /** Reads a row-major 3x4 matrix from {@code src[offset]} into {@code dest} (bottom row 0 0 0 1). */
+    public static Matrix4f getRowMajor3x4(float[] src, int offset, Matrix4f dest) {
+        float[] a = src;
+        int o = offset;
+        return dest.set(a[o], a[o + 4], a[o + 8], 0f, a[o + 1], a[o + 5], a[o + 9], 0f,
+                a[o + 2], a[o + 6], a[o + 10], 0f, a[o + 3], a[o + 7], a[o + 11], 1f);
+    }
+
     /** Interpolates from {@code a} (t = 0) to {@code b} (t = 1) the way {@code mode} says. */
     public static Quaternionf interpolate(RotationInterpolation mode, Quaternionfc a, Quaternionfc b, float t,
             Quaternionf dest) {

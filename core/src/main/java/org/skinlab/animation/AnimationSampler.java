@@ -237,20 +237,9 @@ public final class AnimationSampler {
             Quaternionf qb = pose.q2.set(trs[b + 3], trs[b + 4], trs[b + 5], trs[b + 6]);
             AnimationHelper.interpolate(rotations, qa, qb, u, qa);
             Matrix4f m = AnimationHelper.compose(t, qa, s, pose.m1);
-            // Row-major as in the file: value 4 * row + column is JOML's m<column><row>.
+            // Row-major as in the file, bottom row (0 0 0 1).
             int o = slot;
-            dest[o] = m.m00();
-            dest[o + 1] = m.m10();
-            dest[o + 2] = m.m20();
-            dest[o + 3] = m.m30();
-            dest[o + 4] = m.m01();
-            dest[o + 5] = m.m11();
-            dest[o + 6] = m.m21();
-            dest[o + 7] = m.m31();
-            dest[o + 8] = m.m02();
-            dest[o + 9] = m.m12();
-            dest[o + 10] = m.m22();
-            dest[o + 11] = m.m32();
+            AnimationHelper.putRowMajor3x4(m, dest, o);
             dest[o + 12] = 0f;
             dest[o + 13] = 0f;
             dest[o + 14] = 0f;

@@ -157,19 +157,7 @@ public final class Skeleton {
                 w.identity();
             }
             w.mul(b.set(bindMatrices, 16 * j));
-            int o = 12 * j;
-            dest[o] = w.m00();
-            dest[o + 1] = w.m10();
-            dest[o + 2] = w.m20();
-            dest[o + 3] = w.m30();
-            dest[o + 4] = w.m01();
-            dest[o + 5] = w.m11();
-            dest[o + 6] = w.m21();
-            dest[o + 7] = w.m31();
-            dest[o + 8] = w.m02();
-            dest[o + 9] = w.m12();
-            dest[o + 10] = w.m22();
-            dest[o + 11] = w.m32();
+            AnimationHelper.putRowMajor3x4(w, dest, 12 * j);
         }
     }
 }

@@ -4,6 +4,7 @@ import org.joml.Matrix3f;
 import org.joml.Matrix4f;
 import org.joml.Quaternionf;
 import org.skinlab.animation.AnimationHelper;
+import org.skinlab.animation.DualQuaternion;
 
 /**
  * One frame's joint data for a skinner: the skinning matrices, and what DQS derives from them once
@@ -47,6 +48,7 @@ public final class JointPalette {
     private final Matrix4f t = new Matrix4f();
     private final Quaternionf q = new Quaternionf();
     private final Matrix3f r3 = new Matrix3f();
+    private final DualQuaternion dq = new DualQuaternion();
 
     /**
      * @param bindMatrices per joint 16 floats column-major, the matrix that takes bind-shape
@@ -114,27 +116,12 @@ public final class JointPalette {
 
     /** Sets joint {@code j}'s skinning matrix from a JOML matrix (its affine part). */
     public void setMatrix(int j, Matrix4f matrix) {
-        int o = 12 * j;
-        matrices[o] = matrix.m00();
-        matrices[o + 1] = matrix.m10();
-        matrices[o + 2] = matrix.m20();
-        matrices[o + 3] = matrix.m30();
-        matrices[o + 4] = matrix.m01();
-        matrices[o + 5] = matrix.m11();
-        matrices[o + 6] = matrix.m21();
-        matrices[o + 7] = matrix.m31();
-        matrices[o + 8] = matrix.m02();
-        matrices[o + 9] = matrix.m12();
-        matrices[o + 10] = matrix.m22();
-        matrices[o + 11] = matrix.m32();
+        AnimationHelper.putRowMajor3x4(matrix, matrices, 12 * j);
     }
 
     /** Joint {@code j}'s skinning matrix as a JOML matrix. */
     public Matrix4f getMatrix(int j, Matrix4f dest) {
-        int o = 12 * j;
-        float[] a = matrices;
-        return dest.set(a[o], a[o + 4], a[o + 8], 0f, a[o + 1], a[o + 5], a[o + 9], 0f,
-                a[o + 2], a[o + 6], a[o + 10], 0f, a[o + 3], a[o + 7], a[o + 11], 1f);
+        return AnimationHelper.getRowMajor3x4(matrices, 12 * j, dest);
     }
 
     /**
@@ -167,11 +154,12 @@ public final class JointPalette {
             x.set(pivots, 16 * j).mul(t, t);
             x.set(pivotInverses, 16 * j);
             t.mul(x);
-            writeScale(j, t);
+            AnimationHelper.putRowMajor3x4(t, scales, 12 * j);
             // D = [R|t] B^-1 = M S^-1
             t.invertAffine();
             m.mul(t, t);
-            AnimationHelper.rotationOf(t, q);
+            // D is rigid to float noise (a rotation times the rigid pivot's inverse).
+            q.setFromNormalized(t).normalize();
             writeDualQuaternion(j, q, t.m30(), t.m31(), t.m32());
         }
         scaled = anyScale;
@@ -211,35 +199,7 @@ public final class JointPalette {
     }
 
     private void writeDualQuaternion(int j, Quaternionf r, float tx, float ty, float tz) {
-        int o = 8 * j;
-        float x0 = r.x;
-        float y0 = r.y;
-        float z0 = r.z;
-        float w0 = r.w;
-        dualQuaternions[o] = x0;
-        dualQuaternions[o + 1] = y0;
-        dualQuaternions[o + 2] = z0;
-        dualQuaternions[o + 3] = w0;
-        dualQuaternions[o + 4] = 0.5f * (tx * w0 + ty * z0 - tz * y0);
-        dualQuaternions[o + 5] = 0.5f * (-tx * z0 + ty * w0 + tz * x0);
-        dualQuaternions[o + 6] = 0.5f * (tx * y0 - ty * x0 + tz * w0);
-        dualQuaternions[o + 7] = -0.5f * (tx * x0 + ty * y0 + tz * z0);
-    }
-
-    private void writeScale(int j, Matrix4f s) {
-        int o = 12 * j;
-        scales[o] = s.m00();
-        scales[o + 1] = s.m10();
-        scales[o + 2] = s.m20();
-        scales[o + 3] = s.m30();
-        scales[o + 4] = s.m01();
-        scales[o + 5] = s.m11();
-        scales[o + 6] = s.m21();
-        scales[o + 7] = s.m31();
-        scales[o + 8] = s.m02();
-        scales[o + 9] = s.m12();
-        scales[o + 10] = s.m22();
-        scales[o + 11] = s.m32();
+        dq.set(r.x, r.y, r.z, r.w, tx, ty, tz).get(dualQuaternions, 8 * j);
     }
 
     private static void setIdentity3x4(float[] a, int o) {
