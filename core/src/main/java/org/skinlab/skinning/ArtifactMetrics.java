@@ -36,6 +36,10 @@ public final class ArtifactMetrics {
 
     /** Deformed volume over rest volume of a geometry's closed mesh. */
     public static double relativeVolume(SkinnedGeometry geometry, float[] deformedPoints) {
+        if (geometry.mesh() == null) {
+            throw new IllegalArgumentException("relative volume needs a mesh's triangles; " + geometry
+                    + " has none (use signedVolume with your own triangles)");
+        }
         int[] triangles = geometry.mesh().triangles();
         return signedVolume(deformedPoints, triangles) / signedVolume(geometry.positionArray(), triangles);
     }
