@@ -37,6 +37,9 @@ The importer warns about everything it tolerates; these records are the warnings
       a skin in which N of its POSITIONS positions have no influence (<vcount> entry 0).
   badsums | FILE | CONTROLLER_ID | N | POSITIONS
       a skin in which N positions have weights summing to more than 1e-3 away from 1.
+  nomaterial | FILE | NODE_ID | TARGET
+      an <instance_material> (of an instance in the visual scene) whose target names no <material>:
+      drawn with the default material.
 """
 
 import os
@@ -251,6 +254,27 @@ def clip_rows(doc, name):
     return rows
 
 
+def material_rows(doc, name):
+    """nomaterial records: bound material targets that name no <material>."""
+    rows = []
+    scene = visual_scene(doc)
+    if scene is None:
+        return rows
+    for node in scene.iter():
+        if local(node.tag) != "node":
+            continue
+        for instance in node:
+            if local(instance.tag) not in ("instance_geometry", "instance_controller"):
+                continue
+            for bound in instance.iter():
+                if local(bound.tag) != "instance_material":
+                    continue
+                target = doc.by_id(bound.get("target", ""))
+                if target is None or local(target.tag) != "material":
+                    rows.append(["nomaterial", name, node.get("id"), bound.get("target")])
+    return rows
+
+
 def main():
     here = os.path.dirname(os.path.abspath(__file__))
     corpus = sys.argv[1] if len(sys.argv) > 1 else os.path.join(here, "..", "..", "..", "..", "..", "shared", "corpus")
@@ -261,7 +285,7 @@ def main():
             print(" | ".join(str(v) for v in row))
         if child(doc.root, "asset") is None:
             print("noasset | " + name)
-        for row in weight_rows(doc, name):
+        for row in weight_rows(doc, name) + material_rows(doc, name):
             print(" | ".join(str(v) for v in row))
 
 

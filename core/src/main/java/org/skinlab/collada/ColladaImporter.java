@@ -13,8 +13,10 @@ import java.util.Map;
 
 import org.skinlab.model.AnimationClip;
 import org.skinlab.model.AssetInfo;
+import org.skinlab.model.Material;
 import org.skinlab.model.Mesh;
 import org.skinlab.model.Model;
+import org.skinlab.model.Morph;
 import org.skinlab.model.Skin;
 import org.skinlab.model.UpAxis;
 
@@ -35,24 +37,41 @@ public final class ColladaImporter {
     private ColladaImporter() {
     }
 
-    /** Imports a file; its name (not its path) appears in messages. */
+    /**
+     * Imports a file; its name (not its path) appears in messages. Relative URLs in it (image
+     * files, references to itself by file name) are resolved against its folder.
+     */
     public static Model read(Path file) throws IOException, ColladaException {
         String name = file.getFileName() == null ? file.toString() : file.getFileName().toString();
         try (InputStream in = new BufferedInputStream(Files.newInputStream(file), 1 << 16)) {
-            return read(in, name);
+            return read(in, name, file.toAbsolutePath());
         }
     }
 
     /**
      * Imports from a stream (UTF-8, or UTF-16 with a byte order mark, or any encoding the XML
-     * declaration names). The caller closes the stream.
+     * declaration names). The caller closes the stream. The name is also taken as the document's
+     * location (a path, possibly relative) for its relative URLs; see
+     * {@link #read(InputStream, String, Path)}.
      *
      * @param name the name used in messages and {@link Model#source()}
      */
     public static Model read(InputStream in, String name) throws IOException, ColladaException {
+        return read(in, name, DocumentLocation.fromName(name));
+    }
+
+    /**
+     * Imports from a stream whose document lives at {@code location}: relative URLs in it (image
+     * files, references to the document itself by file name) are resolved against that path's
+     * folder. The importer never opens any file there.
+     *
+     * @param name     the name used in messages and {@link Model#source()}
+     * @param location the document's path (absolute or relative), or null when unknown
+     */
+    public static Model read(InputStream in, String name, Path location) throws IOException, ColladaException {
         XmlElement root = SafeXmlReader.read(in, name);
         try {
-            return build(root, name);
+            return build(root, name, location);
         } catch (RuntimeException e) {
             // A safety net: every problem should already be a ColladaException with a precise
             // message; if one slipped through, the user still gets one line naming the file.
@@ -60,8 +79,8 @@ public final class ColladaImporter {
         }
     }
 
-    private static Model build(XmlElement root, String name) throws ColladaException {
-        ImportContext ctx = new ImportContext(name, root);
+    private static Model build(XmlElement root, String name, Path location) throws ColladaException {
+        ImportContext ctx = new ImportContext(name, location, root);
         if (!root.name().equals("COLLADA")) {
             throw ctx.error(root, "the root element is <" + root.name() + ">, not <COLLADA>");
         }
@@ -87,9 +106,14 @@ public final class ColladaImporter {
             }
         }
 
+        Map<XmlElement, Morph> morphsByController = new MorphLoader(ctx, meshesByGeometry).loadAll(root);
+        for (Morph m : morphsByController.values()) {
+            meshes.add(m.result());
+        }
+
         Map<XmlElement, Skin> skinsByController = new IdentityHashMap<>();
         List<Skin> skins = new ArrayList<>();
-        SkinLoader skinLoader = new SkinLoader(ctx, meshesByGeometry);
+        SkinLoader skinLoader = new SkinLoader(ctx, meshesByGeometry, morphsByController);
         for (XmlElement library : root.children("library_controllers")) {
             for (XmlElement controller : library.children("controller")) {
                 XmlElement skin = controller.child("skin");
@@ -101,9 +125,15 @@ public final class ColladaImporter {
             }
         }
 
-        SceneLoader.Result scene = new SceneLoader(ctx, meshesByGeometry, skinsByController).load(root);
+        MaterialLoader materialLoader = new MaterialLoader(ctx);
+        Map<XmlElement, Material> materials = materialLoader.loadAll(root);
+
+        SceneLoader.Result scene = new SceneLoader(ctx, meshesByGeometry, morphsByController, skinsByController,
+                materials).load(root);
         List<AnimationClip> clips = new AnimationLoader(ctx, scene.nodes, scene.nodesById).load(root);
-        return new Model(name, asset, meshes, skins, scene.nodes, scene.instances, clips, ctx.warnings());
+        return new Model(name, asset, meshes, skins, new ArrayList<>(morphsByController.values()),
+                new ArrayList<>(materials.values()), materialLoader.images(), scene.nodes, scene.instances, clips,
+                ctx.warnings());
     }
 
     private static AssetInfo readAsset(ImportContext ctx, XmlElement root) throws ColladaException {

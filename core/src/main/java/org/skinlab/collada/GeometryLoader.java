@@ -181,11 +181,49 @@ final class GeometryLoader {
                 throw ctx.error(vertices, "has no POSITION input");
             }
             positions.requireFloats(ctx, positionInput, "POSITION");
-            if (positions.width() != 3) {
+            if (positions.width() == 2) {
+                ctx.warn(positionInput, "POSITION source \"" + positions.id() + "\" has 2 components per element;"
+                        + " read as X Y with Z = 0");
+            } else if (positions.width() != 3) {
                 throw ctx.error(positionInput, "POSITION source \"" + positions.id() + "\" has "
                         + positions.width() + " components per element, expected 3 (X Y Z)");
             }
             positionCount = positions.count();
+            // Inputs declared in <vertices> are indexed like the position: one shorter than the
+            // positions cannot be used at all.
+            for (int slot = 0; slot < vertexSlots.length; slot++) {
+                if (vertexSlots[slot] != null && vertexSlots[slot].source.count() < positionCount) {
+                    warnDropped(vertices, vertexSlots[slot].source, positionCount - 1, "");
+                    vertexSlots[slot] = null;
+                }
+            }
+            for (int i = vertexTexCoordSources.size() - 1; i >= 0; i--) {
+                if (vertexTexCoordSources.get(i).source.count() < positionCount) {
+                    warnDropped(vertices, vertexTexCoordSources.get(i).source, positionCount - 1, "");
+                    vertexTexCoordSources.remove(i);
+                    vertexTexCoordSets.remove(i);
+                }
+            }
+        }
+
+        /** Warns that an optional input is dropped because an index is out of its source's range. */
+        private void warnDropped(XmlElement where, Source source, int index, String scope) {
+            ctx.warn(where, "index " + index + " is out of range: source \"" + source.id() + "\" has "
+                    + source.count() + " elements; that input is dropped" + scope);
+        }
+
+        /** The positions, 3 floats each (2-D positions get Z = 0). */
+        private float[] positionValues() throws ColladaException {
+            if (positions.width() == 3) {
+                return positions.floats(ctx, positionInput, 3, "POSITION");
+            }
+            float[] xy = positions.floats(ctx, positionInput, 2, "POSITION");
+            float[] xyz = new float[3 * positionCount];
+            for (int i = 0; i < positionCount; i++) {
+                xyz[3 * i] = xy[2 * i];
+                xyz[3 * i + 1] = xy[2 * i + 1];
+            }
+            return xyz;
         }
 
         /**
@@ -227,8 +265,8 @@ final class GeometryLoader {
 
         /** A float source with between {@code min} and {@code max} components. */
         private Source attributeSource(XmlElement input, int min, int max) throws ColladaException {
-            Source s = ctx.inputSource(input);
-            s.requireFloats(ctx, input, input.attr("semantic"));
+            // Texture coordinates, colours and normals can do without a NaN: read as 0, warned.
+            Source s = ctx.inputSource(input).finiteOrZero(ctx, input, input.attr("semantic"));
             if (s.width() < min || s.width() > max) {
                 throw ctx.error(input, input.attr("semantic") + " source \"" + s.id() + "\" has " + s.width()
                         + " components per element, expected " + (min == max ? "" + min : min + " to " + max));
@@ -241,27 +279,31 @@ final class GeometryLoader {
             int vertexOffset = -1;
             int maxOffset = -1;
             SlotInput[] layout = vertexSlots.clone();
+            XmlElement[] slotInputs = new XmlElement[layout.length];
             for (XmlElement input : primitive.children("input")) {
                 String semantic = ctx.attr(input, "semantic");
                 int offset = ctx.inputOffset(input);
                 maxOffset = Math.max(maxOffset, offset);
+                int slot = -1;
                 switch (semantic) {
                     case "VERTEX":
-                        ctx.resolve(input, "source", "vertices");
+                        checkVertexReference(input);
                         vertexOffset = offset;
                         break;
                     case "NORMAL":
-                        layout[SLOT_NORMAL] = new SlotInput(attributeSource(input, 3, 3), offset);
+                        slot = SLOT_NORMAL;
+                        layout[slot] = new SlotInput(attributeSource(input, 3, 3), offset);
                         break;
                     case "COLOR":
                         if (layout[SLOT_COLOR] == null || layout[SLOT_COLOR].offset < 0) {
-                            layout[SLOT_COLOR] = new SlotInput(attributeSource(input, 3, 4), offset);
+                            slot = SLOT_COLOR;
+                            layout[slot] = new SlotInput(attributeSource(input, 3, 4), offset);
                         }
                         break;
                     case "TEXCOORD": {
                         Integer set = texCoordSetOfInput.get(input);
                         if (set != null) {
-                            int slot = FIRST_TEXCOORD_SLOT + Arrays.binarySearch(texCoordSets, set);
+                            slot = FIRST_TEXCOORD_SLOT + Arrays.binarySearch(texCoordSets, set);
                             layout[slot] = new SlotInput(attributeSource(input, 2, 4), offset);
                         }
                         break;
@@ -269,10 +311,31 @@ final class GeometryLoader {
                     default:
                         break;
                 }
+                if (slot >= 0) {
+                    slotInputs[slot] = input;
+                }
             }
             if (vertexOffset < 0) {
                 throw ctx.error(primitive, "has no VERTEX input");
             }
+            int stride = maxOffset + 1;
+            int count = ctx.count(primitive, "count", -1);
+            if (count < 0) {
+                throw ctx.error(primitive, "missing attribute count");
+            }
+            IndexLists lists;
+            switch (primitive.name()) {
+                case "triangles":
+                    lists = triangleIndices(primitive, count, stride);
+                    break;
+                case "polylist":
+                    lists = polylistIndices(primitive, count, stride);
+                    break;
+                default:
+                    lists = polygonIndices(primitive, count, stride);
+                    break;
+            }
+            dropInputsOutOfRange(lists, stride, layout, slotInputs);
             if (hasNormals && layout[SLOT_NORMAL] == null) {
                 ctx.warn(primitive, "has no NORMAL input while other primitives do; its normals are zero");
             }
@@ -282,23 +345,18 @@ final class GeometryLoader {
                             + " while other primitives do; its texture coordinates there are zero");
                 }
             }
-            int stride = maxOffset + 1;
-            int count = ctx.count(primitive, "count", -1);
-            if (count < 0) {
-                throw ctx.error(primitive, "missing attribute count");
-            }
             int firstTriangle = triangles.size() / 3;
             degenerate = 0;
             Corners corners = new Corners(layout, vertexOffset, stride);
             switch (primitive.name()) {
                 case "triangles":
-                    readTriangles(primitive, count, stride, corners);
+                    readTriangles(lists, stride, corners);
                     break;
                 case "polylist":
-                    readPolylist(primitive, count, stride, corners);
+                    readPolylist(lists, stride, corners);
                     break;
                 default:
-                    readPolygonLists(primitive, count, stride, corners);
+                    readPolygonLists(primitive, lists, stride, corners);
                     break;
             }
             if (degenerate > 0) {
@@ -309,62 +367,84 @@ final class GeometryLoader {
             parts.add(new MeshPart(primitive.name(), primitive.attr("material"), firstTriangle, triangleCount));
         }
 
-        private void readTriangles(XmlElement primitive, int count, int stride, Corners corners)
-                throws ColladaException {
-            List<XmlElement> ps = primitive.children("p");
-            long needed = 3L * count * stride;
-            int[] p = concatenated(ps);
-            if (p.length != needed) {
-                throw ctx.error(ps.isEmpty() ? primitive : ps.get(0), "count=\"" + count + "\" triangles with "
-                        + stride + " index offsets need " + needed + " indices, <p> has " + p.length);
-            }
-            triangles.ensureCapacity(triangles.size() + 3 * count);
-            int[] polygon = new int[3];
-            for (int t = 0; t < count; t++) {
-                corners.polygon(p, t * 3 * stride, 3, polygon, ps.isEmpty() ? primitive : ps.get(0));
-                fan(polygon, 3);
+        /**
+         * A VERTEX input names the mesh's {@code <vertices>}, the only one it can have: a reference
+         * to anything else (or nothing) is a slip, read as that {@code <vertices>} with a warning.
+         */
+        private void checkVertexReference(XmlElement input) throws ColladaException {
+            String ref = ctx.attr(input, "source");
+            XmlElement own = meshElement.child("vertices");
+            XmlElement target = ref.startsWith("#") ? ctx.byId(ref.substring(1)) : null;
+            if (target != own) {
+                if (target == null && ref.indexOf('#') > 0) {
+                    ctx.resolve(input, "source", "vertices"); // another document: refused there
+                }
+                ctx.warn(input, "source=\"" + ref + "\" is not this mesh's <vertices>"
+                        + (own.id() == null ? "" : " \"#" + own.id() + "\"") + ", the only one a VERTEX input can"
+                        + " name; read as that");
             }
         }
 
-        private void readPolylist(XmlElement primitive, int count, int stride, Corners corners)
-                throws ColladaException {
+        /** A primitive's index data: one list (triangles, polylist) or one per polygon, fan or strip. */
+        private final class IndexLists {
+            final List<int[]> lists;
+            final List<XmlElement> elements; // the <p> of each list, for messages
+            final int[] vcount;              // polylist only
+
+            IndexLists(List<int[]> lists, List<XmlElement> elements, int[] vcount) {
+                this.lists = lists;
+                this.elements = elements;
+                this.vcount = vcount;
+            }
+        }
+
+        private IndexLists triangleIndices(XmlElement primitive, int count, int stride) throws ColladaException {
+            List<XmlElement> ps = primitive.children("p");
+            int[] p = concatenated(ps);
+            long needed = 3L * count * stride;
+            if (p.length != needed) {
+                XmlElement where = ps.isEmpty() ? primitive : ps.get(0);
+                if (p.length % (3 * stride) != 0) {
+                    throw ctx.error(where, "count=\"" + count + "\" triangles with " + stride
+                            + " index offsets need " + needed + " indices, <p> has " + p.length);
+                }
+                ctx.warn(primitive, "count=\"" + count + "\" but <p> holds " + p.length / (3 * stride)
+                        + " triangles; they are read");
+            }
+            return new IndexLists(List.of(p), List.of(ps.isEmpty() ? primitive : ps.get(0)), null);
+        }
+
+        private IndexLists polylistIndices(XmlElement primitive, int count, int stride) throws ColladaException {
             XmlElement vcountElement = primitive.child("vcount");
             List<XmlElement> ps = primitive.children("p");
             XmlElement where = ps.isEmpty() ? primitive : ps.get(0);
             int[] vcount = vcountElement == null ? new int[0] : NumberParser.ints(ctx, vcountElement, -1);
-            if (vcount.length != count) {
-                throw ctx.error(vcountElement == null ? primitive : vcountElement, "count=\"" + count
-                        + "\" polygons but <vcount> has " + vcount.length + " entries");
-            }
             long totalCorners = 0;
-            long totalTriangles = 0;
-            int maxCorners = 0;
             for (int n : vcount) {
                 if (n < 0) {
                     throw ctx.error(vcountElement, "negative corner count " + n);
                 }
                 totalCorners += n;
-                totalTriangles += Math.max(0, n - 2);
-                maxCorners = Math.max(maxCorners, n);
             }
             int[] p = concatenated(ps);
             if (totalCorners * stride != p.length) {
+                if (vcount.length != count) {
+                    throw ctx.error(vcountElement == null ? primitive : vcountElement, "count=\"" + count
+                            + "\" polygons but <vcount> has " + vcount.length + " entries");
+                }
                 throw ctx.error(where, "<vcount> adds up to " + totalCorners + " corners, which with " + stride
                         + " index offsets need " + totalCorners * stride + " indices, <p> has " + p.length);
             }
-            triangles.ensureCapacity((int) Math.min(Integer.MAX_VALUE - 8, triangles.size() + 3 * totalTriangles));
-            int[] polygon = new int[maxCorners];
-            int base = 0;
-            for (int n : vcount) {
-                corners.polygon(p, base, n, polygon, where);
-                fan(polygon, n);
-                base += n * stride;
+            if (vcount.length != count) {
+                // <vcount> and <p> agree with each other: the count attribute is the odd one out.
+                ctx.warn(primitive, "count=\"" + count + "\" but <vcount> and <p> hold " + vcount.length
+                        + " polygons; they are read");
             }
+            return new IndexLists(List.of(p), List.of(where), vcount);
         }
 
         /** {@code <polygons>} (one polygon per {@code <p>} or {@code <ph>}), {@code <trifans>}, {@code <tristrips>}. */
-        private void readPolygonLists(XmlElement primitive, int count, int stride, Corners corners)
-                throws ColladaException {
+        private IndexLists polygonIndices(XmlElement primitive, int count, int stride) throws ColladaException {
             List<XmlElement> rings = new ArrayList<>();
             int holes = 0;
             for (XmlElement c : primitive.children()) {
@@ -376,24 +456,104 @@ final class GeometryLoader {
                 }
             }
             if (rings.size() != count) {
-                throw ctx.error(primitive, "count=\"" + count + "\" but it holds " + rings.size()
-                        + (primitive.name().equals("polygons") ? " polygons" : " <p> elements"));
+                ctx.warn(primitive, "count=\"" + count + "\" but it holds " + rings.size()
+                        + (primitive.name().equals("polygons") ? " polygons" : " <p> elements") + "; they are read");
             }
             if (holes > 0) {
                 ctx.warn(primitive, holes + " polygon holes (<h>) ignored; their outer rings are filled");
             }
-            int[] polygon = new int[0];
+            List<int[]> lists = new ArrayList<>(rings.size());
             for (XmlElement ring : rings) {
                 int[] p = NumberParser.ints(ctx, ring, -1);
                 if (p.length % stride != 0) {
                     throw ctx.error(ring, p.length + " indices are not a multiple of the " + stride
                             + " index offsets");
                 }
+                lists.add(p);
+            }
+            return new IndexLists(lists, rings, null);
+        }
+
+        /**
+         * Drops, with a warning, the optional inputs (normals, colours, texture coordinates) of this
+         * primitive that an index points past: the geometry stays usable without them, while
+         * positions out of range are refused later. One pass over the indices finds each offset's
+         * range.
+         */
+        private void dropInputsOutOfRange(IndexLists lists, int stride, SlotInput[] layout, XmlElement[] slotInputs) {
+            int[] min = new int[stride];
+            int[] max = new int[stride];
+            Arrays.fill(min, Integer.MAX_VALUE);
+            Arrays.fill(max, Integer.MIN_VALUE);
+            for (int[] p : lists.lists) {
+                for (int i = 0, k = 0; i < p.length; i++) {
+                    int v = p[i];
+                    if (v < min[k]) {
+                        min[k] = v;
+                    }
+                    if (v > max[k]) {
+                        max[k] = v;
+                    }
+                    if (++k == stride) {
+                        k = 0;
+                    }
+                }
+            }
+            for (int slot = 0; slot < layout.length; slot++) {
+                SlotInput in = layout[slot];
+                if (in == null || in.offset < 0 || min[in.offset] > max[in.offset]) {
+                    continue; // declared in <vertices> (checked there), or no index at all
+                }
+                int lo = min[in.offset];
+                int hi = max[in.offset];
+                if (lo < 0 || hi >= in.source.count()) {
+                    warnDropped(slotInputs[slot], in.source, lo < 0 ? lo : hi, " for this primitive");
+                    layout[slot] = null;
+                }
+            }
+        }
+
+        private void readTriangles(IndexLists lists, int stride, Corners corners) throws ColladaException {
+            int[] p = lists.lists.get(0);
+            XmlElement where = lists.elements.get(0);
+            int count = p.length / (3 * stride);
+            triangles.ensureCapacity(triangles.size() + 3 * count);
+            int[] polygon = new int[3];
+            for (int t = 0; t < count; t++) {
+                corners.polygon(p, t * 3 * stride, 3, polygon, where);
+                fan(polygon, 3);
+            }
+        }
+
+        private void readPolylist(IndexLists lists, int stride, Corners corners) throws ColladaException {
+            int[] p = lists.lists.get(0);
+            XmlElement where = lists.elements.get(0);
+            long totalTriangles = 0;
+            int maxCorners = 0;
+            for (int n : lists.vcount) {
+                totalTriangles += Math.max(0, n - 2);
+                maxCorners = Math.max(maxCorners, n);
+            }
+            triangles.ensureCapacity((int) Math.min(Integer.MAX_VALUE - 8, triangles.size() + 3 * totalTriangles));
+            int[] polygon = new int[maxCorners];
+            int base = 0;
+            for (int n : lists.vcount) {
+                corners.polygon(p, base, n, polygon, where);
+                fan(polygon, n);
+                base += n * stride;
+            }
+        }
+
+        private void readPolygonLists(XmlElement primitive, IndexLists lists, int stride, Corners corners)
+                throws ColladaException {
+            int[] polygon = new int[0];
+            for (int r = 0; r < lists.lists.size(); r++) {
+                int[] p = lists.lists.get(r);
                 int n = p.length / stride;
                 if (polygon.length < n) {
                     polygon = new int[n];
                 }
-                corners.polygon(p, 0, n, polygon, ring);
+                corners.polygon(p, 0, n, polygon, lists.elements.get(r));
                 switch (primitive.name()) {
                     case "tristrips":
                         for (int i = 2; i < n; i++) {
@@ -588,9 +748,9 @@ final class GeometryLoader {
                     uv[2 * i + 1] = Float.intBitsToFloat(keys[off + texCoordAt + 2 * t + 1]);
                 }
             }
-            float[] positionValues = positions.floats(ctx, positionInput, 3, "POSITION");
+            float[] positionValues = positionValues();
             return new Mesh(geometry.id(), geometry.attr("name"), positionValues, vertexPositions, normals, texCoords,
-                    colors, triangles.toArray(), parts);
+                    texCoordSets, colors, triangles.toArray(), parts);
         }
     }
 }

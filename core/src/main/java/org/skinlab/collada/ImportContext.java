@@ -1,12 +1,15 @@
 package org.skinlab.collada;
 
+import java.nio.file.Path;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Deque;
 import java.util.HashMap;
+import java.util.HashSet;
 import java.util.IdentityHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 
 import org.skinlab.model.ImportWarning;
 
@@ -20,13 +23,23 @@ final class ImportContext {
     static final int MAX_WARNINGS = 200;
 
     final String file;
+    /** Where the document lives (for its relative URLs), or null when unknown. */
+    final DocumentLocation location;
+    private final XmlElement root;
     private final Map<String, XmlElement> ids = new HashMap<>();
     private final Map<XmlElement, Source> sources = new IdentityHashMap<>();
     private final List<ImportWarning> warnings = new ArrayList<>();
+    private final Set<String> warnedOnce = new HashSet<>();
     private int droppedWarnings;
 
     ImportContext(String file, XmlElement root) {
+        this(file, null, root);
+    }
+
+    ImportContext(String file, Path location, XmlElement root) {
         this.file = file;
+        this.location = new DocumentLocation(location);
+        this.root = root;
         // Iterative walk: the tree may be as deep as SafeXmlReader allows.
         Deque<XmlElement> todo = new ArrayDeque<>();
         todo.push(root);
@@ -59,12 +72,34 @@ final class ImportContext {
         }
     }
 
+    /**
+     * Warns only the first time {@code kind} comes up in this file: for exporter habits that
+     * repeat on every source of a file (unnamed params, decimal commas), where one warning naming
+     * the first place says all there is to say and a hundred would bury every other warning.
+     */
+    void warnOnce(String kind, XmlElement e, String message) {
+        if (warnedOnce.add(kind)) {
+            warn(e, message);
+        }
+    }
+
+    /** The warning for numbers written with a decimal comma (once per file). */
+    void warnDecimalComma(XmlElement e) {
+        warnOnce("decimal-comma", e, "numbers are written with a decimal comma (a localised exporter); read with"
+                + " the comma as the decimal point");
+    }
+
     List<ImportWarning> warnings() {
         List<ImportWarning> result = new ArrayList<>(warnings);
         if (droppedWarnings > 0) {
             result.add(new ImportWarning("document", droppedWarnings + " more warnings not shown"));
         }
         return result;
+    }
+
+    /** The document's root element. */
+    XmlElement root() {
+        return root;
     }
 
     /** The element with the given id, or null. */
@@ -129,8 +164,13 @@ final class ImportContext {
         if (v == null) {
             return fallback;
         }
+        String text = v.trim();
+        if (text.indexOf(',') >= 0 && text.indexOf('.') < 0 && text.indexOf(',') == text.lastIndexOf(',')) {
+            text = text.replace(',', '.'); // meter="0,01" from a localised exporter
+            warnDecimalComma(e);
+        }
         try {
-            double d = Double.parseDouble(v.trim());
+            double d = Double.parseDouble(text);
             if (!Double.isFinite(d)) {
                 throw error(e, name + "=\"" + v + "\" is not a finite number");
             }
@@ -149,11 +189,18 @@ final class ImportContext {
         String ref = attribute == null ? from.text().trim() : attr(from, attribute);
         String where = attribute == null ? "reference \"" + ref + "\"" : attribute + "=\"" + ref + "\"";
         String id;
+        int hash = ref.indexOf('#');
         if (ref.startsWith("#")) {
             id = ref.substring(1);
-        } else if (ref.contains("#")) {
-            throw error(from, where + " points into another document; only references within the file are"
-                    + " supported");
+        } else if (hash > 0) {
+            if (!location.isThisDocument(ref.substring(0, hash))) {
+                throw error(from, where + " points into another document; only references within the file are"
+                        + " supported");
+            }
+            // "self.dae#id": the document names itself by its file name (some exporters do).
+            id = ref.substring(hash + 1);
+            warnOnce("self-url", from, where + " names this document by its file name; read as \"" + ref.substring(hash)
+                    + "\"");
         } else {
             id = ref; // not a URI fragment, but some exporters write bare ids
             if (ids.containsKey(id)) {

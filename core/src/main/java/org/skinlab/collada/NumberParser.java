@@ -33,12 +33,37 @@ final class NumberParser {
      * @param expected the count the file declares, or -1 when it declares none
      */
     static float[] floats(ImportContext ctx, XmlElement element, int expected) throws ColladaException {
+        NumberScanner n = scannedFloats(ctx, element);
+        requireFinite(ctx, element, n);
+        checkCount(ctx, element, n, expected);
+        return n.floats();
+    }
+
+    /**
+     * The element's floats as scanned, NaN and infinities included (see
+     * {@link NumberScanner#nonFiniteIndex()}): for {@code float_array}s, whose users decide whether
+     * a non-finite value is acceptable. Tokens that are no number at all are refused here.
+     */
+    static NumberScanner scannedFloats(ImportContext ctx, XmlElement element) throws ColladaException {
         NumberScanner n = element.numbers();
         if (n == null) {
             n = NumberScanner.scan(element.text(), true);
         }
-        check(ctx, element, n, expected);
-        return n.floats();
+        if (n.badIndex() >= 0) {
+            throw ctx.error(element, "value " + n.badIndex() + " \"" + n.badToken() + "\" is " + n.badReason());
+        }
+        if (n.decimalCommas() > 0) {
+            ctx.warnDecimalComma(element);
+        }
+        return n;
+    }
+
+    /** Refuses the first non-finite value of the scanned element. */
+    static void requireFinite(ImportContext ctx, XmlElement element, NumberScanner n) throws ColladaException {
+        if (n.nonFiniteIndex() >= 0) {
+            throw ctx.error(element, "value " + n.nonFiniteIndex() + " \"" + n.nonFiniteToken() + "\" is "
+                    + n.nonFiniteReason());
+        }
     }
 
     /** The element's values as ints (see {@link #floats}). */
@@ -61,6 +86,11 @@ final class NumberParser {
         if (n.badIndex() >= 0) {
             throw ctx.error(element, "value " + n.badIndex() + " \"" + n.badToken() + "\" is " + n.badReason());
         }
+        checkCount(ctx, element, n, expected);
+    }
+
+    private static void checkCount(ImportContext ctx, XmlElement element, NumberScanner n, int expected)
+            throws ColladaException {
         if (expected >= 0 && n.size() != expected) {
             throw ctx.error(element, "count=\"" + expected + "\" but " + (n.size() < expected ? "only " : "")
                     + n.size() + " values");

@@ -11,9 +11,15 @@ import java.util.Arrays;
  * <p>Floats are correctly rounded: the common case (at most 18 significant digits, a decimal
  * exponent within +-22) is computed exactly in double precision (Clinger's fast path) and then
  * rounded to float; the only double-rounding hazard, a double that lands exactly halfway between
- * two floats, and every other case fall back to {@link Float#parseFloat}. NaN and infinities
- * (and MSVC spellings such as {@code 1.#QNAN}) are not numbers here: a non-finite coordinate,
- * weight or key time is never meaningful and would silently poison everything downstream.
+ * two floats, and every other case fall back to {@link Float#parseFloat}. A comma in place of the
+ * decimal point ({@code 0,5}: exporters running under a German or French locale) is read as the
+ * point and remembered ({@link #decimalCommas()}), so the importer can say so.
+ *
+ * <p>NaN and infinities (also MSVC's spellings such as {@code 1.#QNAN}) and floats beyond float
+ * range are kept as values but remembered apart from bad tokens ({@link #nonFiniteIndex()}): a
+ * non-finite coordinate, weight or key time is never meaningful and is refused, but a NaN in a
+ * texture coordinate or colour source can be replaced and the rest of the file read. Which is
+ * which is the importer's decision, not the scanner's.
  *
  * <p>Problems do not stop the scan: the first bad token is remembered (with its index) and
  * counted as a value, so the importer can report it, or a count mismatch, when someone asks for
@@ -54,6 +60,12 @@ final class NumberScanner {
     private String badToken;
     private String badReason;
     private int badIndex = -1;
+
+    private String nonFiniteToken;
+    private String nonFiniteReason;
+    private int nonFiniteIndex = -1;
+    private int nonFiniteCount;
+    private int decimalCommas;
 
     /** Where the token parsed last ended (the first character after it). */
     private int tokenEnd;
@@ -120,9 +132,34 @@ final class NumberScanner {
         return badToken;
     }
 
-    /** Why the first bad token is bad, e.g. "not a finite number". */
+    /** Why the first bad token is bad, e.g. "not an integer". */
     String badReason() {
         return badReason;
+    }
+
+    /** Index of the first NaN, infinity or out-of-range float, or -1. */
+    int nonFiniteIndex() {
+        return nonFiniteIndex;
+    }
+
+    /** The first non-finite token (at most 40 characters), or null. */
+    String nonFiniteToken() {
+        return nonFiniteToken;
+    }
+
+    /** Why the first non-finite token is refused where values must be finite. */
+    String nonFiniteReason() {
+        return nonFiniteReason;
+    }
+
+    /** Number of non-finite values. */
+    int nonFiniteCount() {
+        return nonFiniteCount;
+    }
+
+    /** Number of floats written with a decimal comma. */
+    int decimalCommas() {
+        return decimalCommas;
     }
 
     /** Consumes the next chunk of the element's text. */
@@ -203,6 +240,7 @@ final class NumberScanner {
      */
     private boolean parseToken(char[] b, int from, int limit, boolean limitEndsToken) {
         pendingProblem = null;
+        pendingComma = false;
         int stop = floats ? scanFloat(b, from, limit) : scanInt(b, from, limit);
         if (stop == limit && !limitEndsToken) {
             return false;
@@ -216,8 +254,14 @@ final class NumberScanner {
             if (end == limit && !limitEndsToken) {
                 return false;
             }
-            bad(b, from, end, floats ? "not a finite number" : "not an integer");
-            add(0);
+            float special = floats ? nonFinite(b, from, end) : 0f;
+            if (special != 0f) {
+                nonFinite(b, from, end, "not a finite number");
+                add(special);
+            } else {
+                bad(b, from, end, floats ? "not a number" : "not an integer");
+                add(0);
+            }
             tokenEnd = end;
             return true;
         }
@@ -225,10 +269,22 @@ final class NumberScanner {
         if (stop - from > MAX_TOKEN) {
             bad(b, from, stop, "longer than " + MAX_TOKEN + " characters");
             add(0);
+        } else if (pendingProblem == OUT_OF_RANGE) {
+            nonFinite(b, from, stop, pendingProblem);
+            add(pendingFloat);
         } else if (pendingProblem != null) {
-            bad(b, from, stop, pendingProblem);
-            add(0);
+            float special = floats ? nonFinite(b, from, stop) : 0f;
+            if (special != 0f) {
+                nonFinite(b, from, stop, "not a finite number");
+                add(special);
+            } else {
+                bad(b, from, stop, pendingProblem);
+                add(0);
+            }
         } else if (floats) {
+            if (pendingComma) {
+                decimalCommas++;
+            }
             add(pendingFloat);
         } else {
             add(pendingInt);
@@ -236,10 +292,43 @@ final class NumberScanner {
         return true;
     }
 
+    private static final String OUT_OF_RANGE = "out of float range";
+
+    /**
+     * NaN or an infinity when {@code b[from, to)} spells one (NaN, INF, Infinity in any case,
+     * with a sign; MSVC's 1.#QNAN, 1.#SNAN, 1.#IND, 1.#INF with trailing digits), else 0.
+     */
+    private static float nonFinite(char[] b, int from, int to) {
+        int pos = from;
+        boolean negative = false;
+        if (pos < to && (b[pos] == '-' || b[pos] == '+')) {
+            negative = b[pos] == '-';
+            pos++;
+        }
+        String word = new String(b, pos, to - pos).toUpperCase(java.util.Locale.ROOT);
+        if (word.startsWith("1.#")) {
+            word = word.substring(3).replaceAll("[0-9]+$", "");
+            if (word.equals("INF")) {
+                return negative ? Float.NEGATIVE_INFINITY : Float.POSITIVE_INFINITY;
+            }
+            return word.equals("QNAN") || word.equals("SNAN") || word.equals("IND") ? Float.NaN : 0f;
+        }
+        switch (word) {
+            case "NAN":
+                return Float.NaN;
+            case "INF":
+            case "INFINITY":
+                return negative ? Float.NEGATIVE_INFINITY : Float.POSITIVE_INFINITY;
+            default:
+                return 0f;
+        }
+    }
+
     // Results of the scanners below, handed to parseToken.
     private float pendingFloat;
     private int pendingInt;
     private String pendingProblem;
+    private boolean pendingComma; // the float was written with a decimal comma
 
     /**
      * Scans a float at {@code b[from]}; returns the index after it (where it stopped). Sets
@@ -259,6 +348,7 @@ final class NumberScanner {
         boolean dropped = false;  // digits beyond 18 were dropped: not exact any more
         int digits = 0;
         boolean point = false;    // the decimal point has been seen
+        boolean comma = false;    // ... and it was a comma
         while (pos < limit) {
             int d = b[pos] - '0';
             if (d >= 0 && d <= 9) {
@@ -277,8 +367,9 @@ final class NumberScanner {
                     }
                     dropped |= d != 0;
                 }
-            } else if (b[pos] == '.' && !point) {
+            } else if ((b[pos] == '.' || b[pos] == ',') && !point) {
                 point = true;
+                comma = b[pos] == ',';
             } else {
                 break;
             }
@@ -314,14 +405,23 @@ final class NumberScanner {
             }
             exponent += negExp ? -e : e;
         }
+        if (comma) {
+            if (b[pos - 1] == ',') {
+                // "5," is no decimal number; a comma-separated list would be misread as one.
+                pendingProblem = "not a number";
+                return pos;
+            }
+            pendingComma = true;
+        }
         float f;
         if (mantissa == 0) {
             f = 0f;
         } else {
-            f = toFloat(mantissa, exponent, dropped, b, from, pos);
+            f = toFloat(mantissa, exponent, dropped, b, from, pos, comma);
         }
         if (Float.isInfinite(f)) {
-            pendingProblem = "out of float range";
+            pendingProblem = OUT_OF_RANGE;
+            pendingFloat = negative ? Float.NEGATIVE_INFINITY : Float.POSITIVE_INFINITY;
             return pos;
         }
         pendingFloat = negative ? -f : f;
@@ -341,17 +441,24 @@ final class NumberScanner {
      * {@link Float#parseFloat} decides. When the double is exact or correctly rounded (no dropped
      * digits, mantissa below 2^53, 0 <= exponent <= 22) only an exact halfway point is in doubt.
      */
-    private static float toFloat(long mantissa, int exponent, boolean dropped, char[] b, int from, int to) {
+    private static float toFloat(long mantissa, int exponent, boolean dropped, char[] b, int from, int to,
+            boolean comma) {
         if (exponent >= POWERS_OF_TEN.length || exponent <= -NEGATIVE_POWERS_OF_TEN.length) {
-            return Math.abs(Float.parseFloat(new String(b, from, to - from)));
+            return exact(b, from, to, comma);
         }
         double d = exponent >= 0 ? mantissa * POWERS_OF_TEN[exponent] : mantissa * NEGATIVE_POWERS_OF_TEN[-exponent];
         boolean correctlyRounded = !dropped && mantissa < (1L << 53) && exponent >= 0 && exponent <= 22;
         long distance = Math.abs((Double.doubleToRawLongBits(d) & BELOW_FLOAT) - FLOAT_MIDPOINT);
         if (distance <= (correctlyRounded ? 0 : 16) || d < Float.MIN_NORMAL || d > Float.MAX_VALUE) {
-            return Math.abs(Float.parseFloat(new String(b, from, to - from)));
+            return exact(b, from, to, comma);
         }
         return (float) d;
+    }
+
+    /** {@link Float#parseFloat} of the token's magnitude (a decimal comma read as the point). */
+    private static float exact(char[] b, int from, int to, boolean comma) {
+        String token = new String(b, from, to - from);
+        return Math.abs(Float.parseFloat(comma ? token.replace(',', '.') : token));
     }
 
     /** Scans an int at {@code b[from]} (see {@link #scanFloat}). */
@@ -389,6 +496,15 @@ final class NumberScanner {
         }
         pendingInt = (int) v;
         return pos;
+    }
+
+    private void nonFinite(char[] b, int from, int to, String reason) {
+        if (nonFiniteIndex < 0) {
+            nonFiniteIndex = size;
+            nonFiniteToken = new String(b, from, Math.min(to - from, 40));
+            nonFiniteReason = reason;
+        }
+        nonFiniteCount++;
     }
 
     private void bad(char[] b, int from, int to, String reason) {

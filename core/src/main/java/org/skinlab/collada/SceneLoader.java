@@ -2,15 +2,23 @@ package org.skinlab.collada;
 
 import java.util.ArrayDeque;
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.Deque;
 import java.util.HashMap;
+import java.util.HashSet;
 import java.util.IdentityHashMap;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 
 import org.joml.Matrix4f;
+import org.skinlab.model.Material;
+import org.skinlab.model.MaterialBinding;
 import org.skinlab.model.Mesh;
 import org.skinlab.model.MeshInstance;
+import org.skinlab.model.MeshPart;
+import org.skinlab.model.Morph;
 import org.skinlab.model.Node;
 import org.skinlab.model.Skin;
 import org.skinlab.model.TransformElement;
@@ -34,7 +42,9 @@ final class SceneLoader {
 
     private final ImportContext ctx;
     private final Map<XmlElement, Mesh> meshes;
+    private final Map<XmlElement, Morph> morphs;
     private final Map<XmlElement, Skin> skins;
+    private final Map<XmlElement, Material> materials;
 
     // Drafts of the nodes, in depth-first order.
     private final List<Draft> drafts = new ArrayList<>();
@@ -44,13 +54,18 @@ final class SceneLoader {
     private final Map<String, RootScope> scopes = new HashMap<>();
     private int[] subtreeEnd;
     private int[] parents;
+    /** Expanded subtree sizes, memoized across calls of {@link #checkExpandedSize}. */
+    private final Map<XmlElement, Long> expandedSizes = new IdentityHashMap<>();
     /** The target of each {@code <instance_node>}, resolved once by {@link #checkExpandedSize}. */
     private final Map<XmlElement, XmlElement> instanceTargets = new IdentityHashMap<>();
 
-    SceneLoader(ImportContext ctx, Map<XmlElement, Mesh> meshesByGeometry, Map<XmlElement, Skin> skinsByController) {
+    SceneLoader(ImportContext ctx, Map<XmlElement, Mesh> meshesByGeometry, Map<XmlElement, Morph> morphsByController,
+            Map<XmlElement, Skin> skinsByController, Map<XmlElement, Material> materialsByElement) {
         this.ctx = ctx;
         this.meshes = meshesByGeometry;
+        this.morphs = morphsByController;
         this.skins = skinsByController;
+        this.materials = materialsByElement;
     }
 
     /** The nodes and instances of the scene (empty when the file has no visual scene). */
@@ -123,25 +138,18 @@ final class SceneLoader {
         if (visualScene == null) {
             return new Result(List.of(), List.of(), Map.of());
         }
-        checkExpandedSize(visualScene);
-        // Iterative depth-first walk: the depth of the tree is the file's to choose.
+        long size = checkExpandedSize(visualScene.children("node"), visualScene, 0);
         Deque<Pending> todo = new ArrayDeque<>();
         pushChildren(todo, visualScene, -1, null);
-        while (!todo.isEmpty()) {
-            Pending p = todo.pop();
-            if (drafts.size() >= MAX_NODES) {
-                throw ctx.error(p.element, "the scene would have more than " + MAX_NODES + " nodes");
+        walk(todo);
+        // Skeletons that live in <library_nodes> and that nothing places in the scene: first
+        // those a <skeleton> names, then (with them in place) those holding joints found nowhere else.
+        for (int phase = 0; phase < 2; phase++) {
+            for (XmlElement root : libraryRoots(phase == 0)) {
+                size = checkExpandedSize(List.of(root), root, size);
+                todo.push(new Pending(root, -1, null));
+                walk(todo);
             }
-            Draft d = new Draft(p.element, drafts.size(), p.parent, p.chain != null);
-            drafts.add(d);
-            if (p.parent >= 0) {
-                drafts.get(p.parent).children.add(d.index);
-            }
-            index(byId, p.element.id(), d.index);
-            index(bySid, p.element.attr("sid"), d.index);
-            index(byName, p.element.attr("name"), d.index);
-            readTransforms(d);
-            pushChildren(todo, p.element, d.index, p.chain);
         }
         int n = drafts.size();
         parents = new int[n];
@@ -171,6 +179,101 @@ final class SceneLoader {
             }
         }
         return new Result(nodes, instances, byId);
+    }
+
+    /** Turns pending nodes into drafts, depth-first (iterative: the depth is the file's to choose). */
+    private void walk(Deque<Pending> todo) throws ColladaException {
+        while (!todo.isEmpty()) {
+            Pending p = todo.pop();
+            if (drafts.size() >= MAX_NODES) {
+                throw ctx.error(p.element, "the scene would have more than " + MAX_NODES + " nodes");
+            }
+            Draft d = new Draft(p.element, drafts.size(), p.parent, p.chain != null);
+            drafts.add(d);
+            if (p.parent >= 0) {
+                drafts.get(p.parent).children.add(d.index);
+            }
+            index(byId, p.element.id(), d.index);
+            index(bySid, p.element.attr("sid"), d.index);
+            index(byName, p.element.attr("name"), d.index);
+            readTransforms(d);
+            pushChildren(todo, p.element, d.index, p.chain);
+        }
+    }
+
+    /**
+     * Nodes of {@code <library_nodes>} that a controller instance needs and the scene does not
+     * hold: with {@code skeletonRoots}, the nodes its {@code <skeleton>}s name; otherwise the
+     * outermost library node holding a skin joint that matches no node of the scene. Such a
+     * skeleton is instantiated once as a root of the scene: its nodes' own transforms place it
+     * (ColladaMaya writes skins this way; the CTS has two such files).
+     */
+    private List<XmlElement> libraryRoots(boolean skeletonRoots) {
+        List<XmlElement> roots = new ArrayList<>();
+        Set<XmlElement> seen = Collections.newSetFromMap(new IdentityHashMap<>());
+        for (int i = 0, n = drafts.size(); i < n; i++) {
+            for (XmlElement inst : drafts.get(i).meshInstances) {
+                if (!inst.name().equals("instance_controller")) {
+                    continue;
+                }
+                if (skeletonRoots) {
+                    for (XmlElement s : inst.children("skeleton")) {
+                        String id = fragment(s.text().trim());
+                        XmlElement target = byId.containsKey(id) ? null : ctx.byId(id);
+                        if (target != null && target.name().equals("node") && seen.add(target)) {
+                            ctx.warn(s, "skeleton root \"" + s.text().trim() + "\" lives in <library_nodes> and is"
+                                    + " placed nowhere in the scene; instantiated as a root of the scene");
+                            roots.add(target);
+                        }
+                    }
+                    continue;
+                }
+                Skin skin = skins.get(ctx.byId(fragment(String.valueOf(inst.attr("url")))));
+                if (skin == null) {
+                    continue;
+                }
+                for (String joint : skin.jointNames()) {
+                    if (byId.containsKey(joint) || (!skin.jointsAreIdrefs() && (bySid.containsKey(joint)
+                            || byName.containsKey(joint)))) {
+                        continue;
+                    }
+                    XmlElement root = libraryNodeRoot(joint, skin.jointsAreIdrefs());
+                    if (root != null && seen.add(root)) {
+                        ctx.warn(inst, "joint \"" + joint + "\" lives in <library_nodes> under node \""
+                                + (root.id() == null ? root.attr("name") : root.id())
+                                + "\", which is placed nowhere in the scene; that node is instantiated as a root of"
+                                + " the scene");
+                        roots.add(root);
+                    }
+                }
+            }
+        }
+        return roots;
+    }
+
+    /** The outermost {@code <library_nodes>} node holding a node with that id (or sid or name), or null. */
+    private XmlElement libraryNodeRoot(String joint, boolean idOnly) {
+        for (XmlElement library : ctx.root().children("library_nodes")) {
+            for (XmlElement top : library.children("node")) {
+                Deque<XmlElement> todo = new ArrayDeque<>();
+                todo.push(top);
+                while (!todo.isEmpty()) {
+                    XmlElement e = todo.pop();
+                    if (joint.equals(e.id()) || (!idOnly && (joint.equals(e.attr("sid"))
+                            || joint.equals(e.attr("name"))))) {
+                        return top;
+                    }
+                    for (XmlElement c : e.children("node")) {
+                        todo.push(c);
+                    }
+                }
+            }
+        }
+        return null;
+    }
+
+    private static String fragment(String ref) {
+        return ref.startsWith("#") ? ref.substring(1) : ref;
     }
 
     private XmlElement visualScene(XmlElement collada) throws ColladaException {
@@ -257,12 +360,11 @@ final class SceneLoader {
      * choose), saturating above the limit, and the first node found to exceed it is named.
      * Instance cycles show up here as an edge back to a node on the current path.
      */
-    private void checkExpandedSize(XmlElement visualScene) throws ColladaException {
-        Map<XmlElement, Long> sizes = new IdentityHashMap<>();
+    private long checkExpandedSize(List<XmlElement> tops, XmlElement scope, long total) throws ColladaException {
+        Map<XmlElement, Long> sizes = expandedSizes;
         Map<XmlElement, Boolean> onPath = new IdentityHashMap<>();
         Deque<SizeFrame> path = new ArrayDeque<>();
-        long total = 0;
-        for (XmlElement top : visualScene.children("node")) {
+        for (XmlElement top : tops) {
             path.push(sizeFrame(top, onPath));
             while (!path.isEmpty()) {
                 SizeFrame f = path.peek();
@@ -293,9 +395,10 @@ final class SceneLoader {
             }
             total += sizes.get(top);
             if (total > MAX_NODES) {
-                throw ctx.error(visualScene, "its nodes would expand to more than " + MAX_NODES + " nodes");
+                throw ctx.error(scope, "the scene's nodes would expand to more than " + MAX_NODES + " nodes");
             }
         }
+        return total;
     }
 
     private SizeFrame sizeFrame(XmlElement node, Map<XmlElement, Boolean> onPath) throws ColladaException {
@@ -351,35 +454,32 @@ final class SceneLoader {
     // ------------------------------------------------------------------------------- instances
 
     private MeshInstance instance(int node, XmlElement inst) throws ColladaException {
-        List<String> materials = new ArrayList<>();
-        XmlElement bind = inst.child("bind_material");
-        XmlElement common = bind == null ? null : bind.child("technique_common");
-        if (common != null) {
-            for (XmlElement m : common.children("instance_material")) {
-                String target = m.attr("target");
-                if (target != null) {
-                    materials.add(target.startsWith("#") ? target.substring(1) : target);
-                }
-            }
-        }
         if (inst.name().equals("instance_geometry")) {
             XmlElement geometry = ctx.resolve(inst, "url", "geometry");
             Mesh mesh = meshes.get(geometry);
             if (mesh == null) {
                 return null; // not a <mesh>; warned when the geometry was read
             }
-            return new MeshInstance(node, mesh, null, new int[0], new int[0], materials);
+            return new MeshInstance(node, mesh, null, new int[0], new int[0], bindings(inst, mesh));
         }
         XmlElement controller = ctx.resolve(inst, "url", "controller");
         Skin skin = skins.get(controller);
         if (skin == null) {
-            XmlElement morph = controller.child("morph");
-            if (morph != null) {
-                Mesh base = meshes.get(ctx.resolve(morph, "source", "geometry"));
-                ctx.warn(inst, "morph controller drawn as its base geometry (morphing is not supported)");
-                return base == null ? null : new MeshInstance(node, base, null, new int[0], new int[0], materials);
+            if (controller.child("morph") == null) {
+                throw ctx.error(inst, "url=\"" + inst.attr("url") + "\" is a controller without <skin> or <morph>");
             }
-            throw ctx.error(inst, "url=\"" + inst.attr("url") + "\" is a controller without <skin> or <morph>");
+            Morph morph = morphs.get(controller);
+            if (morph != null) {
+                return new MeshInstance(node, morph.result(), null, new int[0], new int[0],
+                        bindings(inst, morph.result()));
+            }
+            controller = skinUnderMorphs(controller);
+            if (controller == null) {
+                return null; // a morph of a geometry that is no mesh
+            }
+            skin = skins.get(controller);
+            ctx.warn(inst, "morph on skin controller \"" + controller.id() + "\": drawn as that skin, without the"
+                    + " morph (a morph after skinning is not supported)");
         }
         IntList roots = new IntList(2);
         for (XmlElement s : inst.children("skeleton")) {
@@ -422,7 +522,98 @@ final class SceneLoader {
             ctx.warn(inst, "some joints matched no " + (skin.jointsAreIdrefs() ? "id" : "sid")
                     + " under the <skeleton> roots and were found by id or name instead");
         }
-        return new MeshInstance(node, skin.mesh(), skin, joints, rootArray, materials);
+        return new MeshInstance(node, skin.mesh(), skin, joints, rootArray, bindings(inst, skin.mesh()));
+    }
+
+    /** The skin controller a chain of morphs ends in, or null when it ends in a geometry. */
+    private XmlElement skinUnderMorphs(XmlElement controller) throws ColladaException {
+        XmlElement c = controller;
+        for (int depth = 0; c.child("morph") != null; depth++) {
+            if (depth > MAX_INSTANCE_DEPTH) {
+                throw ctx.error(controller, "more than " + MAX_INSTANCE_DEPTH + " morphs on morphs");
+            }
+            XmlElement source = ctx.resolve(c.child("morph"), "source", "geometry", "controller");
+            if (source.name().equals("geometry")) {
+                return null;
+            }
+            c = source;
+        }
+        return c.child("skin") != null ? c : null;
+    }
+
+    /**
+     * The materials an instance binds ({@code <bind_material><technique_common><instance_material>}),
+     * and the texture coordinate set each one's {@link Material#baseTexture()} uses: the set its
+     * {@code <bind_vertex_input>} names for the texture's {@code texcoord}, else the first. A
+     * symbol of the mesh that nothing binds, or a binding to no material, is drawn with
+     * {@link Material#DEFAULT}, warned.
+     */
+    private List<MaterialBinding> bindings(XmlElement inst, Mesh mesh) {
+        List<MaterialBinding> result = new ArrayList<>();
+        XmlElement bind = inst.child("bind_material");
+        XmlElement common = bind == null ? null : bind.child("technique_common");
+        Set<String> bound = new HashSet<>();
+        if (common != null) {
+            for (XmlElement im : common.children("instance_material")) {
+                String symbol = im.attr("symbol");
+                if (symbol == null || !bound.add(symbol)) {
+                    continue;
+                }
+                Material material = material(im);
+                if (material == null) {
+                    continue;
+                }
+                result.add(new MaterialBinding(symbol, material, texCoordSet(im, material, mesh)));
+            }
+        }
+        Set<String> unbound = new LinkedHashSet<>();
+        for (MeshPart part : mesh.parts()) {
+            if (part.material() != null && !bound.contains(part.material())) {
+                unbound.add(part.material());
+            }
+        }
+        if (!unbound.isEmpty()) {
+            ctx.warn(inst, "material symbol" + (unbound.size() == 1 ? " " : "s ") + String.join(", ", unbound)
+                    + " of mesh \"" + mesh.id() + "\" bound to no material; drawn with the default material");
+        }
+        return result;
+    }
+
+    /** The material an {@code <instance_material>} names, or null with a warning. */
+    private Material material(XmlElement instanceMaterial) {
+        try {
+            return materials.get(ctx.resolve(instanceMaterial, "target", "material"));
+        } catch (ColladaException e) {
+            ctx.warn(instanceMaterial, e.problem() + "; drawn with the default material");
+            return null;
+        }
+    }
+
+    private int texCoordSet(XmlElement instanceMaterial, Material material, Mesh mesh) {
+        if (material.baseTexture() == null || mesh.texCoordSetCount() == 0) {
+            return -1;
+        }
+        String texcoord = material.baseTexture().texcoord();
+        for (XmlElement b : instanceMaterial.children("bind_vertex_input")) {
+            if (texcoord != null && texcoord.equals(b.attr("semantic"))
+                    && (b.attr("input_semantic") == null || "TEXCOORD".equals(b.attr("input_semantic")))) {
+                String set = b.attr("input_set");
+                int number;
+                try {
+                    number = set == null ? mesh.texCoordSetNumber(0) : Integer.parseInt(set.trim());
+                } catch (NumberFormatException e) {
+                    number = Integer.MIN_VALUE;
+                }
+                int index = mesh.texCoordSetIndex(number);
+                if (index < 0) {
+                    ctx.warn(b, "input_set=\"" + set + "\" is no texture coordinate set of mesh \"" + mesh.id()
+                            + "\"; the first set is used");
+                    return 0;
+                }
+                return index;
+            }
+        }
+        return 0;
     }
 
     /**

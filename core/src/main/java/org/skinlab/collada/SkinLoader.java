@@ -6,6 +6,7 @@ import java.util.Map;
 
 import org.joml.Matrix4f;
 import org.skinlab.model.Mesh;
+import org.skinlab.model.Morph;
 import org.skinlab.model.Skin;
 
 /**
@@ -14,8 +15,8 @@ import org.skinlab.model.Skin;
  * every position ({@code <vertex_weights>}), converting COLLADA's row-major matrices to
  * JOML's column-major order.
  *
- * <p>Lenient (with a warning): a skin on a {@code <morph>} uses the morph's base geometry (morph
- * targets are ignored); positions without influences; weight sums that differ from one; a
+ * <p>A skin on a {@code <morph>} deforms the morph's result (its targets applied with the file's
+ * weights). Lenient (with a warning): positions without influences; weight sums that differ from one; a
  * bottom matrix row other than (0 0 0 1), which is replaced by it. Refused: a
  * {@code <vertex_weights count>} other than the mesh's position count, joint and inverse bind
  * matrix counts that differ, and joint or weight indices out of range.
@@ -26,10 +27,12 @@ final class SkinLoader {
 
     private final ImportContext ctx;
     private final Map<XmlElement, Mesh> meshes;
+    private final Map<XmlElement, Morph> morphs;
 
-    SkinLoader(ImportContext ctx, Map<XmlElement, Mesh> meshesByGeometry) {
+    SkinLoader(ImportContext ctx, Map<XmlElement, Mesh> meshesByGeometry, Map<XmlElement, Morph> morphsByController) {
         this.ctx = ctx;
         this.meshes = meshesByGeometry;
+        this.morphs = morphsByController;
     }
 
     Skin load(XmlElement controller, XmlElement skin) throws ColladaException {
@@ -183,18 +186,16 @@ final class SkinLoader {
                 jointSource.isIdrefs(), inverseBinds, start, influenceJoints, influenceWeights);
     }
 
-    /** The mesh a skin deforms: its source geometry, or the base geometry of a morph. */
+    /** The mesh a skin deforms: its source geometry, or the result of a morph (with the file's weights). */
     private Mesh skinnedMesh(XmlElement skin) throws ColladaException {
         XmlElement target = ctx.resolve(skin, "source", "geometry", "controller");
         if (target.name().equals("controller")) {
-            XmlElement morph = target.child("morph");
+            Morph morph = morphs.get(target);
             if (morph == null) {
-                throw ctx.error(skin, "source=\"" + skin.attr("source") + "\" is a controller without <morph>;"
-                        + " a skin cannot deform another skin");
+                throw ctx.error(skin, "source=\"" + skin.attr("source") + "\" is a controller that is no morph of a"
+                        + " mesh; a skin cannot deform another skin");
             }
-            ctx.warn(skin, "deforms morph controller \"" + target.id() + "\"; its morph targets are ignored and"
-                    + " its base geometry is skinned");
-            target = ctx.resolve(morph, "source", "geometry");
+            return morph.result();
         }
         Mesh mesh = meshes.get(target);
         if (mesh == null) {

@@ -11,6 +11,7 @@ import java.util.List;
  */
 final class Source {
     final XmlElement element;
+    private final XmlElement array;
     private final float[] floats;
     private final int[] ints;
     private final String[] names;
@@ -19,10 +20,16 @@ final class Source {
     private final int stride;
     private final int offset;
     private final int[] components; // value offsets within one element, one per component
+    private final int nonFinite;    // NaN and infinite values in the array
+    private final String firstNonFinite; // the first of them: "value 3 \"NaN\"", or null
+    private final String nonFiniteReason; // why it is refused where data must be finite
+    private Source finite;          // this source with non-finite values as 0 (made on demand)
 
-    private Source(XmlElement element, float[] floats, int[] ints, String[] names, boolean idrefs, int count,
-            int stride, int offset, int[] components) {
+    private Source(XmlElement element, XmlElement array, float[] floats, int[] ints, String[] names, boolean idrefs,
+            int count, int stride, int offset, int[] components, int nonFinite, String firstNonFinite,
+            String nonFiniteReason) {
         this.element = element;
+        this.array = array;
         this.floats = floats;
         this.ints = ints;
         this.names = names;
@@ -31,33 +38,24 @@ final class Source {
         this.stride = stride;
         this.offset = offset;
         this.components = components;
+        this.nonFinite = nonFinite;
+        this.firstNonFinite = firstNonFinite;
+        this.nonFiniteReason = nonFiniteReason;
     }
 
     static Source parse(ImportContext ctx, XmlElement source) throws ColladaException {
-        XmlElement array = null;
+        XmlElement own = null;
         for (XmlElement c : source.children()) {
-            switch (c.name()) {
-                case "float_array":
-                case "int_array":
-                case "Name_array":
-                case "IDREF_array":
-                case "SIDREF_array":
-                case "bool_array":
-                    if (array == null) {
-                        array = c;
-                    }
-                    break;
-                default:
-                    break;
+            if (isArray(c)) {
+                own = c;
+                break;
             }
         }
         XmlElement technique = source.child("technique_common");
         XmlElement accessor = technique == null ? null : technique.child("accessor");
+        XmlElement array = own;
         if (accessor != null) {
-            // Usually the source's own array, but the specification lets an accessor read any
-            // array (several sources may share one); only arrays in this file are followed.
-            array = ctx.resolve(accessor, "source", "float_array", "int_array", "Name_array", "IDREF_array",
-                    "SIDREF_array", "bool_array");
+            array = accessorArray(ctx, accessor, own);
         }
         if (array == null) {
             throw ctx.error(source, "has no data array (float_array, int_array, Name_array or IDREF_array)");
@@ -67,27 +65,43 @@ final class Source {
         int[] ints = null;
         String[] names = null;
         int length;
+        int nonFinite = 0;
+        String firstNonFinite = null;
+        String nonFiniteReason = null;
         switch (array.name()) {
-            case "float_array":
-                floats = NumberParser.floats(ctx, array, declared);
+            case "float_array": {
+                NumberScanner n = NumberParser.scannedFloats(ctx, array);
+                floats = n.floats();
                 length = floats.length;
+                nonFinite = n.nonFiniteCount();
+                if (nonFinite > 0) {
+                    firstNonFinite = "value " + n.nonFiniteIndex() + " \"" + n.nonFiniteToken() + "\"";
+                    nonFiniteReason = n.nonFiniteReason();
+                }
                 break;
+            }
             case "int_array":
-                ints = NumberParser.ints(ctx, array, declared);
+                ints = NumberParser.ints(ctx, array, -1);
                 length = ints.length;
                 break;
             case "bool_array":
                 throw ctx.error(array, "a bool_array cannot feed geometry, skin or animation data");
             default:
-                names = NumberParser.names(ctx, array, declared);
+                names = NumberParser.names(ctx, array, -1);
                 length = names.length;
                 break;
+        }
+        if (declared >= 0 && declared != length) {
+            // Exporters get the count attribute wrong (the CTS has such files); the values present
+            // are what the accessor reads, and it is checked against them below.
+            ctx.warn(array, "count=\"" + declared + "\" but " + length + " values; the values present are read");
         }
         boolean idrefs = array.name().equals("IDREF_array");
 
         if (accessor == null) {
             ctx.warn(source, "no <technique_common><accessor>; every value read as one element");
-            return new Source(source, floats, ints, names, idrefs, length, 1, 0, new int[] {0});
+            return new Source(source, array, floats, ints, names, idrefs, length, 1, 0, new int[] {0}, nonFinite,
+                    firstNonFinite, nonFiniteReason);
         }
         int count = ctx.count(accessor, "count", -1);
         if (count < 0) {
@@ -98,11 +112,23 @@ final class Source {
         if (stride == 0) {
             throw ctx.error(accessor, "stride=\"0\"");
         }
+        List<XmlElement> params = accessor.children("param");
+        boolean anyNamed = false;
+        for (XmlElement param : params) {
+            anyNamed |= param.attr("name") != null;
+        }
+        if (!params.isEmpty() && !anyNamed) {
+            // The specification says an unnamed param skips its slot, which would leave nothing to
+            // read; FBX-COLLADA, Mixamo, Softimage and 3ds Max write such accessors for joint
+            // names and sampler inputs and outputs, meaning "the data".
+            ctx.warnOnce("unnamed-params", accessor, "no <param> of this accessor has a name (and maybe others);"
+                    + " their components are read as data");
+        }
         List<Integer> comps = new ArrayList<>();
         int slot = 0;
-        for (XmlElement param : accessor.children("param")) {
+        for (XmlElement param : params) {
             int width = paramWidth(param.attr("type"));
-            if (param.attr("name") != null) {
+            if (param.attr("name") != null || !anyNamed) {
                 for (int k = 0; k < width; k++) {
                     comps.add(slot + k);
                 }
@@ -112,21 +138,65 @@ final class Source {
         if (slot > stride) {
             throw ctx.error(accessor, "its params span " + slot + " values but stride=\"" + stride + "\"");
         }
-        if (accessor.children("param").isEmpty()) {
+        if (params.isEmpty()) {
             for (int k = 0; k < stride; k++) {
                 comps.add(k);
             }
         }
-        long needed = count == 0 ? 0 : (long) offset + (long) (count - 1) * stride + stride;
+        // Element i reads values offset + i * stride + c for its components c.
+        int span = 0;
+        for (int c : comps) {
+            span = Math.max(span, c + 1);
+        }
+        long needed = count == 0 ? 0 : (long) offset + (long) (count - 1) * stride + span;
         if (count > 0 && needed > length) {
-            throw ctx.error(accessor, "count=\"" + count + "\" stride=\"" + stride + "\" offset=\"" + offset
-                    + "\" reads " + needed + " values but the array has " + length);
+            // The count attribute promises more than the array holds (the CTS has such files): the
+            // whole elements present are read; an index past them is refused where it is used.
+            int present = length < (long) offset + span ? 0 : (length - offset - span) / stride + 1;
+            ctx.warn(accessor, "count=\"" + count + "\" stride=\"" + stride + "\" offset=\"" + offset + "\" needs "
+                    + needed + " values but the array has " + length + "; the " + present + " whole elements present"
+                    + " are read");
+            count = present;
         }
         int[] components = new int[comps.size()];
         for (int i = 0; i < components.length; i++) {
             components[i] = comps.get(i);
         }
-        return new Source(source, floats, ints, names, idrefs, count, stride, offset, components);
+        return new Source(source, array, floats, ints, names, idrefs, count, stride, offset, components, nonFinite,
+                firstNonFinite, nonFiniteReason);
+    }
+
+    private static boolean isArray(XmlElement e) {
+        switch (e.name()) {
+            case "float_array":
+            case "int_array":
+            case "Name_array":
+            case "IDREF_array":
+            case "SIDREF_array":
+            case "bool_array":
+                return true;
+            default:
+                return false;
+        }
+    }
+
+    /**
+     * The array an accessor reads: usually the source's own, but the specification lets it read
+     * any array of the file (several sources may share one). A reference that names nothing while
+     * the source holds an array of its own is a slip of the exporter (or hand edit: the CTS has
+     * one); that array is read, with a warning. References to other documents are refused.
+     */
+    private static XmlElement accessorArray(ImportContext ctx, XmlElement accessor, XmlElement own)
+            throws ColladaException {
+        String ref = ctx.attr(accessor, "source");
+        String id = ref.startsWith("#") ? ref.substring(1) : ref;
+        if (own != null && ctx.byId(id) == null && ref.indexOf('#') <= 0) {
+            ctx.warn(accessor, "source=\"" + ref + "\" refers to nothing in the file; its <source>'s own <"
+                    + own.name() + (own.id() == null ? "" : " id=\"" + own.id() + "\"") + "> is read");
+            return own;
+        }
+        return ctx.resolve(accessor, "source", "float_array", "int_array", "Name_array", "IDREF_array",
+                "SIDREF_array", "bool_array");
     }
 
     /** How many array values a param of this type spans. */
@@ -223,10 +293,42 @@ final class Source {
         return out;
     }
 
+    /** Refuses a source of names, and a source with NaN or infinite values. */
     void requireFloats(ImportContext ctx, XmlElement user, String what) throws ColladaException {
+        requireNumbers(ctx, user, what);
+        if (nonFinite > 0) {
+            throw ctx.error(array, firstNonFinite + " is " + nonFiniteReason + " (" + what + " data must be finite)");
+        }
+    }
+
+    private void requireNumbers(ImportContext ctx, XmlElement user, String what) throws ColladaException {
         if (floats == null && ints == null) {
             throw ctx.error(user, what + " source \"" + id() + "\" holds names, expected numbers");
         }
+    }
+
+    /**
+     * This source with NaN and infinite values read as 0, for data a mesh can do without
+     * (texture coordinates, colours, normals): the file's one broken UV set should not keep the
+     * character from loading. Warns once per source.
+     */
+    Source finiteOrZero(ImportContext ctx, XmlElement user, String what) throws ColladaException {
+        requireNumbers(ctx, user, what);
+        if (nonFinite == 0) {
+            return this;
+        }
+        if (finite == null) {
+            float[] clean = floats.clone();
+            for (int i = 0; i < clean.length; i++) {
+                if (!Float.isFinite(clean[i])) {
+                    clean[i] = 0f;
+                }
+            }
+            finite = new Source(element, array, clean, null, null, false, count, stride, offset, components, 0, null, null);
+            ctx.warn(array, nonFinite + " NaN or infinite values (first: " + firstNonFinite + ") in " + what
+                    + " source \"" + id() + "\"; read as 0");
+        }
+        return finite;
     }
 
     /**

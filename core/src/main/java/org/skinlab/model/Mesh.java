@@ -28,6 +28,7 @@ public final class Mesh {
     private final int[] vertexPositions;
     private final float[] normals;
     private final List<float[]> texCoordSets;
+    private final int[] texCoordSetNumbers;
     private final float[] colors;
     private final int[] triangles;
     private final List<MeshPart> parts;
@@ -44,6 +45,16 @@ public final class Mesh {
      */
     public Mesh(String id, String name, float[] positions, int[] vertexPositions, float[] normals,
             List<float[]> texCoordSets, float[] colors, int[] triangles, List<MeshPart> parts) {
+        this(id, name, positions, vertexPositions, normals, texCoordSets, null, colors, triangles, parts);
+    }
+
+    /**
+     * As above, with the file's {@code set} number of each texture coordinate set (ascending;
+     * null: 0, 1, 2, ...), which {@code <bind_vertex_input input_set>} refers to.
+     */
+    public Mesh(String id, String name, float[] positions, int[] vertexPositions, float[] normals,
+            List<float[]> texCoordSets, int[] texCoordSetNumbers, float[] colors, int[] triangles,
+            List<MeshPart> parts) {
         int vertexCount = vertexPositions.length;
         int positionCount = positions.length / 3;
         if (positions.length % 3 != 0) {
@@ -78,6 +89,20 @@ public final class Mesh {
             sets.add(t.clone());
         }
         this.texCoordSets = Collections.unmodifiableList(sets);
+        if (texCoordSetNumbers == null) {
+            texCoordSetNumbers = new int[sets.size()];
+            for (int i = 0; i < texCoordSetNumbers.length; i++) {
+                texCoordSetNumbers[i] = i;
+            }
+        } else if (texCoordSetNumbers.length != sets.size()) {
+            throw new IllegalArgumentException("need one set number per texture coordinate set");
+        }
+        for (int i = 1; i < texCoordSetNumbers.length; i++) {
+            if (texCoordSetNumbers[i] <= texCoordSetNumbers[i - 1]) {
+                throw new IllegalArgumentException("texture coordinate set numbers must ascend");
+            }
+        }
+        this.texCoordSetNumbers = texCoordSetNumbers.clone();
         this.colors = colors == null ? null : colors.clone();
         this.triangles = triangles.clone();
         this.parts = List.copyOf(parts);
@@ -166,6 +191,17 @@ public final class Mesh {
         return texCoordSets.size();
     }
 
+    /** The file's {@code set} number of texture coordinate set {@code index}. */
+    public int texCoordSetNumber(int index) {
+        return texCoordSetNumbers[index];
+    }
+
+    /** The index of the texture coordinate set the file numbers {@code setNumber}, or -1. */
+    public int texCoordSetIndex(int setNumber) {
+        int i = java.util.Arrays.binarySearch(texCoordSetNumbers, setNumber);
+        return i >= 0 ? i : -1;
+    }
+
     /** A copy of texture coordinate set {@code set} (in set order), 2 floats per vertex. */
     public float[] texCoords(int set) {
         return texCoordSets.get(set).clone();
@@ -193,6 +229,18 @@ public final class Mesh {
     /** The triangle runs, one per primitive element, in document order. */
     public List<MeshPart> parts() {
         return parts;
+    }
+
+    /**
+     * This mesh with other positions (same count) under another id and name: the topology,
+     * normals, colours and texture coordinates are shared as they are. A morph's result is made so.
+     */
+    public Mesh withPositions(String newId, String newName, float[] newPositions) {
+        if (newPositions.length != positions.length) {
+            throw new IllegalArgumentException("need " + positions.length / 3 + " positions");
+        }
+        return new Mesh(newId, newName, newPositions, vertexPositions, normals, texCoordSets, texCoordSetNumbers, colors,
+                triangles, parts);
     }
 
     @Override

@@ -17,17 +17,17 @@ public final class MeshInstance {
     private final Skin skin;
     private final int[] jointNodes;
     private final int[] skeletonRoots;
-    private final List<String> materials;
+    private final List<MaterialBinding> materials;
 
     /**
      * @param node          index of the node that holds the instance
      * @param skin          the skin for a controller instance, or null
      * @param jointNodes    per skin joint, the node index (empty when static)
      * @param skeletonRoots the {@code <skeleton>} root node indices, in file order
-     * @param materials     bound material ids, one per bind_material instance, in file order
+     * @param materials     the material bound to each symbol, in {@code <instance_material>} order
      */
     public MeshInstance(int node, Mesh mesh, Skin skin, int[] jointNodes, int[] skeletonRoots,
-            List<String> materials) {
+            List<MaterialBinding> materials) {
         if (skin != null && skin.mesh() != mesh) {
             throw new IllegalArgumentException("the skin deforms a different mesh");
         }
@@ -75,8 +75,22 @@ public final class MeshInstance {
         return skeletonRoots.clone();
     }
 
-    /** Material ids bound to the instance's symbols. */
-    public List<String> materials() {
+    /** The materials bound to the instance's symbols, in {@code <instance_material>} order. */
+    public List<MaterialBinding> materials() {
         return materials;
+    }
+
+    /**
+     * What the triangles of a {@link MeshPart} with this material symbol are drawn with: the
+     * bound material, or {@link Material#DEFAULT} (texture coordinate set -1) when the file binds
+     * none to it.
+     */
+    public MaterialBinding material(String symbol) {
+        for (MaterialBinding b : materials) {
+            if (b.symbol().equals(symbol)) {
+                return b;
+            }
+        }
+        return new MaterialBinding(symbol, Material.DEFAULT, -1);
     }
 }

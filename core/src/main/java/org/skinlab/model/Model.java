@@ -9,8 +9,11 @@ import java.util.Optional;
  *
  * <ul>
  * <li>{@link #meshes()}: one per {@code <geometry>} with a {@code <mesh>}, in document order,
- *     whether or not anything instantiates it;</li>
+ *     whether or not anything instantiates it, then one per morph ({@link Morph#result()});</li>
  * <li>{@link #skins()}: one per {@code <controller>} with a {@code <skin>};</li>
+ * <li>{@link #morphs()}: one per {@code <controller>} with a {@code <morph>} of a mesh;</li>
+ * <li>{@link #materials()}: one per {@code <material>}, and {@link #images()}, those their
+ *     textures use;</li>
  * <li>{@link #nodes()}: the instantiated visual scene, depth-first;</li>
  * <li>{@link #instances()}: meshes placed in that scene, static or skinned;</li>
  * <li>{@link #clips()}: animation clips whose channels target scene nodes;</li>
@@ -22,13 +25,23 @@ public final class Model {
     private final AssetInfo asset;
     private final List<Mesh> meshes;
     private final List<Skin> skins;
+    private final List<Morph> morphs;
+    private final List<Material> materials;
+    private final List<Image> images;
     private final List<Node> nodes;
     private final List<MeshInstance> instances;
     private final List<AnimationClip> clips;
     private final List<ImportWarning> warnings;
 
+    /** A model without morphs, materials and images. */
     public Model(String source, AssetInfo asset, List<Mesh> meshes, List<Skin> skins, List<Node> nodes,
             List<MeshInstance> instances, List<AnimationClip> clips, List<ImportWarning> warnings) {
+        this(source, asset, meshes, skins, List.of(), List.of(), List.of(), nodes, instances, clips, warnings);
+    }
+
+    public Model(String source, AssetInfo asset, List<Mesh> meshes, List<Skin> skins, List<Morph> morphs,
+            List<Material> materials, List<Image> images, List<Node> nodes, List<MeshInstance> instances,
+            List<AnimationClip> clips, List<ImportWarning> warnings) {
         for (int i = 0; i < nodes.size(); i++) {
             if (nodes.get(i).index() != i) {
                 throw new IllegalArgumentException("node " + i + " has index " + nodes.get(i).index());
@@ -38,6 +51,9 @@ public final class Model {
         this.asset = asset;
         this.meshes = List.copyOf(meshes);
         this.skins = List.copyOf(skins);
+        this.morphs = List.copyOf(morphs);
+        this.materials = List.copyOf(materials);
+        this.images = List.copyOf(images);
         this.nodes = List.copyOf(nodes);
         this.instances = List.copyOf(instances);
         this.clips = List.copyOf(clips);
@@ -59,6 +75,18 @@ public final class Model {
 
     public List<Skin> skins() {
         return skins;
+    }
+
+    public List<Morph> morphs() {
+        return morphs;
+    }
+
+    public List<Material> materials() {
+        return materials;
+    }
+
+    public List<Image> images() {
+        return images;
     }
 
     public List<Node> nodes() {
@@ -89,6 +117,11 @@ public final class Model {
     /** The first skin that deforms the given mesh. */
     public Optional<Skin> skinOf(Mesh mesh) {
         return skins.stream().filter(s -> s.mesh() == mesh).findFirst();
+    }
+
+    /** The first instance that draws the given mesh (scene order). */
+    public Optional<MeshInstance> instanceOf(Mesh mesh) {
+        return instances.stream().filter(i -> i.mesh() == mesh).findFirst();
     }
 
     /** The clip with the given name. */

@@ -49,6 +49,15 @@ public final class Fixtures {
     }
 
 
+    /** The text of {@code src/test/resources/fixtures/<name>} (UTF-8), for tests that change it. */
+    public static String text(String name) {
+        try (InputStream in = open(name)) {
+            return new String(in.readAllBytes(), StandardCharsets.UTF_8);
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+
     private static InputStream open(String name) {
         InputStream in = Fixtures.class.getResourceAsStream("/fixtures/" + name);
         if (in == null) {

@@ -171,7 +171,7 @@ class NumberParserTest {
     @Test
     void nonFiniteAndMalformedFloatsAreRefusedNamingTheValue() {
         String[] bad = {"NaN", "nan", "inf", "-Infinity", "1.#QNAN", "-1.#IND", "1e", "1e+", ".", "-", "+", "e5",
-            "1.5.2", "1,5", "0x10", "1f", "1d", "1e39", "-3.5e38", "1\u00A02"};
+            "1.5.2", "1,5,2", "5,", "1.5,2", "0x10", "1f", "1d", "1e39", "-3.5e38", "1\u00A02"};
         for (String s : bad) {
             ColladaException e = floatError("0 " + s + " 1");
             String m = e.getMessage();

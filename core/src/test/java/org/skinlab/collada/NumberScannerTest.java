@@ -2,6 +2,7 @@ package org.skinlab.collada;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.Random;
 
@@ -109,14 +110,51 @@ class NumberScannerTest {
     @Test
     void aBadTokenSplitAcrossChunksIsReportedWhole() {
         Random random = new Random(SEED + 2);
-        String text = "1 2 3 1.#QNAN 5 NaN 7";
+        String text = "1 2 3 1.#QNAN 5 NaN 7 1.2.3 9";
         for (int round = 0; round < 500; round++) {
             NumberScanner split = chunked(text, true, random, 1 + random.nextInt(6));
-            assertEquals(7, split.size());
-            assertEquals(3, split.badIndex());
-            assertEquals("1.#QNAN", split.badToken());
-            assertEquals("not a finite number", split.badReason());
+            assertEquals(9, split.size());
+            assertEquals(3, split.nonFiniteIndex());
+            assertEquals("1.#QNAN", split.nonFiniteToken());
+            assertEquals("not a finite number", split.nonFiniteReason());
+            assertEquals(2, split.nonFiniteCount());
+            assertTrue(Float.isNaN(split.floats()[3]) && Float.isNaN(split.floats()[5]));
+            assertEquals(7, split.badIndex());
+            assertEquals("1.2.3", split.badToken());
+            assertEquals("not a number", split.badReason());
         }
+    }
+
+    @Test
+    void decimalCommasAreReadAsPointsSplitOrNot() {
+        Random random = new Random(SEED + 4);
+        String text = "0,5 -1,25 3 1,5e2 7.5";
+        for (int round = 0; round < 500; round++) {
+            NumberScanner split = chunked(text, true, random, 1 + random.nextInt(6));
+            assertArrayEquals(new float[] {0.5f, -1.25f, 3f, 150f, 7.5f}, split.floats());
+            assertEquals(3, split.decimalCommas());
+            assertEquals(-1, split.badIndex());
+        }
+        // Long mantissas take the exact path, which must read the comma too.
+        NumberScanner exact = NumberScanner.scan("0,1000000000000000055511151231257827", true);
+        assertEquals(0.1f, exact.floats()[0]);
+        // In integer lists a comma is no decimal separator.
+        assertEquals(0, NumberScanner.scan("1,5", false).badIndex());
+    }
+
+    @Test
+    void nonFiniteSpellingsBecomeValuesAndAreCountedApartFromBadTokens() {
+        NumberScanner n = NumberScanner.scan("NaN -INF inf Infinity -1.#IND 1.#INF00 1e39 nanx", true);
+        float[] f = n.floats();
+        assertTrue(Float.isNaN(f[0]));
+        assertEquals(Float.NEGATIVE_INFINITY, f[1]);
+        assertEquals(Float.POSITIVE_INFINITY, f[2]);
+        assertEquals(Float.POSITIVE_INFINITY, f[3]);
+        assertTrue(Float.isNaN(f[4]));
+        assertEquals(Float.POSITIVE_INFINITY, f[5]);
+        assertEquals(Float.POSITIVE_INFINITY, f[6]);
+        assertEquals(7, n.nonFiniteCount());
+        assertEquals(7, n.badIndex(), "nanx is no spelling of NaN");
     }
 
     @Test

@@ -131,14 +131,18 @@ class CorpusLbsConformanceTest {
     /**
      * The importer's own fixtures (hand-written files for IDREF joints, instance_node, several
      * skins, seven influences, member targets like {@code rotationZ.ANGLE}...): every file with a
-     * placed mesh, at its key times, or at rest when it has no animation.
+     * placed mesh, at its key times, or at rest when it has no animation. Not {@code quirks/}: those
+     * files bend the specification on purpose (decimal commas, unnamed params, morphs...), which
+     * the evaluator, reading COLLADA as written, does not; ExporterQuirksTest and its neighbours
+     * check them value by value.
      */
     @Test
     void importerFixturesAgreeWithTheIndependentEvaluator() throws Exception {
         Path folder = TestPaths.root().resolve("core/src/test/resources/fixtures");
         List<Path> files;
         try (Stream<Path> s = Files.walk(folder)) {
-            files = s.filter(p -> p.toString().endsWith(".dae")).sorted().collect(Collectors.toList());
+            files = s.filter(p -> p.toString().endsWith(".dae") && !folder.relativize(p).startsWith("quirks"))
+                    .sorted().collect(Collectors.toList());
         }
         List<Row> rows = new ArrayList<>();
         for (Path file : files) {
