@@ -1,7 +1,9 @@
 package org.skinlab.desktop.cli;
 
 import java.io.PrintWriter;
+import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
 import java.util.concurrent.Callable;
@@ -11,12 +13,14 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
+import org.skinlab.collada.ColladaImporter;
 import org.skinlab.model.AnimationClip;
 import org.skinlab.model.ImportWarning;
 import org.skinlab.model.Mesh;
 import org.skinlab.model.Model;
 import org.skinlab.model.Skin;
 
+import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -37,12 +41,13 @@ import picocli.CommandLine.Model.CommandSpec;
  * skin on the geometry (0 when it has none).
  */
 @Command(name = "inspect", mixinStandardHelpOptions = true,
-        description = "Import a COLLADA file and summarise its meshes, skins, clips and warnings.")
+        description = "Import COLLADA files and summarise their meshes, skins, clips and warnings.")
 public final class InspectCommand implements Callable<Integer> {
-    @Parameters(index = "0", paramLabel = "FILE", description = "the .dae file")
-    Path file;
+    @Parameters(arity = "1..*", paramLabel = "FILE",
+            description = "COLLADA files, or folders searched recursively for .dae files")
+    List<Path> files;
 
-    @Option(names = "--json", description = "print the summary as one line of JSON")
+    @Option(names = "--json", description = "print each summary as one line of JSON (JSON Lines for several files)")
     boolean json;
 
     @Spec
@@ -50,6 +55,16 @@ public final class InspectCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws JsonProcessingException {
+        if (files.size() == 1 && !Files.isDirectory(files.get(0))) {
+            return single(files.get(0));
+        }
+        List<ColladaFileSearch.Entry> entries = ColladaFileSearch.expand(files);
+        CommandLine cl = spec.commandLine();
+        return new InspectBatch(json, cl.getOut(), cl.getErr(), ColladaImporter::read).run(entries);
+    }
+
+    /** One file, as before batches existed: a refused file is a {@link CommandFailure} (one line on stderr). */
+    private int single(Path file) throws JsonProcessingException {
         ModelFiles.Loaded loaded = ModelFiles.load(file);
         PrintWriter out = spec.commandLine().getOut();
         if (json) {
