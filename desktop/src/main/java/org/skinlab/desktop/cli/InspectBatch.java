@@ -33,6 +33,7 @@ final class InspectBatch {
     private int loaded;
     private int refused;
     private int internal;
+    private int unlisted;
 
     InspectBatch(boolean json, PrintWriter out, PrintWriter err, Reader reader) {
         this.json = json;
@@ -41,7 +42,10 @@ final class InspectBatch {
         this.reader = reader;
     }
 
-    /** Inspects every entry in order and returns the exit status: 1 if any internal error, else 3 if any refusal. */
+    /**
+     * Inspects every entry in order and returns the exit status: 1 if any internal error, else 3
+     * if any file was refused or could not be read or any folder could not be listed, else 0.
+     */
     int run(List<ColladaFileSearch.Entry> entries) {
         for (ColladaFileSearch.Entry entry : entries) {
             inspect(entry);
@@ -49,17 +53,24 @@ final class InspectBatch {
         if (!json) {
             int n = loaded + refused + internal;
             err.println(n + (n == 1 ? " file: " : " files: ") + loaded + " loaded, " + refused + " refused"
-                    + (internal == 0 ? "" : ", " + internal + (internal == 1 ? " internal error" : " internal errors")));
+                    + (internal == 0 ? "" : ", " + internal + (internal == 1 ? " internal error" : " internal errors"))
+                    + (unlisted == 0 ? "" : "; " + unlisted + (unlisted == 1 ? " folder" : " folders") + " could not be listed"));
             err.flush();
         }
-        return internal > 0 ? ExitCodes.INTERNAL : refused > 0 ? ExitCodes.INVALID_FILE : ExitCodes.OK;
+        return internal > 0 ? ExitCodes.INTERNAL : refused + unlisted > 0 ? ExitCodes.INVALID_FILE : ExitCodes.OK;
     }
 
     private void inspect(ColladaFileSearch.Entry entry) {
         Path path = entry.path();
         String name = path.getFileName() == null ? path.toString() : path.getFileName().toString();
         try {
-            String unusable = entry.problem() != null ? entry.problem() : notAFile(path);
+            if (entry.problem() != null) {
+                // A folder that could not be listed: not a file, so not in the file count.
+                unlisted++;
+                report(entry, name + ": " + entry.problem(), entry.problem());
+                return;
+            }
+            String unusable = notAFile(path);
             if (unusable != null) {
                 refuse(entry, name + ": " + unusable, unusable);
                 return;
