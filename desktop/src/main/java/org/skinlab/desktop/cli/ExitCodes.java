@@ -9,6 +9,9 @@ package org.skinlab.desktop.cli;
  * <li>2: usage error (unknown option, missing argument, a path that does not exist)</li>
  * <li>3: the file could not be imported (malformed, refused or inconsistent COLLADA, or unreadable)</li>
  * </ul>
+ * A command over several files ({@code inspect FILE...}) goes on after a file fails and returns
+ * the most serious status at the end: 1 if any file hit an internal error, else 3 if any file
+ * was refused; 2 only before anything was read.
  */
 public final class ExitCodes {
     public static final int OK = 0;

@@ -1,7 +1,9 @@
 package org.skinlab.desktop.cli;
 
 import java.io.PrintWriter;
+import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
 import java.util.concurrent.Callable;
@@ -11,12 +13,14 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
+import org.skinlab.collada.ColladaImporter;
 import org.skinlab.model.AnimationClip;
 import org.skinlab.model.ImportWarning;
 import org.skinlab.model.Mesh;
 import org.skinlab.model.Model;
 import org.skinlab.model.Skin;
 
+import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -24,7 +28,7 @@ import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
 
 /**
- * {@code skinlab inspect FILE [--json]}: what the importer read. The JSON form is a contract:
+ * {@code skinlab inspect FILE... [--json]}: what the importer read. The JSON form is a contract:
  * <pre>
  * {"file":..., "upAxis":"Z_UP", "unitMeter":1.0,
  *  "meshes":[{"geometry":ID, "name":NAME, "positions":N, "triangles":N, "skinned":true,
@@ -35,14 +39,41 @@ import picocli.CommandLine.Model.CommandSpec;
  * {@code <vertices>} POSITION source and {@code triangles} the triangles after fan
  * triangulation (lines not counted). {@code joints} and {@code maxInfluences} come from the first
  * skin on the geometry (0 when it has none).
+ *
+ * <p><b>One FILE</b> (not a folder): that summary, as text or as one line of JSON; a file that
+ * cannot be imported is one line on stderr and status 3, a missing file status 2.
+ *
+ * <p><b>Several FILEs, or a folder</b> (a batch): each argument in the order given; a folder is
+ * searched recursively for {@code *.dae} (any case), its files sorted by their path inside it
+ * name by name, links to folders inside it not followed (see {@link ColladaFileSearch}). A file
+ * named as an argument is read whatever its extension. Files are read one after another, never
+ * all held at once. The {@code "file"} value, loaded or not, is the argument as given joined with
+ * the path inside a folder argument ({@code models/a/walk.dae} for {@code inspect models/}).
+ * <ul>
+ * <li>{@code --json}: JSON Lines on stdout, one line per file in order: the object above for a
+ * loaded file, and {@code {"file":PATH, "error":MESSAGE}} (exactly these two keys) for a file
+ * that is refused (the {@code ColladaException} message, one line), cannot be read, is not a
+ * regular file (a pipe or a broken link is never opened), for a folder that cannot be listed, or
+ * for a file that hit a bug or the memory limit. Nothing on stderr.</li>
+ * <li>text: the summaries one after another on stdout; each problem one line on stderr,
+ * {@code skinlab: PATH: MESSAGE}; last, a tally on stderr: {@code N files: L loaded, R refused}
+ * (then {@code , E internal errors} and {@code ; F folders could not be listed} when there are
+ * any).</li>
+ * </ul>
+ * Before anything is read, an argument that names nothing to inspect (a path that does not exist,
+ * or a folder with no {@code .dae} file below it) is a usage error: one line on stderr naming every
+ * such argument, nothing on stdout, status 2. Otherwise the status is 1 if any file hit a bug or
+ * the memory limit (it wins: a bug must not hide behind a refusal), else 3 if any file was refused
+ * or unreadable or any folder could not be listed, else 0.
  */
 @Command(name = "inspect", mixinStandardHelpOptions = true,
-        description = "Import a COLLADA file and summarise its meshes, skins, clips and warnings.")
+        description = "Import COLLADA files and summarise their meshes, skins, clips and warnings.")
 public final class InspectCommand implements Callable<Integer> {
-    @Parameters(index = "0", paramLabel = "FILE", description = "the .dae file")
-    Path file;
+    @Parameters(arity = "1..*", paramLabel = "FILE",
+            description = "COLLADA files, or folders searched recursively for .dae files")
+    List<Path> files;
 
-    @Option(names = "--json", description = "print the summary as one line of JSON")
+    @Option(names = "--json", description = "print each summary as one line of JSON (JSON Lines for several files)")
     boolean json;
 
     @Spec
@@ -50,6 +81,16 @@ public final class InspectCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws JsonProcessingException {
+        if (files.size() == 1 && !Files.isDirectory(files.get(0))) {
+            return single(files.get(0));
+        }
+        List<ColladaFileSearch.Entry> entries = ColladaFileSearch.expand(files);
+        CommandLine cl = spec.commandLine();
+        return new InspectBatch(json, cl.getOut(), cl.getErr(), ColladaImporter::read).run(entries);
+    }
+
+    /** One file, as before batches existed: a refused file is a {@link CommandFailure} (one line on stderr). */
+    private int single(Path file) throws JsonProcessingException {
         ModelFiles.Loaded loaded = ModelFiles.load(file);
         PrintWriter out = spec.commandLine().getOut();
         if (json) {

@@ -1,5 +1,7 @@
 package org.skinlab.desktop.cli;
 
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
 import java.io.PrintWriter;
 import java.io.StringWriter;
 import java.nio.file.Files;
@@ -56,6 +58,23 @@ final class Cli {
             }
         }
         throw new IllegalStateException("cannot find the repository root from " + Path.of("").toAbsolutePath());
+    }
+
+    /** The shared folder beside the repository: the build passes {@code skinlab.shared}. */
+    static Path shared() {
+        String p = System.getProperty("skinlab.shared");
+        return p != null ? Path.of(p) : root().resolve("../shared").normalize();
+    }
+
+    /**
+     * The third-party corpus folder; aborts the calling test (reported as skipped, with the
+     * reason) when it is absent.
+     */
+    static Path corpusOrSkip() {
+        Path corpus = shared().resolve("corpus");
+        assumeTrue(Files.isDirectory(corpus), () -> "shared corpus not found at " + corpus
+                + ": third-party corpus test skipped");
+        return corpus;
     }
 
     /** The default asset, as an absolute path. */

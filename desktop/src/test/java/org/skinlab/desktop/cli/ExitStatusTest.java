@@ -17,7 +17,7 @@ import org.junit.jupiter.api.io.TempDir;
  */
 class ExitStatusTest {
     /** A triangle whose third corner is position 3 of 0..2 (value 2 of its <p>). */
-    private static final String BROKEN = """
+    static final String BROKEN = """
             <?xml version="1.0" encoding="utf-8"?>
             <COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">
               <library_geometries>
@@ -108,10 +108,20 @@ class ExitStatusTest {
     }
 
     @Test
-    void directoryIsAUsageError() {
-        Cli r = Cli.run("inspect", dir.toString());
+    void directoryIsAUsageErrorForPose() {
+        Cli r = Cli.run("pose", dir.toString(), "--time", "0", "--method", "lbs");
         assertEquals(2, r.status, r::toString);
         assertEquals("skinlab: " + dir + " is a directory, not a COLLADA file", r.errLines()[0]);
+    }
+
+    /** {@code inspect} searches a folder (InspectBatchTest); one without a .dae file names nothing to inspect. */
+    @Test
+    void folderWithoutDaeFilesIsAUsageErrorForInspect() {
+        Cli r = Cli.run("inspect", dir.toString());
+        assertEquals(2, r.status, r::toString);
+        assertEquals("", r.out, r::toString);
+        assertEquals(1, r.errLines().length, r::toString);
+        assertEquals("skinlab: no .dae file in folder " + dir, r.errLines()[0]);
     }
 
     @Test
