@@ -3,9 +3,12 @@ package org.skinlab.desktop.cli;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
+import java.util.Set;
 import java.util.concurrent.Callable;
 
 import com.fasterxml.jackson.core.JsonProcessingException;
@@ -16,9 +19,14 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 import org.skinlab.collada.ColladaImporter;
 import org.skinlab.model.AnimationClip;
 import org.skinlab.model.ImportWarning;
+import org.skinlab.model.Material;
+import org.skinlab.model.MaterialBinding;
 import org.skinlab.model.Mesh;
+import org.skinlab.model.MeshInstance;
+import org.skinlab.model.MeshPart;
 import org.skinlab.model.Model;
 import org.skinlab.model.Skin;
+import org.skinlab.model.Texture;
 
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
@@ -32,13 +40,20 @@ import picocli.CommandLine.Model.CommandSpec;
  * <pre>
  * {"file":..., "upAxis":"Z_UP", "unitMeter":1.0,
  *  "meshes":[{"geometry":ID, "name":NAME, "positions":N, "triangles":N, "skinned":true,
- *             "joints":N, "maxInfluences":N}],
+ *             "joints":N, "maxInfluences":N,
+ *             "materials":[{"symbol":S, "name":NAME, "diffuse":[r,g,b,a], "texture":PATH}]}],
  *  "clips":[{"name":..., "duration":S, "channels":N}], "warnings":[...], "loadMillis":X}
  * </pre>
- * One mesh entry per {@code <geometry>} with a mesh; {@code positions} counts the entries of its
+ * One mesh entry per {@code <geometry>} with a mesh, then one per morph controller (its result:
+ * {@code geometry} is the controller's id); {@code positions} counts the entries of its
  * {@code <vertices>} POSITION source and {@code triangles} the triangles after fan
  * triangulation (lines not counted). {@code joints} and {@code maxInfluences} come from the first
- * skin on the geometry (0 when it has none).
+ * skin on the geometry (0 when it has none). {@code materials}: one entry per material symbol of
+ * the mesh's primitives (first use first), bound through the first instance that draws the mesh:
+ * the material's name, its diffuse colour (RGBA, or null: a texture, constant shading, or none)
+ * and the file of the texture it shows ({@code Material.baseTexture()}: the diffuse texture, or
+ * the emission texture of constant shading; null when none or not a file); name, diffuse and
+ * texture are null for a symbol nothing binds.
  *
  * <p><b>One FILE</b> (not a folder): that summary, as text or as one line of JSON; a file that
  * cannot be imported is one line on stderr and status 3, a missing file status 2.
@@ -120,6 +135,24 @@ public final class InspectCommand implements Callable<Integer> {
             m.put("skinned", skin.isPresent());
             m.put("joints", skin.map(Skin::jointCount).orElse(0));
             m.put("maxInfluences", skin.map(Skin::maxInfluences).orElse(0));
+            ArrayNode materials = m.putArray("materials");
+            for (MaterialBinding b : bindings(model, mesh)) {
+                ObjectNode entry = materials.addObject();
+                entry.put("symbol", b.symbol());
+                boolean bound = b.material() != Material.DEFAULT;
+                entry.put("name", bound ? b.material().name() : null);
+                float[] diffuse = bound ? b.material().diffuse() : null;
+                if (diffuse == null) {
+                    entry.putNull("diffuse");
+                } else {
+                    ArrayNode rgba = entry.putArray("diffuse");
+                    for (float f : diffuse) {
+                        rgba.add(shortest(f));
+                    }
+                }
+                Path texture = bound ? textureFile(b.material()) : null;
+                entry.put("texture", texture == null ? null : texture.toString());
+            }
         }
         ArrayNode clips = root.putArray("clips");
         for (AnimationClip clip : model.clips()) {
@@ -134,6 +167,30 @@ public final class InspectCommand implements Callable<Integer> {
         }
         root.put("loadMillis", Math.round(loadMillis * 1000.0) / 1000.0);
         return root;
+    }
+
+    /**
+     * The material of each symbol of the mesh's primitives (first use first), bound through the
+     * first instance that draws it; {@link Material#DEFAULT} for a symbol nothing binds.
+     */
+    static List<MaterialBinding> bindings(Model model, Mesh mesh) {
+        Optional<MeshInstance> instance = model.instanceOf(mesh);
+        Set<String> symbols = new LinkedHashSet<>();
+        for (MeshPart part : mesh.parts()) {
+            if (part.material() != null) {
+                symbols.add(part.material());
+            }
+        }
+        List<MaterialBinding> result = new ArrayList<>();
+        for (String symbol : symbols) {
+            result.add(instance.map(i -> i.material(symbol)).orElse(new MaterialBinding(symbol, Material.DEFAULT, -1)));
+        }
+        return result;
+    }
+
+    private static Path textureFile(Material material) {
+        Texture t = material.baseTexture();
+        return t == null ? null : t.image().file();
     }
 
     /** The human-readable summary. */
@@ -152,6 +209,9 @@ public final class InspectCommand implements Callable<Integer> {
                     mesh.positionCount(), mesh.triangleCount(),
                     skin.map(s -> "skinned: " + s.jointCount() + " joints, up to " + s.maxInfluences()
                             + " influences per position").orElse("static")));
+            for (MaterialBinding b : bindings(model, mesh)) {
+                sb.append("      material ").append(b.symbol()).append(": ").append(describe(b.material())).append('\n');
+            }
         }
         sb.append("  clips:    ").append(model.clips().size()).append('\n');
         for (AnimationClip clip : model.clips()) {
@@ -161,6 +221,24 @@ public final class InspectCommand implements Callable<Integer> {
         sb.append("  warnings: ").append(model.warnings().size()).append('\n');
         for (ImportWarning w : model.warnings()) {
             sb.append("    ").append(w).append('\n');
+        }
+        return sb.toString();
+    }
+
+    private static String describe(Material m) {
+        if (m == Material.DEFAULT) {
+            return "none bound (drawn with a default grey)";
+        }
+        StringBuilder sb = new StringBuilder(m.name()).append(", ").append(m.shading().name().toLowerCase(Locale.ROOT));
+        Texture t = m.baseTexture();
+        if (t != null) {
+            sb.append(", texture ").append(t.image().file() != null ? t.image().file() : t.image().uri() + " (not a file)");
+        } else if (m.diffuse() != null) {
+            float[] c = m.diffuse();
+            sb.append(String.format(Locale.ROOT, ", diffuse %.3g %.3g %.3g %.3g", c[0], c[1], c[2], c[3]));
+        }
+        if (m.opacity() < 1f) {
+            sb.append(String.format(Locale.ROOT, ", opacity %.3g", m.opacity()));
         }
         return sb.toString();
     }

@@ -14,7 +14,8 @@ import org.junit.jupiter.api.Test;
  * {@code skinlab inspect} on the default asset. The JSON form is a contract other tools parse, so
  * the exact keys and their order are checked, with the values assets/README.md states for
  * humanoid-walk.dae (951 positions, 1896 triangles, 19 joints, at most 4 influences, one
- * one-second walk; 20 channels: one per joint and one for the armature node).
+ * one-second walk; 20 channels: one per joint and one for the armature node; one Lambert material
+ * of diffuse colour 0.45 0.6 0.8).
  */
 class InspectCommandTest {
     @Test
@@ -35,8 +36,8 @@ class InspectCommandTest {
 
         assertEquals(1, root.get("meshes").size());
         JsonNode mesh = root.get("meshes").get(0);
-        assertEquals(List.of("geometry", "name", "positions", "triangles", "skinned", "joints", "maxInfluences"),
-                Cli.keys(mesh));
+        assertEquals(List.of("geometry", "name", "positions", "triangles", "skinned", "joints", "maxInfluences",
+                "materials"), Cli.keys(mesh));
         assertEquals("Humanoid-mesh", mesh.get("geometry").asText());
         assertEquals("Humanoid", mesh.get("name").asText());
         assertEquals(951, mesh.get("positions").intValue());
@@ -45,6 +46,13 @@ class InspectCommandTest {
         assertTrue(mesh.get("skinned").booleanValue());
         assertEquals(19, mesh.get("joints").intValue());
         assertEquals(4, mesh.get("maxInfluences").intValue());
+        assertEquals(1, mesh.get("materials").size());
+        JsonNode material = mesh.get("materials").get(0);
+        assertEquals(List.of("symbol", "name", "diffuse", "texture"), Cli.keys(material));
+        assertEquals("BodyMaterial-material", material.get("symbol").asText());
+        assertEquals("BodyMaterial", material.get("name").asText());
+        assertEquals("[0.45,0.6,0.8,1.0]", material.get("diffuse").toString());
+        assertTrue(material.get("texture").isNull());
 
         assertEquals(1, root.get("clips").size());
         JsonNode clip = root.get("clips").get(0);
@@ -66,15 +74,40 @@ class InspectCommandTest {
         assertEquals(ExitCodes.OK, r.status, r::toString);
         assertEquals("", r.err, r::toString);
         String[] lines = r.out.split("\n");
-        assertEquals(8, lines.length, r::toString);
+        assertEquals(9, lines.length, r::toString);
         assertEquals(file, lines[0]);
         assertTrue(lines[1].startsWith("  frame:    Z_UP, 1 unit = 1 m, written by Blender"), lines[1]);
         assertTrue(lines[2].matches("  loaded in \\d+\\.\\d ms"), lines[2]);
         assertEquals("  meshes:   1", lines[3]);
         assertTrue(lines[4].matches("    Humanoid-mesh \\(Humanoid\\) +951 positions +1896 triangles  "
                 + "skinned: 19 joints, up to 4 influences per position"), lines[4]);
-        assertEquals("  clips:    1", lines[5]);
-        assertTrue(lines[6].matches("    default +1\\.000 s +20 channels"), lines[6]);
-        assertEquals("  warnings: 0", lines[7]);
+        assertEquals("      material BodyMaterial-material: BodyMaterial, lambert, diffuse 0.450 0.600 0.800 1.00",
+                lines[5]);
+        assertEquals("  clips:    1", lines[6]);
+        assertTrue(lines[7].matches("    default +1\\.000 s +20 channels"), lines[7]);
+        assertEquals("  warnings: 0", lines[8]);
+    }
+
+    @Test
+    void materialsNameTheTextureFileResolvedAgainstTheDocumentsFolder() throws Exception {
+        // The importer's material fixture: textures through every route, symbols bound and not.
+        java.nio.file.Path file = Cli.root().resolve("core/src/test/resources/fixtures/materials/textured.dae");
+        Cli r = Cli.run("inspect", "--json", file.toString());
+        assertEquals(ExitCodes.OK, r.status, r::toString);
+        JsonNode materials = new ObjectMapper().readTree(r.out).get("meshes").get(0).get("materials");
+        assertEquals(10, materials.size());
+        JsonNode skin = materials.get(0);
+        assertEquals("skin", skin.get("symbol").asText());
+        assertEquals("Skin", skin.get("name").asText());
+        assertTrue(skin.get("diffuse").isNull());
+        assertEquals(file.toAbsolutePath().getParent().resolve("skin.png").toString(), skin.get("texture").asText());
+        JsonNode glass = materials.get(3);
+        assertEquals("[0.25,0.5,0.75,1.0]", glass.get("diffuse").toString());
+        assertTrue(glass.get("texture").isNull());
+        JsonNode web = materials.get(7);
+        assertTrue(web.get("texture").isNull(), "an http: image is no file");
+        JsonNode unbound = materials.get(9);
+        assertEquals("unbound", unbound.get("symbol").asText());
+        assertTrue(unbound.get("name").isNull() && unbound.get("diffuse").isNull() && unbound.get("texture").isNull());
     }
 }
