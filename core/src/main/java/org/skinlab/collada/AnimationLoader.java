@@ -35,6 +35,10 @@ import org.skinlab.model.TransformElement;
  * row is ignored when evaluated).
  * Refused: a sampler whose INPUT and OUTPUT disagree in key count, OUTPUT or tangent widths that
  * do not fit the target, decreasing key times, and dangling sampler or clip references.
+ *
+ * <p>Curves: IN_TANGENT/OUT_TANGENT become the control points of the cubic Bezier of each segment
+ * ({@link #controlPoints}), whatever form the file uses (2-D or 1-D, BEZIER or HERMITE), so the
+ * sampler has one evaluation path.
  */
 final class AnimationLoader {
     private final ImportContext ctx;
@@ -359,8 +363,10 @@ final class AnimationLoader {
                     }
                 }
             } else {
-                inTangents = tangents(inTangentIn, times, width, true);
-                outTangents = tangents(outTangentIn, times, width, false);
+                float[] in = tangentValues(inTangentIn, keys, width);
+                float[] out = tangentValues(outTangentIn, keys, width);
+                inTangents = controlPoints(in, times, values, width, interpolations, true);
+                outTangents = controlPoints(out, times, values, width, interpolations, false);
             }
         }
         return new KeyframeTrack(times, values, width, interpolations, inTangents, outTangents);
@@ -392,35 +398,74 @@ final class AnimationLoader {
         return s.floats(ctx, input, width, what);
     }
 
-    /** Tangents as 2-D (time, value) control points, 2 * width floats per key. */
-    private float[] tangents(XmlElement input, float[] times, int width, boolean in) throws ColladaException {
+    /**
+     * The values of an IN_TANGENT/OUT_TANGENT input as written: {@code 2 * width} per key for 2-D
+     * (time, value) tangents, {@code width} per key for 1-D (value only) tangents.
+     */
+    private float[] tangentValues(XmlElement input, int keys, int width) throws ColladaException {
         Source s = ctx.inputSource(input);
-        s.requireFloats(ctx, input, input.attr("semantic"));
-        int keys = times.length;
+        String semantic = input.attr("semantic");
+        s.requireFloats(ctx, input, semantic);
         if (s.count() != keys) {
-            throw ctx.error(input, input.attr("semantic") + " source \"" + s.id() + "\" has " + s.count()
-                    + " entries for " + keys + " keys");
+            throw ctx.error(input, semantic + " source \"" + s.id() + "\" has " + s.count() + " entries for " + keys
+                    + " keys");
         }
-        if (s.width() == 2 * width) {
-            return s.floats(ctx, input, 2 * width, input.attr("semantic"));
-        }
-        if (s.width() != width) {
-            throw ctx.error(input, input.attr("semantic") + " source \"" + s.id() + "\" has " + s.width()
+        if (s.width() != 2 * width && s.width() != width) {
+            throw ctx.error(input, semantic + " source \"" + s.id() + "\" has " + s.width()
                     + " values per key; expected " + (2 * width) + " (time, value per component) or " + width);
         }
-        // 1-D tangents: place the control point a third of the way to the neighbouring key.
-        float[] v = s.floats(ctx, input, width, input.attr("semantic"));
+        return s.floats(ctx, input, s.width(), semantic);
+    }
+
+    /**
+     * Tangents as written, turned into the control points of the cubic Bezier of the segment that
+     * uses them: {@code (time, value)}, 2 * width floats per key, the layout of
+     * {@link KeyframeTrack}. Key k's out-tangent belongs to segment [k, k+1] and is read by key
+     * k's interpolation; key k's in-tangent belongs to segment [k-1, k] and is read by key k-1's
+     * interpolation (key 0's in-tangent, used by no segment, by key 0's). Per the COLLADA 1.4.1
+     * release notes and the 1.5 specification ("Curve Interpolation", animation curves), with
+     * P = (INPUT, OUTPUT) of a key:
+     * <ul>
+     * <li><b>BEZIER, 2-D</b>: the tangent is the control point: C0 = OUT_TANGENT[k],
+     *     C1 = IN_TANGENT[k+1]. Kept as written.</li>
+     * <li><b>HERMITE, 2-D</b>: the tangent T = (dt/ds, dv/ds) is the derivative of the segment's
+     *     curve P(s), s in [0, 1], at its end. The Hermite cubic with P0, T0, P1, T1 is exactly the
+     *     Bezier with C0 = P0 + T0/3 and C1 = P1 - T1/3 (both have the same end points and end
+     *     derivatives, B'(0) = 3 (C0 - P0), B'(1) = 3 (P1 - C1)): one rounding in float.</li>
+     * <li><b>1-D</b> (value only; older exporters, ColladaMaya/FCollada 1.x): time is linear in s,
+     *     the control times sit a third of the way to the neighbouring key. HERMITE: T = dv/ds as
+     *     above, so the values are P0 + T0/3 and P1 - T1/3. BEZIER: the tangent is the control
+     *     value relative to its key, v0 + OUT_TANGENT[k] and v1 - IN_TANGENT[k+1], as FCollada 1.x,
+     *     the library that wrote these files, evaluates them ({@code FCDAnimationCurve::Evaluate}).
+     *     Reading them as absolute control values would turn the zero tangents of a peak (the CTS
+     *     files' keys "0 50" with tangents "0 0") into spikes.</li>
+     * </ul>
+     * The end keys' unused tangents get a time offset of 0.
+     */
+    static float[] controlPoints(float[] tangents, float[] times, float[] values, int width,
+            Interpolation[] interpolations, boolean in) {
+        int keys = times.length;
+        boolean twoD = tangents.length == 2 * keys * width;
         float[] out = new float[2 * keys * width];
+        float sign = in ? -1f : 1f;
         for (int k = 0; k < keys; k++) {
-            float dt;
-            if (in) {
-                dt = k > 0 ? -(times[k] - times[k - 1]) / 3f : 0f;
-            } else {
-                dt = k + 1 < keys ? (times[k + 1] - times[k]) / 3f : 0f;
-            }
+            int segment = in ? Math.max(k - 1, 0) : k;
+            boolean hermite = interpolations[segment] == Interpolation.HERMITE;
+            // 1-D: the neighbouring interval (0 at the ends, where the tangent is unused).
+            float span = in ? (k > 0 ? times[k] - times[k - 1] : 0f) : (k + 1 < keys ? times[k + 1] - times[k] : 0f);
             for (int c = 0; c < width; c++) {
-                out[2 * (k * width + c)] = times[k] + dt;
-                out[2 * (k * width + c) + 1] = v[k * width + c];
+                int o = 2 * (k * width + c);
+                float v = values[k * width + c];
+                if (twoD) {
+                    float tt = tangents[o];
+                    float tv = tangents[o + 1];
+                    out[o] = hermite ? times[k] + sign * tt / 3f : tt;
+                    out[o + 1] = hermite ? v + sign * tv / 3f : tv;
+                } else {
+                    float t = tangents[k * width + c];
+                    out[o] = times[k] + sign * span / 3f;
+                    out[o + 1] = v + sign * (hermite ? t / 3f : t);
+                }
             }
         }
         return out;
