@@ -38,7 +38,9 @@ import org.skinlab.model.TransformElement;
  *
  * <p>Curves: IN_TANGENT/OUT_TANGENT become the control points of the cubic Bezier of each segment
  * ({@link #controlPoints}), whatever form the file uses (2-D or 1-D, BEZIER or HERMITE), so the
- * sampler has one evaluation path.
+ * sampler has one evaluation path. Blender's exporter writes the tangents of bone rotation angles
+ * in radians; such tracks are recognised and converted ({@link #blenderRadians}), with one warning
+ * per file.
  */
 final class AnimationLoader {
     private final ImportContext ctx;
@@ -46,11 +48,20 @@ final class AnimationLoader {
     private final Map<String, IntList> nodesById;
     private final Map<XmlElement, List<AnimationChannel>> channelsByAnimation = new IdentityHashMap<>();
     private final Map<XmlElement, Map<Integer, KeyframeTrack>> tracks = new IdentityHashMap<>();
+    /** True when {@code <asset>} names Blender as the authoring tool (see {@link #blenderRadians}). */
+    private final boolean fromBlender;
+    /** Samplers whose tangent values were converted from radians to degrees (one warning for all). */
+    private final List<XmlElement> radianTangentSamplers = new ArrayList<>();
 
-    AnimationLoader(ImportContext ctx, List<Node> nodes, Map<String, IntList> nodesById) {
+    /**
+     * @param authoringTool the document's authoring tool as {@code ColladaImporter} read it from
+     *                      {@code <asset>} ({@code AssetInfo.authoringTool()}), or null
+     */
+    AnimationLoader(ImportContext ctx, List<Node> nodes, Map<String, IntList> nodesById, String authoringTool) {
         this.ctx = ctx;
         this.nodes = nodes;
         this.nodesById = nodesById;
+        this.fromBlender = authoringTool != null && authoringTool.startsWith("Blender");
     }
 
     List<AnimationClip> load(XmlElement collada) throws ColladaException {
@@ -68,6 +79,13 @@ final class AnimationLoader {
                 channelsByAnimation.put(a, own);
                 all.addAll(own);
             }
+        }
+        if (!radianTangentSamplers.isEmpty()) {
+            ctx.warn(radianTangentSamplers.get(0), radianTangentSamplers.size() + " BEZIER track(s) of <rotate> angles"
+                    + " have tangent values in radians while their OUTPUT is in degrees (Blender's exporter writes"
+                    + " bone rotation tangents so); the tangent values were converted to degrees, as Blender plays"
+                    + " them. Rule: authoring tool \"Blender...\", channel on a rotate's ANGLE, 2-D tangents whose"
+                    + " values lie nearer OUTPUT * pi/180 than OUTPUT (docs/importer.md)");
         }
 
         List<AnimationClip> clips = new ArrayList<>();
@@ -207,7 +225,10 @@ final class AnimationLoader {
                         + kind.elementName() + ">");
                 return;
             }
-            KeyframeTrack track = track(sampler, range[1], kind == TransformElement.Kind.MATRIX && range[1] == 16);
+            // The angle of a <rotate> (member ANGLE or index 3): where Blender's radian tangents can be.
+            boolean angle = kind == TransformElement.Kind.ROTATE && range[0] == 3 && range[1] == 1;
+            KeyframeTrack track = track(sampler, range[1], kind == TransformElement.Kind.MATRIX && range[1] == 16,
+                    angle && fromBlender);
             if (track.keyCount() == 0) {
                 // Nothing to evaluate, and its start and end (0) would stretch the default clip.
                 ctx.warn(channel, "target=\"" + target + "\" skipped: its sampler has no keys");
@@ -274,17 +295,25 @@ final class AnimationLoader {
 
     // ------------------------------------------------------------------------------- samplers
 
-    private KeyframeTrack track(XmlElement sampler, int width, boolean matrix) throws ColladaException {
+    /**
+     * The track of a sampler read for a target of {@code width} values; cached, since several
+     * channels (or copies of an instanced node) may share a sampler. {@code blenderAngle}: the
+     * target is a rotate's angle in a file Blender wrote, which may change the tangents' reading.
+     */
+    private KeyframeTrack track(XmlElement sampler, int width, boolean matrix, boolean blenderAngle)
+            throws ColladaException {
         Map<Integer, KeyframeTrack> byWidth = tracks.computeIfAbsent(sampler, s -> new HashMap<>());
-        KeyframeTrack track = byWidth.get(width);
+        int key = blenderAngle ? -width : width; // the Blender-angle reading is cached apart from the plain one
+        KeyframeTrack track = byWidth.get(key);
         if (track == null) {
-            track = readSampler(sampler, width, matrix);
-            byWidth.put(width, track);
+            track = readSampler(sampler, width, matrix, blenderAngle);
+            byWidth.put(key, track);
         }
         return track;
     }
 
-    private KeyframeTrack readSampler(XmlElement sampler, int width, boolean matrix) throws ColladaException {
+    private KeyframeTrack readSampler(XmlElement sampler, int width, boolean matrix, boolean blenderAngle)
+            throws ColladaException {
         XmlElement inputIn = null;
         XmlElement outputIn = null;
         XmlElement interpolationIn = null;
@@ -365,11 +394,46 @@ final class AnimationLoader {
             } else {
                 float[] in = tangentValues(inTangentIn, keys, width);
                 float[] out = tangentValues(outTangentIn, keys, width);
+                if (blenderAngle && blenderRadians(in, out, values)) {
+                    for (int i = 1; i < in.length; i += 2) {
+                        in[i] = (float) Math.toDegrees(in[i]);
+                        out[i] = (float) Math.toDegrees(out[i]);
+                    }
+                    radianTangentSamplers.add(sampler);
+                }
                 inTangents = controlPoints(in, times, values, width, interpolations, true);
                 outTangents = controlPoints(out, times, values, width, interpolations, false);
             }
         }
         return new KeyframeTrack(times, values, width, interpolations, inTangents, outTangents);
+    }
+
+    /**
+     * Whether the 2-D tangents of a one-value angle track from Blender hold radians. Blender's
+     * COLLADA exporter (verified on 3.4.1; the same code is in the newest exporter source we read,
+     * see docs/importer.md) writes the OUTPUT of a bone's rotation in degrees but the value
+     * coordinate of its Bezier handles in radians: {@code AnimationExporter::collada_tangent_from_curve}
+     * converts only when the channel name starts with "rotation", and for bone curves that name is
+     * {@code ["Bone"].rotation_euler}. Handles sit near their keys, so the values say which unit
+     * they are in: radians when {@code sum |h - v pi/180| <= sum |h - v|} over every handle h and
+     * its key's value v. A file whose tangents are already in degrees (an object's rotation, which
+     * Blender converts, or a fixed exporter) fails that test and is left alone. Equality happens
+     * only when every key value is 0, where the file cannot tell; the exporter's code then decides.
+     * 1-D tangents (Blender never writes them) are never converted.
+     */
+    private static boolean blenderRadians(float[] in, float[] out, float[] values) {
+        if (in.length != 2 * values.length || out.length != 2 * values.length) {
+            return false;
+        }
+        double radians = 0;
+        double degrees = 0;
+        for (int k = 0; k < values.length; k++) {
+            double v = values[k];
+            double r = Math.toRadians(v);
+            radians += Math.abs(in[2 * k + 1] - r) + Math.abs(out[2 * k + 1] - r);
+            degrees += Math.abs(in[2 * k + 1] - v) + Math.abs(out[2 * k + 1] - v);
+        }
+        return radians <= degrees;
     }
 
     /** The interpolation of that name, or null when it is not supported (CARDINAL, BSPLINE, ...). */

@@ -102,7 +102,8 @@ public final class ColladaImporter {
         }
 
         SceneLoader.Result scene = new SceneLoader(ctx, meshesByGeometry, skinsByController).load(root);
-        List<AnimationClip> clips = new AnimationLoader(ctx, scene.nodes, scene.nodesById).load(root);
+        List<AnimationClip> clips = new AnimationLoader(ctx, scene.nodes, scene.nodesById, asset.authoringTool())
+                .load(root);
         return new Model(name, asset, meshes, skins, scene.nodes, scene.instances, clips, ctx.warnings());
     }
 

@@ -199,6 +199,86 @@ class SamplerImportTest {
         assertNoWarnings(m);
     }
 
+    // ------------------------------------------------------------ Blender's radian tangents
+
+    /** A document as {@link AnimationXml#document} writes it, but authored by {@code tool}. */
+    private static String authoredBy(String tool, String nodes, String animations) {
+        return document(nodes, animations).replace("<asset>",
+                "<asset><contributor><authoring_tool>" + tool + "</authoring_tool></contributor>");
+    }
+
+    // Keys 0 and 90 degrees at 0 and 1 s; handles a third of the way, with values 0.5 and 1.2 in
+    // radians (28.6 and 68.8 degrees), the way Blender 3.4 writes a bone's rotation.
+    private static final String RADIAN_IN = "-0.333 0  0.667 1.2";
+    private static final String RADIAN_OUT = "0.333 0.5  1.333 1.5707964";
+
+    @Test
+    void blenderRotationTangentsInRadiansAreConvertedToDegreesWithOneWarning() {
+        Model m = Fixtures.read("blender-radians.dae", authoredBy("Blender 3.4.1", NODE,
+                curve("N/rotateX.ANGLE", "0 1", "0 90", 1, "BEZIER BEZIER", RADIAN_IN, RADIAN_OUT, 2)));
+        KeyframeTrack t = onlyTrack(m);
+        // Times untouched; values times 180/pi: 1.2 rad = 68.754936 degrees, 0.5 rad = 28.647890.
+        assertArrayEquals(new float[] {-0.333f, 0, 0.667f, 68.754936f}, t.inTangents(), 1e-4f);
+        assertArrayEquals(new float[] {0.333f, 28.647890f, 1.333f, 90}, t.outTangents(), 1e-4f);
+        assertEquals(1, m.warnings().size(), () -> m.warnings().toString());
+        String w = m.warnings().get(0).message();
+        assertTrue(w.startsWith("1 BEZIER track(s)") && w.contains("radians") && w.contains("Blender"), w);
+        assertTrue(m.warnings().get(0).element().contains("a-sampler"), m.warnings()::toString);
+    }
+
+    @Test
+    void theRadianRuleAlsoReadsTheAngleByIndexAndWarnsOncePerFile() {
+        // rotateX(3) is the same value as rotateX.ANGLE; two such tracks, one warning counting both.
+        String nodes = NODE.replace("<rotate sid=\"rotateX\">1 0 0 0</rotate>",
+                "<rotate sid=\"rotateX\">1 0 0 0</rotate><rotate sid=\"rotateY\">0 1 0 0</rotate>");
+        String two = curve("N/rotateX(3)", "0 1", "0 90", 1, "BEZIER BEZIER", RADIAN_IN, RADIAN_OUT, 2)
+                + curve("N/rotateY.ANGLE", "0 1", "0 90", 1, "BEZIER BEZIER", RADIAN_IN, RADIAN_OUT, 2)
+                        .replace("\"a", "\"b").replace("#a", "#b");
+        Model m = Fixtures.read("blender-radians-two.dae", authoredBy("Blender 2.93.1", nodes, two));
+        for (AnimationChannel c : m.clips().get(0).channels()) {
+            assertEquals(68.754936f, c.track().inTangents()[3], 1e-4f, c.target());
+        }
+        assertEquals(1, m.warnings().size(), () -> m.warnings().toString());
+        assertTrue(m.warnings().get(0).message().startsWith("2 BEZIER track(s)"), m.warnings()::toString);
+    }
+
+    @Test
+    void blenderTangentsAlreadyInDegreesAreLeftAlone() {
+        // An object's rotation (Blender converts those) or a fixed exporter: handle values 28.6 and
+        // 68.8 lie nearer the keys 0 and 90 than 0 and pi/2.
+        Model m = Fixtures.read("blender-degrees.dae", authoredBy("Blender 3.4.1", NODE,
+                curve("N/rotateX.ANGLE", "0 1", "0 90", 1, "BEZIER BEZIER", "-0.333 0  0.667 68.8",
+                        "0.333 28.6  1.333 90", 2)));
+        KeyframeTrack t = onlyTrack(m);
+        assertArrayEquals(new float[] {-0.333f, 0, 0.667f, 68.8f}, t.inTangents(), EXACT);
+        assertArrayEquals(new float[] {0.333f, 28.6f, 1.333f, 90}, t.outTangents(), EXACT);
+        assertNoWarnings(m);
+    }
+
+    @Test
+    void theRadianRuleNeedsBlenderAndARotationAngle() {
+        // The same numbers from another tool, and on a translation from Blender: read as written.
+        Model other = Fixtures.read("maya-radians.dae", authoredBy("Maya 2019 | OpenCOLLADA", NODE,
+                curve("N/rotateX.ANGLE", "0 1", "0 90", 1, "BEZIER BEZIER", RADIAN_IN, RADIAN_OUT, 2)));
+        assertArrayEquals(new float[] {-0.333f, 0, 0.667f, 1.2f}, onlyTrack(other).inTangents(), EXACT);
+        assertNoWarnings(other);
+        Model translate = Fixtures.read("blender-translate.dae", authoredBy("Blender 3.4.1", NODE,
+                curve("N/translate.X", "0 1", "0 90", 1, "BEZIER BEZIER", RADIAN_IN, RADIAN_OUT, 2)));
+        assertArrayEquals(new float[] {-0.333f, 0, 0.667f, 1.2f}, onlyTrack(translate).inTangents(), EXACT);
+        assertNoWarnings(translate);
+    }
+
+    @Test
+    void keysThatAreAllZeroFollowTheExporterAndAreConverted() {
+        // With every key at 0, radians and degrees fit equally well; the rule then follows what the
+        // exporter's code does for bone rotations: radians. A bump of 0.5 rad becomes 28.6 degrees.
+        Model m = Fixtures.read("blender-zero.dae", authoredBy("Blender 3.4.1", NODE,
+                curve("N/rotateX.ANGLE", "0 1", "0 0", 1, "BEZIER BEZIER", "-0.333 0  0.667 0.5",
+                        "0.333 0.5  1.333 0", 2)));
+        assertEquals(28.647890f, onlyTrack(m).outTangents()[1], 1e-4f);
+        assertEquals(1, m.warnings().size(), () -> m.warnings().toString());
+    }
+
     // ------------------------------------------------------------ lenient: read with a warning
 
     @Test
