@@ -44,11 +44,13 @@ JSON (numbers with 7 significant digits; Blender computes in float32):
                "key_times": [s, ... its rig's keys],
                "positions": [[x,y,z, x,y,z, ...] one array per time]}, ...],
    "channels": [{"target": ..., "tangent_unit": "radians"|"degrees"|"value"}, ...]}
-Two runs give byte-identical JSON; the .dae differs only in its <created>/<modified> dates.
+The export's <created>/<modified> dates are pinned (as in common.py), so two runs give
+byte-identical files.
 """
 import json
 import math
 import os
+import re
 import sys
 import xml.etree.ElementTree as ET
 
@@ -58,6 +60,7 @@ FPS = 24
 NS = "{http://www.collada.org/2005/11/COLLADASchema}"
 DAE = "blender-curves.dae"
 JSON = "blender-curves.json"
+FIXED_TIMESTAMP = "2024-01-01T00:00:00"   # as assets/src/common.py: two runs, identical files
 MATCH = 1e-6          # metres: file positions vs Blender's vertices
 SHAPE = 2e-5          # exported tangent (relative to its key) vs original handle: 7 digits of text
 
@@ -152,6 +155,12 @@ def export(path):
         export_animation_transformation_type_selection='decomposed')
     if result != {'FINISHED'}:
         fail("collada_export returned %r" % (result,))
+    with open(path, encoding="utf-8") as fh:
+        text = fh.read()
+    text = re.sub(r"<created>[^<]*</created>", "<created>%s</created>" % FIXED_TIMESTAMP, text)
+    text = re.sub(r"<modified>[^<]*</modified>", "<modified>%s</modified>" % FIXED_TIMESTAMP, text)
+    with open(path, "w", encoding="utf-8", newline="\n") as fh:
+        fh.write(text)
 
 
 # --------------------------------------------------------------------------- the written file
