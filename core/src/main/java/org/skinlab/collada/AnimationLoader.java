@@ -417,8 +417,8 @@ final class AnimationLoader {
      * {@code ["Bone"].rotation_euler}. Handles sit near their keys, so the values say which unit
      * they are in: radians when {@code sum |h - v pi/180| <= sum |h - v|} over every handle h and
      * its key's value v. A file whose tangents are already in degrees (an object's rotation, which
-     * Blender converts, or a fixed exporter) fails that test and is left alone. Equality happens
-     * only when every key value is 0, where the file cannot tell; the exporter's code then decides.
+     * Blender converts, or a fixed exporter) fails that test and is left alone. A tie (every key
+     * value 0, where the file cannot tell) goes to radians, as the exporter's code writes them.
      * 1-D tangents (Blender never writes them) are never converted.
      */
     private static boolean blenderRadians(float[] in, float[] out, float[] values) {
