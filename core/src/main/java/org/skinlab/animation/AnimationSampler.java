@@ -28,8 +28,10 @@ import org.skinlab.model.TransformElement;
  * <li><b>Everything else</b> (a single value or a partial matrix, a {@code <rotate>} angle, a
  *     {@code <translate>} vector), and BEZIER/HERMITE matrices: each value on its own, by the key's
  *     interpolation: STEP holds, LINEAR blends, BEZIER and HERMITE follow the cubic Bezier through
- *     the two keys and their 2-D control points (as the importer stores tangents, see
- *     {@link KeyframeTrack}), solved for the parameter whose time is the sample time.</li>
+ *     the two keys and their 2-D control points, solved for the parameter whose time is the sample
+ *     time. HERMITE needs no path of its own: the importer already turned its derivative tangents
+ *     into the equivalent Bezier control points ({@link KeyframeTrack}; exact, see
+ *     docs/animation.md).</li>
  * </ul>
  * Before the first key a channel holds the first key, after the last the last. Channels apply in
  * clip order, so when two drive the same value the later wins.
@@ -217,7 +219,8 @@ public final class AnimationSampler {
                 }
                 return;
             }
-            // BEZIER / HERMITE: per value, a cubic through (t0, v0), out[k], in[k+1], (t1, v1).
+            // BEZIER / HERMITE: per value, the cubic Bezier through (t0, v0), out[k], in[k+1], (t1, v1)
+            // (HERMITE tangents arrive as the equivalent control points, see KeyframeTrack).
             for (int c = 0; c < width; c++) {
                 int oa = 2 * (k * width + c);
                 int ob = 2 * ((k + 1) * width + c);

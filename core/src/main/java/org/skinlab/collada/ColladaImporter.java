@@ -130,7 +130,8 @@ public final class ColladaImporter {
 
         SceneLoader.Result scene = new SceneLoader(ctx, meshesByGeometry, morphsByController, skinsByController,
                 materials).load(root);
-        List<AnimationClip> clips = new AnimationLoader(ctx, scene.nodes, scene.nodesById).load(root);
+        List<AnimationClip> clips = new AnimationLoader(ctx, scene.nodes, scene.nodesById, asset.authoringTool())
+                .load(root);
         return new Model(name, asset, meshes, skins, new ArrayList<>(morphsByController.values()),
                 new ArrayList<>(materials.values()), materialLoader.images(), scene.nodes, scene.instances, clips,
                 ctx.warnings());

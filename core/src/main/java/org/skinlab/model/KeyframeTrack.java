@@ -6,10 +6,14 @@ import java.util.Arrays;
  * A COLLADA {@code <sampler>}: key times in seconds, {@link #width()} values per key, and how each
  * segment interpolates. Times never decrease (equal neighbours are allowed: a jump).
  *
- * <p>Tangents ({@code BEZIER}/{@code HERMITE} keys) are kept as 2-D control points: for key
- * {@code k} and value component {@code c}, {@code (time, value)} at index
- * {@code 2 * (k * width + c)}. Files that give 1-D tangents (value only) get the time placed one
- * third of the way to the neighbouring key, the usual Bezier convention.
+ * <p>Tangents ({@code BEZIER}/{@code HERMITE} keys) are kept in one form: the control points of
+ * the cubic Bezier of each segment, {@code (time, value)} for key {@code k} and value component
+ * {@code c} at index {@code 2 * (k * width + c)}. Segment [k, k+1] is the Bezier through
+ * {@code (t_k, v_k)}, key k's out-tangent, key k+1's in-tangent and {@code (t_k+1, v_k+1)}, for
+ * BEZIER and HERMITE keys alike. The importer converts what the file writes into this form
+ * (HERMITE derivatives T become {@code P + T/3} and {@code P - T/3}; 1-D tangents get their time a
+ * third of the way to the neighbouring key): see {@code AnimationLoader.controlPoints} and
+ * docs/animation.md. The interpolation names stay as the file gives them.
  */
 public final class KeyframeTrack {
     private final float[] times;
@@ -21,8 +25,8 @@ public final class KeyframeTrack {
 
     /**
      * @param interpolations one per key (the segment that starts at the key)
-     * @param inTangents     2 floats per value component per key, or null
-     * @param outTangents    2 floats per value component per key, or null
+     * @param inTangents     Bezier control points, 2 floats per value component per key, or null
+     * @param outTangents    Bezier control points, 2 floats per value component per key, or null
      */
     public KeyframeTrack(float[] times, float[] values, int width, Interpolation[] interpolations,
             float[] inTangents, float[] outTangents) {

@@ -74,6 +74,42 @@ public final class AnimationXml {
     }
 
     /**
+     * An animation {@code id} with one channel on {@code target} and a sampler with INPUT, OUTPUT
+     * ({@code stride} values per key) and, when not null, INTERPOLATION, IN_TANGENT and OUT_TANGENT
+     * sources ({@code tangentStride} values per key): the shape of a curve with tangents.
+     */
+    public static String curve(String id, String target, String times, String values, int stride,
+            String interpolations, String in, String out, int tangentStride) {
+        StringBuilder sb = new StringBuilder("    <animation id=\"").append(id).append("\">\n");
+        sb.append(floatSource(id + "-input", times, 1)).append(floatSource(id + "-output", values, stride));
+        if (interpolations != null) {
+            sb.append(nameSource(id + "-interpolation", interpolations));
+        }
+        if (in != null) {
+            sb.append(floatSource(id + "-in", in, tangentStride));
+        }
+        if (out != null) {
+            sb.append(floatSource(id + "-out", out, tangentStride));
+        }
+        sb.append("      <sampler id=\"").append(id).append("-sampler\">\n");
+        sb.append("        <input semantic=\"INPUT\" source=\"#").append(id).append("-input\"/>\n");
+        sb.append("        <input semantic=\"OUTPUT\" source=\"#").append(id).append("-output\"/>\n");
+        if (interpolations != null) {
+            sb.append("        <input semantic=\"INTERPOLATION\" source=\"#").append(id).append("-interpolation\"/>\n");
+        }
+        if (in != null) {
+            sb.append("        <input semantic=\"IN_TANGENT\" source=\"#").append(id).append("-in\"/>\n");
+        }
+        if (out != null) {
+            sb.append("        <input semantic=\"OUT_TANGENT\" source=\"#").append(id).append("-out\"/>\n");
+        }
+        sb.append("      </sampler>\n");
+        sb.append("      <channel source=\"#").append(id).append("-sampler\" target=\"").append(target).append("\"/>\n");
+        sb.append("    </animation>\n");
+        return sb.toString();
+    }
+
+    /**
      * A float {@code <source>} with {@code stride} named components per element (one
      * {@code float4x4} param when the stride is 16, as Blender writes keyed matrices).
      */
