@@ -61,8 +61,9 @@ References (URLs)
       its mesh record; a morph on a skin has neither record). METHOD: the method attribute,
       NORMALIZED when absent. Targets: the MORPH_TARGET IDREF_array and MORPH_WEIGHT float_array
       of the <targets> inputs, paired by index (as many pairs as both arrays, read through their
-      accessors, provide). A target that is not a geometry holding a mesh, or whose POSITIONS
-      differs from the base's, is left out; TARGETS counts the ones used. Per position index,
+      accessors, provide). A target that is not a geometry holding a mesh, or with fewer
+      POSITIONS than the base, is left out (one with more contributes its first ones); TARGETS
+      counts the ones used. Per position index,
       with B the base positions (for a morph on a morph: the inner morph's result) and T_i
       target i's positions:
           NORMALIZED  P = (1 - sum w_i) * B + sum w_i * T_i
@@ -112,13 +113,14 @@ References (URLs)
       <material>: NAME is its name attribute (if non-empty), else its id; "-" when unbound or the
       target dangles or is in another document. Then <instance_effect url> -> <effect>; its first
       <profile_COMMON>; that profile's first <technique>; the first of its <constant>, <lambert>,
-      <phong>, <blinn> children. (<setparam>s of <instance_effect> are not applied.)
+      <phong>, <blinn> children. Parameters are looked up in the material's <instance_effect>
+      <setparam ref="X"> first, then <newparam sid="X"> in the technique, the profile, the effect.
       DIFFUSE: that shading's <diffuse> as <color> ("r g b a", each "%g"; 3 values get alpha 1),
-        or <param ref="X"> resolved to the <newparam sid="X"> holding <float4>/<float3> in the
-        technique, else the profile, else the effect; "-" when there is no diffuse colour
-        (constant shading, a texture, nothing, or an unresolvable param).
-      TEXTURE: when the diffuse holds <texture texture="S">: S is the sid of a <newparam>
-        (technique, then profile_COMMON, then effect) holding <sampler2D>, whose <source> text is
+        or <param ref="X"> resolved to the parameter holding <float4>/<float3>; "-" when there is
+        no diffuse colour (constant shading, a texture, nothing, or an unresolvable param).
+      TEXTURE: the texture the material shows: its diffuse's, or for <constant> shading its
+        <emission>'s. A <texture texture="S">: S names a parameter (same search) holding
+        <sampler2D>, whose <source> text is
         the sid of a <newparam> (same search) holding <surface>, whose <init_from> text is an
         <image> id (1.5 style: <sampler2D><instance_image url="#img">); when S names no such
         newparam but is the id of an <image>: that image. The image's <init_from> text (1.4.1) or
@@ -131,7 +133,8 @@ References (URLs)
       As corpus_counts.py (one per <animation_clip>, NAME its name, else id, else clip-N; no
       clips but channels: one clip "default"; CHANNELS: channels whose target "node/sid..."
       names a scene node having a transform with that sid, once per copy of the node), with the
-      scene as above (extra roots included) and <instance_animation url> resolved as a URL.
+      scene as above (extra roots included) and <instance_animation url> resolved as a URL. An
+      animation a clip instances several times (or also through an outer animation) counts once.
 
   quirk | PATH | KIND
       Once per file per kind, in this order of kinds, for what the importer reads: every
@@ -435,7 +438,7 @@ class Cts:
             geometry = self.mesh_of(self.ids.get(target))
             if geometry is None:
                 continue
-            if self.accessor_count(self.position_source(child(geometry, "mesh"))) != count:
+            if self.accessor_count(self.position_source(child(geometry, "mesh"))) < count:
                 continue
             used.append((weight, self.positions(geometry)))
         total = sum(w for w, _ in used)
@@ -595,10 +598,15 @@ class Cts:
         shading = [c for c in technique if local(c.tag) in SHADINGS]
         if not shading:
             return name, "-", "-"
+        scopes = [instance_effect, technique, profile, effect]
+        if local(shading[0].tag) == "constant":
+            # Unlit: no diffuse; what it shows is its emission, a texture there counts.
+            emission = child(shading[0], "emission")
+            texture = child(emission, "texture") if emission is not None else None
+            return name, "-", self.texture(scopes, texture.get("texture")) if texture is not None else "-"
         diffuse = child(shading[0], "diffuse")
         if diffuse is None:
             return name, "-", "-"
-        scopes = [technique, profile, effect]
         colour = child(diffuse, "color")
         if colour is None and child(diffuse, "param") is not None:
             newparam = self.newparam(scopes, child(diffuse, "param").get("ref"), ("float4", "float3"))
@@ -615,10 +623,13 @@ class Cts:
         return name, "-", self.texture(scopes, texture.get("texture"))
 
     def newparam(self, scopes, sid, holding):
+        """The <setparam ref> of the material's <instance_effect> (scopes[0]), else the first
+        <newparam sid> of the technique, profile or effect, holding one of the given elements."""
         for scope in scopes:
-            for newparam in children(scope, "newparam"):
-                if newparam.get("sid") == sid and any(local(c.tag) in holding for c in newparam):
-                    return newparam
+            for param in list(children(scope, "setparam")) + list(children(scope, "newparam")):
+                key = param.get("ref") if local(param.tag) == "setparam" else param.get("sid")
+                if key == sid and any(local(c.tag) in holding for c in param):
+                    return param
         return None
 
     def texture(self, scopes, sampler_sid):
@@ -887,11 +898,17 @@ def clip_rows(doc, nodes):
     clips = [c for library in children(doc.root, "library_animation_clips") for c in children(library, "animation_clip")]
     rows = []
     for n, clip in enumerate(clips, 1):
-        channels = 0
+        # Each animation counts once per clip, however often the clip instances it (directly or
+        # through an outer animation): the same channel twice would drive the same values twice.
+        instanced = []
         for i in children(clip, "instance_animation"):
             animation = doc.element(i.get("url"))
             if animation is not None and local(animation.tag) == "animation":
-                channels += channel_count(doc, copies, animation)
+                instanced += [a for a in animation.iter() if local(a.tag) == "animation"
+                              and not any(a is b for b in instanced)]
+        outermost = [a for a in instanced
+                     if not any(b is not a and any(a is d for d in b.iter()) for b in instanced)]
+        channels = sum(channel_count(doc, copies, a) for a in outermost)
         rows.append(["clip", doc.path, clip.get("name") or clip.get("id") or "clip-%d" % n, channels])
     if not clips:
         channels = sum(channel_count(doc, copies, a) for a in top_level)

@@ -20,7 +20,8 @@ import org.skinlab.model.Texture;
  * newparam whose {@code <init_from>} is the image's id, in 1.5 it holds
  * {@code <instance_image url>}. Many exporters (Blender, SketchUp, older 3ds Max) write the
  * image's id straight into the {@code texture} attribute; that is understood too. A colour may
- * be given through {@code <param ref>} to a {@code float3}/{@code float4} newparam.
+ * be given through {@code <param ref>} to a {@code float3}/{@code float4} newparam, whose value
+ * the material may set with {@code <instance_effect><setparam>}.
  *
  * <p>Materials only decide how a mesh looks, so nothing here refuses a file: a dangling effect or
  * image, a missing {@code profile_COMMON}, an unreadable colour get a warning and are left out
@@ -54,7 +55,8 @@ final class MaterialLoader {
     }
 
     private Material load(XmlElement material) {
-        String name = material.attr("name") != null ? material.attr("name") : material.id();
+        String name = material.attr("name") != null && !material.attr("name").isEmpty() ? material.attr("name")
+                : material.id();
         Material.Builder b = new Material.Builder(material.id(), name);
         XmlElement instance = material.child("instance_effect");
         XmlElement effect = instance == null ? null : reference(instance, "url", "effect");
@@ -81,7 +83,7 @@ final class MaterialLoader {
                     + " material \"" + name + "\" is drawn with the renderer's default look");
             return b.build();
         }
-        Scope scope = new Scope(effect, profile, technique);
+        Scope scope = new Scope(instance, effect, profile, technique);
         b.shading(Material.Shading.valueOf(shading.name().toUpperCase(Locale.ROOT)));
         b.emission(color(shading.child("emission"), scope));
         b.emissionTexture(texture(shading.child("emission"), scope));
@@ -96,15 +98,27 @@ final class MaterialLoader {
         return b.build();
     }
 
-    /** Where newparams are looked up: the technique, then the profile, then the effect. */
+    /**
+     * Where a parameter is looked up: the material's {@code <instance_effect><setparam>}s first
+     * (a material sets the value of an effect's parameter, e.g. its diffuse colour), then the
+     * {@code <newparam>}s of the technique, the profile and the effect.
+     */
     private static final class Scope {
+        final XmlElement instance;
         final XmlElement[] levels;
 
-        Scope(XmlElement effect, XmlElement profile, XmlElement technique) {
+        Scope(XmlElement instanceEffect, XmlElement effect, XmlElement profile, XmlElement technique) {
+            this.instance = instanceEffect;
             this.levels = new XmlElement[] {technique, profile, effect};
         }
 
+        /** The element holding the parameter's value ({@code <setparam>} or {@code <newparam>}), or null. */
         XmlElement newparam(String sid) {
+            for (XmlElement p : instance.children("setparam")) {
+                if (sid.equals(p.attr("ref"))) {
+                    return p;
+                }
+            }
             for (XmlElement level : levels) {
                 for (XmlElement p : level.children("newparam")) {
                     if (sid.equals(p.attr("sid"))) {

@@ -1,7 +1,10 @@
 package org.skinlab.model;
 
+import java.util.ArrayList;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Optional;
+import java.util.Set;
 
 /**
  * Everything the importer read from one file: immutable, validated, in the document's own frame
@@ -122,6 +125,27 @@ public final class Model {
     /** The first instance that draws the given mesh (scene order). */
     public Optional<MeshInstance> instanceOf(Mesh mesh) {
         return instances.stream().filter(i -> i.mesh() == mesh).findFirst();
+    }
+
+    /**
+     * What each material symbol of the mesh's primitives (first use first) is drawn with, bound
+     * through the first instance that draws the mesh: {@link Material#DEFAULT} for a symbol
+     * nothing binds (or when nothing draws the mesh).
+     */
+    public List<MaterialBinding> materialsOf(Mesh mesh) {
+        Optional<MeshInstance> instance = instanceOf(mesh);
+        Set<String> symbols = new LinkedHashSet<>();
+        for (MeshPart part : mesh.parts()) {
+            if (part.material() != null) {
+                symbols.add(part.material());
+            }
+        }
+        List<MaterialBinding> result = new ArrayList<>(symbols.size());
+        for (String symbol : symbols) {
+            result.add(instance.isPresent() ? instance.get().material(symbol)
+                    : new MaterialBinding(symbol, Material.DEFAULT, -1));
+        }
+        return result;
     }
 
     /** The clip with the given name. */

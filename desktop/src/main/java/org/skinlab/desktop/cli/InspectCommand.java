@@ -3,12 +3,9 @@ package org.skinlab.desktop.cli;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
-import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
-import java.util.Set;
 import java.util.concurrent.Callable;
 
 import com.fasterxml.jackson.core.JsonProcessingException;
@@ -22,8 +19,6 @@ import org.skinlab.model.ImportWarning;
 import org.skinlab.model.Material;
 import org.skinlab.model.MaterialBinding;
 import org.skinlab.model.Mesh;
-import org.skinlab.model.MeshInstance;
-import org.skinlab.model.MeshPart;
 import org.skinlab.model.Model;
 import org.skinlab.model.Skin;
 import org.skinlab.model.Texture;
@@ -136,7 +131,7 @@ public final class InspectCommand implements Callable<Integer> {
             m.put("joints", skin.map(Skin::jointCount).orElse(0));
             m.put("maxInfluences", skin.map(Skin::maxInfluences).orElse(0));
             ArrayNode materials = m.putArray("materials");
-            for (MaterialBinding b : bindings(model, mesh)) {
+            for (MaterialBinding b : model.materialsOf(mesh)) {
                 ObjectNode entry = materials.addObject();
                 entry.put("symbol", b.symbol());
                 boolean bound = b.material() != Material.DEFAULT;
@@ -169,25 +164,6 @@ public final class InspectCommand implements Callable<Integer> {
         return root;
     }
 
-    /**
-     * The material of each symbol of the mesh's primitives (first use first), bound through the
-     * first instance that draws it; {@link Material#DEFAULT} for a symbol nothing binds.
-     */
-    static List<MaterialBinding> bindings(Model model, Mesh mesh) {
-        Optional<MeshInstance> instance = model.instanceOf(mesh);
-        Set<String> symbols = new LinkedHashSet<>();
-        for (MeshPart part : mesh.parts()) {
-            if (part.material() != null) {
-                symbols.add(part.material());
-            }
-        }
-        List<MaterialBinding> result = new ArrayList<>();
-        for (String symbol : symbols) {
-            result.add(instance.map(i -> i.material(symbol)).orElse(new MaterialBinding(symbol, Material.DEFAULT, -1)));
-        }
-        return result;
-    }
-
     private static Path textureFile(Material material) {
         Texture t = material.baseTexture();
         return t == null ? null : t.image().file();
@@ -209,7 +185,7 @@ public final class InspectCommand implements Callable<Integer> {
                     mesh.positionCount(), mesh.triangleCount(),
                     skin.map(s -> "skinned: " + s.jointCount() + " joints, up to " + s.maxInfluences()
                             + " influences per position").orElse("static")));
-            for (MaterialBinding b : bindings(model, mesh)) {
+            for (MaterialBinding b : model.materialsOf(mesh)) {
                 sb.append("      material ").append(b.symbol()).append(": ").append(describe(b.material())).append('\n');
             }
         }
