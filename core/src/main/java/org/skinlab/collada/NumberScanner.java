@@ -239,40 +239,62 @@ final class NumberScanner {
      * otherwise records the value (or the problem) and sets {@link #tokenEnd}.
      */
     private boolean parseToken(char[] b, int from, int limit, boolean limitEndsToken) {
+        // Kept small so that the JIT inlines it into feed(): every problem goes to a cold method.
         pendingProblem = null;
-        pendingComma = false;
         int stop = floats ? scanFloat(b, from, limit) : scanInt(b, from, limit);
         if (stop == limit && !limitEndsToken) {
             return false;
         }
         if (stop < limit && !SafeXmlReader.isXmlWhitespace(b[stop])) {
-            // Not a number: find the whole token for the message.
-            int end = stop;
-            while (end < limit && !SafeXmlReader.isXmlWhitespace(b[end])) {
-                end++;
-            }
-            if (end == limit && !limitEndsToken) {
-                return false;
-            }
-            float special = floats ? nonFinite(b, from, end) : 0f;
-            if (special != 0f) {
-                nonFinite(b, from, end, "not a finite number");
-                add(special);
-            } else {
-                bad(b, from, end, floats ? "not a number" : "not an integer");
-                add(0);
-            }
-            tokenEnd = end;
-            return true;
+            return notANumber(b, from, stop, limit, limitEndsToken);
         }
         tokenEnd = stop;
+        if (pendingProblem != null || stop - from > MAX_TOKEN) {
+            problem(b, from, stop);
+        } else if (floats) {
+            if (pendingComma) {
+                decimalCommas++;
+                pendingComma = false;
+            }
+            add(pendingFloat);
+        } else {
+            add(pendingInt);
+        }
+        return true;
+    }
+
+    /** A token with characters after its number: NaN or an infinity spelled out, or a bad token. */
+    private boolean notANumber(char[] b, int from, int stop, int limit, boolean limitEndsToken) {
+        int end = stop;
+        while (end < limit && !SafeXmlReader.isXmlWhitespace(b[end])) {
+            end++;
+        }
+        if (end == limit && !limitEndsToken) {
+            return false; // the token may go on in the next chunk
+        }
+        pendingComma = false;
+        float special = floats ? nonFinite(b, from, end) : 0f;
+        if (special != 0f) {
+            nonFinite(b, from, end, "not a finite number");
+            add(special);
+        } else {
+            bad(b, from, end, floats ? "not a number" : "not an integer");
+            add(0);
+        }
+        tokenEnd = end;
+        return true;
+    }
+
+    /** A token that ends like a number but is none (or is too long, or beyond float range). */
+    private void problem(char[] b, int from, int stop) {
+        pendingComma = false;
         if (stop - from > MAX_TOKEN) {
             bad(b, from, stop, "longer than " + MAX_TOKEN + " characters");
             add(0);
         } else if (pendingProblem == OUT_OF_RANGE) {
             nonFinite(b, from, stop, pendingProblem);
-            add(pendingFloat);
-        } else if (pendingProblem != null) {
+            add(b[from] == '-' ? Float.NEGATIVE_INFINITY : Float.POSITIVE_INFINITY);
+        } else {
             float special = floats ? nonFinite(b, from, stop) : 0f;
             if (special != 0f) {
                 nonFinite(b, from, stop, "not a finite number");
@@ -281,15 +303,7 @@ final class NumberScanner {
                 bad(b, from, stop, pendingProblem);
                 add(0);
             }
-        } else if (floats) {
-            if (pendingComma) {
-                decimalCommas++;
-            }
-            add(pendingFloat);
-        } else {
-            add(pendingInt);
         }
-        return true;
     }
 
     private static final String OUT_OF_RANGE = "out of float range";
@@ -328,7 +342,7 @@ final class NumberScanner {
     private float pendingFloat;
     private int pendingInt;
     private String pendingProblem;
-    private boolean pendingComma; // the float was written with a decimal comma
+    private boolean pendingComma; // the float scanned last was written with a decimal comma (reset when used)
 
     /**
      * Scans a float at {@code b[from]}; returns the index after it (where it stopped). Sets
@@ -405,23 +419,17 @@ final class NumberScanner {
             }
             exponent += negExp ? -e : e;
         }
-        if (comma) {
-            if (b[pos - 1] == ',') {
-                // "5," is no decimal number; a comma-separated list would be misread as one.
-                pendingProblem = "not a number";
-                return pos;
-            }
-            pendingComma = true;
+        if (comma && !decimalComma(b, pos)) {
+            return pos;
         }
         float f;
         if (mantissa == 0) {
             f = 0f;
         } else {
-            f = toFloat(mantissa, exponent, dropped, b, from, pos, comma);
+            f = toFloat(mantissa, exponent, dropped, b, from, pos);
         }
         if (Float.isInfinite(f)) {
             pendingProblem = OUT_OF_RANGE;
-            pendingFloat = negative ? Float.NEGATIVE_INFINITY : Float.POSITIVE_INFINITY;
             return pos;
         }
         pendingFloat = negative ? -f : f;
@@ -441,24 +449,36 @@ final class NumberScanner {
      * {@link Float#parseFloat} decides. When the double is exact or correctly rounded (no dropped
      * digits, mantissa below 2^53, 0 <= exponent <= 22) only an exact halfway point is in doubt.
      */
-    private static float toFloat(long mantissa, int exponent, boolean dropped, char[] b, int from, int to,
-            boolean comma) {
+    private static float toFloat(long mantissa, int exponent, boolean dropped, char[] b, int from, int to) {
         if (exponent >= POWERS_OF_TEN.length || exponent <= -NEGATIVE_POWERS_OF_TEN.length) {
-            return exact(b, from, to, comma);
+            return exact(b, from, to);
         }
         double d = exponent >= 0 ? mantissa * POWERS_OF_TEN[exponent] : mantissa * NEGATIVE_POWERS_OF_TEN[-exponent];
         boolean correctlyRounded = !dropped && mantissa < (1L << 53) && exponent >= 0 && exponent <= 22;
         long distance = Math.abs((Double.doubleToRawLongBits(d) & BELOW_FLOAT) - FLOAT_MIDPOINT);
         if (distance <= (correctlyRounded ? 0 : 16) || d < Float.MIN_NORMAL || d > Float.MAX_VALUE) {
-            return exact(b, from, to, comma);
+            return exact(b, from, to);
         }
         return (float) d;
     }
 
     /** {@link Float#parseFloat} of the token's magnitude (a decimal comma read as the point). */
-    private static float exact(char[] b, int from, int to, boolean comma) {
-        String token = new String(b, from, to - from);
-        return Math.abs(Float.parseFloat(comma ? token.replace(',', '.') : token));
+    private static float exact(char[] b, int from, int to) {
+        return Math.abs(Float.parseFloat(new String(b, from, to - from).replace(',', '.')));
+    }
+
+    /**
+     * Whether the comma that ends at {@code b[pos - 1]} or before is a decimal comma; "5," is no
+     * decimal number (a comma-separated list would be misread as one). Out of line: rare, and
+     * {@link #scanFloat} must stay small enough for the JIT to inline what it calls.
+     */
+    private boolean decimalComma(char[] b, int pos) {
+        if (b[pos - 1] == ',') {
+            pendingProblem = "not a number";
+            return false;
+        }
+        pendingComma = true;
+        return true;
     }
 
     /** Scans an int at {@code b[from]} (see {@link #scanFloat}). */
