@@ -372,14 +372,9 @@ final class GeometryLoader {
          * to anything else (or nothing) is a slip, read as that {@code <vertices>} with a warning.
          */
         private void checkVertexReference(XmlElement input) throws ColladaException {
-            String ref = ctx.attr(input, "source");
             XmlElement own = meshElement.child("vertices");
-            XmlElement target = ref.startsWith("#") ? ctx.byId(ref.substring(1)) : null;
-            if (target != own) {
-                if (target == null && ref.indexOf('#') > 0) {
-                    ctx.resolve(input, "source", "vertices"); // another document: refused there
-                }
-                ctx.warn(input, "source=\"" + ref + "\" is not this mesh's <vertices>"
+            if (ctx.byId(ctx.referencedId(input, "source")) != own) {
+                ctx.warn(input, "source=\"" + input.attr("source") + "\" is not this mesh's <vertices>"
                         + (own.id() == null ? "" : " \"#" + own.id() + "\"") + ", the only one a VERTEX input can"
                         + " name; read as that");
             }

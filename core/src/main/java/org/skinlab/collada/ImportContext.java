@@ -187,27 +187,8 @@ final class ImportContext {
      */
     XmlElement resolve(XmlElement from, String attribute, String... expected) throws ColladaException {
         String ref = attribute == null ? from.text().trim() : attr(from, attribute);
-        String where = attribute == null ? "reference \"" + ref + "\"" : attribute + "=\"" + ref + "\"";
-        String id;
-        int hash = ref.indexOf('#');
-        if (ref.startsWith("#")) {
-            id = ref.substring(1);
-        } else if (hash > 0) {
-            if (!location.isThisDocument(ref.substring(0, hash))) {
-                throw error(from, where + " points into another document; only references within the file are"
-                        + " supported");
-            }
-            // "self.dae#id": the document names itself by its file name (some exporters do).
-            id = ref.substring(hash + 1);
-            warnOnce("self-url", from, where + " names this document by its file name; read as \"" + ref.substring(hash)
-                    + "\"");
-        } else {
-            id = ref; // not a URI fragment, but some exporters write bare ids
-            if (ids.containsKey(id)) {
-                warn(from, where + " lacks the leading '#'; read as \"#" + id + "\"");
-            }
-        }
-        XmlElement target = ids.get(id);
+        String where = where(ref, attribute);
+        XmlElement target = ids.get(referencedId(from, attribute));
         if (target == null) {
             throw error(from, where + " refers to nothing in the file");
         }
@@ -218,6 +199,38 @@ final class ImportContext {
         }
         throw error(from, where + " refers to a <" + target.name() + ">, expected <"
                 + String.join("> or <", expected) + ">");
+    }
+
+    /**
+     * The id a reference names, whether or not an element has it: {@code "#id"}; {@code
+     * "self.dae#id"} when the document names itself by its file name (warned once per file);
+     * a bare id (warned when it exists). A reference into another document is refused.
+     */
+    String referencedId(XmlElement from, String attribute) throws ColladaException {
+        String ref = attribute == null ? from.text().trim() : attr(from, attribute);
+        int hash = ref.indexOf('#');
+        if (hash == 0) {
+            return ref.substring(1);
+        }
+        if (hash > 0) {
+            if (!location.isThisDocument(ref.substring(0, hash))) {
+                throw error(from, where(ref, attribute) + " points into another document; only references within the"
+                        + " file are supported");
+            }
+            // "self.dae#id": the document names itself by its file name (some exporters do).
+            warnOnce("self-url", from, where(ref, attribute) + " names this document by its file name; read as \""
+                    + ref.substring(hash) + "\"");
+            return ref.substring(hash + 1);
+        }
+        // Not a URI fragment, but some exporters write bare ids.
+        if (ids.containsKey(ref)) {
+            warn(from, where(ref, attribute) + " lacks the leading '#'; read as \"#" + ref + "\"");
+        }
+        return ref;
+    }
+
+    private static String where(String ref, String attribute) {
+        return attribute == null ? "reference \"" + ref + "\"" : attribute + "=\"" + ref + "\"";
     }
 
     /** The parsed {@code <source>} (cached: sources are often shared). */

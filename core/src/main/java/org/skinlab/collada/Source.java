@@ -189,10 +189,11 @@ final class Source {
     private static XmlElement accessorArray(ImportContext ctx, XmlElement accessor, XmlElement own)
             throws ColladaException {
         String ref = ctx.attr(accessor, "source");
-        String id = ref.startsWith("#") ? ref.substring(1) : ref;
-        if (own != null && ctx.byId(id) == null && ref.indexOf('#') <= 0) {
-            ctx.warn(accessor, "source=\"" + ref + "\" refers to nothing in the file; its <source>'s own <"
-                    + own.name() + (own.id() == null ? "" : " id=\"" + own.id() + "\"") + "> is read");
+        if (own != null && ctx.byId(ref.substring(ref.indexOf('#') + 1)) == null) {
+            ctx.referencedId(accessor, "source"); // a reference into another document stays refused
+            ctx.warn(accessor, "source=\"" + accessor.attr("source") + "\" refers to nothing in the file; its"
+                    + " <source>'s own <" + own.name() + (own.id() == null ? "" : " id=\"" + own.id() + "\"")
+                    + "> is read");
             return own;
         }
         return ctx.resolve(accessor, "source", "float_array", "int_array", "Name_array", "IDREF_array",
