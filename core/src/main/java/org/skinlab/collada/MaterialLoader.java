@@ -303,8 +303,10 @@ final class MaterialLoader {
         }
         opacity = Math.max(0, Math.min(1, opacity));
         if (opacity == 0) {
-            ctx.warn(shading, "material \"" + name + "\" would be fully transparent (" + mode + ", transparency " + t
-                    + "); read as opaque, as the exporter almost certainly meant");
+            // 3ds Max, FBX, MeshLab, Blender add-ons all write this: one warning per file says it.
+            ctx.warnOnce("invisible-material", shading, "material \"" + name + "\" (and maybe others) would be fully"
+                    + " transparent by the specification's rule (" + mode + ", transparency " + t + "); read as opaque,"
+                    + " as exporters that write this mean");
             return 1f;
         }
         return (float) opacity;

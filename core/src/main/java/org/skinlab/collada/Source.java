@@ -109,7 +109,7 @@ final class Source {
         }
         int stride = ctx.count(accessor, "stride", 1);
         int offset = ctx.count(accessor, "offset", 0);
-        if (stride == 0) {
+        if (stride == 0 && count > 0) {
             throw ctx.error(accessor, "stride=\"0\"");
         }
         List<XmlElement> params = accessor.children("param");
@@ -134,6 +134,9 @@ final class Source {
                 }
             }
             slot += width;
+        }
+        if (stride == 0) {
+            stride = Math.max(1, slot); // count="0" stride="0": an empty source, however it is laid out
         }
         if (slot > stride) {
             throw ctx.error(accessor, "its params span " + slot + " values but stride=\"" + stride + "\"");

@@ -218,6 +218,30 @@ class ExporterQuirksTest {
                 e::getMessage);
     }
 
+    @Test
+    void anEmptyMeshWithStrideZeroIsEmptyNotRefused() {
+        // pycollada's test file: count="0" stride="0" (nothing to lay out) and an empty <p>.
+        Model m = Fixtures.read("empty.dae", Snippets.collada("""
+                <library_geometries><geometry id="g"><mesh>
+                  <source id="g-vtx"><float_array id="g-vtx-array" count="0"></float_array>
+                    <technique_common><accessor source="#g-vtx-array" count="0" stride="0">
+                      <param name="X" type="float"/><param name="Y" type="float"/><param name="Z" type="float"/>
+                    </accessor></technique_common></source>
+                  <vertices id="g-vertices"><input semantic="POSITION" source="#g-vtx"/></vertices>
+                  <triangles count="0"><input semantic="VERTEX" source="#g-vertices" offset="0"/>
+                    <input semantic="NORMAL" source="#g-vtx" offset="1"/><p>  </p></triangles>
+                </mesh></geometry></library_geometries>
+                <library_visual_scenes><visual_scene id="s"><node><instance_geometry url="#g"/></node>
+                </visual_scene></library_visual_scenes><scene><instance_visual_scene url="#s"/></scene>"""));
+        assertEquals(0, m.meshes().get(0).positionCount());
+        assertEquals(0, m.meshes().get(0).triangleCount());
+        assertEquals(1, m.instances().size());
+        Snippets.assertNoWarnings(m);
+        // With elements to read, stride 0 means nothing: refused.
+        ColladaException e = Fixtures.error("stride.dae", with("count=\"4\" stride=\"3\"", "count=\"4\" stride=\"0\""));
+        assertTrue(e.getMessage().contains("stride=\"0\""), e::getMessage);
+    }
+
     // ------------------------------------------------------------------------------ 2-D positions
 
     @Test

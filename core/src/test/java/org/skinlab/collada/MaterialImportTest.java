@@ -89,7 +89,8 @@ class MaterialImportTest {
     @Test
     void aMaterialTheRuleMakesInvisibleIsReadAsOpaqueWithAWarning() {
         assertEquals(1f, material("invisible").opacity(), 0f);
-        oneWarning(MODEL, "material \"Oops\" would be fully transparent (A_ONE, transparency 0.0); read as opaque");
+        oneWarning(MODEL, "material \"Oops\" (and maybe others) would be fully transparent by the specification's"
+                + " rule (A_ONE, transparency 0.0); read as opaque");
     }
 
     @Test
