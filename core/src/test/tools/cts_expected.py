@@ -124,9 +124,12 @@ References (URLs)
         the sid of a <newparam> (same search) holding <surface>, whose <init_from> text is an
         <image> id (1.5 style: <sampler2D><instance_image url="#img">); when S names no such
         newparam but is the id of an <image>: that image. The image's <init_from> text (1.4.1) or
-        <init_from><ref> (1.5) is a URI: a "file://" prefix stripped (then "/C:/x" is "C:/x"),
-        percent-decoded, "\\" turned into "/"; absolute ("/..." or a drive letter "X:/") kept; any
-        other scheme ("http:", ...): "-"; else joined with PATH's directory and normalised
+        <init_from><ref> (1.5) is a URI, read as exporters write it: "\\" turned into "/"; a
+        "file:" scheme removed ("file:///x" is "/x", "file://localhost/x" is "/x", "file://x" is
+        the relative path "x", as 3ds Max and FBX mean it); any other scheme ("http:", ...): "-";
+        percent-decoded; "/C:/x" is "C:/x"; a leading "/" before "../" or "./" dropped (no root
+        is climbed above); "../../C:/x" (a relative path to another drive) is "C:/x"; absolute
+        ("/..." or a drive letter "X:/") kept; else joined with PATH's directory and normalised
         (posixpath.normpath). "-" when not a texture or unresolvable.
 
   clip | PATH | NAME | CHANNELS
@@ -659,16 +662,28 @@ class Cts:
     def image_path(self, uri):
         if not uri:
             return "-"
-        if uri.startswith("file://"):
-            uri = uri[len("file://"):]
-            if re.match(r"^/[A-Za-z]:[/\\]", uri):
-                uri = uri[1:]
-        uri = unquote(uri).replace("\\", "/")
-        if uri.startswith("/") or DRIVE.match(uri):
-            return uri
-        if SCHEME.match(uri):
+        path = uri.replace("\\", "/")
+        if re.match(r"^file:", path, re.I):
+            path = path[len("file:"):]
+            if path.startswith("///"):
+                path = path[2:]
+            elif path.startswith("//localhost/"):
+                path = path[len("//localhost"):]
+            elif path.startswith("//"):
+                path = path[2:]  # file://relative: exporters mean a path, not a host
+        elif SCHEME.match(path) and not DRIVE.match(path):
             return "-"
-        return posixpath.normpath(posixpath.join(posixpath.dirname(self.path), uri))
+        path = unquote(path)
+        if re.match(r"^/[A-Za-z]:/", path):
+            path = path[1:]
+        elif path.startswith("/../") or path.startswith("/./"):
+            path = path[1:]
+        other_drive = re.match(r"^(?:\.\./)+([A-Za-z]:/.*)$", path)
+        if other_drive:
+            return other_drive.group(1)
+        if path.startswith("/") or DRIVE.match(path):
+            return path
+        return posixpath.normpath(posixpath.join(posixpath.dirname(self.path), path))
 
     # ---- quirks --------------------------------------------------------------------------------
 

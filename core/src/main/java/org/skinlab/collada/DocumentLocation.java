@@ -4,6 +4,8 @@ import java.io.ByteArrayOutputStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 
 /**
  * Where the document being imported lives, and what its relative URLs mean: the document part of
@@ -16,6 +18,13 @@ import java.nio.file.Path;
  * Relative paths are resolved against the document's folder.
  */
 final class DocumentLocation {
+    /** A URI scheme: two or more characters ("C:" is a drive letter). */
+    private static final Pattern SCHEME = Pattern.compile("[A-Za-z][A-Za-z0-9+.-]+");
+    private static final Pattern ROOTED_DRIVE = Pattern.compile("/[A-Za-z]:/.*");
+    private static final Pattern DRIVE = Pattern.compile("[A-Za-z]:/.*");
+    /** 3ds Max's relative path to another drive: ../../C:/maps/a.png. */
+    private static final Pattern OTHER_DRIVE = Pattern.compile("(?:\\.\\./)+([A-Za-z]:/.*)");
+
     private final Path document; // normalised, or null when unknown
 
     DocumentLocation(Path document) {
@@ -62,29 +71,44 @@ final class DocumentLocation {
     /**
      * The path of a URL as written by exporters: percent escapes decoded, backslashes as
      * slashes, a {@code file:} scheme removed; null when the URL has another scheme.
+     *
+     * <ul>
+     * <li>{@code file:///C:/a.png} and {@code file:///home/a.png} are absolute;
+     *     {@code file://a.png} and {@code file://..\maps\a.png} (3ds Max, FBX) are relative
+     *     paths, not a host name; {@code file://localhost/x} is {@code /x};</li>
+     * <li>{@code \..\maps\a.png} (a root cannot be climbed above) is relative;</li>
+     * <li>{@code ../../../C:/maps/a.png} (3ds Max's relative path to another drive) is
+     *     {@code C:/maps/a.png}.</li>
+     * </ul>
      */
     static String filePath(String url) {
         String u = url.trim().replace('\\', '/');
         int colon = u.indexOf(':');
-        // A scheme has two or more characters; "C:" is a drive letter.
-        if (colon > 1 && u.substring(0, colon).matches("[A-Za-z][A-Za-z0-9+.-]*")) {
+        if (colon > 1 && SCHEME.matcher(u.substring(0, colon)).matches()) {
             if (!u.substring(0, colon).equalsIgnoreCase("file")) {
                 return null;
             }
             u = u.substring(colon + 1);
-            if (u.startsWith("//")) {
-                int slash = u.indexOf('/', 2); // file://host/path: the host is dropped
-                u = slash < 0 ? "/" : u.substring(slash);
-            }
-            if (u.matches("/[A-Za-z]:/.*")) {
-                u = u.substring(1); // file:///C:/x
+            if (u.startsWith("///")) {
+                u = u.substring(2);
+            } else if (u.startsWith("//localhost/")) {
+                u = u.substring("//localhost".length());
+            } else if (u.startsWith("//")) {
+                u = u.substring(2);
             }
         }
-        return percentDecode(u);
+        u = percentDecode(u);
+        if (ROOTED_DRIVE.matcher(u).matches()) {
+            u = u.substring(1); // file:///C:/x
+        } else if (u.startsWith("/../") || u.startsWith("/./")) {
+            u = u.substring(1);
+        }
+        Matcher drive = OTHER_DRIVE.matcher(u);
+        return drive.matches() ? drive.group(1) : u;
     }
 
     private static boolean isAbsolute(String path) {
-        return path.startsWith("/") || path.matches("[A-Za-z]:/.*");
+        return path.startsWith("/") || DRIVE.matcher(path).matches();
     }
 
     /** Decodes %XX escapes as UTF-8; a malformed escape is kept as written. */

@@ -30,6 +30,7 @@ final class ImportContext {
     private final Map<XmlElement, Source> sources = new IdentityHashMap<>();
     private final List<ImportWarning> warnings = new ArrayList<>();
     private final Set<String> warnedOnce = new HashSet<>();
+    private Set<String> nodeNames; // made on first use
     private int droppedWarnings;
 
     ImportContext(String file, XmlElement root) {
@@ -95,6 +96,29 @@ final class ImportContext {
             result.add(new ImportWarning("document", droppedWarnings + " more warnings not shown"));
         }
         return result;
+    }
+
+    /** The id, sid and name of every {@code <node>} of the document (library nodes included). */
+    Set<String> nodeNames() {
+        if (nodeNames == null) {
+            nodeNames = new HashSet<>();
+            Deque<XmlElement> todo = new ArrayDeque<>();
+            todo.push(root);
+            while (!todo.isEmpty()) {
+                XmlElement e = todo.pop();
+                if (e.name().equals("node")) {
+                    for (String key : new String[] {e.id(), e.attr("sid"), e.attr("name")}) {
+                        if (key != null) {
+                            nodeNames.add(key);
+                        }
+                    }
+                }
+                for (XmlElement c : e.children()) {
+                    todo.push(c);
+                }
+            }
+        }
+        return nodeNames;
     }
 
     /** The document's root element. */

@@ -434,7 +434,8 @@ final class SceneLoader {
             }
             if (kind == TransformElement.Kind.MATRIX) {
                 RowMajor.checkBottomRow(ctx, v, 0, c, "matrix");
-            } else if (kind == TransformElement.Kind.ROTATE && v[0] == 0f && v[1] == 0f && v[2] == 0f) {
+            } else if (kind == TransformElement.Kind.ROTATE && v[0] == 0f && v[1] == 0f && v[2] == 0f && v[3] != 0f) {
+                // "0 0 0 0" (FBX pivots write it) is no rotation by any reading: nothing to say.
                 ctx.warn(c, "rotation about a zero axis; treated as no rotation");
             } else if (kind == TransformElement.Kind.SKEW && (isZero(v, 1) || isZero(v, 4))) {
                 ctx.warn(c, "skew with a zero axis; treated as no skew");
@@ -554,12 +555,17 @@ final class SceneLoader {
         XmlElement common = bind == null ? null : bind.child("technique_common");
         Set<String> bound = new HashSet<>();
         if (common != null) {
+            Set<String> used = new HashSet<>();
+            for (MeshPart part : mesh.parts()) {
+                used.add(part.material());
+            }
             for (XmlElement im : common.children("instance_material")) {
                 String symbol = im.attr("symbol");
                 if (symbol == null || !bound.add(symbol)) {
                     continue;
                 }
-                Material material = material(im);
+                // A binding for a symbol the mesh does not use changes nothing, dangling or not.
+                Material material = used.contains(symbol) ? material(im) : materialOrNull(im);
                 if (material == null) {
                     continue;
                 }
@@ -577,6 +583,13 @@ final class SceneLoader {
                     + " of mesh \"" + mesh.id() + "\" bound to no material; drawn with the default material");
         }
         return result;
+    }
+
+    /** The material an {@code <instance_material>} names, or null (no warning). */
+    private Material materialOrNull(XmlElement instanceMaterial) {
+        String target = instanceMaterial.attr("target");
+        XmlElement e = target == null ? null : ctx.byId(target.substring(target.indexOf('#') + 1));
+        return e == null ? null : materials.get(e);
     }
 
     /** The material an {@code <instance_material>} names, or null with a warning. */

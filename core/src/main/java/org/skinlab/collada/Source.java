@@ -88,6 +88,9 @@ final class Source {
                 throw ctx.error(array, "a bool_array cannot feed geometry, skin or animation data");
             default:
                 names = NumberParser.names(ctx, array, -1);
+                if (declared >= 0 && names.length > declared) {
+                    names = SpacedNames.rejoin(ctx, array, names, declared);
+                }
                 length = names.length;
                 break;
         }

@@ -57,6 +57,29 @@ class ExporterQuirksTest {
     }
 
     @Test
+    void jointNamesWithSpacesAreSplitByTheScenesNodeNames() {
+        Model m = Fixtures.resource("quirks/fbx-spaced-joint-names.dae");
+        Skin skin = m.skins().get(0);
+        assertEquals(List.of("Bip01 Spine", "Bip01 Spine1", "Bip01 Pelvis"), skin.jointNames());
+        org.skinlab.model.MeshInstance instance = m.instances().get(0);
+        for (int j = 0; j < 3; j++) {
+            assertEquals(skin.jointNames().get(j), m.node(instance.jointNode(j)).id());
+        }
+        oneWarning(m, "count=\"3\" but 6 words: the names have spaces in them");
+        oneWarning(m, "no <param> of this accessor has a name");
+        assertEquals(2, m.warnings().size(), () -> m.warnings().toString());
+    }
+
+    @Test
+    void wordsThatSplitIntoNoSceneNamesStayACountMismatch() {
+        // "Bip01 Spine Bip01 Spine1 Bip01 Pelvis" with count 4: no split into 4 node names exists.
+        String text = Fixtures.text("quirks/fbx-spaced-joint-names.dae").replace(
+                "<Name_array id=\"bar-skin-joints-array\" count=\"3\">", "<Name_array id=\"bar-skin-joints-array\" count=\"4\">");
+        ColladaException e = Fixtures.error("unsplittable.dae", text);
+        assertTrue(e.getMessage().contains("matches no node"), e::getMessage);
+    }
+
+    @Test
     void anUnnamedParamBesideNamedOnesStillSkipsItsSlot() {
         // The specification's rule where it makes sense: X, (unnamed), Z picks values 0 and 2.
         Model m = Fixtures.read("skip.dae", with("<float_array id=\"quad-nrm-array\" count=\"3\">0 0 1</float_array>",

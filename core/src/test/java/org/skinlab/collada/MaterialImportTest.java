@@ -125,6 +125,17 @@ class MaterialImportTest {
     }
 
     @Test
+    void aDanglingBindingForASymbolTheMeshDoesNotUseIsIgnoredQuietly() {
+        // The FBX exporter binds materials of other objects too; one of them names nothing.
+        String text = Fixtures.text(NAME).replace("<instance_material symbol=\"direct\" target=\"#direct-mat\"/>",
+                "<instance_material symbol=\"direct\" target=\"#direct-mat\"/>"
+                        + "<instance_material symbol=\"elsewhere\" target=\"#Map__1-Material\"/>");
+        Model m = Fixtures.read(NAME, text);
+        assertEquals(MODEL.warnings().size(), m.warnings().size(), () -> m.warnings().toString());
+        assertEquals(9, m.instances().get(0).materials().size(), "the unused, dangling binding is left out");
+    }
+
+    @Test
     void imagesAreListedOncePerImageUsed() {
         assertEquals(4, MODEL.images().size());
         assertEquals("skin-img", MODEL.images().get(0).id());

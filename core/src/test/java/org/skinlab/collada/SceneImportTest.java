@@ -165,6 +165,19 @@ class SceneImportTest {
     }
 
     @Test
+    void aZeroRotationAboutAZeroAxisIsNoRotationWithoutAWarning() {
+        // FBX writes "0 0 0 0" on its pivot nodes, 64 of them in one file: no angle, no question.
+        Model m = Fixtures.read("zero-zero.dae", collada("""
+                <library_visual_scenes><visual_scene id="s">
+                  <node id="n"><rotate sid="pivot">0 0 0 0</rotate><translate>1 0 0</translate></node>
+                </visual_scene></library_visual_scenes>
+                <scene><instance_visual_scene url="#s"/></scene>
+                """));
+        assertRows(new float[][] {{1, 0, 0, 1}, {0, 1, 0, 0}, {0, 0, 1, 0}}, local(m, "n"), EPS);
+        assertNoWarnings(m);
+    }
+
+    @Test
     void matrixWithAProjectiveBottomRowIsTreatedAsAffineWithAWarning() {
         Model m = Fixtures.read("bottom-row.dae", collada("""
                 <library_visual_scenes><visual_scene id="s">
