@@ -129,7 +129,7 @@ public final class ColladaImporter {
         Map<XmlElement, Material> materials = materialLoader.loadAll(root);
 
         SceneLoader.Result scene = new SceneLoader(ctx, meshesByGeometry, morphsByController, skinsByController,
-                materials).load(root);
+                materials, asset.authoringTool()).load(root);
         List<AnimationClip> clips = new AnimationLoader(ctx, scene.nodes, scene.nodesById, asset.authoringTool())
                 .load(root);
         return new Model(name, asset, meshes, skins, new ArrayList<>(morphsByController.values()),

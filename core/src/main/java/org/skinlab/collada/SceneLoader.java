@@ -5,19 +5,14 @@ import java.util.ArrayList;
 import java.util.Collections;
 import java.util.Deque;
 import java.util.HashMap;
-import java.util.HashSet;
 import java.util.IdentityHashMap;
-import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
 
-import org.joml.Matrix4f;
 import org.skinlab.model.Material;
-import org.skinlab.model.MaterialBinding;
 import org.skinlab.model.Mesh;
 import org.skinlab.model.MeshInstance;
-import org.skinlab.model.MeshPart;
 import org.skinlab.model.Morph;
 import org.skinlab.model.Node;
 import org.skinlab.model.Skin;
@@ -28,13 +23,16 @@ import org.skinlab.model.TransformElement;
  * copies), each node's transform stack, and the meshes placed in it, with every skin joint
  * resolved to a node.
  *
+ * <p>Its helpers, one job each: {@link TransformReader} (a node's transform stack),
+ * {@link InstanceExpansion} ({@code <instance_node>} targets, cycles and instancing bombs),
+ * {@link JointResolver} (skeleton roots and joints to nodes), {@link MaterialBinder} (material
+ * symbols to materials).
+ *
  * <p>Lenient (with a warning): no {@code <scene>} (the first visual scene is used); a
- * {@code <skeleton>} that names no node (ignored); joints found by id or name when no sid
- * matches under the skeleton roots; {@code <skew>} with a zero axis; a rotation about a zero axis;
- * a {@code <lookat>} without a view direction (the node stays unrotated at the eye); a matrix
- * whose bottom row is not (0 0 0 1). Refused: {@code <instance_node>} cycles, more than
- * {@link #MAX_INSTANCE_DEPTH} nested instances or {@link #MAX_NODES} nodes in all (instancing
- * bombs), transforms with the wrong number of values, and joints that match no node.
+ * {@code <skeleton>} that names no node (ignored); skeletons in {@code <library_nodes>} that
+ * nothing places (instantiated as scene roots); a morph on a skin (drawn as the skin). Refused:
+ * {@code <instance_node>} cycles, more than {@link #MAX_INSTANCE_DEPTH} nested instances or
+ * {@link #MAX_NODES} nodes in all (instancing bombs), and joints that match no node.
  */
 final class SceneLoader {
     static final int MAX_NODES = 1_000_000;
@@ -44,28 +42,28 @@ final class SceneLoader {
     private final Map<XmlElement, Mesh> meshes;
     private final Map<XmlElement, Morph> morphs;
     private final Map<XmlElement, Skin> skins;
-    private final Map<XmlElement, Material> materials;
+    private final TransformReader transforms;
+    private final InstanceExpansion expansion;
+    private final MaterialBinder binder;
+    private JointResolver joints; // once the scene is walked
 
     // Drafts of the nodes, in depth-first order.
     private final List<Draft> drafts = new ArrayList<>();
     private final Map<String, IntList> byId = new HashMap<>();
     private final Map<String, IntList> bySid = new HashMap<>();
     private final Map<String, IntList> byName = new HashMap<>();
-    private final Map<String, RootScope> scopes = new HashMap<>();
-    private int[] subtreeEnd;
-    private int[] parents;
-    /** Expanded subtree sizes, memoized across calls of {@link #checkExpandedSize}. */
-    private final Map<XmlElement, Long> expandedSizes = new IdentityHashMap<>();
-    /** The target of each {@code <instance_node>}, resolved once by {@link #checkExpandedSize}. */
-    private final Map<XmlElement, XmlElement> instanceTargets = new IdentityHashMap<>();
 
+    /** @param authoringTool the file's authoring tool, or null (some exporter habits depend on it) */
     SceneLoader(ImportContext ctx, Map<XmlElement, Mesh> meshesByGeometry, Map<XmlElement, Morph> morphsByController,
-            Map<XmlElement, Skin> skinsByController, Map<XmlElement, Material> materialsByElement) {
+            Map<XmlElement, Skin> skinsByController, Map<XmlElement, Material> materialsByElement,
+            String authoringTool) {
         this.ctx = ctx;
         this.meshes = meshesByGeometry;
         this.morphs = morphsByController;
         this.skins = skinsByController;
-        this.materials = materialsByElement;
+        this.transforms = new TransformReader(ctx, authoringTool);
+        this.expansion = new InstanceExpansion(ctx);
+        this.binder = new MaterialBinder(ctx, materialsByElement);
     }
 
     /** The nodes and instances of the scene (empty when the file has no visual scene). */
@@ -87,7 +85,7 @@ final class SceneLoader {
         final int parent;
         final boolean instanced;
         final IntList children = new IntList(4);
-        final List<TransformElement> transforms = new ArrayList<>(4);
+        List<TransformElement> transforms;
         final List<XmlElement> meshInstances = new ArrayList<>(1);
 
         Draft(XmlElement element, int index, int parent, boolean instanced) {
@@ -138,7 +136,7 @@ final class SceneLoader {
         if (visualScene == null) {
             return new Result(List.of(), List.of(), Map.of());
         }
-        long size = checkExpandedSize(visualScene.children("node"), visualScene, 0);
+        long size = expansion.checkExpandedSize(visualScene.children("node"), visualScene, 0);
         Deque<Pending> todo = new ArrayDeque<>();
         pushChildren(todo, visualScene, -1, null);
         walk(todo);
@@ -146,14 +144,14 @@ final class SceneLoader {
         // those a <skeleton> names, then (with them in place) those holding joints found nowhere else.
         for (int phase = 0; phase < 2; phase++) {
             for (XmlElement root : libraryRoots(phase == 0)) {
-                size = checkExpandedSize(List.of(root), root, size);
+                size = expansion.checkExpandedSize(List.of(root), root, size);
                 todo.push(new Pending(root, -1, null));
                 walk(todo);
             }
         }
         int n = drafts.size();
-        parents = new int[n];
-        subtreeEnd = new int[n];
+        int[] parents = new int[n];
+        int[] subtreeEnd = new int[n];
         for (int i = n - 1; i >= 0; i--) {
             parents[i] = drafts.get(i).parent;
             int end = i + 1;
@@ -163,6 +161,7 @@ final class SceneLoader {
             }
             subtreeEnd[i] = end;
         }
+        joints = new JointResolver(ctx, byId, bySid, byName, parents, subtreeEnd);
         List<Node> nodes = new ArrayList<>(n);
         for (Draft d : drafts) {
             XmlElement e = d.element;
@@ -196,7 +195,7 @@ final class SceneLoader {
             index(byId, p.element.id(), d.index);
             index(bySid, p.element.attr("sid"), d.index);
             index(byName, p.element.attr("name"), d.index);
-            readTransforms(d);
+            d.transforms = transforms.read(p.element);
             pushChildren(todo, p.element, d.index, p.chain);
         }
     }
@@ -306,9 +305,9 @@ final class SceneLoader {
             if (c.name().equals("node")) {
                 children.add(new Pending(c, parent, chain));
             } else if (c.name().equals("instance_node") && parent >= 0) {
-                XmlElement target = instanceTarget(c);
+                XmlElement target = expansion.instanceTarget(c);
                 if (chain != null && chain.contains(target)) {
-                    throw cycle(c);
+                    throw expansion.cycle(c);
                 }
                 Chain inner = new Chain(target, chain);
                 if (inner.depth > MAX_INSTANCE_DEPTH) {
@@ -324,134 +323,6 @@ final class SceneLoader {
         }
     }
 
-    private XmlElement instanceTarget(XmlElement instanceNode) throws ColladaException {
-        XmlElement target = instanceTargets.get(instanceNode);
-        if (target == null) {
-            target = ctx.resolve(instanceNode, "url", "node");
-            instanceTargets.put(instanceNode, target);
-        }
-        return target;
-    }
-
-    private ColladaException cycle(XmlElement instanceNode) {
-        return ctx.error(instanceNode, "instance_node url=\"" + instanceNode.attr("url")
-                + "\" instantiates a node that contains it (a cycle)");
-    }
-
-    /** A node whose expanded size is being computed: its edges and the sizes summed so far. */
-    private static final class SizeFrame {
-        final XmlElement node;
-        final List<XmlElement> edges = new ArrayList<>(4);   // child nodes and instance targets
-        final List<XmlElement> via = new ArrayList<>(4);     // the <instance_node>, or null for a child
-        int next;
-        long size = 1;
-
-        SizeFrame(XmlElement node) {
-            this.node = node;
-        }
-    }
-
-    /**
-     * Refuses an instancing bomb before anything is built. Library nodes that each instance the
-     * previous one ten times make a 2 KB file that expands to 10^8 nodes; building drafts up to
-     * {@link #MAX_NODES} would cost half a second and hundreds of megabytes (an OutOfMemoryError
-     * on a 128 MB heap, common on phones). So each node's expanded size is computed first, once
-     * per element (memoized; iterative, since nesting and instancing depth are the file's to
-     * choose), saturating above the limit, and the first node found to exceed it is named.
-     * Instance cycles show up here as an edge back to a node on the current path.
-     */
-    private long checkExpandedSize(List<XmlElement> tops, XmlElement scope, long total) throws ColladaException {
-        Map<XmlElement, Long> sizes = expandedSizes;
-        Map<XmlElement, Boolean> onPath = new IdentityHashMap<>();
-        Deque<SizeFrame> path = new ArrayDeque<>();
-        for (XmlElement top : tops) {
-            path.push(sizeFrame(top, onPath));
-            while (!path.isEmpty()) {
-                SizeFrame f = path.peek();
-                if (f.next < f.edges.size()) {
-                    XmlElement target = f.edges.get(f.next);
-                    XmlElement via = f.via.get(f.next);
-                    f.next++;
-                    Long known = sizes.get(target);
-                    if (known != null) {
-                        f.size = Math.min(MAX_NODES + 1L, f.size + known);
-                    } else if (onPath.containsKey(target)) {
-                        throw cycle(via);
-                    } else {
-                        path.push(sizeFrame(target, onPath));
-                    }
-                    continue;
-                }
-                path.pop();
-                onPath.remove(f.node);
-                if (f.size > MAX_NODES) {
-                    throw ctx.error(f.node, "with its <instance_node>s it would expand to more than " + MAX_NODES
-                            + " nodes");
-                }
-                sizes.put(f.node, f.size);
-                if (!path.isEmpty()) {
-                    path.peek().size = Math.min(MAX_NODES + 1L, path.peek().size + f.size);
-                }
-            }
-            total += sizes.get(top);
-            if (total > MAX_NODES) {
-                throw ctx.error(scope, "the scene's nodes would expand to more than " + MAX_NODES + " nodes");
-            }
-        }
-        return total;
-    }
-
-    private SizeFrame sizeFrame(XmlElement node, Map<XmlElement, Boolean> onPath) throws ColladaException {
-        SizeFrame f = new SizeFrame(node);
-        onPath.put(node, Boolean.TRUE);
-        for (XmlElement c : node.children()) {
-            if (c.name().equals("node")) {
-                f.edges.add(c);
-                f.via.add(null);
-            } else if (c.name().equals("instance_node")) {
-                f.edges.add(instanceTarget(c));
-                f.via.add(c);
-            }
-        }
-        return f;
-    }
-
-    private void readTransforms(Draft d) throws ColladaException {
-        for (XmlElement c : d.element.children()) {
-            TransformElement.Kind kind;
-            switch (c.name()) {
-                case "matrix": kind = TransformElement.Kind.MATRIX; break;
-                case "translate": kind = TransformElement.Kind.TRANSLATE; break;
-                case "rotate": kind = TransformElement.Kind.ROTATE; break;
-                case "scale": kind = TransformElement.Kind.SCALE; break;
-                case "lookat": kind = TransformElement.Kind.LOOKAT; break;
-                case "skew": kind = TransformElement.Kind.SKEW; break;
-                default: continue;
-            }
-            float[] v = NumberParser.floats(ctx, c, -1);
-            if (v.length != kind.size()) {
-                throw ctx.error(c, "has " + v.length + " values, expected " + kind.size());
-            }
-            if (kind == TransformElement.Kind.MATRIX) {
-                RowMajor.checkBottomRow(ctx, v, 0, c, "matrix");
-            } else if (kind == TransformElement.Kind.ROTATE && v[0] == 0f && v[1] == 0f && v[2] == 0f && v[3] != 0f) {
-                // "0 0 0 0" (FBX pivots write it) is no rotation by any reading: nothing to say.
-                ctx.warn(c, "rotation about a zero axis; treated as no rotation");
-            } else if (kind == TransformElement.Kind.SKEW && (isZero(v, 1) || isZero(v, 4))) {
-                ctx.warn(c, "skew with a zero axis; treated as no skew");
-            } else if (kind == TransformElement.Kind.LOOKAT && !new Matrix4f().setLookAt(v[0], v[1], v[2], v[3], v[4],
-                    v[5], v[6], v[7], v[8]).isFinite()) {
-                ctx.warn(c, "lookat without a view direction (the eye on the interest point, or the up vector"
-                        + " along the view); the node is placed at the eye without rotation");
-            }
-            d.transforms.add(new TransformElement(kind, c.attr("sid"), v));
-        }
-    }
-
-    private static boolean isZero(float[] v, int o) {
-        return v[o] == 0f && v[o + 1] == 0f && v[o + 2] == 0f;
-    }
-
     // ------------------------------------------------------------------------------- instances
 
     private MeshInstance instance(int node, XmlElement inst) throws ColladaException {
@@ -461,7 +332,7 @@ final class SceneLoader {
             if (mesh == null) {
                 return null; // not a <mesh>; warned when the geometry was read
             }
-            return new MeshInstance(node, mesh, null, new int[0], new int[0], bindings(inst, mesh));
+            return new MeshInstance(node, mesh, null, new int[0], new int[0], binder.bindings(inst, mesh));
         }
         XmlElement controller = ctx.resolve(inst, "url", "controller");
         Skin skin = skins.get(controller);
@@ -472,7 +343,7 @@ final class SceneLoader {
             Morph morph = morphs.get(controller);
             if (morph != null) {
                 return new MeshInstance(node, morph.result(), null, new int[0], new int[0],
-                        bindings(inst, morph.result()));
+                        binder.bindings(inst, morph.result()));
             }
             controller = skinUnderMorphs(controller);
             if (controller == null) {
@@ -482,48 +353,9 @@ final class SceneLoader {
             ctx.warn(inst, "morph on skin controller \"" + controller.id() + "\": drawn as that skin, without the"
                     + " morph (a morph after skinning is not supported)");
         }
-        IntList roots = new IntList(2);
-        for (XmlElement s : inst.children("skeleton")) {
-            String ref = s.text().trim();
-            String id = ref.startsWith("#") ? ref.substring(1) : ref;
-            int root = nearest(byId.get(id), node);
-            if (root < 0) {
-                ctx.warn(s, "skeleton root \"" + ref + "\" is not a node of the scene; ignored");
-            } else {
-                roots.add(root);
-            }
-        }
-        int[] rootArray = roots.toArray();
-        RootScope scope = rootArray.length == 0 ? null
-                : scopes.computeIfAbsent(java.util.Arrays.toString(rootArray), k -> new RootScope(rootArray));
-        int[] joints = new int[skin.jointCount()];
-        boolean outsideRoots = false;
-        Map<String, Integer> resolved = new HashMap<>(); // joints of one skin may repeat a name
-        for (int j = 0; j < joints.length; j++) {
-            String name = skin.jointNames().get(j);
-            Integer known = resolved.get(name);
-            int found;
-            if (known != null) {
-                found = known;
-            } else {
-                found = scope == null ? -1 : scope.firstUnder((skin.jointsAreIdrefs() ? byId : bySid).get(name));
-                if (found < 0) {
-                    found = byIdOrName(name, skin.jointsAreIdrefs(), scope, node);
-                    outsideRoots |= found >= 0 && scope != null;
-                }
-                resolved.put(name, found);
-            }
-            if (found < 0) {
-                throw ctx.error(inst, "joint \"" + name + "\" of controller \"" + controller.id() + "\" matches no node"
-                        + " in the scene (by " + (skin.jointsAreIdrefs() ? "id" : "sid, id or name") + ")");
-            }
-            joints[j] = found;
-        }
-        if (outsideRoots) {
-            ctx.warn(inst, "some joints matched no " + (skin.jointsAreIdrefs() ? "id" : "sid")
-                    + " under the <skeleton> roots and were found by id or name instead");
-        }
-        return new MeshInstance(node, skin.mesh(), skin, joints, rootArray, bindings(inst, skin.mesh()));
+        int[] roots = joints.skeletonRoots(inst, node);
+        int[] jointNodes = joints.joints(inst, controller, skin, node, roots);
+        return new MeshInstance(node, skin.mesh(), skin, jointNodes, roots, binder.bindings(inst, skin.mesh()));
     }
 
     /** The skin controller a chain of morphs ends in, or null when it ends in a geometry. */
@@ -542,197 +374,5 @@ final class SceneLoader {
         return c.child("skin") != null ? c : null;
     }
 
-    /**
-     * The materials an instance binds ({@code <bind_material><technique_common><instance_material>}),
-     * and the texture coordinate set each one's {@link Material#baseTexture()} uses: the set its
-     * {@code <bind_vertex_input>} names for the texture's {@code texcoord}, else the first. A
-     * symbol of the mesh that nothing binds, or a binding to no material, is drawn with
-     * {@link Material#DEFAULT}, warned.
-     */
-    private List<MaterialBinding> bindings(XmlElement inst, Mesh mesh) {
-        List<MaterialBinding> result = new ArrayList<>();
-        XmlElement bind = inst.child("bind_material");
-        XmlElement common = bind == null ? null : bind.child("technique_common");
-        Set<String> bound = new HashSet<>();
-        if (common != null) {
-            Set<String> used = new HashSet<>();
-            for (MeshPart part : mesh.parts()) {
-                used.add(part.material());
-            }
-            for (XmlElement im : common.children("instance_material")) {
-                String symbol = im.attr("symbol");
-                if (symbol == null || !bound.add(symbol)) {
-                    continue;
-                }
-                // A binding for a symbol the mesh does not use changes nothing, dangling or not.
-                Material material = used.contains(symbol) ? material(im) : materialOrNull(im);
-                if (material == null) {
-                    continue;
-                }
-                result.add(new MaterialBinding(symbol, material, texCoordSet(im, material, mesh)));
-            }
-        }
-        Set<String> unbound = new LinkedHashSet<>();
-        for (MeshPart part : mesh.parts()) {
-            if (part.material() != null && !bound.contains(part.material())) {
-                unbound.add(part.material());
-            }
-        }
-        if (!unbound.isEmpty()) {
-            ctx.warn(inst, "material symbol" + (unbound.size() == 1 ? " " : "s ") + String.join(", ", unbound)
-                    + " of mesh \"" + mesh.id() + "\" bound to no material; drawn with the default material");
-        }
-        return result;
-    }
 
-    /** The material an {@code <instance_material>} names, or null (no warning). */
-    private Material materialOrNull(XmlElement instanceMaterial) {
-        String target = instanceMaterial.attr("target");
-        XmlElement e = target == null ? null : ctx.byId(target.substring(target.indexOf('#') + 1));
-        return e == null ? null : materials.get(e);
-    }
-
-    /** The material an {@code <instance_material>} names, or null with a warning. */
-    private Material material(XmlElement instanceMaterial) {
-        try {
-            return materials.get(ctx.resolve(instanceMaterial, "target", "material"));
-        } catch (ColladaException e) {
-            ctx.warn(instanceMaterial, e.problem() + "; drawn with the default material");
-            return null;
-        }
-    }
-
-    private int texCoordSet(XmlElement instanceMaterial, Material material, Mesh mesh) {
-        if (material.baseTexture() == null || mesh.texCoordSetCount() == 0) {
-            return -1;
-        }
-        String texcoord = material.baseTexture().texcoord();
-        for (XmlElement b : instanceMaterial.children("bind_vertex_input")) {
-            if (texcoord != null && texcoord.equals(b.attr("semantic"))
-                    && (b.attr("input_semantic") == null || "TEXCOORD".equals(b.attr("input_semantic")))) {
-                String set = b.attr("input_set");
-                int number;
-                try {
-                    number = set == null ? mesh.texCoordSetNumber(0) : Integer.parseInt(set.trim());
-                } catch (NumberFormatException e) {
-                    number = Integer.MIN_VALUE;
-                }
-                int index = mesh.texCoordSetIndex(number);
-                if (index < 0) {
-                    ctx.warn(b, "input_set=\"" + set + "\" is no texture coordinate set of mesh \"" + mesh.id()
-                            + "\"; the first set is used");
-                    return 0;
-                }
-                return index;
-            }
-        }
-        return 0;
-    }
-
-    /**
-     * Fallback joint lookup: by id, then (for Name_array joints) by name and by sid; under the
-     * skeleton roots first (when there are any), then anywhere, preferring the copy nearest the
-     * instance.
-     */
-    private int byIdOrName(String name, boolean idrefs, RootScope scope, int node) {
-        List<Map<String, IntList>> maps = idrefs ? List.of(byId) : List.of(byId, byName, bySid);
-        if (scope != null) {
-            for (Map<String, IntList> map : maps) {
-                int found = scope.firstUnder(map.get(name));
-                if (found >= 0) {
-                    return found;
-                }
-            }
-        }
-        for (Map<String, IntList> map : maps) {
-            int found = nearest(map.get(name), node);
-            if (found >= 0) {
-                return found;
-            }
-        }
-        return -1;
-    }
-
-    /**
-     * The {@code <skeleton>} roots of an instance, as a rank per node: the file-order position of
-     * the first root whose subtree holds the node. "The first candidate under the first root that
-     * has one" is then the candidate of lowest rank (lowest index on ties), found in one pass over
-     * the candidates, whatever the number of roots: a file with many roots and many joints must
-     * not cost roots x joints steps. Built once per distinct root list, in one forward pass
-     * (parents come before children).
-     */
-    private final class RootScope {
-        private final int[] rank;
-
-        RootScope(int[] roots) {
-            int n = drafts.size();
-            int[] own = new int[n];
-            java.util.Arrays.fill(own, Integer.MAX_VALUE);
-            for (int k = roots.length - 1; k >= 0; k--) {
-                own[roots[k]] = k; // the first occurrence of a root wins
-            }
-            rank = new int[n];
-            for (int i = 0; i < n; i++) {
-                int inherited = parents[i] < 0 ? Integer.MAX_VALUE : rank[parents[i]];
-                rank[i] = Math.min(own[i], inherited);
-            }
-        }
-
-        /** The candidate under the first root that holds one (lowest index), or -1. */
-        int firstUnder(IntList candidates) {
-            if (candidates == null) {
-                return -1;
-            }
-            int best = -1;
-            int bestRank = Integer.MAX_VALUE;
-            for (int i = 0; i < candidates.size(); i++) {
-                int c = candidates.get(i);
-                if (rank[c] < bestRank) {
-                    best = c;
-                    bestRank = rank[c];
-                }
-            }
-            return best;
-        }
-    }
-
-    /** The smallest candidate in [from, to), or -1 (binary search over the ascending list). */
-    private static int firstInRange(IntList candidates, int from, int to) {
-        int lo = 0;
-        int hi = candidates.size();
-        while (lo < hi) {
-            int mid = (lo + hi) >>> 1;
-            if (candidates.get(mid) < from) {
-                lo = mid + 1;
-            } else {
-                hi = mid;
-            }
-        }
-        return lo < candidates.size() && candidates.get(lo) < to ? candidates.get(lo) : -1;
-    }
-
-    /**
-     * Of several nodes with the same id (copies made by instance_node), the one that shares the
-     * deepest ancestor with {@code from}; the first one on ties. -1 when there is none.
-     *
-     * <p>Walks up from {@code from}: the first ancestor whose subtree holds a candidate is the
-     * deepest common ancestor any candidate can share, and every candidate in that subtree shares
-     * exactly it, so the first of them is the answer; when no ancestor holds one, all tie and the
-     * first candidate wins. Cost: depth x log(candidates), not candidates x depth.
-     */
-    private int nearest(IntList candidates, int from) {
-        if (candidates == null || candidates.size() == 0) {
-            return -1;
-        }
-        if (candidates.size() == 1) {
-            return candidates.get(0);
-        }
-        for (int a = from; a >= 0; a = parents[a]) {
-            int c = firstInRange(candidates, a, subtreeEnd[a]);
-            if (c >= 0) {
-                return c;
-            }
-        }
-        return candidates.get(0);
-    }
 }
