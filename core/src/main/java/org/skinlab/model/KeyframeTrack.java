@@ -12,7 +12,7 @@ import java.util.Arrays;
  * {@code (t_k, v_k)}, key k's out-tangent, key k+1's in-tangent and {@code (t_k+1, v_k+1)}, for
  * BEZIER and HERMITE keys alike. The importer converts what the file writes into this form
  * (HERMITE derivatives T become {@code P + T/3} and {@code P - T/3}; 1-D tangents get their time a
- * third of the way to the neighbouring key): see {@code AnimationLoader.controlPoints} and
+ * third of the way to the neighbouring key): see {@code CurveTangents.controlPoints} and
  * docs/animation.md. The interpolation names stay as the file gives them.
  */
 public final class KeyframeTrack {

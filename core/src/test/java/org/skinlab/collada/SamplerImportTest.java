@@ -159,7 +159,7 @@ class SamplerImportTest {
         // t[k] - (t[k] - t[k-1]) / 3 (key 0 has no previous key: its own time), of its
         // out-tangent t[k] + (t[k+1] - t[k]) / 3 (the last key: its own time), so in-times 0, 2/3,
         // 3 and out-times 1/3, 2, 4. The control value is the key's value minus the in-tangent and
-        // plus the out-tangent (FCollada 1.x, see AnimationLoader.controlPoints):
+        // plus the out-tangent (FCollada 1.x, see CurveTangents.controlPoints):
         //   in:  0 - 0.5, 3 - 1.5, 6 - 2.5;  out: 0 - 0.5, 3 - 1.5, 6 - 2.5.
         Model m = Fixtures.read("bezier-1d.dae", document(NODE,
                 curve("N/rotateX.ANGLE", "0 1 4", "0 3 6", 1, "BEZIER BEZIER BEZIER", "0.5 1.5 2.5",
