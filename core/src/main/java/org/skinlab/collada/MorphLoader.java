@@ -2,6 +2,7 @@ package org.skinlab.collada;
 
 import java.util.ArrayList;
 import java.util.IdentityHashMap;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -33,17 +34,10 @@ final class MorphLoader {
 
     /** Every morph controller's morph (those on a skin excluded), in document order. */
     Map<XmlElement, Morph> loadAll(XmlElement collada) throws ColladaException {
+        Map<XmlElement, Morph> inOrder = new LinkedHashMap<>();
         for (XmlElement library : collada.children("library_controllers")) {
             for (XmlElement controller : library.children("controller")) {
-                if (controller.child("morph") != null) {
-                    load(controller);
-                }
-            }
-        }
-        Map<XmlElement, Morph> inOrder = new java.util.LinkedHashMap<>();
-        for (XmlElement library : collada.children("library_controllers")) {
-            for (XmlElement controller : library.children("controller")) {
-                Morph m = morphs.get(controller);
+                Morph m = controller.child("morph") == null ? null : load(controller);
                 if (m != null) {
                     inOrder.put(controller, m);
                 }
@@ -60,6 +54,10 @@ final class MorphLoader {
         XmlElement morph = controller.child("morph");
         if (loading.put(controller, Boolean.TRUE) != null) {
             throw ctx.error(morph, "source=\"" + morph.attr("source") + "\" leads back to this morph (a cycle)");
+        }
+        if (loading.size() > SceneLoader.MAX_INSTANCE_DEPTH) {
+            // Each morph on a morph is a level of recursion: a hostile chain must not overflow the stack.
+            throw ctx.error(morph, "more than " + SceneLoader.MAX_INSTANCE_DEPTH + " morphs on morphs");
         }
         Mesh base = base(morph);
         Morph result = base == null ? null : read(controller, morph, base);

@@ -94,6 +94,20 @@ class MorphImportTest {
     }
 
     @Test
+    void aChainOfTooManyMorphsIsRefusedNotAStackOverflow() {
+        // Listed last first, so reading the first controller recurses through the whole chain.
+        StringBuilder chain = new StringBuilder();
+        for (int i = 10_000; i >= 1; i--) {
+            chain.append("<controller id=\"m").append(i).append("\"><morph source=\"#")
+                    .append(i == 1 ? "g" : "m" + (i - 1)).append("\"><targets/></morph></controller>\n");
+        }
+        ColladaException e = Fixtures.error("chain.dae", Snippets.collada(
+                "<library_geometries>" + Snippets.geometry("g", 3) + "</library_geometries>",
+                "<library_controllers>" + chain + "</library_controllers>"));
+        assertEquals("more than 64 morphs on morphs", e.problem());
+    }
+
+    @Test
     void aMorphCycleIsRefused() {
         String text = Fixtures.text("quirks/morphs.dae").replace("<morph source=\"#relative\" method=\"RELATIVE\">",
                 "<morph source=\"#chained\" method=\"RELATIVE\">");
