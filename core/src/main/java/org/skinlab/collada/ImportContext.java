@@ -253,6 +253,14 @@ final class ImportContext {
         return ref;
     }
 
+    /**
+     * The id part of a reference, without checks or warnings: what follows '#', or the whole
+     * text (a bare id). For lookups that may fail quietly; {@link #referencedId} is the checked one.
+     */
+    static String idPart(String ref) {
+        return ref.substring(ref.indexOf('#') + 1);
+    }
+
     private static String where(String ref, String attribute) {
         return attribute == null ? "reference \"" + ref + "\"" : attribute + "=\"" + ref + "\"";
     }

@@ -44,7 +44,7 @@ final class JointResolver {
         IntList roots = new IntList(2);
         for (XmlElement s : inst.children("skeleton")) {
             String ref = s.text().trim();
-            String id = ref.startsWith("#") ? ref.substring(1) : ref;
+            String id = ImportContext.idPart(ref);
             int root = nearest(byId.get(id), node);
             if (root < 0) {
                 ctx.warn(s, "skeleton root \"" + ref + "\" is not a node of the scene; ignored");

@@ -72,7 +72,7 @@ final class MaterialBinder {
     /** The material an {@code <instance_material>} names, or null (no warning). */
     private Material materialOrNull(XmlElement instanceMaterial) {
         String target = instanceMaterial.attr("target");
-        XmlElement e = target == null ? null : ctx.byId(target.substring(target.indexOf('#') + 1));
+        XmlElement e = target == null ? null : ctx.byId(ImportContext.idPart(target));
         return e == null ? null : materials.get(e);
     }
 

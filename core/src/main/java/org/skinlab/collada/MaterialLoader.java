@@ -238,7 +238,7 @@ final class MaterialLoader {
     }
 
     private XmlElement imageById(String id) {
-        XmlElement e = ctx.byId(id.startsWith("#") ? id.substring(1) : id);
+        XmlElement e = ctx.byId(ImportContext.idPart(id));
         return e != null && e.name().equals("image") ? e : null;
     }
 

@@ -217,7 +217,7 @@ final class SceneLoader {
                 }
                 if (skeletonRoots) {
                     for (XmlElement s : inst.children("skeleton")) {
-                        String id = fragment(s.text().trim());
+                        String id = ImportContext.idPart(s.text().trim());
                         XmlElement target = byId.containsKey(id) ? null : ctx.byId(id);
                         if (target != null && target.name().equals("node") && seen.add(target)) {
                             ctx.warn(s, "skeleton root \"" + s.text().trim() + "\" lives in <library_nodes> and is"
@@ -227,7 +227,7 @@ final class SceneLoader {
                     }
                     continue;
                 }
-                Skin skin = skins.get(ctx.byId(fragment(String.valueOf(inst.attr("url")))));
+                Skin skin = skins.get(ctx.byId(ImportContext.idPart(String.valueOf(inst.attr("url")))));
                 if (skin == null) {
                     continue;
                 }
@@ -271,9 +271,6 @@ final class SceneLoader {
         return null;
     }
 
-    private static String fragment(String ref) {
-        return ref.startsWith("#") ? ref.substring(1) : ref;
-    }
 
     private XmlElement visualScene(XmlElement collada) throws ColladaException {
         XmlElement scene = collada.child("scene");

@@ -195,7 +195,7 @@ final class Source {
     private static XmlElement accessorArray(ImportContext ctx, XmlElement accessor, XmlElement own)
             throws ColladaException {
         String ref = ctx.attr(accessor, "source");
-        if (own != null && ctx.byId(ref.substring(ref.indexOf('#') + 1)) == null) {
+        if (own != null && ctx.byId(ImportContext.idPart(ref)) == null) {
             ctx.referencedId(accessor, "source"); // a reference into another document stays refused
             ctx.warn(accessor, "source=\"" + accessor.attr("source") + "\" refers to nothing in the file; its"
                     + " <source>'s own <" + own.name() + (own.id() == null ? "" : " id=\"" + own.id() + "\"")

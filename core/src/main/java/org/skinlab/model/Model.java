@@ -36,12 +36,6 @@ public final class Model {
     private final List<AnimationClip> clips;
     private final List<ImportWarning> warnings;
 
-    /** A model without morphs, materials and images. */
-    public Model(String source, AssetInfo asset, List<Mesh> meshes, List<Skin> skins, List<Node> nodes,
-            List<MeshInstance> instances, List<AnimationClip> clips, List<ImportWarning> warnings) {
-        this(source, asset, meshes, skins, List.of(), List.of(), List.of(), nodes, instances, clips, warnings);
-    }
-
     public Model(String source, AssetInfo asset, List<Mesh> meshes, List<Skin> skins, List<Morph> morphs,
             List<Material> materials, List<Image> images, List<Node> nodes, List<MeshInstance> instances,
             List<AnimationClip> clips, List<ImportWarning> warnings) {

@@ -53,7 +53,7 @@ class AnimationSamplerTest {
     private static final float C45 = (float) Math.cos(Math.PI / 4);
 
     private static final Skeleton SKELETON = Skeleton.of(new Model("sampler-test",
-            new AssetInfo(UpAxis.Y_UP, 1, "meter", null, true), List.of(), List.of(),
+            new AssetInfo(UpAxis.Y_UP, 1, "meter", null, true), List.of(), List.of(), List.of(), List.of(), List.of(),
             List.of(new Node(0, -1, new int[0], "N", "N", "N", true, false, List.of(
                     new TransformElement(TransformElement.Kind.TRANSLATE, "translate", new float[] {0, 5, 6}),
                     new TransformElement(TransformElement.Kind.ROTATE, "rotateZ", new float[] {0, 0, 1, 0}),
