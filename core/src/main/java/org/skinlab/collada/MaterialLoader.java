@@ -5,6 +5,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Set;
 
 import org.skinlab.model.Image;
 import org.skinlab.model.Material;
@@ -29,7 +30,7 @@ import org.skinlab.model.Texture;
  * ({@link DocumentLocation}); no file is opened.
  */
 final class MaterialLoader {
-    private static final String[] SHADINGS = {"constant", "lambert", "phong", "blinn"};
+    private static final Set<String> SHADINGS = Set.of("constant", "lambert", "phong", "blinn");
 
     private final ImportContext ctx;
     private final Map<XmlElement, Image> images = new LinkedHashMap<>();
@@ -71,10 +72,9 @@ final class MaterialLoader {
         XmlElement shading = null;
         if (technique != null) {
             for (XmlElement c : technique.children()) {
-                for (String s : SHADINGS) {
-                    if (shading == null && c.name().equals(s)) {
-                        shading = c;
-                    }
+                if (SHADINGS.contains(c.name())) {
+                    shading = c;
+                    break;
                 }
             }
         }
