@@ -6,7 +6,7 @@ import java.util.concurrent.atomic.AtomicReference;
 import java.util.concurrent.locks.LockSupport;
 
 /**
- * Runs any {@link Skinner} over several threads: {@link #skin} cuts its range into a few chunks
+ * Runs any {@link Skinner} over several threads: {@link #skin} (and {@link #skinFrames}) cuts its range into a few chunks
  * per thread, starting at multiples of the kernel's {@link Skinner#rangeAlignment()}, and the
  * calling thread and a small persistent pool take chunks from a shared counter until none is left.
  * Plain Java (Android-safe).
@@ -46,6 +46,8 @@ public final class ParallelSkinner implements Skinner, AutoCloseable {
     private JointPalette palette;
     private float[] outPositions;
     private float[] outNormals;
+    /** Null for {@link #skin}; the output of {@link #skinFrames} otherwise. */
+    private float[] outFrames;
     private int from;
     private int to;
     private int chunkSize;
@@ -110,13 +112,22 @@ public final class ParallelSkinner implements Skinner, AutoCloseable {
 
     @Override
     public void skin(JointPalette p, float[] positions, float[] normals, int start, int end) {
+        run(p, positions, normals, null, start, end);
+    }
+
+    @Override
+    public void skinFrames(JointPalette p, float[] frames, int start, int end) {
+        run(p, null, null, frames, start, end);
+    }
+
+    private void run(JointPalette p, float[] positions, float[] normals, float[] frames, int start, int end) {
         if (closed) {
             throw new IllegalStateException("ParallelSkinner is closed");
         }
         int n = end - start;
         int chunks = Math.min(threads() * CHUNKS_PER_THREAD, n / MIN_CHUNK);
         if (workers.length == 0 || chunks < 2) {
-            kernel.skin(p, positions, normals, start, end);
+            runKernel(p, positions, normals, frames, start, end);
             return;
         }
         int size = (n + chunks - 1) / chunks;
@@ -124,6 +135,7 @@ public final class ParallelSkinner implements Skinner, AutoCloseable {
         palette = p;
         outPositions = positions;
         outNormals = normals;
+        outFrames = frames;
         from = start;
         to = end;
         chunkSize = size;
@@ -147,6 +159,7 @@ public final class ParallelSkinner implements Skinner, AutoCloseable {
             }
         }
         palette = null;
+        outPositions = outNormals = outFrames = null;
         Throwable t = failure.get();
         if (t instanceof RuntimeException) {
             throw (RuntimeException) t;
@@ -183,7 +196,7 @@ public final class ParallelSkinner implements Skinner, AutoCloseable {
             }
             int chunk = (int) c;
             try {
-                kernel.skin(palette, outPositions, outNormals, bound(chunk), bound(chunk + 1));
+                runKernel(palette, outPositions, outNormals, outFrames, bound(chunk), bound(chunk + 1));
             } catch (RuntimeException | Error e) {
                 failure.compareAndSet(null, e);
             }
@@ -192,6 +205,14 @@ public final class ParallelSkinner implements Skinner, AutoCloseable {
             } else {
                 completed.incrementAndGet();
             }
+        }
+    }
+
+    private void runKernel(JointPalette p, float[] positions, float[] normals, float[] frames, int start, int end) {
+        if (frames == null) {
+            kernel.skin(p, positions, normals, start, end);
+        } else {
+            kernel.skinFrames(p, frames, start, end);
         }
     }
 

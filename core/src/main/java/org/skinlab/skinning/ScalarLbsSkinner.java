@@ -11,6 +11,7 @@ public final class ScalarLbsSkinner extends AbstractSkinner {
     private final int[] joints;
     private final float[] weights;
     private final int width;
+    private final ThreadLocal<float[]> blended = ThreadLocal.withInitial(() -> new float[12]);
 
     public ScalarLbsSkinner(SkinnedGeometry geometry, NormalTransform normals) {
         super(SkinningMethod.LBS, "scalar", geometry, normals);
@@ -24,44 +25,29 @@ public final class ScalarLbsSkinner extends AbstractSkinner {
     @Override
     public void skin(JointPalette palette, float[] outPositions, float[] outNormals, int from, int to) {
         final float[] mat = palette.matrices();
+        final float[] b = blended.get();
         final boolean exactNormals = normals == NormalTransform.INVERSE_TRANSPOSE;
         for (int i = from; i < to; i++) {
-            int o = width * i;
-            float w = weights[o];
-            int m = 12 * joints[o];
-            float b0 = w * mat[m], b1 = w * mat[m + 1], b2 = w * mat[m + 2], b3 = w * mat[m + 3];
-            float b4 = w * mat[m + 4], b5 = w * mat[m + 5], b6 = w * mat[m + 6], b7 = w * mat[m + 7];
-            float b8 = w * mat[m + 8], b9 = w * mat[m + 9], b10 = w * mat[m + 10], b11 = w * mat[m + 11];
-            for (int k = 1; k < width; k++) {
-                w = weights[o + k];
-                m = 12 * joints[o + k];
-                b0 += w * mat[m];
-                b1 += w * mat[m + 1];
-                b2 += w * mat[m + 2];
-                b3 += w * mat[m + 3];
-                b4 += w * mat[m + 4];
-                b5 += w * mat[m + 5];
-                b6 += w * mat[m + 6];
-                b7 += w * mat[m + 7];
-                b8 += w * mat[m + 8];
-                b9 += w * mat[m + 9];
-                b10 += w * mat[m + 10];
-                b11 += w * mat[m + 11];
-            }
+            Frames.blendMatrices(mat, joints, weights, width * i, width, b, 0);
+            float b0 = b[0], b1 = b[1], b2 = b[2], b4 = b[4], b5 = b[5], b6 = b[6], b8 = b[8], b9 = b[9], b10 = b[10];
             int v = 3 * i;
             float px = positions[v], py = positions[v + 1], pz = positions[v + 2];
-            outPositions[v] = b0 * px + b1 * py + b2 * pz + b3;
-            outPositions[v + 1] = b4 * px + b5 * py + b6 * pz + b7;
-            outPositions[v + 2] = b8 * px + b9 * py + b10 * pz + b11;
+            outPositions[v] = b0 * px + b1 * py + b2 * pz + b[3];
+            outPositions[v + 1] = b4 * px + b5 * py + b6 * pz + b[7];
+            outPositions[v + 2] = b8 * px + b9 * py + b10 * pz + b[11];
             float nx = restNormals[v], ny = restNormals[v + 1], nz = restNormals[v + 2];
             if (exactNormals) {
                 // Columns c0 = (b0 b4 b8), c1 = (b1 b5 b9), c2 = (b2 b6 b10); the inverse-transpose
                 // times det has columns c1 x c2, c2 x c0, c0 x c1.
-                float rx = (b5 * b10 - b9 * b6) * nx + (b6 * b8 - b10 * b4) * ny + (b4 * b9 - b8 * b5) * nz;
+                float k00 = b5 * b10 - b9 * b6, k01 = b6 * b8 - b10 * b4, k02 = b4 * b9 - b8 * b5;
+                float rx = k00 * nx + k01 * ny + k02 * nz;
                 float ry = (b9 * b2 - b1 * b10) * nx + (b10 * b0 - b2 * b8) * ny + (b8 * b1 - b0 * b9) * nz;
                 float rz = (b1 * b6 - b5 * b2) * nx + (b2 * b4 - b6 * b0) * ny + (b0 * b5 - b4 * b1) * nz;
                 float len2 = rx * rx + ry * ry + rz * rz;
-                float inv = len2 > 0f ? (float) (1.0 / Math.sqrt(len2)) : 0f;
+                // The cofactor is det times the inverse-transpose: under a mirroring blend (det < 0)
+                // it would turn the normal inwards, so the sign of det goes into the scale.
+                float det = b0 * k00 + b1 * k01 + b2 * k02;
+                float inv = len2 > 0f ? Math.copySign((float) (1.0 / Math.sqrt(len2)), det) : 0f;
                 outNormals[v] = rx * inv;
                 outNormals[v + 1] = ry * inv;
                 outNormals[v + 2] = rz * inv;
@@ -70,6 +56,21 @@ public final class ScalarLbsSkinner extends AbstractSkinner {
                 outNormals[v + 1] = b4 * nx + b5 * ny + b6 * nz;
                 outNormals[v + 2] = b8 * nx + b9 * ny + b10 * nz;
             }
+        }
+    }
+
+    @Override
+    public void skinFrames(JointPalette palette, float[] outFrames, int from, int to) {
+        final float[] mat = palette.matrices();
+        final float[] b = blended.get();
+        final boolean exactNormals = normals == NormalTransform.INVERSE_TRANSPOSE;
+        for (int i = from; i < to; i++) {
+            Frames.blendMatrices(mat, joints, weights, width * i, width, b, 0);
+            int v = 3 * i;
+            float px = positions[v], py = positions[v + 1], pz = positions[v + 2];
+            Frames.put(outFrames, Skinner.FRAME_FLOATS * i, exactNormals, b[0], b[1], b[2], b[4], b[5], b[6], b[8],
+                    b[9], b[10], b[0] * px + b[1] * py + b[2] * pz + b[3], b[4] * px + b[5] * py + b[6] * pz + b[7],
+                    b[8] * px + b[9] * py + b[10] * pz + b[11]);
         }
     }
 }

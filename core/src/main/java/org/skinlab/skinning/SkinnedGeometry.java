@@ -30,6 +30,16 @@ import org.skinlab.model.Skin;
  * bind matrix (INV_BIND_MATRIX * BIND_SHAPE_MATRIX; the pseudo-joint's is the bind shape matrix),
  * so that the skinning matrix is {@code world(node) * bind}. A static mesh becomes a geometry with
  * one joint, its own node, and identity bind: the same code places it.
+ *
+ * <p><b>Shared positions.</b> A point's deformed position depends only on its POSITION entry, and
+ * exporters split a position into several render vertices wherever normals or texture coordinates
+ * differ (the thesis' cowboy has 740 positions in 4252 vertices). When that makes skinning each
+ * position once cheaper, {@link #sharedPositions()} is a second geometry whose points are the
+ * mesh's positions (in source order, normals zero); a skinner then deforms those once into
+ * per-position frames ({@link Skinner#skinFrames}) and derives every point from the frame of its
+ * position ({@link #frameOfPointArray()}) and its own rest normal. The rule that decides is
+ * {@link #sharesPositions}. Either way the points, their order and the arrays below stay the same
+ * for callers.
  */
 public final class SkinnedGeometry {
     private final MeshInstance instance;
@@ -43,10 +53,20 @@ public final class SkinnedGeometry {
     private final int[] jointNodes;
     private final float[] bindMatrices;
     private final int[] pointOfPosition;
+    /** Per point, its position in {@link #sharedPositions}; null when points are skinned one by one. */
+    private final int[] frameOfPoint;
+    private final SkinnedGeometry sharedPositions;
 
     private SkinnedGeometry(MeshInstance instance, int vertexCount, float[] positions, float[] normals,
             int influences, int[] joints, float[] weights, int[] jointNodes, float[] bindMatrices,
             int[] pointOfPosition) {
+        this(instance, vertexCount, positions, normals, influences, joints, weights, jointNodes, bindMatrices,
+                pointOfPosition, null, null);
+    }
+
+    private SkinnedGeometry(MeshInstance instance, int vertexCount, float[] positions, float[] normals,
+            int influences, int[] joints, float[] weights, int[] jointNodes, float[] bindMatrices,
+            int[] pointOfPosition, int[] frameOfPoint, SkinnedGeometry sharedPositions) {
         this.instance = instance;
         this.vertexCount = vertexCount;
         this.pointCount = positions.length / 3;
@@ -58,6 +78,8 @@ public final class SkinnedGeometry {
         this.jointNodes = jointNodes;
         this.bindMatrices = bindMatrices;
         this.pointOfPosition = pointOfPosition;
+        this.frameOfPoint = frameOfPoint;
+        this.sharedPositions = sharedPositions;
     }
 
     /** The runtime geometry of a placed mesh, skinned or static. */
@@ -102,7 +124,45 @@ public final class SkinnedGeometry {
             return new SkinnedGeometry(instance, vertices, positions, normals, 1, joints, weights,
                     new int[] {instance.node()}, new Matrix4f().get(new float[16]), pointOfPosition);
         }
-        return skinned(instance, skin, vertices, positions, normals, positionOfPoint, pointOfPosition);
+        SkinnedGeometry byPoint = skinned(instance, skin, vertices, positions, normals, positionOfPoint,
+                pointOfPosition);
+        if (!sharesPositions(points, pointOfPosition.length, byPoint.influences)) {
+            return byPoint;
+        }
+        return byPoint.withSharedPositions(mesh.positions(), positionOfPoint);
+    }
+
+    /**
+     * Whether a mesh of {@code points} points over {@code positions} positions, {@code influences}
+     * per point, is cheaper to skin position by position. Measured on the kernels of this project
+     * (docs/benchmarks.md, "shared positions"): blending k influences and applying them costs about
+     * k + 2 units per skinned point, deriving a point from its position's frame about 2, and
+     * skinning a point directly about k + 1. So sharing pays when
+     * {@code positions * (k + 2) + 2 * points < points * (k + 1)}: at 4 influences from about 1.5
+     * points per position, at 8 from about 1.3. Static meshes never share (one joint: nothing to
+     * save).
+     */
+    static boolean sharesPositions(int points, int positions, int influences) {
+        return (long) positions * (influences + 2) + 2L * points < (long) points * (influences + 1);
+    }
+
+    /** This geometry with a position-level twin for kernels that skin each position once. */
+    private SkinnedGeometry withSharedPositions(float[] sourcePositions, int[] positionOfPoint) {
+        int positionCount = pointOfPosition.length;
+        int w = influences;
+        int[] rowJoints = new int[w * positionCount];
+        float[] rowWeights = new float[w * positionCount];
+        int[] identity = new int[positionCount];
+        for (int p = 0; p < positionCount; p++) {
+            // A position's influences are those of any point that carries it (they are per position).
+            System.arraycopy(joints, w * pointOfPosition[p], rowJoints, w * p, w);
+            System.arraycopy(weights, w * pointOfPosition[p], rowWeights, w * p, w);
+            identity[p] = p;
+        }
+        SkinnedGeometry shared = new SkinnedGeometry(instance, 0, sourcePositions.clone(),
+                new float[3 * positionCount], w, rowJoints, rowWeights, jointNodes, bindMatrices, identity);
+        return new SkinnedGeometry(instance, vertexCount, positions, normals, w, joints, weights, jointNodes,
+                bindMatrices, pointOfPosition, positionOfPoint, shared);
     }
 
     /**
@@ -125,6 +185,11 @@ public final class SkinnedGeometry {
             throw new IllegalArgumentException("array sizes disagree");
         }
         int jointCount = bindMatrices.length / 16;
+        for (float w : weights) {
+            if (!(w >= 0f) || Float.isInfinite(w)) {
+                throw new IllegalArgumentException("weight " + w + ": weights must be finite and not negative");
+            }
+        }
         for (int j : joints) {
             if (j < 0 || j >= jointCount) {
                 throw new IllegalArgumentException("joint " + j + " outside the palette of " + jointCount);
@@ -156,7 +221,7 @@ public final class SkinnedGeometry {
             int n = skin.influenceCount(p);
             float sum = 0f;
             for (int k = 0; k < n; k++) {
-                sum += skin.influenceWeight(start + k);
+                sum += weightOf(skin, start + k);
                 order[k] = start + k;
             }
             int o = width * i;
@@ -170,7 +235,7 @@ public final class SkinnedGeometry {
             for (int a = 1; a < n; a++) {
                 int e = order[a];
                 int b = a - 1;
-                while (b >= 0 && skin.influenceWeight(order[b]) < skin.influenceWeight(e)) {
+                while (b >= 0 && weightOf(skin, order[b]) < weightOf(skin, e)) {
                     order[b + 1] = order[b];
                     b--;
                 }
@@ -184,7 +249,7 @@ public final class SkinnedGeometry {
                         j = bindShapeJoint;
                     }
                     joints[o + k] = j;
-                    weights[o + k] = skin.influenceWeight(order[k]) / sum;
+                    weights[o + k] = weightOf(skin, order[k]) / sum;
                 } else {
                     joints[o + k] = joints[o];
                     weights[o + k] = 0f;
@@ -205,6 +270,15 @@ public final class SkinnedGeometry {
         }
         return new SkinnedGeometry(instance, vertices, positions, normals, width, joints, weights, jointNodes, bind,
                 pointOfPosition);
+    }
+
+    /**
+     * An influence's weight as the kernels use it: a negative weight (the importer clamps and
+     * warns; a skin built in code may still hold one) counts as 0, so a sum is never reduced or
+     * cancelled to zero by it, and no point is pulled away from the joints it names.
+     */
+    private static float weightOf(Skin skin, int influence) {
+        return Math.max(0f, skin.influenceWeight(influence));
     }
 
     /** The placed mesh this geometry was built from, or null for {@link #fromArrays}. */
@@ -288,6 +362,23 @@ public final class SkinnedGeometry {
         return bindMatrices;
     }
 
+    /**
+     * The geometry whose points are this one's positions (source order, zero normals, the same
+     * influences, joints and bind matrices), when skinning each position once is cheaper; null when
+     * points are skinned one by one. See the class comment.
+     */
+    public SkinnedGeometry sharedPositions() {
+        return sharedPositions;
+    }
+
+    /**
+     * Per point, the point of {@link #sharedPositions()} whose frame it takes its position and
+     * normal matrix from; null when positions are not shared. Read-only.
+     */
+    public int[] frameOfPointArray() {
+        return frameOfPoint;
+    }
+
     /** A palette sized for this geometry, with its DQS pivots. */
     public JointPalette newPalette() {
         return new JointPalette(bindMatrices);
@@ -303,7 +394,8 @@ public final class SkinnedGeometry {
 
     @Override
     public String toString() {
-        return "SkinnedGeometry[" + (instance == null ? "arrays" : instance.mesh().id()) + ", " + pointCount + " points, " + jointCount()
-                + " joints, " + influences + " influences per point]";
+        return "SkinnedGeometry[" + (instance == null ? "arrays" : instance.mesh().id()) + ", " + pointCount + " points"
+                + (sharedPositions == null ? "" : " over " + sharedPositions.pointCount + " shared positions") + ", "
+                + jointCount() + " joints, " + influences + " influences per point]";
     }
 }

@@ -11,4 +11,9 @@ public interface SkinnerProvider {
      * influence count it has no kernel for, or no SIMD support on this machine).
      */
     Skinner create(SkinningMethod method, SkinnedGeometry geometry, NormalTransform normals);
+
+    /** A faster {@link FrameExpansion} than the scalar one, or null. */
+    default FrameExpansion frameExpansion() {
+        return null;
+    }
 }

@@ -28,8 +28,16 @@ public final class Skinners {
         return List.copyOf(found);
     }
 
-    /** The fastest skinner available for the geometry. */
+    /**
+     * The fastest skinner available for the geometry; for one that shares positions
+     * ({@link SkinnedGeometry#sharedPositions()}) the fastest kernel on its positions and the fastest
+     * {@link FrameExpansion}.
+     */
     public static Skinner create(SkinningMethod method, SkinnedGeometry geometry, NormalTransform normals) {
+        SkinnedGeometry shared = geometry.sharedPositions();
+        if (shared != null) {
+            return new SharedPositionSkinner(geometry, create(method, shared, normals), expansion());
+        }
         for (SkinnerProvider p : PROVIDERS) {
             Skinner s;
             try {
@@ -44,13 +52,36 @@ public final class Skinners {
         return scalar(method, geometry, normals);
     }
 
+    /** The fastest {@link FrameExpansion} available. */
+    public static FrameExpansion expansion() {
+        for (SkinnerProvider p : PROVIDERS) {
+            FrameExpansion e;
+            try {
+                e = p.frameExpansion();
+            } catch (LinkageError err) {
+                continue;
+            }
+            if (e != null) {
+                return e;
+            }
+        }
+        return FrameExpansion.SCALAR;
+    }
+
     /** The fastest skinner with exact normals ({@link NormalTransform#INVERSE_TRANSPOSE}). */
     public static Skinner create(SkinningMethod method, SkinnedGeometry geometry) {
         return create(method, geometry, NormalTransform.INVERSE_TRANSPOSE);
     }
 
-    /** The portable plain-Java skinner. */
+    /**
+     * The portable plain-Java skinner (for a geometry that shares positions, the scalar kernel on its
+     * positions and the scalar expansion).
+     */
     public static Skinner scalar(SkinningMethod method, SkinnedGeometry geometry, NormalTransform normals) {
+        SkinnedGeometry shared = geometry.sharedPositions();
+        if (shared != null) {
+            return new SharedPositionSkinner(geometry, scalar(method, shared, normals), FrameExpansion.SCALAR);
+        }
         switch (method) {
             case LBS:
                 return new ScalarLbsSkinner(geometry, normals);

@@ -47,11 +47,15 @@ import org.skinlab.skinning.SkinningMethod;
  * like the scalar kernel and identical to it, a dot of -0 included.
  *
  * <p><b>Scale.</b> When the palette has a scale part this frame ({@link JointPalette#hasScale()})
- * the whole range goes through the scalar kernel, which runs the two-phase split: correct, at
- * scalar speed. Without scale both {@link NormalTransform}s are the same rotation.
+ * each point's blended dual quaternion becomes a rigid matrix ({@link #rigidMatrices}), which is
+ * composed with the point's blended scale part and applied like an LBS matrix
+ * ({@link MatrixPasses}): the two-phase split of the scalar kernel, {@code D (S p)}, with normals
+ * by {@code R} times S's signed cofactor. Without scale both {@link NormalTransform}s rotate the
+ * normal; INVERSE_TRANSPOSE then scales it to unit length. {@link #skinFrames} takes the matrix route always.
+ *
+ * <p><b>Influences.</b> Any number: one scratch pass per influence beyond the second.
  */
 final class VectorDqsSkinner extends AbstractSkinner {
-    static final int INFLUENCES = 4;
     static final int BLOCK = 8;
     /** Floats per block in {@link #points}: px py pz nx ny nz, 8 lanes each. */
     private static final int BLOCK_FLOATS = 48;
@@ -60,10 +64,22 @@ final class VectorDqsSkinner extends AbstractSkinner {
     private static final int SCRATCH = 96;
 
     private final ScalarDqsSkinner scalar;
+    /** Influences per point in the block layout: the geometry's, at least 2 (padded with weight 0). */
+    private final int width;
     private final int blockCount;
+    private final float[] restPositions;
+    private final float[] restNormals;
+    /** The scale blend's influences, per point ({@link MatrixPasses#paddedWidth}). */
+    private final int passWidth;
+    private final char[] passJoints;
+    private final float[] passWeights;
+    private final ThreadLocal<float[]> scaleColumns;
+    /** Rigid matrices (16 floats per point) and blended matrices of one pass of points. */
+    private final ThreadLocal<float[]> rigid = ThreadLocal.withInitial(() -> new float[16 * MatrixPasses.CHUNK]);
+    private final ThreadLocal<float[]> blended = ThreadLocal.withInitial(() -> new float[16 * MatrixPasses.CHUNK]);
+    private final ThreadLocal<float[]> lastPoints = ThreadLocal.withInitial(() -> new float[16]);
     private final float[] points;
-    /** Per influence k, per point (in block order): its weight, and its joint (char: up to 65536). */
-    /** Per block, per influence k: 8 weights and 8 joints at {@code 32 b + 8 k}. */
+    /** Per block, per influence k: 8 weights and 8 joints at {@code 8 width b + 8 k}. */
     private final float[] blockWeights;
     private final char[] blockJoints;
     private final int jointCount;
@@ -71,34 +87,46 @@ final class VectorDqsSkinner extends AbstractSkinner {
 
     VectorDqsSkinner(SkinnedGeometry geometry, NormalTransform normals) {
         super(SkinningMethod.DQS, "vector-256", geometry, normals);
-        int width = geometry.influencesPerPoint();
-        if (width > INFLUENCES) {
-            throw new IllegalArgumentException(width + " influences per point; this kernel takes up to " + INFLUENCES);
-        }
+        int given = geometry.influencesPerPoint();
+        this.width = Math.max(2, given);
         this.scalar = new ScalarDqsSkinner(geometry, normals);
         this.jointCount = geometry.jointCount();
-        blockCount = geometry.pointCount() / BLOCK;
-        float[] pos = geometry.positionArray();
-        float[] nrm = geometry.normalArray();
+        this.restPositions = geometry.positionArray();
+        this.restNormals = geometry.normalArray();
+        int points = geometry.pointCount();
+        blockCount = points / BLOCK;
+        float[] pos = restPositions;
+        float[] nrm = restNormals;
         int[] joints = geometry.jointArray();
         float[] weights = geometry.weightArray();
         int n = BLOCK * blockCount;
-        points = new float[BLOCK_FLOATS * blockCount];
-        blockWeights = new float[INFLUENCES * n];
-        blockJoints = new char[INFLUENCES * n];
+        this.points = new float[BLOCK_FLOATS * blockCount];
+        blockWeights = new float[width * n];
+        blockJoints = new char[width * n];
         for (int i = 0; i < n; i++) {
             int o = BLOCK_FLOATS * (i / BLOCK) + i % BLOCK;
             for (int c = 0; c < 3; c++) {
-                points[o + BLOCK * c] = pos[3 * i + c];
-                points[o + BLOCK * (3 + c)] = nrm[3 * i + c];
+                this.points[o + BLOCK * c] = pos[3 * i + c];
+                this.points[o + BLOCK * (3 + c)] = nrm[3 * i + c];
             }
-            for (int k = 0; k < INFLUENCES; k++) {
+            for (int k = 0; k < width; k++) {
                 // Padding: weight 0 on the pivot joint adds +-0.
-                int q = INFLUENCES * BLOCK * (i / BLOCK) + BLOCK * k + i % BLOCK;
-                blockWeights[q] = k < width ? weights[width * i + k] : 0f;
-                blockJoints[q] = (char) joints[width * i + (k < width ? k : 0)];
+                int q = width * BLOCK * (i / BLOCK) + BLOCK * k + i % BLOCK;
+                blockWeights[q] = k < given ? weights[given * i + k] : 0f;
+                blockJoints[q] = (char) joints[given * i + (k < given ? k : 0)];
             }
         }
+        passWidth = MatrixPasses.paddedWidth(given);
+        passJoints = new char[passWidth * points];
+        passWeights = new float[passWidth * points];
+        for (int i = 0; i < points; i++) {
+            for (int k = 0; k < passWidth; k++) {
+                passWeights[passWidth * i + k] = k < given ? weights[given * i + k] : 0f;
+                passJoints[passWidth * i + k] = (char) joints[given * i + (k < given ? k : 0)];
+            }
+        }
+        int size = 16 * jointCount;
+        scaleColumns = ThreadLocal.withInitial(() -> new float[size]);
     }
 
     @Override
@@ -108,33 +136,115 @@ final class VectorDqsSkinner extends AbstractSkinner {
 
     @Override
     public void skin(JointPalette palette, float[] outPositions, float[] outNormals, int from, int to) {
-        if (palette.jointCount() != jointCount) {
-            throw new IllegalArgumentException("palette of " + palette.jointCount() + " joints for a geometry of "
-                    + jointCount);
-        }
+        checkPalette(palette);
         int firstBlock = (from + BLOCK - 1) / BLOCK;
         int endBlock = Math.min(to / BLOCK, blockCount);
-        if (palette.hasScale() || firstBlock >= endBlock) {
+        if (firstBlock >= endBlock) {
             scalar.skin(palette, outPositions, outNormals, from, to);
             return;
+        }
+        if (outPositions.length < 3 * BLOCK * endBlock || outNormals.length < 3 * BLOCK * endBlock) {
+            throw new IndexOutOfBoundsException("output arrays shorter than " + 3 * BLOCK * endBlock);
         }
         scalar.skin(palette, outPositions, outNormals, from, BLOCK * firstBlock);
         float[] dq = palette.dualQuaternions();
         float[] s = scratch.get();
-        if (outPositions.length < 3 * BLOCK * endBlock || outNormals.length < 3 * BLOCK * endBlock) {
-            throw new IndexOutOfBoundsException("output arrays shorter than " + 3 * BLOCK * endBlock);
-        }
-        for (int b = firstBlock; b < endBlock; b += CHUNK) {
-            int e = Math.min(endBlock, b + CHUNK);
-            pivotAndFirst(dq, s, b, e);
-            for (int k = 2; k < INFLUENCES; k++) {
-                accumulate(dq, s, b, e, k);
+        if (palette.hasScale()) {
+            // Two phases per point, as a matrix: the rigid part of the blended dual quaternion
+            // times the blended scale part, then applied like an LBS matrix (see skinFrames).
+            float[] cs = scaleColumns(palette);
+            float[] r = rigid.get();
+            float[] acc = blended.get();
+            float[] tmp = lastPoints.get();
+            boolean exact = normals == NormalTransform.INVERSE_TRANSPOSE;
+            int blocksPerPass = MatrixPasses.CHUNK / BLOCK;
+            for (int b = firstBlock; b < endBlock; b += blocksPerPass) {
+                int e = Math.min(endBlock, b + blocksPerPass);
+                int p0 = BLOCK * b;
+                int p1 = BLOCK * e;
+                blendDualQuaternions(dq, s, b, e);
+                rigidMatrices(s, r, b, e);
+                MatrixPasses.blend(cs, passJoints, passWeights, passWidth, p0, p1, acc);
+                MatrixPasses.compose(r, acc, p1 - p0);
+                // Spilling past p1 is fine when points follow: the next pass or the scalar tail
+                // overwrites them.
+                MatrixPasses.points(acc, restPositions, restNormals, exact, outPositions, outNormals, p0, p1, tmp,
+                        to - p1 >= 2);
             }
-            applyAndStore(s, outPositions, outNormals, b, e);
+            if (exact) {
+                MatrixPasses.normalise(outNormals, BLOCK * firstBlock, BLOCK * endBlock);
+            }
+        } else {
+            for (int b = firstBlock; b < endBlock; b += CHUNK) {
+                int e = Math.min(endBlock, b + CHUNK);
+                blendDualQuaternions(dq, s, b, e);
+                applyAndStore(s, outPositions, outNormals, b, e);
+            }
         }
         scalar.skin(palette, outPositions, outNormals, BLOCK * endBlock, to);
     }
 
+    /**
+     * Frames of points {@code [from, to)}: per point the rigid matrix of its blended dual
+     * quaternion ({@link #rigidMatrices}), composed with its blended scale part when the palette
+     * has one, then applied to the rest position; N is the rotation, or the rotation times the
+     * scale part's signed cofactor (exact rule) or linear part.
+     */
+    @Override
+    public void skinFrames(JointPalette palette, float[] outFrames, int from, int to) {
+        checkPalette(palette);
+        int firstBlock = (from + BLOCK - 1) / BLOCK;
+        int endBlock = Math.min(to / BLOCK, blockCount);
+        if (firstBlock >= endBlock) {
+            scalar.skinFrames(palette, outFrames, from, to);
+            return;
+        }
+        scalar.skinFrames(palette, outFrames, from, BLOCK * firstBlock);
+        float[] dq = palette.dualQuaternions();
+        float[] s = scratch.get();
+        float[] r = rigid.get();
+        boolean scaled = palette.hasScale();
+        float[] cs = scaled ? scaleColumns(palette) : null;
+        float[] acc = blended.get();
+        int blocksPerPass = MatrixPasses.CHUNK / BLOCK;
+        for (int b = firstBlock; b < endBlock; b += blocksPerPass) {
+            int e = Math.min(endBlock, b + blocksPerPass);
+            int p0 = BLOCK * b;
+            int p1 = BLOCK * e;
+            blendDualQuaternions(dq, s, b, e);
+            rigidMatrices(s, r, b, e);
+            if (scaled) {
+                MatrixPasses.blend(cs, passJoints, passWeights, passWidth, p0, p1, acc);
+                MatrixPasses.compose(r, acc, p1 - p0);
+                MatrixPasses.frames(acc, restPositions, normals == NormalTransform.INVERSE_TRANSPOSE, outFrames, p0, p1);
+            } else {
+                MatrixPasses.frames(r, restPositions, false, outFrames, p0, p1);
+            }
+        }
+        scalar.skinFrames(palette, outFrames, BLOCK * endBlock, to);
+    }
+
+    private void checkPalette(JointPalette palette) {
+        if (palette.jointCount() != jointCount) {
+            throw new IllegalArgumentException("palette of " + palette.jointCount() + " joints for a geometry of "
+                    + jointCount);
+        }
+    }
+
+    /** This thread's copy of the palette's scale parts as column-major 4x4 blocks. */
+    private float[] scaleColumns(JointPalette palette) {
+        float[] c = scaleColumns.get();
+        MatrixPasses.columnMajor(palette.scales(), jointCount, c);
+        return c;
+    }
+
+    /** Every influence of blocks {@code [b, e)} (at most {@link #CHUNK}) into the scratch. */
+    private void blendDualQuaternions(float[] dq, float[] s, int b, int e) {
+        pivotAndFirst(dq, s, b, e);
+        for (int k = 2; k < width; k++) {
+            accumulate(dq, s, b, e, k);
+        }
+    }
 
     /**
      * Influence {@code k >= 2} of each block: {@code b += copySign(w_k, q_0 . q_k + 0) q_k}, in the
@@ -154,7 +264,7 @@ final class VectorDqsSkinner extends AbstractSkinner {
         final char[] row1 = blockJoints;
         for (int b = firstBlock; b < endBlock; b++) {
             int so = SCRATCH * (b - firstBlock);
-            int o = INFLUENCES * BLOCK * b;
+            int o = width * BLOCK * b;
             int o1 = o + BLOCK;
             FloatVector r0_0 = FloatVector.fromArray(S, dq, row0[o] << 3);
             FloatVector r1_0 = FloatVector.fromArray(S, dq, row0[o + 1] << 3);
@@ -250,7 +360,7 @@ final class VectorDqsSkinner extends AbstractSkinner {
         final char[] row = blockJoints;
         for (int b = firstBlock; b < endBlock; b++) {
             int so = SCRATCH * (b - firstBlock);
-            int o = INFLUENCES * BLOCK * b + BLOCK * k;
+            int o = width * BLOCK * b + BLOCK * k;
             FloatVector r0 = FloatVector.fromArray(S, dq, row[o] << 3);
             FloatVector r1 = FloatVector.fromArray(S, dq, row[o + 1] << 3);
             FloatVector r2 = FloatVector.fromArray(S, dq, row[o + 2] << 3);
@@ -316,6 +426,7 @@ final class VectorDqsSkinner extends AbstractSkinner {
      */
     private void applyAndStore(float[] s, float[] outPositions, float[] outNormals, int firstBlock, int endBlock) {
         final float[] blk = points;
+        final boolean exact = normals == NormalTransform.INVERSE_TRANSPOSE;
         final FloatVector one = FloatVector.broadcast(S, 1f);
         for (int b = firstBlock; b < endBlock; b++) {
             int so = SCRATCH * (b - firstBlock);
@@ -364,11 +475,114 @@ final class VectorDqsSkinner extends AbstractSkinner {
             ox = nx.add(ex.add(ex));
             oy = ny.add(ey.add(ey));
             oz = nz.add(ez.add(ez));
+            if (exact) {
+                // Unit length, zero staying zero, as MatrixPasses.normalise and the scalar kernel do.
+                FloatVector len2 = ox.mul(ox).add(oy.mul(oy)).add(oz.mul(oz));
+                FloatVector scale = FloatVector.zero(S).blend(one.div(len2.sqrt()), len2.compare(VectorOperators.GT, 0f));
+                ox = ox.mul(scale);
+                oy = oy.mul(scale);
+                oz = oz.mul(scale);
+            }
             ox.rearrange(Lanes.X0).blend(oy.rearrange(Lanes.Y0), Lanes.MY0).blend(oz.rearrange(Lanes.Z0), Lanes.MZ0).intoArray(outNormals, out);
             ox.rearrange(Lanes.X1).blend(oy.rearrange(Lanes.Y1), Lanes.MY1).blend(oz.rearrange(Lanes.Z1), Lanes.MZ1).intoArray(outNormals, out + 8);
             ox.rearrange(Lanes.X2).blend(oy.rearrange(Lanes.Y2), Lanes.MY2).blend(oz.rearrange(Lanes.Z2), Lanes.MZ2).intoArray(outNormals, out + 16);
         }
     }
 
-
+    /**
+     * Per point of blocks {@code [firstBlock, endBlock)}: the blended dual quaternion of the
+     * scratch, normalised, as a rigid matrix {@code [R | t]} in {@link MatrixPasses}' layout (16
+     * floats per point from 0 in {@code out}): R from the rotation quaternion, t = 2 (w d - d_w r +
+     * r x d). The eight lane vectors of each half of the record are transposed into eight points'
+     * rows by the network {@link #pivotAndFirst} uses (a transpose is its own inverse).
+     */
+    private void rigidMatrices(float[] s, float[] out, int firstBlock, int endBlock) {
+        final FloatVector one = FloatVector.broadcast(S, 1f);
+        final FloatVector zero = FloatVector.zero(S);
+        for (int b = firstBlock; b < endBlock; b++) {
+            int so = SCRATCH * (b - firstBlock);
+            FloatVector x0 = FloatVector.fromArray(S, s, so);
+            FloatVector x1 = FloatVector.fromArray(S, s, so + 8);
+            FloatVector x2 = FloatVector.fromArray(S, s, so + 16);
+            FloatVector x3 = FloatVector.fromArray(S, s, so + 24);
+            FloatVector inv = one.div(x0.mul(x0).add(x1.mul(x1)).add(x2.mul(x2)).add(x3.mul(x3)).sqrt());
+            FloatVector rx = x0.mul(inv);
+            FloatVector ry = x1.mul(inv);
+            FloatVector rz = x2.mul(inv);
+            FloatVector rw = x3.mul(inv);
+            FloatVector dx = FloatVector.fromArray(S, s, so + 32).mul(inv);
+            FloatVector dy = FloatVector.fromArray(S, s, so + 40).mul(inv);
+            FloatVector dz = FloatVector.fromArray(S, s, so + 48).mul(inv);
+            FloatVector dw = FloatVector.fromArray(S, s, so + 56).mul(inv);
+            FloatVector tx = rw.mul(dx).sub(dw.mul(rx)).add(ry.mul(dz).sub(rz.mul(dy)));
+            FloatVector ty = rw.mul(dy).sub(dw.mul(ry)).add(rz.mul(dx).sub(rx.mul(dz)));
+            FloatVector tz = rw.mul(dz).sub(dw.mul(rz)).add(rx.mul(dy).sub(ry.mul(dx)));
+            tx = tx.add(tx);
+            ty = ty.add(ty);
+            tz = tz.add(tz);
+            FloatVector xx = rx.mul(rx), yy = ry.mul(ry), zz = rz.mul(rz);
+            FloatVector xy = rx.mul(ry), xz = rx.mul(rz), yz = ry.mul(rz);
+            FloatVector xw = rx.mul(rw), yw = ry.mul(rw), zw = rz.mul(rw);
+            FloatVector r00 = one.sub(yy.add(zz).mul(2f));
+            FloatVector r10 = xy.add(zw).mul(2f);
+            FloatVector r20 = xz.sub(yw).mul(2f);
+            FloatVector r01 = xy.sub(zw).mul(2f);
+            FloatVector r11 = one.sub(xx.add(zz).mul(2f));
+            FloatVector r21 = yz.add(xw).mul(2f);
+            FloatVector r02 = xz.add(yw).mul(2f);
+            FloatVector r12 = yz.sub(xw).mul(2f);
+            FloatVector r22 = one.sub(xx.add(yy).mul(2f));
+            int base = 16 * BLOCK * (b - firstBlock);
+            // First halves of the records: [R0 0 | R1 0]; lanes are points, vectors components.
+            FloatVector a0 = r00.blend(r10.rearrange(RIGHT1), ODD);
+            FloatVector a1 = r00.rearrange(LEFT1).blend(r10, ODD);
+            FloatVector a2 = r20.blend(zero, ODD);
+            FloatVector a3 = r20.rearrange(LEFT1).blend(zero, ODD);
+            FloatVector a4 = r01.blend(r11.rearrange(RIGHT1), ODD);
+            FloatVector a5 = r01.rearrange(LEFT1).blend(r11, ODD);
+            FloatVector a6 = r21.blend(zero, ODD);
+            FloatVector a7 = r21.rearrange(LEFT1).blend(zero, ODD);
+            FloatVector c0 = a0.blend(a2.rearrange(RIGHT2), PAIRS);
+            FloatVector c2 = a0.rearrange(LEFT2).blend(a2, PAIRS);
+            FloatVector c1 = a1.blend(a3.rearrange(RIGHT2), PAIRS);
+            FloatVector c3 = a1.rearrange(LEFT2).blend(a3, PAIRS);
+            FloatVector c4 = a4.blend(a6.rearrange(RIGHT2), PAIRS);
+            FloatVector c6 = a4.rearrange(LEFT2).blend(a6, PAIRS);
+            FloatVector c5 = a5.blend(a7.rearrange(RIGHT2), PAIRS);
+            FloatVector c7 = a5.rearrange(LEFT2).blend(a7, PAIRS);
+            c0.blend(c4.rearrange(SWAP), HI).intoArray(out, base);
+            c0.rearrange(SWAP).blend(c4, HI).intoArray(out, base + 64);
+            c1.blend(c5.rearrange(SWAP), HI).intoArray(out, base + 16);
+            c1.rearrange(SWAP).blend(c5, HI).intoArray(out, base + 80);
+            c2.blend(c6.rearrange(SWAP), HI).intoArray(out, base + 32);
+            c2.rearrange(SWAP).blend(c6, HI).intoArray(out, base + 96);
+            c3.blend(c7.rearrange(SWAP), HI).intoArray(out, base + 48);
+            c3.rearrange(SWAP).blend(c7, HI).intoArray(out, base + 112);
+            // Second halves: [R2 0 | t 0].
+            a0 = r02.blend(r12.rearrange(RIGHT1), ODD);
+            a1 = r02.rearrange(LEFT1).blend(r12, ODD);
+            a2 = r22.blend(zero, ODD);
+            a3 = r22.rearrange(LEFT1).blend(zero, ODD);
+            a4 = tx.blend(ty.rearrange(RIGHT1), ODD);
+            a5 = tx.rearrange(LEFT1).blend(ty, ODD);
+            a6 = tz.blend(zero, ODD);
+            a7 = tz.rearrange(LEFT1).blend(zero, ODD);
+            c0 = a0.blend(a2.rearrange(RIGHT2), PAIRS);
+            c2 = a0.rearrange(LEFT2).blend(a2, PAIRS);
+            c1 = a1.blend(a3.rearrange(RIGHT2), PAIRS);
+            c3 = a1.rearrange(LEFT2).blend(a3, PAIRS);
+            c4 = a4.blend(a6.rearrange(RIGHT2), PAIRS);
+            c6 = a4.rearrange(LEFT2).blend(a6, PAIRS);
+            c5 = a5.blend(a7.rearrange(RIGHT2), PAIRS);
+            c7 = a5.rearrange(LEFT2).blend(a7, PAIRS);
+            c0.blend(c4.rearrange(SWAP), HI).intoArray(out, base + 8);
+            c0.rearrange(SWAP).blend(c4, HI).intoArray(out, base + 72);
+            c1.blend(c5.rearrange(SWAP), HI).intoArray(out, base + 24);
+            c1.rearrange(SWAP).blend(c5, HI).intoArray(out, base + 88);
+            c2.blend(c6.rearrange(SWAP), HI).intoArray(out, base + 40);
+            c2.rearrange(SWAP).blend(c6, HI).intoArray(out, base + 104);
+            c3.blend(c7.rearrange(SWAP), HI).intoArray(out, base + 56);
+            c3.rearrange(SWAP).blend(c7, HI).intoArray(out, base + 120);
+        }
+    }
 }

@@ -2,6 +2,7 @@ package org.skinlab.simd;
 
 import jdk.incubator.vector.FloatVector;
 
+import org.skinlab.skinning.FrameExpansion;
 import org.skinlab.skinning.NormalTransform;
 import org.skinlab.skinning.SkinnedGeometry;
 import org.skinlab.skinning.Skinner;
@@ -9,8 +10,6 @@ import org.skinlab.skinning.SkinningMethod;
 
 /** The Vector API kernels; loaded only once {@link VectorSkinnerProvider} saw the module. */
 final class VectorKernels {
-    /** Influences per point the kernels take (fewer are padded with weight 0). */
-    static final int MAX_INFLUENCES = 4;
     /** Joints the kernels index (stored as char). */
     static final int MAX_JOINTS = 65536;
 
@@ -20,6 +19,10 @@ final class VectorKernels {
     /** 256-bit float vectors are done in hardware (AVX2 or wider). */
     static boolean fastOnThisMachine() {
         return FloatVector.SPECIES_PREFERRED.vectorBitSize() >= Lanes.S.vectorBitSize();
+    }
+
+    static FrameExpansion frameExpansion() {
+        return VectorFrameExpansion.INSTANCE;
     }
 
     static Skinner create(SkinningMethod method, SkinnedGeometry geometry, NormalTransform normals) {

@@ -37,7 +37,13 @@ import org.skinlab.skinning.SkinningMethod;
  * lanes spill into the next points and are overwritten when those are done; the last two points
  * of a range therefore go through a scratch array, so a range never writes outside itself (and
  * the results do not depend on how a mesh is split into ranges).
- * Geometries with up to 4 influences per point are padded to 4 with weight 0.
+ *
+ * <p>Geometries with up to 4 influences per point are padded to 4 with weight 0 and take the
+ * fused loops below; more influences, and {@link #skinFrames}, go through {@link MatrixPasses}
+ * (a blend pass written out for 4 or 8 influences, then the application to the points).
+ *
+ * <p>Exact normals carry the sign of the blended matrix's determinant (a mirroring blend would
+ * otherwise turn them inwards), as in the scalar kernel.
  */
 final class VectorLbsSkinner extends AbstractSkinner {
     static final int INFLUENCES = 4;
@@ -45,48 +51,106 @@ final class VectorLbsSkinner extends AbstractSkinner {
     private static final int STRIDE = 10;
 
 
+    /** Up to 4 influences: the fused loops' stream (null otherwise). */
     private final float[] points;
-    /** Palette joint per influence (4 per point; char: joint counts up to 65536). */
+    /** Palette joint per influence (4 or {@link #passWidth} per point; char: joint counts up to 65536). */
     private final char[] joints;
+    /** The weights the blend pass reads: {@link #points} (fused) or {@link #passWidth} per point. */
+    private final float[] passWeights;
+    private final boolean fused;
+    private final int passWidth;
+    private final float[] restPositions;
+    private final float[] restNormals;
     private final int jointCount;
     private final ThreadLocal<float[]> columns;
+    private final ThreadLocal<float[]> scratch = ThreadLocal.withInitial(() -> new float[16 * MatrixPasses.CHUNK]);
     private final ThreadLocal<float[]> lastPointScratch = ThreadLocal.withInitial(() -> new float[16]);
 
     VectorLbsSkinner(SkinnedGeometry geometry, NormalTransform normals) {
         super(SkinningMethod.LBS, "vector-256", geometry, normals);
         int width = geometry.influencesPerPoint();
-        if (width > INFLUENCES) {
-            throw new IllegalArgumentException(width + " influences per point; this kernel takes up to " + INFLUENCES);
-        }
         this.jointCount = geometry.jointCount();
+        this.restPositions = geometry.positionArray();
+        this.restNormals = geometry.normalArray();
         int n = geometry.pointCount();
-        float[] pos = geometry.positionArray();
-        float[] nrm = geometry.normalArray();
+        float[] pos = restPositions;
+        float[] nrm = restNormals;
         int[] joints = geometry.jointArray();
         float[] weights = geometry.weightArray();
-        points = new float[STRIDE * n];
-        this.joints = new char[INFLUENCES * n];
-        for (int i = 0; i < n; i++) {
-            int o = STRIDE * i;
-            points[o] = pos[3 * i];
-            points[o + 1] = pos[3 * i + 1];
-            points[o + 2] = pos[3 * i + 2];
-            points[o + 3] = nrm[3 * i];
-            points[o + 4] = nrm[3 * i + 1];
-            points[o + 5] = nrm[3 * i + 2];
-            for (int k = 0; k < INFLUENCES; k++) {
-                // Padding: weight 0 on the first joint adds exactly nothing.
-                points[o + 6 + k] = k < width ? weights[width * i + k] : 0f;
-                this.joints[INFLUENCES * i + k] = (char) joints[width * i + (k < width ? k : 0)];
+        this.fused = width <= INFLUENCES;
+        this.passWidth = MatrixPasses.paddedWidth(width);
+        if (fused) {
+            points = new float[STRIDE * n];
+            this.joints = new char[INFLUENCES * n];
+            passWeights = points;
+            for (int i = 0; i < n; i++) {
+                int o = STRIDE * i;
+                points[o] = pos[3 * i];
+                points[o + 1] = pos[3 * i + 1];
+                points[o + 2] = pos[3 * i + 2];
+                points[o + 3] = nrm[3 * i];
+                points[o + 4] = nrm[3 * i + 1];
+                points[o + 5] = nrm[3 * i + 2];
+                for (int k = 0; k < INFLUENCES; k++) {
+                    // Padding: weight 0 on the first joint adds exactly nothing.
+                    points[o + 6 + k] = k < width ? weights[width * i + k] : 0f;
+                    this.joints[INFLUENCES * i + k] = (char) joints[width * i + (k < width ? k : 0)];
+                }
+            }
+        } else {
+            points = null;
+            this.joints = new char[passWidth * n];
+            passWeights = new float[passWidth * n];
+            for (int i = 0; i < n; i++) {
+                for (int k = 0; k < passWidth; k++) {
+                    passWeights[passWidth * i + k] = k < width ? weights[width * i + k] : 0f;
+                    this.joints[passWidth * i + k] = (char) joints[width * i + (k < width ? k : 0)];
+                }
             }
         }
         int size = 16 * jointCount;
         columns = ThreadLocal.withInitial(() -> new float[size]);
     }
 
+    /** Blends points [from, to) into the scratch (16 floats per point from 0). */
+    private void blend(float[] c, int from, int to, float[] acc) {
+        if (fused) {
+            MatrixPasses.blend4(c, joints, passWeights, 6, STRIDE, from, to, acc);
+        } else {
+            MatrixPasses.blend(c, joints, passWeights, passWidth, from, to, acc);
+        }
+    }
+
+    @Override
+    public void skinFrames(JointPalette palette, float[] outFrames, int from, int to) {
+        float[] c = columnMajor(palette);
+        float[] acc = scratch.get();
+        boolean cofactor = normals == NormalTransform.INVERSE_TRANSPOSE;
+        for (int s = from; s < to; s += MatrixPasses.CHUNK) {
+            int e = Math.min(to, s + MatrixPasses.CHUNK);
+            blend(c, s, e, acc);
+            MatrixPasses.frames(acc, restPositions, cofactor, outFrames, s, e);
+        }
+    }
+
     @Override
     public void skin(JointPalette palette, float[] outPositions, float[] outNormals, int from, int to) {
         float[] c = columnMajor(palette);
+        if (!fused) {
+            float[] acc = scratch.get();
+            float[] tmp = lastPointScratch.get();
+            boolean exact = normals == NormalTransform.INVERSE_TRANSPOSE;
+            for (int s = from; s < to; s += MatrixPasses.CHUNK) {
+                int e = Math.min(to, s + MatrixPasses.CHUNK);
+                blend(c, s, e, acc);
+                MatrixPasses.points(acc, restPositions, restNormals, exact, outPositions, outNormals, s, e, tmp,
+                        to - e >= 2);
+            }
+            if (exact) {
+                MatrixPasses.normalise(outNormals, from, to);
+            }
+            return;
+        }
         int end = Math.max(from, to - 2);
         if (normals == NormalTransform.BLENDED_MATRIX) {
             blendedNormals(c, outPositions, outNormals, from, end);
@@ -97,7 +161,7 @@ final class VectorLbsSkinner extends AbstractSkinner {
             lastPoint(c, outPositions, outNormals, i);
         }
         if (normals == NormalTransform.INVERSE_TRANSPOSE) {
-            normalise(outNormals, from, to);
+            MatrixPasses.normalise(outNormals, from, to);
         }
     }
 
@@ -126,24 +190,8 @@ final class VectorLbsSkinner extends AbstractSkinner {
             throw new IllegalArgumentException("palette of " + palette.jointCount() + " joints for a geometry of "
                     + jointCount);
         }
-        float[] m = palette.matrices();
         float[] c = columns.get();
-        for (int j = 0; j < jointCount; j++) {
-            int s = 12 * j;
-            int d = 16 * j;
-            c[d] = m[s];
-            c[d + 1] = m[s + 4];
-            c[d + 2] = m[s + 8];
-            c[d + 4] = m[s + 1];
-            c[d + 5] = m[s + 5];
-            c[d + 6] = m[s + 9];
-            c[d + 8] = m[s + 2];
-            c[d + 9] = m[s + 6];
-            c[d + 10] = m[s + 10];
-            c[d + 12] = m[s + 3];
-            c[d + 13] = m[s + 7];
-            c[d + 14] = m[s + 11];
-        }
+        MatrixPasses.columnMajor(palette.matrices(), jointCount, c);
         return c;
     }
 
@@ -205,6 +253,7 @@ final class VectorLbsSkinner extends AbstractSkinner {
         final float[] pts = points;
         final char[] off = joints;
         final FloatVector one = FloatVector.broadcast(S, 1f);
+        final FloatVector minusOne = FloatVector.broadcast(S, -1f);
         for (int i = from; i < end; i++) {
             int o = STRIDE * i;
             int q = INFLUENCES * i;
@@ -237,50 +286,13 @@ final class VectorLbsSkinner extends AbstractSkinner {
             FloatVector k2 = a.mul(aSwap.rearrange(YZX)).sub(a.rearrange(YZX).mul(aSwap)).rearrange(YZX);
             FloatVector nxy = FloatVector.broadcast(S, pts[o + 3]).blend(FloatVector.broadcast(S, pts[o + 4]), HI);
             FloatVector t = k01.mul(nxy);
+            // det = c0 . (c1 x c2), summed over lanes 0-2: its sign keeps mirrored normals outward
+            FloatVector d = a.mul(k01);
+            d = d.add(d.rearrange(YZX)).add(d.rearrange(ZXY));
+            FloatVector sign = one.blend(minusOne, d.compare(VectorOperators.LT, 0f));
             // Unnormalised here; normalise() does 8 points per square root and division.
-            t.add(t.rearrange(SWAP)).add(k2.mul(FloatVector.broadcast(S, pts[o + 5])))
+            t.add(t.rearrange(SWAP)).add(k2.mul(FloatVector.broadcast(S, pts[o + 5]))).mul(sign)
                     .intoArray(outNormals, 3 * i + normalShift);
-        }
-    }
-
-    /**
-     * Scales the normals of points {@code [from, to)} (interleaved, at {@code 3 * point}) to unit
-     * length, zero ones staying zero: eight points per step, de-interleaved into x, y, z lanes, so
-     * that a square root and a division serve eight normals. Points past the last whole group of
-     * eight take the same float operations one by one, so results do not depend on where groups
-     * start.
-     */
-    private static void normalise(float[] normals, int from, int to) {
-        final FloatVector zero = FloatVector.zero(S);
-        final FloatVector one = FloatVector.broadcast(S, 1f);
-        int i = from;
-        for (; i + 8 <= to; i += 8) {
-            int o = 3 * i;
-            FloatVector v0 = FloatVector.fromArray(S, normals, o);
-            FloatVector v1 = FloatVector.fromArray(S, normals, o + 8);
-            FloatVector v2 = FloatVector.fromArray(S, normals, o + 16);
-            FloatVector x = v0.rearrange(Lanes.GX0).blend(v1.rearrange(Lanes.GX1), Lanes.MGX1)
-                    .blend(v2.rearrange(Lanes.GX2), Lanes.MGX2);
-            FloatVector y = v0.rearrange(Lanes.GY0).blend(v1.rearrange(Lanes.GY1), Lanes.MGY1)
-                    .blend(v2.rearrange(Lanes.GY2), Lanes.MGY2);
-            FloatVector z = v0.rearrange(Lanes.GZ0).blend(v1.rearrange(Lanes.GZ1), Lanes.MGZ1)
-                    .blend(v2.rearrange(Lanes.GZ2), Lanes.MGZ2);
-            FloatVector len2 = x.mul(x).add(y.mul(y)).add(z.mul(z));
-            FloatVector scale = zero.blend(one.div(len2.sqrt()), len2.compare(VectorOperators.GT, 0f));
-            v0.mul(scale.rearrange(Lanes.TRIPLE0)).intoArray(normals, o);
-            v1.mul(scale.rearrange(Lanes.TRIPLE1)).intoArray(normals, o + 8);
-            v2.mul(scale.rearrange(Lanes.TRIPLE2)).intoArray(normals, o + 16);
-        }
-        for (; i < to; i++) {
-            int o = 3 * i;
-            float x = normals[o];
-            float y = normals[o + 1];
-            float z = normals[o + 2];
-            float len2 = x * x + y * y + z * z;
-            float scale = len2 > 0f ? 1f / (float) Math.sqrt(len2) : 0f;
-            normals[o] = x * scale;
-            normals[o + 1] = y * scale;
-            normals[o + 2] = z * scale;
         }
     }
 }

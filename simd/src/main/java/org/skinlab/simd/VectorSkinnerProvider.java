@@ -1,5 +1,6 @@
 package org.skinlab.simd;
 
+import org.skinlab.skinning.FrameExpansion;
 import org.skinlab.skinning.NormalTransform;
 import org.skinlab.skinning.SkinnedGeometry;
 import org.skinlab.skinning.Skinner;
@@ -10,8 +11,8 @@ import org.skinlab.skinning.SkinningMethod;
  * Offers the Vector API kernels when they can run fast here: the JVM was started with
  * {@code --add-modules jdk.incubator.vector}, its vectors are at least 256 bits wide (otherwise the
  * API silently falls back to a Java loop per lane, far slower than the scalar kernels), and the
- * geometry has at most 4 influences per point and 65536 joints. In every other case it returns null and core's
- * scalar kernels run.
+ * geometry has at most 65536 joints (any number of influences). In every other case it returns null
+ * and core's scalar kernels run. The same conditions hold for its {@link FrameExpansion}.
  *
  * <p>This class must load without the incubator module, so it names no class of it: the check
  * goes through the module layer, and {@link VectorKernels} is touched only after it passes.
@@ -21,12 +22,19 @@ public final class VectorSkinnerProvider implements SkinnerProvider {
 
     @Override
     public Skinner create(SkinningMethod method, SkinnedGeometry geometry, NormalTransform normals) {
-        if (!moduleAvailable() || geometry.influencesPerPoint() > VectorKernels.MAX_INFLUENCES
-                || geometry.jointCount() > VectorKernels.MAX_JOINTS
+        if (!moduleAvailable() || geometry.jointCount() > VectorKernels.MAX_JOINTS
                 || !VectorKernels.fastOnThisMachine()) {
             return null;
         }
         return VectorKernels.create(method, geometry, normals);
+    }
+
+    @Override
+    public FrameExpansion frameExpansion() {
+        if (!moduleAvailable() || !VectorKernels.fastOnThisMachine()) {
+            return null;
+        }
+        return VectorKernels.frameExpansion();
     }
 
     /** True when the incubator module is in the boot layer (the JVM got {@code --add-modules}). */

@@ -2,7 +2,6 @@ package org.skinlab.simd;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
-import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.File;
@@ -23,12 +22,12 @@ import org.skinlab.skinning.SkinningMethod;
 /** When the provider offers its kernels and when core's scalar ones run instead. */
 class VectorSkinnerProviderTest {
     @Test
-    void skinnersPicksTheVectorKernelsUpToFourInfluences() {
+    void skinnersPicksTheVectorKernelsForAnyInfluenceCount() {
         // This test JVM runs with --add-modules jdk.incubator.vector (simd/build.gradle) on an
         // AVX2 machine, and ServiceLoader finds the provider through META-INF/services.
         assertTrue(VectorSkinnerProvider.moduleAvailable());
-        for (int width = 1; width <= 4; width++) {
-            SkinnedGeometry g = Geometries.random(width, 20, width, 6);
+        for (int width = 1; width <= 12; width++) {
+            SkinnedGeometry g = Geometries.random(width, 20, width, 16);
             for (SkinningMethod m : SkinningMethod.values()) {
                 Skinner s = Skinners.create(m, g, NormalTransform.INVERSE_TRANSPOSE);
                 assertEquals("vector-256", s.implementation(), m + " with " + width + " influences");
@@ -37,15 +36,7 @@ class VectorSkinnerProviderTest {
                 assertEquals(m == SkinningMethod.DQS ? 8 : 1, s.rangeAlignment());
             }
         }
-    }
-
-    @Test
-    void moreThanFourInfluencesFallBackToScalar() {
-        SkinnedGeometry g = Geometries.random(5, 20, 5, 8);
-        for (SkinningMethod m : SkinningMethod.values()) {
-            assertNull(new VectorSkinnerProvider().create(m, g, NormalTransform.BLENDED_MATRIX));
-            assertEquals("scalar", Skinners.create(m, g, NormalTransform.BLENDED_MATRIX).implementation());
-        }
+        assertEquals("vector-256", Skinners.expansion().implementation());
     }
 
     @Test

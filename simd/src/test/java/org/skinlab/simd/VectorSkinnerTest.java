@@ -14,6 +14,8 @@ import org.skinlab.skinning.JointPalette;
 import org.skinlab.skinning.NormalTransform;
 import org.skinlab.skinning.SkinnedGeometry;
 import org.skinlab.skinning.Skinner;
+import org.skinlab.skinning.ScalarDqsSkinner;
+import org.skinlab.skinning.ScalarLbsSkinner;
 import org.skinlab.skinning.Skinners;
 import org.skinlab.skinning.SkinningMethod;
 
@@ -78,10 +80,14 @@ class VectorSkinnerTest {
     @ParameterizedTest(name = "{0} {1}, {2} influences")
     @CsvSource({"LBS, BLENDED_MATRIX, 4", "LBS, INVERSE_TRANSPOSE, 4", "DQS, BLENDED_MATRIX, 4",
         "DQS, INVERSE_TRANSPOSE, 4", "LBS, INVERSE_TRANSPOSE, 1", "LBS, BLENDED_MATRIX, 3", "DQS, BLENDED_MATRIX, 2",
-        "DQS, INVERSE_TRANSPOSE, 3", "DQS, BLENDED_MATRIX, 1"})
+        "DQS, INVERSE_TRANSPOSE, 3", "DQS, BLENDED_MATRIX, 1", "LBS, INVERSE_TRANSPOSE, 5", "LBS, BLENDED_MATRIX, 6",
+        "LBS, INVERSE_TRANSPOSE, 7", "LBS, INVERSE_TRANSPOSE, 8", "LBS, BLENDED_MATRIX, 9", "LBS, INVERSE_TRANSPOSE, 10",
+        "LBS, INVERSE_TRANSPOSE, 11", "LBS, BLENDED_MATRIX, 12", "DQS, INVERSE_TRANSPOSE, 5", "DQS, BLENDED_MATRIX, 6",
+        "DQS, INVERSE_TRANSPOSE, 7", "DQS, INVERSE_TRANSPOSE, 8", "DQS, BLENDED_MATRIX, 9", "DQS, INVERSE_TRANSPOSE, 10",
+        "DQS, BLENDED_MATRIX, 11", "DQS, INVERSE_TRANSPOSE, 12"})
     void agreesWithScalarOnRandomPointsForEveryRange(SkinningMethod method, NormalTransform normals, int width) {
-        // 203 points: 25 whole blocks of 8 and a tail of 3.
-        SkinnedGeometry g = Geometries.random(7 + width, 203, width, 9);
+        // 203 points: 25 whole blocks of 8 and a tail of 3; 16 joints so 12 distinct ones fit.
+        SkinnedGeometry g = Geometries.random(7 + width, 203, width, 16);
         JointPalette palette = Geometries.pose(g, 11, false);
         Skinner k = vector(method, g, normals);
         assertAgrees(k, palette, 0, 203);
@@ -96,14 +102,76 @@ class VectorSkinnerTest {
         }
     }
 
-    @ParameterizedTest(name = "{0} {1}")
-    @CsvSource({"LBS, BLENDED_MATRIX", "LBS, INVERSE_TRANSPOSE", "DQS, BLENDED_MATRIX", "DQS, INVERSE_TRANSPOSE"})
-    void agreesWithScalarWhenJointsAreScaled(SkinningMethod method, NormalTransform normals) {
-        SkinnedGeometry g = Geometries.random(3, 101, 4, 6);
+    @ParameterizedTest(name = "{0} {1}, {2} influences")
+    @CsvSource({"LBS, BLENDED_MATRIX, 4", "LBS, INVERSE_TRANSPOSE, 4", "DQS, BLENDED_MATRIX, 4",
+        "DQS, INVERSE_TRANSPOSE, 4", "DQS, INVERSE_TRANSPOSE, 1", "DQS, INVERSE_TRANSPOSE, 6",
+        "DQS, BLENDED_MATRIX, 8", "DQS, INVERSE_TRANSPOSE, 11", "LBS, INVERSE_TRANSPOSE, 6"})
+    void agreesWithScalarWhenJointsAreScaled(SkinningMethod method, NormalTransform normals, int width) {
+        SkinnedGeometry g = Geometries.random(3 + width, 101, width, 16);
         JointPalette palette = Geometries.pose(g, 5, true);
         assertTrue(palette.hasScale(), "the pose scales every other joint");
         assertAgrees(vector(method, g, normals), palette, 0, 101);
         assertAgrees(vector(method, g, normals), palette, 9, 90);
+        assertFramesAgree(vector(method, g, normals), palette, 0, 101);
+        assertFramesAgree(vector(method, g, normals), palette, 3, 77);
+    }
+
+    @ParameterizedTest(name = "{0} {1}, {2} influences, scaled {3}")
+    @CsvSource({"LBS, BLENDED_MATRIX, 4, false", "LBS, INVERSE_TRANSPOSE, 3, false", "LBS, INVERSE_TRANSPOSE, 7, false",
+        "LBS, INVERSE_TRANSPOSE, 12, true", "DQS, BLENDED_MATRIX, 2, false", "DQS, INVERSE_TRANSPOSE, 4, false",
+        "DQS, INVERSE_TRANSPOSE, 6, false", "DQS, INVERSE_TRANSPOSE, 6, true", "DQS, BLENDED_MATRIX, 9, true"})
+    void framesAgreeWithScalar(SkinningMethod method, NormalTransform normals, int width, boolean scaled) {
+        SkinnedGeometry g = Geometries.random(40 + width, 203, width, 16);
+        JointPalette palette = Geometries.pose(g, 41, scaled);
+        Skinner k = vector(method, g, normals);
+        int[] edges = {0, 1, 7, 8, 9, 63, 64, 65, 130, 200, 203};
+        for (int from : edges) {
+            for (int to : edges) {
+                if (from <= to) {
+                    assertFramesAgree(k, palette, from, to);
+                }
+            }
+        }
+    }
+
+    @ParameterizedTest(name = "{0} {1}, {2} influences")
+    @CsvSource({"LBS, INVERSE_TRANSPOSE, 4", "LBS, INVERSE_TRANSPOSE, 6", "DQS, INVERSE_TRANSPOSE, 4",
+        "DQS, INVERSE_TRANSPOSE, 6"})
+    void mirroringPalettesAgreeWithScalar(SkinningMethod method, NormalTransform normals, int width) {
+        // Every other joint mirrored (a negative scale): LBS blends of mixed signs, DQS scale parts
+        // with negative determinants; the scalar kernel turns such normals outwards.
+        SkinnedGeometry g = Geometries.random(60 + width, 203, width, 16);
+        JointPalette palette = Geometries.pose(g, 61, false);
+        org.joml.Matrix4f m = new org.joml.Matrix4f();
+        for (int j = 0; j < palette.jointCount(); j += 2) {
+            palette.setMatrix(j, palette.getMatrix(j, m).scale(-1f, 1f, 1f));
+        }
+        palette.prepareDualQuaternions();
+        assertTrue(palette.hasScale(), "a mirrored joint is a scale part for DQS");
+        assertAgrees(vector(method, g, normals), palette, 0, 203);
+        assertFramesAgree(vector(method, g, normals), palette, 0, 203);
+    }
+
+    /** skinFrames of both kernels on [from, to), outputs compared (nothing written outside). */
+    private static void assertFramesAgree(Skinner vector, JointPalette palette, int from, int to) {
+        SkinnedGeometry g = vector.geometry();
+        Skinner scalar = vector.method() == SkinningMethod.LBS ? new ScalarLbsSkinner(g, vector.normalTransform())
+                : new ScalarDqsSkinner(g, vector.normalTransform());
+        int n = g.pointCount();
+        float[] vf = nanFilled(Skinner.FRAME_FLOATS * n);
+        float[] sf = nanFilled(Skinner.FRAME_FLOATS * n);
+        vector.skinFrames(palette, vf, from, to);
+        scalar.skinFrames(palette, sf, from, to);
+        for (int i = 0; i < vf.length; i++) {
+            int point = i / Skinner.FRAME_FLOATS;
+            if (point < from || point >= to) {
+                if (!Float.isNaN(vf[i])) {
+                    fail("frame float " + i + " outside [" + from + ", " + to + ") was written");
+                }
+                continue;
+            }
+            check("frame", i, vf[i], sf[i], from, to, vector);
+        }
     }
 
     @ParameterizedTest(name = "{0} {1}")
