@@ -46,8 +46,9 @@ public final class ParallelSkinner implements Skinner, AutoCloseable {
     private JointPalette palette;
     private float[] outPositions;
     private float[] outNormals;
-    /** Null for {@link #skin}; the output of {@link #skinFrames} otherwise. */
     private float[] outFrames;
+    /** Whether the frame being run is a {@link #skinFrames} call. */
+    private boolean frames;
     private int from;
     private int to;
     private int chunkSize;
@@ -112,22 +113,23 @@ public final class ParallelSkinner implements Skinner, AutoCloseable {
 
     @Override
     public void skin(JointPalette p, float[] positions, float[] normals, int start, int end) {
-        run(p, positions, normals, null, start, end);
+        run(p, positions, normals, null, false, start, end);
     }
 
     @Override
     public void skinFrames(JointPalette p, float[] frames, int start, int end) {
-        run(p, null, null, frames, start, end);
+        run(p, null, null, frames, true, start, end);
     }
 
-    private void run(JointPalette p, float[] positions, float[] normals, float[] frames, int start, int end) {
+    private void run(JointPalette p, float[] positions, float[] normals, float[] outputFrames, boolean framesCall,
+            int start, int end) {
         if (closed) {
             throw new IllegalStateException("ParallelSkinner is closed");
         }
         int n = end - start;
         int chunks = Math.min(threads() * CHUNKS_PER_THREAD, n / MIN_CHUNK);
         if (workers.length == 0 || chunks < 2) {
-            runKernel(p, positions, normals, frames, start, end);
+            runKernel(p, positions, normals, outputFrames, framesCall, start, end);
             return;
         }
         int size = (n + chunks - 1) / chunks;
@@ -135,7 +137,8 @@ public final class ParallelSkinner implements Skinner, AutoCloseable {
         palette = p;
         outPositions = positions;
         outNormals = normals;
-        outFrames = frames;
+        outFrames = outputFrames;
+        frames = framesCall;
         from = start;
         to = end;
         chunkSize = size;
@@ -196,7 +199,7 @@ public final class ParallelSkinner implements Skinner, AutoCloseable {
             }
             int chunk = (int) c;
             try {
-                runKernel(palette, outPositions, outNormals, outFrames, bound(chunk), bound(chunk + 1));
+                runKernel(palette, outPositions, outNormals, outFrames, frames, bound(chunk), bound(chunk + 1));
             } catch (RuntimeException | Error e) {
                 failure.compareAndSet(null, e);
             }
@@ -208,11 +211,12 @@ public final class ParallelSkinner implements Skinner, AutoCloseable {
         }
     }
 
-    private void runKernel(JointPalette p, float[] positions, float[] normals, float[] frames, int start, int end) {
-        if (frames == null) {
-            kernel.skin(p, positions, normals, start, end);
+    private void runKernel(JointPalette p, float[] positions, float[] normals, float[] outputFrames,
+            boolean framesCall, int start, int end) {
+        if (framesCall) {
+            kernel.skinFrames(p, outputFrames, start, end);
         } else {
-            kernel.skinFrames(p, frames, start, end);
+            kernel.skin(p, positions, normals, start, end);
         }
     }
 

@@ -8,7 +8,8 @@ import org.joml.Vector3f;
 import org.junit.jupiter.api.Test;
 
 /**
- * {@link NormalTransform#INVERSE_TRANSPOSE} in the scalar kernels against JOML's own
+ * {@link NormalTransform#INVERSE_TRANSPOSE} in the scalar kernels (directly and through
+ * {@link Skinner#skinFrames} and {@link FrameExpansion}) against JOML's own
  * {@code invert().transpose()} of the joint matrix (an independent computation), on a single joint
  * that rotates and scales non-uniformly, so that the inverse-transpose, the inverse and the matrix
  * itself all move a normal differently. Tolerance 1e-5: a handful of float operations on unit
@@ -80,5 +81,53 @@ class InverseTransposeNormalsTest {
         float[] n = new float[NORMALS.length];
         new ScalarDqsSkinner(g, NormalTransform.INVERSE_TRANSPOSE).skinAll(palette, p, n);
         assertInverseTranspose(m, n);
+    }
+
+    /** Skins with {@code method} directly and through frames and the scalar expansion; both must agree. */
+    private static float[] normalsBothWays(SkinningMethod method, Matrix4f m) {
+        SkinnedGeometry g = oneJoint();
+        JointPalette palette = g.newPalette();
+        palette.setMatrix(0, m);
+        palette.prepareDualQuaternions();
+        Skinner k = Skinners.scalar(method, g, NormalTransform.INVERSE_TRANSPOSE);
+        float[] p = new float[NORMALS.length];
+        float[] n = new float[NORMALS.length];
+        k.skinAll(palette, p, n);
+        int points = g.pointCount();
+        float[] frames = new float[Skinner.FRAME_FLOATS * points];
+        k.skinFrames(palette, frames, 0, points);
+        int[] identity = new int[points];
+        for (int i = 0; i < points; i++) {
+            identity[i] = i;
+        }
+        float[] p2 = new float[NORMALS.length];
+        float[] n2 = new float[NORMALS.length];
+        FrameExpansion.SCALAR.expand(frames, identity, g.normalArray(), p2, n2, 0, points, true);
+        for (int i = 0; i < NORMALS.length; i++) {
+            assertEquals(p[i], p2[i], 1e-5f, method + ": position float " + i + " by frames");
+            assertEquals(n[i], n2[i], 1e-5f, method + ": normal float " + i + " by frames");
+        }
+        return n;
+    }
+
+    @Test
+    void mirroringJointsKeepNormalsOutward() {
+        // A mirror (det < 0): the cofactor is det times the inverse-transpose and would turn every
+        // normal inwards; the inverse-transpose itself is the outward normal of the mirrored surface
+        // (a face at x = +1 with normal +x lands at x = -1 facing -x).
+        Matrix4f mirror = new Matrix4f().rotateXYZ(0.2f, 0.9f, -0.3f).scale(-1f, 1f, 1f).setTranslation(0.5f, 0f, 0f);
+        Matrix4f scaledMirror = new Matrix4f().rotateXYZ(-0.6f, 0.1f, 0.4f).scale(1.5f, -0.5f, 2f);
+        for (SkinningMethod method : SkinningMethod.values()) {
+            assertInverseTranspose(mirror, normalsBothWays(method, mirror));
+            assertInverseTranspose(scaledMirror, normalsBothWays(method, scaledMirror));
+        }
+    }
+
+    @Test
+    void framesCarryTheSameNormalsForOrdinaryJoints() {
+        Matrix4f m = new Matrix4f().rotateXYZ(0.7f, -0.4f, 1.1f).scale(2f, 1f, 0.5f).setTranslation(0.1f, 0.2f, 0.3f);
+        for (SkinningMethod method : SkinningMethod.values()) {
+            assertInverseTranspose(m, normalsBothWays(method, m));
+        }
     }
 }

@@ -76,6 +76,7 @@ class ParallelSkinnerTest {
     /** A kernel that records the ranges it is given. */
     private static final class Recorder implements Skinner {
         final List<int[]> ranges = Collections.synchronizedList(new ArrayList<>());
+        final List<int[]> frameRanges = Collections.synchronizedList(new ArrayList<>());
         final SkinnedGeometry geometry;
         final int alignment;
         int throwAt = -1;
@@ -109,6 +110,11 @@ class ParallelSkinnerTest {
         }
 
         @Override
+        public void skinFrames(JointPalette palette, float[] outFrames, int from, int to) {
+            frameRanges.add(new int[] {from, to});
+        }
+
+        @Override
         public int rangeAlignment() {
             return alignment;
         }
@@ -117,6 +123,25 @@ class ParallelSkinnerTest {
         public String implementation() {
             return "recorder";
         }
+    }
+
+    @Test
+    void framesAreSplitLikePoints() {
+        SkinnedGeometry g = geometry(10);
+        Recorder k = new Recorder(g, 8);
+        try (ParallelSkinner parallel = new ParallelSkinner(k, 2)) {
+            parallel.skinFrames(null, null, 3, 99_997);
+        }
+        assertTrue(k.ranges.isEmpty(), "skinFrames must not call skin");
+        assertTrue(k.frameRanges.size() > 1, "the range is split");
+        List<int[]> sorted = new ArrayList<>(k.frameRanges);
+        sorted.sort((a, b) -> Integer.compare(a[0], b[0]));
+        int next = 3;
+        for (int[] r : sorted) {
+            assertEquals(next, r[0], "chunks are contiguous and disjoint");
+            next = r[1];
+        }
+        assertEquals(99_997, next);
     }
 
     @Test

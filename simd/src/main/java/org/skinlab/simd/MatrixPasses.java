@@ -19,6 +19,14 @@ import org.skinlab.skinning.Skinner;
  * {@link Skinner#skinFrames}). Passes meet in a small scratch of {@link #CHUNK} matrices (16 floats
  * each) that stays in L1.
  *
+ * <p><b>Sign of a determinant</b> (exact normals): {@code clamp(d * 1e30, -1, 1)}, two lane-wise
+ * min/max and a multiply, written out in each loop. A compare and a masked blend would say it
+ * exactly, but tipped C2 over its inlining budget on JDK 17, and a call of a method of ours is not
+ * inlined there either: either way every vector is then boxed (80x slower). It differs from
+ * {@code Math.copySign(1, d)} only for |d| < 1e-30, where the determinant's tiny magnitude is kept
+ * (the normal is renormalised afterwards; zero for a singular matrix, which has no normal
+ * direction).
+ *
  * <p>Why passes and not one loop: an influence loop with a variable trip count carries its
  * vectors through loop phis, which measured 1.5x slower than straight-line code on JDK 17 and 25;
  * so blends are written out for 4 and 8 influences (fewer are padded with weight 0), and more than
@@ -190,7 +198,6 @@ final class MatrixPasses {
      */
     static void frames(float[] acc, float[] positions, boolean cofactor, float[] out, int from, int to) {
         final FloatVector one = FloatVector.broadcast(S, 1f);
-        final FloatVector minusOne = FloatVector.broadcast(S, -1f);
         for (int i = from; i < to; i++) {
             int o = 16 * (i - from);
             FloatVector a = FloatVector.fromArray(S, acc, o);
@@ -211,7 +218,7 @@ final class MatrixPasses {
                 // det = c0 . (c1 x c2) = c1 . (c2 x c0): in lanes 0-2 and 4-6 after summing x, y, z
                 FloatVector d = a.mul(k01);
                 d = d.add(d.rearrange(YZX)).add(d.rearrange(ZXY));
-                FloatVector sign = one.blend(minusOne, d.compare(VectorOperators.LT, 0f));
+                FloatVector sign = d.mul(1e30f).max(-1f).min(1f); // sign(d), written out
                 k01.mul(sign).intoArray(out, f);
                 k2.mul(sign).blend(p, HI).intoArray(out, f + 8);
             } else {
@@ -245,7 +252,6 @@ final class MatrixPasses {
     private static void points(float[] acc, float[] positions, float[] normals, boolean exact, float[] outPositions,
             float[] outNormals, int base, int from, int end, int positionShift, int normalShift) {
         final FloatVector one = FloatVector.broadcast(S, 1f);
-        final FloatVector minusOne = FloatVector.broadcast(S, -1f);
         final FloatVector zero = FloatVector.zero(S);
         for (int i = from; i < end; i++) {
             int o = 16 * (i - base);
@@ -265,7 +271,7 @@ final class MatrixPasses {
                 FloatVector k2 = a.mul(aSwap.rearrange(YZX)).sub(a.rearrange(YZX).mul(aSwap)).rearrange(YZX);
                 FloatVector d = a.mul(k01);
                 d = d.add(d.rearrange(YZX)).add(d.rearrange(ZXY));
-                FloatVector sign = one.blend(minusOne, d.compare(VectorOperators.LT, 0f));
+                FloatVector sign = d.mul(1e30f).max(-1f).min(1f); // sign(d), written out
                 FloatVector t = k01.mul(nxy);
                 t.add(t.rearrange(SWAP)).add(k2.mul(FloatVector.broadcast(S, normals[v + 2]))).mul(sign)
                         .intoArray(outNormals, v + normalShift);

@@ -105,9 +105,14 @@ final class VectorDqsSkinner extends AbstractSkinner {
         blockJoints = new char[width * n];
         for (int i = 0; i < n; i++) {
             int o = BLOCK_FLOATS * (i / BLOCK) + i % BLOCK;
+            // Exact normals are unit: normalised here once, a rotation keeps them so (the scalar
+            // kernel, for points outside whole blocks, normalises after rotating).
+            float nx = nrm[3 * i], ny = nrm[3 * i + 1], nz = nrm[3 * i + 2];
+            float len2 = nx * nx + ny * ny + nz * nz;
+            float scale = normals == NormalTransform.INVERSE_TRANSPOSE && len2 > 0f ? 1f / (float) Math.sqrt(len2) : 1f;
             for (int c = 0; c < 3; c++) {
                 this.points[o + BLOCK * c] = pos[3 * i + c];
-                this.points[o + BLOCK * (3 + c)] = nrm[3 * i + c];
+                this.points[o + BLOCK * (3 + c)] = nrm[3 * i + c] * scale;
             }
             for (int k = 0; k < width; k++) {
                 // Padding: weight 0 on the pivot joint adds +-0.
@@ -426,7 +431,6 @@ final class VectorDqsSkinner extends AbstractSkinner {
      */
     private void applyAndStore(float[] s, float[] outPositions, float[] outNormals, int firstBlock, int endBlock) {
         final float[] blk = points;
-        final boolean exact = normals == NormalTransform.INVERSE_TRANSPOSE;
         final FloatVector one = FloatVector.broadcast(S, 1f);
         for (int b = firstBlock; b < endBlock; b++) {
             int so = SCRATCH * (b - firstBlock);
@@ -475,14 +479,6 @@ final class VectorDqsSkinner extends AbstractSkinner {
             ox = nx.add(ex.add(ex));
             oy = ny.add(ey.add(ey));
             oz = nz.add(ez.add(ez));
-            if (exact) {
-                // Unit length, zero staying zero, as MatrixPasses.normalise and the scalar kernel do.
-                FloatVector len2 = ox.mul(ox).add(oy.mul(oy)).add(oz.mul(oz));
-                FloatVector scale = FloatVector.zero(S).blend(one.div(len2.sqrt()), len2.compare(VectorOperators.GT, 0f));
-                ox = ox.mul(scale);
-                oy = oy.mul(scale);
-                oz = oz.mul(scale);
-            }
             ox.rearrange(Lanes.X0).blend(oy.rearrange(Lanes.Y0), Lanes.MY0).blend(oz.rearrange(Lanes.Z0), Lanes.MZ0).intoArray(outNormals, out);
             ox.rearrange(Lanes.X1).blend(oy.rearrange(Lanes.Y1), Lanes.MY1).blend(oz.rearrange(Lanes.Z1), Lanes.MZ1).intoArray(outNormals, out + 8);
             ox.rearrange(Lanes.X2).blend(oy.rearrange(Lanes.Y2), Lanes.MY2).blend(oz.rearrange(Lanes.Z2), Lanes.MZ2).intoArray(outNormals, out + 16);

@@ -253,7 +253,6 @@ final class VectorLbsSkinner extends AbstractSkinner {
         final float[] pts = points;
         final char[] off = joints;
         final FloatVector one = FloatVector.broadcast(S, 1f);
-        final FloatVector minusOne = FloatVector.broadcast(S, -1f);
         for (int i = from; i < end; i++) {
             int o = STRIDE * i;
             int q = INFLUENCES * i;
@@ -287,11 +286,11 @@ final class VectorLbsSkinner extends AbstractSkinner {
             FloatVector nxy = FloatVector.broadcast(S, pts[o + 3]).blend(FloatVector.broadcast(S, pts[o + 4]), HI);
             FloatVector t = k01.mul(nxy);
             // det = c0 . (c1 x c2), summed over lanes 0-2: its sign keeps mirrored normals outward
+            // (as MatrixPasses' sign rule, written out: a call of ours would box every vector)
             FloatVector d = a.mul(k01);
             d = d.add(d.rearrange(YZX)).add(d.rearrange(ZXY));
-            FloatVector sign = one.blend(minusOne, d.compare(VectorOperators.LT, 0f));
             // Unnormalised here; normalise() does 8 points per square root and division.
-            t.add(t.rearrange(SWAP)).add(k2.mul(FloatVector.broadcast(S, pts[o + 5]))).mul(sign)
+            t.add(t.rearrange(SWAP)).add(k2.mul(FloatVector.broadcast(S, pts[o + 5]))).mul(d.mul(1e30f).max(-1f).min(1f))
                     .intoArray(outNormals, 3 * i + normalShift);
         }
     }

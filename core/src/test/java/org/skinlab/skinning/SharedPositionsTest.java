@@ -1,0 +1,98 @@
+package org.skinlab.skinning;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assertions.fail;
+
+import java.nio.file.Path;
+
+import org.junit.jupiter.api.Test;
+import org.skinlab.animation.RotationInterpolation;
+import org.skinlab.collada.ColladaImporter;
+import org.skinlab.model.Model;
+import org.skinlab.testing.TestPaths;
+
+/**
+ * Skinning each position once ({@link SkinnedGeometry#sharedPositions()}, {@link Skinner#skinFrames},
+ * {@link FrameExpansion}) against skinning every point on its own with the same scalar kernel, on
+ * the thesis' cowboy (740 positions in 4252 render vertices, 6 influences, flat-shaded) at five
+ * times of its clip. Tolerance 1e-5 of the model's extent on positions and 1e-5 on unit normals:
+ * the same float operations, except that a normal goes through a stored matrix (one more rounding
+ * per term).
+ */
+class SharedPositionsTest {
+    @Test
+    void theRuleSharesWhereItSaves() {
+        assertTrue(SkinnedGeometry.sharesPositions(4252, 740, 6), "the cowboy: 5.7 points per position");
+        assertFalse(SkinnedGeometry.sharesPositions(950, 951, 4), "the humanoid: one point per position");
+        assertFalse(SkinnedGeometry.sharesPositions(100, 90, 4));
+        assertTrue(SkinnedGeometry.sharesPositions(300, 100, 4));
+    }
+
+    @Test
+    void geometriesFromArraysNeverShare() {
+        SkinnedGeometry g = SkinnedGeometry.fromArrays(new float[6], new float[6], 1, new int[2], new float[] {1, 1},
+                new float[16]);
+        assertNull(g.sharedPositions());
+        assertNull(g.frameOfPointArray());
+    }
+
+    @Test
+    void negativeWeightsAreRefusedInArrays() {
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> SkinnedGeometry.fromArrays(
+                new float[3], new float[3], 2, new int[2], new float[] {1.5f, -0.5f}, new float[32]));
+        assertTrue(e.getMessage().contains("-0.5"), e.getMessage());
+    }
+
+    @Test
+    void theCowboySkinnedOncePerPositionEqualsEveryPointSkinned() throws Exception {
+        Path file = TestPaths.corpusFileOrSkip("S01_cowboy.dae");
+        Model model = ColladaImporter.read(file);
+        SkinnedModel skinned = SkinnedModel.of(model);
+        SkinnedGeometry g = skinned.geometries().get(0);
+        SkinnedGeometry shared = g.sharedPositions();
+        assertNotNull(shared, "the cowboy's render vertices share positions");
+        assertEquals(g.positionCount(), shared.pointCount());
+        assertEquals(4252, g.pointCount());
+        assertEquals(740, shared.pointCount());
+        for (int i = 0; i < g.pointCount(); i++) {
+            int f = g.frameOfPointArray()[i];
+            for (int c = 0; c < 3; c++) {
+                assertEquals(g.positionArray()[3 * i + c], shared.positionArray()[3 * f + c], "point " + i);
+            }
+        }
+        float start = skinned.sampler().start();
+        float end = skinned.sampler().end();
+        for (SkinningMethod method : SkinningMethod.values()) {
+            for (NormalTransform rule : NormalTransform.values()) {
+                Skinner once = Skinners.scalar(method, g, rule);
+                assertTrue(once.implementation().contains("each position once"), once.implementation());
+                Skinner everyPoint = method == SkinningMethod.LBS ? new ScalarLbsSkinner(g, rule)
+                        : new ScalarDqsSkinner(g, rule);
+                for (int t = 0; t < 5; t++) {
+                    skinned.pose(start + (end - start) * t / 4f, RotationInterpolation.SLERP);
+                    skinned.palette(0).prepareDualQuaternions();
+                    int n = 3 * g.pointCount();
+                    float[] p1 = new float[n], n1 = new float[n], p2 = new float[n], n2 = new float[n];
+                    once.skinAll(skinned.palette(0), p1, n1);
+                    everyPoint.skinAll(skinned.palette(0), p2, n2);
+                    float extent = 0;
+                    for (float v : p2) {
+                        extent = Math.max(extent, Math.abs(v));
+                    }
+                    for (int i = 0; i < n; i++) {
+                        if (!(Math.abs(p1[i] - p2[i]) <= 1e-5f * extent)
+                                || !(Math.abs(n1[i] - n2[i]) <= 1e-5f * Math.max(1f, Math.abs(n2[i])))) {
+                            fail(method + " " + rule + " t" + t + " point " + i / 3 + ": " + p1[i] + " vs " + p2[i]
+                                    + ", normal " + n1[i] + " vs " + n2[i]);
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
