@@ -29,8 +29,8 @@ import org.skinlab.skinning.Skinner;
  *
  * <p>Why passes and not one loop: an influence loop with a variable trip count carries its
  * vectors through loop phis, which measured 1.5x slower than straight-line code on JDK 17 and 25;
- * so blends are written out for 4 and 8 influences (fewer are padded with weight 0), and more than
- * 8 add their remainder in a further pass through the scratch.
+ * so blends are written out for 4, 6 and 8 influences (fewer are padded with weight 0), and more
+ * than 8 add their remainder in a further pass through the scratch.
  */
 final class MatrixPasses {
     /** Matrices per pass (4 KB of scratch). */
@@ -39,9 +39,12 @@ final class MatrixPasses {
     private MatrixPasses() {
     }
 
-    /** Influences padded to the width a blend pass takes: 4, 8, or the count itself beyond 8. */
+    /**
+     * Influences padded to the width a blend pass takes: 4, 6 (the cap of several exporters), 8,
+     * or the count itself beyond 8.
+     */
     static int paddedWidth(int width) {
-        return width <= 4 ? 4 : Math.max(8, width);
+        return width <= 4 ? 4 : width <= 6 ? 6 : Math.max(8, width);
     }
 
     /**
@@ -75,6 +78,10 @@ final class MatrixPasses {
     static void blend(float[] c, char[] joints, float[] weights, int width, int from, int to, float[] acc) {
         if (width == 4) {
             blend4(c, joints, weights, 0, 4, from, to, acc);
+            return;
+        }
+        if (width == 6) {
+            blend6(c, joints, weights, from, to, acc);
             return;
         }
         blend8(c, joints, weights, width, from, to, acc);
@@ -115,6 +122,39 @@ final class MatrixPasses {
             b = FloatVector.fromArray(S, c, m2 + 8).fma(w2, b);
             a = FloatVector.fromArray(S, c, m3).fma(w3, a);
             b = FloatVector.fromArray(S, c, m3 + 8).fma(w3, b);
+            int o = 16 * (i - from);
+            a.intoArray(acc, o);
+            b.intoArray(acc, o + 8);
+        }
+    }
+
+    private static void blend6(float[] c, char[] joints, float[] weights, int from, int to, float[] acc) {
+        for (int i = from; i < to; i++) {
+            int q = 6 * i;
+            int m0 = joints[q] << 4;
+            int m1 = joints[q + 1] << 4;
+            int m2 = joints[q + 2] << 4;
+            int m3 = joints[q + 3] << 4;
+            int m4 = joints[q + 4] << 4;
+            int m5 = joints[q + 5] << 4;
+            FloatVector w = FloatVector.broadcast(S, weights[q]);
+            FloatVector a = FloatVector.fromArray(S, c, m0).mul(w);
+            FloatVector b = FloatVector.fromArray(S, c, m0 + 8).mul(w);
+            w = FloatVector.broadcast(S, weights[q + 1]);
+            a = FloatVector.fromArray(S, c, m1).fma(w, a);
+            b = FloatVector.fromArray(S, c, m1 + 8).fma(w, b);
+            w = FloatVector.broadcast(S, weights[q + 2]);
+            a = FloatVector.fromArray(S, c, m2).fma(w, a);
+            b = FloatVector.fromArray(S, c, m2 + 8).fma(w, b);
+            w = FloatVector.broadcast(S, weights[q + 3]);
+            a = FloatVector.fromArray(S, c, m3).fma(w, a);
+            b = FloatVector.fromArray(S, c, m3 + 8).fma(w, b);
+            w = FloatVector.broadcast(S, weights[q + 4]);
+            a = FloatVector.fromArray(S, c, m4).fma(w, a);
+            b = FloatVector.fromArray(S, c, m4 + 8).fma(w, b);
+            w = FloatVector.broadcast(S, weights[q + 5]);
+            a = FloatVector.fromArray(S, c, m5).fma(w, a);
+            b = FloatVector.fromArray(S, c, m5 + 8).fma(w, b);
             int o = 16 * (i - from);
             a.intoArray(acc, o);
             b.intoArray(acc, o + 8);
