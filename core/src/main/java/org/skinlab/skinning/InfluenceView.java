@@ -49,10 +49,11 @@ public final class InfluenceView {
     private final int sourceInfluences;
     private final short[] joints;
     private final float[] weights;
+    private final float[] dropped;
     private final int cappedPoints;
 
     private InfluenceView(int influences, int pointCount, int vertexCount, int jointCount, int sourceInfluences,
-            short[] joints, float[] weights, int cappedPoints) {
+            short[] joints, float[] weights, float[] dropped, int cappedPoints) {
         this.influences = influences;
         this.pointCount = pointCount;
         this.vertexCount = vertexCount;
@@ -60,6 +61,7 @@ public final class InfluenceView {
         this.sourceInfluences = sourceInfluences;
         this.joints = joints;
         this.weights = weights;
+        this.dropped = dropped;
         this.cappedPoints = cappedPoints;
     }
 
@@ -84,6 +86,7 @@ public final class InfluenceView {
         float[] sourceWeights = geometry.weightArray();
         short[] joints = new short[k * points];
         float[] weights = new float[k * points];
+        float[] dropped = new float[points];
         int[] order = new int[width];
         int capped = 0;
         for (int i = 0; i < points; i++) {
@@ -100,10 +103,13 @@ public final class InfluenceView {
                 order[b + 1] = e;
             }
             int kept = Math.min(k, width);
+            double lostWeight = 0;
             boolean lost = false;
-            for (int s = kept; s < width && !lost; s++) {
-                lost = sourceWeights[o + order[s]] != 0f;
+            for (int s = kept; s < width; s++) {
+                lostWeight += sourceWeights[o + order[s]];
+                lost |= sourceWeights[o + order[s]] != 0f;
             }
+            dropped[i] = (float) lostWeight;
             double sum = 0;
             for (int s = 0; s < kept; s++) {
                 sum += sourceWeights[o + order[s]];
@@ -125,7 +131,7 @@ public final class InfluenceView {
             }
         }
         return new InfluenceView(k, points, geometry.vertexCount(), geometry.jointCount(), width, joints, weights,
-                capped);
+                dropped, capped);
     }
 
     /** Influences per point in this view ({@code k}). */
@@ -156,6 +162,14 @@ public final class InfluenceView {
     /** How many points lost an influence of non-zero weight to the cap (0: the view is exact). */
     public int cappedPointCount() {
         return cappedPoints;
+    }
+
+    /**
+     * The weight the cap dropped at a point, before the kept weights were renormalised: the sum
+     * of the geometry's weights beyond the {@code k} kept (0 when the point lost nothing).
+     */
+    public float droppedWeight(int point) {
+        return dropped[point];
     }
 
     /** Palette joint of slot {@code slot} of point {@code point}. */

@@ -89,6 +89,8 @@ class InfluenceViewTest {
         assertArrayEquals(new int[] {1, 3}, joints(v, 3));
         assertArrayEquals(new float[] {0.7f, 0.3f}, weights(v, 3), 0f);
         assertEquals(2, v.cappedPointCount(), "points 0 and 1 lost weight; 2 and 3 lost only zeros");
+        assertArrayEquals(new float[] {0.2f, 0.2f, 0f, 0f},
+                new float[] {v.droppedWeight(0), v.droppedWeight(1), v.droppedWeight(2), v.droppedWeight(3)}, 0f);
     }
 
     @Test
@@ -151,17 +153,20 @@ class InfluenceViewTest {
                 }
                 entries.sort((a, b) -> Float.compare(skin.influenceWeight(b), skin.influenceWeight(a))); // stable
                 double kept = 0;
+                double dropped = 0;
                 boolean lost = false;
                 for (int s = 0; s < entries.size(); s++) {
                     float w = skin.influenceWeight(entries.get(s));
                     if (s < k) {
                         kept += w;
                     } else {
+                        dropped += w;
                         lost |= w != 0f;
                     }
                 }
                 capped += lost ? 1 : 0;
                 int point = g.pointOfPosition(p);
+                assertEquals(1 - kept / (kept + dropped), v.droppedWeight(point), ROUNDINGS, "k " + k + ", position " + p);
                 for (int s = 0; s < k; s++) {
                     String where = "k " + k + ", position " + p + ", slot " + s;
                     if (s < entries.size() && skin.influenceWeight(entries.get(s)) != 0f) {
