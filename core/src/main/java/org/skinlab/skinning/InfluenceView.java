@@ -18,9 +18,9 @@ import java.nio.ShortBuffer;
  * used as given, as the geometry's own kernels use them): so a cap at or above the geometry's
  * influence count deforms exactly as the geometry does.
  *
- * <p><b>Padding.</b> A slot with weight 0 (a point with fewer influences than {@code k}, or a
- * {@code k} above the geometry's width) holds the joint of slot 0, so it costs a shader nothing
- * but a multiplication by zero.
+ * <p><b>Padding.</b> A slot with weight 0 (a point with fewer influences than {@code k}, a
+ * {@code k} above the geometry's width, a weight the file wrote as 0) holds the joint of slot 0,
+ * so it costs a shader nothing but a multiplication by zero.
  *
  * <p><b>Layout for OpenGL / OpenGL ES 3.</b> Points in the geometry's order: its render
  * vertices first ({@link #vertexCount()}), then positions no triangle uses, which a renderer
