@@ -138,10 +138,15 @@ final class SkinLoader {
         int unweighted = 0;
         int badSums = 0;
         float worstSum = 1f;
+        int negatives = 0;
+        int negativePositions = 0;
+        int emptied = 0;
+        float mostNegative = 0f;
         int at = 0;
         for (int p = 0; p < count; p++) {
             start[p] = at;
             float sum = 0f;
+            boolean negative = false;
             for (int k = 0; k < vcount[p]; k++, at++) {
                 int base = at * stride;
                 int joint = v[base + jointOffset];
@@ -161,10 +166,22 @@ final class SkinLoader {
                 }
                 influenceJoints[at] = joint < 0 || jointRemap == null ? joint : jointRemap[joint];
                 float w = weightSource.floatAt(weightIndex, 0);
+                if (w < 0f) {
+                    // Dividing by a sum with negative terms can push a position anywhere (a lone
+                    // negative weight divided by itself becomes 1); read as no influence instead.
+                    negatives++;
+                    negative = true;
+                    mostNegative = Math.min(mostNegative, w);
+                    w = 0f;
+                }
                 influenceWeights[at] = w;
                 sum += w;
             }
-            if (vcount[p] == 0) {
+            if (negative) {
+                // Told in the negative-weight warning, not counted again as a sum that is not one.
+                negativePositions++;
+                emptied += sum == 0f ? 1 : 0;
+            } else if (vcount[p] == 0) {
                 unweighted++;
             } else if (Math.abs(sum - 1f) > WEIGHT_SUM_TOLERANCE) {
                 badSums++;
@@ -177,6 +194,13 @@ final class SkinLoader {
         if (unweighted > 0) {
             ctx.warn(weights, unweighted + " of " + count + " positions have no influences; they keep the bind"
                     + " shape (kept as written)");
+        }
+        if (negatives > 0) {
+            ctx.warn(weights, negatives + " negative " + (negatives == 1 ? "weight" : "weights") + " (most negative "
+                    + mostNegative + ") on " + negativePositions + " of " + count + " positions read as 0; the other"
+                    + " weights of those positions are divided by their sum"
+                    + (emptied == 0 ? "" : ", and " + emptied + (emptied == 1 ? " position is" : " positions are")
+                    + " left without weight, keeping the bind shape"));
         }
         if (badSums > 0) {
             ctx.warn(weights, badSums + " of " + count + " positions have weights that do not sum to 1 (worst "

@@ -12,7 +12,8 @@ import org.joml.Matrix4fc;
  * <p>Influences are stored per <em>position</em> of the mesh (compressed rows: position
  * {@code p} owns entries {@code influenceStart(p)} to {@code influenceStart(p+1)-1}), all of
  * them, in file order, with weights as written (not renormalised: the importer warns when sums
- * differ from one). A joint index of -1 is COLLADA's reference to the bind shape itself.
+ * differ from one), except that negative weights are read as 0 (warned). A joint index of -1 is
+ * COLLADA's reference to the bind shape itself.
  *
  * <p>Joints are stored by the names the file gives ({@code Name_array}: usually sids;
  * {@code IDREF_array}: node ids). Which scene node each joint is depends on the instance's
@@ -133,7 +134,7 @@ public final class Skin {
         return influenceJoints[i];
     }
 
-    /** Weight of influence entry {@code i}, as written. */
+    /** Weight of influence entry {@code i}, as written (0 for a negative one). */
     public float influenceWeight(int i) {
         return influenceWeights[i];
     }

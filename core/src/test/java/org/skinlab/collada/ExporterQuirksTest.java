@@ -14,6 +14,7 @@ import java.util.List;
 
 import org.joml.Matrix4f;
 import org.junit.jupiter.api.Test;
+import org.skinlab.animation.RotationInterpolation;
 import org.skinlab.model.AnimationChannel;
 import org.skinlab.model.ImportWarning;
 import org.skinlab.model.KeyframeTrack;
@@ -21,6 +22,9 @@ import org.skinlab.model.Mesh;
 import org.skinlab.model.Model;
 import org.skinlab.model.Skin;
 import org.skinlab.model.TransformElement;
+import org.skinlab.skinning.SkinnedGeometry;
+import org.skinlab.skinning.SkinnedModel;
+import org.skinlab.skinning.SkinningMethod;
 
 /**
  * What real exporters write that the specification does not quite allow, and the importer reads
@@ -303,5 +307,39 @@ class ExporterQuirksTest {
                         Path.of("elsewhere", "self-url.dae")));
         assertTrue(moved.getMessage().contains("url=\"../quirks/self-url.dae#scene\" points into another document"),
                 moved::getMessage);
+    }
+
+    // ------------------------------------------------------------------------- negative weights
+
+    @Test
+    void negativeWeightsAreReadAsZeroAndAPositionLeftWithoutWeightKeepsTheBindShape() {
+        Model m = Fixtures.resource("quirks/negative-weights.dae");
+        Skin skin = m.skins().get(0);
+        // Weights 1 | 0.5 0.5 | -0.25 1.25 | -1, the negative ones read as 0.
+        float[] weights = new float[skin.influenceTotal()];
+        for (int i = 0; i < weights.length; i++) {
+            weights[i] = skin.influenceWeight(i);
+        }
+        assertArrayEquals(new float[] {1f, 0.5f, 0.5f, 0f, 1.25f, 0f}, weights, EXACT);
+        assertEquals(2, skin.influenceCount(2), "the influence stays, with weight 0");
+
+        ImportWarning w = oneWarning(m, "negative weights");
+        assertTrue(w.element().startsWith("<vertex_weights> in <controller id=\"quad-skin\">"), w::toString);
+        assertEquals("2 negative weights (most negative -1.0) on 2 of 4 positions read as 0; the other weights of"
+                + " those positions are divided by their sum, and 1 position is left without weight, keeping the"
+                + " bind shape", w.message());
+        assertEquals(1, m.warnings().size(), () -> m.warnings().toString());
+
+        // At the end of the clip Tip has turned 90 degrees about Z at (1 0 0): position 2, carried
+        // by Tip alone, goes to the origin; position 3 stays where the bind shape puts it.
+        SkinnedModel model = SkinnedModel.of(m);
+        model.pose(1f, RotationInterpolation.SLERP);
+        SkinnedGeometry g = model.geometries().get(0);
+        for (SkinningMethod method : SkinningMethod.values()) {
+            float[] points = new float[3 * g.pointCount()];
+            model.skin(0, method, points, new float[3 * g.pointCount()]);
+            float[] positions = g.positionsInSourceOrder(points, new float[12]);
+            assertArrayEquals(new float[] {0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 1, 0}, positions, 1e-6f, method.toString());
+        }
     }
 }

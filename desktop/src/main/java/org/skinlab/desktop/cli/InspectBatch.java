@@ -5,11 +5,13 @@ import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Map;
 
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
 import org.skinlab.collada.ColladaException;
+import org.skinlab.model.Mesh;
 import org.skinlab.model.Model;
 
 /**
@@ -26,6 +28,7 @@ final class InspectBatch {
     static final String OUT_OF_MEMORY = "out of memory; give Java more with SKINLAB_OPTS=-Xmx4g (or JAVA_OPTS)";
 
     private final boolean json;
+    private final boolean influenceCaps;
     private final PrintWriter out;
     private final PrintWriter err;
     private final Reader reader;
@@ -35,8 +38,10 @@ final class InspectBatch {
     private int internal;
     private int unlisted;
 
-    InspectBatch(boolean json, PrintWriter out, PrintWriter err, Reader reader) {
+    /** @param influenceCaps whether to measure the influence-cap errors of each file's skinned meshes */
+    InspectBatch(boolean json, boolean influenceCaps, PrintWriter out, PrintWriter err, Reader reader) {
         this.json = json;
+        this.influenceCaps = influenceCaps;
         this.out = out;
         this.err = err;
         this.reader = reader;
@@ -91,11 +96,12 @@ final class InspectBatch {
                 return;
             }
             // The whole line is built before any of it is printed, so a failure cannot leave half a line.
+            Map<Mesh, InfluenceCapReport.MeshReport> caps = InspectCommand.capReports(model, influenceCaps);
             if (json) {
-                String line = mapper.writeValueAsString(InspectCommand.summary(mapper, entry.shown(), model, millis));
+                String line = mapper.writeValueAsString(InspectCommand.summary(mapper, entry.shown(), model, millis, caps));
                 out.println(line);
             } else {
-                out.print(InspectCommand.text(entry.shown(), model, millis));
+                out.print(InspectCommand.text(entry.shown(), model, millis, caps));
             }
             out.flush();
             loaded++;

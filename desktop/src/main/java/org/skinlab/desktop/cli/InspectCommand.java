@@ -5,6 +5,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import java.util.Optional;
 import java.util.concurrent.Callable;
 
@@ -22,6 +23,7 @@ import org.skinlab.model.Mesh;
 import org.skinlab.model.Model;
 import org.skinlab.model.Skin;
 import org.skinlab.model.Texture;
+import org.skinlab.skinning.InfluenceCapError;
 
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
@@ -31,12 +33,17 @@ import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
 
 /**
- * {@code skinlab inspect FILE... [--json]}: what the importer read. The JSON form is a contract:
+ * {@code skinlab inspect FILE... [--json] [--no-influence-caps]}: what the importer read. The JSON form is a contract:
  * <pre>
  * {"file":..., "upAxis":"Z_UP", "unitMeter":1.0,
  *  "meshes":[{"geometry":ID, "name":NAME, "positions":N, "triangles":N, "skinned":true,
  *             "joints":N, "maxInfluences":N,
- *             "materials":[{"symbol":S, "name":NAME, "diffuse":[r,g,b,a], "texture":PATH}]}],
+ *             "materials":[{"symbol":S, "name":NAME, "diffuse":[r,g,b,a], "texture":PATH}],
+ *             "influenceCap":{"restSize":X, "samples":N,
+ *                             "caps":{"4":{"cappedPositions":N, "maxDroppedWeight":X,
+ *                                          "lbs":{"distance":X, "relative":X, "position":N, "clip":NAME, "time":S},
+ *                                          "dqs":{...}},
+ *                                     "8":{...}}}}],
  *  "clips":[{"name":..., "duration":S, "channels":N}], "warnings":[...], "loadMillis":X}
  * </pre>
  * One mesh entry per {@code <geometry>} with a mesh, then one per morph controller (its result:
@@ -49,6 +56,20 @@ import picocli.CommandLine.Model.CommandSpec;
  * and the file of the texture it shows ({@code Material.baseTexture()}: the diffuse texture, or
  * the emission texture of constant shading; null when none or not a file); name, diffuse and
  * texture are null for a symbol nothing binds.
+ *
+ * <p>{@code influenceCap} (see {@link InfluenceCapError}, docs/skinning.md "Influence caps"):
+ * what a renderer that skins with at most 4 or 8 influences per vertex loses, measured on the
+ * first instance that places the mesh with a skin; null for a mesh no instance places with a
+ * skin, and for every mesh with {@code --no-influence-caps}. {@code restSize} is the diagonal of
+ * the bounding box of its positions in the rest pose; {@code samples} the sample times over every
+ * clip (30 per second, each clip's end included; the rest pose alone when the file has no clip).
+ * Per cap: {@code cappedPositions} the POSITION entries that lose weight and
+ * {@code maxDroppedWeight} the most one loses (of 1); per method the largest distance between
+ * the position skinned with all its influences and with the cap (model units), that distance
+ * over {@code restSize} (null when the size is 0), the POSITION entry, clip and clip time where
+ * it happens (the first clip to reach it). When nothing moves (no position loses weight)
+ * distance and relative are 0 and position, clip and time null; clip is null too when the file
+ * has no clip.
  *
  * <p><b>One FILE</b> (not a folder): that summary, as text or as one line of JSON; a file that
  * cannot be imported is one line on stderr and status 3, a missing file status 2.
@@ -86,6 +107,10 @@ public final class InspectCommand implements Callable<Integer> {
     @Option(names = "--json", description = "print each summary as one line of JSON (JSON Lines for several files)")
     boolean json;
 
+    @Option(names = "--no-influence-caps", description = "do not measure the position error of capping influences"
+            + " at 4 and 8 per position (only meshes with more influences than a cap take time)")
+    boolean noInfluenceCaps;
+
     @Spec
     CommandSpec spec;
 
@@ -96,25 +121,35 @@ public final class InspectCommand implements Callable<Integer> {
         }
         List<ColladaFileSearch.Entry> entries = ColladaFileSearch.expand(files);
         CommandLine cl = spec.commandLine();
-        return new InspectBatch(json, cl.getOut(), cl.getErr(), ColladaImporter::read).run(entries);
+        return new InspectBatch(json, !noInfluenceCaps, cl.getOut(), cl.getErr(), ColladaImporter::read).run(entries);
     }
 
     /** One file, as before batches existed: a refused file is a {@link CommandFailure} (one line on stderr). */
     private int single(Path file) throws JsonProcessingException {
         ModelFiles.Loaded loaded = ModelFiles.load(file);
         PrintWriter out = spec.commandLine().getOut();
+        Map<Mesh, InfluenceCapReport.MeshReport> caps = capReports(loaded.model, !noInfluenceCaps);
         if (json) {
             ObjectMapper mapper = new ObjectMapper();
-            out.println(mapper.writeValueAsString(summary(mapper, file.toString(), loaded.model, loaded.millis)));
+            out.println(mapper.writeValueAsString(summary(mapper, file.toString(), loaded.model, loaded.millis, caps)));
         } else {
-            out.print(text(file.toString(), loaded.model, loaded.millis));
+            out.print(text(file.toString(), loaded.model, loaded.millis, caps));
         }
         out.flush();
         return ExitCodes.OK;
     }
 
-    /** The JSON summary (key order as in the contract). */
-    static ObjectNode summary(ObjectMapper mapper, String fileName, Model model, double loadMillis) {
+    /** The influence-cap reports of a model's meshes, or none when not asked for. */
+    static Map<Mesh, InfluenceCapReport.MeshReport> capReports(Model model, boolean measure) {
+        return measure ? InfluenceCapReport.of(model) : Map.of();
+    }
+
+    /**
+     * The JSON summary (key order as in the contract); {@code capReports} from
+     * {@link #capReports} ({@code "influenceCap"} is null for a mesh without one).
+     */
+    static ObjectNode summary(ObjectMapper mapper, String fileName, Model model, double loadMillis,
+            Map<Mesh, InfluenceCapReport.MeshReport> capReports) {
         ObjectNode root = mapper.createObjectNode();
         root.put("file", fileName);
         root.put("upAxis", model.asset().upAxis().name());
@@ -148,6 +183,22 @@ public final class InspectCommand implements Callable<Integer> {
                 Path texture = bound ? textureFile(b.material()) : null;
                 entry.put("texture", texture == null ? null : texture.toString());
             }
+            InfluenceCapReport.MeshReport caps = capReports.get(mesh);
+            if (caps == null) {
+                m.putNull("influenceCap");
+            } else {
+                ObjectNode ic = m.putObject("influenceCap");
+                ic.put("restSize", shortest((float) caps.restSize()));
+                ic.put("samples", caps.samples());
+                ObjectNode byCap = ic.putObject("caps");
+                for (InfluenceCapReport.Cap cap : caps.caps()) {
+                    ObjectNode c = byCap.putObject(String.valueOf(cap.cap()));
+                    c.put("cappedPositions", cap.cappedPositions());
+                    c.put("maxDroppedWeight", shortest(cap.maxDroppedWeight()));
+                    putWorst(c.putObject("lbs"), cap.lbs());
+                    putWorst(c.putObject("dqs"), cap.dqs());
+                }
+            }
         }
         ArrayNode clips = root.putArray("clips");
         for (AnimationClip clip : model.clips()) {
@@ -164,13 +215,37 @@ public final class InspectCommand implements Callable<Integer> {
         return root;
     }
 
+    /** One method's worst: distance and relative always, position, clip and time null when nothing moved. */
+    private static void putWorst(ObjectNode node, InfluenceCapReport.Worst w) {
+        InfluenceCapError.Worst worst = w.worst();
+        node.put("distance", shortest((float) worst.distance()));
+        if (Double.isNaN(worst.relative())) {
+            node.putNull("relative");
+        } else {
+            node.put("relative", shortest((float) worst.relative()));
+        }
+        boolean moved = worst.position() >= 0;
+        if (moved) {
+            node.put("position", worst.position());
+        } else {
+            node.putNull("position");
+        }
+        node.put("clip", w.clip());
+        if (moved) {
+            node.put("time", shortest(worst.time()));
+        } else {
+            node.putNull("time");
+        }
+    }
+
     private static Path textureFile(Material material) {
         Texture t = material.baseTexture();
         return t == null ? null : t.image().file();
     }
 
     /** The human-readable summary. */
-    static String text(String fileName, Model model, double loadMillis) {
+    static String text(String fileName, Model model, double loadMillis,
+            Map<Mesh, InfluenceCapReport.MeshReport> capReports) {
         StringBuilder sb = new StringBuilder();
         sb.append(fileName).append('\n');
         sb.append(String.format(Locale.ROOT, "  frame:    %s, 1 unit = %s m%s%n", model.asset().upAxis(),
@@ -188,6 +263,10 @@ public final class InspectCommand implements Callable<Integer> {
             for (MaterialBinding b : model.materialsOf(mesh)) {
                 sb.append("      material ").append(b.symbol()).append(": ").append(describe(b.material())).append('\n');
             }
+            InfluenceCapReport.MeshReport caps = capReports.get(mesh);
+            if (caps != null) {
+                describe(caps, sb);
+            }
         }
         sb.append("  clips:    ").append(model.clips().size()).append('\n');
         for (AnimationClip clip : model.clips()) {
@@ -199,6 +278,33 @@ public final class InspectCommand implements Callable<Integer> {
             sb.append("    ").append(w).append('\n');
         }
         return sb.toString();
+    }
+
+    /** The cap errors of one mesh: a heading line, then one line per cap. */
+    private static void describe(InfluenceCapReport.MeshReport caps, StringBuilder sb) {
+        String over = caps.clips().isEmpty() ? "the rest pose"
+                : caps.clips().size() == 1 ? "clip " + caps.clips().get(0) : caps.clips().size() + " clips";
+        sb.append(String.format(Locale.ROOT, "      influence caps over %s (%d sample%s; rest size %.4g):%n", over,
+                caps.samples(), caps.samples() == 1 ? "" : "s", caps.restSize()));
+        for (InfluenceCapReport.Cap cap : caps.caps()) {
+            if (cap.cappedPositions() == 0) {
+                sb.append(String.format(Locale.ROOT, "        %d influences: exact, no position loses weight%n", cap.cap()));
+                continue;
+            }
+            sb.append(String.format(Locale.ROOT, "        %d influences: %d positions lose weight (up to %.3g)%n",
+                    cap.cap(), cap.cappedPositions(), cap.maxDroppedWeight()));
+            sb.append("          LBS ").append(describe(cap.lbs())).append('\n');
+            sb.append("          DQS ").append(describe(cap.dqs())).append('\n');
+        }
+    }
+
+    private static String describe(InfluenceCapReport.Worst w) {
+        InfluenceCapError.Worst worst = w.worst();
+        if (worst.position() < 0) {
+            return "0";
+        }
+        return String.format(Locale.ROOT, "%.3g (%.2g of the size) at position %d, %s%.3f s", worst.distance(),
+                worst.relative(), worst.position(), w.clip() == null ? "" : w.clip() + " ", worst.time());
     }
 
     private static String describe(Material m) {

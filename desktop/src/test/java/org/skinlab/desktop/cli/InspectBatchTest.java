@@ -329,7 +329,7 @@ class InspectBatchTest {
                 new ColladaFileSearch.Entry(locked, locked.toString(), "cannot list folder: permission denied"));
         StringWriter out = new StringWriter();
         StringWriter err = new StringWriter();
-        int status = new InspectBatch(true, new PrintWriter(out), new PrintWriter(err), ColladaImporter::read).run(entries);
+        int status = new InspectBatch(true, true, new PrintWriter(out), new PrintWriter(err), ColladaImporter::read).run(entries);
         assertEquals(ExitCodes.INVALID_FILE, status, out::toString);
         assertEquals("", err.toString());
         List<String> lines = out.toString().lines().collect(Collectors.toList());
@@ -340,7 +340,7 @@ class InspectBatchTest {
         assertEquals("locked: cannot list folder: permission denied", error.get("error").asText());
 
         StringWriter textErr = new StringWriter();
-        status = new InspectBatch(false, new PrintWriter(new StringWriter()), new PrintWriter(textErr), ColladaImporter::read)
+        status = new InspectBatch(false, true, new PrintWriter(new StringWriter()), new PrintWriter(textErr), ColladaImporter::read)
                 .run(entries);
         assertEquals(ExitCodes.INVALID_FILE, status);
         assertEquals(List.of("skinlab: " + locked + ": cannot list folder: permission denied",
@@ -374,7 +374,7 @@ class InspectBatchTest {
 
         StringWriter out = new StringWriter();
         StringWriter err = new StringWriter();
-        int status = new InspectBatch(true, new PrintWriter(out), new PrintWriter(err), failing).run(entries);
+        int status = new InspectBatch(true, true, new PrintWriter(out), new PrintWriter(err), failing).run(entries);
         assertEquals(ExitCodes.INTERNAL, status, out::toString);
         assertEquals("", err.toString());
         List<JsonNode> lines = new ArrayList<>();
@@ -392,7 +392,7 @@ class InspectBatchTest {
 
         StringWriter textOut = new StringWriter();
         StringWriter textErr = new StringWriter();
-        int textStatus = new InspectBatch(false, new PrintWriter(textOut), new PrintWriter(textErr), failing).run(entries);
+        int textStatus = new InspectBatch(false, true, new PrintWriter(textOut), new PrintWriter(textErr), failing).run(entries);
         assertEquals(ExitCodes.INTERNAL, textStatus);
         List<String> errLines = textErr.toString().lines().collect(Collectors.toList());
         assertEquals(4, errLines.size(), textErr::toString);

@@ -15,7 +15,8 @@ import org.junit.jupiter.api.Test;
  * the exact keys and their order are checked, with the values assets/README.md states for
  * humanoid-walk.dae (951 positions, 1896 triangles, 19 joints, at most 4 influences, one
  * one-second walk; 20 channels: one per joint and one for the armature node; one Lambert material
- * of diffuse colour 0.45 0.6 0.8).
+ * of diffuse colour 0.45 0.6 0.8). Its influence caps lose nothing; {@link InspectInfluenceCapTest}
+ * checks caps that do.
  */
 class InspectCommandTest {
     @Test
@@ -37,7 +38,7 @@ class InspectCommandTest {
         assertEquals(1, root.get("meshes").size());
         JsonNode mesh = root.get("meshes").get(0);
         assertEquals(List.of("geometry", "name", "positions", "triangles", "skinned", "joints", "maxInfluences",
-                "materials"), Cli.keys(mesh));
+                "materials", "influenceCap"), Cli.keys(mesh));
         assertEquals("Humanoid-mesh", mesh.get("geometry").asText());
         assertEquals("Humanoid", mesh.get("name").asText());
         assertEquals(951, mesh.get("positions").intValue());
@@ -53,6 +54,25 @@ class InspectCommandTest {
         assertEquals("BodyMaterial", material.get("name").asText());
         assertEquals("[0.45,0.6,0.8,1.0]", material.get("diffuse").toString());
         assertTrue(material.get("texture").isNull());
+        // Four influences at most: both caps keep everything (InspectInfluenceCapTest has errors).
+        JsonNode cap = mesh.get("influenceCap");
+        assertEquals(List.of("restSize", "samples", "caps"), Cli.keys(cap));
+        assertTrue(cap.get("restSize").doubleValue() > 1.0, cap::toString);
+        assertEquals(31, cap.get("samples").intValue(), "30 per second over one second, and the end");
+        assertEquals(List.of("4", "8"), Cli.keys(cap.get("caps")));
+        for (String k : List.of("4", "8")) {
+            JsonNode c = cap.get("caps").get(k);
+            assertEquals(List.of("cappedPositions", "maxDroppedWeight", "lbs", "dqs"), Cli.keys(c));
+            assertEquals(0, c.get("cappedPositions").intValue());
+            assertEquals(0.0, c.get("maxDroppedWeight").doubleValue(), 0.0);
+            for (String m : List.of("lbs", "dqs")) {
+                JsonNode w = c.get(m);
+                assertEquals(List.of("distance", "relative", "position", "clip", "time"), Cli.keys(w));
+                assertEquals(0.0, w.get("distance").doubleValue(), 0.0);
+                assertEquals(0.0, w.get("relative").doubleValue(), 0.0);
+                assertTrue(w.get("position").isNull() && w.get("clip").isNull() && w.get("time").isNull(), w::toString);
+            }
+        }
 
         assertEquals(1, root.get("clips").size());
         JsonNode clip = root.get("clips").get(0);
@@ -74,7 +94,7 @@ class InspectCommandTest {
         assertEquals(ExitCodes.OK, r.status, r::toString);
         assertEquals("", r.err, r::toString);
         String[] lines = r.out.split("\n");
-        assertEquals(9, lines.length, r::toString);
+        assertEquals(12, lines.length, r::toString);
         assertEquals(file, lines[0]);
         assertTrue(lines[1].startsWith("  frame:    Z_UP, 1 unit = 1 m, written by Blender"), lines[1]);
         assertTrue(lines[2].matches("  loaded in \\d+\\.\\d ms"), lines[2]);
@@ -83,9 +103,13 @@ class InspectCommandTest {
                 + "skinned: 19 joints, up to 4 influences per position"), lines[4]);
         assertEquals("      material BodyMaterial-material: BodyMaterial, lambert, diffuse 0.450 0.600 0.800 1.00",
                 lines[5]);
-        assertEquals("  clips:    1", lines[6]);
-        assertTrue(lines[7].matches("    default +1\\.000 s +20 channels"), lines[7]);
-        assertEquals("  warnings: 0", lines[8]);
+        assertTrue(lines[6].matches("      influence caps over clip default \\(31 samples; rest size \\d\\.\\d{3}\\):"),
+                lines[6]);
+        assertEquals("        4 influences: exact, no position loses weight", lines[7]);
+        assertEquals("        8 influences: exact, no position loses weight", lines[8]);
+        assertEquals("  clips:    1", lines[9]);
+        assertTrue(lines[10].matches("    default +1\\.000 s +20 channels"), lines[10]);
+        assertEquals("  warnings: 0", lines[11]);
     }
 
     @Test
