@@ -187,9 +187,11 @@ public final class InfluenceCapError {
         final float[] normals;
 
         Side(SkinnedGeometry geometry) {
+            // The per-point scalar kernels on both sides (never the shared-position route, which
+            // the capped side, built from arrays, cannot take): equal inputs give equal bits.
             skinners = new Skinner[] {
-                Skinners.scalar(SkinningMethod.LBS, geometry, NormalTransform.BLENDED_MATRIX),
-                Skinners.scalar(SkinningMethod.DQS, geometry, NormalTransform.BLENDED_MATRIX)};
+                new ScalarLbsSkinner(geometry, NormalTransform.BLENDED_MATRIX),
+                new ScalarDqsSkinner(geometry, NormalTransform.BLENDED_MATRIX)};
             positions = new float[3 * geometry.pointCount()];
             normals = new float[3 * geometry.pointCount()];
         }
