@@ -24,12 +24,17 @@ import org.skinlab.skinning.SkinnedModel;
  * <ol>
  * <li>advances the playback time by {@code dt * speed} when the animation runs, wrapped or held
  *     at the clip's ends as the wrap mode says;</li>
- * <li>when mesh updates run, poses the skeleton at that time and skins every geometry with the
- *     configured method and interpolation into a free buffer, then publishes it as the latest
- *     {@link Frame}. A stopped animation is still re-skinned every step, so switching LBS/DQS or
- *     the interpolation shows at once; with mesh updates stopped nothing is skinned and readers
- *     keep the last frame (the playback time still advances while the animation runs).</li>
+ * <li>when mesh updates run, poses the skeleton at that time with the configured interpolation,
+ *     copies every geometry's joint palette (skinning matrices, dual quaternions, scale parts)
+ *     into a free buffer and, with CPU skinning on, skins every geometry with the configured
+ *     method into it too, then publishes it as the latest {@link Frame}. A stopped animation is
+ *     still re-posed every step, so switching LBS/DQS or the interpolation shows at once; with
+ *     mesh updates stopped nothing is posed or published and readers keep the last frame (the
+ *     playback time still advances while the animation runs).</li>
  * </ol>
+ * With CPU skinning off ({@link AnimationConfig#setCpuSkinning}) frames carry only the palette,
+ * for a renderer that skins on the GPU ({@link Frame#hasSkinnedMesh()}); the switch takes effect
+ * at the next step, so the frames say per step which kind they are.
  * {@link #step(double)} runs the same step on the caller's thread, for tests, the command line and
  * renderers that drive the simulation themselves.
  *
@@ -152,11 +157,14 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
         this.sampler = skinned.sampler();
         List<SkinnedGeometry> geometries = skinned.geometries();
         pointCounts = new int[geometries.size()];
+        int[] jointCounts = new int[pointCounts.length];
         for (int g = 0; g < pointCounts.length; g++) {
             pointCounts[g] = geometries.get(g).pointCount();
+            jointCounts[g] = geometries.get(g).jointCount();
         }
-        pool = new FramePool(pointCounts, MAX_BUFFERS, publishInPlace);
-        // Frame 0: the clip's start, so acquire() always has something to give, whatever the switches say.
+        pool = new FramePool(pointCounts, jointCounts, MAX_BUFFERS, publishInPlace);
+        // Frame 0: the clip's start, so acquire() always has something to give, whatever the
+        // switches say (no listener can be set yet).
         stepLock.lock();
         try {
             publish(config.settings());
@@ -386,7 +394,10 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
         }
     }
 
-    /** Poses, skins into a free buffer and publishes it; the caller holds stepLock. */
+    /**
+     * Poses, fills a free buffer with the palette (and, with CPU skinning, the skinned mesh) and
+     * publishes it; the caller holds stepLock.
+     */
     private void publish(AnimationConfig.Settings s) {
         Frame f = pool.claim();
         if (f == null) {
@@ -397,11 +408,15 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
         long t0 = System.nanoTime();
         skinned.pose(clipTime, s.interpolation());
         for (int g = 0; g < pointCounts.length; g++) {
-            skinned.skin(g, s.method(), f.positionsForWriting(g), f.normalsForWriting(g));
+            // Dual quaternions whatever the method: a split view may draw LBS and DQS from one frame.
+            f.copyPalette(g, skinned.preparePalette(g));
+            if (s.cpuSkinning()) {
+                skinned.skin(g, s.method(), f.positionsForWriting(g), f.normalsForWriting(g));
+            }
         }
         long nanos = System.nanoTime() - t0;
         long seq = sequence++;
-        f.describe(seq, playback, clipTime, s.method(), s.interpolation(), nanos);
+        f.describe(seq, playback, clipTime, s.method(), s.interpolation(), s.cpuSkinning(), nanos);
         pool.publish(f);
         publishedSequence = seq;
         Runnable listener = frameListener;
