@@ -60,8 +60,8 @@ import org.skinlab.skinning.SkinnedModel;
  * overlaps a new one. {@link #step(double)} refuses while the thread runs: two clocks driving one
  * playback would make its time meaningless. Interrupting the simulation thread stops it.
  *
- * <p><b>Failures.</b> Anything the simulation thread throws (a skinning bug, the frame listener)
- * is kept in {@link #failure()}, the thread ends cleanly, readers keep the last good frame, and
+ * <p><b>Failures.</b> Anything the simulation thread throws (a skinning bug, the frame listener,
+ * which runs after the step lock is released) is kept in {@link #failure()}, the thread ends cleanly, readers keep the last good frame, and
  * {@link #start()} and {@link #step(double)} then refuse with the failure as the cause, so it
  * cannot vanish. {@link #throwIfFailed()} lets a render loop surface it.
  *
@@ -257,9 +257,16 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
     }
 
     /**
-     * Called after every published frame, on the thread that stepped (e.g. to ask a render view
-     * for a redraw: Android's {@code GLSurfaceView.requestRender()}). Must be quick. What it
-     * throws on the simulation thread ends that thread as a {@link #failure()}. Null for none.
+     * Called after every published frame, on the thread that stepped, once the step has let go
+     * of the step lock (e.g. to ask a render view for a redraw: Android's
+     * {@code GLSurfaceView.requestRender()}). It should be quick, since the simulation thread
+     * takes its next step only after it returns, but a slow one holds no lock: readers and hand
+     * steps on other threads go on (a {@link #stop()} from another thread does wait for it, as it
+     * waits for the thread to end). By the time it runs a newer frame may
+     * already be published: it should {@link #acquire()} the latest rather than assume which.
+     * What it throws on the simulation thread ends that thread as a {@link #failure()}; on a
+     * hand step it propagates to the caller of {@link #step(double)}, the frame already
+     * published. Null for none.
      */
     public void setFrameListener(Runnable listener) {
         frameListener = listener;
@@ -347,6 +354,7 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
         if (!(dtSeconds >= 0) || Double.isInfinite(dtSeconds)) {
             throw new IllegalArgumentException("step of " + dtSeconds + " s (need a finite time >= 0)");
         }
+        boolean published;
         stepLock.lock();
         try {
             if (closed) {
@@ -357,10 +365,11 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
                 throw new IllegalStateException(describe()
                         + ": the simulation thread is running; stop() it before stepping by hand");
             }
-            advance(dtSeconds);
+            published = advance(dtSeconds);
         } finally {
             stepLock.unlock();
         }
+        notifyListener(published);
     }
 
     /** Buffers the frame pool holds so far (three, more while many readers hold frames). */
@@ -381,28 +390,26 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
 
     // ---------------------------------------------------------------------------- simulation
 
-    /** One step; the caller holds stepLock. */
-    private void advance(double dt) {
+    /** One step; the caller holds stepLock. Returns whether it published a frame. */
+    private boolean advance(double dt) {
         AnimationConfig.Settings s = config.settings();
         if (s.animationRunning()) {
             playback = sampler.wrapElapsed(playback + dt * s.speed(), s.wrapMode());
         }
         playbackTime = playback;
         steps++;
-        if (s.meshUpdatesRunning()) {
-            publish(s);
-        }
+        return s.meshUpdatesRunning() && publish(s);
     }
 
     /**
      * Poses, fills a free buffer with the palette (and, with CPU skinning, the skinned mesh) and
-     * publishes it; the caller holds stepLock.
+     * publishes it; the caller holds stepLock. False when every buffer was held (dropped).
      */
-    private void publish(AnimationConfig.Settings s) {
+    private boolean publish(AnimationConfig.Settings s) {
         Frame f = pool.claim();
         if (f == null) {
             droppedFrames++;
-            return;
+            return false;
         }
         float clipTime = sampler.clipTime(playback, s.wrapMode());
         long t0 = System.nanoTime();
@@ -419,8 +426,16 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
         f.describe(seq, playback, clipTime, s.method(), s.interpolation(), s.cpuSkinning(), nanos);
         pool.publish(f);
         publishedSequence = seq;
+        return true;
+    }
+
+    /**
+     * Runs the frame listener, if any, after a step that published; the caller must not hold
+     * stepLock, so a slow listener stalls neither the next step nor hand steps on other threads.
+     */
+    private void notifyListener(boolean published) {
         Runnable listener = frameListener;
-        if (listener != null) {
+        if (published && listener != null) {
             listener.run();
         }
     }
@@ -448,17 +463,19 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
                 if (!lockForStep(r)) {
                     return;
                 }
+                boolean published;
                 try {
                     if (r.stopRequested) {
                         return;
                     }
                     // dt is the time actually elapsed, so playback follows the wall clock even
                     // when steps come late.
-                    advance(Math.min((now - last) * 1e-9, MAX_STEP_SECONDS));
+                    published = advance(Math.min((now - last) * 1e-9, MAX_STEP_SECONDS));
                 } finally {
                     stepLock.unlock();
                 }
                 last = now;
+                notifyListener(published); // what it throws ends this thread as failure()
             }
         } catch (Throwable t) {
             failure.compareAndSet(null, t);
@@ -466,8 +483,8 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
     }
 
     /**
-     * Takes stepLock, polling for a stop while someone else steps (a hand step whose frame
-     * listener stops this thread must not wait for it forever).
+     * Takes stepLock, polling for a stop while someone else steps, so that a {@link #stop()} does
+     * not have to wait for another thread's step to end first.
      */
     private boolean lockForStep(Runner r) {
         try {
