@@ -6,7 +6,6 @@ import java.util.Objects;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicReference;
-import java.util.concurrent.locks.LockSupport;
 import java.util.concurrent.locks.ReentrantLock;
 
 import org.skinlab.animation.AnimationSampler;
@@ -20,7 +19,8 @@ import org.skinlab.skinning.SkinnedModel;
  * A model playing one clip, simulated on its own thread (the thesis' {@code SkeletalAnimatedMesh},
  * section 5.6): it owns the mesh, the skeleton and the clip (through a {@link SkinnedModel}) and
  * reads its switches from an {@link AnimationConfig}. After {@link #start()} one daemon thread
- * steps at {@link #stepRate()} steps per second; each step
+ * steps at {@link #stepRate()} steps per second (paced by absolute deadlines: {@link PacedThread});
+ * each step
  * <ol>
  * <li>advances the playback time by {@code dt * speed} when the animation runs, wrapped or held
  *     at the clip's ends as the wrap mode says;</li>
@@ -107,7 +107,7 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
 
     // Thread lifecycle, guarded by `lifecycle` (never held while stepping or joining).
     private final Object lifecycle = new Object();
-    private volatile Runner current;
+    private volatile PacedThread current;
     private volatile boolean closed;
 
     /** The model's first clip (at rest if it has none), a fresh config, exact normals. */
@@ -289,21 +289,22 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
             if (t != null) {
                 throw new IllegalStateException(describe() + ": the simulation failed earlier: " + t, t);
             }
-            Runner r = current;
-            if (r != null && !r.stopRequested && r.thread.isAlive()) {
+            PacedThread r = current;
+            if (r != null && r.isRunning()) {
                 return false;
             }
-            Runner next = new Runner("skinlab-simulation-" + THREAD_NUMBERS.incrementAndGet());
+            PacedThread next = new PacedThread("skinlab-simulation-" + THREAD_NUMBERS.incrementAndGet(),
+                    () -> periodNanos, this::threadStep, thrown -> failure.compareAndSet(null, thrown));
             current = next;
-            next.thread.start();
+            next.start();
             return true;
         }
     }
 
     /** Whether the simulation thread runs (started, not stopped, not ended by failure or interrupt). */
     public boolean isRunning() {
-        Runner r = current;
-        return r != null && !r.stopRequested && r.thread.isAlive();
+        PacedThread r = current;
+        return r != null && r.isRunning();
     }
 
     /**
@@ -313,20 +314,16 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
      * @return true if this call asked a running thread to stop
      */
     public boolean stop() {
-        Runner r;
+        PacedThread r;
         boolean stopped;
         synchronized (lifecycle) {
             r = current;
             if (r == null) {
                 return false;
             }
-            stopped = !r.stopRequested && r.thread.isAlive();
-            r.stopRequested = true;
+            stopped = r.requestStop();
         }
-        LockSupport.unpark(r.thread);
-        if (Thread.currentThread() != r.thread) {
-            joinUninterruptibly(r.thread);
-        }
+        r.awaitEnd();
         return stopped;
     }
 
@@ -384,8 +381,8 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
 
     /** The thread of the current runner, for tests; null before the first start. */
     Thread simulationThread() {
-        Runner r = current;
-        return r == null ? null : r.thread;
+        PacedThread r = current;
+        return r == null ? null : r.thread();
     }
 
     // ---------------------------------------------------------------------------- simulation
@@ -440,77 +437,38 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
         }
     }
 
-    private void run(Runner r) {
-        long last = System.nanoTime();
-        long deadline = last;
-        try {
-            while (!r.stopRequested && !Thread.currentThread().isInterrupted()) {
-                long period = periodNanos;
-                // Absolute deadlines: oversleeping one step shortens the next wait, so the rate
-                // does not drift the way sleeping a fixed period after each step would.
-                deadline += period;
-                long now = System.nanoTime();
-                while (now - deadline < 0) {
-                    LockSupport.parkNanos(this, deadline - now);
-                    if (r.stopRequested || Thread.currentThread().isInterrupted()) {
-                        return;
-                    }
-                    now = System.nanoTime();
-                }
-                if (now - deadline > period) {
-                    deadline = now; // more than a step behind: carry on from now rather than catch up in a burst
-                }
-                if (!lockForStep(r)) {
-                    return;
-                }
-                boolean published;
-                try {
-                    if (r.stopRequested) {
-                        return;
-                    }
-                    // dt is the time actually elapsed, so playback follows the wall clock even
-                    // when steps come late.
-                    published = advance(Math.min((now - last) * 1e-9, MAX_STEP_SECONDS));
-                } finally {
-                    stepLock.unlock();
-                }
-                last = now;
-                notifyListener(published); // what it throws ends this thread as failure()
-            }
-        } catch (Throwable t) {
-            failure.compareAndSet(null, t);
+    /** One step of the simulation thread (see {@link PacedThread} for its pacing). */
+    private boolean threadStep(PacedThread r, double elapsedSeconds) {
+        if (!lockForStep(r)) {
+            return false;
         }
+        boolean published;
+        try {
+            if (r.stopRequested()) {
+                return false;
+            }
+            published = advance(Math.min(elapsedSeconds, MAX_STEP_SECONDS));
+        } finally {
+            stepLock.unlock();
+        }
+        notifyListener(published); // what it throws ends the thread as failure()
+        return true;
     }
 
     /**
      * Takes stepLock, polling for a stop while someone else steps, so that a {@link #stop()} does
      * not have to wait for another thread's step to end first.
      */
-    private boolean lockForStep(Runner r) {
+    private boolean lockForStep(PacedThread r) {
         try {
             while (!stepLock.tryLock(LOCK_POLL_NANOS, TimeUnit.NANOSECONDS)) {
-                if (r.stopRequested) {
+                if (r.stopRequested()) {
                     return false;
                 }
             }
             return true;
         } catch (InterruptedException e) {
             return false; // an interrupt stops the simulation thread
-        }
-    }
-
-    private static void joinUninterruptibly(Thread t) {
-        boolean interrupted = false;
-        while (true) {
-            try {
-                t.join();
-                break;
-            } catch (InterruptedException e) {
-                interrupted = true;
-            }
-        }
-        if (interrupted) {
-            Thread.currentThread().interrupt();
         }
     }
 
@@ -521,16 +479,5 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
     @Override
     public String toString() {
         return describe();
-    }
-
-    /** One simulation thread and its own stop flag, so a stopped thread can never be mistaken for its successor. */
-    private final class Runner {
-        final Thread thread;
-        volatile boolean stopRequested;
-
-        Runner(String name) {
-            thread = new Thread(() -> run(this), name);
-            thread.setDaemon(true);
-        }
     }
 }
