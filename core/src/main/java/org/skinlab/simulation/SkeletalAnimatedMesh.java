@@ -61,9 +61,10 @@ import org.skinlab.skinning.SkinnedModel;
  * playback would make its time meaningless. Interrupting the simulation thread stops it.
  *
  * <p><b>Failures.</b> Anything the simulation thread throws (a skinning bug, the frame listener,
- * which runs after the step lock is released) is kept in {@link #failure()}, the thread ends cleanly, readers keep the last good frame, and
- * {@link #start()} and {@link #step(double)} then refuse with the failure as the cause, so it
- * cannot vanish. {@link #throwIfFailed()} lets a render loop surface it.
+ * which runs after the step lock is released) is kept in {@link #failure()}, the thread ends
+ * cleanly, readers keep the last good frame, and {@link #start()} and {@link #step(double)} then
+ * refuse with the failure as the cause, so it cannot vanish. {@link #throwIfFailed()} lets a
+ * render loop surface it.
  *
  * <p>In steady state a step allocates nothing.
  */
@@ -262,8 +263,8 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
      * {@code GLSurfaceView.requestRender()}). It should be quick, since the simulation thread
      * takes its next step only after it returns, but a slow one holds no lock: readers and hand
      * steps on other threads go on (a {@link #stop()} from another thread does wait for it, as it
-     * waits for the thread to end). By the time it runs a newer frame may
-     * already be published: it should {@link #acquire()} the latest rather than assume which.
+     * waits for the thread to end). By the time it runs a newer frame may already be published:
+     * it should {@link #acquire()} the latest rather than assume which.
      * What it throws on the simulation thread ends that thread as a {@link #failure()}; on a
      * hand step it propagates to the caller of {@link #step(double)}, the frame already
      * published. Null for none.

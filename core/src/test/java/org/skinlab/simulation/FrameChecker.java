@@ -130,7 +130,8 @@ final class FrameChecker {
             // t = 2 (r.w d.xyz - d.w r.xyz + r.xyz x d.xyz), x component (Frame's class comment).
             float tx = 2 * (q[3] * q[4] - q[7] * q[0] + (q[1] * q[6] - q[2] * q[5]));
             if (Math.abs(tx - time) > AXIS_TOLERANCE) {
-                return "frame " + frame.sequence() + ": root dual quaternion translation x = " + tx + ", clip time " + time;
+                return "frame " + frame.sequence() + ": root dual quaternion translation x = " + tx + ", clip time "
+                        + time;
             }
         }
         return null;

@@ -125,7 +125,8 @@ class PaletteFrameTest {
                 await("a frame two steps after the switch", () -> mesh.latestSequence() >= switched + 2);
                 try (Frame f = mesh.acquire()) {
                     assertTrue(f.sequence() >= switched + 2);
-                    assertEquals(cpu, f.hasSkinnedMesh(), () -> "frame " + f + " after switching CPU skinning to " + cpu);
+                    assertEquals(cpu, f.hasSkinnedMesh(),
+                            () -> "frame " + f + " after switching CPU skinning to " + cpu);
                     assertNull(checker.problem(f));
                 }
             }
