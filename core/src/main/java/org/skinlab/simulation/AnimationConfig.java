@@ -11,7 +11,8 @@ import org.skinlab.skinning.SkinningMethod;
 /**
  * The user-facing switches of the animation (the thesis' {@code AnimationConfig}, section 5.5):
  * start/stop the animation, start/stop mesh updates, the skinning method, the rotation
- * interpolation, the playback speed, the wrap mode at the clip's end, and "follow the camera".
+ * interpolation, the playback speed, the wrap mode at the clip's end, "follow the camera", and
+ * whether the mesh is skinned on the CPU or only its joint palette published (GPU skinning).
  *
  * <p><b>Threads.</b> Every setter may be called from any thread at any moment (a UI thread, a
  * touch handler, a test hammering it). The state is one immutable {@link Settings} record behind
@@ -42,16 +43,23 @@ public final class AnimationConfig {
      * @param method             how the mesh is skinned
      * @param interpolation      how key rotations are blended
      * @param animationRunning   whether playback time advances (the thesis' start/stop animation)
-     * @param meshUpdatesRunning whether the mesh is re-skinned each step (start/stop mesh updates);
-     *                           with the animation stopped it still is, so a method switch shows
+     * @param meshUpdatesRunning whether each step publishes a new frame (start/stop mesh updates);
+     *                           with the animation stopped it still does, so a method switch shows
+     * @param cpuSkinning        whether a published frame carries CPU-skinned positions and normals;
+     *                           off, a step poses the skeleton and fills the frame's joint palette
+     *                           only, for a renderer that skins on the GPU (palette-only mode)
      * @param followCamera       whether the presenter turns the model toward the camera (AR app)
      * @param wrapMode           what playback does at the clip's ends
      */
     public record Settings(double speed, SkinningMethod method, RotationInterpolation interpolation,
-            boolean animationRunning, boolean meshUpdatesRunning, boolean followCamera, WrapMode wrapMode) {
-        /** Speed 1, LBS, SLERP, animation and mesh updates running, no camera following, looping. */
+            boolean animationRunning, boolean meshUpdatesRunning, boolean cpuSkinning, boolean followCamera,
+            WrapMode wrapMode) {
+        /**
+         * Speed 1, LBS, SLERP, animation and mesh updates running, skinned on the CPU, no camera
+         * following, looping.
+         */
         public static final Settings DEFAULT = new Settings(1.0, SkinningMethod.LBS, RotationInterpolation.SLERP,
-                true, true, false, WrapMode.LOOP);
+                true, true, true, false, WrapMode.LOOP);
 
         public Settings {
             Objects.requireNonNull(method, "method");
@@ -65,38 +73,43 @@ public final class AnimationConfig {
         }
 
         public Settings withSpeed(double speed) {
-            return new Settings(speed, method, interpolation, animationRunning, meshUpdatesRunning, followCamera,
-                    wrapMode);
+            return new Settings(speed, method, interpolation, animationRunning, meshUpdatesRunning, cpuSkinning,
+                    followCamera, wrapMode);
         }
 
         public Settings withMethod(SkinningMethod method) {
-            return new Settings(speed, method, interpolation, animationRunning, meshUpdatesRunning, followCamera,
-                    wrapMode);
+            return new Settings(speed, method, interpolation, animationRunning, meshUpdatesRunning, cpuSkinning,
+                    followCamera, wrapMode);
         }
 
         public Settings withInterpolation(RotationInterpolation interpolation) {
-            return new Settings(speed, method, interpolation, animationRunning, meshUpdatesRunning, followCamera,
-                    wrapMode);
+            return new Settings(speed, method, interpolation, animationRunning, meshUpdatesRunning, cpuSkinning,
+                    followCamera, wrapMode);
         }
 
         public Settings withAnimationRunning(boolean animationRunning) {
-            return new Settings(speed, method, interpolation, animationRunning, meshUpdatesRunning, followCamera,
-                    wrapMode);
+            return new Settings(speed, method, interpolation, animationRunning, meshUpdatesRunning, cpuSkinning,
+                    followCamera, wrapMode);
         }
 
         public Settings withMeshUpdatesRunning(boolean meshUpdatesRunning) {
-            return new Settings(speed, method, interpolation, animationRunning, meshUpdatesRunning, followCamera,
-                    wrapMode);
+            return new Settings(speed, method, interpolation, animationRunning, meshUpdatesRunning, cpuSkinning,
+                    followCamera, wrapMode);
+        }
+
+        public Settings withCpuSkinning(boolean cpuSkinning) {
+            return new Settings(speed, method, interpolation, animationRunning, meshUpdatesRunning, cpuSkinning,
+                    followCamera, wrapMode);
         }
 
         public Settings withFollowCamera(boolean followCamera) {
-            return new Settings(speed, method, interpolation, animationRunning, meshUpdatesRunning, followCamera,
-                    wrapMode);
+            return new Settings(speed, method, interpolation, animationRunning, meshUpdatesRunning, cpuSkinning,
+                    followCamera, wrapMode);
         }
 
         public Settings withWrapMode(WrapMode wrapMode) {
-            return new Settings(speed, method, interpolation, animationRunning, meshUpdatesRunning, followCamera,
-                    wrapMode);
+            return new Settings(speed, method, interpolation, animationRunning, meshUpdatesRunning, cpuSkinning,
+                    followCamera, wrapMode);
         }
     }
 
@@ -199,7 +212,7 @@ public final class AnimationConfig {
         setAnimationRunning(true);
     }
 
-    /** Playback time stands still; the mesh is still re-skinned while mesh updates run. */
+    /** Playback time stands still; every step still re-poses (and re-skins) while mesh updates run. */
     public void stopAnimation() {
         setAnimationRunning(false);
     }
@@ -212,18 +225,34 @@ public final class AnimationConfig {
         return settings().meshUpdatesRunning();
     }
 
-    /** The mesh is re-skinned every step again. */
+    /** Every step publishes a frame again. */
     public void startMeshUpdates() {
         setMeshUpdatesRunning(true);
     }
 
-    /** Nothing is re-skinned: readers keep getting the last published frame. */
+    /**
+     * Nothing is published, whether skinned on the CPU or not: readers keep getting the last
+     * published frame, mesh and palette alike.
+     */
     public void stopMeshUpdates() {
         setMeshUpdatesRunning(false);
     }
 
     public void setMeshUpdatesRunning(boolean running) {
         update(s -> s.withMeshUpdatesRunning(running));
+    }
+
+    public boolean isCpuSkinning() {
+        return settings().cpuSkinning();
+    }
+
+    /**
+     * Whether steps skin the mesh on the CPU (the default) or only pose the skeleton and publish
+     * its joint palette, for a renderer that skins on the GPU ({@link Frame#hasSkinnedMesh()}).
+     * Takes effect from the next step; every frame carries the palette either way.
+     */
+    public void setCpuSkinning(boolean cpuSkinning) {
+        update(s -> s.withCpuSkinning(cpuSkinning));
     }
 
     public boolean isFollowCamera() {

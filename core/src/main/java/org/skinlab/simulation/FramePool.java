@@ -28,6 +28,7 @@ final class FramePool {
     private static final int INITIAL_BUFFERS = 3;
 
     private final int[] pointCounts;
+    private final int[] jointCounts;
     private final int maxBuffers;
     private final boolean inPlace;
     private final AtomicReference<Frame> latest = new AtomicReference<>();
@@ -35,16 +36,19 @@ final class FramePool {
     private Frame[] buffers;
 
     /**
-     * @param inPlace test-only: claim always returns the first buffer, leased or latest or not, so
-     *                the writer fills the frame readers hold (what this class exists to prevent)
+     * @param pointCounts points per geometry
+     * @param jointCounts palette joints per geometry
+     * @param inPlace     test-only: claim always returns the first buffer, leased or latest or not, so
+     *                    the writer fills the frame readers hold (what this class exists to prevent)
      */
-    FramePool(int[] pointCounts, int maxBuffers, boolean inPlace) {
+    FramePool(int[] pointCounts, int[] jointCounts, int maxBuffers, boolean inPlace) {
         this.pointCounts = pointCounts.clone();
+        this.jointCounts = jointCounts.clone();
         this.maxBuffers = maxBuffers;
         this.inPlace = inPlace;
         buffers = new Frame[Math.min(INITIAL_BUFFERS, maxBuffers)];
         for (int i = 0; i < buffers.length; i++) {
-            buffers[i] = new Frame(this.pointCounts);
+            buffers[i] = new Frame(this.pointCounts, this.jointCounts);
         }
     }
 
@@ -93,7 +97,7 @@ final class FramePool {
         }
         if (buffers.length < maxBuffers) {
             buffers = Arrays.copyOf(buffers, buffers.length + 1);
-            Frame f = new Frame(pointCounts);
+            Frame f = new Frame(pointCounts, jointCounts);
             buffers[buffers.length - 1] = f;
             return f;
         }

@@ -6,7 +6,6 @@ import java.util.Objects;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicReference;
-import java.util.concurrent.locks.LockSupport;
 import java.util.concurrent.locks.ReentrantLock;
 
 import org.skinlab.animation.AnimationSampler;
@@ -20,16 +19,22 @@ import org.skinlab.skinning.SkinnedModel;
  * A model playing one clip, simulated on its own thread (the thesis' {@code SkeletalAnimatedMesh},
  * section 5.6): it owns the mesh, the skeleton and the clip (through a {@link SkinnedModel}) and
  * reads its switches from an {@link AnimationConfig}. After {@link #start()} one daemon thread
- * steps at {@link #stepRate()} steps per second; each step
+ * steps at {@link #stepRate()} steps per second (paced by absolute deadlines: {@link PacedThread});
+ * each step
  * <ol>
  * <li>advances the playback time by {@code dt * speed} when the animation runs, wrapped or held
  *     at the clip's ends as the wrap mode says;</li>
- * <li>when mesh updates run, poses the skeleton at that time and skins every geometry with the
- *     configured method and interpolation into a free buffer, then publishes it as the latest
- *     {@link Frame}. A stopped animation is still re-skinned every step, so switching LBS/DQS or
- *     the interpolation shows at once; with mesh updates stopped nothing is skinned and readers
- *     keep the last frame (the playback time still advances while the animation runs).</li>
+ * <li>when mesh updates run, poses the skeleton at that time with the configured interpolation,
+ *     copies every geometry's joint palette (skinning matrices, dual quaternions, scale parts)
+ *     into a free buffer and, with CPU skinning on, skins every geometry with the configured
+ *     method into it too, then publishes it as the latest {@link Frame}. A stopped animation is
+ *     still re-posed every step, so switching LBS/DQS or the interpolation shows at once; with
+ *     mesh updates stopped nothing is posed or published and readers keep the last frame (the
+ *     playback time still advances while the animation runs).</li>
  * </ol>
+ * With CPU skinning off ({@link AnimationConfig#setCpuSkinning}) frames carry only the palette,
+ * for a renderer that skins on the GPU ({@link Frame#hasSkinnedMesh()}); the switch takes effect
+ * at the next step, so the frames say per step which kind they are.
  * {@link #step(double)} runs the same step on the caller's thread, for tests, the command line and
  * renderers that drive the simulation themselves.
  *
@@ -55,10 +60,11 @@ import org.skinlab.skinning.SkinnedModel;
  * overlaps a new one. {@link #step(double)} refuses while the thread runs: two clocks driving one
  * playback would make its time meaningless. Interrupting the simulation thread stops it.
  *
- * <p><b>Failures.</b> Anything the simulation thread throws (a skinning bug, the frame listener)
- * is kept in {@link #failure()}, the thread ends cleanly, readers keep the last good frame, and
- * {@link #start()} and {@link #step(double)} then refuse with the failure as the cause, so it
- * cannot vanish. {@link #throwIfFailed()} lets a render loop surface it.
+ * <p><b>Failures.</b> Anything the simulation thread throws (a skinning bug, the frame listener,
+ * which runs after the step lock is released) is kept in {@link #failure()}, the thread ends
+ * cleanly, readers keep the last good frame, and {@link #start()} and {@link #step(double)} then
+ * refuse with the failure as the cause, so it cannot vanish. {@link #throwIfFailed()} lets a
+ * render loop surface it.
  *
  * <p>In steady state a step allocates nothing.
  */
@@ -102,7 +108,7 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
 
     // Thread lifecycle, guarded by `lifecycle` (never held while stepping or joining).
     private final Object lifecycle = new Object();
-    private volatile Runner current;
+    private volatile PacedThread current;
     private volatile boolean closed;
 
     /** The model's first clip (at rest if it has none), a fresh config, exact normals. */
@@ -152,11 +158,14 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
         this.sampler = skinned.sampler();
         List<SkinnedGeometry> geometries = skinned.geometries();
         pointCounts = new int[geometries.size()];
+        int[] jointCounts = new int[pointCounts.length];
         for (int g = 0; g < pointCounts.length; g++) {
             pointCounts[g] = geometries.get(g).pointCount();
+            jointCounts[g] = geometries.get(g).jointCount();
         }
-        pool = new FramePool(pointCounts, MAX_BUFFERS, publishInPlace);
-        // Frame 0: the clip's start, so acquire() always has something to give, whatever the switches say.
+        pool = new FramePool(pointCounts, jointCounts, MAX_BUFFERS, publishInPlace);
+        // Frame 0: the clip's start, so acquire() always has something to give, whatever the
+        // switches say (no listener can be set yet).
         stepLock.lock();
         try {
             publish(config.settings());
@@ -249,9 +258,16 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
     }
 
     /**
-     * Called after every published frame, on the thread that stepped (e.g. to ask a render view
-     * for a redraw: Android's {@code GLSurfaceView.requestRender()}). Must be quick. What it
-     * throws on the simulation thread ends that thread as a {@link #failure()}. Null for none.
+     * Called after every published frame, on the thread that stepped, once the step has let go
+     * of the step lock (e.g. to ask a render view for a redraw: Android's
+     * {@code GLSurfaceView.requestRender()}). It should be quick, since the simulation thread
+     * takes its next step only after it returns, but a slow one holds no lock: readers and hand
+     * steps on other threads go on (a {@link #stop()} from another thread does wait for it, as it
+     * waits for the thread to end). By the time it runs a newer frame may already be published:
+     * it should {@link #acquire()} the latest rather than assume which.
+     * What it throws on the simulation thread ends that thread as a {@link #failure()}; on a
+     * hand step it propagates to the caller of {@link #step(double)}, the frame already
+     * published. Null for none.
      */
     public void setFrameListener(Runnable listener) {
         frameListener = listener;
@@ -274,21 +290,22 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
             if (t != null) {
                 throw new IllegalStateException(describe() + ": the simulation failed earlier: " + t, t);
             }
-            Runner r = current;
-            if (r != null && !r.stopRequested && r.thread.isAlive()) {
+            PacedThread r = current;
+            if (r != null && r.isRunning()) {
                 return false;
             }
-            Runner next = new Runner("skinlab-simulation-" + THREAD_NUMBERS.incrementAndGet());
+            PacedThread next = new PacedThread("skinlab-simulation-" + THREAD_NUMBERS.incrementAndGet(),
+                    () -> periodNanos, this::threadStep, thrown -> failure.compareAndSet(null, thrown));
             current = next;
-            next.thread.start();
+            next.start();
             return true;
         }
     }
 
     /** Whether the simulation thread runs (started, not stopped, not ended by failure or interrupt). */
     public boolean isRunning() {
-        Runner r = current;
-        return r != null && !r.stopRequested && r.thread.isAlive();
+        PacedThread r = current;
+        return r != null && r.isRunning();
     }
 
     /**
@@ -298,20 +315,16 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
      * @return true if this call asked a running thread to stop
      */
     public boolean stop() {
-        Runner r;
+        PacedThread r;
         boolean stopped;
         synchronized (lifecycle) {
             r = current;
             if (r == null) {
                 return false;
             }
-            stopped = !r.stopRequested && r.thread.isAlive();
-            r.stopRequested = true;
+            stopped = r.requestStop();
         }
-        LockSupport.unpark(r.thread);
-        if (Thread.currentThread() != r.thread) {
-            joinUninterruptibly(r.thread);
-        }
+        r.awaitEnd();
         return stopped;
     }
 
@@ -339,6 +352,7 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
         if (!(dtSeconds >= 0) || Double.isInfinite(dtSeconds)) {
             throw new IllegalArgumentException("step of " + dtSeconds + " s (need a finite time >= 0)");
         }
+        boolean published;
         stepLock.lock();
         try {
             if (closed) {
@@ -349,10 +363,11 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
                 throw new IllegalStateException(describe()
                         + ": the simulation thread is running; stop() it before stepping by hand");
             }
-            advance(dtSeconds);
+            published = advance(dtSeconds);
         } finally {
             stepLock.unlock();
         }
+        notifyListener(published);
     }
 
     /** Buffers the frame pool holds so far (three, more while many readers hold frames). */
@@ -367,118 +382,94 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
 
     /** The thread of the current runner, for tests; null before the first start. */
     Thread simulationThread() {
-        Runner r = current;
-        return r == null ? null : r.thread;
+        PacedThread r = current;
+        return r == null ? null : r.thread();
     }
 
     // ---------------------------------------------------------------------------- simulation
 
-    /** One step; the caller holds stepLock. */
-    private void advance(double dt) {
+    /** One step; the caller holds stepLock. Returns whether it published a frame. */
+    private boolean advance(double dt) {
         AnimationConfig.Settings s = config.settings();
         if (s.animationRunning()) {
             playback = sampler.wrapElapsed(playback + dt * s.speed(), s.wrapMode());
         }
         playbackTime = playback;
         steps++;
-        if (s.meshUpdatesRunning()) {
-            publish(s);
-        }
+        return s.meshUpdatesRunning() && publish(s);
     }
 
-    /** Poses, skins into a free buffer and publishes it; the caller holds stepLock. */
-    private void publish(AnimationConfig.Settings s) {
+    /**
+     * Poses, fills a free buffer with the palette (and, with CPU skinning, the skinned mesh) and
+     * publishes it; the caller holds stepLock. False when every buffer was held (dropped).
+     */
+    private boolean publish(AnimationConfig.Settings s) {
         Frame f = pool.claim();
         if (f == null) {
             droppedFrames++;
-            return;
+            return false;
         }
         float clipTime = sampler.clipTime(playback, s.wrapMode());
         long t0 = System.nanoTime();
         skinned.pose(clipTime, s.interpolation());
         for (int g = 0; g < pointCounts.length; g++) {
-            skinned.skin(g, s.method(), f.positionsForWriting(g), f.normalsForWriting(g));
+            // Dual quaternions whatever the method: a split view may draw LBS and DQS from one frame.
+            f.copyPalette(g, skinned.preparePalette(g));
+            if (s.cpuSkinning()) {
+                skinned.skin(g, s.method(), f.positionsForWriting(g), f.normalsForWriting(g));
+            }
         }
         long nanos = System.nanoTime() - t0;
         long seq = sequence++;
-        f.describe(seq, playback, clipTime, s.method(), s.interpolation(), nanos);
+        f.describe(seq, playback, clipTime, s.method(), s.interpolation(), s.cpuSkinning(), nanos);
         pool.publish(f);
         publishedSequence = seq;
+        return true;
+    }
+
+    /**
+     * Runs the frame listener, if any, after a step that published; the caller must not hold
+     * stepLock, so a slow listener stalls neither the next step nor hand steps on other threads.
+     */
+    private void notifyListener(boolean published) {
         Runnable listener = frameListener;
-        if (listener != null) {
+        if (published && listener != null) {
             listener.run();
         }
     }
 
-    private void run(Runner r) {
-        long last = System.nanoTime();
-        long deadline = last;
-        try {
-            while (!r.stopRequested && !Thread.currentThread().isInterrupted()) {
-                long period = periodNanos;
-                // Absolute deadlines: oversleeping one step shortens the next wait, so the rate
-                // does not drift the way sleeping a fixed period after each step would.
-                deadline += period;
-                long now = System.nanoTime();
-                while (now - deadline < 0) {
-                    LockSupport.parkNanos(this, deadline - now);
-                    if (r.stopRequested || Thread.currentThread().isInterrupted()) {
-                        return;
-                    }
-                    now = System.nanoTime();
-                }
-                if (now - deadline > period) {
-                    deadline = now; // more than a step behind: carry on from now rather than catch up in a burst
-                }
-                if (!lockForStep(r)) {
-                    return;
-                }
-                try {
-                    if (r.stopRequested) {
-                        return;
-                    }
-                    // dt is the time actually elapsed, so playback follows the wall clock even
-                    // when steps come late.
-                    advance(Math.min((now - last) * 1e-9, MAX_STEP_SECONDS));
-                } finally {
-                    stepLock.unlock();
-                }
-                last = now;
-            }
-        } catch (Throwable t) {
-            failure.compareAndSet(null, t);
+    /** One step of the simulation thread (see {@link PacedThread} for its pacing). */
+    private boolean threadStep(PacedThread r, double elapsedSeconds) {
+        if (!lockForStep(r)) {
+            return false;
         }
+        boolean published;
+        try {
+            if (r.stopRequested()) {
+                return false;
+            }
+            published = advance(Math.min(elapsedSeconds, MAX_STEP_SECONDS));
+        } finally {
+            stepLock.unlock();
+        }
+        notifyListener(published); // what it throws ends the thread as failure()
+        return true;
     }
 
     /**
-     * Takes stepLock, polling for a stop while someone else steps (a hand step whose frame
-     * listener stops this thread must not wait for it forever).
+     * Takes stepLock, polling for a stop while someone else steps, so that a {@link #stop()} does
+     * not have to wait for another thread's step to end first.
      */
-    private boolean lockForStep(Runner r) {
+    private boolean lockForStep(PacedThread r) {
         try {
             while (!stepLock.tryLock(LOCK_POLL_NANOS, TimeUnit.NANOSECONDS)) {
-                if (r.stopRequested) {
+                if (r.stopRequested()) {
                     return false;
                 }
             }
             return true;
         } catch (InterruptedException e) {
             return false; // an interrupt stops the simulation thread
-        }
-    }
-
-    private static void joinUninterruptibly(Thread t) {
-        boolean interrupted = false;
-        while (true) {
-            try {
-                t.join();
-                break;
-            } catch (InterruptedException e) {
-                interrupted = true;
-            }
-        }
-        if (interrupted) {
-            Thread.currentThread().interrupt();
         }
     }
 
@@ -489,16 +480,5 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
     @Override
     public String toString() {
         return describe();
-    }
-
-    /** One simulation thread and its own stop flag, so a stopped thread can never be mistaken for its successor. */
-    private final class Runner {
-        final Thread thread;
-        volatile boolean stopRequested;
-
-        Runner(String name) {
-            thread = new Thread(() -> run(this), name);
-            thread.setDaemon(true);
-        }
     }
 }

@@ -90,6 +90,18 @@ public final class SkinnedModel {
         return palettes[g];
     }
 
+    /**
+     * Fills the dual quaternions and scale parts of palette {@code g} for the current pose (once:
+     * later calls and DQS skinning reuse them), for a caller that hands the whole palette on.
+     */
+    public JointPalette preparePalette(int g) {
+        if (!dualQuaternionsReady[g]) {
+            palettes[g].prepareDualQuaternions();
+            dualQuaternionsReady[g] = true;
+        }
+        return palettes[g];
+    }
+
     /** The skinner geometry {@code g} uses for a method. */
     public Skinner skinner(int g, SkinningMethod method) {
         return skinners[g][method.ordinal()];
@@ -115,9 +127,8 @@ public final class SkinnedModel {
      * (size {@code 3 * pointCount()}). DQS derives the palette's dual quaternions once per pose.
      */
     public void skin(int g, SkinningMethod method, float[] outPositions, float[] outNormals) {
-        if (method == SkinningMethod.DQS && !dualQuaternionsReady[g]) {
-            palettes[g].prepareDualQuaternions();
-            dualQuaternionsReady[g] = true;
+        if (method == SkinningMethod.DQS) {
+            preparePalette(g);
         }
         skinners[g][method.ordinal()].skinAll(palettes[g], outPositions, outNormals);
     }

@@ -27,6 +27,7 @@ class AnimationConfigTest {
         assertTrue(c.isMeshUpdatesRunning());
         assertFalse(c.isFollowCamera());
         assertEquals(WrapMode.LOOP, c.wrapMode());
+        assertTrue(c.isCpuSkinning());
     }
 
     @Test
@@ -64,8 +65,10 @@ class AnimationConfigTest {
         c.stopMeshUpdates();
         c.setFollowCamera(true);
         c.setWrapMode(WrapMode.CLAMP);
+        c.setCpuSkinning(false);
         assertEquals(new AnimationConfig.Settings(1.0, SkinningMethod.DQS, RotationInterpolation.LERP, false, false,
-                true, WrapMode.CLAMP), c.settings());
+                false, true, WrapMode.CLAMP), c.settings());
+        assertFalse(c.isCpuSkinning());
         assertEquals(SkinningMethod.LBS, c.nextMethod());
         assertEquals(RotationInterpolation.SLERP, c.nextInterpolation());
         c.startAnimation();

@@ -143,7 +143,10 @@ class SimulationThreadTest {
                             case 3 -> config.setAnimationRunning(random.nextBoolean());
                             case 4 -> config.setMeshUpdatesRunning(random.nextInt(4) > 0);
                             case 5 -> config.nextMethod();
-                            case 6 -> config.nextInterpolation();
+                            case 6 -> {
+                                config.nextInterpolation();
+                                config.setCpuSkinning(random.nextInt(4) > 0);
+                            }
                             case 7 -> {
                                 if (random.nextBoolean()) {
                                     config.faster();

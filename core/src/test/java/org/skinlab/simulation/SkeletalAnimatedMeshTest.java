@@ -287,20 +287,24 @@ class SkeletalAnimatedMeshTest {
         long id = Thread.currentThread().getId();
         AnimationConfig config = new AnimationConfig();
         try (SkeletalAnimatedMesh mesh = ribbon(config)) {
-            for (SkinningMethod method : SkinningMethod.values()) {
-                config.setMethod(method);
-                for (int i = 0; i < 20_000; i++) { // let the JIT settle
-                    mesh.step(0.001);
+            for (boolean cpuSkinning : new boolean[] {true, false}) {
+                config.setCpuSkinning(cpuSkinning);
+                for (SkinningMethod method : SkinningMethod.values()) {
+                    config.setMethod(method);
+                    for (int i = 0; i < 20_000; i++) { // let the JIT settle
+                        mesh.step(0.001);
+                    }
+                    int steps = 10_000;
+                    long before = threads.getThreadAllocatedBytes(id);
+                    for (int i = 0; i < steps; i++) {
+                        mesh.step(0.001);
+                        mesh.acquire().close();
+                    }
+                    long bytes = threads.getThreadAllocatedBytes(id) - before;
+                    // The smallest object is 16 bytes: fewer bytes than steps means no step allocated.
+                    assertTrue(bytes < steps, method + (cpuSkinning ? "" : " palette only") + ": " + bytes
+                            + " bytes allocated in " + steps + " steps");
                 }
-                int steps = 10_000;
-                long before = threads.getThreadAllocatedBytes(id);
-                for (int i = 0; i < steps; i++) {
-                    mesh.step(0.001);
-                    mesh.acquire().close();
-                }
-                long bytes = threads.getThreadAllocatedBytes(id) - before;
-                // The smallest object is 16 bytes: fewer bytes than steps means no step allocated.
-                assertTrue(bytes < steps, method + ": " + bytes + " bytes allocated in " + steps + " steps");
             }
         }
     }

@@ -20,10 +20,12 @@ import org.skinlab.skinning.SkinningMethod;
 
 /**
  * A reader takes 100,000 snapshots while the simulation steps as fast as it can and another
- * thread flips every switch at random; {@link FrameChecker} recomputes each snapshot from the step
+ * thread flips every switch at random (CPU skinning included, so about half the frames are
+ * palette-only); {@link FrameChecker} recomputes each snapshot's palette and mesh from the step
  * it claims to be and demands bit-for-bit equality, so a frame mixing two steps fails the test.
- * The last test runs the same harness against a mesh that writes into the published buffer (the
- * race the snapshot design prevents) and requires the checker to catch it: the check can fail.
+ * The last tests run the same harness against a mesh that writes into the published buffer (the
+ * race the snapshot design prevents) and require the checker to catch it, the palette check and
+ * the mesh check each on its own: the checks can fail.
  */
 class TornFrameTest {
     private static final int SNAPSHOTS = 100_000;
@@ -37,15 +39,19 @@ class TornFrameTest {
     private static final Model RIBBON = TwistRibbon.model();
 
     /** What one run of the harness saw. */
-    private record Result(int snapshots, int torn, String firstProblem, long distinctFrames, int backwards,
-            Set<SkinningMethod> methods, Set<RotationInterpolation> interpolations) {
+    private record Result(int snapshots, int tornPalettes, int tornMeshes, String firstProblem, long distinctFrames,
+            int backwards, Set<SkinningMethod> methods, Set<RotationInterpolation> interpolations, int skinnedFrames,
+            int paletteOnlyFrames) {
+        int torn() {
+            return Math.max(tornPalettes, tornMeshes);
+        }
     }
 
     @Test
     @Timeout(value = 60, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
     void readerNeverSeesATornFrameWhileStepsRunFlatOutOnAnotherThread() throws Exception {
         try (SkeletalAnimatedMesh mesh = new SkeletalAnimatedMesh(RIBBON, RIBBON.clips().get(0), new AnimationConfig())) {
-            Result r = hammer(mesh, false, SNAPSHOTS, Integer.MAX_VALUE);
+            Result r = hammer(mesh, false, true, SNAPSHOTS, Integer.MAX_VALUE);
             assertClean(r);
         }
     }
@@ -55,7 +61,7 @@ class TornFrameTest {
     void readerNeverSeesATornFrameFromTheSimulationThread() throws Exception {
         try (SkeletalAnimatedMesh mesh = new SkeletalAnimatedMesh(RIBBON, RIBBON.clips().get(0), new AnimationConfig())) {
             mesh.setStepRate(SkeletalAnimatedMesh.MAX_STEP_RATE);
-            Result r = hammer(mesh, true, SNAPSHOTS, Integer.MAX_VALUE);
+            Result r = hammer(mesh, true, true, SNAPSHOTS, Integer.MAX_VALUE);
             assertClean(r);
             assertTrue(mesh.failure() == null, () -> "simulation failed: " + mesh.failure());
         }
@@ -70,9 +76,26 @@ class TornFrameTest {
         // leaves its frame half-written for the whole time slice).
         try (SkeletalAnimatedMesh mesh = new SkeletalAnimatedMesh(RIBBON, RIBBON.clips().get(0), new AnimationConfig(),
                 NormalTransform.INVERSE_TRANSPOSE, true)) {
-            Result r = hammer(mesh, false, SNAPSHOTS, 20);
-            assertTrue(r.torn() > 0, () -> "no torn frame detected in " + r.snapshots() + " snapshots of "
-                    + r.distinctFrames() + " frames written in place: the check would not notice tearing");
+            Result r = hammer(mesh, false, false, SNAPSHOTS, 20);
+            assertTrue(r.tornMeshes() > 0, () -> "no torn mesh detected in " + r.snapshots() + " snapshots of "
+                    + r.distinctFrames() + " frames written in place: the mesh check would not notice tearing");
+            assertTrue(r.tornPalettes() > 0, () -> "no torn palette detected in " + r.snapshots() + " snapshots of "
+                    + r.distinctFrames() + " frames written in place: the palette check would not notice tearing");
+        }
+    }
+
+    @Test
+    @Timeout(value = 60, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
+    void theCheckCatchesTornPaletteOnlyFramesWrittenIntoThePublishedBuffer() throws Exception {
+        // Palette-only frames have no mesh to compare: the palette check alone must see the tearing.
+        AnimationConfig config = new AnimationConfig();
+        config.setCpuSkinning(false);
+        try (SkeletalAnimatedMesh mesh = new SkeletalAnimatedMesh(RIBBON, RIBBON.clips().get(0), config,
+                NormalTransform.INVERSE_TRANSPOSE, true)) {
+            Result r = hammer(mesh, false, false, SNAPSHOTS, 20);
+            assertEquals(0, r.skinnedFrames(), "a frame had a mesh although CPU skinning stayed off");
+            assertTrue(r.tornPalettes() > 0, () -> "no torn palette detected in " + r.snapshots() + " snapshots of "
+                    + r.distinctFrames() + " palette-only frames written in place");
         }
     }
 
@@ -85,16 +108,19 @@ class TornFrameTest {
                 () -> "only " + r.distinctFrames() + " distinct frames seen in " + r.snapshots() + " snapshots");
         assertEquals(EnumSet.allOf(SkinningMethod.class), r.methods());
         assertTrue(r.interpolations().size() >= 2, () -> "interpolations seen: " + r.interpolations());
+        assertTrue(r.skinnedFrames() > 0 && r.paletteOnlyFrames() > 0, () -> r.skinnedFrames() + " skinned and "
+                + r.paletteOnlyFrames() + " palette-only snapshots: CPU skinning was not switched both ways");
     }
 
     /**
      * Runs a writer (the simulation thread, or a thread stepping by hand as fast as it can) and a
-     * settings flipper while this thread takes at least {@code snapshots} snapshots and checks
-     * each, going on until it has seen {@link #MIN_DISTINCT_FRAMES} frames (or
-     * {@link #READ_NANOS} passed); stops early after {@code maxTorn} torn ones.
+     * settings flipper (CPU skinning among its switches if {@code flipCpuSkinning}) while this
+     * thread takes at least {@code snapshots} snapshots and checks each, going on until it has
+     * seen {@link #MIN_DISTINCT_FRAMES} frames (or {@link #READ_NANOS} passed); stops early once
+     * {@code maxTorn} torn palettes and as many torn meshes (if any frame had a mesh) were seen.
      */
-    private static Result hammer(SkeletalAnimatedMesh mesh, boolean useThread, int snapshots, int maxTorn)
-            throws InterruptedException {
+    private static Result hammer(SkeletalAnimatedMesh mesh, boolean useThread, boolean flipCpuSkinning,
+            int snapshots, int maxTorn) throws InterruptedException {
         AnimationConfig config = mesh.config();
         AtomicBoolean done = new AtomicBoolean();
         AtomicReference<Throwable> helperFailure = new AtomicReference<>();
@@ -120,14 +146,15 @@ class TornFrameTest {
             WrapMode[] wraps = WrapMode.values();
             try {
                 while (!done.get()) {
-                    switch (random.nextInt(7)) {
+                    switch (random.nextInt(flipCpuSkinning ? 8 : 7)) {
                         case 0 -> config.setMethod(methods[random.nextInt(methods.length)]);
                         case 1 -> config.setInterpolation(interpolations[random.nextInt(interpolations.length)]);
                         case 2 -> config.setSpeed((random.nextBoolean() ? 1 : -1) * random.nextDouble(0.05, 20));
                         case 3 -> config.setAnimationRunning(random.nextInt(5) > 0); // mostly running
                         case 4 -> config.setMeshUpdatesRunning(random.nextInt(10) > 0); // mostly on
                         case 5 -> config.setWrapMode(wraps[random.nextInt(wraps.length)]);
-                        default -> config.setFollowCamera(random.nextBoolean());
+                        case 6 -> config.setFollowCamera(random.nextBoolean());
+                        default -> config.setCpuSkinning(random.nextBoolean());
                     }
                     LockSupport.parkNanos(20_000);
                 }
@@ -138,7 +165,10 @@ class TornFrameTest {
         flipper.start();
 
         FrameChecker checker = FrameChecker.ribbon(mesh.model());
-        int torn = 0;
+        int tornPalettes = 0;
+        int tornMeshes = 0;
+        int skinned = 0;
+        int paletteOnly = 0;
         int backwards = 0;
         String first = null;
         long distinct = 0;
@@ -149,15 +179,23 @@ class TornFrameTest {
         long giveUp = System.nanoTime() + READ_NANOS;
         try {
             while ((taken < snapshots || distinct < MIN_DISTINCT_FRAMES && System.nanoTime() - giveUp < 0)
-                    && torn < maxTorn) {
+                    && !(tornPalettes >= maxTorn && (tornMeshes >= maxTorn || skinned == 0))) {
                 try (Frame frame = mesh.acquire()) {
                     taken++;
-                    String problem = checker.problem(frame);
-                    if (problem != null) {
-                        torn++;
-                        if (first == null) {
-                            first = problem;
-                        }
+                    if (frame.hasSkinnedMesh()) {
+                        skinned++;
+                    } else {
+                        paletteOnly++;
+                    }
+                    FrameChecker.Verdict verdict = checker.check(frame);
+                    if (verdict.palette() != null) {
+                        tornPalettes++;
+                    }
+                    if (verdict.mesh() != null) {
+                        tornMeshes++;
+                    }
+                    if (first == null) {
+                        first = verdict.problem();
                     }
                     long s = frame.sequence();
                     if (s < lastSequence) {
@@ -181,6 +219,7 @@ class TornFrameTest {
         if (helperFailure.get() != null) {
             throw new AssertionError("a helper thread failed", helperFailure.get());
         }
-        return new Result(taken, torn, first, distinct, backwards, methods, interpolations);
+        return new Result(taken, tornPalettes, tornMeshes, first, distinct, backwards, methods, interpolations,
+                skinned, paletteOnly);
     }
 }
