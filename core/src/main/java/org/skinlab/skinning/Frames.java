@@ -1,9 +1,9 @@
 package org.skinlab.skinning;
 
 /**
- * The per-point frame record of {@link Skinner#skinFrames} (16 floats: the normal matrix N as three
- * columns, then the deformed position, each padded to four) and the blends the scalar kernels
- * share. Plain Java.
+ * The per-point frame record of {@link Skinner#skinFrames} (16 floats: two columns of the normal
+ * matrix N, the deformed position, N's last column, each padded to four) and the blends the scalar
+ * kernels share. Plain Java.
  */
 final class Frames {
     private Frames() {
@@ -80,13 +80,13 @@ final class Frames {
         f[o + 5] = a11;
         f[o + 6] = a21;
         f[o + 7] = 0f;
-        f[o + 8] = a02;
-        f[o + 9] = a12;
-        f[o + 10] = a22;
+        f[o + 8] = px;
+        f[o + 9] = py;
+        f[o + 10] = pz;
         f[o + 11] = 0f;
-        f[o + 12] = px;
-        f[o + 13] = py;
-        f[o + 14] = pz;
+        f[o + 12] = a02;
+        f[o + 13] = a12;
+        f[o + 14] = a22;
         f[o + 15] = 0f;
     }
 }

@@ -14,7 +14,6 @@ final class SharedPositionSkinner extends AbstractSkinner {
     private final Skinner positionKernel;
     private final FrameExpansion expansion;
     private final int[] frameOfPoint;
-    private final float[] restNormals;
     private final int positionCount;
     private final ThreadLocal<float[]> frames;
 
@@ -24,7 +23,6 @@ final class SharedPositionSkinner extends AbstractSkinner {
         this.positionKernel = positionKernel;
         this.expansion = expansion;
         this.frameOfPoint = geometry.frameOfPointArray();
-        this.restNormals = geometry.normalArray();
         this.positionCount = positionKernel.geometry().pointCount();
         int size = FRAME_FLOATS * positionCount;
         this.frames = ThreadLocal.withInitial(() -> new float[size]);
@@ -35,12 +33,36 @@ final class SharedPositionSkinner extends AbstractSkinner {
         return positionKernel;
     }
 
+    /**
+     * The rest normals an expansion for this method and rule should read: for DQS under the exact
+     * rule they are scaled to unit length once here, since a frame without a scale part is a
+     * rotation, which keeps them unit, and the per-call renormalisation can then be skipped; the
+     * geometry's own array otherwise.
+     */
+    static float[] expansionNormals(SkinningMethod method, NormalTransform rule, SkinnedGeometry geometry) {
+        float[] n = geometry.normalArray();
+        if (method != SkinningMethod.DQS || rule != NormalTransform.INVERSE_TRANSPOSE) {
+            return n;
+        }
+        float[] unit = new float[n.length];
+        for (int i = 0; i < n.length; i += 3) {
+            float len2 = n[i] * n[i] + n[i + 1] * n[i + 1] + n[i + 2] * n[i + 2];
+            float inv = len2 > 0f ? (float) (1.0 / Math.sqrt(len2)) : 0f;
+            unit[i] = n[i] * inv;
+            unit[i + 1] = n[i + 1] * inv;
+            unit[i + 2] = n[i + 2] * inv;
+        }
+        return unit;
+    }
+
     @Override
     public void skin(JointPalette palette, float[] outPositions, float[] outNormals, int from, int to) {
         float[] f = frames.get();
         positionKernel.skinFrames(palette, f, 0, positionCount);
-        expansion.expand(f, frameOfPoint, restNormals, outPositions, outNormals, from, to,
-                normals == NormalTransform.INVERSE_TRANSPOSE);
+        // DQS frames without scale are rotations of unit normals (see expansionNormals).
+        boolean normalise = normals == NormalTransform.INVERSE_TRANSPOSE
+                && (method() == SkinningMethod.LBS || palette.hasScale());
+        expansion.expand(f, outPositions, outNormals, from, to, normalise);
     }
 
     @Override

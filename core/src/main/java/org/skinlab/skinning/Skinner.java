@@ -26,12 +26,12 @@ public interface Skinner {
     /**
      * Deforms points {@code [from, to)} into <em>frames</em>, from which any number of render
      * vertices sharing a point's position are derived ({@link FrameExpansion}): per point 16 floats
-     * at {@code 16 * point}, a column-major 4x4 matrix whose upper-left 3x3 is the normal matrix N
-     * and whose last column is the deformed position (the fourth row is zero):
-     * {@code N00 N10 N20 0, N01 N11 N21 0, N02 N12 N22 0, px py pz 0}. A rest normal n deforms to
-     * {@code N n}, renormalised under {@link NormalTransform#INVERSE_TRANSPOSE}, as is under
-     * {@link NormalTransform#BLENDED_MATRIX}. Under INVERSE_TRANSPOSE N is the cofactor matrix of
-     * the blended linear part times the sign of its determinant, so a mirroring transform keeps
+     * at {@code 16 * point}, the columns of the normal matrix N and the deformed position p, each
+     * padded to four: {@code N00 N10 N20 0, N01 N11 N21 0, px py pz 0, N02 N12 N22 0} (p before N's
+     * last column so that a vector expansion stores it straight from the loaded half). A rest normal
+     * n deforms to {@code N n}, renormalised under {@link NormalTransform#INVERSE_TRANSPOSE}, as is
+     * under {@link NormalTransform#BLENDED_MATRIX}. Under INVERSE_TRANSPOSE N is the cofactor matrix
+     * of the blended linear part times the sign of its determinant, so a mirroring transform keeps
      * normals outward; the geometry's normals are not read. Same threading rules as {@link #skin}.
      */
     void skinFrames(JointPalette palette, float[] outFrames, int from, int to);

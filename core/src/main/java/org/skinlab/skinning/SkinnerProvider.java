@@ -12,8 +12,11 @@ public interface SkinnerProvider {
      */
     Skinner create(SkinningMethod method, SkinnedGeometry geometry, NormalTransform normals);
 
-    /** A faster {@link FrameExpansion} than the scalar one, or null. */
-    default FrameExpansion frameExpansion() {
+    /**
+     * A faster {@link FrameExpansion} than the scalar one for this mapping and these rest normals
+     * (see {@link FrameExpansion#scalar}), or null.
+     */
+    default FrameExpansion frameExpansion(int[] frameOfPoint, float[] restNormals) {
         return null;
     }
 }

@@ -36,7 +36,8 @@ public final class Skinners {
     public static Skinner create(SkinningMethod method, SkinnedGeometry geometry, NormalTransform normals) {
         SkinnedGeometry shared = geometry.sharedPositions();
         if (shared != null) {
-            return new SharedPositionSkinner(geometry, create(method, shared, normals), expansion());
+            return new SharedPositionSkinner(geometry, create(method, shared, normals), expansion(
+                    geometry.frameOfPointArray(), SharedPositionSkinner.expansionNormals(method, normals, geometry)));
         }
         for (SkinnerProvider p : PROVIDERS) {
             Skinner s;
@@ -52,12 +53,12 @@ public final class Skinners {
         return scalar(method, geometry, normals);
     }
 
-    /** The fastest {@link FrameExpansion} available. */
-    public static FrameExpansion expansion() {
+    /** The fastest {@link FrameExpansion} available for a mapping and rest normals. */
+    public static FrameExpansion expansion(int[] frameOfPoint, float[] restNormals) {
         for (SkinnerProvider p : PROVIDERS) {
             FrameExpansion e;
             try {
-                e = p.frameExpansion();
+                e = p.frameExpansion(frameOfPoint, restNormals);
             } catch (LinkageError err) {
                 continue;
             }
@@ -65,7 +66,7 @@ public final class Skinners {
                 return e;
             }
         }
-        return FrameExpansion.SCALAR;
+        return FrameExpansion.scalar(frameOfPoint, restNormals);
     }
 
     /** The fastest skinner with exact normals ({@link NormalTransform#INVERSE_TRANSPOSE}). */
@@ -80,7 +81,8 @@ public final class Skinners {
     public static Skinner scalar(SkinningMethod method, SkinnedGeometry geometry, NormalTransform normals) {
         SkinnedGeometry shared = geometry.sharedPositions();
         if (shared != null) {
-            return new SharedPositionSkinner(geometry, scalar(method, shared, normals), FrameExpansion.SCALAR);
+            return new SharedPositionSkinner(geometry, scalar(method, shared, normals), FrameExpansion.scalar(
+                    geometry.frameOfPointArray(), SharedPositionSkinner.expansionNormals(method, normals, geometry)));
         }
         switch (method) {
             case LBS:

@@ -102,7 +102,7 @@ class InverseTransposeNormalsTest {
         }
         float[] p2 = new float[NORMALS.length];
         float[] n2 = new float[NORMALS.length];
-        FrameExpansion.SCALAR.expand(frames, identity, g.normalArray(), p2, n2, 0, points, true);
+        FrameExpansion.scalar(identity, g.normalArray()).expand(frames, p2, n2, 0, points, true);
         for (int i = 0; i < NORMALS.length; i++) {
             assertEquals(p[i], p2[i], 1e-5f, method + ": position float " + i + " by frames");
             assertEquals(n[i], n2[i], 1e-5f, method + ": normal float " + i + " by frames");

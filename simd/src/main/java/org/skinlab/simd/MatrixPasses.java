@@ -260,10 +260,11 @@ final class MatrixPasses {
                 d = d.add(d.rearrange(YZX)).add(d.rearrange(ZXY));
                 FloatVector sign = d.mul(1e30f).max(-1f).min(1f); // sign(d), written out
                 k01.mul(sign).intoArray(out, f);
-                k2.mul(sign).blend(p, HI).intoArray(out, f + 8);
+                // k2's upper half is c1 x c0 = -(c0 x c1): [p | k2] without a permutation
+                p.blend(k2.mul(sign).neg(), HI).intoArray(out, f + 8);
             } else {
                 a.intoArray(out, f);
-                b.blend(p, HI).intoArray(out, f + 8);
+                p.blend(b.rearrange(SWAP), HI).intoArray(out, f + 8);
             }
         }
     }

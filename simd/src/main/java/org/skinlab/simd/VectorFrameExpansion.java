@@ -1,6 +1,5 @@
 package org.skinlab.simd;
 
-import static org.skinlab.simd.Lanes.HI;
 import static org.skinlab.simd.Lanes.S;
 import static org.skinlab.simd.Lanes.SWAP;
 
@@ -10,46 +9,61 @@ import org.skinlab.skinning.FrameExpansion;
 import org.skinlab.skinning.Skinner;
 
 /**
- * {@link FrameExpansion} on 8-lane vectors, one point per iteration: the frame's two halves
- * {@code [N0 | N1]}, {@code [N2 | p]} are two loads, {@code N n} is two multiplies and a lane swap,
- * and both results go out with 8-lane stores whose tails spill into the next points (the last two
- * points of a range are written float by float with the same sums, so a range writes nothing
- * outside itself). Exact
- * normals are then renormalised eight at a time ({@link MatrixPasses#normalise}).
+ * {@link FrameExpansion} on 8-lane vectors, one point per iteration. The rest normals are laid out
+ * once as the operands the frame's halves {@code [N0 | N1]} and {@code [p | N2]} are multiplied by:
+ * {@code [nx nx nx nx | ny ny ny ny]} and {@code [0 0 0 0 | nz nz nz nz]} (16 floats per point),
+ * so a point costs four loads, a multiply, a fused multiply-add, one lane swap and an add; the
+ * position is stored straight from the frame's second half. Both stores are 8 lanes wide and spill
+ * into the next points, which overwrite them; the last two points of a range are written float by
+ * float with the same sums in the same order, so a range writes nothing outside itself and any
+ * split gives the same bits. Exact normals are then renormalised eight at a time
+ * ({@link MatrixPasses#normalise}).
  */
 final class VectorFrameExpansion implements FrameExpansion {
-    static final VectorFrameExpansion INSTANCE = new VectorFrameExpansion();
+    private final int[] frameOfPoint;
+    private final float[] operands;
 
-    private VectorFrameExpansion() {
+    VectorFrameExpansion(int[] frameOfPoint, float[] restNormals) {
+        this.frameOfPoint = frameOfPoint;
+        int n = frameOfPoint.length;
+        operands = new float[16 * n];
+        for (int i = 0; i < n; i++) {
+            float nx = restNormals[3 * i], ny = restNormals[3 * i + 1], nz = restNormals[3 * i + 2];
+            for (int l = 0; l < 4; l++) {
+                operands[16 * i + l] = nx;
+                operands[16 * i + 4 + l] = ny;
+                operands[16 * i + 12 + l] = nz;
+            }
+        }
     }
 
     @Override
-    public void expand(float[] frames, int[] frameOfPoint, float[] restNormals, float[] outPositions,
-            float[] outNormals, int from, int to, boolean normalise) {
+    public void expand(float[] frames, float[] outPositions, float[] outNormals, int from, int to,
+            boolean normalise) {
+        final int[] fop = frameOfPoint;
+        final float[] ops = operands;
         int end = Math.max(from, to - 2);
-        final FloatVector zero = FloatVector.zero(S);
         for (int i = from; i < end; i++) {
-            int f = Skinner.FRAME_FLOATS * frameOfPoint[i];
+            int f = Skinner.FRAME_FLOATS * fop[i];
             int v = 3 * i;
             FloatVector n01 = FloatVector.fromArray(S, frames, f);
-            FloatVector n2p = FloatVector.fromArray(S, frames, f + 8);
-            FloatVector nxy = FloatVector.broadcast(S, restNormals[v]).blend(FloatVector.broadcast(S, restNormals[v + 1]), HI);
-            FloatVector nz0 = FloatVector.broadcast(S, restNormals[v + 2]).blend(zero, HI);
-            FloatVector t = n01.mul(nxy).add(n2p.mul(nz0));
+            FloatVector pn2 = FloatVector.fromArray(S, frames, f + 8);
+            FloatVector t = n01.mul(FloatVector.fromArray(S, ops, 16 * i))
+                    .add(pn2.mul(FloatVector.fromArray(S, ops, 16 * i + 8)));
             t.add(t.rearrange(SWAP)).intoArray(outNormals, v);
-            n2p.rearrange(SWAP).intoArray(outPositions, v);
+            pn2.intoArray(outPositions, v);
         }
         for (int i = end; i < to; i++) {
-            // The loop's sums in the loop's order, so results do not depend on where a range ends.
-            int f = Skinner.FRAME_FLOATS * frameOfPoint[i];
+            // The loop's sums in the loop's order: (N0 nx + 0) + (N1 ny + N2 nz).
+            int f = Skinner.FRAME_FLOATS * fop[i];
             int v = 3 * i;
-            float nx = restNormals[v], ny = restNormals[v + 1], nz = restNormals[v + 2];
-            outNormals[v] = frames[f] * nx + frames[f + 8] * nz + frames[f + 4] * ny;
-            outNormals[v + 1] = frames[f + 1] * nx + frames[f + 9] * nz + frames[f + 5] * ny;
-            outNormals[v + 2] = frames[f + 2] * nx + frames[f + 10] * nz + frames[f + 6] * ny;
-            outPositions[v] = frames[f + 12];
-            outPositions[v + 1] = frames[f + 13];
-            outPositions[v + 2] = frames[f + 14];
+            int o = 16 * i;
+            float nx = ops[o], ny = ops[o + 4], nz = ops[o + 12];
+            for (int c = 0; c < 3; c++) {
+                outNormals[v + c] = (frames[f + c] * nx + frames[f + 8 + c] * 0f)
+                        + (frames[f + 4 + c] * ny + frames[f + 12 + c] * nz);
+                outPositions[v + c] = frames[f + 8 + c];
+            }
         }
         if (normalise) {
             MatrixPasses.normalise(outNormals, from, to);

@@ -21,8 +21,8 @@ final class VectorKernels {
         return FloatVector.SPECIES_PREFERRED.vectorBitSize() >= Lanes.S.vectorBitSize();
     }
 
-    static FrameExpansion frameExpansion() {
-        return VectorFrameExpansion.INSTANCE;
+    static FrameExpansion frameExpansion(int[] frameOfPoint, float[] restNormals) {
+        return new VectorFrameExpansion(frameOfPoint, restNormals);
     }
 
     static Skinner create(SkinningMethod method, SkinnedGeometry geometry, NormalTransform normals) {

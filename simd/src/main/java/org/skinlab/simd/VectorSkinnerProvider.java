@@ -30,11 +30,11 @@ public final class VectorSkinnerProvider implements SkinnerProvider {
     }
 
     @Override
-    public FrameExpansion frameExpansion() {
+    public FrameExpansion frameExpansion(int[] frameOfPoint, float[] restNormals) {
         if (!moduleAvailable() || !VectorKernels.fastOnThisMachine()) {
             return null;
         }
-        return VectorKernels.frameExpansion();
+        return VectorKernels.frameExpansion(frameOfPoint, restNormals);
     }
 
     /** True when the incubator module is in the boot layer (the JVM got {@code --add-modules}). */

@@ -36,7 +36,7 @@ class VectorSkinnerProviderTest {
                 assertEquals(m == SkinningMethod.DQS ? 8 : 1, s.rangeAlignment());
             }
         }
-        assertEquals("vector-256", Skinners.expansion().implementation());
+        assertEquals("vector-256", Skinners.expansion(new int[] {0, 0}, new float[6]).implementation());
     }
 
     @Test
