@@ -2,7 +2,10 @@ package org.skinlab.skinning;
 
 import java.util.Arrays;
 
+import org.joml.Matrix3f;
 import org.joml.Matrix4f;
+import org.joml.Matrix4fc;
+import org.joml.Vector3f;
 import org.skinlab.model.Mesh;
 import org.skinlab.model.MeshInstance;
 import org.skinlab.model.Skin;
@@ -27,8 +30,10 @@ import org.skinlab.model.Skin;
  * <p><b>Joints.</b> {@link #jointCount()} palette entries: the skin's joints in skin order, plus,
  * when needed, one pseudo-joint for COLLADA's joint index -1 (the bind shape itself) and for
  * unweighted positions. Each has a scene node ({@link #jointNode}, -1 for the pseudo-joint) and a
- * bind matrix (INV_BIND_MATRIX * BIND_SHAPE_MATRIX; the pseudo-joint's is the bind shape matrix),
- * so that the skinning matrix is {@code world(node) * bind}. A static mesh becomes a geometry with
+ * bind matrix (INV_BIND_MATRIX; the pseudo-joint's is the identity), so that the skinning matrix is
+ * {@code world(node) * bind}, applied to the points' positions, which already hold the bind shape
+ * matrix (positions moved by it, normals by its inverse-transpose, once, when the geometry is
+ * built). A static mesh becomes a geometry with
  * one joint, its own node, and identity bind: the same code places it.
  *
  * <p><b>Shared positions.</b> A point's deformed position depends only on its POSITION entry, and
@@ -56,17 +61,18 @@ public final class SkinnedGeometry {
     /** Per point, its position in {@link #sharedPositions}; null when points are skinned one by one. */
     private final int[] frameOfPoint;
     private final SkinnedGeometry sharedPositions;
+    private final boolean windingMirrored;
 
     private SkinnedGeometry(MeshInstance instance, int vertexCount, float[] positions, float[] normals,
             int influences, int[] joints, float[] weights, int[] jointNodes, float[] bindMatrices,
             int[] pointOfPosition) {
         this(instance, vertexCount, positions, normals, influences, joints, weights, jointNodes, bindMatrices,
-                pointOfPosition, null, null);
+                pointOfPosition, null, null, false);
     }
 
     private SkinnedGeometry(MeshInstance instance, int vertexCount, float[] positions, float[] normals,
             int influences, int[] joints, float[] weights, int[] jointNodes, float[] bindMatrices,
-            int[] pointOfPosition, int[] frameOfPoint, SkinnedGeometry sharedPositions) {
+            int[] pointOfPosition, int[] frameOfPoint, SkinnedGeometry sharedPositions, boolean windingMirrored) {
         this.instance = instance;
         this.vertexCount = vertexCount;
         this.pointCount = positions.length / 3;
@@ -80,6 +86,7 @@ public final class SkinnedGeometry {
         this.pointOfPosition = pointOfPosition;
         this.frameOfPoint = frameOfPoint;
         this.sharedPositions = sharedPositions;
+        this.windingMirrored = windingMirrored;
     }
 
     /** The runtime geometry of a placed mesh, skinned or static. */
@@ -129,7 +136,7 @@ public final class SkinnedGeometry {
         if (!sharesPositions(points, pointOfPosition.length, byPoint.influences)) {
             return byPoint;
         }
-        return byPoint.withSharedPositions(mesh.positions(), positionOfPoint);
+        return byPoint.withSharedPositions(positionOfPoint);
     }
 
     /**
@@ -147,22 +154,24 @@ public final class SkinnedGeometry {
     }
 
     /** This geometry with a position-level twin for kernels that skin each position once. */
-    private SkinnedGeometry withSharedPositions(float[] sourcePositions, int[] positionOfPoint) {
+    private SkinnedGeometry withSharedPositions(int[] positionOfPoint) {
         int positionCount = pointOfPosition.length;
         int w = influences;
         int[] rowJoints = new int[w * positionCount];
         float[] rowWeights = new float[w * positionCount];
+        float[] sourcePositions = new float[3 * positionCount];
         int[] identity = new int[positionCount];
         for (int p = 0; p < positionCount; p++) {
+            System.arraycopy(positions, 3 * pointOfPosition[p], sourcePositions, 3 * p, 3);
             // A position's influences are those of any point that carries it (they are per position).
             System.arraycopy(joints, w * pointOfPosition[p], rowJoints, w * p, w);
             System.arraycopy(weights, w * pointOfPosition[p], rowWeights, w * p, w);
             identity[p] = p;
         }
-        SkinnedGeometry shared = new SkinnedGeometry(instance, 0, sourcePositions.clone(),
-                new float[3 * positionCount], w, rowJoints, rowWeights, jointNodes, bindMatrices, identity);
+        SkinnedGeometry shared = new SkinnedGeometry(instance, 0, sourcePositions, new float[3 * positionCount], w,
+                rowJoints, rowWeights, jointNodes, bindMatrices, identity, null, null, windingMirrored);
         return new SkinnedGeometry(instance, vertexCount, positions, normals, w, joints, weights, jointNodes,
-                bindMatrices, pointOfPosition, positionOfPoint, shared);
+                bindMatrices, pointOfPosition, positionOfPoint, shared, windingMirrored);
     }
 
     /**
@@ -256,20 +265,57 @@ public final class SkinnedGeometry {
                 }
             }
         }
+        boolean mirrored = applyBindShape(skin.bindShapeMatrix(), positions, normals);
         int paletteSize = skinJoints + (needsBindShapeJoint ? 1 : 0);
         int[] jointNodes = new int[paletteSize];
         float[] bind = new float[16 * paletteSize];
         Matrix4f m = new Matrix4f();
         for (int j = 0; j < skinJoints; j++) {
             jointNodes[j] = instance.jointNode(j);
-            skin.inverseBindMatrix(j, m).mul(skin.bindShapeMatrix()).get(bind, 16 * j);
+            skin.inverseBindMatrix(j, m).get(bind, 16 * j);
         }
         if (needsBindShapeJoint) {
             jointNodes[skinJoints] = -1;
-            m.set(skin.bindShapeMatrix()).get(bind, 16 * skinJoints);
+            m.identity().get(bind, 16 * skinJoints); // the points already hold the bind shape
         }
         return new SkinnedGeometry(instance, vertices, positions, normals, width, joints, weights, jointNodes, bind,
-                pointOfPosition);
+                pointOfPosition, null, null, mirrored);
+    }
+
+    /**
+     * Moves the points into bind space once: positions by the bind shape matrix, normals by its
+     * inverse-transpose (the cofactor times the sign of its determinant, renormalised). Every
+     * joint's skinning matrix would apply it first anyway ({@code world * INV_BIND * BSM}); doing it
+     * here keeps it out of the joints, so a bind shape that scales or mirrors (the stormtrooper's
+     * mirrors and scales by 1.662) does not make every joint a scaled one for DQS, and a joint's
+     * rest frame is {@code inverse(INV_BIND)}, as in Blender's armature deform
+     * (docs/references.md).
+     */
+    private static boolean applyBindShape(Matrix4fc bsm, float[] positions, float[] normals) {
+        if (new Matrix4f(bsm).equals(new Matrix4f())) {
+            return false;
+        }
+        Matrix3f cofactor = new Matrix3f();
+        bsm.get3x3(cofactor).cofactor();
+        if (bsm.determinant3x3() < 0f) {
+            cofactor.scale(-1f);
+        }
+        Vector3f v = new Vector3f();
+        for (int i = 0; i < positions.length; i += 3) {
+            bsm.transformPosition(v.set(positions[i], positions[i + 1], positions[i + 2]));
+            positions[i] = v.x;
+            positions[i + 1] = v.y;
+            positions[i + 2] = v.z;
+            cofactor.transform(v.set(normals[i], normals[i + 1], normals[i + 2]));
+            float len2 = v.lengthSquared();
+            if (len2 > 0f) {
+                v.mul((float) (1.0 / Math.sqrt(len2)));
+            }
+            normals[i] = v.x;
+            normals[i + 1] = v.y;
+            normals[i + 2] = v.z;
+        }
+        return bsm.determinant3x3() < 0f;
     }
 
     /**
@@ -279,6 +325,15 @@ public final class SkinnedGeometry {
      */
     private static float weightOf(Skin skin, int influence) {
         return Math.max(0f, skin.influenceWeight(influence));
+    }
+
+    /**
+     * Whether the bind shape matrix mirrors (negative determinant): the triangles' winding in bind
+     * space is then reversed against their (outward) normals, so a renderer that culls back faces
+     * by winding must flip its front face for this geometry.
+     */
+    public boolean windingMirrored() {
+        return windingMirrored;
     }
 
     /** The placed mesh this geometry was built from, or null for {@link #fromArrays}. */
@@ -332,12 +387,12 @@ public final class SkinnedGeometry {
     // The arrays below are handed out without copying: they are read by every kernel every
     // frame. Callers must not modify them.
 
-    /** Bind-shape positions, 3 per point. Read-only. */
+    /** Positions in bind space (after the bind shape matrix), 3 per point. Read-only. */
     public float[] positionArray() {
         return positions;
     }
 
-    /** Bind-shape normals, 3 per point (zero where the mesh has none). Read-only. */
+    /** Normals in bind space, 3 per point (zero where the mesh has none). Read-only. */
     public float[] normalArray() {
         return normals;
     }
@@ -357,7 +412,10 @@ public final class SkinnedGeometry {
         return jointNodes;
     }
 
-    /** Per palette joint, 16 floats column-major: INV_BIND_MATRIX * BIND_SHAPE_MATRIX. Read-only. */
+    /**
+     * Per palette joint, 16 floats column-major: INV_BIND_MATRIX (the identity for the bind-shape
+     * pseudo-joint; the bind shape matrix is in the points already). Read-only.
+     */
     public float[] bindMatrixArray() {
         return bindMatrices;
     }

@@ -2,6 +2,7 @@ package org.skinlab.animation;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.skinlab.animation.MathAssertions.assertMatrixEquals;
@@ -135,6 +136,9 @@ class SkeletonTest {
         assertArrayEquals(new int[] {node("Root"), node("Mid"), node("Tip"), -1}, geometry.jointNodeArray());
         float[] m = new float[12 * geometry.jointCount()];
         skeleton.skinningMatrices(pose, geometry.jointNodeArray(), geometry.bindMatrixArray(), m);
+        // The geometry holds its points in bind space (the bind shape matrix applied once), so its
+        // skinning matrices are world * IBM; times the BSM they are COLLADA's world * IBM * BSM.
+        m = timesBindShape(m, geometry.jointCount());
         // BSM = T(0 0 5) Rz(90).
         // Root: IBM T(-1 0 0), so IBM BSM = Rz(90) with translation (-1 0 5). Root's rotation
         // (e0 -> 2e1, e1 -> -2e0, e2 -> 2e2) after Rz(90) (e0 -> e1, e1 -> -e0): diag(-2 -2 2);
@@ -149,7 +153,7 @@ class SkeletonTest {
         // Rx(-90)(0 0 5) + (0 0 2) = (0 5 2). Tip's rotation is Root's: e0 -> -2e2, e1 -> -2e1,
         // e2 -> -2e0; translation Tip(0 5 2) = (-10 0 4) + (1 6 3) = (-9 6 7).
         assertRow12(new float[] {0, 0, -2, -9, 0, -2, 0, 6, -2, 0, 0, 7}, m, 2);
-        // The pseudo-joint: identity world, so its matrix is the bind shape matrix itself.
+        // The pseudo-joint: identity world and bind, so (times the BSM) the bind shape matrix itself.
         assertRow12(new float[] {0, -1, 0, 0, 1, 0, 0, 0, 0, 0, 1, 5}, m, 3);
     }
 
@@ -164,6 +168,7 @@ class SkeletonTest {
         SkinnedGeometry geometry = SkinnedGeometry.of(MODEL.instances().get(0));
         float[] m = new float[12 * geometry.jointCount()];
         skeleton.skinningMatrices(pose, geometry.jointNodeArray(), geometry.bindMatrixArray(), m);
+        m = timesBindShape(m, geometry.jointCount());
         assertRow12(new float[] {-2, 0, 0, 1, 0, -2, 0, 2, 0, 0, 2, 13}, m, 0);
         assertRow12(new float[] {0, 0, -2, -9, 0, -2, 0, 10, -2, 0, 0, 7}, m, 2);
     }
@@ -198,6 +203,32 @@ class SkeletonTest {
         skeleton.evaluate(pose);
         assertArrayEquals(first, pose.worldArray(), 0f);
         assertTrue(pose.skeleton() == skeleton);
+    }
+
+    /** Row-major 3x4 matrices, each multiplied on the right by the model's bind shape matrix. */
+    private static float[] timesBindShape(float[] rows, int joints) {
+        Matrix4f bsm = new Matrix4f(MODEL.instances().get(0).skin().bindShapeMatrix());
+        float[] out = new float[rows.length];
+        Matrix4f m = new Matrix4f();
+        for (int j = 0; j < joints; j++) {
+            AnimationHelper.getRowMajor3x4(rows, 12 * j, m).mul(bsm);
+            AnimationHelper.putRowMajor3x4(m, out, 12 * j);
+        }
+        return out;
+    }
+
+    @Test
+    void theGeometryHoldsItsPointsInBindSpace() {
+        // BSM = T(0 0 5) Rz(90) applied once to every point: position (x y z) -> (-y x z + 5).
+        SkinnedGeometry geometry = SkinnedGeometry.of(MODEL.instances().get(0));
+        float[] mesh = MODEL.instances().get(0).mesh().positions();
+        for (int p = 0; p < geometry.positionCount(); p++) {
+            int q = 3 * geometry.pointOfPosition(p);
+            assertEquals(-mesh[3 * p + 1], geometry.positionArray()[q], EPS, "x of position " + p);
+            assertEquals(mesh[3 * p], geometry.positionArray()[q + 1], EPS, "y of position " + p);
+            assertEquals(mesh[3 * p + 2] + 5, geometry.positionArray()[q + 2], EPS, "z of position " + p);
+        }
+        assertFalse(geometry.windingMirrored(), "a rotation and a translation do not mirror");
     }
 
     private static void assertRow12(float[] expected, float[] actual, int joint) {
