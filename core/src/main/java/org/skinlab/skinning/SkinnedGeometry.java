@@ -33,7 +33,8 @@ import org.skinlab.model.Skin;
  * bind matrix (INV_BIND_MATRIX; the pseudo-joint's is the identity), so that the skinning matrix is
  * {@code world(node) * bind}, applied to the points' positions, which already hold the bind shape
  * matrix (positions moved by it, normals by its inverse-transpose, once, when the geometry is
- * built). A static mesh becomes a geometry with
+ * built). When every bind frame mirrors, that common mirror is moved into the points too (see
+ * {@link #windingMirrored()}), so the skinning matrices stay rigid for DQS. A static mesh becomes a geometry with
  * one joint, its own node, and identity bind: the same code places it.
  *
  * <p><b>Shared positions.</b> A point's deformed position depends only on its POSITION entry, and
@@ -266,17 +267,38 @@ public final class SkinnedGeometry {
             }
         }
         boolean mirrored = applyBindShape(skin.bindShapeMatrix(), positions, normals);
+        // Bind frames that all mirror (every INV_BIND with a negative determinant, e.g. a rig
+        // exported through a mirroring bind shape) make every skinning matrix a reflection, which
+        // DQS can only take through its scale phase. The common mirror F = diag(-1 1 1) moves
+        // into the points instead (p -> F p, n -> F n, INV_BIND -> INV_BIND F; F F = I, so LBS is
+        // unchanged): the skinning matrices become rigid again and DQS blends rigid motions.
+        boolean mirrorBindFrames = skinJoints > 0;
+        Matrix4f m = new Matrix4f();
+        for (int j = 0; j < skinJoints && mirrorBindFrames; j++) {
+            mirrorBindFrames = skin.inverseBindMatrix(j, m).determinant3x3() < 0f;
+        }
+        if (mirrorBindFrames) {
+            for (int i = 0; i < positions.length; i += 3) {
+                positions[i] = -positions[i];
+                normals[i] = -normals[i];
+            }
+            mirrored = !mirrored;
+        }
         int paletteSize = skinJoints + (needsBindShapeJoint ? 1 : 0);
         int[] jointNodes = new int[paletteSize];
         float[] bind = new float[16 * paletteSize];
-        Matrix4f m = new Matrix4f();
         for (int j = 0; j < skinJoints; j++) {
             jointNodes[j] = instance.jointNode(j);
-            skin.inverseBindMatrix(j, m).get(bind, 16 * j);
+            skin.inverseBindMatrix(j, m);
+            if (mirrorBindFrames) {
+                m.scale(-1f, 1f, 1f);
+            }
+            m.get(bind, 16 * j);
         }
         if (needsBindShapeJoint) {
             jointNodes[skinJoints] = -1;
-            m.identity().get(bind, 16 * skinJoints); // the points already hold the bind shape
+            // The points already hold the bind shape (and F, which this joint undoes).
+            m.identity().scale(mirrorBindFrames ? -1f : 1f, 1f, 1f).get(bind, 16 * skinJoints);
         }
         return new SkinnedGeometry(instance, vertices, positions, normals, width, joints, weights, jointNodes, bind,
                 pointOfPosition, null, null, mirrored);
@@ -328,9 +350,11 @@ public final class SkinnedGeometry {
     }
 
     /**
-     * Whether the bind shape matrix mirrors (negative determinant): the triangles' winding in bind
-     * space is then reversed against their (outward) normals, so a renderer that culls back faces
-     * by winding must flip its front face for this geometry.
+     * Whether the points are mirrored against the file's mesh (by a bind shape matrix with a
+     * negative determinant, or by the common mirror of the bind frames moved into them, not by
+     * both): the triangles' winding in bind space is then reversed against their (outward)
+     * normals, so a renderer that culls back faces by winding must flip its front face for this
+     * geometry (when the skinning matrices do not mirror it back).
      */
     public boolean windingMirrored() {
         return windingMirrored;

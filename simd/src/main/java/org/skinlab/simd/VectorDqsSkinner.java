@@ -59,13 +59,11 @@ final class VectorDqsSkinner extends AbstractSkinner {
     static final int BLOCK = 8;
     /** Floats per block in {@link #points}: px py pz nx ny nz, 8 lanes each. */
     private static final int BLOCK_FLOATS = 48;
-    /** Blocks per pass; the scratch holds 96 floats per block (blended dq, pivot real part / results). */
+    /** Blocks per pass; the scratch holds the blended dual quaternions, 64 floats per block. */
     static final int CHUNK = 32;
-    private static final int SCRATCH = 96;
+    private static final int SCRATCH = 64;
 
     private final ScalarDqsSkinner scalar;
-    /** Influences per point in the block layout: the geometry's, at least 2 (padded with weight 0). */
-    private final int width;
     private final int blockCount;
     private final float[] restPositions;
     private final float[] restNormals;
@@ -79,16 +77,20 @@ final class VectorDqsSkinner extends AbstractSkinner {
     private final ThreadLocal<float[]> blended = ThreadLocal.withInitial(() -> new float[16 * MatrixPasses.CHUNK]);
     private final ThreadLocal<float[]> lastPoints = ThreadLocal.withInitial(() -> new float[16]);
     private final float[] points;
-    /** Per block, per influence k: 8 weights and 8 joints at {@code 8 width b + 8 k}. */
-    private final float[] blockWeights;
-    private final char[] blockJoints;
+    /** Per point and influence ({@link #passWidth}), the index of its (pivot, joint) pair. */
+    private final int[] pairOf;
+    /** The distinct (pivot, other joint) pairs of the geometry. */
+    private final char[] pairPivot;
+    private final char[] pairOther;
+    private final ThreadLocal<float[]> signs;
+    /** One pass of points' blended dual quaternions, 8 floats each. */
+    private final ThreadLocal<float[]> rows = ThreadLocal.withInitial(() -> new float[8 * BLOCK * CHUNK]);
     private final int jointCount;
     private final ThreadLocal<float[]> scratch = ThreadLocal.withInitial(() -> new float[CHUNK * SCRATCH]);
 
     VectorDqsSkinner(SkinnedGeometry geometry, NormalTransform normals) {
         super(SkinningMethod.DQS, "vector-256", geometry, normals);
         int given = geometry.influencesPerPoint();
-        this.width = Math.max(2, given);
         this.scalar = new ScalarDqsSkinner(geometry, normals);
         this.jointCount = geometry.jointCount();
         this.restPositions = geometry.positionArray();
@@ -101,8 +103,6 @@ final class VectorDqsSkinner extends AbstractSkinner {
         float[] weights = geometry.weightArray();
         int n = BLOCK * blockCount;
         this.points = new float[BLOCK_FLOATS * blockCount];
-        blockWeights = new float[width * n];
-        blockJoints = new char[width * n];
         for (int i = 0; i < n; i++) {
             int o = BLOCK_FLOATS * (i / BLOCK) + i % BLOCK;
             // Exact normals are unit: normalised here once, a rotation keeps them so (the scalar
@@ -114,22 +114,38 @@ final class VectorDqsSkinner extends AbstractSkinner {
                 this.points[o + BLOCK * c] = pos[3 * i + c];
                 this.points[o + BLOCK * (3 + c)] = nrm[3 * i + c] * scale;
             }
-            for (int k = 0; k < width; k++) {
-                // Padding: weight 0 on the pivot joint adds +-0.
-                int q = width * BLOCK * (i / BLOCK) + BLOCK * k + i % BLOCK;
-                blockWeights[q] = k < given ? weights[given * i + k] : 0f;
-                blockJoints[q] = (char) joints[given * i + (k < given ? k : 0)];
-            }
         }
         passWidth = MatrixPasses.paddedWidth(given);
         passJoints = new char[passWidth * points];
         passWeights = new float[passWidth * points];
+        pairOf = new int[passWidth * points];
+        java.util.Map<Integer, Integer> pairs = new java.util.HashMap<>();
+        java.util.List<int[]> pairList = new java.util.ArrayList<>();
         for (int i = 0; i < points; i++) {
+            int pivot = joints[given * i];
             for (int k = 0; k < passWidth; k++) {
+                // Padding: weight 0 on the pivot joint adds +-0.
+                int j = joints[given * i + (k < given ? k : 0)];
                 passWeights[passWidth * i + k] = k < given ? weights[given * i + k] : 0f;
-                passJoints[passWidth * i + k] = (char) joints[given * i + (k < given ? k : 0)];
+                passJoints[passWidth * i + k] = (char) j;
+                Integer key = pivot * VectorKernels.MAX_JOINTS + j;
+                Integer index = pairs.get(key);
+                if (index == null) {
+                    index = pairList.size();
+                    pairs.put(key, index);
+                    pairList.add(new int[] {pivot, j});
+                }
+                pairOf[passWidth * i + k] = index;
             }
         }
+        pairPivot = new char[pairList.size()];
+        pairOther = new char[pairList.size()];
+        for (int p = 0; p < pairPivot.length; p++) {
+            pairPivot[p] = (char) pairList.get(p)[0];
+            pairOther[p] = (char) pairList.get(p)[1];
+        }
+        int pairCount = pairPivot.length;
+        signs = ThreadLocal.withInitial(() -> new float[pairCount]);
         int size = 16 * jointCount;
         scaleColumns = ThreadLocal.withInitial(() -> new float[size]);
     }
@@ -153,6 +169,7 @@ final class VectorDqsSkinner extends AbstractSkinner {
         }
         scalar.skin(palette, outPositions, outNormals, from, BLOCK * firstBlock);
         float[] dq = palette.dualQuaternions();
+        float[] sg = pairSigns(dq);
         float[] s = scratch.get();
         if (palette.hasScale()) {
             // Two phases per point, as a matrix: the rigid part of the blended dual quaternion
@@ -167,7 +184,7 @@ final class VectorDqsSkinner extends AbstractSkinner {
                 int e = Math.min(endBlock, b + blocksPerPass);
                 int p0 = BLOCK * b;
                 int p1 = BLOCK * e;
-                blendDualQuaternions(dq, s, b, e);
+                blendDualQuaternions(dq, sg, s, b, e);
                 rigidMatrices(s, r, b, e);
                 MatrixPasses.blend(cs, passJoints, passWeights, passWidth, p0, p1, acc);
                 MatrixPasses.compose(r, acc, p1 - p0);
@@ -182,7 +199,7 @@ final class VectorDqsSkinner extends AbstractSkinner {
         } else {
             for (int b = firstBlock; b < endBlock; b += CHUNK) {
                 int e = Math.min(endBlock, b + CHUNK);
-                blendDualQuaternions(dq, s, b, e);
+                blendDualQuaternions(dq, sg, s, b, e);
                 applyAndStore(s, outPositions, outNormals, b, e);
             }
         }
@@ -206,6 +223,7 @@ final class VectorDqsSkinner extends AbstractSkinner {
         }
         scalar.skinFrames(palette, outFrames, from, BLOCK * firstBlock);
         float[] dq = palette.dualQuaternions();
+        float[] sg = pairSigns(dq);
         float[] s = scratch.get();
         float[] r = rigid.get();
         boolean scaled = palette.hasScale();
@@ -216,7 +234,7 @@ final class VectorDqsSkinner extends AbstractSkinner {
             int e = Math.min(endBlock, b + blocksPerPass);
             int p0 = BLOCK * b;
             int p1 = BLOCK * e;
-            blendDualQuaternions(dq, s, b, e);
+            blendDualQuaternions(dq, sg, s, b, e);
             rigidMatrices(s, r, b, e);
             if (scaled) {
                 MatrixPasses.blend(cs, passJoints, passWeights, passWidth, p0, p1, acc);
@@ -243,138 +261,124 @@ final class VectorDqsSkinner extends AbstractSkinner {
         return c;
     }
 
-    /** Every influence of blocks {@code [b, e)} (at most {@link #CHUNK}) into the scratch. */
-    private void blendDualQuaternions(float[] dq, float[] s, int b, int e) {
-        pivotAndFirst(dq, s, b, e);
-        for (int k = 2; k < width; k++) {
-            accumulate(dq, s, b, e, k);
+    /**
+     * The antipodality sign of every distinct (pivot, other) joint pair of the geometry this frame:
+     * {@code copySign(1, q_pivot . q_other + 0)} on the real parts, the scalar kernel's expression
+     * in its order, so both kernels flip the same terms. A point's sign for influence k is then a
+     * table lookup, and its blend one load and one fused multiply-add per influence.
+     */
+    private float[] pairSigns(float[] dq) {
+        float[] sg = signs.get();
+        for (int p = 0; p < pairPivot.length; p++) {
+            int a = pairPivot[p] << 3;
+            int q = pairOther[p] << 3;
+            sg[p] = Math.copySign(1f, dq[a] * dq[q] + dq[a + 1] * dq[q + 1] + dq[a + 2] * dq[q + 2]
+                    + dq[a + 3] * dq[q + 3] + 0f);
+        }
+        return sg;
+    }
+
+    /**
+     * Blocks {@code [b, e)} (at most {@link #CHUNK}): each point's blended dual quaternion, one point
+     * per iteration with the 8 floats of a joint's dual quaternion across the lanes (one load and
+     * one fused multiply-add per influence, the weight times its pair's sign), then transposed
+     * eight points at a time into the scratch's lane vectors (component c of the block's 8 points
+     * at {@code 64 (block - b) + 8 c}) for {@link #applyAndStore} and {@link #rigidMatrices}.
+     */
+    private void blendDualQuaternions(float[] dq, float[] sg, float[] s, int b, int e) {
+        float[] rows = this.rows.get();
+        int p0 = BLOCK * b;
+        int p1 = BLOCK * e;
+        switch (passWidth) {
+            case 4:
+                rows4(dq, sg, p0, p1, rows);
+                break;
+            case 6:
+                rows6(dq, sg, p0, p1, rows);
+                break;
+            default:
+                rows8(dq, sg, p0, p1, rows);
+                for (int k = 8; k < passWidth; k++) {
+                    for (int i = p0; i < p1; i++) {
+                        int q = passWidth * i + k;
+                        int r = 8 * (i - p0);
+                        FloatVector.fromArray(S, dq, passJoints[q] << 3)
+                                .fma(FloatVector.broadcast(S, passWeights[q] * sg[pairOf[q]]), FloatVector.fromArray(S, rows, r))
+                                .intoArray(rows, r);
+                    }
+                }
+                break;
+        }
+        transpose(rows, s, b, e);
+    }
+
+    private void rows4(float[] dq, float[] sg, int p0, int p1, float[] rows) {
+        final char[] jn = passJoints;
+        final float[] wt = passWeights;
+        final int[] pr = pairOf;
+        for (int i = p0; i < p1; i++) {
+            int o = 4 * i;
+            FloatVector x = FloatVector.fromArray(S, dq, jn[o] << 3).mul(FloatVector.broadcast(S, wt[o]));
+            x = FloatVector.fromArray(S, dq, jn[o + 1] << 3).fma(FloatVector.broadcast(S, wt[o + 1] * sg[pr[o + 1]]), x);
+            x = FloatVector.fromArray(S, dq, jn[o + 2] << 3).fma(FloatVector.broadcast(S, wt[o + 2] * sg[pr[o + 2]]), x);
+            x = FloatVector.fromArray(S, dq, jn[o + 3] << 3).fma(FloatVector.broadcast(S, wt[o + 3] * sg[pr[o + 3]]), x);
+            x.intoArray(rows, 8 * (i - p0));
+        }
+    }
+
+    private void rows6(float[] dq, float[] sg, int p0, int p1, float[] rows) {
+        final char[] jn = passJoints;
+        final float[] wt = passWeights;
+        final int[] pr = pairOf;
+        for (int i = p0; i < p1; i++) {
+            int o = 6 * i;
+            FloatVector x = FloatVector.fromArray(S, dq, jn[o] << 3).mul(FloatVector.broadcast(S, wt[o]));
+            x = FloatVector.fromArray(S, dq, jn[o + 1] << 3).fma(FloatVector.broadcast(S, wt[o + 1] * sg[pr[o + 1]]), x);
+            x = FloatVector.fromArray(S, dq, jn[o + 2] << 3).fma(FloatVector.broadcast(S, wt[o + 2] * sg[pr[o + 2]]), x);
+            x = FloatVector.fromArray(S, dq, jn[o + 3] << 3).fma(FloatVector.broadcast(S, wt[o + 3] * sg[pr[o + 3]]), x);
+            x = FloatVector.fromArray(S, dq, jn[o + 4] << 3).fma(FloatVector.broadcast(S, wt[o + 4] * sg[pr[o + 4]]), x);
+            x = FloatVector.fromArray(S, dq, jn[o + 5] << 3).fma(FloatVector.broadcast(S, wt[o + 5] * sg[pr[o + 5]]), x);
+            x.intoArray(rows, 8 * (i - p0));
+        }
+    }
+
+    /** The first 8 influences of {@code passWidth >= 8} per point. */
+    private void rows8(float[] dq, float[] sg, int p0, int p1, float[] rows) {
+        final char[] jn = passJoints;
+        final float[] wt = passWeights;
+        final int[] pr = pairOf;
+        final int w = passWidth;
+        for (int i = p0; i < p1; i++) {
+            int o = w * i;
+            FloatVector x = FloatVector.fromArray(S, dq, jn[o] << 3).mul(FloatVector.broadcast(S, wt[o]));
+            x = FloatVector.fromArray(S, dq, jn[o + 1] << 3).fma(FloatVector.broadcast(S, wt[o + 1] * sg[pr[o + 1]]), x);
+            x = FloatVector.fromArray(S, dq, jn[o + 2] << 3).fma(FloatVector.broadcast(S, wt[o + 2] * sg[pr[o + 2]]), x);
+            x = FloatVector.fromArray(S, dq, jn[o + 3] << 3).fma(FloatVector.broadcast(S, wt[o + 3] * sg[pr[o + 3]]), x);
+            x = FloatVector.fromArray(S, dq, jn[o + 4] << 3).fma(FloatVector.broadcast(S, wt[o + 4] * sg[pr[o + 4]]), x);
+            x = FloatVector.fromArray(S, dq, jn[o + 5] << 3).fma(FloatVector.broadcast(S, wt[o + 5] * sg[pr[o + 5]]), x);
+            x = FloatVector.fromArray(S, dq, jn[o + 6] << 3).fma(FloatVector.broadcast(S, wt[o + 6] * sg[pr[o + 6]]), x);
+            x = FloatVector.fromArray(S, dq, jn[o + 7] << 3).fma(FloatVector.broadcast(S, wt[o + 7] * sg[pr[o + 7]]), x);
+            x.intoArray(rows, 8 * (i - p0));
         }
     }
 
     /**
-     * Influence {@code k >= 2} of each block: {@code b += copySign(w_k, q_0 . q_k + 0) q_k}, in the
-     * scratch. Two transposes per method at most: with three, register pressure made it slower.
-     */
-    /**
-     * Influences 0 (the pivot) and 1 of each block, into the scratch: {@code w_0 q_0 + copySign(w_1,
-     * q_0 . q_1 + 0) q_1} as 8 lane vectors (floats 0..63) and the pivot's real part (64..95).
-     * Per influence the 8 joints' dual quaternions are loaded as rows and transposed: stage 1
+     * Per block of {@code [b, e)}: its 8 points' rows (8 floats each, from {@code 8 (point - 8b)})
+     * into 8 lane vectors of the scratch, component c at {@code 64 (block - b) + 8 c}. Stage 1
      * interleaves pairs of points, stage 2 pairs of pairs, stage 3 the halves, each a permute and a
      * blend per output.
      */
-    private void pivotAndFirst(float[] dq, float[] s, int firstBlock, int endBlock) {
-        final float[] wl0 = blockWeights;
-        final float[] wl1 = blockWeights;
-        final char[] row0 = blockJoints;
-        final char[] row1 = blockJoints;
-        for (int b = firstBlock; b < endBlock; b++) {
-            int so = SCRATCH * (b - firstBlock);
-            int o = width * BLOCK * b;
-            int o1 = o + BLOCK;
-            FloatVector r0_0 = FloatVector.fromArray(S, dq, row0[o] << 3);
-            FloatVector r1_0 = FloatVector.fromArray(S, dq, row0[o + 1] << 3);
-            FloatVector r2_0 = FloatVector.fromArray(S, dq, row0[o + 2] << 3);
-            FloatVector r3_0 = FloatVector.fromArray(S, dq, row0[o + 3] << 3);
-            FloatVector r4_0 = FloatVector.fromArray(S, dq, row0[o + 4] << 3);
-            FloatVector r5_0 = FloatVector.fromArray(S, dq, row0[o + 5] << 3);
-            FloatVector r6_0 = FloatVector.fromArray(S, dq, row0[o + 6] << 3);
-            FloatVector r7_0 = FloatVector.fromArray(S, dq, row0[o + 7] << 3);
-            // a_i: components (0 2 4 6) or (1 3 5 7) of two points, interleaved
-            FloatVector a0_0 = r0_0.blend(r1_0.rearrange(RIGHT1), ODD);
-            FloatVector a1_0 = r0_0.rearrange(LEFT1).blend(r1_0, ODD);
-            FloatVector a2_0 = r2_0.blend(r3_0.rearrange(RIGHT1), ODD);
-            FloatVector a3_0 = r2_0.rearrange(LEFT1).blend(r3_0, ODD);
-            FloatVector a4_0 = r4_0.blend(r5_0.rearrange(RIGHT1), ODD);
-            FloatVector a5_0 = r4_0.rearrange(LEFT1).blend(r5_0, ODD);
-            FloatVector a6_0 = r6_0.blend(r7_0.rearrange(RIGHT1), ODD);
-            FloatVector a7_0 = r6_0.rearrange(LEFT1).blend(r7_0, ODD);
-            // c_i: components (0 4), (1 5), (2 6), (3 7) of four points
-            FloatVector c0_0 = a0_0.blend(a2_0.rearrange(RIGHT2), PAIRS);
-            FloatVector c2_0 = a0_0.rearrange(LEFT2).blend(a2_0, PAIRS);
-            FloatVector c1_0 = a1_0.blend(a3_0.rearrange(RIGHT2), PAIRS);
-            FloatVector c3_0 = a1_0.rearrange(LEFT2).blend(a3_0, PAIRS);
-            FloatVector c4_0 = a4_0.blend(a6_0.rearrange(RIGHT2), PAIRS);
-            FloatVector c6_0 = a4_0.rearrange(LEFT2).blend(a6_0, PAIRS);
-            FloatVector c5_0 = a5_0.blend(a7_0.rearrange(RIGHT2), PAIRS);
-            FloatVector c7_0 = a5_0.rearrange(LEFT2).blend(a7_0, PAIRS);
-            // t_c: component c of all eight points
-            FloatVector t0_0 = c0_0.blend(c4_0.rearrange(SWAP), HI);
-            FloatVector t4_0 = c0_0.rearrange(SWAP).blend(c4_0, HI);
-            FloatVector t1_0 = c1_0.blend(c5_0.rearrange(SWAP), HI);
-            FloatVector t5_0 = c1_0.rearrange(SWAP).blend(c5_0, HI);
-            FloatVector t2_0 = c2_0.blend(c6_0.rearrange(SWAP), HI);
-            FloatVector t6_0 = c2_0.rearrange(SWAP).blend(c6_0, HI);
-            FloatVector t3_0 = c3_0.blend(c7_0.rearrange(SWAP), HI);
-            FloatVector t7_0 = c3_0.rearrange(SWAP).blend(c7_0, HI);
-            FloatVector r0_1 = FloatVector.fromArray(S, dq, row1[o1] << 3);
-            FloatVector r1_1 = FloatVector.fromArray(S, dq, row1[o1 + 1] << 3);
-            FloatVector r2_1 = FloatVector.fromArray(S, dq, row1[o1 + 2] << 3);
-            FloatVector r3_1 = FloatVector.fromArray(S, dq, row1[o1 + 3] << 3);
-            FloatVector r4_1 = FloatVector.fromArray(S, dq, row1[o1 + 4] << 3);
-            FloatVector r5_1 = FloatVector.fromArray(S, dq, row1[o1 + 5] << 3);
-            FloatVector r6_1 = FloatVector.fromArray(S, dq, row1[o1 + 6] << 3);
-            FloatVector r7_1 = FloatVector.fromArray(S, dq, row1[o1 + 7] << 3);
-            // a_i: components (0 2 4 6) or (1 3 5 7) of two points, interleaved
-            FloatVector a0_1 = r0_1.blend(r1_1.rearrange(RIGHT1), ODD);
-            FloatVector a1_1 = r0_1.rearrange(LEFT1).blend(r1_1, ODD);
-            FloatVector a2_1 = r2_1.blend(r3_1.rearrange(RIGHT1), ODD);
-            FloatVector a3_1 = r2_1.rearrange(LEFT1).blend(r3_1, ODD);
-            FloatVector a4_1 = r4_1.blend(r5_1.rearrange(RIGHT1), ODD);
-            FloatVector a5_1 = r4_1.rearrange(LEFT1).blend(r5_1, ODD);
-            FloatVector a6_1 = r6_1.blend(r7_1.rearrange(RIGHT1), ODD);
-            FloatVector a7_1 = r6_1.rearrange(LEFT1).blend(r7_1, ODD);
-            // c_i: components (0 4), (1 5), (2 6), (3 7) of four points
-            FloatVector c0_1 = a0_1.blend(a2_1.rearrange(RIGHT2), PAIRS);
-            FloatVector c2_1 = a0_1.rearrange(LEFT2).blend(a2_1, PAIRS);
-            FloatVector c1_1 = a1_1.blend(a3_1.rearrange(RIGHT2), PAIRS);
-            FloatVector c3_1 = a1_1.rearrange(LEFT2).blend(a3_1, PAIRS);
-            FloatVector c4_1 = a4_1.blend(a6_1.rearrange(RIGHT2), PAIRS);
-            FloatVector c6_1 = a4_1.rearrange(LEFT2).blend(a6_1, PAIRS);
-            FloatVector c5_1 = a5_1.blend(a7_1.rearrange(RIGHT2), PAIRS);
-            FloatVector c7_1 = a5_1.rearrange(LEFT2).blend(a7_1, PAIRS);
-            // t_c: component c of all eight points
-            FloatVector t0_1 = c0_1.blend(c4_1.rearrange(SWAP), HI);
-            FloatVector t4_1 = c0_1.rearrange(SWAP).blend(c4_1, HI);
-            FloatVector t1_1 = c1_1.blend(c5_1.rearrange(SWAP), HI);
-            FloatVector t5_1 = c1_1.rearrange(SWAP).blend(c5_1, HI);
-            FloatVector t2_1 = c2_1.blend(c6_1.rearrange(SWAP), HI);
-            FloatVector t6_1 = c2_1.rearrange(SWAP).blend(c6_1, HI);
-            FloatVector t3_1 = c3_1.blend(c7_1.rearrange(SWAP), HI);
-            FloatVector t7_1 = c3_1.rearrange(SWAP).blend(c7_1, HI);
-            t0_0.intoArray(s, so + 64);
-            t1_0.intoArray(s, so + 72);
-            t2_0.intoArray(s, so + 80);
-            t3_0.intoArray(s, so + 88);
-            FloatVector w0 = FloatVector.fromArray(S, wl0, o);
-            FloatVector w1 = FloatVector.fromArray(S, wl1, o1).abs();
-            FloatVector dot = t0_0.mul(t0_1).add(t1_0.mul(t1_1)).add(t2_0.mul(t2_1)).add(t3_0.mul(t3_1));
-            w1 = w1.blend(w1.neg(), dot.compare(VectorOperators.LT, 0f));
-            t0_1.fma(w1, t0_0.mul(w0)).intoArray(s, so);
-            t1_1.fma(w1, t1_0.mul(w0)).intoArray(s, so + 8);
-            t2_1.fma(w1, t2_0.mul(w0)).intoArray(s, so + 16);
-            t3_1.fma(w1, t3_0.mul(w0)).intoArray(s, so + 24);
-            t4_1.fma(w1, t4_0.mul(w0)).intoArray(s, so + 32);
-            t5_1.fma(w1, t5_0.mul(w0)).intoArray(s, so + 40);
-            t6_1.fma(w1, t6_0.mul(w0)).intoArray(s, so + 48);
-            t7_1.fma(w1, t7_0.mul(w0)).intoArray(s, so + 56);
-        }
-    }
-
-    private void accumulate(float[] dq, float[] s, int firstBlock, int endBlock, int k) {
-        final float[] wk = blockWeights;
-        final char[] row = blockJoints;
-        for (int b = firstBlock; b < endBlock; b++) {
-            int so = SCRATCH * (b - firstBlock);
-            int o = width * BLOCK * b + BLOCK * k;
-            FloatVector r0 = FloatVector.fromArray(S, dq, row[o] << 3);
-            FloatVector r1 = FloatVector.fromArray(S, dq, row[o + 1] << 3);
-            FloatVector r2 = FloatVector.fromArray(S, dq, row[o + 2] << 3);
-            FloatVector r3 = FloatVector.fromArray(S, dq, row[o + 3] << 3);
-            FloatVector r4 = FloatVector.fromArray(S, dq, row[o + 4] << 3);
-            FloatVector r5 = FloatVector.fromArray(S, dq, row[o + 5] << 3);
-            FloatVector r6 = FloatVector.fromArray(S, dq, row[o + 6] << 3);
-            FloatVector r7 = FloatVector.fromArray(S, dq, row[o + 7] << 3);
-            // a_i: components (0 2 4 6) or (1 3 5 7) of two points, interleaved
+    private static void transpose(float[] rows, float[] s, int b, int e) {
+        for (int blk = 0; blk < e - b; blk++) {
+            int ro = 64 * blk;
+            FloatVector r0 = FloatVector.fromArray(S, rows, ro);
+            FloatVector r1 = FloatVector.fromArray(S, rows, ro + 8);
+            FloatVector r2 = FloatVector.fromArray(S, rows, ro + 16);
+            FloatVector r3 = FloatVector.fromArray(S, rows, ro + 24);
+            FloatVector r4 = FloatVector.fromArray(S, rows, ro + 32);
+            FloatVector r5 = FloatVector.fromArray(S, rows, ro + 40);
+            FloatVector r6 = FloatVector.fromArray(S, rows, ro + 48);
+            FloatVector r7 = FloatVector.fromArray(S, rows, ro + 56);
             FloatVector a0 = r0.blend(r1.rearrange(RIGHT1), ODD);
             FloatVector a1 = r0.rearrange(LEFT1).blend(r1, ODD);
             FloatVector a2 = r2.blend(r3.rearrange(RIGHT1), ODD);
@@ -383,7 +387,6 @@ final class VectorDqsSkinner extends AbstractSkinner {
             FloatVector a5 = r4.rearrange(LEFT1).blend(r5, ODD);
             FloatVector a6 = r6.blend(r7.rearrange(RIGHT1), ODD);
             FloatVector a7 = r6.rearrange(LEFT1).blend(r7, ODD);
-            // c_i: components (0 4), (1 5), (2 6), (3 7) of four points
             FloatVector c0 = a0.blend(a2.rearrange(RIGHT2), PAIRS);
             FloatVector c2 = a0.rearrange(LEFT2).blend(a2, PAIRS);
             FloatVector c1 = a1.blend(a3.rearrange(RIGHT2), PAIRS);
@@ -392,34 +395,15 @@ final class VectorDqsSkinner extends AbstractSkinner {
             FloatVector c6 = a4.rearrange(LEFT2).blend(a6, PAIRS);
             FloatVector c5 = a5.blend(a7.rearrange(RIGHT2), PAIRS);
             FloatVector c7 = a5.rearrange(LEFT2).blend(a7, PAIRS);
-            // t_c: component c of all eight points
-            FloatVector t0 = c0.blend(c4.rearrange(SWAP), HI);
-            FloatVector t4 = c0.rearrange(SWAP).blend(c4, HI);
-            FloatVector t1 = c1.blend(c5.rearrange(SWAP), HI);
-            FloatVector t5 = c1.rearrange(SWAP).blend(c5, HI);
-            FloatVector t2 = c2.blend(c6.rearrange(SWAP), HI);
-            FloatVector t6 = c2.rearrange(SWAP).blend(c6, HI);
-            FloatVector t3 = c3.blend(c7.rearrange(SWAP), HI);
-            FloatVector t7 = c3.rearrange(SWAP).blend(c7, HI);
-            FloatVector w = FloatVector.fromArray(S, wk, o);
-            FloatVector dot = FloatVector.fromArray(S, s, so + 64).mul(t0)
-                    .add(FloatVector.fromArray(S, s, so + 72).mul(t1))
-                    .add(FloatVector.fromArray(S, s, so + 80).mul(t2))
-                    .add(FloatVector.fromArray(S, s, so + 88).mul(t3));
-            // copySign(w, dot + 0), the scalar kernel's rule (-0 counts as +0), as a compare and a
-            // blend: C2 does not intrinsify the float/int reinterpretation a bitwise copySign needs.
-            // Written out here: Vector API methods are force-inlined, a helper of ours would not be
-            // once the method passes C2's node budget, and would then box every vector.
-            w = w.abs();
-            w = w.blend(w.neg(), dot.compare(VectorOperators.LT, 0f));
-            t0.fma(w, FloatVector.fromArray(S, s, so)).intoArray(s, so);
-            t1.fma(w, FloatVector.fromArray(S, s, so + 8)).intoArray(s, so + 8);
-            t2.fma(w, FloatVector.fromArray(S, s, so + 16)).intoArray(s, so + 16);
-            t3.fma(w, FloatVector.fromArray(S, s, so + 24)).intoArray(s, so + 24);
-            t4.fma(w, FloatVector.fromArray(S, s, so + 32)).intoArray(s, so + 32);
-            t5.fma(w, FloatVector.fromArray(S, s, so + 40)).intoArray(s, so + 40);
-            t6.fma(w, FloatVector.fromArray(S, s, so + 48)).intoArray(s, so + 48);
-            t7.fma(w, FloatVector.fromArray(S, s, so + 56)).intoArray(s, so + 56);
+            int so = SCRATCH * blk;
+            c0.blend(c4.rearrange(SWAP), HI).intoArray(s, so);
+            c0.rearrange(SWAP).blend(c4, HI).intoArray(s, so + 32);
+            c1.blend(c5.rearrange(SWAP), HI).intoArray(s, so + 8);
+            c1.rearrange(SWAP).blend(c5, HI).intoArray(s, so + 40);
+            c2.blend(c6.rearrange(SWAP), HI).intoArray(s, so + 16);
+            c2.rearrange(SWAP).blend(c6, HI).intoArray(s, so + 48);
+            c3.blend(c7.rearrange(SWAP), HI).intoArray(s, so + 24);
+            c3.rearrange(SWAP).blend(c7, HI).intoArray(s, so + 56);
         }
     }
 
@@ -490,7 +474,7 @@ final class VectorDqsSkinner extends AbstractSkinner {
      * scratch, normalised, as a rigid matrix {@code [R | t]} in {@link MatrixPasses}' layout (16
      * floats per point from 0 in {@code out}): R from the rotation quaternion, t = 2 (w d - d_w r +
      * r x d). The eight lane vectors of each half of the record are transposed into eight points'
-     * rows by the network {@link #pivotAndFirst} uses (a transpose is its own inverse).
+     * rows by the network {@link #transpose} uses (a transpose is its own inverse).
      */
     private void rigidMatrices(float[] s, float[] out, int firstBlock, int endBlock) {
         final FloatVector one = FloatVector.broadcast(S, 1f);
