@@ -23,7 +23,7 @@ const ms = (x) => (x == null ? 'failed' : x >= 100 ? x.toFixed(0) : x >= 10 ? x.
 const r2 = (x) => (x == null ? '' : x.toFixed(2));
 
 const first = sessions[0];
-console.log(`skinlab (Java ${first.ours.java}${first.ours.javaVendor ? ` ${first.ours.javaVendor}` : ''}, ${first.ours.cores} cores) | assimp ${first.ours.assimpVersion} `
+console.log(`skinlab (Java ${first.ours.java}, ${first.ours.cores} cores) | assimp ${first.ours.assimpVersion} `
     + `(${first.ours.assimpFlags}) | three.js ${first.three.three} ColladaLoader (Node ${first.three.node}); `
     + `${k} session(s)\n`);
 console.log('Times: medians in ms (for several sessions, the median of the session medians). x/ours: the '

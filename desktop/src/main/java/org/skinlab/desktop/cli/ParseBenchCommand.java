@@ -331,7 +331,6 @@ public final class ParseBenchCommand implements Callable<Integer> {
         ObjectNode root = mapper.createObjectNode();
         root.put("benchmark", "parse");
         root.put("java", JavaRuntime.version());
-        root.put("javaVendor", JavaRuntime.vendor());
         root.put("cores", Runtime.getRuntime().availableProcessors());
         if (assimpVersion != null) {
             root.put("assimpVersion", assimpVersion);
