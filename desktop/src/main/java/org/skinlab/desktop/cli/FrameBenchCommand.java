@@ -94,8 +94,8 @@ public final class FrameBenchCommand implements Callable<Integer> {
         List<Input> inputs = inputs();
         List<SkinningMethod> methods = parseMethods(inputs.size());
         boolean single = inputs.size() == 1 && methods.size() == 1;
-        double warmup = seconds("--warmup-seconds", warmupSeconds, single ? FIRST_WARMUP : 0.5);
-        double timed = seconds("--seconds", seconds, single ? 3.0 : 1.0);
+        double warmup = secondsOption("--warmup-seconds", warmupSeconds, single ? FIRST_WARMUP : 0.5);
+        double timed = secondsOption("--seconds", seconds, single ? 3.0 : 1.0);
         // The JIT compiles a method's kernels during its first file's warm-up (the Vector API is
         // slow until it has: milliseconds per frame); later files only need their own shapes.
         Set<SkinningMethod> warmed = EnumSet.noneOf(SkinningMethod.class);
@@ -104,10 +104,8 @@ public final class FrameBenchCommand implements Callable<Integer> {
         FrameBenchTable table = null;
         if (!json && !single) {
             table = new FrameBenchTable(methods, inputs.stream().mapToInt(i -> i.name().length()).max().orElse(0));
-            out.printf(Locale.ROOT, "bench frame: %s; normals %s; per file and method %s s of warm-up%s, then %s s"
-                    + " of frames (sample, skinning matrices, skin; one thread); µs per frame, median / min%n%n",
-                    JavaRuntime.describe(), normals.toLowerCase(Locale.ROOT), seconds(warmup), warmupSeconds == null
-                            ? " (" + seconds(FIRST_WARMUP) + " s for a method's first file)" : "", seconds(timed));
+            out.println(caption(warmup, timed));
+            out.println();
             out.print(table.header());
             out.flush();
         }
@@ -209,7 +207,7 @@ public final class FrameBenchCommand implements Callable<Integer> {
         }
     }
 
-    private double seconds(String option, Double given, double byDefault) {
+    private double secondsOption(String option, Double given, double byDefault) {
         double s = given != null ? given : byDefault;
         if (!(s >= 0 && s <= 3600)) {
             throw usage(option + " must be between 0 and 3600 seconds");
@@ -217,8 +215,17 @@ public final class FrameBenchCommand implements Callable<Integer> {
         return s;
     }
 
-    private static String seconds(double s) {
+    private static String formatSeconds(double s) {
         return s == Math.rint(s) ? String.valueOf((long) s) : String.valueOf(s);
+    }
+
+    /** The line above the table: the Java, the normal rule and the timings. */
+    private String caption(double warmup, double timed) {
+        String first = warmupSeconds == null ? " (" + formatSeconds(FIRST_WARMUP) + " s for a method's first file)" : "";
+        return String.format(Locale.ROOT, "bench frame: %s; normals %s; per file and method %s s of warm-up%s, then"
+                + " %s s of frames (sample, skinning matrices, skin; one thread); µs per frame, median / min",
+                JavaRuntime.describe(), normals.toLowerCase(Locale.ROOT), formatSeconds(warmup), first,
+                formatSeconds(timed));
     }
 
     /** One file and method: the shape, kernel and Java, then the times. */
