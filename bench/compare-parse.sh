@@ -11,7 +11,9 @@
 #   --warmup-seconds S  shared warm-up per tool (default 3)
 #   --out DIR           keep the raw JSON of both benchmarks there
 # Needs JDK 17, Gradle (builds desktop/build/install when missing), Node >= 18 and npm (installs
-# bench/threejs/node_modules from package-lock.json when missing).
+# bench/threejs/node_modules from package-lock.json when missing). Ours runs on the start script's
+# Java: the newest JDK >= 17 installed, or SKINLAB_JAVA_HOME=DIR (=build: the default java); the
+# table names it (README, "Which Java runs skinlab").
 set -eu
 
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -27,7 +29,7 @@ while [ $# -gt 0 ]; do
         --runs) runs=$2; shift 2 ;;
         --warmup-seconds) warmup=$2; shift 2 ;;
         --out) out=$2; shift 2 ;;
-        -h|--help) sed -n '2,14p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+        -h|--help) sed -n '2,16p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
         *) echo "compare-parse: unknown argument $1" >&2; exit 2 ;;
     esac
 done

@@ -13,7 +13,9 @@
 # and median over all samples). Ours: `skinlab bench skinning --json` for the scalar and vector
 # kernels, 1 and 2 threads, 2 s warm-up each, then the thesis-style baseline at one size. The table
 # gives both ratios, min / C++ min and median / C++ median: on a shared machine the minimum is the
-# less disturbed figure. Needs g++ (builds /tmp/skin_ref once), python3, JDK 17 and Gradle.
+# less disturbed figure. Needs g++ (builds /tmp/skin_ref once), python3, JDK 17 and Gradle. Ours runs
+# on the start script's Java: the newest JDK >= 17 installed, or SKINLAB_JAVA_HOME=DIR (=build: the
+# default java); the table names it (README, "Which Java runs skinlab").
 set -eu
 
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -27,7 +29,7 @@ while [ $# -gt 0 ]; do
         --seconds) seconds=$2; shift 2 ;;
         --baseline-size) baseline=$2; shift 2 ;;
         --out) out=$2; shift 2 ;;
-        -h|--help) sed -n '2,16p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+        -h|--help) sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
         *) echo "compare-skinning: unknown argument $1" >&2; exit 2 ;;
     esac
 done
@@ -76,6 +78,8 @@ for line in open(sys.argv[1]):
         j = json.loads(rest)
         thesis[(j['method'], j['vertices'])] = j
 sizes = sorted({k[1] for k in cpp})
+javas = sorted({f"Java {j['java']} ({j['javaVendor']})" for j in list(ours.values()) + list(thesis.values())})
+print(f"ours on {', '.join(javas)}\n")
 print('| method | implementation | threads | V | min ns/v | median ns/v | min / C++ min | median / C++ median | checksum |')
 print('|---|---|---:|---:|---:|---:|---:|---:|---|')
 for method in ('lbs', 'dqs'):

@@ -1,20 +1,23 @@
 package org.skinlab.desktop.cli;
 
 import java.io.PrintWriter;
+import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.Arrays;
+import java.util.ArrayList;
+import java.util.EnumSet;
+import java.util.HashSet;
+import java.util.List;
 import java.util.Locale;
+import java.util.Set;
 import java.util.concurrent.Callable;
 
+import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
-import org.skinlab.animation.RotationInterpolation;
-import org.skinlab.animation.WrapMode;
+import org.skinlab.model.MeshInstance;
 import org.skinlab.model.Model;
 import org.skinlab.skinning.NormalTransform;
-import org.skinlab.skinning.SkinnedGeometry;
-import org.skinlab.skinning.SkinnedModel;
 import org.skinlab.skinning.SkinningMethod;
 
 import picocli.CommandLine.Command;
@@ -24,128 +27,246 @@ import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
 
 /**
- * {@code skinlab bench frame}: one animation frame of a character, end to end on the CPU: sample
- * the clip (slerp), evaluate the skeleton, compute every geometry's skinning matrices (and, for
- * DQS, its dual quaternions), and skin every placed mesh, positions and normals. Each timed frame
- * advances the clip by 1/60 s (looping), so the sampler's key search moves as it does when playing.
- * Warm-up, then timed frames for a given time; minimum and median in microseconds per frame.
+ * {@code skinlab bench frame}: the time of one animation frame of characters ({@link FrameBench}:
+ * sample, skinning matrices, skin), minimum and median in microseconds per frame.
+ *
+ * <p>One file and one method (the default: the default character, LBS) print two lines. Several
+ * files, or {@code --method both}, print a markdown table with a row per file and a column per
+ * method, each row as soon as its file is measured; several files default to both methods and to
+ * shorter timings (0.5 s of warm-up and 1 s of frames per file and method instead of 2 s and 3 s;
+ * a method's first file still warms up for 2 s, while the JIT compiles its kernels), so that
+ * {@code --all-corpus} stays under a minute. {@code --json} prints one line per file
+ * and method. A file that cannot be imported is one line on stderr; the others are measured, and
+ * the status is then 3.
  */
 @Command(name = "frame", mixinStandardHelpOptions = true,
-        description = "Time of one frame (sample, skinning matrices, skin) of a character, in microseconds.")
+        description = {"Time of one frame (sample, skinning matrices, skin) of characters, in microseconds.",
+            "One file and method: two lines; several files or --method both: a markdown table, one row per file."})
 public final class FrameBenchCommand implements Callable<Integer> {
-    @Parameters(index = "0", arity = "0..1", paramLabel = "FILE",
-            description = "the .dae file (default: ${DEFAULT-VALUE})")
-    Path file = Path.of("assets/characters/humanoid-walk.dae");
+    static final Path DEFAULT_FILE = Path.of("assets/characters/humanoid-walk.dae");
+    private static final double FIRST_WARMUP = 2.0;
 
-    @Option(names = "--method", paramLabel = "lbs|dqs", description = "skinning method (default: ${DEFAULT-VALUE})")
-    String method = "lbs";
+    @Parameters(arity = "0..*", paramLabel = "FILE",
+            description = ".dae files or folders (default without --all-corpus: assets/characters/humanoid-walk.dae)")
+    List<Path> files = new ArrayList<>();
+
+    @Option(names = "--all-corpus",
+            description = "also our assets/characters/*.dae and every .dae of the shared corpus that has a skin")
+    boolean allCorpus;
+
+    @Option(names = "--corpus", paramLabel = "DIR", description = "the shared corpus of --all-corpus (default: "
+            + BenchCorpus.SHARED_CORPUS + " beside the repository root, else beside the current directory)")
+    Path corpus;
+
+    @Option(names = "--method", paramLabel = "lbs|dqs|both",
+            description = "skinning method (default: lbs for one file, both for several)")
+    String method;
 
     @Option(names = "--normals", paramLabel = "exact|blended",
             description = "normal rule: renormalised inverse-transpose or the blended matrix (default: ${DEFAULT-VALUE})")
     String normals = "exact";
 
-    @Option(names = "--warmup-seconds", paramLabel = "S", description = "warm-up before timing (default: ${DEFAULT-VALUE})")
-    double warmupSeconds = 2.0;
+    @Option(names = "--warmup-seconds", paramLabel = "S",
+            description = "warm-up per file and method (default: 2 for one file and method, else 0.5, and 2 for"
+                    + " each method's first file)")
+    Double warmupSeconds;
 
-    @Option(names = "--seconds", paramLabel = "S", description = "timed frames for this long, at least 5 (default: ${DEFAULT-VALUE})")
-    double seconds = 3.0;
+    @Option(names = "--seconds", paramLabel = "S",
+            description = "timed frames per file and method, at least 5 (default: 3 for one file and method, else 1)")
+    Double seconds;
 
-    @Option(names = "--json", description = "print the result as one line of JSON")
+    @Option(names = "--json", description = "print one line of JSON per file and method")
     boolean json;
 
     @Spec
     CommandSpec spec;
 
-    @Override
-    public Integer call() throws Exception {
-        SkinningMethod m;
-        try {
-            m = SkinningMethod.fromKey(method);
-        } catch (IllegalArgumentException e) {
-            throw new CommandFailure(ExitCodes.USAGE, "bench frame: " + e.getMessage(), e);
+    /** A file to measure; one of the shared corpus is measured only if it has a skin. */
+    private record Input(Path path, boolean needsSkin) {
+        String name() {
+            return path.getFileName().toString();
         }
-        NormalTransform rule;
+    }
+
+    @Override
+    public Integer call() {
+        NormalTransform rule = parseNormals();
+        List<Input> inputs = inputs();
+        List<SkinningMethod> methods = parseMethods(inputs.size());
+        boolean single = inputs.size() == 1 && methods.size() == 1;
+        double warmup = secondsOption("--warmup-seconds", warmupSeconds, single ? FIRST_WARMUP : 0.5);
+        double timed = secondsOption("--seconds", seconds, single ? 3.0 : 1.0);
+        // The JIT compiles a method's kernels during its first file's warm-up (the Vector API is
+        // slow until it has: milliseconds per frame); later files only need their own shapes.
+        Set<SkinningMethod> warmed = EnumSet.noneOf(SkinningMethod.class);
+        PrintWriter out = spec.commandLine().getOut();
+        PrintWriter err = spec.commandLine().getErr();
+        FrameBenchTable table = null;
+        if (!json && !single) {
+            table = new FrameBenchTable(methods, inputs.stream().mapToInt(i -> i.name().length()).max().orElse(0));
+            out.println(caption(warmup, timed));
+            out.println();
+            out.print(table.header());
+            out.flush();
+        }
+        int status = ExitCodes.OK;
+        for (Input input : inputs) {
+            Model model;
+            try {
+                model = ModelFiles.load(input.path()).model;
+            } catch (CommandFailure e) {
+                err.println("skinlab: " + SkinlabCommand.oneLine(e.getMessage()));
+                err.flush();
+                status = Math.max(status, ExitCodes.INVALID_FILE);
+                continue;
+            }
+            if (input.needsSkin() && model.instances().stream().noneMatch(MeshInstance::isSkinned)) {
+                continue;
+            }
+            FrameBench bench = new FrameBench(model, rule);
+            List<FrameBench.Timing> timings = new ArrayList<>();
+            for (SkinningMethod m : methods) {
+                double w = warmupSeconds == null && warmed.add(m) ? Math.max(warmup, FIRST_WARMUP) : warmup;
+                FrameBench.Timing timing = bench.measure(m, w, timed);
+                timings.add(timing);
+                if (json) {
+                    out.println(toJson(input.name(), bench.shape(), timing));
+                }
+            }
+            if (table != null) {
+                out.print(table.row(input.name(), bench.shape(), timings));
+            } else if (!json) {
+                printTwoLines(out, input.name(), bench.shape(), timings.get(0));
+            }
+            out.flush();
+        }
+        return status;
+    }
+
+    /**
+     * The files in order: the FILE arguments (folders searched for .dae), or the default
+     * character; with --all-corpus then our characters and the shared corpus. All are checked
+     * to exist before anything is measured; a file named twice is measured once.
+     */
+    private List<Input> inputs() {
+        List<Input> inputs = new ArrayList<>();
+        List<Path> given = files.isEmpty() && !allCorpus ? List.of(DEFAULT_FILE) : files;
+        for (ColladaFileSearch.Entry e : ColladaFileSearch.expand(given)) {
+            inputs.add(new Input(e.path(), false));
+        }
+        if (allCorpus) {
+            Path here = Path.of("");
+            Path root = BenchCorpus.repositoryRoot(here);
+            if (root == null) {
+                throw usage("--all-corpus: run it inside the skinlab repository (no folder at or above "
+                        + here.toAbsolutePath() + " holds settings.gradle and " + BenchCorpus.CHARACTERS + ")");
+            }
+            Path shared = corpus != null ? corpus : BenchCorpus.sharedCorpus(root, here);
+            if (shared == null) {
+                throw usage("--all-corpus: no shared corpus at " + root.resolve(BenchCorpus.SHARED_CORPUS).normalize()
+                        + " (beside the repository) or " + here.toAbsolutePath().resolve(BenchCorpus.SHARED_CORPUS)
+                                .normalize() + "; give its folder with --corpus DIR");
+            }
+            if (!Files.isDirectory(shared)) {
+                throw usage("--corpus: not a folder: " + shared);
+            }
+            for (ColladaFileSearch.Entry e : BenchCorpus.characters(root)) {
+                inputs.add(new Input(e.path(), false));
+            }
+            for (ColladaFileSearch.Entry e : BenchCorpus.corpusFiles(shared)) {
+                inputs.add(new Input(e.path(), true));
+            }
+        }
+        Set<Path> seen = new HashSet<>();
+        inputs.removeIf(i -> !seen.add(i.path().toAbsolutePath().normalize()));
+        return inputs;
+    }
+
+    private List<SkinningMethod> parseMethods(int files) {
+        if (method == null) {
+            return files == 1 ? List.of(SkinningMethod.LBS) : List.of(SkinningMethod.LBS, SkinningMethod.DQS);
+        }
+        if (method.equalsIgnoreCase("both")) {
+            return List.of(SkinningMethod.LBS, SkinningMethod.DQS);
+        }
+        try {
+            return List.of(SkinningMethod.fromKey(method));
+        } catch (IllegalArgumentException e) {
+            throw usage("unknown skinning method \"" + method + "\" (expected lbs, dqs or both)");
+        }
+    }
+
+    private NormalTransform parseNormals() {
         switch (normals.toLowerCase(Locale.ROOT)) {
             case "exact":
-                rule = NormalTransform.INVERSE_TRANSPOSE;
-                break;
+                return NormalTransform.INVERSE_TRANSPOSE;
             case "blended":
-                rule = NormalTransform.BLENDED_MATRIX;
-                break;
+                return NormalTransform.BLENDED_MATRIX;
             default:
-                throw new CommandFailure(ExitCodes.USAGE, "bench frame: unknown normal rule \"" + normals
-                        + "\" (expected exact or blended)", null);
+                throw usage("unknown normal rule \"" + normals + "\" (expected exact or blended)");
         }
-        Model model = ModelFiles.load(file).model;
-        SkinnedModel skinned = new SkinnedModel(model, model.clips().isEmpty() ? null : model.clips().get(0), rule);
-        int geometries = skinned.geometries().size();
-        float[][] positions = new float[geometries][];
-        float[][] normalsOut = new float[geometries][];
-        int points = 0;
-        int joints = 0;
-        for (int g = 0; g < geometries; g++) {
-            SkinnedGeometry geometry = skinned.geometries().get(g);
-            positions[g] = new float[3 * geometry.pointCount()];
-            normalsOut[g] = new float[3 * geometry.pointCount()];
-            points += geometry.pointCount();
-            joints += geometry.jointCount();
+    }
+
+    private double secondsOption(String option, Double given, double byDefault) {
+        double s = given != null ? given : byDefault;
+        if (!(s >= 0 && s <= 3600)) {
+            throw usage(option + " must be between 0 and 3600 seconds");
         }
-        String implementation = geometries == 0 ? "none" : skinned.skinner(0, m).implementation();
-        long[] frame = {0};
-        Runnable step = () -> {
-            float t = skinned.sampler().clipTime(frame[0]++ / 60.0, WrapMode.LOOP);
-            skinned.pose(t, RotationInterpolation.SLERP);
-            for (int g = 0; g < geometries; g++) {
-                skinned.skin(g, m, positions[g], normalsOut[g]);
-            }
-        };
-        long warmupEnd = System.nanoTime() + (long) (warmupSeconds * 1e9);
-        do {
-            step.run();
-        } while (System.nanoTime() < warmupEnd);
-        double[] micros = new double[1024];
-        int n = 0;
-        long end = System.nanoTime() + (long) (seconds * 1e9);
-        while (n < 5 || System.nanoTime() < end) {
-            long t0 = System.nanoTime();
-            step.run();
-            long t1 = System.nanoTime();
-            if (n == micros.length) {
-                micros = Arrays.copyOf(micros, 2 * n);
-            }
-            micros[n++] = (t1 - t0) / 1e3;
+        return s;
+    }
+
+    private static String formatSeconds(double s) {
+        return s == Math.rint(s) ? String.valueOf((long) s) : String.valueOf(s);
+    }
+
+    /** The line above the table: the Java, the normal rule and the timings. */
+    private String caption(double warmup, double timed) {
+        String first = warmupSeconds == null ? " (" + formatSeconds(FIRST_WARMUP) + " s for a method's first file)" : "";
+        return String.format(Locale.ROOT, "bench frame: %s; normals %s; per file and method %s s of warm-up%s, then"
+                + " %s s of frames (sample, skinning matrices, skin; one thread); µs per frame, median / min",
+                JavaRuntime.describe(), normals.toLowerCase(Locale.ROOT), formatSeconds(warmup), first,
+                formatSeconds(timed));
+    }
+
+    /** One file and method: the shape, kernel and Java, then the times. */
+    private void printTwoLines(PrintWriter out, String name, FrameBench.Shape shape, FrameBench.Timing t) {
+        out.printf(Locale.ROOT, "frame of %s: %d positions skinned, %d render vertices, %d joints, at most %d"
+                + " influences per position, %s, normals %s, %s, %s%n", name, shape.positionsSkinned(),
+                shape.renderVertices(), shape.joints(), shape.influences(), t.method().key(),
+                normals.toLowerCase(Locale.ROOT), t.kernel(), JavaRuntime.describe());
+        out.printf(Locale.ROOT, "min %.2f µs, median %.2f µs per frame (%d frames: sample, skinning matrices, skin)%n",
+                t.minMicros(), t.medianMicros(), t.frames());
+    }
+
+    private String toJson(String name, FrameBench.Shape shape, FrameBench.Timing t) {
+        ObjectMapper mapper = new ObjectMapper();
+        ObjectNode root = mapper.createObjectNode();
+        root.put("benchmark", "frame");
+        root.put("file", name);
+        root.put("method", t.method().key());
+        root.put("normals", normals.toLowerCase(Locale.ROOT));
+        root.put("positionsSkinned", shape.positionsSkinned());
+        root.put("renderVertices", shape.renderVertices());
+        root.put("joints", shape.joints());
+        root.put("influences", shape.influences());
+        root.put("frames", t.frames());
+        root.put("minMicrosPerFrame", round(t.minMicros()));
+        root.put("medianMicrosPerFrame", round(t.medianMicros()));
+        root.put("implementation", t.kernel());
+        root.put("java", JavaRuntime.version());
+        root.put("javaVendor", JavaRuntime.vendor());
+        try {
+            return mapper.writeValueAsString(root);
+        } catch (JsonProcessingException e) {
+            throw new IllegalStateException(e);
         }
-        double[] sorted = Arrays.copyOf(micros, n);
-        Arrays.sort(sorted);
-        double min = sorted[0];
-        double median = sorted[n / 2];
-        PrintWriter out = spec.commandLine().getOut();
-        String name = file.getFileName().toString();
-        if (json) {
-            ObjectMapper mapper = new ObjectMapper();
-            ObjectNode root = mapper.createObjectNode();
-            root.put("benchmark", "frame");
-            root.put("file", name);
-            root.put("method", m.key());
-            root.put("normals", normals.toLowerCase(Locale.ROOT));
-            root.put("points", points);
-            root.put("joints", joints);
-            root.put("frames", n);
-            root.put("minMicrosPerFrame", round(min));
-            root.put("medianMicrosPerFrame", round(median));
-            root.put("implementation", implementation);
-            out.println(mapper.writeValueAsString(root));
-        } else {
-            out.printf(Locale.ROOT, "frame of %s: %d points, %d joints, %s, normals %s, %s%n", name, points, joints,
-                    m.key(), normals.toLowerCase(Locale.ROOT), implementation);
-            out.printf(Locale.ROOT, "min %.2f µs, median %.2f µs per frame (%d frames: sample, skinning matrices, skin)%n",
-                    min, median, n);
-        }
-        out.flush();
-        return ExitCodes.OK;
     }
 
     private static double round(double d) {
         return Math.round(d * 1000.0) / 1000.0;
+    }
+
+    private static CommandFailure usage(String message) {
+        return new CommandFailure(ExitCodes.USAGE, "bench frame: " + message, null);
     }
 }

@@ -330,7 +330,7 @@ public final class ParseBenchCommand implements Callable<Integer> {
         ObjectMapper mapper = new ObjectMapper();
         ObjectNode root = mapper.createObjectNode();
         root.put("benchmark", "parse");
-        root.put("java", System.getProperty("java.version"));
+        root.put("java", JavaRuntime.version());
         root.put("cores", Runtime.getRuntime().availableProcessors());
         if (assimpVersion != null) {
             root.put("assimpVersion", assimpVersion);

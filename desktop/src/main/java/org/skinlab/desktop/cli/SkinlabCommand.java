@@ -55,12 +55,15 @@ public final class SkinlabCommand implements Runnable {
         return message == null ? "" : message.replaceAll("\\s+", " ").trim();
     }
 
-    /** Version from the jar manifest when packaged, else "development". */
+    /**
+     * Version from the jar manifest when packaged, else "development"; then the Java that runs it
+     * (the start scripts choose the newest JDK found: README, "Which Java runs skinlab").
+     */
     public static final class Version implements CommandLine.IVersionProvider {
         @Override
         public String[] getVersion() {
             String v = SkinlabCommand.class.getPackage().getImplementationVersion();
-            return new String[] {"skinlab " + (v == null ? "development" : v)};
+            return new String[] {"skinlab " + (v == null ? "development" : v), JavaRuntime.describeWithHome()};
         }
     }
 }

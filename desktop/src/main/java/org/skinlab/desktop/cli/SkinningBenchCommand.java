@@ -127,9 +127,9 @@ public final class SkinningBenchCommand implements Callable<Integer> {
         if (json) {
             out.println(toJson(m, name, ours, thesis));
         } else {
-            out.printf(Locale.ROOT, "skinning %s, %d vertices, %d thread%s, %s, normals %s%n", m.key(), vertices,
+            out.printf(Locale.ROOT, "skinning %s, %d vertices, %d thread%s, %s, normals %s, %s%n", m.key(), vertices,
                     threads, threads == 1 ? "" : "s", name, rule == NormalTransform.BLENDED_MATRIX
-                            ? "by the blended matrix" : "by the inverse-transpose");
+                            ? "by the blended matrix" : "by the inverse-transpose", JavaRuntime.describe());
             out.printf(Locale.ROOT, "min %.3f ns/vertex, median %.3f ns/vertex (%d runs), checksum %.6f%n",
                     ours.min(), ours.median(), ours.nsPerVertex.length, ours.checksum);
             if (thesis != null) {
@@ -197,6 +197,8 @@ public final class SkinningBenchCommand implements Callable<Integer> {
         root.put("medianNsPerVertex", round(ours.median()));
         root.put("checksum", ours.checksum);
         root.put("implementation", name);
+        root.put("java", JavaRuntime.version());
+        root.put("javaVendor", JavaRuntime.vendor());
         if (thesis != null) {
             root.put("baselineMinNsPerVertex", round(thesis.min()));
             root.put("baselineMedianNsPerVertex", round(thesis.median()));

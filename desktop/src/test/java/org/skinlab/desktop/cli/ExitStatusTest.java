@@ -63,6 +63,9 @@ class ExitStatusTest {
         Cli version = Cli.run("--version");
         assertEquals(0, version.status, version::toString);
         assertTrue(version.out.startsWith("skinlab "), version::toString);
+        // The second line names the Java that runs it (the start scripts choose one).
+        assertEquals("Java " + System.getProperty("java.version") + " (" + System.getProperty("java.vendor") + ") at "
+                + System.getProperty("java.home"), version.out.lines().skip(1).findFirst().orElse(""), version::toString);
     }
 
     @Test

@@ -36,7 +36,7 @@ class SkinningBenchCommandTest {
             assertTrue(r.out.indexOf('\n') == r.out.length() - 1, "one line: " + r);
             JsonNode root = JSON.readTree(r.out);
             assertEquals(List.of("method", "vertices", "threads", "minNsPerVertex", "medianNsPerVertex", "checksum",
-                    "implementation"), Cli.keys(root));
+                    "implementation", "java", "javaVendor"), Cli.keys(root));
             assertEquals(method, root.get("method").asText());
             assertEquals(1000, root.get("vertices").intValue());
             assertEquals(2, root.get("threads").intValue());
@@ -71,7 +71,8 @@ class SkinningBenchCommandTest {
                 "--seconds", "0");
         assertEquals(ExitCodes.OK, r.status, r::toString);
         String[] lines = r.out.split("\n");
-        assertEquals("skinning lbs, 300 vertices, 1 thread, vector-256, normals by the blended matrix", lines[0]);
+        assertEquals("skinning lbs, 300 vertices, 1 thread, vector-256, normals by the blended matrix, Java "
+                + System.getProperty("java.version") + " (" + System.getProperty("java.vendor") + ")", lines[0]);
         assertTrue(lines[1].matches("min [0-9.]+ ns/vertex, median [0-9.]+ ns/vertex \\([0-9]+ runs\\), checksum "
                 + "-?[0-9.]+"), lines[1]);
     }

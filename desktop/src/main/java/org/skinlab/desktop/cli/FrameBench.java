@@ -1,0 +1,120 @@
+package org.skinlab.desktop.cli;
+
+import java.util.Arrays;
+import java.util.LinkedHashSet;
+import java.util.Set;
+
+import org.skinlab.animation.RotationInterpolation;
+import org.skinlab.animation.WrapMode;
+import org.skinlab.model.Model;
+import org.skinlab.skinning.NormalTransform;
+import org.skinlab.skinning.SkinnedGeometry;
+import org.skinlab.skinning.SkinnedModel;
+import org.skinlab.skinning.SkinningMethod;
+
+/**
+ * One character's frame, end to end on the CPU, timed for {@code skinlab bench frame}: sample the
+ * first clip (slerp), evaluate the skeleton, compute every geometry's skinning matrices (and, for
+ * DQS, its dual quaternions), and skin every placed mesh, positions and normals, on one thread.
+ * Each frame advances the clip by 1/60 s (looping), so the sampler's key search moves as it does
+ * when playing. Warm-up, then timed frames for a given time (at least 5).
+ */
+final class FrameBench {
+    /** What one frame deforms, summed over the placed meshes (influences: the most per position). */
+    record Shape(int positionsSkinned, int renderVertices, int joints, int influences) {
+    }
+
+    /** One method's frames: the kernels that ran and the time per frame in microseconds. */
+    record Timing(SkinningMethod method, String kernel, int frames, double minMicros, double medianMicros) {
+    }
+
+    private final SkinnedModel skinned;
+    private final float[][] positions;
+    private final float[][] normals;
+    private final Shape shape;
+
+    FrameBench(Model model, NormalTransform rule) {
+        skinned = new SkinnedModel(model, model.clips().isEmpty() ? null : model.clips().get(0), rule);
+        int n = skinned.geometries().size();
+        positions = new float[n][];
+        normals = new float[n][];
+        int skinnedPositions = 0;
+        int vertices = 0;
+        int joints = 0;
+        int influences = 0;
+        for (int g = 0; g < n; g++) {
+            SkinnedGeometry geometry = skinned.geometries().get(g);
+            positions[g] = new float[outputFloats(geometry)];
+            normals[g] = new float[outputFloats(geometry)];
+            skinnedPositions += positionsSkinned(geometry);
+            vertices += geometry.vertexCount();
+            joints += geometry.jointCount();
+            influences = Math.max(influences, geometry.influencesPerPoint());
+        }
+        shape = new Shape(skinnedPositions, vertices, joints, influences);
+    }
+
+    // What SkinnedGeometry offers about a frame's work, in one place: a geometry that shares
+    // positions deforms each of its positions once and derives the render vertices from them;
+    // otherwise every point (render vertices, then unused positions) is skinned on its own.
+
+    /** How many points one frame of this geometry deforms with the joints' blend. */
+    static int positionsSkinned(SkinnedGeometry geometry) {
+        SkinnedGeometry shared = geometry.sharedPositions();
+        return shared != null ? shared.pointCount() : geometry.pointCount();
+    }
+
+    /** The floats of each output array of {@link SkinnedModel#skin}. */
+    private static int outputFloats(SkinnedGeometry geometry) {
+        return 3 * geometry.pointCount();
+    }
+
+    Shape shape() {
+        return shape;
+    }
+
+    /**
+     * The kernels the geometries use for a method ({@code Skinner.implementation()}), each named
+     * once in the order of the geometries and joined by '+' (a SIMD kernel may decline a geometry);
+     * "none" without geometries.
+     */
+    String kernel(SkinningMethod method) {
+        Set<String> names = new LinkedHashSet<>();
+        for (int g = 0; g < positions.length; g++) {
+            names.add(skinned.skinner(g, method).implementation());
+        }
+        return names.isEmpty() ? "none" : String.join("+", names);
+    }
+
+    /** Warms up for {@code warmupSeconds}, then times frames for {@code seconds} (at least 5 frames). */
+    Timing measure(SkinningMethod method, double warmupSeconds, double seconds) {
+        long frame = 0;
+        long warmupEnd = System.nanoTime() + (long) (warmupSeconds * 1e9);
+        do {
+            step(method, frame++);
+        } while (System.nanoTime() < warmupEnd);
+        double[] micros = new double[1024];
+        int n = 0;
+        long end = System.nanoTime() + (long) (seconds * 1e9);
+        while (n < 5 || System.nanoTime() < end) {
+            long t0 = System.nanoTime();
+            step(method, frame++);
+            long t1 = System.nanoTime();
+            if (n == micros.length) {
+                micros = Arrays.copyOf(micros, 2 * n);
+            }
+            micros[n++] = (t1 - t0) / 1e3;
+        }
+        double[] sorted = Arrays.copyOf(micros, n);
+        Arrays.sort(sorted);
+        return new Timing(method, kernel(method), n, sorted[0], sorted[n / 2]);
+    }
+
+    private void step(SkinningMethod method, long frame) {
+        float t = skinned.sampler().clipTime(frame / 60.0, WrapMode.LOOP);
+        skinned.pose(t, RotationInterpolation.SLERP);
+        for (int g = 0; g < positions.length; g++) {
+            skinned.skin(g, method, positions[g], normals[g]);
+        }
+    }
+}
