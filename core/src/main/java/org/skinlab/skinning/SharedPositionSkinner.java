@@ -34,6 +34,37 @@ final class SharedPositionSkinner extends AbstractSkinner {
     }
 
     /**
+     * Whether skinning each of {@code positions} positions once and deriving {@code points} points
+     * from them is cheaper than skinning every point, for a method and {@code influences} per
+     * point. The costs per point in ns, fitted to the vector kernels on JDK 17 (docs/benchmarks.md,
+     * "Each position once"; the scalar kernels favour sharing at least as much):
+     * <ul>
+     * <li>LBS: directly {@code 2 + 2.2 k}, into a frame {@code 3 + 1.75 k}, derived from a frame 3.4
+     *     (with the renormalisation of its normal);</li>
+     * <li>DQS: directly {@code 4 + 1.1 k} (8 points per lane group), into a frame {@code 7 + 1.1 k},
+     *     derived from a frame 2 (rotations keep unit normals).</li>
+     * </ul>
+     * So the stormtrooper (5174 points on 3275 positions, 6 influences) shares for LBS (measured
+     * 62 against 80 µs) but not for DQS (55 against 54 µs), the thesis' cowboy (4252 on 740) for
+     * both.
+     */
+    static boolean pays(SkinningMethod method, int points, int positions, int influences) {
+        double direct;
+        double frame;
+        double derived;
+        if (method == SkinningMethod.LBS) {
+            direct = 2 + 2.2 * influences;
+            frame = 3 + 1.75 * influences;
+            derived = 3.4;
+        } else {
+            direct = 4 + 1.1 * influences;
+            frame = 7 + 1.1 * influences;
+            derived = 2;
+        }
+        return positions * frame + points * derived < points * direct;
+    }
+
+    /**
      * The rest normals an expansion for this method and rule should read: for DQS under the exact
      * rule they are scaled to unit length once here, since a frame without a scale part is a
      * rotation, which keeps them unit, and the per-call renormalisation can then be skipped; the

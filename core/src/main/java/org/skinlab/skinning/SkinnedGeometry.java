@@ -39,13 +39,13 @@ import org.skinlab.model.Skin;
  *
  * <p><b>Shared positions.</b> A point's deformed position depends only on its POSITION entry, and
  * exporters split a position into several render vertices wherever normals or texture coordinates
- * differ (the thesis' cowboy has 740 positions in 4252 vertices). When that makes skinning each
- * position once cheaper, {@link #sharedPositions()} is a second geometry whose points are the
- * mesh's positions (in source order, normals zero); a skinner then deforms those once into
- * per-position frames ({@link Skinner#skinFrames}) and derives every point from the frame of its
- * position ({@link #frameOfPointArray()}) and its own rest normal. The rule that decides is
- * {@link #sharesPositions}. Either way the points, their order and the arrays below stay the same
- * for callers.
+ * differ (the thesis' cowboy has 740 positions in 4252 vertices). When points share positions,
+ * {@link #sharedPositions()} is a second geometry whose points are the mesh's positions (in source
+ * order, normals zero); a skinner may then deform those once into per-position frames
+ * ({@link Skinner#skinFrames}) and derive every point from the frame of its position
+ * ({@link #frameOfPointArray()}) and its own rest normal. Whether that pays depends on the method
+ * and is decided where skinners are made ({@link Skinners}). Either way the points, their order
+ * and the arrays below stay the same for callers.
  */
 public final class SkinnedGeometry {
     private final MeshInstance instance;
@@ -134,24 +134,10 @@ public final class SkinnedGeometry {
         }
         SkinnedGeometry byPoint = skinned(instance, skin, vertices, positions, normals, positionOfPoint,
                 pointOfPosition);
-        if (!sharesPositions(points, pointOfPosition.length, byPoint.influences)) {
-            return byPoint;
+        if (points == pointOfPosition.length) {
+            return byPoint; // one point per position: nothing to share
         }
         return byPoint.withSharedPositions(positionOfPoint);
-    }
-
-    /**
-     * Whether a mesh of {@code points} points over {@code positions} positions, {@code influences}
-     * per point, is cheaper to skin position by position. Measured on the kernels of this project
-     * (docs/benchmarks.md, "shared positions"): blending k influences and applying them costs about
-     * k + 2 units per skinned point, deriving a point from its position's frame about 2, and
-     * skinning a point directly about k + 1. So sharing pays when
-     * {@code positions * (k + 2) + 2 * points < points * (k + 1)}: at 4 influences from about 1.5
-     * points per position, at 8 from about 1.3. Static meshes never share (one joint: nothing to
-     * save).
-     */
-    static boolean sharesPositions(int points, int positions, int influences) {
-        return (long) positions * (influences + 2) + 2L * points < (long) points * (influences + 1);
     }
 
     /** This geometry with a position-level twin for kernels that skin each position once. */
@@ -446,8 +432,8 @@ public final class SkinnedGeometry {
 
     /**
      * The geometry whose points are this one's positions (source order, zero normals, the same
-     * influences, joints and bind matrices), when skinning each position once is cheaper; null when
-     * points are skinned one by one. See the class comment.
+     * influences, joints and bind matrices), when some position is carried by more than one point;
+     * null when every position has its own point. See the class comment.
      */
     public SkinnedGeometry sharedPositions() {
         return sharedPositions;

@@ -34,7 +34,7 @@ public final class Skinners {
      * {@link FrameExpansion}.
      */
     public static Skinner create(SkinningMethod method, SkinnedGeometry geometry, NormalTransform normals) {
-        SkinnedGeometry shared = geometry.sharedPositions();
+        SkinnedGeometry shared = sharedIfItPays(method, geometry);
         if (shared != null) {
             return new SharedPositionSkinner(geometry, create(method, shared, normals), expansion(
                     geometry.frameOfPointArray(), SharedPositionSkinner.expansionNormals(method, normals, geometry)));
@@ -51,6 +51,13 @@ public final class Skinners {
             }
         }
         return scalar(method, geometry, normals);
+    }
+
+    /** The geometry's positions when skinning each once pays for this method ({@link SharedPositionSkinner#pays}). */
+    private static SkinnedGeometry sharedIfItPays(SkinningMethod method, SkinnedGeometry geometry) {
+        SkinnedGeometry shared = geometry.sharedPositions();
+        return shared != null && SharedPositionSkinner.pays(method, geometry.pointCount(), shared.pointCount(),
+                geometry.influencesPerPoint()) ? shared : null;
     }
 
     /** The fastest {@link FrameExpansion} available for a mapping and rest normals. */
@@ -79,7 +86,7 @@ public final class Skinners {
      * positions and the scalar expansion).
      */
     public static Skinner scalar(SkinningMethod method, SkinnedGeometry geometry, NormalTransform normals) {
-        SkinnedGeometry shared = geometry.sharedPositions();
+        SkinnedGeometry shared = sharedIfItPays(method, geometry);
         if (shared != null) {
             return new SharedPositionSkinner(geometry, scalar(method, shared, normals), FrameExpansion.scalar(
                     geometry.frameOfPointArray(), SharedPositionSkinner.expansionNormals(method, normals, geometry)));

@@ -27,10 +27,25 @@ import org.skinlab.testing.TestPaths;
 class SharedPositionsTest {
     @Test
     void theRuleSharesWhereItSaves() {
-        assertTrue(SkinnedGeometry.sharesPositions(4252, 740, 6), "the cowboy: 5.7 points per position");
-        assertFalse(SkinnedGeometry.sharesPositions(950, 951, 4), "the humanoid: one point per position");
-        assertFalse(SkinnedGeometry.sharesPositions(100, 90, 4));
-        assertTrue(SkinnedGeometry.sharesPositions(300, 100, 4));
+        for (SkinningMethod m : SkinningMethod.values()) {
+            assertTrue(SharedPositionSkinner.pays(m, 4252, 740, 6), m + ": the cowboy, 5.7 points per position");
+            assertFalse(SharedPositionSkinner.pays(m, 951, 951, 4), m + ": one point per position");
+            assertTrue(SharedPositionSkinner.pays(m, 10710, 1856, 3), m + ": Suzanne, 5.8 points per position");
+        }
+        // The stormtrooper, 1.58 points per position: LBS's direct kernel is the dearer one.
+        assertTrue(SharedPositionSkinner.pays(SkinningMethod.LBS, 5174, 3275, 6));
+        assertFalse(SharedPositionSkinner.pays(SkinningMethod.DQS, 5174, 3275, 6));
+    }
+
+    @Test
+    void aGeometryWithOnePointPerPositionHasNoSharedTwin() throws Exception {
+        // The humanoid: smooth, one render vertex per position (and one unused position).
+        Model model = ColladaImporter.read(TestPaths.asset("characters/humanoid-walk.dae"));
+        SkinnedGeometry g = SkinnedModel.of(model).geometries().get(0);
+        assertEquals(g.positionCount(), g.pointCount());
+        assertNull(g.sharedPositions());
+        assertFalse(Skinners.scalar(SkinningMethod.LBS, g, NormalTransform.INVERSE_TRANSPOSE).implementation()
+                .contains("each position once"));
     }
 
     @Test
