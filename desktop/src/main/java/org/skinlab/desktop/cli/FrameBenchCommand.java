@@ -53,6 +53,10 @@ public final class FrameBenchCommand implements Callable<Integer> {
     @Option(names = "--json", description = "print the result as one line of JSON")
     boolean json;
 
+    @Option(names = "--palette-only",
+            description = "time only the joint palette (sample, skinning matrices, dual quaternions), no skinning")
+    boolean paletteOnly;
+
     @Spec
     CommandSpec spec;
 
@@ -78,6 +82,9 @@ public final class FrameBenchCommand implements Callable<Integer> {
         }
         Model model = ModelFiles.load(file).model;
         SkinnedModel skinned = new SkinnedModel(model, model.clips().isEmpty() ? null : model.clips().get(0), rule);
+        if (paletteOnly) {
+            return paletteOnly(skinned);
+        }
         int geometries = skinned.geometries().size();
         float[][] positions = new float[geometries][];
         float[][] normalsOut = new float[geometries][];
@@ -143,6 +150,89 @@ public final class FrameBenchCommand implements Callable<Integer> {
         }
         out.flush();
         return ExitCodes.OK;
+    }
+
+    /**
+     * {@code --palette-only}: per frame, {@link SkinnedModel#pose} (sample, evaluate, skinning
+     * matrices) and then every palette's dual quaternions, timed apart. Besides minimum and
+     * median it reports the mean, which shows frames that are slow for a reason of their own.
+     */
+    private int paletteOnly(SkinnedModel skinned) throws Exception {
+        int geometries = skinned.geometries().size();
+        int joints = 0;
+        for (int g = 0; g < geometries; g++) {
+            joints += skinned.geometries().get(g).jointCount();
+        }
+        long frame = 0;
+        long warmupEnd = System.nanoTime() + (long) (warmupSeconds * 1e9);
+        do {
+            skinned.pose(skinned.sampler().clipTime(frame++ / 60.0, WrapMode.LOOP), RotationInterpolation.SLERP);
+            for (int g = 0; g < geometries; g++) {
+                skinned.palette(g).prepareDualQuaternions();
+            }
+        } while (System.nanoTime() < warmupEnd);
+        double[] pose = new double[1024];
+        double[] dq = new double[1024];
+        int n = 0;
+        long end = System.nanoTime() + (long) (seconds * 1e9);
+        while (n < 5 || System.nanoTime() < end) {
+            float t = skinned.sampler().clipTime(frame++ / 60.0, WrapMode.LOOP);
+            long t0 = System.nanoTime();
+            skinned.pose(t, RotationInterpolation.SLERP);
+            long t1 = System.nanoTime();
+            for (int g = 0; g < geometries; g++) {
+                skinned.palette(g).prepareDualQuaternions();
+            }
+            long t2 = System.nanoTime();
+            if (n == pose.length) {
+                pose = Arrays.copyOf(pose, 2 * n);
+                dq = Arrays.copyOf(dq, 2 * n);
+            }
+            pose[n] = (t1 - t0) / 1e3;
+            dq[n++] = (t2 - t1) / 1e3;
+        }
+        double[] total = new double[n];
+        for (int i = 0; i < n; i++) {
+            total[i] = pose[i] + dq[i];
+        }
+        double[][] stats = {stats(total, n), stats(pose, n), stats(dq, n)};
+        String[] parts = {"palette", "pose", "dualQuaternions"};
+        PrintWriter out = spec.commandLine().getOut();
+        String name = file.getFileName().toString();
+        if (json) {
+            ObjectMapper mapper = new ObjectMapper();
+            ObjectNode root = mapper.createObjectNode();
+            root.put("benchmark", "frame-palette");
+            root.put("file", name);
+            root.put("joints", joints);
+            root.put("frames", n);
+            for (int p = 0; p < parts.length; p++) {
+                ObjectNode part = root.putObject(parts[p]);
+                part.put("minMicros", round(stats[p][0]));
+                part.put("medianMicros", round(stats[p][1]));
+                part.put("meanMicros", round(stats[p][2]));
+            }
+            out.println(mapper.writeValueAsString(root));
+        } else {
+            out.printf(Locale.ROOT, "palette of %s: %d joints, %d frames (slerp)%n", name, joints, n);
+            for (int p = 0; p < parts.length; p++) {
+                out.printf(Locale.ROOT, "%-16s min %.3f µs, median %.3f µs, mean %.3f µs%n", parts[p], stats[p][0],
+                        stats[p][1], stats[p][2]);
+            }
+        }
+        out.flush();
+        return ExitCodes.OK;
+    }
+
+    /** Minimum, median and mean of the first n values. */
+    private static double[] stats(double[] values, int n) {
+        double[] sorted = Arrays.copyOf(values, n);
+        Arrays.sort(sorted);
+        double sum = 0;
+        for (double v : sorted) {
+            sum += v;
+        }
+        return new double[] {sorted[0], sorted[n / 2], sum / n};
     }
 
     private static double round(double d) {
