@@ -14,10 +14,11 @@ import org.skinlab.model.TransformElement;
  * <p>Evaluation ({@link #evaluate}) runs once forward through the nodes, parents first: each
  * node's local matrix is the product of its transform elements (composed by
  * {@link TransformElement#multiply(TransformElement.Kind, float[], int, Matrix4f, Matrix4f)}, the
- * one place that turns COLLADA transforms into matrices), its world matrix the parent's world
- * times that. Non-joint nodes between joints (an armature node, a helper, a control bone that
- * moves a joint) are evaluated like any other, so their animation and rest transforms reach the
- * joints below them.
+ * one place that turns COLLADA transforms into matrices; a stack of one {@code <matrix>} is read
+ * the same way straight from its values), its world matrix the parent's world times that.
+ * Non-joint nodes between joints (an armature node, a helper, a control bone that moves a joint)
+ * are evaluated like any other, so their animation and rest transforms reach the joints below
+ * them.
  *
  * <p>{@link #skinningMatrices} is the one place where skinning matrices are made:
  * {@code world(joint) * INV_BIND_MATRIX * BIND_SHAPE_MATRIX}.
