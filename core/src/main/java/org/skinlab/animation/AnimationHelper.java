@@ -19,6 +19,8 @@ import org.joml.Vector3fc;
 public final class AnimationHelper {
     /** Squared column-length deviation below which a matrix counts as unscaled (as Blender). */
     static final float SCALE_EPSILON_SQ = 1e-8f;
+    /** |cos| of the angle between two rotations above which {@link #slerp} falls back to {@link #nlerp}. */
+    static final double SLERP_NLERP_THRESHOLD = 0.9999999;
 
     private AnimationHelper() {
     }
@@ -180,6 +182,36 @@ public final class AnimationHelper {
                 translation.x(), translation.y(), translation.z(), 1f);
     }
 
+    /**
+     * {@link #compose} written as a row-major 4x4 matrix (the layout of a COLLADA
+     * {@code <matrix>}, bottom row 0 0 0 1) at {@code dest[offset]}, with the same operations, so
+     * the same values to the bit. For the per-frame path, which has its values in locals.
+     */
+    public static void composeRowMajor(float tx, float ty, float tz, float qx, float qy, float qz, float qw,
+            float sx, float sy, float sz, float[] dest, int offset) {
+        float ww = qw * qw;
+        float xx = qx * qx;
+        float yy = qy * qy;
+        float zz = qz * qz;
+        int o = offset;
+        dest[o] = (ww + xx - yy - zz) * sx;
+        dest[o + 1] = 2 * (qx * qy - qw * qz) * sy;
+        dest[o + 2] = 2 * (qx * qz + qw * qy) * sz;
+        dest[o + 3] = tx;
+        dest[o + 4] = 2 * (qx * qy + qw * qz) * sx;
+        dest[o + 5] = (ww - xx + yy - zz) * sy;
+        dest[o + 6] = 2 * (qy * qz - qw * qx) * sz;
+        dest[o + 7] = ty;
+        dest[o + 8] = 2 * (qx * qz - qw * qy) * sx;
+        dest[o + 9] = 2 * (qy * qz + qw * qx) * sy;
+        dest[o + 10] = (ww - xx - yy + zz) * sz;
+        dest[o + 11] = tz;
+        dest[o + 12] = 0f;
+        dest[o + 13] = 0f;
+        dest[o + 14] = 0f;
+        dest[o + 15] = 1f;
+    }
+
     /** The rotation matrix of {@code q} in homogeneous form: {@code |q|^2} times that of q/|q|. */
     public static Matrix4f rotationMatrix(Quaternionfc q, Matrix4f dest) {
         float x = q.x();
@@ -213,6 +245,19 @@ public final class AnimationHelper {
         dest[offset + 9] = m.m12();
         dest[offset + 10] = m.m22();
         dest[offset + 11] = m.m32();
+    }
+
+    /**
+     * Writes the affine part of the column-major 4x4 matrix at {@code src[srcOffset]} (16 floats,
+     * JOML's and OpenGL's layout) as a row-major 3x4 matrix at {@code dest[offset]}.
+     */
+    public static void putRowMajor3x4(float[] src, int srcOffset, float[] dest, int offset) {
+        for (int r = 0; r < 3; r++) {
+            dest[offset + 4 * r] = src[srcOffset + r];
+            dest[offset + 4 * r + 1] = src[srcOffset + 4 + r];
+            dest[offset + 4 * r + 2] = src[srcOffset + 8 + r];
+            dest[offset + 4 * r + 3] = src[srcOffset + 12 + r];
+        }
     }
 
     /** Reads a row-major 3x4 matrix from {@code src[offset]} into {@code dest} (bottom row 0 0 0 1). */
@@ -264,7 +309,7 @@ public final class AnimationHelper {
         double dot = (double) a.x() * b.x() + (double) a.y() * b.y() + (double) a.z() * b.z() + (double) a.w() * b.w();
         double sign = dot < 0 ? -1 : 1;
         double cos = Math.min(1.0, Math.abs(dot));
-        if (cos > 0.9999999) {
+        if (cos > SLERP_NLERP_THRESHOLD) {
             return nlerp(a, b, t, dest);
         }
         double angle = Math.acos(cos);

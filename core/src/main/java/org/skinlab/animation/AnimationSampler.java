@@ -1,5 +1,7 @@
 package org.skinlab.animation;
 
+import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 
 import org.joml.Matrix4f;
@@ -44,13 +46,28 @@ public final class AnimationSampler {
         this.clip = clip;
         List<AnimationChannel> list = clip.channels();
         channels = new Channel[list.size()];
+        List<float[]> timelines = new ArrayList<>();
         for (int i = 0; i < channels.length; i++) {
             AnimationChannel c = list.get(i);
             int slot = skeleton.valueOffset(c.node(), c.transformIndex()) + c.valueOffset();
             boolean matrix = skeleton.kind(c.node(), c.transformIndex()) == TransformElement.Kind.MATRIX
                     && c.valueOffset() == 0 && c.valueCount() == 16;
-            channels[i] = new Channel(slot, c.track(), matrix);
+            channels[i] = new Channel(slot, c.track(), sharedTimes(c.track().times(), timelines), matrix);
         }
+    }
+
+    /**
+     * One array per distinct list of key times: exporters key every channel of a clip at the same
+     * times, and channels that share the array share one key search per sample.
+     */
+    private static float[] sharedTimes(float[] times, List<float[]> timelines) {
+        for (float[] t : timelines) {
+            if (Arrays.equals(t, times)) {
+                return t;
+            }
+        }
+        timelines.add(times);
+        return times;
     }
 
     /** A sampler over no channels: every pose stays at rest. */
@@ -117,27 +134,68 @@ public final class AnimationSampler {
             throw new IllegalArgumentException("sample time is NaN");
         }
         float[] values = pose.values();
+        float[] searched = null;
+        int k = 0;
         for (Channel c : channels) {
-            c.sample(time, rotations, values, pose);
+            if (c.times != searched) {
+                searched = c.times;
+                k = segment(searched, time);
+            }
+            c.sample(k, time, rotations, values, pose);
         }
+    }
+
+    /**
+     * The segment [k, k+1] of the keys that holds {@code time}: the last key at or before it, 0
+     * before the first key (and for no keys), the last key from it on.
+     */
+    private static int segment(float[] times, float time) {
+        int last = times.length - 1;
+        if (last <= 0 || time <= times[0]) {
+            return 0;
+        }
+        if (time >= times[last]) {
+            return last;
+        }
+        int lo = 0;
+        int hi = last;
+        while (hi - lo > 1) {
+            int mid = (lo + hi) >>> 1;
+            if (times[mid] <= time) {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        return lo;
     }
 
     /** One channel as flat arrays, with whole-matrix keys pre-decomposed. */
     private static final class Channel {
         private final int slot;
         private final int width;
-        private final float[] times;
+        /** Key times, the same array for every channel with the same times (see sharedTimes). */
+        final float[] times;
         private final float[] values;
         private final Interpolation[] interpolations;
         private final float[] in;
         private final float[] out;
         /** Per key translation (3), rotation (4), scale (3), or null when not a whole matrix. */
         private final float[] trs;
+        /**
+         * Per segment of a whole-matrix channel, what {@link AnimationHelper#slerp} derives from
+         * the two keys alone: the angle between them (NaN where slerp falls back to nlerp) and its
+         * sine, negated when the keys lie in opposite hemispheres (the shortest arc). Computed
+         * once here, the per-frame slerp is two sines instead of an arc cosine and three sines,
+         * with the same operations on the same values, so the same result to the bit.
+         */
+        private final double[] slerpAngles;
+        private final double[] slerpSines;
 
-        Channel(int slot, KeyframeTrack track, boolean matrix) {
+        Channel(int slot, KeyframeTrack track, float[] times, boolean matrix) {
             this.slot = slot;
             this.width = track.width();
-            this.times = track.times();
+            this.times = times;
             this.values = track.values();
             int keys = times.length;
             this.interpolations = new Interpolation[keys];
@@ -147,6 +205,22 @@ public final class AnimationSampler {
             this.in = track.inTangents();
             this.out = track.outTangents();
             this.trs = matrix ? decomposeKeys(values, keys) : null;
+            this.slerpAngles = matrix ? new double[keys] : null;
+            this.slerpSines = matrix ? new double[keys] : null;
+            for (int k = 0; matrix && k + 1 < keys; k++) {
+                int a = 10 * k + 3;
+                int b = a + 10;
+                double dot = (double) trs[a] * trs[b] + (double) trs[a + 1] * trs[b + 1]
+                        + (double) trs[a + 2] * trs[b + 2] + (double) trs[a + 3] * trs[b + 3];
+                double cos = Math.min(1.0, Math.abs(dot));
+                if (cos > AnimationHelper.SLERP_NLERP_THRESHOLD) {
+                    slerpAngles[k] = Double.NaN;
+                } else {
+                    slerpAngles[k] = Math.acos(cos);
+                    double sin = Math.sin(slerpAngles[k]);
+                    slerpSines[k] = dot < 0 ? -sin : sin;
+                }
+            }
         }
 
         private static float[] decomposeKeys(float[] values, int keys) {
@@ -174,33 +248,15 @@ public final class AnimationSampler {
             return trs;
         }
 
-        void sample(float time, RotationInterpolation rotations, float[] dest, Pose pose) {
+        /** Writes this channel's value at {@code time}, which lies in segment {@code k} of its keys. */
+        void sample(int k, float time, RotationInterpolation rotations, float[] dest, Pose pose) {
             int keys = times.length;
             if (keys == 0) {
                 return;
             }
-            // The segment [k, k+1] holding time: the last key whose time is <= time.
-            int k;
-            if (time <= times[0]) {
-                k = 0;
-                time = times[0];
-            } else if (time >= times[keys - 1]) {
-                k = keys - 1;
-            } else {
-                int lo = 0;
-                int hi = keys - 1;
-                while (hi - lo > 1) {
-                    int mid = (lo + hi) >>> 1;
-                    if (times[mid] <= time) {
-                        lo = mid;
-                    } else {
-                        hi = mid;
-                    }
-                }
-                k = lo;
-            }
             Interpolation how = interpolations[k];
-            if (k == keys - 1 || time == times[k] || how == Interpolation.STEP) {
+            // On key k (or before the first key, where k = 0), after the last one, or holding a STEP.
+            if (k == keys - 1 || time <= times[k] || how == Interpolation.STEP) {
                 System.arraycopy(values, k * width, dest, slot, width);
                 return;
             }
@@ -232,21 +288,31 @@ public final class AnimationSampler {
         private void blendMatrix(int k, float u, RotationInterpolation rotations, float[] dest, Pose pose) {
             int a = 10 * k;
             int b = a + 10;
-            Vector3f t = pose.v1.set(lerp(trs[a], trs[b], u), lerp(trs[a + 1], trs[b + 1], u),
-                    lerp(trs[a + 2], trs[b + 2], u));
-            Vector3f s = pose.v2.set(lerp(trs[a + 7], trs[b + 7], u), lerp(trs[a + 8], trs[b + 8], u),
-                    lerp(trs[a + 9], trs[b + 9], u));
-            Quaternionf qa = pose.q1.set(trs[a + 3], trs[a + 4], trs[a + 5], trs[a + 6]);
-            Quaternionf qb = pose.q2.set(trs[b + 3], trs[b + 4], trs[b + 5], trs[b + 6]);
-            AnimationHelper.interpolate(rotations, qa, qb, u, qa);
-            Matrix4f m = AnimationHelper.compose(t, qa, s, pose.m1);
-            // Row-major as in the file, bottom row (0 0 0 1).
-            int o = slot;
-            AnimationHelper.putRowMajor3x4(m, dest, o);
-            dest[o + 12] = 0f;
-            dest[o + 13] = 0f;
-            dest[o + 14] = 0f;
-            dest[o + 15] = 1f;
+            float qx;
+            float qy;
+            float qz;
+            float qw;
+            double angle = slerpAngles[k];
+            if (rotations == RotationInterpolation.SLERP && !Double.isNaN(angle)) {
+                // AnimationHelper.slerp with the constants of this pair of keys (see slerpAngles).
+                double wa = Math.sin((1 - u) * angle) / Math.abs(slerpSines[k]);
+                double wb = Math.sin(u * angle) / slerpSines[k];
+                qx = (float) (wa * trs[a + 3] + wb * trs[b + 3]);
+                qy = (float) (wa * trs[a + 4] + wb * trs[b + 4]);
+                qz = (float) (wa * trs[a + 5] + wb * trs[b + 5]);
+                qw = (float) (wa * trs[a + 6] + wb * trs[b + 6]);
+            } else {
+                Quaternionf q = AnimationHelper.interpolate(rotations,
+                        pose.q1.set(trs[a + 3], trs[a + 4], trs[a + 5], trs[a + 6]),
+                        pose.q2.set(trs[b + 3], trs[b + 4], trs[b + 5], trs[b + 6]), u, pose.q1);
+                qx = q.x;
+                qy = q.y;
+                qz = q.z;
+                qw = q.w;
+            }
+            AnimationHelper.composeRowMajor(lerp(trs[a], trs[b], u), lerp(trs[a + 1], trs[b + 1], u),
+                    lerp(trs[a + 2], trs[b + 2], u), qx, qy, qz, qw, lerp(trs[a + 7], trs[b + 7], u),
+                    lerp(trs[a + 8], trs[b + 8], u), lerp(trs[a + 9], trs[b + 9], u), dest, slot);
         }
 
         private static float lerp(float a, float b, float u) {

@@ -2,7 +2,6 @@ package org.skinlab.animation;
 
 import org.joml.Matrix4f;
 import org.joml.Quaternionf;
-import org.joml.Vector3f;
 
 /**
  * One state of a {@link Skeleton}: the transform values of every node (rest values where nothing
@@ -16,11 +15,9 @@ public final class Pose {
     private final float[] world;
     final Matrix4f local = new Matrix4f();
     final Matrix4f scratch = new Matrix4f();
-    final Matrix4f parentWorld = new Matrix4f();
-    // Scratch for AnimationSampler's whole-matrix blending.
-    final Matrix4f m1 = new Matrix4f();
-    final Vector3f v1 = new Vector3f();
-    final Vector3f v2 = new Vector3f();
+    /** One column-major 4x4 matrix of scratch for {@link Skeleton#skinningMatrices}. */
+    final float[] product = new float[16];
+    // Scratch for AnimationSampler's rotation blending other than slerp.
     final Quaternionf q1 = new Quaternionf();
     final Quaternionf q2 = new Quaternionf();
 

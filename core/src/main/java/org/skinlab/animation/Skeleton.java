@@ -14,10 +14,11 @@ import org.skinlab.model.TransformElement;
  * <p>Evaluation ({@link #evaluate}) runs once forward through the nodes, parents first: each
  * node's local matrix is the product of its transform elements (composed by
  * {@link TransformElement#multiply(TransformElement.Kind, float[], int, Matrix4f, Matrix4f)}, the
- * one place that turns COLLADA transforms into matrices), its world matrix the parent's world
- * times that. Non-joint nodes between joints (an armature node, a helper, a control bone that
- * moves a joint) are evaluated like any other, so their animation and rest transforms reach the
- * joints below them.
+ * one place that turns COLLADA transforms into matrices; a stack of one {@code <matrix>} is read
+ * the same way straight from its values), its world matrix the parent's world times that.
+ * Non-joint nodes between joints (an armature node, a helper, a control bone that moves a joint)
+ * are evaluated like any other, so their animation and rest transforms reach the joints below
+ * them.
  *
  * <p>{@link #skinningMatrices} is the one place where skinning matrices are made:
  * {@code world(joint) * INV_BIND_MATRIX * BIND_SHAPE_MATRIX}.
@@ -25,12 +26,20 @@ import org.skinlab.model.TransformElement;
  * <p>A skeleton is immutable and shared; all per-frame state lives in a {@link Pose}.
  */
 public final class Skeleton {
+    /** How {@link #mulAffine} reads its right operand. */
+    private static final boolean ROW_MAJOR = true;
+    private static final boolean COLUMN_MAJOR = false;
+    /** The parent world matrix of a root. */
+    private static final float[] IDENTITY = {1f, 0f, 0f, 0f, 0f, 1f, 0f, 0f, 0f, 0f, 1f, 0f, 0f, 0f, 0f, 1f};
+
     private final List<Node> nodes;
     private final int[] parents;
     private final int[] elementStart;
     private final TransformElement.Kind[] kinds;
     private final int[] valueOffsets;
     private final float[] restValues;
+    /** Per node: its stack is one {@code <matrix>} (the common case), read straight from the values. */
+    private final boolean[] singleMatrix;
 
     private Skeleton(List<Node> nodes) {
         this.nodes = nodes;
@@ -63,6 +72,11 @@ public final class Skeleton {
             }
         }
         elementStart[n] = e;
+        singleMatrix = new boolean[n];
+        for (int i = 0; i < n; i++) {
+            singleMatrix[i] = elementStart[i + 1] - elementStart[i] == 1
+                    && kinds[elementStart[i]] == TransformElement.Kind.MATRIX;
+        }
     }
 
     /** The skeleton of a model's visual scene. */
@@ -118,46 +132,114 @@ public final class Skeleton {
         return restValues;
     }
 
-    /** Computes every node's world matrix from the pose's transform values. Allocation-free. */
+    /**
+     * Computes every node's world matrix from the pose's transform values. Allocation-free.
+     *
+     * <p>The products are written out on the arrays (see {@link #mulAffine}); a node whose stack
+     * is one {@code <matrix>} is read straight from its values, others go through
+     * {@link TransformElement#multiply}.
+     */
     public void evaluate(Pose pose) {
         float[] values = pose.values();
         float[] world = pose.worldArray();
         Matrix4f local = pose.local;
         Matrix4f scratch = pose.scratch;
-        Matrix4f parentWorld = pose.parentWorld;
         for (int i = 0; i < parents.length; i++) {
+            int w = 16 * i;
+            int p = parents[i];
+            if (singleMatrix[i]) {
+                // The values are the local matrix, row-major (bottom row taken as 0 0 0 1).
+                int o = valueOffsets[elementStart[i]];
+                if (p >= 0) {
+                    mulAffine(world, 16 * p, values, o, ROW_MAJOR, world, w);
+                } else {
+                    mulAffine(IDENTITY, 0, values, o, ROW_MAJOR, world, w);
+                }
+                continue;
+            }
             local.identity();
             for (int e = elementStart[i]; e < elementStart[i + 1]; e++) {
                 TransformElement.multiply(kinds[e], values, valueOffsets[e], local, scratch);
             }
-            int p = parents[i];
+            local.get(world, w);
             if (p >= 0) {
-                parentWorld.set(world, 16 * p).mul(local, local);
+                mulAffine(world, 16 * p, world, w, COLUMN_MAJOR, world, w);
             }
-            local.get(world, 16 * i);
         }
+    }
+
+    /**
+     * {@code dest = a * b} for affine matrices stored column-major, 16 floats each (bottom rows
+     * taken as 0 0 0 1, not read), except that {@code b} may be row-major; {@code dest} may be
+     * either operand. Each entry is summed in the order JOML's {@code Matrix4f.mulAffine} uses,
+     * so the results equal JOML's products, which this code replaced, to the bit (up to the sign
+     * of a zero).
+     */
+    static void mulAffine(float[] a, int ao, float[] b, int bo, boolean bRowMajor, float[] dest, int d) {
+        int rs = bRowMajor ? 4 : 1; // step between rows of b
+        int cs = bRowMajor ? 1 : 4; // step between columns of b
+        float a00 = a[ao];
+        float a01 = a[ao + 1];
+        float a02 = a[ao + 2];
+        float a10 = a[ao + 4];
+        float a11 = a[ao + 5];
+        float a12 = a[ao + 6];
+        float a20 = a[ao + 8];
+        float a21 = a[ao + 9];
+        float a22 = a[ao + 10];
+        float a30 = a[ao + 12];
+        float a31 = a[ao + 13];
+        float a32 = a[ao + 14];
+        // bCR: column C, row R (JOML's naming).
+        float b00 = b[bo];
+        float b01 = b[bo + rs];
+        float b02 = b[bo + 2 * rs];
+        float b10 = b[bo + cs];
+        float b11 = b[bo + cs + rs];
+        float b12 = b[bo + cs + 2 * rs];
+        float b20 = b[bo + 2 * cs];
+        float b21 = b[bo + 2 * cs + rs];
+        float b22 = b[bo + 2 * cs + 2 * rs];
+        float b30 = b[bo + 3 * cs];
+        float b31 = b[bo + 3 * cs + rs];
+        float b32 = b[bo + 3 * cs + 2 * rs];
+        dest[d] = a00 * b00 + (a10 * b01 + a20 * b02);
+        dest[d + 1] = a01 * b00 + (a11 * b01 + a21 * b02);
+        dest[d + 2] = a02 * b00 + (a12 * b01 + a22 * b02);
+        dest[d + 3] = 0f;
+        dest[d + 4] = a00 * b10 + (a10 * b11 + a20 * b12);
+        dest[d + 5] = a01 * b10 + (a11 * b11 + a21 * b12);
+        dest[d + 6] = a02 * b10 + (a12 * b11 + a22 * b12);
+        dest[d + 7] = 0f;
+        dest[d + 8] = a00 * b20 + (a10 * b21 + a20 * b22);
+        dest[d + 9] = a01 * b20 + (a11 * b21 + a21 * b22);
+        dest[d + 10] = a02 * b20 + (a12 * b21 + a22 * b22);
+        dest[d + 11] = 0f;
+        dest[d + 12] = a00 * b30 + (a10 * b31 + (a20 * b32 + a30));
+        dest[d + 13] = a01 * b30 + (a11 * b31 + (a21 * b32 + a31));
+        dest[d + 14] = a02 * b30 + (a12 * b31 + (a22 * b32 + a32));
+        dest[d + 15] = 1f;
     }
 
     /**
      * Skinning matrices for one geometry's palette: per joint
      * {@code world(jointNodes[j]) * bindMatrices[j]}, where a bind matrix is
      * INV_BIND_MATRIX * BIND_SHAPE_MATRIX (see {@code SkinnedGeometry}) and a node of -1 means no
-     * node (identity world, the bind-shape pseudo-joint). Written as row-major 3x4 matrices, 12
-     * floats per joint, the layout skinning kernels read. The pose must have been evaluated.
+     * node (identity world, the bind-shape pseudo-joint). Bind matrices are affine (their bottom
+     * rows are not read). Written as row-major 3x4 matrices, 12 floats per joint, the layout
+     * skinning kernels read. The pose must have been evaluated.
      */
     public void skinningMatrices(Pose pose, int[] jointNodes, float[] bindMatrices, float[] dest) {
         float[] world = pose.worldArray();
-        Matrix4f w = pose.local;
-        Matrix4f b = pose.scratch;
+        float[] product = pose.product;
         for (int j = 0; j < jointNodes.length; j++) {
             int node = jointNodes[j];
             if (node >= 0) {
-                w.set(world, 16 * node);
+                mulAffine(world, 16 * node, bindMatrices, 16 * j, COLUMN_MAJOR, product, 0);
+                AnimationHelper.putRowMajor3x4(product, 0, dest, 12 * j);
             } else {
-                w.identity();
+                AnimationHelper.putRowMajor3x4(bindMatrices, 16 * j, dest, 12 * j);
             }
-            w.mul(b.set(bindMatrices, 16 * j));
-            AnimationHelper.putRowMajor3x4(w, dest, 12 * j);
         }
     }
 }

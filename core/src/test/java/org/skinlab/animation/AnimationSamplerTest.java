@@ -435,7 +435,72 @@ class AnimationSamplerTest {
         }
     }
 
+    @Test
+    void blendedMatrixKeysEqualAnimationHelpersInterpolationToTheBit() {
+        // The sampler keeps per segment what slerp derives from the two keys alone and composes
+        // on arrays; its matrix must still be AnimationHelper's interpolate and compose of the
+        // decomposed keys, float for float, in every mode. Random keys: about half the pairs lie
+        // in opposite hemispheres, and every fourth pair is 0.02 degrees apart (slerp's fallback).
+        Random random = new Random(8);
+        for (int pair = 0; pair < 200; pair++) {
+            Quaternionf ra = randomRotation(random);
+            Quaternionf rb = pair % 4 == 0 ? new Quaternionf(ra).rotateX((float) Math.toRadians(0.02))
+                    : randomRotation(random);
+            float[] ka = rowMajor(new Matrix4f().translation(3 * random.nextFloat(), -random.nextFloat(), 1).rotate(ra)
+                    .scale(0.5f + random.nextFloat(), 1, 2 * random.nextFloat() + 0.1f));
+            float[] kb = rowMajor(new Matrix4f().translation(random.nextFloat(), 2, -4 * random.nextFloat()).rotate(rb)
+                    .scale(1, 0.5f + random.nextFloat(), 0.3f));
+            Vector3f ta = new Vector3f();
+            Quaternionf qa = new Quaternionf();
+            Vector3f sa = new Vector3f();
+            AnimationHelper.decompose(fromRowMajor(ka), ta, qa, sa);
+            Vector3f tb = new Vector3f();
+            Quaternionf qb = new Quaternionf();
+            Vector3f sb = new Vector3f();
+            AnimationHelper.decompose(fromRowMajor(kb), tb, qb, sb);
+            AnimationSampler s = matrixSampler(ka, kb);
+            for (RotationInterpolation mode : RotationInterpolation.values()) {
+                for (float u : new float[] {0.25f, 0.5f, random.nextFloat()}) {
+                    // Keys at times 0 and 1: the blend parameter is the time itself.
+                    Quaternionf q = AnimationHelper.interpolate(mode, qa, qb, u, new Quaternionf());
+                    Matrix4f expected = AnimationHelper.compose(lerp(ta, tb, u), q, lerp(sa, sb, u), new Matrix4f());
+                    assertArrayEquals(rowMajor(expected), sample(s, u, mode, MATRIX), 0f,
+                            "pair " + pair + ", " + mode + " at " + u);
+                }
+            }
+        }
+    }
+
+    private static Quaternionf randomRotation(Random random) {
+        return axisAngle(360 * random.nextDouble(), random.nextGaussian(), random.nextGaussian(), random.nextGaussian());
+    }
+
+    /** The sampler's linear blend, a + u (b - a). */
+    private static Vector3f lerp(Vector3f a, Vector3f b, float u) {
+        return new Vector3f(a.x + u * (b.x - a.x), a.y + u * (b.y - a.y), a.z + u * (b.z - a.z));
+    }
+
     // --------------------------------------------------------------------- the sampler
+
+    @Test
+    void channelsKeyedAtDifferentTimesEachFindTheirOwnSegment() {
+        // Channels keyed at equal times share one key search (even from different arrays);
+        // between them, one keyed at other times must search its own keys. X: keys at 0, 1, 2;
+        // scale X: keys at 0, 4; Y: keys at 0, 1, 2 again.
+        KeyframeTrack x = track(new float[] {0, 1, 2}, new float[] {0, 10, 20}, 1, Interpolation.LINEAR);
+        KeyframeTrack sx = track(new float[] {0, 4}, new float[] {0, 4}, 1, Interpolation.LINEAR);
+        KeyframeTrack y = track(new float[] {0, 1, 2}, new float[] {0, 100, 200}, 1, Interpolation.LINEAR);
+        AnimationSampler s = sampler(channel(TRANSLATE, 0, x), channel(SCALE, 0, sx), channel(TRANSLATE, 1, y));
+        // 1.5: half way between the second and third keys of X and Y, 1.5/4 of the way for scale.
+        assertArrayEquals(new float[] {15, 150, 6}, sample(s, 1.5f, RotationInterpolation.SLERP, TRANSLATE), 0f);
+        assertEquals(1.5f, sample1(s, 1.5f, SCALE, 0));
+        // 3: X and Y hold their last keys, scale still blends.
+        assertArrayEquals(new float[] {20, 200, 6}, sample(s, 3, RotationInterpolation.SLERP, TRANSLATE), 0f);
+        assertEquals(3f, sample1(s, 3, SCALE, 0));
+        // Before every first key: the first keys.
+        assertArrayEquals(new float[] {0, 0, 6}, sample(s, -1, RotationInterpolation.SLERP, TRANSLATE), 0f);
+        assertEquals(0f, sample1(s, -1, SCALE, 0));
+    }
 
     @Test
     void nanTimeIsRefused() {

@@ -8,12 +8,16 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.skinlab.animation.MathAssertions.assertMatrixEquals;
 import static org.skinlab.animation.MathAssertions.rows;
 
+import java.util.Arrays;
+
 import org.joml.Matrix4f;
 import org.joml.Matrix4fc;
 import org.junit.jupiter.api.Test;
+import org.skinlab.collada.ColladaImporter;
 import org.skinlab.collada.Fixtures;
 import org.skinlab.model.Model;
 import org.skinlab.model.TransformElement;
+import org.skinlab.testing.TestPaths;
 import org.skinlab.skinning.SkinnedGeometry;
 
 /**
@@ -229,6 +233,49 @@ class SkeletonTest {
             assertEquals(mesh[3 * p + 2] + 5, geometry.positionArray()[q + 2], EPS, "z of position " + p);
         }
         assertFalse(geometry.windingMirrored(), "a rotation and a translation do not mirror");
+    }
+
+    @Test
+    void worldAndSkinningMatricesEqualJomlsProductsToTheBit() throws Exception {
+        // Evaluation multiplies on float arrays, in the order of JOML's Matrix4f.mul; so a pose of
+        // the walking humanoid (one <matrix> per node) and of this file (mixed stacks) must give
+        // JOML's own products root to leaf, and JOML's world * bind, exactly (== on each float,
+        // so only the sign of a zero may differ).
+        for (Model model : new Model[] {MODEL, ColladaImporter.read(TestPaths.asset("characters/humanoid-walk.dae"))}) {
+            Skeleton skeleton = Skeleton.of(model);
+            Pose pose = skeleton.newPose();
+            AnimationSampler sampler = new AnimationSampler(skeleton, model.clips().get(0));
+            SkinnedGeometry geometry = SkinnedGeometry.of(model.instances().get(0));
+            int[] jointNodes = geometry.jointNodeArray();
+            float[] bind = geometry.bindMatrixArray();
+            float[] palette = new float[12 * jointNodes.length];
+            for (float t : new float[] {0.1f, 0.37f, 0.5f, 0.93f}) {
+                sampler.sample(t, RotationInterpolation.SLERP, pose);
+                skeleton.evaluate(pose);
+                skeleton.skinningMatrices(pose, jointNodes, bind, palette);
+                Matrix4f[] world = new Matrix4f[skeleton.nodeCount()];
+                Matrix4f scratch = new Matrix4f();
+                for (int i = 0; i < world.length; i++) {
+                    Matrix4f local = new Matrix4f();
+                    for (int e = 0; e < model.node(i).transforms().size(); e++) {
+                        TransformElement.multiply(skeleton.kind(i, e), pose.values(), skeleton.valueOffset(i, e), local,
+                                scratch);
+                    }
+                    int p = skeleton.parent(i);
+                    world[i] = p < 0 ? local : new Matrix4f(world[p]).mul(local);
+                    float[] expected = world[i].get(new float[16]);
+                    float[] actual = pose.world(i, new Matrix4f()).get(new float[16]);
+                    assertArrayEquals(expected, actual, 0f, model.nodes().size() + " nodes: node " + i + " at " + t);
+                }
+                for (int j = 0; j < jointNodes.length; j++) {
+                    Matrix4f w = jointNodes[j] < 0 ? new Matrix4f() : new Matrix4f(world[jointNodes[j]]);
+                    float[] expected = new float[12];
+                    AnimationHelper.putRowMajor3x4(w.mul(new Matrix4f().set(bind, 16 * j)), expected, 0);
+                    assertArrayEquals(expected, Arrays.copyOfRange(palette, 12 * j, 12 * j + 12), 0f,
+                            model.nodes().size() + " nodes: joint " + j + " at " + t);
+                }
+            }
+        }
     }
 
     private static void assertRow12(float[] expected, float[] actual, int joint) {

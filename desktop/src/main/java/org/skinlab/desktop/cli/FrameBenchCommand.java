@@ -18,6 +18,7 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 import org.skinlab.model.MeshInstance;
 import org.skinlab.model.Model;
 import org.skinlab.skinning.NormalTransform;
+import org.skinlab.skinning.SkinnedModel;
 import org.skinlab.skinning.SkinningMethod;
 
 import picocli.CommandLine.Command;
@@ -75,6 +76,10 @@ public final class FrameBenchCommand implements Callable<Integer> {
             description = "timed frames per file and method, at least 5 (default: 3 for one file and method, else 1)")
     Double seconds;
 
+    @Option(names = "--palette-only",
+            description = "time only the joint palette (sample, skinning matrices, dual quaternions), no skinning")
+    boolean paletteOnly;
+
     @Option(names = "--json", description = "print one line of JSON per file and method")
     boolean json;
 
@@ -102,7 +107,7 @@ public final class FrameBenchCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         FrameBenchTable table = null;
-        if (!json && !single) {
+        if (!json && !single && !paletteOnly) {
             table = new FrameBenchTable(methods, inputs.stream().mapToInt(i -> i.name().length()).max().orElse(0));
             out.println(caption(warmup, timed));
             out.println();
@@ -121,6 +126,15 @@ public final class FrameBenchCommand implements Callable<Integer> {
                 continue;
             }
             if (input.needsSkin() && model.instances().stream().noneMatch(MeshInstance::isSkinned)) {
+                continue;
+            }
+            if (paletteOnly) {
+                try {
+                    PaletteBench.run(new SkinnedModel(model, model.clips().isEmpty() ? null : model.clips().get(0), rule),
+                            input.name(), warmupSeconds == null ? FIRST_WARMUP : warmup, timed, json, out);
+                } catch (JsonProcessingException e) {
+                    throw new IllegalStateException(e);
+                }
                 continue;
             }
             FrameBench bench = new FrameBench(model, rule);
