@@ -21,7 +21,8 @@ import org.skinlab.model.TransformElement;
  * them.
  *
  * <p>{@link #skinningMatrices} is the one place where skinning matrices are made:
- * {@code world(joint) * INV_BIND_MATRIX * BIND_SHAPE_MATRIX}.
+ * {@code world(joint) * bind}, with bind = INV_BIND_MATRIX for points already in bind space
+ * (see {@code SkinnedGeometry}): COLLADA's {@code world * INV_BIND_MATRIX * BIND_SHAPE_MATRIX}.
  *
  * <p>A skeleton is immutable and shared; all per-frame state lives in a {@link Pose}.
  */
@@ -224,7 +225,7 @@ public final class Skeleton {
     /**
      * Skinning matrices for one geometry's palette: per joint
      * {@code world(jointNodes[j]) * bindMatrices[j]}, where a bind matrix is
-     * INV_BIND_MATRIX * BIND_SHAPE_MATRIX (see {@code SkinnedGeometry}) and a node of -1 means no
+     * INV_BIND_MATRIX for points in bind space (see {@code SkinnedGeometry}) and a node of -1 means no
      * node (identity world, the bind-shape pseudo-joint). Bind matrices are affine (their bottom
      * rows are not read). Written as row-major 3x4 matrices, 12 floats per joint, the layout
      * skinning kernels read. The pose must have been evaluated.

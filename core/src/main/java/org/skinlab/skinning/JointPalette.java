@@ -21,7 +21,8 @@ import org.skinlab.animation.DualQuaternion;
  * joint's bind frame, as Blender's armature modifier does with "preserve volume" (its
  * {@code mat4_to_dquat} uses the bone's rest matrix), so that scaling a bone along its own axis
  * scales the skin about that bone. Concretely, with {@code B} the rigid part of the joint's bind
- * frame {@code inverse(INV_BIND * BIND_SHAPE)}: {@code X = M B} is the joint's posed frame;
+ * frame {@code inverse(bind)} (bind = INV_BIND, the points being in bind space; see
+ * {@code SkinnedGeometry}): {@code X = M B} is the joint's posed frame;
  * {@code X = [R|t] S0}; then {@code S = B S0 B^-1} and {@code D = [R|t] B^-1}. Joints whose posed
  * frame has unit columns (within 1e-4, Blender's threshold) and no reflection skip the split: S
  * is the identity and D = M.
@@ -57,7 +58,7 @@ public final class JointPalette {
 
     /**
      * @param bindMatrices per joint 16 floats column-major, the matrix that takes bind-shape
-     *                     coordinates into the joint's frame (INV_BIND * BIND_SHAPE)
+     *                     coordinates into the joint's frame (INV_BIND)
      */
     public JointPalette(float[] bindMatrices) {
         if (bindMatrices.length % 16 != 0) {
