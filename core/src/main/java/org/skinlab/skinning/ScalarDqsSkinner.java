@@ -80,20 +80,53 @@ public final class ScalarDqsSkinner extends AbstractSkinner {
         final float[] sc = palette.scales();
         final boolean scaled = palette.hasScale();
         final boolean exactNormals = normals == NormalTransform.INVERSE_TRANSPOSE;
-        final float[] b = blended.get();
         for (int i = from; i < to; i++) {
             int o = width * i;
-            blendDualQuaternion(dq, o, b);
+            int q = 8 * joints[o];
+            float w = weights[o];
+            float p0 = dq[q], p1 = dq[q + 1], p2 = dq[q + 2], p3 = dq[q + 3];
+            float r0 = w * p0, r1 = w * p1, r2 = w * p2, r3 = w * p3;
+            float d0 = w * dq[q + 4], d1 = w * dq[q + 5], d2 = w * dq[q + 6], d3 = w * dq[q + 7];
+            for (int k = 1; k < width; k++) {
+                q = 8 * joints[o + k];
+                w = Math.copySign(weights[o + k], p0 * dq[q] + p1 * dq[q + 1] + p2 * dq[q + 2] + p3 * dq[q + 3] + 0f);
+                r0 += w * dq[q];
+                r1 += w * dq[q + 1];
+                r2 += w * dq[q + 2];
+                r3 += w * dq[q + 3];
+                d0 += w * dq[q + 4];
+                d1 += w * dq[q + 5];
+                d2 += w * dq[q + 6];
+                d3 += w * dq[q + 7];
+            }
             int v = 3 * i;
             float px = positions[v], py = positions[v + 1], pz = positions[v + 2];
             float nx = restNormals[v], ny = restNormals[v + 1], nz = restNormals[v + 2];
             if (scaled) {
-                Frames.blendMatrices(sc, joints, weights, o, width, b, 8);
-                float s0 = b[8], s1 = b[9], s2 = b[10], s4 = b[12], s5 = b[13], s6 = b[14], s8 = b[16], s9 = b[17];
-                float s10 = b[18];
-                float qx = s0 * px + s1 * py + s2 * pz + b[11];
-                float qy = s4 * px + s5 * py + s6 * pz + b[15];
-                float qz = s8 * px + s9 * py + s10 * pz + b[19];
+                int s = 12 * joints[o];
+                w = weights[o];
+                float s0 = w * sc[s], s1 = w * sc[s + 1], s2 = w * sc[s + 2], s3 = w * sc[s + 3];
+                float s4 = w * sc[s + 4], s5 = w * sc[s + 5], s6 = w * sc[s + 6], s7 = w * sc[s + 7];
+                float s8 = w * sc[s + 8], s9 = w * sc[s + 9], s10 = w * sc[s + 10], s11 = w * sc[s + 11];
+                for (int k = 1; k < width; k++) {
+                    s = 12 * joints[o + k];
+                    w = weights[o + k];
+                    s0 += w * sc[s];
+                    s1 += w * sc[s + 1];
+                    s2 += w * sc[s + 2];
+                    s3 += w * sc[s + 3];
+                    s4 += w * sc[s + 4];
+                    s5 += w * sc[s + 5];
+                    s6 += w * sc[s + 6];
+                    s7 += w * sc[s + 7];
+                    s8 += w * sc[s + 8];
+                    s9 += w * sc[s + 9];
+                    s10 += w * sc[s + 10];
+                    s11 += w * sc[s + 11];
+                }
+                float qx = s0 * px + s1 * py + s2 * pz + s3;
+                float qy = s4 * px + s5 * py + s6 * pz + s7;
+                float qz = s8 * px + s9 * py + s10 * pz + s11;
                 px = qx;
                 py = qy;
                 pz = qz;
@@ -101,12 +134,14 @@ public final class ScalarDqsSkinner extends AbstractSkinner {
                 float my;
                 float mz;
                 if (exactNormals) {
-                    Frames.signedCofactor(b, 8, b, 20);
-                    mx = b[20] * nx + b[21] * ny + b[22] * nz;
-                    my = b[23] * nx + b[24] * ny + b[25] * nz;
-                    mz = b[26] * nx + b[27] * ny + b[28] * nz;
+                    float k00 = s5 * s10 - s9 * s6, k01 = s6 * s8 - s10 * s4, k02 = s4 * s9 - s8 * s5;
+                    mx = k00 * nx + k01 * ny + k02 * nz;
+                    my = (s9 * s2 - s1 * s10) * nx + (s10 * s0 - s2 * s8) * ny + (s8 * s1 - s0 * s9) * nz;
+                    mz = (s1 * s6 - s5 * s2) * nx + (s2 * s4 - s6 * s0) * ny + (s0 * s5 - s4 * s1) * nz;
                     float len2 = mx * mx + my * my + mz * mz;
-                    float inv = len2 > 0f ? (float) (1.0 / Math.sqrt(len2)) : 0f;
+                    // The sign of det S keeps normals outward under a mirroring scale part.
+                    float det = s0 * k00 + s1 * k01 + s2 * k02;
+                    float inv = len2 > 0f ? Math.copySign((float) (1.0 / Math.sqrt(len2)), det) : 0f;
                     mx *= inv;
                     my *= inv;
                     mz *= inv;
@@ -119,8 +154,9 @@ public final class ScalarDqsSkinner extends AbstractSkinner {
                 ny = my;
                 nz = mz;
             }
-            float rx = b[0], ry = b[1], rz = b[2], rw = b[3];
-            float dx = b[4], dy = b[5], dz = b[6], dw = b[7];
+            float inv = (float) (1.0 / Math.sqrt(r0 * r0 + r1 * r1 + r2 * r2 + r3 * r3));
+            float rx = r0 * inv, ry = r1 * inv, rz = r2 * inv, rw = r3 * inv;
+            float dx = d0 * inv, dy = d1 * inv, dz = d2 * inv, dw = d3 * inv;
             // t = 2 (rw d.xyz - dw r.xyz + r.xyz x d.xyz); v' = v + 2 r x (r x v + rw v) + t
             float tx = 2 * (rw * dx - dw * rx + (ry * dz - rz * dy));
             float ty = 2 * (rw * dy - dw * ry + (rz * dx - rx * dz));
@@ -140,10 +176,10 @@ public final class ScalarDqsSkinner extends AbstractSkinner {
             if (exactNormals) {
                 // Unit length like every exact normal (the rest normals of a file need not be).
                 float len2 = mx * mx + my * my + mz * mz;
-                float inv = len2 > 0f ? 1f / (float) Math.sqrt(len2) : 0f;
-                mx *= inv;
-                my *= inv;
-                mz *= inv;
+                float scale = len2 > 0f ? 1f / (float) Math.sqrt(len2) : 0f;
+                mx *= scale;
+                my *= scale;
+                mz *= scale;
             }
             outNormals[v] = mx;
             outNormals[v + 1] = my;

@@ -11,7 +11,6 @@ public final class ScalarLbsSkinner extends AbstractSkinner {
     private final int[] joints;
     private final float[] weights;
     private final int width;
-    private final ThreadLocal<float[]> blended = ThreadLocal.withInitial(() -> new float[12]);
 
     public ScalarLbsSkinner(SkinnedGeometry geometry, NormalTransform normals) {
         super(SkinningMethod.LBS, "scalar", geometry, normals);
@@ -25,16 +24,35 @@ public final class ScalarLbsSkinner extends AbstractSkinner {
     @Override
     public void skin(JointPalette palette, float[] outPositions, float[] outNormals, int from, int to) {
         final float[] mat = palette.matrices();
-        final float[] b = blended.get();
         final boolean exactNormals = normals == NormalTransform.INVERSE_TRANSPOSE;
         for (int i = from; i < to; i++) {
-            Frames.blendMatrices(mat, joints, weights, width * i, width, b, 0);
-            float b0 = b[0], b1 = b[1], b2 = b[2], b4 = b[4], b5 = b[5], b6 = b[6], b8 = b[8], b9 = b[9], b10 = b[10];
+            int o = width * i;
+            float w = weights[o];
+            int m = 12 * joints[o];
+            float b0 = w * mat[m], b1 = w * mat[m + 1], b2 = w * mat[m + 2], b3 = w * mat[m + 3];
+            float b4 = w * mat[m + 4], b5 = w * mat[m + 5], b6 = w * mat[m + 6], b7 = w * mat[m + 7];
+            float b8 = w * mat[m + 8], b9 = w * mat[m + 9], b10 = w * mat[m + 10], b11 = w * mat[m + 11];
+            for (int k = 1; k < width; k++) {
+                w = weights[o + k];
+                m = 12 * joints[o + k];
+                b0 += w * mat[m];
+                b1 += w * mat[m + 1];
+                b2 += w * mat[m + 2];
+                b3 += w * mat[m + 3];
+                b4 += w * mat[m + 4];
+                b5 += w * mat[m + 5];
+                b6 += w * mat[m + 6];
+                b7 += w * mat[m + 7];
+                b8 += w * mat[m + 8];
+                b9 += w * mat[m + 9];
+                b10 += w * mat[m + 10];
+                b11 += w * mat[m + 11];
+            }
             int v = 3 * i;
             float px = positions[v], py = positions[v + 1], pz = positions[v + 2];
-            outPositions[v] = b0 * px + b1 * py + b2 * pz + b[3];
-            outPositions[v + 1] = b4 * px + b5 * py + b6 * pz + b[7];
-            outPositions[v + 2] = b8 * px + b9 * py + b10 * pz + b[11];
+            outPositions[v] = b0 * px + b1 * py + b2 * pz + b3;
+            outPositions[v + 1] = b4 * px + b5 * py + b6 * pz + b7;
+            outPositions[v + 2] = b8 * px + b9 * py + b10 * pz + b11;
             float nx = restNormals[v], ny = restNormals[v + 1], nz = restNormals[v + 2];
             if (exactNormals) {
                 // Columns c0 = (b0 b4 b8), c1 = (b1 b5 b9), c2 = (b2 b6 b10); the inverse-transpose
@@ -62,15 +80,35 @@ public final class ScalarLbsSkinner extends AbstractSkinner {
     @Override
     public void skinFrames(JointPalette palette, float[] outFrames, int from, int to) {
         final float[] mat = palette.matrices();
-        final float[] b = blended.get();
         final boolean exactNormals = normals == NormalTransform.INVERSE_TRANSPOSE;
         for (int i = from; i < to; i++) {
-            Frames.blendMatrices(mat, joints, weights, width * i, width, b, 0);
+            int o = width * i;
+            float w = weights[o];
+            int m = 12 * joints[o];
+            float b0 = w * mat[m], b1 = w * mat[m + 1], b2 = w * mat[m + 2], b3 = w * mat[m + 3];
+            float b4 = w * mat[m + 4], b5 = w * mat[m + 5], b6 = w * mat[m + 6], b7 = w * mat[m + 7];
+            float b8 = w * mat[m + 8], b9 = w * mat[m + 9], b10 = w * mat[m + 10], b11 = w * mat[m + 11];
+            for (int k = 1; k < width; k++) {
+                w = weights[o + k];
+                m = 12 * joints[o + k];
+                b0 += w * mat[m];
+                b1 += w * mat[m + 1];
+                b2 += w * mat[m + 2];
+                b3 += w * mat[m + 3];
+                b4 += w * mat[m + 4];
+                b5 += w * mat[m + 5];
+                b6 += w * mat[m + 6];
+                b7 += w * mat[m + 7];
+                b8 += w * mat[m + 8];
+                b9 += w * mat[m + 9];
+                b10 += w * mat[m + 10];
+                b11 += w * mat[m + 11];
+            }
             int v = 3 * i;
             float px = positions[v], py = positions[v + 1], pz = positions[v + 2];
-            Frames.put(outFrames, Skinner.FRAME_FLOATS * i, exactNormals, b[0], b[1], b[2], b[4], b[5], b[6], b[8],
-                    b[9], b[10], b[0] * px + b[1] * py + b[2] * pz + b[3], b[4] * px + b[5] * py + b[6] * pz + b[7],
-                    b[8] * px + b[9] * py + b[10] * pz + b[11]);
+            Frames.put(outFrames, Skinner.FRAME_FLOATS * i, exactNormals, b0, b1, b2, b4, b5, b6, b8, b9, b10,
+                    b0 * px + b1 * py + b2 * pz + b3, b4 * px + b5 * py + b6 * pz + b7,
+                    b8 * px + b9 * py + b10 * pz + b11);
         }
     }
 }

@@ -25,26 +25,28 @@ import org.skinlab.skinning.SkinningMethod;
  * same arithmetic as {@link ScalarDqsSkinner} written once per lane.
  *
  * <p><b>Layout.</b> The constructor repacks the geometry into blocks of 8 points (AoSoA): px[8]
- * py[8] pz[8] nx[8] ny[8] nz[8] (48 floats), and per block and influence 8 weights and 8 joints
- * (char) in one stream each. A block starts at a point index that is a multiple of 8
- * ({@link #rangeAlignment()}); points of a range outside whole blocks go through the scalar kernel.
- * (One stream per influence measured 3-7% slower: more streams in flight at 1M points.)
+ * py[8] pz[8] nx[8] ny[8] nz[8] (48 floats), and per point its influences padded to 4, 6, 8 or
+ * more ({@link MatrixPasses#paddedWidth}): joints (char), weights, and the index of each
+ * influence's (pivot, joint) pair among the geometry's distinct pairs. A block starts at a point
+ * index that is a multiple of 8 ({@link #rangeAlignment()}); points of a range outside whole
+ * blocks go through the scalar kernel.
  *
- * <p><b>No gathers.</b> Per block and influence the 8 joints' dual quaternions are loaded as 8 rows
- * of 8 floats and transposed in registers (three stages of permute + blend, 48 operations), which
- * is cheaper than 8 gathers on the AMD machines we measured.
+ * <p><b>Blend.</b> Per frame, the antipodality sign of every distinct pair,
+ * {@code copySign(1, q_pivot . q_joint + 0)}, the scalar kernel's expression in its order (so
+ * both kernels flip the same terms, a dot of -0 included), into a small table. Per point, one
+ * joint's dual quaternion is one 8-lane load, so the blend is one load and one fused multiply-add
+ * per influence with the weight times its pair's sign; then 8 points' blends are transposed in
+ * registers (three stages of permute + blend, 48 operations) into lane vectors. This replaced a
+ * transpose per influence, with the sign taken by a lane compare against the transposed pivot
+ * (docs/benchmarks.md has both). Gathers cost about a cycle per lane on the AMD machines we
+ * measured and were 7x slower.
  *
  * <p><b>Passes.</b> C2 stops inlining calls of our own methods beyond a node budget (Vector API
  * methods are force-inlined), and a call that is not inlined boxes every vector; one loop doing
  * everything per block also measured 1.7x slower (register pressure). So the work for up to
- * {@link #CHUNK} blocks is cut into small loops that meet in a per-thread scratch array that stays
- * in L1: one for the first two influences, one per further influence (transpose, antipodality
- * sign, weighted sum), then one that normalises, rotates, translates and interleaves the lanes
- * back into x y z x y z ... (a loop with three transposes measured slower, these a little faster
- * than one loop per step).
- *
- * <p><b>Sign.</b> {@code copySign(w_k, q_0 . q_k + 0)} as a lane compare and blend: branch-free
- * like the scalar kernel and identical to it, a dot of -0 included.
+ * {@link #CHUNK} blocks is cut into small loops that meet in per-thread scratch arrays that stay
+ * in L1: the blend, the transpose, then one that normalises, rotates, translates and interleaves
+ * the lanes back into x y z x y z ...
  *
  * <p><b>Scale.</b> When the palette has a scale part this frame ({@link JointPalette#hasScale()})
  * each point's blended dual quaternion becomes a rigid matrix ({@link #rigidMatrices}), which is
@@ -53,7 +55,8 @@ import org.skinlab.skinning.SkinningMethod;
  * by {@code R} times S's signed cofactor. Without scale both {@link NormalTransform}s rotate the
  * normal; INVERSE_TRANSPOSE then scales it to unit length. {@link #skinFrames} takes the matrix route always.
  *
- * <p><b>Influences.</b> Any number: one scratch pass per influence beyond the second.
+ * <p><b>Influences.</b> Any number: written-out blends for up to 4, 6 and 8, then one scratch pass
+ * per influence beyond the eighth.
  */
 final class VectorDqsSkinner extends AbstractSkinner {
     static final int BLOCK = 8;
