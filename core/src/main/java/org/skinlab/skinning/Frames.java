@@ -29,15 +29,15 @@ final class Frames {
     }
 
     /**
-     * The normal matrix of the row-major 3x4 matrix at {@code a[ao]}: its cofactor matrix times the
-     * sign of its determinant, row-major 3x3 into {@code out[oo..oo+9)}.
+     * The normal matrix of the row-major 3x4 matrix at {@code a[ao]}: its cofactor matrix, times the
+     * sign of its determinant when {@code signed}, row-major 3x3 into {@code out[oo..oo+9)}.
      */
-    static void signedCofactor(float[] a, int ao, float[] out, int oo) {
+    static void signedCofactor(float[] a, int ao, boolean signed, float[] out, int oo) {
         float a00 = a[ao], a01 = a[ao + 1], a02 = a[ao + 2];
         float a10 = a[ao + 4], a11 = a[ao + 5], a12 = a[ao + 6];
         float a20 = a[ao + 8], a21 = a[ao + 9], a22 = a[ao + 10];
         float c00 = a11 * a22 - a21 * a12, c01 = a12 * a20 - a22 * a10, c02 = a10 * a21 - a20 * a11;
-        float s = Math.copySign(1f, a00 * c00 + a01 * c01 + a02 * c02);
+        float s = signed ? Math.copySign(1f, a00 * c00 + a01 * c01 + a02 * c02) : 1f;
         out[oo] = s * c00;
         out[oo + 1] = s * c01;
         out[oo + 2] = s * c02;
@@ -51,17 +51,17 @@ final class Frames {
 
     /**
      * Writes the frame at {@code o}: position {@code (px, py, pz)} and the normal matrix of the
-     * row-major linear part {@code a}: with {@code cofactor}, its cofactor matrix times the sign of
-     * its determinant (the inverse-transpose up to a positive factor; the sign keeps normals outward
-     * under a mirroring transform), otherwise {@code a} itself.
+     * row-major linear part {@code a}: with {@code cofactor}, its cofactor matrix, times the sign of
+     * its determinant when {@code signed} (the palette mirrors: see
+     * {@link JointPalette#mirrorsMatrices()}), otherwise {@code a} itself.
      */
-    static void put(float[] f, int o, boolean cofactor, float a00, float a01, float a02, float a10, float a11,
+    static void put(float[] f, int o, boolean cofactor, boolean signed, float a00, float a01, float a02, float a10, float a11,
             float a12, float a20, float a21, float a22, float px, float py, float pz) {
         if (cofactor) {
             float c00 = a11 * a22 - a21 * a12, c01 = a12 * a20 - a22 * a10, c02 = a10 * a21 - a20 * a11;
             float c10 = a21 * a02 - a01 * a22, c11 = a22 * a00 - a02 * a20, c12 = a20 * a01 - a00 * a21;
             float c20 = a01 * a12 - a11 * a02, c21 = a02 * a10 - a12 * a00, c22 = a00 * a11 - a10 * a01;
-            float s = Math.copySign(1f, a00 * c00 + a01 * c01 + a02 * c02);
+            float s = signed ? Math.copySign(1f, a00 * c00 + a01 * c01 + a02 * c02) : 1f;
             a00 = s * c00;
             a01 = s * c01;
             a02 = s * c02;

@@ -114,6 +114,35 @@ public final class JointPalette {
         return scales;
     }
 
+    /**
+     * Whether some joint's skinning matrix mirrors (a negative determinant of its linear part) in
+     * the current matrices. The kernels' exact normals then carry the sign of each blended
+     * matrix's determinant (the cofactor alone would turn normals inwards there); without a
+     * mirroring joint they use the cofactor as is, which keeps the common case free of that cost.
+     * Computed from {@link #matrices()} on each call (9 multiplications per joint).
+     */
+    public boolean mirrorsMatrices() {
+        return mirrors(matrices, joints);
+    }
+
+    /** As {@link #mirrorsMatrices()} for the DQS scale parts, after {@link #prepareDualQuaternions()}. */
+    public boolean mirrorsScales() {
+        return scaled && mirrors(scales, joints);
+    }
+
+    private static boolean mirrors(float[] m, int joints) {
+        for (int j = 0; j < joints; j++) {
+            int o = 12 * j;
+            float det = m[o] * (m[o + 5] * m[o + 10] - m[o + 9] * m[o + 6])
+                    + m[o + 1] * (m[o + 6] * m[o + 8] - m[o + 10] * m[o + 4])
+                    + m[o + 2] * (m[o + 4] * m[o + 9] - m[o + 8] * m[o + 5]);
+            if (det < 0f) {
+                return true;
+            }
+        }
+        return false;
+    }
+
     /** True when some joint has a scale part this frame (DQS must run its first phase). */
     public boolean hasScale() {
         return scaled;

@@ -80,6 +80,7 @@ public final class ScalarDqsSkinner extends AbstractSkinner {
         final float[] sc = palette.scales();
         final boolean scaled = palette.hasScale();
         final boolean exactNormals = normals == NormalTransform.INVERSE_TRANSPOSE;
+        final boolean mirror = exactNormals && palette.mirrorsScales();
         for (int i = from; i < to; i++) {
             int o = width * i;
             int q = 8 * joints[o];
@@ -140,7 +141,7 @@ public final class ScalarDqsSkinner extends AbstractSkinner {
                     mz = (s1 * s6 - s5 * s2) * nx + (s2 * s4 - s6 * s0) * ny + (s0 * s5 - s4 * s1) * nz;
                     float len2 = mx * mx + my * my + mz * mz;
                     // The sign of det S keeps normals outward under a mirroring scale part.
-                    float det = s0 * k00 + s1 * k01 + s2 * k02;
+                    float det = mirror ? s0 * k00 + s1 * k01 + s2 * k02 : 1f;
                     float inv = len2 > 0f ? Math.copySign((float) (1.0 / Math.sqrt(len2)), det) : 0f;
                     mx *= inv;
                     my *= inv;
@@ -193,6 +194,7 @@ public final class ScalarDqsSkinner extends AbstractSkinner {
         final float[] sc = palette.scales();
         final boolean scaled = palette.hasScale();
         final boolean exactNormals = normals == NormalTransform.INVERSE_TRANSPOSE;
+        final boolean mirror = exactNormals && palette.mirrorsScales();
         final float[] b = blended.get();
         for (int i = from; i < to; i++) {
             int o = width * i;
@@ -216,7 +218,7 @@ public final class ScalarDqsSkinner extends AbstractSkinner {
                 pz = qz;
                 int k = 20;
                 if (exactNormals) {
-                    Frames.signedCofactor(b, 8, b, 20);
+                    Frames.signedCofactor(b, 8, mirror, b, 20);
                 } else {
                     for (int row = 0; row < 3; row++) {
                         System.arraycopy(b, 8 + 4 * row, b, 20 + 3 * row, 3);
@@ -240,7 +242,7 @@ public final class ScalarDqsSkinner extends AbstractSkinner {
             float cx = ry * pz - rz * py + rw * px;
             float cy = rz * px - rx * pz + rw * py;
             float cz = rx * py - ry * px + rw * pz;
-            Frames.put(outFrames, Skinner.FRAME_FLOATS * i, false, n00, n01, n02, n10, n11, n12, n20, n21, n22,
+            Frames.put(outFrames, Skinner.FRAME_FLOATS * i, false, false, n00, n01, n02, n10, n11, n12, n20, n21, n22,
                     px + 2 * (ry * cz - rz * cy) + tx, py + 2 * (rz * cx - rx * cz) + ty,
                     pz + 2 * (rx * cy - ry * cx) + tz);
         }

@@ -25,6 +25,7 @@ public final class ScalarLbsSkinner extends AbstractSkinner {
     public void skin(JointPalette palette, float[] outPositions, float[] outNormals, int from, int to) {
         final float[] mat = palette.matrices();
         final boolean exactNormals = normals == NormalTransform.INVERSE_TRANSPOSE;
+        final boolean mirror = exactNormals && palette.mirrorsMatrices();
         for (int i = from; i < to; i++) {
             int o = width * i;
             float w = weights[o];
@@ -63,8 +64,9 @@ public final class ScalarLbsSkinner extends AbstractSkinner {
                 float rz = (b1 * b6 - b5 * b2) * nx + (b2 * b4 - b6 * b0) * ny + (b0 * b5 - b4 * b1) * nz;
                 float len2 = rx * rx + ry * ry + rz * rz;
                 // The cofactor is det times the inverse-transpose: under a mirroring blend (det < 0)
-                // it would turn the normal inwards, so the sign of det goes into the scale.
-                float det = b0 * k00 + b1 * k01 + b2 * k02;
+                // it would turn the normal inwards, so with a mirroring palette the sign of det goes
+                // into the scale.
+                float det = mirror ? b0 * k00 + b1 * k01 + b2 * k02 : 1f;
                 float inv = len2 > 0f ? Math.copySign((float) (1.0 / Math.sqrt(len2)), det) : 0f;
                 outNormals[v] = rx * inv;
                 outNormals[v + 1] = ry * inv;
@@ -81,6 +83,7 @@ public final class ScalarLbsSkinner extends AbstractSkinner {
     public void skinFrames(JointPalette palette, float[] outFrames, int from, int to) {
         final float[] mat = palette.matrices();
         final boolean exactNormals = normals == NormalTransform.INVERSE_TRANSPOSE;
+        final boolean mirror = exactNormals && palette.mirrorsMatrices();
         for (int i = from; i < to; i++) {
             int o = width * i;
             float w = weights[o];
@@ -106,7 +109,7 @@ public final class ScalarLbsSkinner extends AbstractSkinner {
             }
             int v = 3 * i;
             float px = positions[v], py = positions[v + 1], pz = positions[v + 2];
-            Frames.put(outFrames, Skinner.FRAME_FLOATS * i, exactNormals, b0, b1, b2, b4, b5, b6, b8, b9, b10,
+            Frames.put(outFrames, Skinner.FRAME_FLOATS * i, exactNormals, mirror, b0, b1, b2, b4, b5, b6, b8, b9, b10,
                     b0 * px + b1 * py + b2 * pz + b3, b4 * px + b5 * py + b6 * pz + b7,
                     b8 * px + b9 * py + b10 * pz + b11);
         }

@@ -234,10 +234,13 @@ final class MatrixPasses {
     /**
      * Frame records ({@link Skinner#skinFrames}) of points {@code [from, to)} from their matrices in
      * {@code acc} (from 0): the deformed position and, with {@code cofactor}, the matrix's cofactor
-     * times the sign of its determinant, else its linear part.
+     * (times the sign of its determinant when {@code signed}: the palette mirrors), else its linear
+     * part.
      */
-    static void frames(float[] acc, float[] positions, boolean cofactor, float[] out, int from, int to) {
+    static void frames(float[] acc, float[] positions, boolean cofactor, boolean signed, float[] out, int from,
+            int to) {
         final FloatVector one = FloatVector.broadcast(S, 1f);
+        final float lo = signed ? -1f : 1f; // +1: the clamp below always gives 1
         for (int i = from; i < to; i++) {
             int o = 16 * (i - from);
             FloatVector a = FloatVector.fromArray(S, acc, o);
@@ -258,7 +261,7 @@ final class MatrixPasses {
                 // det = c0 . (c1 x c2) = c1 . (c2 x c0): in lanes 0-2 and 4-6 after summing x, y, z
                 FloatVector d = a.mul(k01);
                 d = d.add(d.rearrange(YZX)).add(d.rearrange(ZXY));
-                FloatVector sign = d.mul(1e30f).max(-1f).min(1f); // sign(d), written out
+                FloatVector sign = d.mul(1e30f).max(lo).min(1f); // sign(d), written out
                 k01.mul(sign).intoArray(out, f);
                 // k2's upper half is c1 x c0 = -(c0 x c1): [p | k2] without a permutation
                 p.blend(k2.mul(sign).neg(), HI).intoArray(out, f + 8);
@@ -271,27 +274,28 @@ final class MatrixPasses {
 
     /**
      * Positions and normals of points {@code [from, to)} from their matrices in {@code acc} (from
-     * 0), written at {@code 3 * point}: the normal by the cofactor times the sign of the
-     * determinant and renormalised ({@code exact}), or by the linear part. Each point's results are
+     * 0), written at {@code 3 * point}: the normal by the cofactor (times the sign of the
+     * determinant when {@code signed}) and renormalised ({@code exact}), or by the linear part. Each point's results are
      * written with 8-lane stores whose tail spills into the next points; unless {@code spillOk}
      * (more points of the same call follow and overwrite it), the last two points go through
      * {@code tmp} (16 floats), so nothing is written outside the range. Exact normals still need
      * {@link #normalise}.
      */
-    static void points(float[] acc, float[] positions, float[] normals, boolean exact, float[] outPositions,
-            float[] outNormals, int from, int to, float[] tmp, boolean spillOk) {
+    static void points(float[] acc, float[] positions, float[] normals, boolean exact, boolean signed,
+            float[] outPositions, float[] outNormals, int from, int to, float[] tmp, boolean spillOk) {
         int end = spillOk ? to : Math.max(from, to - 2);
-        points(acc, positions, normals, exact, outPositions, outNormals, from, from, end, 0, 0);
+        float lo = signed ? -1f : 1f; // +1: the sign clamp always gives 1
+        points(acc, positions, normals, exact, lo, outPositions, outNormals, from, from, end, 0, 0);
         for (int i = end; i < to; i++) {
             int v = 3 * i;
-            points(acc, positions, normals, exact, tmp, tmp, from, i, i + 1, -v, 8 - v);
+            points(acc, positions, normals, exact, lo, tmp, tmp, from, i, i + 1, -v, 8 - v);
             System.arraycopy(tmp, 0, outPositions, v, 3);
             System.arraycopy(tmp, 8, outNormals, v, 3);
         }
     }
 
-    private static void points(float[] acc, float[] positions, float[] normals, boolean exact, float[] outPositions,
-            float[] outNormals, int base, int from, int end, int positionShift, int normalShift) {
+    private static void points(float[] acc, float[] positions, float[] normals, boolean exact, float lo,
+            float[] outPositions, float[] outNormals, int base, int from, int end, int positionShift, int normalShift) {
         final FloatVector one = FloatVector.broadcast(S, 1f);
         final FloatVector zero = FloatVector.zero(S);
         for (int i = from; i < end; i++) {
@@ -312,7 +316,7 @@ final class MatrixPasses {
                 FloatVector k2 = a.mul(aSwap.rearrange(YZX)).sub(a.rearrange(YZX).mul(aSwap)).rearrange(YZX);
                 FloatVector d = a.mul(k01);
                 d = d.add(d.rearrange(YZX)).add(d.rearrange(ZXY));
-                FloatVector sign = d.mul(1e30f).max(-1f).min(1f); // sign(d), written out
+                FloatVector sign = d.mul(1e30f).max(lo).min(1f); // sign(d), written out
                 FloatVector t = k01.mul(nxy);
                 t.add(t.rearrange(SWAP)).add(k2.mul(FloatVector.broadcast(S, normals[v + 2]))).mul(sign)
                         .intoArray(outNormals, v + normalShift);

@@ -182,6 +182,7 @@ final class VectorDqsSkinner extends AbstractSkinner {
             float[] acc = blended.get();
             float[] tmp = lastPoints.get();
             boolean exact = normals == NormalTransform.INVERSE_TRANSPOSE;
+            boolean mirror = exact && palette.mirrorsScales();
             int blocksPerPass = MatrixPasses.CHUNK / BLOCK;
             for (int b = firstBlock; b < endBlock; b += blocksPerPass) {
                 int e = Math.min(endBlock, b + blocksPerPass);
@@ -193,8 +194,8 @@ final class VectorDqsSkinner extends AbstractSkinner {
                 MatrixPasses.compose(r, acc, p1 - p0);
                 // Spilling past p1 is fine when points follow: the next pass or the scalar tail
                 // overwrites them.
-                MatrixPasses.points(acc, restPositions, restNormals, exact, outPositions, outNormals, p0, p1, tmp,
-                        to - p1 >= 2);
+                MatrixPasses.points(acc, restPositions, restNormals, exact, mirror, outPositions, outNormals, p0, p1,
+                        tmp, to - p1 >= 2);
             }
             if (exact) {
                 MatrixPasses.normalise(outNormals, BLOCK * firstBlock, BLOCK * endBlock);
@@ -230,6 +231,8 @@ final class VectorDqsSkinner extends AbstractSkinner {
         float[] s = scratch.get();
         float[] r = rigid.get();
         boolean scaled = palette.hasScale();
+        boolean exact = normals == NormalTransform.INVERSE_TRANSPOSE;
+        boolean mirror = exact && palette.mirrorsScales();
         float[] cs = scaled ? scaleColumns(palette) : null;
         float[] acc = blended.get();
         int blocksPerPass = MatrixPasses.CHUNK / BLOCK;
@@ -242,9 +245,9 @@ final class VectorDqsSkinner extends AbstractSkinner {
             if (scaled) {
                 MatrixPasses.blend(cs, passJoints, passWeights, passWidth, p0, p1, acc);
                 MatrixPasses.compose(r, acc, p1 - p0);
-                MatrixPasses.frames(acc, restPositions, normals == NormalTransform.INVERSE_TRANSPOSE, outFrames, p0, p1);
+                MatrixPasses.frames(acc, restPositions, exact, mirror, outFrames, p0, p1);
             } else {
-                MatrixPasses.frames(r, restPositions, false, outFrames, p0, p1);
+                MatrixPasses.frames(r, restPositions, false, false, outFrames, p0, p1);
             }
         }
         scalar.skinFrames(palette, outFrames, BLOCK * endBlock, to);

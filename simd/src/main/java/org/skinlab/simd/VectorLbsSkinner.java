@@ -4,10 +4,8 @@ import static org.skinlab.simd.Lanes.HI;
 import static org.skinlab.simd.Lanes.S;
 import static org.skinlab.simd.Lanes.SWAP;
 import static org.skinlab.simd.Lanes.YZX;
-import static org.skinlab.simd.Lanes.ZXY;
 
 import jdk.incubator.vector.FloatVector;
-import jdk.incubator.vector.VectorOperators;
 
 import org.skinlab.skinning.AbstractSkinner;
 import org.skinlab.skinning.JointPalette;
@@ -42,8 +40,10 @@ import org.skinlab.skinning.SkinningMethod;
  * fused loops below; more influences, and {@link #skinFrames}, go through {@link MatrixPasses}
  * (a blend pass written out for 4 or 8 influences, then the application to the points).
  *
- * <p>Exact normals carry the sign of the blended matrix's determinant (a mirroring blend would
- * otherwise turn them inwards), as in the scalar kernel.
+ * <p>When the palette mirrors ({@link JointPalette#mirrorsMatrices()}), exact normals carry the sign
+ * of the blended matrix's determinant (a mirroring blend would otherwise turn them inwards), as in
+ * the scalar kernel; such palettes take the passes, whose loops have that sign, and the fused
+ * loops stay without its cost.
  */
 final class VectorLbsSkinner extends AbstractSkinner {
     static final int INFLUENCES = 4;
@@ -126,25 +126,28 @@ final class VectorLbsSkinner extends AbstractSkinner {
         float[] c = columnMajor(palette);
         float[] acc = scratch.get();
         boolean cofactor = normals == NormalTransform.INVERSE_TRANSPOSE;
+        boolean mirror = cofactor && palette.mirrorsMatrices();
         for (int s = from; s < to; s += MatrixPasses.CHUNK) {
             int e = Math.min(to, s + MatrixPasses.CHUNK);
             blend(c, s, e, acc);
-            MatrixPasses.frames(acc, restPositions, cofactor, outFrames, s, e);
+            MatrixPasses.frames(acc, restPositions, cofactor, mirror, outFrames, s, e);
         }
     }
 
     @Override
     public void skin(JointPalette palette, float[] outPositions, float[] outNormals, int from, int to) {
         float[] c = columnMajor(palette);
-        if (!fused) {
+        boolean exact = normals == NormalTransform.INVERSE_TRANSPOSE;
+        boolean mirror = exact && palette.mirrorsMatrices();
+        // The fused loops leave out the determinant's sign, which only a mirroring palette needs.
+        if (!fused || mirror) {
             float[] acc = scratch.get();
             float[] tmp = lastPointScratch.get();
-            boolean exact = normals == NormalTransform.INVERSE_TRANSPOSE;
             for (int s = from; s < to; s += MatrixPasses.CHUNK) {
                 int e = Math.min(to, s + MatrixPasses.CHUNK);
                 blend(c, s, e, acc);
-                MatrixPasses.points(acc, restPositions, restNormals, exact, outPositions, outNormals, s, e, tmp,
-                        to - e >= 2);
+                MatrixPasses.points(acc, restPositions, restNormals, exact, mirror, outPositions, outNormals, s, e,
+                        tmp, to - e >= 2);
             }
             if (exact) {
                 MatrixPasses.normalise(outNormals, from, to);
@@ -285,12 +288,8 @@ final class VectorLbsSkinner extends AbstractSkinner {
             FloatVector k2 = a.mul(aSwap.rearrange(YZX)).sub(a.rearrange(YZX).mul(aSwap)).rearrange(YZX);
             FloatVector nxy = FloatVector.broadcast(S, pts[o + 3]).blend(FloatVector.broadcast(S, pts[o + 4]), HI);
             FloatVector t = k01.mul(nxy);
-            // det = c0 . (c1 x c2), summed over lanes 0-2: its sign keeps mirrored normals outward
-            // (as MatrixPasses' sign rule, written out: a call of ours would box every vector)
-            FloatVector d = a.mul(k01);
-            d = d.add(d.rearrange(YZX)).add(d.rearrange(ZXY));
             // Unnormalised here; normalise() does 8 points per square root and division.
-            t.add(t.rearrange(SWAP)).add(k2.mul(FloatVector.broadcast(S, pts[o + 5]))).mul(d.mul(1e30f).max(-1f).min(1f))
+            t.add(t.rearrange(SWAP)).add(k2.mul(FloatVector.broadcast(S, pts[o + 5])))
                     .intoArray(outNormals, 3 * i + normalShift);
         }
     }
