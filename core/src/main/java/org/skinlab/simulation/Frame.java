@@ -37,9 +37,13 @@ import org.skinlab.skinning.SkinningMethod;
  * {@link JointPalette} for this step, in the same layouts:
  * <ul>
  * <li>{@link #skinningMatrices(int)}: 12 floats per joint, a 3x4 affine matrix M stored by rows
- *     {@code r00 r01 r02 tx, r10 r11 r12 ty, r20 r21 r22 tz}; it takes a bind-shape point to its
- *     posed place, {@code p' = M (p, 1)}. LBS: {@code p' = (sum_k w_k M_(j_k)) (p, 1)}, the normal
- *     by the inverse transpose of the blend's 3x3 part. In GLSL, 12 floats per joint uploaded
+ *     {@code r00 r01 r02 tx, r10 r11 r12 ty, r20 r21 r22 tz}; it takes a point in bind space (the
+ *     geometry's {@link org.skinlab.skinning.SkinnedGeometry#positionArray()} and
+ *     {@link org.skinlab.skinning.SkinnedGeometry#normalArray()}, not the file's mesh positions:
+ *     the bind shape matrix, and a mirror common to all bind frames, are already applied there)
+ *     to its posed place, {@code p' = M (p, 1)}. LBS: {@code p' = (sum_k w_k M_(j_k)) (p, 1)},
+ *     the normal by the inverse transpose of the blend's 3x3 part (the cofactor matrix, times
+ *     the sign of its determinant when a joint mirrors). In GLSL, 12 floats per joint uploaded
  *     as-is to a {@code mat3x4} (three columns of four: the columns are our rows) apply as
  *     {@code vec4(p, 1.0) * m}.</li>
  * <li>{@link #dualQuaternions(int)}: 8 floats per joint, the unit dual quaternion {@code r + e d}
