@@ -41,12 +41,12 @@ final class SharedPositionSkinner extends AbstractSkinner {
      * <ul>
      * <li>LBS: directly {@code 2 + 2.2 k}, into a frame {@code 3 + 1.75 k}, derived from a frame 3.4
      *     (with the renormalisation of its normal);</li>
-     * <li>DQS: directly {@code 4 + 1.1 k} (8 points per lane group), into a frame {@code 7 + 1.1 k},
+     * <li>DQS: directly {@code 4 + 1.1 k} (8 points per lane group), into a frame {@code 6 + k},
      *     derived from a frame 2 (rotations keep unit normals).</li>
      * </ul>
      * So the stormtrooper (5174 points on 3275 positions, 6 influences) shares for LBS (measured
-     * 62 against 80 µs) but not for DQS (55 against 54 µs), the thesis' cowboy (4252 on 740) for
-     * both.
+     * 61 against 81 µs) and, narrowly, for DQS (48 against 53 µs), the thesis' cowboy (4252 on
+     * 740) for both by far.
      */
     static boolean pays(SkinningMethod method, int points, int positions, int influences) {
         double direct;
@@ -58,7 +58,7 @@ final class SharedPositionSkinner extends AbstractSkinner {
             derived = 3.4;
         } else {
             direct = 4 + 1.1 * influences;
-            frame = 7 + 1.1 * influences;
+            frame = 6 + influences;
             derived = 2;
         }
         return positions * frame + points * derived < points * direct;

@@ -32,9 +32,12 @@ class SharedPositionsTest {
             assertFalse(SharedPositionSkinner.pays(m, 951, 951, 4), m + ": one point per position");
             assertTrue(SharedPositionSkinner.pays(m, 10710, 1856, 3), m + ": Suzanne, 5.8 points per position");
         }
-        // The stormtrooper, 1.58 points per position: LBS's direct kernel is the dearer one.
+        // The stormtrooper, 1.58 points per position: both share, DQS narrowly; at 1.25 points per
+        // position DQS's cheap direct kernel wins, LBS still shares.
         assertTrue(SharedPositionSkinner.pays(SkinningMethod.LBS, 5174, 3275, 6));
-        assertFalse(SharedPositionSkinner.pays(SkinningMethod.DQS, 5174, 3275, 6));
+        assertTrue(SharedPositionSkinner.pays(SkinningMethod.DQS, 5174, 3275, 6));
+        assertFalse(SharedPositionSkinner.pays(SkinningMethod.DQS, 5000, 4000, 6));
+        assertTrue(SharedPositionSkinner.pays(SkinningMethod.LBS, 5000, 4000, 6));
     }
 
     @Test

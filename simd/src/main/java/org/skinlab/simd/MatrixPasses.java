@@ -205,19 +205,27 @@ final class MatrixPasses {
 
     /**
      * {@code acc_l = D_l acc_l} for {@code l < count}: each scratch matrix composed with the rigid
-     * matrix at the same place in {@code rigid} (both column-major 3x4 as above). Column c of the
-     * product is {@code R s_c} (plus {@code t} for the translation column).
+     * motion {@code D = [R | t]} of the frame at the same place in {@code rigid} (frame records of
+     * points {@code firstPoint + l}, as {@link Skinner#skinFrames} lays them out, N = R), t
+     * recovered as {@code p' - R p} from the frame's position and the point's rest position.
+     * Column c of the product is {@code R s_c} (plus {@code t} for the translation column).
      */
-    static void compose(float[] rigid, float[] acc, int count) {
+    static void compose(float[] rigid, float[] positions, int firstPoint, float[] acc, int count) {
         for (int l = 0; l < count; l++) {
             int o = 16 * l;
-            FloatVector r01 = FloatVector.fromArray(S, rigid, o);
-            FloatVector r2t = FloatVector.fromArray(S, rigid, o + 8);
-            // [R0 | R0], [R1 | R1], [R2 | R2], [0 | t]
-            FloatVector r0 = r01.blend(r01.rearrange(SWAP), HI);
-            FloatVector r1 = r01.rearrange(SWAP).blend(r01, HI);
-            FloatVector r2 = r2t.blend(r2t.rearrange(SWAP), HI);
-            FloatVector t = FloatVector.zero(S).blend(r2t, HI);
+            int v = 3 * (firstPoint + l);
+            FloatVector f01 = FloatVector.fromArray(S, rigid, o);
+            FloatVector fp2 = FloatVector.fromArray(S, rigid, o + 8);
+            // [R0 | R0], [R1 | R1], [R2 | R2], [p' | p']
+            FloatVector r0 = f01.blend(f01.rearrange(SWAP), HI);
+            FloatVector r1 = f01.rearrange(SWAP).blend(f01, HI);
+            FloatVector fp2Swap = fp2.rearrange(SWAP);
+            FloatVector r2 = fp2Swap.blend(fp2, HI);
+            FloatVector moved = fp2.blend(fp2Swap, HI);
+            FloatVector t = moved.sub(r0.mul(FloatVector.broadcast(S, positions[v]))
+                    .add(r1.mul(FloatVector.broadcast(S, positions[v + 1])))
+                    .add(r2.mul(FloatVector.broadcast(S, positions[v + 2]))));
+            t = FloatVector.zero(S).blend(t, HI);
             float[] s = acc;
             FloatVector s01 = r0.mul(FloatVector.broadcast(S, s[o]).blend(FloatVector.broadcast(S, s[o + 4]), HI))
                     .add(r1.mul(FloatVector.broadcast(S, s[o + 1]).blend(FloatVector.broadcast(S, s[o + 5]), HI)))

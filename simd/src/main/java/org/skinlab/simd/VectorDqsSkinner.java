@@ -49,7 +49,7 @@ import org.skinlab.skinning.SkinningMethod;
  * the lanes back into x y z x y z ...
  *
  * <p><b>Scale.</b> When the palette has a scale part this frame ({@link JointPalette#hasScale()})
- * each point's blended dual quaternion becomes a rigid matrix ({@link #rigidMatrices}), which is
+ * each point's blended dual quaternion becomes a rigid frame ({@link #rigidFrames}), which is
  * composed with the point's blended scale part and applied like an LBS matrix
  * ({@link MatrixPasses}): the two-phase split of the scalar kernel, {@code D (S p)}, with normals
  * by {@code R} times S's signed cofactor. Without scale both {@link NormalTransform}s rotate the
@@ -189,9 +189,9 @@ final class VectorDqsSkinner extends AbstractSkinner {
                 int p0 = BLOCK * b;
                 int p1 = BLOCK * e;
                 blendDualQuaternions(dq, sg, s, b, e);
-                rigidMatrices(s, r, b, e);
+                rigidFrames(s, r, b, e, p0);
                 MatrixPasses.blend(cs, passJoints, passWeights, passWidth, p0, p1, acc);
-                MatrixPasses.compose(r, acc, p1 - p0);
+                MatrixPasses.compose(r, restPositions, p0, acc, p1 - p0);
                 // Spilling past p1 is fine when points follow: the next pass or the scalar tail
                 // overwrites them.
                 MatrixPasses.points(acc, restPositions, restNormals, exact, mirror, outPositions, outNormals, p0, p1,
@@ -212,7 +212,7 @@ final class VectorDqsSkinner extends AbstractSkinner {
 
     /**
      * Frames of points {@code [from, to)}: per point the rigid matrix of its blended dual
-     * quaternion ({@link #rigidMatrices}), composed with its blended scale part when the palette
+     * quaternion ({@link #rigidFrames}), composed with its blended scale part when the palette
      * has one, then applied to the rest position; N is the rotation, or the rotation times the
      * scale part's signed cofactor (exact rule) or linear part.
      */
@@ -241,13 +241,13 @@ final class VectorDqsSkinner extends AbstractSkinner {
             int p0 = BLOCK * b;
             int p1 = BLOCK * e;
             blendDualQuaternions(dq, sg, s, b, e);
-            rigidMatrices(s, r, b, e);
             if (scaled) {
+                rigidFrames(s, r, b, e, p0);
                 MatrixPasses.blend(cs, passJoints, passWeights, passWidth, p0, p1, acc);
-                MatrixPasses.compose(r, acc, p1 - p0);
+                MatrixPasses.compose(r, restPositions, p0, acc, p1 - p0);
                 MatrixPasses.frames(acc, restPositions, exact, mirror, outFrames, p0, p1);
             } else {
-                MatrixPasses.frames(r, restPositions, false, false, outFrames, p0, p1);
+                rigidFrames(s, outFrames, b, e, 0);
             }
         }
         scalar.skinFrames(palette, outFrames, BLOCK * endBlock, to);
@@ -289,7 +289,7 @@ final class VectorDqsSkinner extends AbstractSkinner {
      * per iteration with the 8 floats of a joint's dual quaternion across the lanes (one load and
      * one fused multiply-add per influence, the weight times its pair's sign), then transposed
      * eight points at a time into the scratch's lane vectors (component c of the block's 8 points
-     * at {@code 64 (block - b) + 8 c}) for {@link #applyAndStore} and {@link #rigidMatrices}.
+     * at {@code 64 (block - b) + 8 c}) for {@link #applyAndStore} and {@link #rigidFrames}.
      */
     private void blendDualQuaternions(float[] dq, float[] sg, float[] s, int b, int e) {
         float[] rows = this.rows.get();
@@ -477,12 +477,15 @@ final class VectorDqsSkinner extends AbstractSkinner {
 
     /**
      * Per point of blocks {@code [firstBlock, endBlock)}: the blended dual quaternion of the
-     * scratch, normalised, as a rigid matrix {@code [R | t]} in {@link MatrixPasses}' layout (16
-     * floats per point from 0 in {@code out}): R from the rotation quaternion, t = 2 (w d - d_w r +
-     * r x d). The eight lane vectors of each half of the record are transposed into eight points'
-     * rows by the network {@link #transpose} uses (a transpose is its own inverse).
+     * scratch, normalised, as the point's frame ({@link org.skinlab.skinning.Skinner#skinFrames}):
+     * the rotation R as N's columns and the deformed position {@code p' = R p + t}, with R from the
+     * rotation quaternion and t = 2 (w d - d_w r + r x d), into {@code out} at
+     * {@code 16 (point - outFirstPoint)}. The eight lane vectors of each half of the record are
+     * transposed into eight points' rows by the network {@link #transpose} uses (a transpose is
+     * its own inverse). The scale phase recovers t from p' ({@link MatrixPasses#compose}).
      */
-    private void rigidMatrices(float[] s, float[] out, int firstBlock, int endBlock) {
+    private void rigidFrames(float[] s, float[] out, int firstBlock, int endBlock, int outFirstPoint) {
+        final float[] blk = points;
         final FloatVector one = FloatVector.broadcast(S, 1f);
         final FloatVector zero = FloatVector.zero(S);
         for (int b = firstBlock; b < endBlock; b++) {
@@ -503,9 +506,6 @@ final class VectorDqsSkinner extends AbstractSkinner {
             FloatVector tx = rw.mul(dx).sub(dw.mul(rx)).add(ry.mul(dz).sub(rz.mul(dy)));
             FloatVector ty = rw.mul(dy).sub(dw.mul(ry)).add(rz.mul(dx).sub(rx.mul(dz)));
             FloatVector tz = rw.mul(dz).sub(dw.mul(rz)).add(rx.mul(dy).sub(ry.mul(dx)));
-            tx = tx.add(tx);
-            ty = ty.add(ty);
-            tz = tz.add(tz);
             FloatVector xx = rx.mul(rx), yy = ry.mul(ry), zz = rz.mul(rz);
             FloatVector xy = rx.mul(ry), xz = rx.mul(rz), yz = ry.mul(rz);
             FloatVector xw = rx.mul(rw), yw = ry.mul(rw), zw = rz.mul(rw);
@@ -518,7 +518,14 @@ final class VectorDqsSkinner extends AbstractSkinner {
             FloatVector r02 = xz.add(yw).mul(2f);
             FloatVector r12 = yz.sub(xw).mul(2f);
             FloatVector r22 = one.sub(xx.add(yy).mul(2f));
-            int base = 16 * BLOCK * (b - firstBlock);
+            int fo = BLOCK_FLOATS * b;
+            FloatVector px = FloatVector.fromArray(S, blk, fo);
+            FloatVector py = FloatVector.fromArray(S, blk, fo + 8);
+            FloatVector pz = FloatVector.fromArray(S, blk, fo + 16);
+            FloatVector qx = r00.mul(px).add(r01.mul(py)).add(r02.mul(pz)).add(tx.add(tx));
+            FloatVector qy = r10.mul(px).add(r11.mul(py)).add(r12.mul(pz)).add(ty.add(ty));
+            FloatVector qz = r20.mul(px).add(r21.mul(py)).add(r22.mul(pz)).add(tz.add(tz));
+            int base = 16 * (BLOCK * b - outFirstPoint);
             // First halves of the records: [R0 0 | R1 0]; lanes are points, vectors components.
             FloatVector a0 = r00.blend(r10.rearrange(RIGHT1), ODD);
             FloatVector a1 = r00.rearrange(LEFT1).blend(r10, ODD);
@@ -544,15 +551,15 @@ final class VectorDqsSkinner extends AbstractSkinner {
             c2.rearrange(SWAP).blend(c6, HI).intoArray(out, base + 96);
             c3.blend(c7.rearrange(SWAP), HI).intoArray(out, base + 48);
             c3.rearrange(SWAP).blend(c7, HI).intoArray(out, base + 112);
-            // Second halves: [R2 0 | t 0].
-            a0 = r02.blend(r12.rearrange(RIGHT1), ODD);
-            a1 = r02.rearrange(LEFT1).blend(r12, ODD);
-            a2 = r22.blend(zero, ODD);
-            a3 = r22.rearrange(LEFT1).blend(zero, ODD);
-            a4 = tx.blend(ty.rearrange(RIGHT1), ODD);
-            a5 = tx.rearrange(LEFT1).blend(ty, ODD);
-            a6 = tz.blend(zero, ODD);
-            a7 = tz.rearrange(LEFT1).blend(zero, ODD);
+            // Second halves: [p' 0 | R2 0].
+            a0 = qx.blend(qy.rearrange(RIGHT1), ODD);
+            a1 = qx.rearrange(LEFT1).blend(qy, ODD);
+            a2 = qz.blend(zero, ODD);
+            a3 = qz.rearrange(LEFT1).blend(zero, ODD);
+            a4 = r02.blend(r12.rearrange(RIGHT1), ODD);
+            a5 = r02.rearrange(LEFT1).blend(r12, ODD);
+            a6 = r22.blend(zero, ODD);
+            a7 = r22.rearrange(LEFT1).blend(zero, ODD);
             c0 = a0.blend(a2.rearrange(RIGHT2), PAIRS);
             c2 = a0.rearrange(LEFT2).blend(a2, PAIRS);
             c1 = a1.blend(a3.rearrange(RIGHT2), PAIRS);
