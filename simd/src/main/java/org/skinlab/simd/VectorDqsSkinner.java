@@ -1,17 +1,8 @@
 package org.skinlab.simd;
 
-import static org.skinlab.simd.Lanes.HI;
-import static org.skinlab.simd.Lanes.LEFT1;
-import static org.skinlab.simd.Lanes.LEFT2;
-import static org.skinlab.simd.Lanes.ODD;
-import static org.skinlab.simd.Lanes.PAIRS;
-import static org.skinlab.simd.Lanes.RIGHT1;
-import static org.skinlab.simd.Lanes.RIGHT2;
 import static org.skinlab.simd.Lanes.S;
-import static org.skinlab.simd.Lanes.SWAP;
 
 import jdk.incubator.vector.FloatVector;
-import jdk.incubator.vector.VectorOperators;
 
 import org.skinlab.skinning.AbstractSkinner;
 import org.skinlab.skinning.JointPalette;
@@ -49,7 +40,7 @@ import org.skinlab.skinning.SkinningMethod;
  * the lanes back into x y z x y z ...
  *
  * <p><b>Scale.</b> When the palette has a scale part this frame ({@link JointPalette#hasScale()})
- * each point's blended dual quaternion becomes a rigid frame ({@link #rigidFrames}), which is
+ * each point's blended dual quaternion becomes a rigid frame ({@link DqsLanes#rigidFrames}), which is
  * composed with the point's blended scale part and applied like an LBS matrix
  * ({@link MatrixPasses}): the two-phase split of the scalar kernel, {@code D (S p)}, with normals
  * by {@code R} times S's signed cofactor. Without scale both {@link NormalTransform}s rotate the
@@ -59,12 +50,12 @@ import org.skinlab.skinning.SkinningMethod;
  * per influence beyond the eighth.
  */
 final class VectorDqsSkinner extends AbstractSkinner {
-    static final int BLOCK = 8;
+    static final int BLOCK = DqsLanes.BLOCK;
     /** Floats per block in {@link #points}: px py pz nx ny nz, 8 lanes each. */
-    private static final int BLOCK_FLOATS = 48;
+    private static final int BLOCK_FLOATS = DqsLanes.BLOCK_FLOATS;
     /** Blocks per pass; the scratch holds the blended dual quaternions, 64 floats per block. */
     static final int CHUNK = 32;
-    private static final int SCRATCH = 64;
+    private static final int SCRATCH = DqsLanes.SCRATCH;
 
     private final ScalarDqsSkinner scalar;
     private final int blockCount;
@@ -189,7 +180,7 @@ final class VectorDqsSkinner extends AbstractSkinner {
                 int p0 = BLOCK * b;
                 int p1 = BLOCK * e;
                 blendDualQuaternions(dq, sg, s, b, e);
-                rigidFrames(s, r, b, e, p0);
+                DqsLanes.rigidFrames(s, points, r, b, e, p0);
                 MatrixPasses.blend(cs, passJoints, passWeights, passWidth, p0, p1, acc);
                 MatrixPasses.compose(r, restPositions, p0, acc, p1 - p0);
                 // Spilling past p1 is fine when points follow: the next pass or the scalar tail
@@ -204,7 +195,7 @@ final class VectorDqsSkinner extends AbstractSkinner {
             for (int b = firstBlock; b < endBlock; b += CHUNK) {
                 int e = Math.min(endBlock, b + CHUNK);
                 blendDualQuaternions(dq, sg, s, b, e);
-                applyAndStore(s, outPositions, outNormals, b, e);
+                DqsLanes.applyAndStore(s, points, outPositions, outNormals, b, e);
             }
         }
         scalar.skin(palette, outPositions, outNormals, BLOCK * endBlock, to);
@@ -212,7 +203,7 @@ final class VectorDqsSkinner extends AbstractSkinner {
 
     /**
      * Frames of points {@code [from, to)}: per point the rigid matrix of its blended dual
-     * quaternion ({@link #rigidFrames}), composed with its blended scale part when the palette
+     * quaternion ({@link DqsLanes#rigidFrames}), composed with its blended scale part when the palette
      * has one, then applied to the rest position; N is the rotation, or the rotation times the
      * scale part's signed cofactor (exact rule) or linear part.
      */
@@ -242,12 +233,12 @@ final class VectorDqsSkinner extends AbstractSkinner {
             int p1 = BLOCK * e;
             blendDualQuaternions(dq, sg, s, b, e);
             if (scaled) {
-                rigidFrames(s, r, b, e, p0);
+                DqsLanes.rigidFrames(s, points, r, b, e, p0);
                 MatrixPasses.blend(cs, passJoints, passWeights, passWidth, p0, p1, acc);
                 MatrixPasses.compose(r, restPositions, p0, acc, p1 - p0);
                 MatrixPasses.frames(acc, restPositions, exact, mirror, outFrames, p0, p1);
             } else {
-                rigidFrames(s, outFrames, b, e, 0);
+                DqsLanes.rigidFrames(s, points, outFrames, b, e, 0);
             }
         }
         scalar.skinFrames(palette, outFrames, BLOCK * endBlock, to);
@@ -289,7 +280,7 @@ final class VectorDqsSkinner extends AbstractSkinner {
      * per iteration with the 8 floats of a joint's dual quaternion across the lanes (one load and
      * one fused multiply-add per influence, the weight times its pair's sign), then transposed
      * eight points at a time into the scratch's lane vectors (component c of the block's 8 points
-     * at {@code 64 (block - b) + 8 c}) for {@link #applyAndStore} and {@link #rigidFrames}.
+     * at {@code 64 (block - b) + 8 c}) for {@link DqsLanes#applyAndStore} and {@link DqsLanes#rigidFrames}.
      */
     private void blendDualQuaternions(float[] dq, float[] sg, float[] s, int b, int e) {
         float[] rows = this.rows.get();
@@ -315,7 +306,7 @@ final class VectorDqsSkinner extends AbstractSkinner {
                 }
                 break;
         }
-        transpose(rows, s, b, e);
+        DqsLanes.transpose(rows, s, b, e);
     }
 
     private void rows4(float[] dq, float[] sg, int p0, int p1, float[] rows) {
@@ -365,217 +356,6 @@ final class VectorDqsSkinner extends AbstractSkinner {
             x = FloatVector.fromArray(S, dq, jn[o + 6] << 3).fma(FloatVector.broadcast(S, wt[o + 6] * sg[pr[o + 6]]), x);
             x = FloatVector.fromArray(S, dq, jn[o + 7] << 3).fma(FloatVector.broadcast(S, wt[o + 7] * sg[pr[o + 7]]), x);
             x.intoArray(rows, 8 * (i - p0));
-        }
-    }
-
-    /**
-     * Per block of {@code [b, e)}: its 8 points' rows (8 floats each, from {@code 8 (point - 8b)})
-     * into 8 lane vectors of the scratch, component c at {@code 64 (block - b) + 8 c}. Stage 1
-     * interleaves pairs of points, stage 2 pairs of pairs, stage 3 the halves, each a permute and a
-     * blend per output.
-     */
-    private static void transpose(float[] rows, float[] s, int b, int e) {
-        for (int blk = 0; blk < e - b; blk++) {
-            int ro = 64 * blk;
-            FloatVector r0 = FloatVector.fromArray(S, rows, ro);
-            FloatVector r1 = FloatVector.fromArray(S, rows, ro + 8);
-            FloatVector r2 = FloatVector.fromArray(S, rows, ro + 16);
-            FloatVector r3 = FloatVector.fromArray(S, rows, ro + 24);
-            FloatVector r4 = FloatVector.fromArray(S, rows, ro + 32);
-            FloatVector r5 = FloatVector.fromArray(S, rows, ro + 40);
-            FloatVector r6 = FloatVector.fromArray(S, rows, ro + 48);
-            FloatVector r7 = FloatVector.fromArray(S, rows, ro + 56);
-            FloatVector a0 = r0.blend(r1.rearrange(RIGHT1), ODD);
-            FloatVector a1 = r0.rearrange(LEFT1).blend(r1, ODD);
-            FloatVector a2 = r2.blend(r3.rearrange(RIGHT1), ODD);
-            FloatVector a3 = r2.rearrange(LEFT1).blend(r3, ODD);
-            FloatVector a4 = r4.blend(r5.rearrange(RIGHT1), ODD);
-            FloatVector a5 = r4.rearrange(LEFT1).blend(r5, ODD);
-            FloatVector a6 = r6.blend(r7.rearrange(RIGHT1), ODD);
-            FloatVector a7 = r6.rearrange(LEFT1).blend(r7, ODD);
-            FloatVector c0 = a0.blend(a2.rearrange(RIGHT2), PAIRS);
-            FloatVector c2 = a0.rearrange(LEFT2).blend(a2, PAIRS);
-            FloatVector c1 = a1.blend(a3.rearrange(RIGHT2), PAIRS);
-            FloatVector c3 = a1.rearrange(LEFT2).blend(a3, PAIRS);
-            FloatVector c4 = a4.blend(a6.rearrange(RIGHT2), PAIRS);
-            FloatVector c6 = a4.rearrange(LEFT2).blend(a6, PAIRS);
-            FloatVector c5 = a5.blend(a7.rearrange(RIGHT2), PAIRS);
-            FloatVector c7 = a5.rearrange(LEFT2).blend(a7, PAIRS);
-            int so = SCRATCH * blk;
-            c0.blend(c4.rearrange(SWAP), HI).intoArray(s, so);
-            c0.rearrange(SWAP).blend(c4, HI).intoArray(s, so + 32);
-            c1.blend(c5.rearrange(SWAP), HI).intoArray(s, so + 8);
-            c1.rearrange(SWAP).blend(c5, HI).intoArray(s, so + 40);
-            c2.blend(c6.rearrange(SWAP), HI).intoArray(s, so + 16);
-            c2.rearrange(SWAP).blend(c6, HI).intoArray(s, so + 48);
-            c3.blend(c7.rearrange(SWAP), HI).intoArray(s, so + 24);
-            c3.rearrange(SWAP).blend(c7, HI).intoArray(s, so + 56);
-        }
-    }
-
-    /**
-     * Per block: normalise the blended dual quaternion by its real part, then
-     * {@code p' = p + 2 r x (r x p + w p) + t} with {@code t = 2 (w d - d_w r + r x d)}, and the
-     * normal rotated the same way; the x, y, z lanes are interleaved into the outputs (x y z x y z
-     * ..., see {@link Lanes}) with the store written out here, not called, to stay inlined.
-     */
-    private void applyAndStore(float[] s, float[] outPositions, float[] outNormals, int firstBlock, int endBlock) {
-        final float[] blk = points;
-        final FloatVector one = FloatVector.broadcast(S, 1f);
-        for (int b = firstBlock; b < endBlock; b++) {
-            int so = SCRATCH * (b - firstBlock);
-            int fo = BLOCK_FLOATS * b;
-            FloatVector x0 = FloatVector.fromArray(S, s, so);
-            FloatVector x1 = FloatVector.fromArray(S, s, so + 8);
-            FloatVector x2 = FloatVector.fromArray(S, s, so + 16);
-            FloatVector x3 = FloatVector.fromArray(S, s, so + 24);
-            FloatVector inv = one.div(x0.mul(x0).add(x1.mul(x1)).add(x2.mul(x2)).add(x3.mul(x3)).sqrt());
-            FloatVector rx = x0.mul(inv);
-            FloatVector ry = x1.mul(inv);
-            FloatVector rz = x2.mul(inv);
-            FloatVector rw = x3.mul(inv);
-            FloatVector dx = FloatVector.fromArray(S, s, so + 32).mul(inv);
-            FloatVector dy = FloatVector.fromArray(S, s, so + 40).mul(inv);
-            FloatVector dz = FloatVector.fromArray(S, s, so + 48).mul(inv);
-            FloatVector dw = FloatVector.fromArray(S, s, so + 56).mul(inv);
-            FloatVector tx = rw.mul(dx).sub(dw.mul(rx)).add(ry.mul(dz).sub(rz.mul(dy)));
-            FloatVector ty = rw.mul(dy).sub(dw.mul(ry)).add(rz.mul(dx).sub(rx.mul(dz)));
-            FloatVector tz = rw.mul(dz).sub(dw.mul(rz)).add(rx.mul(dy).sub(ry.mul(dx)));
-            FloatVector px = FloatVector.fromArray(S, blk, fo);
-            FloatVector py = FloatVector.fromArray(S, blk, fo + 8);
-            FloatVector pz = FloatVector.fromArray(S, blk, fo + 16);
-            FloatVector cx = ry.mul(pz).sub(rz.mul(py)).add(rw.mul(px));
-            FloatVector cy = rz.mul(px).sub(rx.mul(pz)).add(rw.mul(py));
-            FloatVector cz = rx.mul(py).sub(ry.mul(px)).add(rw.mul(pz));
-            FloatVector ex = ry.mul(cz).sub(rz.mul(cy));
-            FloatVector ey = rz.mul(cx).sub(rx.mul(cz));
-            FloatVector ez = rx.mul(cy).sub(ry.mul(cx));
-            FloatVector ox = px.add(ex.add(ex)).add(tx.add(tx));
-            FloatVector oy = py.add(ey.add(ey)).add(ty.add(ty));
-            FloatVector oz = pz.add(ez.add(ez)).add(tz.add(tz));
-            int out = 3 * BLOCK * b;
-            ox.rearrange(Lanes.X0).blend(oy.rearrange(Lanes.Y0), Lanes.MY0).blend(oz.rearrange(Lanes.Z0), Lanes.MZ0).intoArray(outPositions, out);
-            ox.rearrange(Lanes.X1).blend(oy.rearrange(Lanes.Y1), Lanes.MY1).blend(oz.rearrange(Lanes.Z1), Lanes.MZ1).intoArray(outPositions, out + 8);
-            ox.rearrange(Lanes.X2).blend(oy.rearrange(Lanes.Y2), Lanes.MY2).blend(oz.rearrange(Lanes.Z2), Lanes.MZ2).intoArray(outPositions, out + 16);
-            FloatVector nx = FloatVector.fromArray(S, blk, fo + 24);
-            FloatVector ny = FloatVector.fromArray(S, blk, fo + 32);
-            FloatVector nz = FloatVector.fromArray(S, blk, fo + 40);
-            cx = ry.mul(nz).sub(rz.mul(ny)).add(rw.mul(nx));
-            cy = rz.mul(nx).sub(rx.mul(nz)).add(rw.mul(ny));
-            cz = rx.mul(ny).sub(ry.mul(nx)).add(rw.mul(nz));
-            ex = ry.mul(cz).sub(rz.mul(cy));
-            ey = rz.mul(cx).sub(rx.mul(cz));
-            ez = rx.mul(cy).sub(ry.mul(cx));
-            ox = nx.add(ex.add(ex));
-            oy = ny.add(ey.add(ey));
-            oz = nz.add(ez.add(ez));
-            ox.rearrange(Lanes.X0).blend(oy.rearrange(Lanes.Y0), Lanes.MY0).blend(oz.rearrange(Lanes.Z0), Lanes.MZ0).intoArray(outNormals, out);
-            ox.rearrange(Lanes.X1).blend(oy.rearrange(Lanes.Y1), Lanes.MY1).blend(oz.rearrange(Lanes.Z1), Lanes.MZ1).intoArray(outNormals, out + 8);
-            ox.rearrange(Lanes.X2).blend(oy.rearrange(Lanes.Y2), Lanes.MY2).blend(oz.rearrange(Lanes.Z2), Lanes.MZ2).intoArray(outNormals, out + 16);
-        }
-    }
-
-    /**
-     * Per point of blocks {@code [firstBlock, endBlock)}: the blended dual quaternion of the
-     * scratch, normalised, as the point's frame ({@link org.skinlab.skinning.Skinner#skinFrames}):
-     * the rotation R as N's columns and the deformed position {@code p' = R p + t}, with R from the
-     * rotation quaternion and t = 2 (w d - d_w r + r x d), into {@code out} at
-     * {@code 16 (point - outFirstPoint)}. The eight lane vectors of each half of the record are
-     * transposed into eight points' rows by the network {@link #transpose} uses (a transpose is
-     * its own inverse). The scale phase recovers t from p' ({@link MatrixPasses#compose}).
-     */
-    private void rigidFrames(float[] s, float[] out, int firstBlock, int endBlock, int outFirstPoint) {
-        final float[] blk = points;
-        final FloatVector one = FloatVector.broadcast(S, 1f);
-        final FloatVector zero = FloatVector.zero(S);
-        for (int b = firstBlock; b < endBlock; b++) {
-            int so = SCRATCH * (b - firstBlock);
-            FloatVector x0 = FloatVector.fromArray(S, s, so);
-            FloatVector x1 = FloatVector.fromArray(S, s, so + 8);
-            FloatVector x2 = FloatVector.fromArray(S, s, so + 16);
-            FloatVector x3 = FloatVector.fromArray(S, s, so + 24);
-            FloatVector inv = one.div(x0.mul(x0).add(x1.mul(x1)).add(x2.mul(x2)).add(x3.mul(x3)).sqrt());
-            FloatVector rx = x0.mul(inv);
-            FloatVector ry = x1.mul(inv);
-            FloatVector rz = x2.mul(inv);
-            FloatVector rw = x3.mul(inv);
-            FloatVector dx = FloatVector.fromArray(S, s, so + 32).mul(inv);
-            FloatVector dy = FloatVector.fromArray(S, s, so + 40).mul(inv);
-            FloatVector dz = FloatVector.fromArray(S, s, so + 48).mul(inv);
-            FloatVector dw = FloatVector.fromArray(S, s, so + 56).mul(inv);
-            FloatVector tx = rw.mul(dx).sub(dw.mul(rx)).add(ry.mul(dz).sub(rz.mul(dy)));
-            FloatVector ty = rw.mul(dy).sub(dw.mul(ry)).add(rz.mul(dx).sub(rx.mul(dz)));
-            FloatVector tz = rw.mul(dz).sub(dw.mul(rz)).add(rx.mul(dy).sub(ry.mul(dx)));
-            FloatVector xx = rx.mul(rx), yy = ry.mul(ry), zz = rz.mul(rz);
-            FloatVector xy = rx.mul(ry), xz = rx.mul(rz), yz = ry.mul(rz);
-            FloatVector xw = rx.mul(rw), yw = ry.mul(rw), zw = rz.mul(rw);
-            FloatVector r00 = one.sub(yy.add(zz).mul(2f));
-            FloatVector r10 = xy.add(zw).mul(2f);
-            FloatVector r20 = xz.sub(yw).mul(2f);
-            FloatVector r01 = xy.sub(zw).mul(2f);
-            FloatVector r11 = one.sub(xx.add(zz).mul(2f));
-            FloatVector r21 = yz.add(xw).mul(2f);
-            FloatVector r02 = xz.add(yw).mul(2f);
-            FloatVector r12 = yz.sub(xw).mul(2f);
-            FloatVector r22 = one.sub(xx.add(yy).mul(2f));
-            int fo = BLOCK_FLOATS * b;
-            FloatVector px = FloatVector.fromArray(S, blk, fo);
-            FloatVector py = FloatVector.fromArray(S, blk, fo + 8);
-            FloatVector pz = FloatVector.fromArray(S, blk, fo + 16);
-            FloatVector qx = r00.mul(px).add(r01.mul(py)).add(r02.mul(pz)).add(tx.add(tx));
-            FloatVector qy = r10.mul(px).add(r11.mul(py)).add(r12.mul(pz)).add(ty.add(ty));
-            FloatVector qz = r20.mul(px).add(r21.mul(py)).add(r22.mul(pz)).add(tz.add(tz));
-            int base = 16 * (BLOCK * b - outFirstPoint);
-            // First halves of the records: [R0 0 | R1 0]; lanes are points, vectors components.
-            FloatVector a0 = r00.blend(r10.rearrange(RIGHT1), ODD);
-            FloatVector a1 = r00.rearrange(LEFT1).blend(r10, ODD);
-            FloatVector a2 = r20.blend(zero, ODD);
-            FloatVector a3 = r20.rearrange(LEFT1).blend(zero, ODD);
-            FloatVector a4 = r01.blend(r11.rearrange(RIGHT1), ODD);
-            FloatVector a5 = r01.rearrange(LEFT1).blend(r11, ODD);
-            FloatVector a6 = r21.blend(zero, ODD);
-            FloatVector a7 = r21.rearrange(LEFT1).blend(zero, ODD);
-            FloatVector c0 = a0.blend(a2.rearrange(RIGHT2), PAIRS);
-            FloatVector c2 = a0.rearrange(LEFT2).blend(a2, PAIRS);
-            FloatVector c1 = a1.blend(a3.rearrange(RIGHT2), PAIRS);
-            FloatVector c3 = a1.rearrange(LEFT2).blend(a3, PAIRS);
-            FloatVector c4 = a4.blend(a6.rearrange(RIGHT2), PAIRS);
-            FloatVector c6 = a4.rearrange(LEFT2).blend(a6, PAIRS);
-            FloatVector c5 = a5.blend(a7.rearrange(RIGHT2), PAIRS);
-            FloatVector c7 = a5.rearrange(LEFT2).blend(a7, PAIRS);
-            c0.blend(c4.rearrange(SWAP), HI).intoArray(out, base);
-            c0.rearrange(SWAP).blend(c4, HI).intoArray(out, base + 64);
-            c1.blend(c5.rearrange(SWAP), HI).intoArray(out, base + 16);
-            c1.rearrange(SWAP).blend(c5, HI).intoArray(out, base + 80);
-            c2.blend(c6.rearrange(SWAP), HI).intoArray(out, base + 32);
-            c2.rearrange(SWAP).blend(c6, HI).intoArray(out, base + 96);
-            c3.blend(c7.rearrange(SWAP), HI).intoArray(out, base + 48);
-            c3.rearrange(SWAP).blend(c7, HI).intoArray(out, base + 112);
-            // Second halves: [p' 0 | R2 0].
-            a0 = qx.blend(qy.rearrange(RIGHT1), ODD);
-            a1 = qx.rearrange(LEFT1).blend(qy, ODD);
-            a2 = qz.blend(zero, ODD);
-            a3 = qz.rearrange(LEFT1).blend(zero, ODD);
-            a4 = r02.blend(r12.rearrange(RIGHT1), ODD);
-            a5 = r02.rearrange(LEFT1).blend(r12, ODD);
-            a6 = r22.blend(zero, ODD);
-            a7 = r22.rearrange(LEFT1).blend(zero, ODD);
-            c0 = a0.blend(a2.rearrange(RIGHT2), PAIRS);
-            c2 = a0.rearrange(LEFT2).blend(a2, PAIRS);
-            c1 = a1.blend(a3.rearrange(RIGHT2), PAIRS);
-            c3 = a1.rearrange(LEFT2).blend(a3, PAIRS);
-            c4 = a4.blend(a6.rearrange(RIGHT2), PAIRS);
-            c6 = a4.rearrange(LEFT2).blend(a6, PAIRS);
-            c5 = a5.blend(a7.rearrange(RIGHT2), PAIRS);
-            c7 = a5.rearrange(LEFT2).blend(a7, PAIRS);
-            c0.blend(c4.rearrange(SWAP), HI).intoArray(out, base + 8);
-            c0.rearrange(SWAP).blend(c4, HI).intoArray(out, base + 72);
-            c1.blend(c5.rearrange(SWAP), HI).intoArray(out, base + 24);
-            c1.rearrange(SWAP).blend(c5, HI).intoArray(out, base + 88);
-            c2.blend(c6.rearrange(SWAP), HI).intoArray(out, base + 40);
-            c2.rearrange(SWAP).blend(c6, HI).intoArray(out, base + 104);
-            c3.blend(c7.rearrange(SWAP), HI).intoArray(out, base + 56);
-            c3.rearrange(SWAP).blend(c7, HI).intoArray(out, base + 120);
         }
     }
 }
