@@ -152,6 +152,21 @@ class VectorSkinnerTest {
         assertFramesAgree(vector(method, g, normals), palette, 0, 203);
     }
 
+    @ParameterizedTest(name = "{0} influences")
+    @CsvSource({"2", "4", "6", "9"})
+    void geometriesWithManyJointPairsAgreeWithScalar(int width) {
+        // 64 joints in random order over 2003 points: thousands of distinct (pivot, joint) pairs,
+        // beyond VectorDqsSkinner.LARGE_PAIR_TABLE, so its blend takes the sign-only table.
+        SkinnedGeometry g = Geometries.random(80 + width, 2003, width, 64);
+        JointPalette palette = Geometries.pose(g, 81, false);
+        Skinner k = vector(SkinningMethod.DQS, g, NormalTransform.INVERSE_TRANSPOSE);
+        assertAgrees(k, palette, 0, 2003);
+        assertAgrees(k, palette, 5, 1999);
+        assertFramesAgree(k, palette, 0, 2003);
+        JointPalette scaled = Geometries.pose(g, 82, true);
+        assertAgrees(k, scaled, 0, 2003);
+    }
+
     /** skinFrames of both kernels on [from, to), outputs compared (nothing written outside). */
     private static void assertFramesAgree(Skinner vector, JointPalette palette, int from, int to) {
         SkinnedGeometry g = vector.geometry();
