@@ -24,9 +24,11 @@ import org.skinlab.skinning.SkinningMethod;
  *
  * <p><b>Blend.</b> Per frame, the antipodality sign of every distinct pair,
  * {@code copySign(1, q_pivot . q_joint + 0)}, the scalar kernel's expression in its order (so
- * both kernels flip the same terms, a dot of -0 included), into a small table. Per point, one
- * joint's dual quaternion is one 8-lane load, so the blend is one load and one fused multiply-add
- * per influence with the weight times its pair's sign; then 8 points' blends are transposed in
+ * both kernels flip the same terms, a dot of -0 included), into a small table: with few pairs
+ * (characters: the stormtrooper has 237) the joint's dual quaternion already multiplied by the
+ * sign, 8 floats per pair; with many ({@link #LARGE_PAIR_TABLE}) the sign alone. Per point, a dual
+ * quaternion is one 8-lane load, so the blend is one load and one fused multiply-add per
+ * influence (the weight times the sign, with the sign-only table); then 8 points' blends are transposed in
  * registers (three stages of permute + blend, 48 operations) into lane vectors. This replaced a
  * transpose per influence, with the sign taken by a lane compare against the transposed pivot
  * (docs/benchmarks.md has both). Gathers cost about a cycle per lane on the AMD machines we
