@@ -285,9 +285,7 @@ final class VectorDqsSkinner extends AbstractSkinner {
             int q = pairOther[p] << 3;
             float sign = Math.copySign(1f, dq[a] * dq[q] + dq[a + 1] * dq[q + 1] + dq[a + 2] * dq[q + 2]
                     + dq[a + 3] * dq[q + 3] + 0f);
-            for (int c = 0; c < 8; c++) {
-                tab[(p << 3) + c] = sign * dq[q + c];
-            }
+            FloatVector.fromArray(S, dq, q).mul(sign).intoArray(tab, p << 3);
         }
         return tab;
     }
