@@ -24,11 +24,10 @@ import org.skinlab.skinning.SkinningMethod;
  *
  * <p><b>Blend.</b> Per frame, the antipodality sign of every distinct pair,
  * {@code copySign(1, q_pivot . q_joint + 0)}, the scalar kernel's expression in its order (so
- * both kernels flip the same terms, a dot of -0 included), into a small table: with few pairs
- * (characters: the stormtrooper has 237) the joint's dual quaternion already multiplied by the
- * sign, 8 floats per pair; with many ({@link #LARGE_PAIR_TABLE}) the sign alone. Per point, a dual
- * quaternion is one 8-lane load, so the blend is one load and one fused multiply-add per
- * influence (the weight times the sign, with the sign-only table); then 8 points' blends are transposed in
+ * both kernels flip the same terms, a dot of -0 included), times the joint's dual quaternion,
+ * into a table of 8 floats per pair (the stormtrooper has 237 pairs; the synthetic benchmark's 64
+ * joints in random order up to 4096). Per point, a signed dual quaternion is one 8-lane load, so
+ * the blend is one load and one fused multiply-add per influence; then 8 points' blends are transposed in
  * registers (three stages of permute + blend, 48 operations) into lane vectors. This replaced a
  * transpose per influence, with the sign taken by a lane compare against the transposed pivot
  * (docs/benchmarks.md has both). Gathers cost about a cycle per lane on the AMD machines we
@@ -78,15 +77,7 @@ final class VectorDqsSkinner extends AbstractSkinner {
     /** The distinct (pivot, other joint) pairs of the geometry. */
     private final char[] pairPivot;
     private final char[] pairOther;
-    /**
-     * Pairs beyond which the blend takes signs only ({@link #pairSigns}) instead of signed dual
-     * quaternions ({@link #signedPairs}): 512 pairs make a 16 KB signed table, a third of L1.
-     * Measured: the stormtrooper's 237 pairs 1.1x faster with the signed table; the synthetic
-     * benchmark's (64 joints in random order, up to 4096 pairs) 1.1x slower with it.
-     */
-    static final int LARGE_PAIR_TABLE = 512;
-    private final boolean signTableOnly;
-    /** Per pair, the other joint's signed dual quaternion, or only its sign (see above). */
+    /** Per pair, the other joint's dual quaternion times the pair's sign ({@link #signedPairs}). */
     private final ThreadLocal<float[]> signedTable;
     /** One pass of points' blended dual quaternions, 8 floats each. */
     private final ThreadLocal<float[]> rows = ThreadLocal.withInitial(() -> new float[8 * BLOCK * CHUNK]);
@@ -150,8 +141,7 @@ final class VectorDqsSkinner extends AbstractSkinner {
             pairOther[p] = (char) pairList.get(p)[1];
         }
         int pairCount = pairPivot.length;
-        signTableOnly = pairCount > LARGE_PAIR_TABLE;
-        signedTable = ThreadLocal.withInitial(() -> new float[(signTableOnly ? 1 : 8) * pairCount]);
+        signedTable = ThreadLocal.withInitial(() -> new float[8 * pairCount]);
         int size = 16 * jointCount;
         scaleColumns = ThreadLocal.withInitial(() -> new float[size]);
     }
@@ -175,7 +165,7 @@ final class VectorDqsSkinner extends AbstractSkinner {
         }
         scalar.skin(palette, outPositions, outNormals, from, BLOCK * firstBlock);
         float[] dq = palette.dualQuaternions();
-        float[] tab = signTableOnly ? pairSigns(dq) : signedPairs(dq);
+        float[] tab = signedPairs(dq);
         float[] s = scratch.get();
         if (palette.hasScale()) {
             // Two phases per point, as a matrix: the rigid part of the blended dual quaternion
@@ -191,7 +181,7 @@ final class VectorDqsSkinner extends AbstractSkinner {
                 int e = Math.min(endBlock, b + blocksPerPass);
                 int p0 = BLOCK * b;
                 int p1 = BLOCK * e;
-                blendDualQuaternions(dq, tab, s, b, e);
+                blendDualQuaternions(tab, s, b, e);
                 DqsLanes.rigidFrames(s, points, r, b, e, p0);
                 MatrixPasses.blend(cs, passJoints, passWeights, passWidth, p0, p1, acc);
                 MatrixPasses.compose(r, restPositions, p0, acc, p1 - p0);
@@ -206,7 +196,7 @@ final class VectorDqsSkinner extends AbstractSkinner {
         } else {
             for (int b = firstBlock; b < endBlock; b += CHUNK) {
                 int e = Math.min(endBlock, b + CHUNK);
-                blendDualQuaternions(dq, tab, s, b, e);
+                blendDualQuaternions(tab, s, b, e);
                 DqsLanes.applyAndStore(s, points, outPositions, outNormals, b, e);
             }
         }
@@ -230,7 +220,7 @@ final class VectorDqsSkinner extends AbstractSkinner {
         }
         scalar.skinFrames(palette, outFrames, from, BLOCK * firstBlock);
         float[] dq = palette.dualQuaternions();
-        float[] tab = signTableOnly ? pairSigns(dq) : signedPairs(dq);
+        float[] tab = signedPairs(dq);
         float[] s = scratch.get();
         float[] r = rigid.get();
         boolean scaled = palette.hasScale();
@@ -243,7 +233,7 @@ final class VectorDqsSkinner extends AbstractSkinner {
             int e = Math.min(endBlock, b + blocksPerPass);
             int p0 = BLOCK * b;
             int p1 = BLOCK * e;
-            blendDualQuaternions(dq, tab, s, b, e);
+            blendDualQuaternions(tab, s, b, e);
             if (scaled) {
                 DqsLanes.rigidFrames(s, points, r, b, e, p0);
                 MatrixPasses.blend(cs, passJoints, passWeights, passWidth, p0, p1, acc);
@@ -297,34 +287,10 @@ final class VectorDqsSkinner extends AbstractSkinner {
      * eight points at a time into the scratch's lane vectors (component c of the block's 8 points
      * at {@code 64 (block - b) + 8 c}) for {@link DqsLanes#applyAndStore} and {@link DqsLanes#rigidFrames}.
      */
-    private void blendDualQuaternions(float[] dq, float[] tab, float[] s, int b, int e) {
+    private void blendDualQuaternions(float[] tab, float[] s, int b, int e) {
         float[] rows = this.rows.get();
         int p0 = BLOCK * b;
         int p1 = BLOCK * e;
-        if (signTableOnly) {
-            switch (passWidth) {
-                case 4:
-                    rows4BySign(dq, tab, p0, p1, rows);
-                    break;
-                case 6:
-                    rows6BySign(dq, tab, p0, p1, rows);
-                    break;
-                default:
-                    rows8BySign(dq, tab, p0, p1, rows);
-                    for (int k = 8; k < passWidth; k++) {
-                        for (int i = p0; i < p1; i++) {
-                            int q = passWidth * i + k;
-                            int r = 8 * (i - p0);
-                            FloatVector.fromArray(S, dq, passJoints[q] << 3)
-                                    .fma(FloatVector.broadcast(S, passWeights[q] * tab[pairOf[q]]), FloatVector.fromArray(S, rows, r))
-                                    .intoArray(rows, r);
-                        }
-                    }
-                    break;
-            }
-            DqsLanes.transpose(rows, s, b, e);
-            return;
-        }
         switch (passWidth) {
             case 4:
                 rows4(tab, p0, p1, rows);
@@ -391,71 +357,6 @@ final class VectorDqsSkinner extends AbstractSkinner {
             x = FloatVector.fromArray(S, tab, pr[o + 5] << 3).fma(FloatVector.broadcast(S, wt[o + 5]), x);
             x = FloatVector.fromArray(S, tab, pr[o + 6] << 3).fma(FloatVector.broadcast(S, wt[o + 6]), x);
             x = FloatVector.fromArray(S, tab, pr[o + 7] << 3).fma(FloatVector.broadcast(S, wt[o + 7]), x);
-            x.intoArray(rows, 8 * (i - p0));
-        }
-    }
-
-    /**
-     * The blend for geometries with many distinct pairs ({@link #LARGE_PAIR_TABLE}): the joint's
-     * dual quaternion from the palette and the weight times the pair's sign from a table of signs
-     * only, whose 4 bytes per pair stay in L1 where a signed table of 32 bytes per pair would not.
-     */
-    private float[] pairSigns(float[] dq) {
-        float[] sg = signedTable.get();
-        for (int p = 0; p < pairPivot.length; p++) {
-            int a = pairPivot[p] << 3;
-            int q = pairOther[p] << 3;
-            sg[p] = Math.copySign(1f, dq[a] * dq[q] + dq[a + 1] * dq[q + 1] + dq[a + 2] * dq[q + 2]
-                    + dq[a + 3] * dq[q + 3] + 0f);
-        }
-        return sg;
-    }
-
-    private void rows4BySign(float[] dq, float[] sg, int p0, int p1, float[] rows) {
-        final char[] jn = passJoints;
-        final float[] wt = passWeights;
-        final int[] pr = pairOf;
-        for (int i = p0; i < p1; i++) {
-            int o = 4 * i;
-            FloatVector x = FloatVector.fromArray(S, dq, jn[o] << 3).mul(FloatVector.broadcast(S, wt[o]));
-            x = FloatVector.fromArray(S, dq, jn[o + 1] << 3).fma(FloatVector.broadcast(S, wt[o + 1] * sg[pr[o + 1]]), x);
-            x = FloatVector.fromArray(S, dq, jn[o + 2] << 3).fma(FloatVector.broadcast(S, wt[o + 2] * sg[pr[o + 2]]), x);
-            x = FloatVector.fromArray(S, dq, jn[o + 3] << 3).fma(FloatVector.broadcast(S, wt[o + 3] * sg[pr[o + 3]]), x);
-            x.intoArray(rows, 8 * (i - p0));
-        }
-    }
-
-    private void rows6BySign(float[] dq, float[] sg, int p0, int p1, float[] rows) {
-        final char[] jn = passJoints;
-        final float[] wt = passWeights;
-        final int[] pr = pairOf;
-        for (int i = p0; i < p1; i++) {
-            int o = 6 * i;
-            FloatVector x = FloatVector.fromArray(S, dq, jn[o] << 3).mul(FloatVector.broadcast(S, wt[o]));
-            x = FloatVector.fromArray(S, dq, jn[o + 1] << 3).fma(FloatVector.broadcast(S, wt[o + 1] * sg[pr[o + 1]]), x);
-            x = FloatVector.fromArray(S, dq, jn[o + 2] << 3).fma(FloatVector.broadcast(S, wt[o + 2] * sg[pr[o + 2]]), x);
-            x = FloatVector.fromArray(S, dq, jn[o + 3] << 3).fma(FloatVector.broadcast(S, wt[o + 3] * sg[pr[o + 3]]), x);
-            x = FloatVector.fromArray(S, dq, jn[o + 4] << 3).fma(FloatVector.broadcast(S, wt[o + 4] * sg[pr[o + 4]]), x);
-            x = FloatVector.fromArray(S, dq, jn[o + 5] << 3).fma(FloatVector.broadcast(S, wt[o + 5] * sg[pr[o + 5]]), x);
-            x.intoArray(rows, 8 * (i - p0));
-        }
-    }
-
-    private void rows8BySign(float[] dq, float[] sg, int p0, int p1, float[] rows) {
-        final char[] jn = passJoints;
-        final float[] wt = passWeights;
-        final int[] pr = pairOf;
-        final int w = passWidth;
-        for (int i = p0; i < p1; i++) {
-            int o = w * i;
-            FloatVector x = FloatVector.fromArray(S, dq, jn[o] << 3).mul(FloatVector.broadcast(S, wt[o]));
-            x = FloatVector.fromArray(S, dq, jn[o + 1] << 3).fma(FloatVector.broadcast(S, wt[o + 1] * sg[pr[o + 1]]), x);
-            x = FloatVector.fromArray(S, dq, jn[o + 2] << 3).fma(FloatVector.broadcast(S, wt[o + 2] * sg[pr[o + 2]]), x);
-            x = FloatVector.fromArray(S, dq, jn[o + 3] << 3).fma(FloatVector.broadcast(S, wt[o + 3] * sg[pr[o + 3]]), x);
-            x = FloatVector.fromArray(S, dq, jn[o + 4] << 3).fma(FloatVector.broadcast(S, wt[o + 4] * sg[pr[o + 4]]), x);
-            x = FloatVector.fromArray(S, dq, jn[o + 5] << 3).fma(FloatVector.broadcast(S, wt[o + 5] * sg[pr[o + 5]]), x);
-            x = FloatVector.fromArray(S, dq, jn[o + 6] << 3).fma(FloatVector.broadcast(S, wt[o + 6] * sg[pr[o + 6]]), x);
-            x = FloatVector.fromArray(S, dq, jn[o + 7] << 3).fma(FloatVector.broadcast(S, wt[o + 7] * sg[pr[o + 7]]), x);
             x.intoArray(rows, 8 * (i - p0));
         }
     }

@@ -156,7 +156,7 @@ class VectorSkinnerTest {
     @CsvSource({"2", "4", "6", "9"})
     void geometriesWithManyJointPairsAgreeWithScalar(int width) {
         // 64 joints in random order over 2003 points: thousands of distinct (pivot, joint) pairs,
-        // beyond VectorDqsSkinner.LARGE_PAIR_TABLE, so its blend takes the sign-only table.
+        // so the blend's signed pair table is large and indexed all over.
         SkinnedGeometry g = Geometries.random(80 + width, 2003, width, 64);
         JointPalette palette = Geometries.pose(g, 81, false);
         Skinner k = vector(SkinningMethod.DQS, g, NormalTransform.INVERSE_TRANSPOSE);
