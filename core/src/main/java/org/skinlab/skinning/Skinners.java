@@ -34,7 +34,13 @@ public final class Skinners {
      * {@link FrameExpansion}.
      */
     public static Skinner create(SkinningMethod method, SkinnedGeometry geometry, NormalTransform normals) {
-        SkinnedGeometry shared = sharedIfItPays(method, geometry);
+        return create(method, geometry, normals, PositionSharing.AUTO);
+    }
+
+    /** As {@link #create(SkinningMethod, SkinnedGeometry, NormalTransform)} with a choice of sharing. */
+    public static Skinner create(SkinningMethod method, SkinnedGeometry geometry, NormalTransform normals,
+            PositionSharing sharing) {
+        SkinnedGeometry shared = shared(method, geometry, sharing);
         if (shared != null) {
             return new SharedPositionSkinner(geometry, create(method, shared, normals), expansion(
                     geometry.frameOfPointArray(), SharedPositionSkinner.expansionNormals(method, normals, geometry)));
@@ -53,11 +59,19 @@ public final class Skinners {
         return scalar(method, geometry, normals);
     }
 
-    /** The geometry's positions when skinning each once pays for this method ({@link SharedPositionSkinner#pays}). */
-    private static SkinnedGeometry sharedIfItPays(SkinningMethod method, SkinnedGeometry geometry) {
+    /** The geometry's positions when they are to be skinned once, else null. */
+    private static SkinnedGeometry shared(SkinningMethod method, SkinnedGeometry geometry, PositionSharing sharing) {
         SkinnedGeometry shared = geometry.sharedPositions();
-        return shared != null && SharedPositionSkinner.pays(method, geometry.pointCount(), shared.pointCount(),
-                geometry.influencesPerPoint()) ? shared : null;
+        if (shared == null || sharing == PositionSharing.NEVER) {
+            return null;
+        }
+        return sharing == PositionSharing.ALWAYS || SharedPositionSkinner.pays(method, geometry.pointCount(),
+                shared.pointCount(), geometry.influencesPerPoint()) ? shared : null;
+    }
+
+    /** Whether a skinner from here skins each shared position once (then derives the points). */
+    public static boolean sharesPositions(Skinner skinner) {
+        return skinner instanceof SharedPositionSkinner;
     }
 
     /** The fastest {@link FrameExpansion} available for a mapping and rest normals. */
@@ -86,7 +100,7 @@ public final class Skinners {
      * positions and the scalar expansion).
      */
     public static Skinner scalar(SkinningMethod method, SkinnedGeometry geometry, NormalTransform normals) {
-        SkinnedGeometry shared = sharedIfItPays(method, geometry);
+        SkinnedGeometry shared = shared(method, geometry, PositionSharing.AUTO);
         if (shared != null) {
             return new SharedPositionSkinner(geometry, scalar(method, shared, normals), FrameExpansion.scalar(
                     geometry.frameOfPointArray(), SharedPositionSkinner.expansionNormals(method, normals, geometry)));

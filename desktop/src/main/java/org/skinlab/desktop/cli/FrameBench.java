@@ -7,9 +7,13 @@ import java.util.Set;
 import org.skinlab.animation.RotationInterpolation;
 import org.skinlab.animation.WrapMode;
 import org.skinlab.model.Model;
+import org.skinlab.skinning.JointPalette;
 import org.skinlab.skinning.NormalTransform;
+import org.skinlab.skinning.PositionSharing;
 import org.skinlab.skinning.SkinnedGeometry;
 import org.skinlab.skinning.SkinnedModel;
+import org.skinlab.skinning.Skinner;
+import org.skinlab.skinning.Skinners;
 import org.skinlab.skinning.SkinningMethod;
 
 /**
@@ -29,13 +33,22 @@ final class FrameBench {
     }
 
     private final SkinnedModel skinned;
+    /** Per geometry and method, the skinner this bench runs (its own choice of position sharing). */
+    private final Skinner[][] skinners;
     private final float[][] positions;
     private final float[][] normals;
     private final Shape shape;
 
-    FrameBench(Model model, NormalTransform rule) {
+    FrameBench(Model model, NormalTransform rule, PositionSharing sharing) {
         skinned = new SkinnedModel(model, model.clips().isEmpty() ? null : model.clips().get(0), rule);
         int n = skinned.geometries().size();
+        skinners = new Skinner[n][SkinningMethod.values().length];
+        for (int g = 0; g < n; g++) {
+            for (SkinningMethod m : SkinningMethod.values()) {
+                skinners[g][m.ordinal()] = sharing == PositionSharing.AUTO ? skinned.skinner(g, m)
+                        : Skinners.create(m, skinned.geometries().get(g), rule, sharing);
+            }
+        }
         positions = new float[n][];
         normals = new float[n][];
         int skinnedPositions = 0;
@@ -46,7 +59,7 @@ final class FrameBench {
             SkinnedGeometry geometry = skinned.geometries().get(g);
             positions[g] = new float[outputFloats(geometry)];
             normals[g] = new float[outputFloats(geometry)];
-            skinnedPositions += positionsSkinned(geometry);
+            skinnedPositions += positionsSkinned(geometry, skinners[g]);
             vertices += geometry.vertexCount();
             joints += geometry.jointCount();
             influences = Math.max(influences, geometry.influencesPerPoint());
@@ -54,14 +67,18 @@ final class FrameBench {
         shape = new Shape(skinnedPositions, vertices, joints, influences);
     }
 
-    // What SkinnedGeometry offers about a frame's work, in one place: a geometry that shares
-    // positions deforms each of its positions once and derives the render vertices from them;
-    // otherwise every point (render vertices, then unused positions) is skinned on its own.
-
-    /** How many points one frame of this geometry deforms with the joints' blend. */
-    static int positionsSkinned(SkinnedGeometry geometry) {
-        SkinnedGeometry shared = geometry.sharedPositions();
-        return shared != null ? shared.pointCount() : geometry.pointCount();
+    /**
+     * How many points one frame of this geometry deforms with the joints' blend: its positions when
+     * a method's skinner skins each position once (then the render vertices are derived from them),
+     * otherwise every point (render vertices, then unused positions).
+     */
+    static int positionsSkinned(SkinnedGeometry geometry, Skinner[] skinners) {
+        for (Skinner s : skinners) {
+            if (Skinners.sharesPositions(s)) {
+                return geometry.sharedPositions().pointCount();
+            }
+        }
+        return geometry.pointCount();
     }
 
     /** The floats of each output array of {@link SkinnedModel#skin}. */
@@ -81,7 +98,7 @@ final class FrameBench {
     String kernel(SkinningMethod method) {
         Set<String> names = new LinkedHashSet<>();
         for (int g = 0; g < positions.length; g++) {
-            names.add(skinned.skinner(g, method).implementation());
+            names.add(skinners[g][method.ordinal()].implementation());
         }
         return names.isEmpty() ? "none" : String.join("+", names);
     }
@@ -114,7 +131,8 @@ final class FrameBench {
         float t = skinned.sampler().clipTime(frame / 60.0, WrapMode.LOOP);
         skinned.pose(t, RotationInterpolation.SLERP);
         for (int g = 0; g < positions.length; g++) {
-            skinned.skin(g, method, positions[g], normals[g]);
+            JointPalette palette = method == SkinningMethod.DQS ? skinned.preparePalette(g) : skinned.palette(g);
+            skinners[g][method.ordinal()].skinAll(palette, positions[g], normals[g]);
         }
     }
 }

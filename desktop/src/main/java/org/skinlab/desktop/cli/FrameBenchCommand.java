@@ -18,6 +18,7 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 import org.skinlab.model.MeshInstance;
 import org.skinlab.model.Model;
 import org.skinlab.skinning.NormalTransform;
+import org.skinlab.skinning.PositionSharing;
 import org.skinlab.skinning.SkinnedModel;
 import org.skinlab.skinning.SkinningMethod;
 
@@ -76,6 +77,11 @@ public final class FrameBenchCommand implements Callable<Integer> {
             description = "timed frames per file and method, at least 5 (default: 3 for one file and method, else 1)")
     Double seconds;
 
+    @Option(names = "--share-positions", paramLabel = "auto|always|never",
+            description = "skin each position shared by several render vertices once: where it pays (what the"
+                    + " runtime does), always, or never (default: ${DEFAULT-VALUE})")
+    String sharePositions = "auto";
+
     @Option(names = "--palette-only",
             description = "time only the joint palette (sample, skinning matrices, dual quaternions), no skinning")
     boolean paletteOnly;
@@ -96,6 +102,12 @@ public final class FrameBenchCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         NormalTransform rule = parseNormals();
+        PositionSharing sharing;
+        try {
+            sharing = PositionSharing.fromKey(sharePositions);
+        } catch (IllegalArgumentException e) {
+            throw usage("--share-positions: " + e.getMessage());
+        }
         List<Input> inputs = inputs();
         List<SkinningMethod> methods = parseMethods(inputs.size());
         boolean single = inputs.size() == 1 && methods.size() == 1;
@@ -137,7 +149,7 @@ public final class FrameBenchCommand implements Callable<Integer> {
                 }
                 continue;
             }
-            FrameBench bench = new FrameBench(model, rule);
+            FrameBench bench = new FrameBench(model, rule, sharing);
             List<FrameBench.Timing> timings = new ArrayList<>();
             for (SkinningMethod m : methods) {
                 double w = warmupSeconds == null && warmed.add(m) ? Math.max(warmup, FIRST_WARMUP) : warmup;

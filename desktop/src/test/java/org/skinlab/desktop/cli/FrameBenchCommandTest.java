@@ -18,6 +18,10 @@ import org.skinlab.collada.ColladaImporter;
 import org.skinlab.model.MeshInstance;
 import org.skinlab.model.Model;
 import org.skinlab.skinning.SkinnedGeometry;
+import org.skinlab.skinning.SkinningMethod;
+import org.skinlab.skinning.Skinners;
+import org.skinlab.skinning.PositionSharing;
+import org.skinlab.skinning.NormalTransform;
 
 /**
  * {@code skinlab bench frame}: the structure of its outputs (two lines, table, JSON Lines) and
@@ -48,6 +52,14 @@ class FrameBenchCommandTest {
 
     /** The counts of the table and JSON, computed here from the model's geometries. */
     private static List<Integer> shape(Path file) throws Exception {
+        return shape(file, PositionSharing.AUTO);
+    }
+
+    /**
+     * The counts with a choice of sharing: a geometry whose skinners (either method) skin each
+     * position once deforms its positions, otherwise its points.
+     */
+    private static List<Integer> shape(Path file, PositionSharing sharing) throws Exception {
         Model model = ColladaImporter.read(file);
         int positions = 0;
         int vertices = 0;
@@ -55,7 +67,11 @@ class FrameBenchCommandTest {
         int influences = 0;
         for (MeshInstance i : model.instances()) {
             SkinnedGeometry g = SkinnedGeometry.of(i);
-            positions += FrameBench.positionsSkinned(g);
+            boolean shares = false;
+            for (SkinningMethod m : SkinningMethod.values()) {
+                shares |= Skinners.sharesPositions(Skinners.create(m, g, NormalTransform.INVERSE_TRANSPOSE, sharing));
+            }
+            positions += shares ? g.positionCount() : g.pointCount();
             vertices += g.vertexCount();
             joints += g.jointCount();
             influences = Math.max(influences, g.influencesPerPoint());
@@ -212,6 +228,24 @@ class FrameBenchCommandTest {
     }
 
     @Test
+    void sharePositionsChoosesTheRoute() throws Exception {
+        // The bend cylinder: 1118 render vertices on 1024 positions, where sharing does not pay.
+        Path bend = Cli.root().resolve("assets/cylinders/cylinder-bend.dae");
+        String[] expectedKernel = {"vector-256", "vector-256, each position once (vector-256 expansion)", "vector-256"};
+        PositionSharing[] sharings = {PositionSharing.AUTO, PositionSharing.ALWAYS, PositionSharing.NEVER};
+        for (int s = 0; s < sharings.length; s++) {
+            Cli r = bench(bend.toString(), "--method", "both", "--share-positions", sharings[s].key());
+            assertEquals(ExitCodes.OK, r.status, r::toString);
+            List<String> row = cells(r.out.split("\n")[4]);
+            assertEquals(shape(bend, sharings[s]), row.subList(1, 5).stream().map(Integer::valueOf).toList(),
+                    sharings[s].key());
+            assertEquals(expectedKernel[s], row.get(5), sharings[s].key());
+        }
+        assertEquals(List.of(1024, 1118), shape(bend, PositionSharing.ALWAYS).subList(0, 2));
+        assertEquals(List.of(1118, 1118), shape(bend, PositionSharing.NEVER).subList(0, 2));
+    }
+
+    @Test
     void usageErrorsComeBeforeAnyMeasurement() {
         Cli r = bench("no-such-file.dae");
         assertEquals(ExitCodes.USAGE, r.status, r::toString);
@@ -220,7 +254,8 @@ class FrameBenchCommandTest {
         assertEquals(ExitCodes.USAGE, r.status, r::toString);
         assertEquals("", r.out, "nothing measured");
         for (String[] bad : new String[][] {{"--method", "xyz"}, {"--normals", "flat"}, {"--seconds", "-1"},
-            {"--warmup-seconds", "NaN"}, {"--all-corpus", "--corpus", dir.resolve("absent").toString()}}) {
+            {"--warmup-seconds", "NaN"}, {"--all-corpus", "--corpus", dir.resolve("absent").toString()},
+            {"--share-positions", "sometimes"}}) {
             List<String> args = new ArrayList<>(List.of(Cli.defaultAsset().toString()));
             args.addAll(List.of(bad));
             r = Cli.run(concat(List.of("bench", "frame"), args));
