@@ -1,0 +1,45 @@
+package org.skinlab.desktop.render;
+
+import org.joml.Matrix4f;
+import org.joml.Vector3f;
+import org.skinlab.skinning.SkinningMethod;
+
+/**
+ * What one draw of a model shows: camera, placement, where the skinning runs and with which
+ * method, the view, the instance grid. Mutable and reused every frame (the render loop allocates
+ * nothing); owned by the render thread.
+ */
+public final class DrawSettings {
+    /** How colours are chosen. */
+    public enum View {
+        /** Materials, textures and light. */
+        SHADED,
+        /** Colour by the weight of {@link DrawSettings#selectedJoint}. */
+        WEIGHTS,
+        /** Colour by the distance between the LBS and the DQS position of each vertex. */
+        DIFFERENCE
+    }
+
+    public final Matrix4f viewProjection = new Matrix4f();
+    /** Upright and unit fix and placement (ModelFraming). */
+    public final Matrix4f model = new Matrix4f();
+    public final Vector3f eye = new Vector3f();
+    /** Skin in the vertex shader from the palette; false draws the frame's CPU-skinned mesh. */
+    public boolean gpuSkinning = true;
+    /** The method the GPU skins with (CPU-skinned frames carry their own). */
+    public SkinningMethod method = SkinningMethod.LBS;
+    public View view = View.SHADED;
+    /** The palette joint the weight view shows. */
+    public int selectedJoint;
+    /** The value at the top of the colour map: weight 1, or a distance in model units. */
+    public float scalarFull = 1f;
+    public int instances = 1;
+    /** Distance between instances in the grid, in world units. */
+    public float spacing = 1f;
+    public boolean wireframe;
+
+    /** Instances per row of the grid: about square. */
+    public int columns() {
+        return Math.max(1, (int) Math.ceil(Math.sqrt(instances)));
+    }
+}

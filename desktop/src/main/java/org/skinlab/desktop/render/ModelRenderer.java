@@ -1,0 +1,181 @@
+package org.skinlab.desktop.render;
+
+import static org.lwjgl.opengl.GL33C.*;
+
+import java.nio.FloatBuffer;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.function.ToIntFunction;
+
+import org.lwjgl.system.MemoryStack;
+import org.skinlab.model.Image;
+import org.skinlab.model.Material;
+import org.skinlab.model.MaterialBinding;
+import org.skinlab.model.MeshInstance;
+import org.skinlab.model.MeshPart;
+import org.skinlab.model.Texture;
+import org.skinlab.simulation.Frame;
+import org.skinlab.skinning.SkinnedGeometry;
+import org.skinlab.skinning.SkinningMethod;
+
+/**
+ * Draws the geometries of one model from {@link Frame}s: uploads a frame once (palette, and the
+ * CPU-skinned mesh when it has one) and draws it any number of times (split view, instances) with
+ * the skinning shader. Everything it draws comes from the one frame given, so no draw mixes two
+ * simulation steps.
+ */
+public final class ModelRenderer implements AutoCloseable {
+    /** One run of triangles with its material, resolved once. */
+    private record PartDraw(long byteOffset, int indexCount, float[] diffuse, int texture) {
+    }
+
+    private final SkinningShader shader;
+    private final List<GpuGeometry> geometries = new ArrayList<>();
+    private final PartDraw[][] parts;
+    private long uploadedSequence = Long.MIN_VALUE;
+    private Frame uploadedFrame;
+
+    /**
+     * @param shader   the skinning program (shared between models)
+     * @param textures the GL texture of an image, 0 when it has none (a texture cache)
+     */
+    public ModelRenderer(SkinningShader shader, List<SkinnedGeometry> geometries, ToIntFunction<Image> textures) {
+        this.shader = shader;
+        parts = new PartDraw[geometries.size()][];
+        for (int g = 0; g < geometries.size(); g++) {
+            GpuGeometry gpu = new GpuGeometry(geometries.get(g));
+            this.geometries.add(gpu);
+            parts[g] = resolveParts(gpu, textures);
+        }
+    }
+
+    private static PartDraw[] resolveParts(GpuGeometry gpu, ToIntFunction<Image> textures) {
+        List<MeshPart> meshParts = gpu.parts();
+        MeshInstance instance = gpu.instance();
+        if (meshParts.isEmpty()) {
+            return new PartDraw[] {new PartDraw(0, gpu.indexCount(), Material.DEFAULT.diffuse(), 0)};
+        }
+        PartDraw[] result = new PartDraw[meshParts.size()];
+        for (int i = 0; i < result.length; i++) {
+            MeshPart part = meshParts.get(i);
+            MaterialBinding binding = instance == null || part.material() == null ? null
+                    : instance.material(part.material());
+            Material material = binding == null ? Material.DEFAULT : binding.material();
+            float[] diffuse = material.diffuse().clone();
+            diffuse[3] = Math.min(diffuse[3], material.opacity());
+            Texture texture = material.baseTexture();
+            int id = texture != null && gpu.hasUv() ? textures.applyAsInt(texture.image()) : 0;
+            if (id != 0) {
+                // A texture modulates white: the file's diffuse colour is then usually a placeholder.
+                diffuse[0] = diffuse[1] = diffuse[2] = 1f;
+            }
+            result[i] = new PartDraw(12L * part.firstTriangle(), 3 * part.triangleCount(), diffuse, id);
+        }
+        return result;
+    }
+
+    /** Uploads {@code frame} unless it is the one uploaded last. */
+    public void upload(Frame frame) {
+        if (frame == uploadedFrame && frame.sequence() == uploadedSequence) {
+            return;
+        }
+        for (int g = 0; g < geometries.size(); g++) {
+            geometries.get(g).upload(frame, g);
+        }
+        uploadedFrame = frame;
+        uploadedSequence = frame.sequence();
+    }
+
+    /**
+     * Draws the frame last {@link #upload uploaded}. With {@code s.gpuSkinning} false, the
+     * CPU-skinned positions of that frame are drawn (the caller checks the frame has them).
+     */
+    public void draw(DrawSettings s) {
+        shader.use();
+        try (MemoryStack stack = MemoryStack.stackPush()) {
+            FloatBuffer m = stack.mallocFloat(16);
+            glUniformMatrix4fv(shader.viewProjection, false, s.viewProjection.get(m));
+            glUniformMatrix4fv(shader.model, false, s.model.get(m));
+        }
+        glUniform3f(shader.eye, s.eye.x, s.eye.y, s.eye.z);
+        glUniform1i(shader.skinning, !s.gpuSkinning ? 0 : s.method == SkinningMethod.DQS ? 2 : 1);
+        glUniform1i(shader.compare, s.view == DrawSettings.View.DIFFERENCE ? 1 : 0);
+        glUniform1i(shader.selectedJoint, s.view == DrawSettings.View.WEIGHTS ? s.selectedJoint : -1);
+        glUniform1i(shader.viewMode, s.view.ordinal());
+        glUniform1f(shader.scalarFull, s.scalarFull);
+        glUniform1i(shader.columns, s.columns());
+        glUniform1f(shader.spacing, s.spacing);
+        glUniform1i(shader.flat, 0);
+        drawAll(s, false);
+        if (s.wireframe) {
+            glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+            glEnable(GL_POLYGON_OFFSET_LINE);
+            glPolygonOffset(-1f, -1f);
+            glUniform1i(shader.flat, 1);
+            glUniform4f(shader.flatColor, 0.05f, 0.05f, 0.08f, 0.6f);
+            drawAll(s, true);
+            glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+            glDisable(GL_POLYGON_OFFSET_LINE);
+        }
+        glBindVertexArray(0);
+    }
+
+    private void drawAll(DrawSettings s, boolean flat) {
+        for (int g = 0; g < geometries.size(); g++) {
+            GpuGeometry gpu = geometries.get(g);
+            gpu.bind(s.gpuSkinning);
+            PaletteBuffers p = gpu.palette();
+            glUniform1i(shader.influences, gpu.influences());
+            glUniform1i(shader.hasScale, p.hasScale() ? 1 : 0);
+            glUniform1i(shader.matricesMirror, p.matricesMirror() ? 1 : 0);
+            glUniform1i(shader.scalesMirror, p.scalesMirror() ? 1 : 0);
+            for (PartDraw part : parts[g]) {
+                if (!flat) {
+                    float[] c = part.diffuse();
+                    glUniform4f(shader.diffuse, c[0], c[1], c[2], c[3]);
+                    glUniform1i(shader.hasTexture, part.texture() != 0 ? 1 : 0);
+                    glBindTexture(GL_TEXTURE_2D, part.texture());
+                }
+                glDrawElementsInstanced(GL_TRIANGLES, part.indexCount(), GL_UNSIGNED_INT, part.byteOffset(),
+                        Math.max(1, s.instances));
+            }
+        }
+    }
+
+    public int geometryCount() {
+        return geometries.size();
+    }
+
+    /** Vertices drawn per instance. */
+    public int vertexCount() {
+        int n = 0;
+        for (GpuGeometry g : geometries) {
+            n += g.vertexCount();
+        }
+        return n;
+    }
+
+    /** The most influences the shader reads for any geometry (4 or 8). */
+    public int shaderInfluences() {
+        int k = 4;
+        for (GpuGeometry g : geometries) {
+            k = Math.max(k, g.influences());
+        }
+        return k;
+    }
+
+    /** Vertices whose influences the shader's cap cut (weights renormalised). */
+    public int cappedVertices() {
+        int n = 0;
+        for (GpuGeometry g : geometries) {
+            n += g.cappedPoints();
+        }
+        return n;
+    }
+
+    @Override
+    public void close() {
+        geometries.forEach(GpuGeometry::close);
+        geometries.clear();
+    }
+}

@@ -1,0 +1,94 @@
+package org.skinlab.desktop.render;
+
+import static org.lwjgl.opengl.GL33C.*;
+
+import org.skinlab.simulation.Frame;
+
+/**
+ * One geometry's joint palette on the GPU: skinning matrices, dual quaternions and scale parts of
+ * a {@link Frame}, each in a texture buffer of RGBA32F texels (3, 2 and 3 texels per joint), so
+ * any number of joints fits where a uniform array would stop at a few hundred. The frame's arrays
+ * go up as they are: their layouts already are the shader's.
+ */
+final class PaletteBuffers implements AutoCloseable {
+    /** Texture units the skinning shader samples the palette from. */
+    static final int MATRIX_UNIT = 1;
+    static final int DUAL_QUATERNION_UNIT = 2;
+    static final int SCALE_UNIT = 3;
+
+    private final int[] buffers = new int[3];
+    private final int[] textures = new int[3];
+    private boolean hasScale;
+    private boolean matricesMirror;
+    private boolean scalesMirror;
+
+    PaletteBuffers(int joints) {
+        int[] floatsPerJoint = {12, 8, 12};
+        glGenBuffers(buffers);
+        glGenTextures(textures);
+        for (int i = 0; i < 3; i++) {
+            glBindBuffer(GL_TEXTURE_BUFFER, buffers[i]);
+            glBufferData(GL_TEXTURE_BUFFER, 4L * floatsPerJoint[i] * Math.max(1, joints), GL_STREAM_DRAW);
+            glBindTexture(GL_TEXTURE_BUFFER, textures[i]);
+            glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32F, buffers[i]);
+        }
+        glBindBuffer(GL_TEXTURE_BUFFER, 0);
+        glBindTexture(GL_TEXTURE_BUFFER, 0);
+    }
+
+    /** Uploads geometry {@code g}'s palette of {@code frame}. */
+    void upload(Frame frame, int g) {
+        glBindBuffer(GL_TEXTURE_BUFFER, buffers[0]);
+        glBufferSubData(GL_TEXTURE_BUFFER, 0, frame.skinningMatrices(g));
+        glBindBuffer(GL_TEXTURE_BUFFER, buffers[1]);
+        glBufferSubData(GL_TEXTURE_BUFFER, 0, frame.dualQuaternions(g));
+        glBindBuffer(GL_TEXTURE_BUFFER, buffers[2]);
+        glBufferSubData(GL_TEXTURE_BUFFER, 0, frame.scales(g));
+        glBindBuffer(GL_TEXTURE_BUFFER, 0);
+        hasScale = frame.hasScale(g);
+        matricesMirror = mirrors(frame.skinningMatrices(g), frame.jointCount(g));
+        scalesMirror = hasScale && mirrors(frame.scales(g), frame.jointCount(g));
+    }
+
+    /** Whether some joint's 3x3 part has a negative determinant (then normals need its sign). */
+    private static boolean mirrors(float[] m, int joints) {
+        for (int j = 0; j < joints; j++) {
+            int o = 12 * j;
+            double det = m[o] * ((double) m[o + 5] * m[o + 10] - (double) m[o + 6] * m[o + 9])
+                    - m[o + 1] * ((double) m[o + 4] * m[o + 10] - (double) m[o + 6] * m[o + 8])
+                    + m[o + 2] * ((double) m[o + 4] * m[o + 9] - (double) m[o + 5] * m[o + 8]);
+            if (det < 0) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    void bind() {
+        glActiveTexture(GL_TEXTURE0 + MATRIX_UNIT);
+        glBindTexture(GL_TEXTURE_BUFFER, textures[0]);
+        glActiveTexture(GL_TEXTURE0 + DUAL_QUATERNION_UNIT);
+        glBindTexture(GL_TEXTURE_BUFFER, textures[1]);
+        glActiveTexture(GL_TEXTURE0 + SCALE_UNIT);
+        glBindTexture(GL_TEXTURE_BUFFER, textures[2]);
+        glActiveTexture(GL_TEXTURE0);
+    }
+
+    boolean hasScale() {
+        return hasScale;
+    }
+
+    boolean matricesMirror() {
+        return matricesMirror;
+    }
+
+    boolean scalesMirror() {
+        return scalesMirror;
+    }
+
+    @Override
+    public void close() {
+        glDeleteTextures(textures);
+        glDeleteBuffers(buffers);
+    }
+}
