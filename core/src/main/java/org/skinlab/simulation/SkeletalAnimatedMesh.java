@@ -370,6 +370,33 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
         notifyListener(published);
     }
 
+    /**
+     * Moves the playback to {@code seconds} after the clip's start (wrapped into the clip, or held
+     * at its ends, as the wrap mode says). Allowed while the simulation thread runs: its next step
+     * poses there, and since a stopped animation is re-posed every step, a paused timeline
+     * scrubber shows each position at once. By hand, {@code seek(t)} then {@code step(0)}
+     * publishes the frame at {@code t}.
+     *
+     * @throws IllegalArgumentException for a NaN or infinite time
+     */
+    public void seek(double seconds) {
+        if (Double.isNaN(seconds) || Double.isInfinite(seconds)) {
+            throw new IllegalArgumentException("seek to " + seconds + " s (need a finite time)");
+        }
+        stepLock.lock();
+        try {
+            playback = sampler.wrapElapsed(seconds, config.settings().wrapMode());
+            playbackTime = playback;
+        } finally {
+            stepLock.unlock();
+        }
+    }
+
+    /** The clip's length in seconds (0 at rest, without a clip). */
+    public double clipDuration() {
+        return clip == null ? 0.0 : clip.duration();
+    }
+
     /** Buffers the frame pool holds so far (three, more while many readers hold frames). */
     int bufferCount() {
         stepLock.lock();

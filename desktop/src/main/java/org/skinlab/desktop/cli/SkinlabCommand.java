@@ -7,15 +7,21 @@ import picocli.CommandLine.Command;
 
 /** The {@code skinlab} command and its subcommands. */
 @Command(name = "skinlab", mixinStandardHelpOptions = true, versionProvider = SkinlabCommand.Version.class,
-        description = "Skeletal animation lab: import COLLADA characters, inspect them, pose them, benchmark the importer.",
-        subcommands = {InspectCommand.class, PoseCommand.class, BenchCommand.class, CommandLine.HelpCommand.class})
+        description = "Skeletal animation lab: view COLLADA characters skinned with LBS and DQS (no subcommand: the window "
+                + "on the default character), inspect them, pose them, benchmark.",
+        subcommands = {ViewCommand.class, InspectCommand.class, PoseCommand.class, BenchCommand.class,
+                CommandLine.HelpCommand.class})
 public final class SkinlabCommand implements Runnable {
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;
 
     @Override
     public void run() {
-        throw new CommandLine.ParameterException(spec.commandLine(), "a subcommand is required");
+        // No subcommand: the window on the default character.
+        int status = spec.commandLine().getSubcommands().get("view").execute();
+        if (status != ExitCodes.OK) {
+            throw new CommandFailure(status, "the viewer ended with status " + status, null);
+        }
     }
 
     /** Runs the command line and returns the exit status (see {@link ExitCodes}). */

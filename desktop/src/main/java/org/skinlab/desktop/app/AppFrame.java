@@ -1,0 +1,99 @@
+package org.skinlab.desktop.app;
+
+import org.skinlab.desktop.viewer.Viewer;
+
+/**
+ * What the interface shows about the frame just drawn: the viewer (its model, switches, camera and
+ * live series), what the renderer drew and the numbers the comparison measured. One instance,
+ * refilled every frame by the render loop; read by {@link AppUi} on the same thread.
+ */
+public final class AppFrame {
+    Viewer viewer;
+    int width;
+    int height;
+    float uiScale = 1f;
+    long frameNumber;
+    double frameMillis;
+    boolean drewMesh;
+    boolean gpuSkinned;
+    long sequence = -1;
+    double clipTime;
+    int vertices;
+    int shaderInfluences;
+    int cappedVertices;
+    /** Largest |LBS - DQS| over the model relative to its size; NaN when not measured. */
+    double maxDifference = Double.NaN;
+    /** The value at the top of the difference colour map, relative to the model's size. */
+    double differenceFull = Double.NaN;
+    double lbsVolume = Double.NaN;
+    double dqsVolume = Double.NaN;
+
+    public Viewer viewer() {
+        return viewer;
+    }
+
+    public int width() {
+        return width;
+    }
+
+    public int height() {
+        return height;
+    }
+
+    public float uiScale() {
+        return uiScale;
+    }
+
+    public long frameNumber() {
+        return frameNumber;
+    }
+
+    public double frameMillis() {
+        return frameMillis;
+    }
+
+    /** Whether a model frame was drawn (false while the first one is being made). */
+    public boolean drewMesh() {
+        return drewMesh;
+    }
+
+    public boolean gpuSkinned() {
+        return gpuSkinned;
+    }
+
+    public long sequence() {
+        return sequence;
+    }
+
+    public double clipTime() {
+        return clipTime;
+    }
+
+    public int vertices() {
+        return vertices;
+    }
+
+    public int shaderInfluences() {
+        return shaderInfluences;
+    }
+
+    public int cappedVertices() {
+        return cappedVertices;
+    }
+
+    public double maxDifference() {
+        return maxDifference;
+    }
+
+    public double differenceFull() {
+        return differenceFull;
+    }
+
+    public double lbsVolume() {
+        return lbsVolume;
+    }
+
+    public double dqsVolume() {
+        return dqsVolume;
+    }
+}

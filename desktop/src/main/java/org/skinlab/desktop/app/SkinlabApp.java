@@ -1,0 +1,285 @@
+package org.skinlab.desktop.app;
+
+import static org.lwjgl.glfw.GLFW.*;
+import static org.lwjgl.opengl.GL33C.*;
+
+import java.io.IOException;
+import java.nio.ByteBuffer;
+import java.nio.file.Path;
+import java.time.LocalDateTime;
+import java.time.format.DateTimeFormatter;
+
+import org.lwjgl.system.MemoryUtil;
+import org.skinlab.desktop.render.DrawSettings;
+import org.skinlab.desktop.render.GlWindow;
+import org.skinlab.desktop.render.ModelRenderer;
+import org.skinlab.desktop.render.Screenshot;
+import org.skinlab.desktop.render.SkinningShader;
+import org.skinlab.desktop.render.TextureCache;
+import org.skinlab.desktop.viewer.LoadedModel;
+import org.skinlab.desktop.viewer.ModelLibrary;
+import org.skinlab.desktop.viewer.Viewer;
+import org.skinlab.desktop.viewer.ViewerAction;
+import org.skinlab.simulation.AnimationConfig;
+import org.skinlab.simulation.Frame;
+import org.skinlab.skinning.SkinningMethod;
+
+/**
+ * The viewer window: the render loop that ties the {@link Viewer} (model, switches, camera),
+ * the {@link ModelRenderer} (what the GPU draws) and the {@link AppUi} (toolbar) together. Each
+ * loop iteration acquires the newest simulation {@link Frame} once and draws everything from it,
+ * so a split view, the instances and the numbers always show the same time step.
+ */
+public final class SkinlabApp implements AutoCloseable {
+    /** Exit statuses (the command line's: 0 fine, 1 failure, 3 a file that cannot be read). */
+    public static final int OK = 0;
+    public static final int FAILED = 1;
+    public static final int INVALID_FILE = 3;
+
+    private static final float[] BACKGROUND = {0.17f, 0.18f, 0.21f};
+    /** The top of the difference colour map: this share of the model's size. */
+    private static final float DIFFERENCE_FULL = 0.05f;
+
+    private final GlWindow window;
+    private final AppOptions options;
+    private final AnimationConfig config = new AnimationConfig();
+    private final Viewer viewer;
+    private final SkinningShader shader;
+    private final TextureCache textures = new TextureCache();
+    private final DrawSettings draw = new DrawSettings();
+    private final AppFrame info = new AppFrame();
+    private final WindowInput input;
+    private final int[] size = new int[2];
+    private AppUi ui = AppUi.NONE;
+    private LoadedModel shown;
+    private ModelRenderer renderer;
+    private long frameNumber;
+    private long lastNanos;
+
+    private SkinlabApp(GlWindow window, AppOptions options) {
+        this.window = window;
+        this.options = options;
+        config.setMethod(options.method());
+        config.setInterpolation(options.interpolation());
+        config.setCpuSkinning(!options.gpuSkinning());
+        if (options.time() != null) {
+            config.stopAnimation();
+        }
+        viewer = new Viewer(ModelLibrary.find(), config, !options.headless());
+        shader = new SkinningShader();
+        input = new WindowInput(window, viewer, this);
+        info.viewer = viewer;
+    }
+
+    /**
+     * Runs the window (or, with a screenshot path, one off-screen frame) until it closes; returns
+     * the exit status. Failures to open a window are one line on stderr.
+     */
+    public static int run(AppOptions options) {
+        GlWindow window;
+        try {
+            window = new GlWindow("skinlab", options.width(), options.height(), !options.headless(), options.glDebug());
+        } catch (GlWindow.WindowUnavailableException e) {
+            System.err.println("skinlab: " + e.getMessage());
+            return FAILED;
+        }
+        try (window; SkinlabApp app = new SkinlabApp(window, options)) {
+            return options.headless() ? app.screenshotOnce() : app.loop();
+        }
+    }
+
+    // ------------------------------------------------------------------------------ headless
+
+    private int screenshotOnce() {
+        Path file = options.file() != null ? options.file() : viewer.library().defaultModel();
+        String error = viewer.openAndWait(file);
+        if (error != null) {
+            System.err.println("skinlab: " + error);
+            return INVALID_FILE;
+        }
+        LoadedModel model = viewer.current();
+        model.mesh().seek(options.time() == null ? 0.0 : options.time());
+        model.mesh().step(0.0);
+        // ImGui lays its windows out over the first frames: draw a few before the picture.
+        int frames = options.hideUi() ? 1 : 3;
+        for (int i = 0; i < frames; i++) {
+            renderFrame(i == frames - 1);
+        }
+        return OK;
+    }
+
+    // ---------------------------------------------------------------------------- interactive
+
+    private int loop() {
+        // Stand-in until the interface exists: the scene alone.
+        viewer.open(options.file() != null ? options.file() : viewer.library().defaultModel());
+        lastNanos = System.nanoTime();
+        int status = OK;
+        while (!window.shouldClose() && !viewer.quitRequested()) {
+            glfwPollEvents();
+            boolean last = options.exitAfterFrames() > 0 && frameNumber + 1 >= options.exitAfterFrames();
+            boolean drew = renderFrame(false);
+            if (last) {
+                if (!drew || !sceneHasPixels()) {
+                    System.err.println("skinlab: nothing was drawn in " + options.exitAfterFrames() + " frames");
+                    status = FAILED;
+                }
+                break;
+            }
+        }
+        return status;
+    }
+
+    /**
+     * Draws one frame: scene, then interface; writes the screenshot file when asked. Returns
+     * whether a model frame was drawn.
+     */
+    private boolean renderFrame(boolean screenshot) {
+        long now = System.nanoTime();
+        info.frameMillis = (now - lastNanos) / 1e6;
+        lastNanos = now;
+        viewer.update();
+        syncRenderer();
+        window.framebufferSize(size);
+        info.width = size[0];
+        info.height = size[1];
+        glViewport(0, 0, size[0], size[1]);
+        glClearColor(BACKGROUND[0], BACKGROUND[1], BACKGROUND[2], 1f);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        boolean drew = false;
+        if (renderer != null) {
+            try (Frame frame = shown.mesh().acquire()) {
+                if (frame != null) {
+                    drawScene(frame);
+                    drew = true;
+                }
+            }
+        }
+        info.drewMesh = drew;
+        info.frameNumber = frameNumber++;
+        ui.render(info);
+        if (screenshot) {
+            writeScreenshot(options.screenshot());
+        }
+        window.swapBuffers();
+        return drew;
+    }
+
+    /** Rebuilds the GPU side when the viewer shows another model. */
+    private void syncRenderer() {
+        LoadedModel current = viewer.current();
+        if (current == shown) {
+            return;
+        }
+        if (renderer != null) {
+            renderer.close();
+            renderer = null;
+        }
+        shown = current;
+        if (current != null) {
+            renderer = new ModelRenderer(shader, current.mesh().geometries(), textures::texture);
+            info.vertices = renderer.vertexCount();
+            info.shaderInfluences = renderer.shaderInfluences();
+            info.cappedVertices = renderer.cappedVertices();
+        }
+    }
+
+    private void drawScene(Frame frame) {
+        renderer.upload(frame);
+        info.sequence = frame.sequence();
+        info.clipTime = frame.clipTime();
+        glEnable(GL_DEPTH_TEST);
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        draw.model.set(shown.framing().upright());
+        boolean cpuFrame = frame.hasSkinnedMesh();
+        SkinningMethod first = cpuFrame ? frame.method() : config.method();
+        boolean split = viewer.settings().split();
+        int w = size[0];
+        int h = size[1];
+        if (split) {
+            drawView(frame, first, cpuFrame, 0, w / 2, h);
+            drawView(frame, other(first), false, w / 2, w - w / 2, h);
+        } else {
+            drawView(frame, first, cpuFrame, 0, w, h);
+        }
+        info.gpuSkinned = !cpuFrame;
+        glViewport(0, 0, w, h);
+    }
+
+    private static SkinningMethod other(SkinningMethod m) {
+        return m == SkinningMethod.LBS ? SkinningMethod.DQS : SkinningMethod.LBS;
+    }
+
+    private void drawView(Frame frame, SkinningMethod method, boolean cpuPositions, int x, int width, int height) {
+        glViewport(x, 0, width, height);
+        viewer.camera().projection(width / (float) Math.max(1, height), draw.viewProjection);
+        viewer.camera().viewTimesInto(draw.viewProjection);
+        viewer.camera().eye(draw.eye);
+        draw.gpuSkinning = !cpuPositions;
+        draw.method = method;
+        draw.view = viewer.settings().drawView();
+        draw.selectedJoint = viewer.settings().selectedJoint();
+        draw.scalarFull = draw.view == DrawSettings.View.DIFFERENCE
+                ? DIFFERENCE_FULL * shown.framing().size() : 1f;
+        draw.instances = viewer.settings().instances();
+        draw.spacing = 2.2f * shown.framing().radius();
+        draw.wireframe = viewer.settings().wireframe();
+        renderer.draw(draw);
+    }
+
+    /** Whether the scene area holds any pixel other than the background. */
+    private boolean sceneHasPixels() {
+        int w = size[0];
+        int h = size[1];
+        ByteBuffer rgba = Screenshot.read(0, 0, w, h);
+        try {
+            return Screenshot.countPixelsDifferentFrom(rgba, w, h, BACKGROUND[0], BACKGROUND[1], BACKGROUND[2], 2) > 0;
+        } finally {
+            MemoryUtil.memFree(rgba);
+        }
+    }
+
+    void writeScreenshot(Path file) {
+        try {
+            Screenshot.write(file, size[0], size[1]);
+            viewer.setStatus("screenshot written: " + file);
+        } catch (IOException e) {
+            viewer.setStatus(e.getMessage());
+        }
+    }
+
+    /** The window-side actions: those that need the window, a dialog or the file system. */
+    void windowAction(ViewerAction action) {
+        switch (action) {
+            case SCREENSHOT:
+                writeScreenshot(Path.of("skinlab-" + LocalDateTime.now().format(DateTimeFormatter.ofPattern(
+                        "yyyyMMdd-HHmmss")) + ".png"));
+                break;
+            case OPEN_FILE:
+                Path chosen = FileDialog.chooseCollada();
+                if (chosen != null) {
+                    viewer.open(chosen);
+                }
+                break;
+            case QUIT:
+                window.requestClose();
+                break;
+            default:
+                viewer.perform(action);
+                break;
+        }
+    }
+
+    @Override
+    public void close() {
+        ui.close();
+        if (renderer != null) {
+            renderer.close();
+        }
+        viewer.close();
+        textures.close();
+        shader.close();
+        input.close();
+    }
+}

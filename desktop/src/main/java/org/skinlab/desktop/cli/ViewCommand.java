@@ -1,0 +1,123 @@
+package org.skinlab.desktop.cli;
+
+import java.nio.file.Path;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+
+import org.skinlab.animation.RotationInterpolation;
+import org.skinlab.desktop.app.AppOptions;
+import org.skinlab.desktop.app.SkinlabApp;
+import org.skinlab.desktop.render.DrawSettings;
+import org.skinlab.skinning.SkinningMethod;
+
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+
+/**
+ * {@code skinlab view [FILE] [options]}: the window (the default character when no file is
+ * given); with {@code --screenshot OUT.png} one frame rendered off-screen and written, then exit.
+ */
+@Command(name = "view", mixinStandardHelpOptions = true,
+        description = {"Open the viewer window on a COLLADA file (default: the bundled walking character).",
+                "With --screenshot, render one frame to a PNG and exit (no window is shown)."})
+public final class ViewCommand implements Callable<Integer> {
+    @Parameters(index = "0", arity = "0..1", paramLabel = "FILE", description = "a .dae file")
+    Path file;
+
+    @Option(names = "--method", paramLabel = "lbs|dqs", converter = PoseCommand.MethodConverter.class,
+            description = "skinning method at start (default: lbs)")
+    SkinningMethod method = SkinningMethod.LBS;
+
+    @Option(names = "--interpolation", paramLabel = "slerp|nlerp|lerp", converter = PoseCommand.RotationConverter.class,
+            description = "rotation interpolation between keyframes (default: slerp)")
+    RotationInterpolation interpolation = RotationInterpolation.SLERP;
+
+    @Option(names = "--split", paramLabel = "lbs|dqs", converter = PoseCommand.MethodConverter.class,
+            description = "split view: this method drawn beside --method, in sync")
+    SkinningMethod split;
+
+    @Option(names = "--gpu", description = "skin in the vertex shader (the default)")
+    boolean gpu;
+
+    @Option(names = "--cpu", description = "skin on the CPU and stream the mesh to the GPU")
+    boolean cpu;
+
+    @Option(names = "--view", paramLabel = "shaded|weights|difference", converter = ViewConverter.class,
+            description = "what colours show (default: shaded)")
+    DrawSettings.View view = DrawSettings.View.SHADED;
+
+    @Option(names = "--time", paramLabel = "SECONDS", description = "show this playback time, paused")
+    Double time;
+
+    @Option(names = "--screenshot", paramLabel = "OUT.png",
+            description = "render one frame off-screen, write it as PNG and exit")
+    Path screenshot;
+
+    @Option(names = "--size", paramLabel = "WxH", converter = SizeConverter.class,
+            description = "window or screenshot size in pixels (default: 1280x800)")
+    int[] size = {AppOptions.DEFAULT_WIDTH, AppOptions.DEFAULT_HEIGHT};
+
+    @Option(names = "--hide-ui", description = "draw the scene only, without the toolbar")
+    boolean hideUi;
+
+    @Option(names = "--script", paramLabel = "FILE", description = "replay UI actions from FILE (docs/desktop.md)")
+    Path script;
+
+    @Option(names = "--exit-after-frames", paramLabel = "N",
+            description = "close after N frames; exit status 1 when the last frame drew nothing")
+    int exitAfterFrames;
+
+    @Option(names = "--gl-debug", description = "OpenGL debug context: print GL errors, exit status 1 if any")
+    boolean glDebug;
+
+    @Override
+    public Integer call() {
+        if (gpu && cpu) {
+            throw new CommandFailure(ExitCodes.USAGE, "--gpu and --cpu exclude each other", null);
+        }
+        if (exitAfterFrames < 0) {
+            throw new CommandFailure(ExitCodes.USAGE, "--exit-after-frames needs a count >= 0", null);
+        }
+        if (time != null && !(time >= 0 && !time.isInfinite())) {
+            throw new CommandFailure(ExitCodes.USAGE, "--time needs a finite time >= 0 (seconds)", null);
+        }
+        AppOptions options = new AppOptions(file, method, interpolation, !cpu, view, split, time, screenshot, size[0],
+                size[1], hideUi, script, exitAfterFrames, glDebug);
+        return SkinlabApp.run(options);
+    }
+
+    static final class ViewConverter implements CommandLine.ITypeConverter<DrawSettings.View> {
+        @Override
+        public DrawSettings.View convert(String value) {
+            for (DrawSettings.View v : DrawSettings.View.values()) {
+                if (v.name().equalsIgnoreCase(value)) {
+                    return v;
+                }
+            }
+            throw new CommandLine.TypeConversionException("'" + value + "' is not a view (expected shaded, weights or "
+                    + "difference)");
+        }
+    }
+
+    static final class SizeConverter implements CommandLine.ITypeConverter<int[]> {
+        @Override
+        public int[] convert(String value) {
+            String[] parts = value.toLowerCase(Locale.ROOT).split("x");
+            try {
+                if (parts.length == 2) {
+                    int w = Integer.parseInt(parts[0].trim());
+                    int h = Integer.parseInt(parts[1].trim());
+                    if (w >= 16 && h >= 16 && w <= 16384 && h <= 16384) {
+                        return new int[] {w, h};
+                    }
+                }
+            } catch (NumberFormatException e) {
+                // reported below
+            }
+            throw new CommandLine.TypeConversionException("'" + value + "' is not a size (expected WxH, e.g. 1280x800, "
+                    + "16 to 16384 pixels each)");
+        }
+    }
+}

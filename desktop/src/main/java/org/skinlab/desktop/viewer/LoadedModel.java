@@ -1,0 +1,69 @@
+package org.skinlab.desktop.viewer;
+
+import java.nio.file.Path;
+
+import org.skinlab.model.Model;
+import org.skinlab.simulation.SkeletalAnimatedMesh;
+
+/**
+ * A model the viewer shows: the file, the imported {@link Model}, the clip it plays, its
+ * simulation and how it stands in the scene. Closing it stops and closes the simulation.
+ */
+public final class LoadedModel implements AutoCloseable {
+    private final Path file;
+    private final String displayName;
+    private final Model model;
+    private final int clip;
+    private final SkeletalAnimatedMesh mesh;
+    private final ModelFraming framing;
+    private final double loadMillis;
+
+    LoadedModel(Path file, String displayName, Model model, int clip, SkeletalAnimatedMesh mesh, ModelFraming framing,
+            double loadMillis) {
+        this.file = file;
+        this.displayName = displayName;
+        this.model = model;
+        this.clip = clip;
+        this.mesh = mesh;
+        this.framing = framing;
+        this.loadMillis = loadMillis;
+    }
+
+    public Path file() {
+        return file;
+    }
+
+    public String displayName() {
+        return displayName;
+    }
+
+    public Model model() {
+        return model;
+    }
+
+    /** Index of the clip playing in {@code model().clips()}, -1 at rest (no clips). */
+    public int clipIndex() {
+        return clip;
+    }
+
+    public String clipName() {
+        return clip < 0 ? "none (rest pose)" : model.clips().get(clip).name();
+    }
+
+    public SkeletalAnimatedMesh mesh() {
+        return mesh;
+    }
+
+    public ModelFraming framing() {
+        return framing;
+    }
+
+    public double loadMillis() {
+        return loadMillis;
+    }
+
+    @Override
+    public void close() {
+        mesh.close();
+    }
+}

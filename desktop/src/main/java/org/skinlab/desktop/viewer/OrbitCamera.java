@@ -1,0 +1,96 @@
+package org.skinlab.desktop.viewer;
+
+import org.joml.Matrix4f;
+import org.joml.Vector3f;
+
+/**
+ * A camera orbiting a target: yaw and pitch around it at a distance, Y up. Dragging orbits,
+ * scrolling zooms by a factor per step, and {@link #frame} puts a model's bounding sphere in view
+ * (the thesis' "centre camera"). Main-thread only; the matrix methods allocate nothing.
+ */
+public final class OrbitCamera {
+    /** Vertical field of view in radians. */
+    public static final float FOV_Y = (float) Math.toRadians(40);
+    private static final float MAX_PITCH = (float) Math.toRadians(85);
+    private static final float RADIANS_PER_PIXEL = 0.008f;
+    private static final float ZOOM_PER_STEP = 1.15f;
+
+    private final Vector3f target = new Vector3f();
+    private final Vector3f eye = new Vector3f();
+    private final Vector3f up = new Vector3f(0, 1, 0);
+    private final Matrix4f view = new Matrix4f();
+    private float yaw;
+    private float pitch = (float) Math.toRadians(12);
+    private float distance = 3f;
+    private float radius = 1f;
+
+    /** Looks at the sphere from the front, slightly above, so that it fills the view's height. */
+    public void frame(Vector3f centre, float sphereRadius) {
+        target.set(centre);
+        radius = Math.max(ModelFraming.MIN_RADIUS, sphereRadius);
+        yaw = 0f;
+        pitch = (float) Math.toRadians(12);
+        distance = radius / (float) Math.sin(FOV_Y / 2) * 1.1f;
+    }
+
+    public void frame(ModelFraming framing) {
+        frame(framing.centre(), framing.radius());
+    }
+
+    public void orbit(float dxPixels, float dyPixels) {
+        yaw -= dxPixels * RADIANS_PER_PIXEL;
+        pitch = Math.max(-MAX_PITCH, Math.min(MAX_PITCH, pitch + dyPixels * RADIANS_PER_PIXEL));
+    }
+
+    /** Moves the target in the view plane, by pixels of a view {@code viewHeight} pixels high. */
+    public void pan(float dxPixels, float dyPixels, int viewHeight) {
+        float unitsPerPixel = 2f * distance * (float) Math.tan(FOV_Y / 2) / Math.max(1, viewHeight);
+        view(view);
+        // The view matrix's rows are the camera's right and up axes in the scene.
+        float rx = view.m00();
+        float ry = view.m10();
+        float rz = view.m20();
+        float ux = view.m01();
+        float uy = view.m11();
+        float uz = view.m21();
+        target.add((-dxPixels * rx + dyPixels * ux) * unitsPerPixel, (-dxPixels * ry + dyPixels * uy) * unitsPerPixel,
+                (-dxPixels * rz + dyPixels * uz) * unitsPerPixel);
+    }
+
+    /** Zooms in (positive steps) or out, between a hundredth and a hundred framing radii. */
+    public void zoom(float steps) {
+        distance = (float) (distance * Math.pow(ZOOM_PER_STEP, -steps));
+        distance = Math.max(radius * 0.01f, Math.min(radius * 100f, distance));
+    }
+
+    public Vector3f eye(Vector3f dest) {
+        float cp = (float) Math.cos(pitch);
+        return dest.set(target.x + distance * cp * (float) Math.sin(yaw), target.y + distance * (float) Math.sin(pitch),
+                target.z + distance * cp * (float) Math.cos(yaw));
+    }
+
+    public Matrix4f view(Matrix4f dest) {
+        eye(eye);
+        return dest.setLookAt(eye, target, up);
+    }
+
+    /** A perspective projection whose near and far planes keep the framed sphere in depth range. */
+    public Matrix4f projection(float aspect, Matrix4f dest) {
+        float near = Math.max(distance - 50f * radius, distance * 0.01f);
+        float far = distance + 50f * radius;
+        return dest.setPerspective(FOV_Y, aspect, near, far);
+    }
+
+    /** {@code dest = dest * view}: turns a projection into the view-projection. */
+    public Matrix4f viewTimesInto(Matrix4f dest) {
+        return dest.mul(view(view));
+    }
+
+    public float distance() {
+        return distance;
+    }
+
+    public Vector3f target() {
+        return target;
+    }
+}

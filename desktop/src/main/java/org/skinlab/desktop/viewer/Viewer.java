@@ -1,0 +1,342 @@
+package org.skinlab.desktop.viewer;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicReference;
+
+import org.skinlab.collada.ColladaException;
+import org.skinlab.collada.ColladaImporter;
+import org.skinlab.desktop.render.DrawSettings;
+import org.skinlab.model.Model;
+import org.skinlab.simulation.AnimationConfig;
+import org.skinlab.simulation.Frame;
+import org.skinlab.simulation.SkeletalAnimatedMesh;
+
+/**
+ * The viewer's state and what its actions do, apart from drawing: the model shown (loaded off the
+ * window's thread, so a big file never freezes the window, and a bad one leaves the previous model
+ * in place with the importer's message), the simulation's switches ({@link AnimationConfig}), the
+ * viewer's own ({@link ViewerSettings}), the camera and the status line.
+ *
+ * <p>Everything but the loading runs on the window's thread. With {@code threaded}, each model's
+ * simulation runs on its own thread; without, the caller steps it (headless pictures).
+ */
+public final class Viewer implements AutoCloseable {
+    /** How far the step actions move a paused playback. */
+    public static final double STEP_SECONDS = 1.0 / 30.0;
+
+    private final ModelLibrary library;
+    private final AnimationConfig config;
+    private final boolean threaded;
+    private final ViewerSettings settings = new ViewerSettings();
+    private final OrbitCamera camera = new OrbitCamera();
+    private final ExecutorService loader = Executors.newSingleThreadExecutor(r -> {
+        Thread t = new Thread(r, "skinlab-loader");
+        t.setDaemon(true);
+        return t;
+    });
+    /** The finished load the window thread has not taken yet: a LoadedModel or an error message. */
+    private final AtomicReference<Object> finished = new AtomicReference<>();
+    private Future<?> inFlight;
+    private LoadedModel current;
+    private String status = "";
+    private boolean quit;
+
+    public Viewer(ModelLibrary library, AnimationConfig config, boolean threaded) {
+        this.library = library;
+        this.config = config;
+        this.threaded = threaded;
+    }
+
+    public ModelLibrary library() {
+        return library;
+    }
+
+    public AnimationConfig config() {
+        return config;
+    }
+
+    public ViewerSettings settings() {
+        return settings;
+    }
+
+    public OrbitCamera camera() {
+        return camera;
+    }
+
+    /** The model shown, null before the first load finished. */
+    public LoadedModel current() {
+        return current;
+    }
+
+    public String statusMessage() {
+        return status;
+    }
+
+    public void setStatus(String message) {
+        status = message == null ? "" : message;
+    }
+
+    public boolean quitRequested() {
+        return quit;
+    }
+
+    /** Whether a load is under way. */
+    public boolean loading() {
+        Future<?> f = inFlight;
+        return f != null && !f.isDone();
+    }
+
+    // ------------------------------------------------------------------------------ loading
+
+    /** Starts loading {@code file} (its first clip); {@link #update()} shows it when done. */
+    public void open(Path file) {
+        load(file, null, 0, 0.0);
+    }
+
+    /**
+     * Loads {@code file} on the loader thread and waits for it (headless use); returns null when
+     * it is shown, else the error message.
+     */
+    public String openAndWait(Path file) {
+        open(file);
+        try {
+            inFlight.get(10, TimeUnit.MINUTES);
+        } catch (Exception e) {
+            return "loading " + file + " did not finish: " + e;
+        }
+        update();
+        return current != null && current.file().equals(file.toAbsolutePath().normalize()) ? null : status;
+    }
+
+    private void load(Path file, Model already, int clip, double time) {
+        if (file == null) {
+            status = "no model to open (no assets folder found; open a .dae file)";
+            return;
+        }
+        Path path = file.toAbsolutePath().normalize();
+        String name = library.displayName(path);
+        status = "loading " + name + " ...";
+        inFlight = loader.submit(() -> finished.set(build(path, name, already, clip, time)));
+    }
+
+    /** Imports and prepares a model (loader thread): a LoadedModel, or a one-line error. */
+    private Object build(Path path, String name, Model already, int clip, double time) {
+        long t0 = System.nanoTime();
+        SkeletalAnimatedMesh mesh = null;
+        try {
+            Model model = already != null ? already : read(path);
+            int clipIndex = model.clips().isEmpty() ? -1 : Math.min(clip, model.clips().size() - 1);
+            mesh = new SkeletalAnimatedMesh(model, clipIndex < 0 ? null : model.clips().get(clipIndex), config);
+            mesh.seek(time);
+            mesh.step(0.0);
+            ModelFraming framing;
+            try (Frame frame = mesh.acquire()) {
+                framing = ModelFraming.of(model.asset(), mesh.geometries(), frame);
+            }
+            return new LoadedModel(path, name, model, clipIndex, mesh, framing, (System.nanoTime() - t0) / 1e6);
+        } catch (ColladaException e) {
+            close(mesh);
+            return oneLine(e.getMessage());
+        } catch (IOException e) {
+            close(mesh);
+            return name + ": cannot be read: " + oneLine(String.valueOf(e.getMessage()));
+        } catch (OutOfMemoryError e) {
+            close(mesh);
+            return name + ": too large for the memory Java was given (start with SKINLAB_OPTS=-Xmx4g)";
+        } catch (StackOverflowError e) {
+            close(mesh);
+            return name + ": nested too deeply to load";
+        } catch (RuntimeException e) {
+            close(mesh);
+            return name + ": cannot be shown: " + oneLine(String.valueOf(e.getMessage()));
+        }
+    }
+
+    private static Model read(Path path) throws IOException, ColladaException {
+        if (!Files.exists(path)) {
+            throw new IOException("file not found");
+        }
+        if (Files.isDirectory(path)) {
+            throw new IOException("a directory, not a COLLADA file");
+        }
+        return ColladaImporter.read(path);
+    }
+
+    private static void close(SkeletalAnimatedMesh mesh) {
+        if (mesh != null) {
+            mesh.close();
+        }
+    }
+
+    private static String oneLine(String s) {
+        return s == null ? "" : s.replaceAll("\\s+", " ").trim();
+    }
+
+    /** Takes a finished load, if any (window thread, once per frame; allocates nothing otherwise). */
+    public void update() {
+        Object done = finished.getAndSet(null);
+        if (done == null) {
+            return;
+        }
+        if (done instanceof String) {
+            status = (String) done;
+            return;
+        }
+        LoadedModel next = (LoadedModel) done;
+        LoadedModel previous = current;
+        boolean sameFile = previous != null && previous.file().equals(next.file());
+        current = next;
+        library.add(next.file());
+        if (previous != null) {
+            previous.close();
+        }
+        if (threaded) {
+            next.mesh().start();
+        }
+        if (!sameFile) {
+            camera.frame(next.framing());
+        }
+        settings.selectJoint(settings.selectedJoint(), jointCount());
+        status = next.displayName() + " (" + next.clipName() + ", " + Math.round(next.loadMillis()) + " ms)";
+    }
+
+    /** Palette joints of the first geometry (the weight view's joints). */
+    public int jointCount() {
+        return current == null || current.mesh().geometries().isEmpty() ? 0
+                : current.mesh().geometries().get(0).jointCount();
+    }
+
+    // ------------------------------------------------------------------------------ actions
+
+    /**
+     * Performs an action. {@link ViewerAction#OPEN_FILE} and {@link ViewerAction#SCREENSHOT}
+     * need the window (a dialog, the framebuffer): the window handles them and this does nothing.
+     */
+    public void perform(ViewerAction action) {
+        switch (action) {
+            case TOGGLE_ANIMATION:
+                config.setAnimationRunning(!config.isAnimationRunning());
+                break;
+            case TOGGLE_MESH_UPDATES:
+                config.setMeshUpdatesRunning(!config.isMeshUpdatesRunning());
+                break;
+            case NEXT_METHOD:
+                config.nextMethod();
+                break;
+            case NEXT_INTERPOLATION:
+                config.nextInterpolation();
+                break;
+            case SLOWER:
+                config.slower();
+                break;
+            case FASTER:
+                config.faster();
+                break;
+            case PREVIOUS_MESH:
+                load(library.neighbour(current == null ? null : current.file(), -1), null, 0, 0.0);
+                break;
+            case NEXT_MESH:
+                load(library.neighbour(current == null ? null : current.file(), 1), null, 0, 0.0);
+                break;
+            case CENTRE_CAMERA:
+                if (current != null) {
+                    camera.frame(current.framing());
+                }
+                break;
+            case TOGGLE_GPU_SKINNING:
+                config.setCpuSkinning(!config.isCpuSkinning());
+                break;
+            case NEXT_CLIP:
+                if (current != null && current.model().clips().size() > 1) {
+                    int next = (current.clipIndex() + 1) % current.model().clips().size();
+                    load(current.file(), current.model(), next, 0.0);
+                }
+                break;
+            case STEP_BACK:
+                stepPlayback(-STEP_SECONDS);
+                break;
+            case STEP_FORWARD:
+                stepPlayback(STEP_SECONDS);
+                break;
+            case FEWER_INSTANCES:
+                settings.fewerInstances();
+                break;
+            case MORE_INSTANCES:
+                settings.moreInstances();
+                break;
+            case TOGGLE_SKELETON:
+                settings.setSkeleton(!settings.skeleton());
+                break;
+            case TOGGLE_WIREFRAME:
+                settings.setWireframe(!settings.wireframe());
+                break;
+            case VIEW_SHADED:
+                settings.setView(DrawSettings.View.SHADED);
+                break;
+            case VIEW_WEIGHTS:
+                settings.setView(DrawSettings.View.WEIGHTS);
+                break;
+            case VIEW_DIFFERENCE:
+                settings.setView(DrawSettings.View.DIFFERENCE);
+                break;
+            case PREVIOUS_JOINT:
+                settings.selectJoint(settings.selectedJoint() - 1, jointCount());
+                break;
+            case NEXT_JOINT:
+                settings.selectJoint(settings.selectedJoint() + 1, jointCount());
+                break;
+            case TOGGLE_SPLIT:
+                settings.setSplit(!settings.split());
+                break;
+            case TOGGLE_HELP:
+                settings.setHelp(!settings.help());
+                break;
+            case QUIT:
+                quit = true;
+                break;
+            case OPEN_FILE:
+            case SCREENSHOT:
+                break;
+            default:
+                throw new AssertionError(action);
+        }
+    }
+
+    /** Moves the playback time; the animation keeps running or paused as it was. */
+    public void seek(double seconds) {
+        if (current != null) {
+            current.mesh().seek(seconds);
+        }
+    }
+
+    private void stepPlayback(double seconds) {
+        if (current != null) {
+            config.stopAnimation();
+            current.mesh().seek(current.mesh().playbackTime() + seconds);
+        }
+    }
+
+    @Override
+    public void close() {
+        loader.shutdownNow();
+        try {
+            loader.awaitTermination(5, TimeUnit.SECONDS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+        Object pending = finished.getAndSet(null);
+        if (pending instanceof LoadedModel) {
+            ((LoadedModel) pending).close();
+        }
+        if (current != null) {
+            current.close();
+            current = null;
+        }
+    }
+}
