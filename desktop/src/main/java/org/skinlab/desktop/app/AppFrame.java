@@ -1,5 +1,6 @@
 package org.skinlab.desktop.app;
 
+import org.skinlab.desktop.viewer.LiveStats;
 import org.skinlab.desktop.viewer.Viewer;
 
 /**
@@ -8,6 +9,7 @@ import org.skinlab.desktop.viewer.Viewer;
  * refilled every frame by the render loop; read by {@link AppUi} on the same thread.
  */
 public final class AppFrame {
+    final LiveStats stats = new LiveStats();
     Viewer viewer;
     int width;
     int height;
@@ -19,6 +21,7 @@ public final class AppFrame {
     long sequence = -1;
     double clipTime;
     int vertices;
+    long skinningNanos;
     int shaderInfluences;
     int cappedVertices;
     /** Largest |LBS - DQS| over the model relative to its size; NaN when not measured. */
@@ -27,6 +30,10 @@ public final class AppFrame {
     double differenceFull = Double.NaN;
     double lbsVolume = Double.NaN;
     double dqsVolume = Double.NaN;
+
+    public LiveStats stats() {
+        return stats;
+    }
 
     public Viewer viewer() {
         return viewer;

@@ -16,6 +16,7 @@ import org.skinlab.desktop.render.ModelRenderer;
 import org.skinlab.desktop.render.Screenshot;
 import org.skinlab.desktop.render.SkinningShader;
 import org.skinlab.desktop.render.TextureCache;
+import org.skinlab.desktop.ui.ImGuiUi;
 import org.skinlab.desktop.viewer.LoadedModel;
 import org.skinlab.desktop.viewer.ModelLibrary;
 import org.skinlab.desktop.viewer.Viewer;
@@ -55,6 +56,7 @@ public final class SkinlabApp implements AutoCloseable {
     private ModelRenderer renderer;
     private long frameNumber;
     private long lastNanos;
+    private final long startNanos;
 
     private SkinlabApp(GlWindow window, AppOptions options) {
         this.window = window;
@@ -69,6 +71,13 @@ public final class SkinlabApp implements AutoCloseable {
         shader = new SkinningShader();
         input = new WindowInput(window, viewer, this);
         info.viewer = viewer;
+        info.uiScale = window.contentScale();
+        if (!options.hideUi()) {
+            // After the window's own callbacks: ImGui's backend chains to them.
+            ui = new ImGuiUi(window, this::windowAction);
+            input.setUi(ui);
+        }
+        startNanos = System.nanoTime();
     }
 
     /**
@@ -157,12 +166,34 @@ public final class SkinlabApp implements AutoCloseable {
         }
         info.drewMesh = drew;
         info.frameNumber = frameNumber++;
+        sample(drew);
         ui.render(info);
         if (screenshot) {
             writeScreenshot(options.screenshot());
         }
         window.swapBuffers();
         return drew;
+    }
+
+    /** Adds this frame's numbers to the live plots. */
+    private void sample(boolean drew) {
+        if (!drew || frameNumber < 2) {
+            return;
+        }
+        float t = (float) ((System.nanoTime() - startNanos) / 1e9);
+        float ms = (float) info.frameMillis;
+        info.stats.frameMillis.add(t, ms);
+        info.stats.fps.add(t, ms > 0 ? 1000f / ms : Float.NaN);
+        if (info.gpuSkinned) {
+            info.stats.skinningMillis.clear();
+            info.stats.verticesPerSecond.add(t, ms > 0 ? info.vertices * (float) draw.instances / ms / 1e3f : Float.NaN);
+        } else {
+            info.stats.skinningMillis.add(t, (float) (info.skinningNanos / 1e6));
+            // The simulation skins one copy per step, whatever the instances drawn.
+            info.stats.verticesPerSecond.add(t, (float) (info.vertices * shown.mesh().stepRate() / 1e6));
+        }
+        info.stats.lbsVolume.add(t, (float) info.lbsVolume);
+        info.stats.dqsVolume.add(t, (float) info.dqsVolume);
     }
 
     /** Rebuilds the GPU side when the viewer shows another model. */
@@ -176,6 +207,7 @@ public final class SkinlabApp implements AutoCloseable {
             renderer = null;
         }
         shown = current;
+        info.stats.clear();
         if (current != null) {
             renderer = new ModelRenderer(shader, current.mesh().geometries(), textures::texture);
             info.vertices = renderer.vertexCount();
@@ -187,6 +219,7 @@ public final class SkinlabApp implements AutoCloseable {
     private void drawScene(Frame frame) {
         renderer.upload(frame);
         info.sequence = frame.sequence();
+        info.skinningNanos = frame.skinningNanos();
         info.clipTime = frame.clipTime();
         glEnable(GL_DEPTH_TEST);
         glEnable(GL_BLEND);

@@ -254,8 +254,7 @@ public final class Viewer implements AutoCloseable {
                 break;
             case NEXT_CLIP:
                 if (current != null && current.model().clips().size() > 1) {
-                    int next = (current.clipIndex() + 1) % current.model().clips().size();
-                    load(current.file(), current.model(), next, 0.0);
+                    playClip((current.clipIndex() + 1) % current.model().clips().size());
                 }
                 break;
             case STEP_BACK:
@@ -305,6 +304,13 @@ public final class Viewer implements AutoCloseable {
                 break;
             default:
                 throw new AssertionError(action);
+        }
+    }
+
+    /** Plays clip {@code index} of the model shown (reloaded off the window thread). */
+    public void playClip(int index) {
+        if (current != null && index >= 0 && index < current.model().clips().size() && index != current.clipIndex()) {
+            load(current.file(), current.model(), index, 0.0);
         }
     }
 

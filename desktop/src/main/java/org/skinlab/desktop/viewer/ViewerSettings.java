@@ -15,7 +15,7 @@ public final class ViewerSettings {
     private boolean split;
     private boolean skeleton;
     private boolean wireframe;
-    private boolean help = true;
+    private boolean help;
     private int instanceStep;
     private int selectedJoint;
 

@@ -1,0 +1,39 @@
+package org.skinlab.desktop.ui;
+
+import org.skinlab.desktop.app.AppFrame;
+import org.skinlab.desktop.viewer.ViewerAction;
+
+import imgui.ImGui;
+import imgui.flag.ImGuiCond;
+import imgui.flag.ImGuiTableFlags;
+import imgui.flag.ImGuiWindowFlags;
+
+/** Every key and what it does (the list is the actions' own, so it cannot go stale). */
+final class HelpPanel {
+    void draw(AppFrame f) {
+        ImGui.setNextWindowPos(f.width() - 8f, f.height() - 8f, ImGuiCond.Always, 1f, 1f);
+        ImGui.setNextWindowBgAlpha(0.85f);
+        ImGui.begin("Keys", ImGuiWindowFlags.AlwaysAutoResize | ImGuiWindowFlags.NoMove | ImGuiWindowFlags.NoCollapse);
+        ImGui.textDisabled("Mouse: left drag orbits, right or middle drag pans, wheel zooms; drop a .dae to open it");
+        if (ImGui.beginTable("keys", 4, ImGuiTableFlags.SizingFixedFit)) {
+            ViewerAction[] all = ViewerAction.values();
+            int half = (all.length + 1) / 2;
+            for (int i = 0; i < half; i++) {
+                ImGui.tableNextRow();
+                cell(all[i]);
+                if (i + half < all.length) {
+                    cell(all[i + half]);
+                }
+            }
+            ImGui.endTable();
+        }
+        ImGui.end();
+    }
+
+    private static void cell(ViewerAction a) {
+        ImGui.tableNextColumn();
+        ImGui.textUnformatted(a.keyName());
+        ImGui.tableNextColumn();
+        ImGui.textDisabled(a.description());
+    }
+}

@@ -1,0 +1,102 @@
+package org.skinlab.desktop.ui;
+
+import java.util.HashMap;
+import java.util.Map;
+import java.util.function.Consumer;
+
+import org.skinlab.desktop.app.AppFrame;
+import org.skinlab.desktop.app.AppUi;
+import org.skinlab.desktop.render.GlWindow;
+import org.skinlab.desktop.viewer.ViewerAction;
+
+import imgui.ImGui;
+import imgui.ImGuiIO;
+import imgui.extension.implot.ImPlot;
+import imgui.extension.implot.ImPlotContext;
+import imgui.gl3.ImGuiImplGl3;
+import imgui.glfw.ImGuiImplGlfw;
+
+/**
+ * The Dear ImGui interface (imgui-java): the toolbar with every thesis function, the live numbers
+ * and plots, the help panel and the status line. It owns the ImGui and ImPlot contexts and their
+ * GLFW and OpenGL 3 backends; the GLFW backend chains to the callbacks installed before it, so
+ * the scene still gets the keys and the mouse the interface does not use.
+ */
+public final class ImGuiUi implements AppUi {
+    private final ImGuiImplGlfw glfw = new ImGuiImplGlfw();
+    private final ImGuiImplGl3 gl3 = new ImGuiImplGl3();
+    private final ImPlotContext plotContext;
+    private final Map<String, float[]> itemRects = new HashMap<>();
+    private final ToolbarPanel toolbar;
+    private final StatsPanel stats;
+    private final HelpPanel help;
+    private final StatusLine status;
+
+    /**
+     * @param actions what a button does: the window performs the action (some need the window)
+     */
+    public ImGuiUi(GlWindow window, Consumer<ViewerAction> actions) {
+        ImGui.createContext();
+        plotContext = ImPlot.createContext();
+        ImGuiIO io = ImGui.getIO();
+        io.setIniFilename(null);
+        ImGui.styleColorsDark();
+        float scale = window.contentScale();
+        io.setFontGlobalScale(scale);
+        ImGui.getStyle().scaleAllSizes(scale);
+        glfw.init(window.handle(), true);
+        gl3.init("#version 330 core");
+        Widgets widgets = new Widgets(itemRects, actions);
+        toolbar = new ToolbarPanel(widgets);
+        stats = new StatsPanel();
+        help = new HelpPanel();
+        status = new StatusLine();
+    }
+
+    @Override
+    public void render(AppFrame frame) {
+        gl3.newFrame();
+        glfw.newFrame();
+        ImGui.newFrame();
+        toolbar.draw(frame);
+        stats.draw(frame);
+        if (frame.viewer().settings().help()) {
+            help.draw(frame);
+        }
+        status.draw(frame);
+        ImGui.render();
+        gl3.renderDrawData(ImGui.getDrawData());
+    }
+
+    @Override
+    public boolean wantsMouse() {
+        return ImGui.getIO().getWantCaptureMouse();
+    }
+
+    @Override
+    public boolean wantsKeyboard() {
+        return ImGui.getIO().getWantTextInput();
+    }
+
+    @Override
+    public float[] itemCentre(String label) {
+        float[] r = itemRects.get(label);
+        if (r == null) {
+            ViewerAction a = ViewerAction.byName(label).orElse(null);
+            r = a == null ? null : itemRects.get(a.label());
+        }
+        return r == null ? null : new float[] {(r[0] + r[2]) / 2, (r[1] + r[3]) / 2};
+    }
+
+    @Override
+    public void close() {
+        gl3.shutdown();
+        try {
+            glfw.shutdown();
+        } catch (NullPointerException e) {
+            // imgui-java 1.88.0 destroys standard cursors GLFW could not create (0) under Xvfb.
+        }
+        ImPlot.destroyContext(plotContext);
+        ImGui.destroyContext();
+    }
+}

@@ -1,0 +1,104 @@
+package org.skinlab.desktop.ui;
+
+import org.skinlab.desktop.app.AppFrame;
+import org.skinlab.desktop.render.DrawSettings;
+import org.skinlab.desktop.viewer.LiveStats;
+import org.skinlab.desktop.viewer.RollingSeries;
+
+import imgui.ImGui;
+import imgui.extension.implot.ImPlot;
+import imgui.extension.implot.flag.ImPlotAxis;
+import imgui.extension.implot.flag.ImPlotAxisFlags;
+import imgui.extension.implot.flag.ImPlotCond;
+import imgui.extension.implot.flag.ImPlotFlags;
+import imgui.flag.ImGuiCond;
+import imgui.flag.ImGuiWindowFlags;
+
+/**
+ * The live numbers beside the scene, each with a small rolling plot of its last
+ * {@value LiveStats#SAMPLES} frames: fps and frame time, skinning time, vertices skinned per
+ * second, and in the difference view the largest LBS-DQS distance and both methods' volumes.
+ */
+final class StatsPanel {
+    /** Seconds of history the plots show. */
+    private static final float WINDOW_SECONDS = 10f;
+
+    private final float[] xs = new float[LiveStats.SAMPLES];
+    private final float[] ys = new float[LiveStats.SAMPLES];
+    private final float[] ys2 = new float[LiveStats.SAMPLES];
+    private final CachedText fps = new CachedText("%.0f fps");
+    private final CachedText frameMs = new CachedText("frame %.2f ms");
+    private final CachedText skinMs = new CachedText("CPU skinning %.3f ms per step");
+    private final CachedText vertices = new CachedText("%.1f M vertices skinned per second");
+    private final CachedText drawn = new CachedText("%.0f vertices per instance");
+    private final CachedText difference = new CachedText("largest |LBS - DQS|: %.2f %% of the model's size");
+    private final CachedText full = new CachedText("red: %.0f %% of the size or more");
+    private final CachedText lbsVolume = new CachedText("LBS volume %.4f of rest");
+    private final CachedText dqsVolume = new CachedText("DQS volume %.4f of rest");
+    private long refreshedAt = -1;
+    private float meanFps = Float.NaN;
+    private float meanFrame = Float.NaN;
+    private float meanSkin = Float.NaN;
+    private float meanVertices = Float.NaN;
+
+    void draw(AppFrame f) {
+        LiveStats stats = f.stats();
+        // Numbers that change every frame are read 4 times a second: legible, and no string per frame.
+        long now = System.nanoTime();
+        if (refreshedAt < 0 || now - refreshedAt > 250_000_000L) {
+            refreshedAt = now;
+            meanFps = stats.fps.mean();
+            meanFrame = stats.frameMillis.mean();
+            meanSkin = stats.skinningMillis.mean();
+            meanVertices = stats.verticesPerSecond.mean();
+        }
+        ImGui.setNextWindowPos(f.width() - 8f, 8f, ImGuiCond.Always, 1f, 0f);
+        ImGui.setNextWindowBgAlpha(0.85f);
+        ImGui.begin("Numbers", ImGuiWindowFlags.AlwaysAutoResize | ImGuiWindowFlags.NoMove | ImGuiWindowFlags.NoCollapse);
+        ImGui.textUnformatted(fps.of(meanFps));
+        ImGui.sameLine();
+        ImGui.textUnformatted(frameMs.of(meanFrame));
+        plot("##fps", stats.fps, null);
+        ImGui.textUnformatted(f.gpuSkinned() ? "skinning on the GPU (vertex shader)" : skinMs.of(meanSkin));
+        if (!f.gpuSkinned()) {
+            plot("##skin", stats.skinningMillis, null);
+        }
+        ImGui.textUnformatted(vertices.of(meanVertices));
+        ImGui.textDisabled(drawn.of(f.vertices()));
+        if (f.viewer().settings().drawView() == DrawSettings.View.DIFFERENCE) {
+            ImGui.separator();
+            ImGui.textUnformatted(difference.of(100 * f.maxDifference()));
+            ImGui.textDisabled(full.of(100 * f.differenceFull()));
+            if (!Double.isNaN(f.lbsVolume())) {
+                ImGui.textUnformatted(lbsVolume.of(f.lbsVolume()));
+                ImGui.textUnformatted(dqsVolume.of(f.dqsVolume()));
+                plot("##volume", stats.lbsVolume, stats.dqsVolume);
+            } else {
+                ImGui.textDisabled("volume: the mesh is not closed");
+            }
+        }
+        ImGui.end();
+    }
+
+    /** A small line plot of the last seconds of one or two series. */
+    private void plot(String id, RollingSeries a, RollingSeries b) {
+        int n = a.size();
+        if (n < 2) {
+            return;
+        }
+        a.copyTo(xs, ys);
+        float last = xs[n - 1];
+        ImPlot.setNextAxisLimits(ImPlotAxis.X1, last - WINDOW_SECONDS, last, ImPlotCond.Always);
+        if (ImPlot.beginPlot(id, 300f, 80f, ImPlotFlags.NoLegend | ImPlotFlags.NoMenus | ImPlotFlags.NoBoxSelect
+                | ImPlotFlags.NoMouseText)) {
+            ImPlot.setupAxes(null, null, ImPlotAxisFlags.NoTickLabels, ImPlotAxisFlags.AutoFit);
+            ImPlot.plotLine(a.name(), xs, ys, n);
+            if (b != null && b.size() > 1) {
+                int m = b.size();
+                b.copyTo(xs, ys2);
+                ImPlot.plotLine(b.name(), xs, ys2, m);
+            }
+            ImPlot.endPlot();
+        }
+    }
+}

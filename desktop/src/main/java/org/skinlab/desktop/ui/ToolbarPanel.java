@@ -1,0 +1,194 @@
+package org.skinlab.desktop.ui;
+
+import org.skinlab.animation.RotationInterpolation;
+import org.skinlab.desktop.app.AppFrame;
+import org.skinlab.desktop.render.DrawSettings;
+import org.skinlab.desktop.viewer.LoadedModel;
+import org.skinlab.desktop.viewer.Viewer;
+import org.skinlab.desktop.viewer.ViewerAction;
+import org.skinlab.desktop.viewer.ViewerSettings;
+import org.skinlab.model.AnimationClip;
+import org.skinlab.model.Model;
+import org.skinlab.simulation.AnimationConfig;
+import org.skinlab.skinning.SkinningMethod;
+
+import imgui.ImGui;
+import imgui.flag.ImGuiCond;
+import imgui.flag.ImGuiWindowFlags;
+
+/**
+ * The toolbar beside the scene, as in the thesis: model, animation, skinning and view, each
+ * function a button (or box) with its key in the tooltip, plus the timeline and clip choice.
+ */
+final class ToolbarPanel {
+    /** The toolbar's window title; scripts and tests find it by this name. */
+    static final String TITLE = "skinlab";
+
+    private final Widgets widgets;
+    private final float[] timeline = new float[1];
+    private final CachedText speed = new CachedText("speed x%.2f");
+    private final CachedText instances = new CachedText("%.0f");
+    private final CachedText influences = new CachedText("%.0f influences per vertex in the shader");
+    private final CachedText capped = new CachedText("%.0f vertices capped (weights renormalised)");
+    private boolean scrubbing;
+    private LoadedModel namedModel;
+    private int namedJoint = -1;
+    private String modelLine = "";
+    private String jointLine = "";
+
+    ToolbarPanel(Widgets widgets) {
+        this.widgets = widgets;
+    }
+
+    void draw(AppFrame f) {
+        Viewer viewer = f.viewer();
+        AnimationConfig config = viewer.config();
+        ViewerSettings s = viewer.settings();
+        LoadedModel model = viewer.current();
+        ImGui.setNextWindowPos(8, 8, ImGuiCond.Always);
+        ImGui.setNextWindowBgAlpha(0.85f);
+        ImGui.begin(TITLE, ImGuiWindowFlags.AlwaysAutoResize | ImGuiWindowFlags.NoMove | ImGuiWindowFlags.NoCollapse);
+
+        ImGui.textDisabled("Model");
+        ImGui.textUnformatted(modelLine(model));
+        widgets.action(ViewerAction.PREVIOUS_MESH);
+        ImGui.sameLine();
+        widgets.action(ViewerAction.NEXT_MESH);
+        ImGui.sameLine();
+        widgets.action(ViewerAction.OPEN_FILE);
+        clips(viewer, model);
+
+        ImGui.separator();
+        ImGui.textDisabled("Animation");
+        widgets.action(ViewerAction.TOGGLE_ANIMATION);
+        ImGui.sameLine();
+        ImGui.textUnformatted(config.isAnimationRunning() ? "playing" : "paused");
+        widgets.toggle(ViewerAction.TOGGLE_MESH_UPDATES, "Mesh updates", config.isMeshUpdatesRunning());
+        widgets.action(ViewerAction.SLOWER);
+        ImGui.sameLine();
+        widgets.action(ViewerAction.FASTER);
+        ImGui.sameLine();
+        ImGui.textUnformatted(speed.of(config.speed()));
+        ImGui.textUnformatted("Interpolation");
+        for (RotationInterpolation r : RotationInterpolation.values()) {
+            ImGui.sameLine();
+            if (ImGui.radioButton(r.name(), config.interpolation() == r)) {
+                config.setInterpolation(r);
+            }
+            widgets.remember(r.name());
+        }
+        timeline(f, viewer, model);
+        widgets.action(ViewerAction.STEP_BACK);
+        ImGui.sameLine();
+        widgets.action(ViewerAction.STEP_FORWARD);
+
+        ImGui.separator();
+        ImGui.textDisabled("Skinning");
+        for (SkinningMethod m : SkinningMethod.values()) {
+            if (m != SkinningMethod.values()[0]) {
+                ImGui.sameLine();
+            }
+            if (ImGui.radioButton(m.name(), config.method() == m)) {
+                config.setMethod(m);
+            }
+            widgets.remember(m.name());
+        }
+        widgets.toggle(ViewerAction.TOGGLE_GPU_SKINNING, "GPU skinning", !config.isCpuSkinning());
+        ImGui.textDisabled(influences.of(f.shaderInfluences()));
+        if (f.cappedVertices() > 0) {
+            ImGui.textDisabled(capped.of(f.cappedVertices()));
+        }
+        widgets.toggle(ViewerAction.TOGGLE_SPLIT, "Split view (the other method beside)", s.split());
+
+        ImGui.separator();
+        ImGui.textDisabled("View");
+        widgets.radio(ViewerAction.VIEW_SHADED, s.drawView() == DrawSettings.View.SHADED);
+        ImGui.sameLine();
+        widgets.radio(ViewerAction.VIEW_WEIGHTS, s.drawView() == DrawSettings.View.WEIGHTS);
+        ImGui.sameLine();
+        widgets.radio(ViewerAction.VIEW_DIFFERENCE, s.drawView() == DrawSettings.View.DIFFERENCE);
+        if (s.drawView() == DrawSettings.View.WEIGHTS) {
+            widgets.action(ViewerAction.PREVIOUS_JOINT);
+            ImGui.sameLine();
+            widgets.action(ViewerAction.NEXT_JOINT);
+            ImGui.textUnformatted(jointLine(viewer, model, s.selectedJoint()));
+        }
+        widgets.toggle(ViewerAction.TOGGLE_SKELETON, "Skeleton", s.skeleton());
+        ImGui.sameLine();
+        widgets.toggle(ViewerAction.TOGGLE_WIREFRAME, "Wireframe", s.wireframe());
+        ImGui.textUnformatted("Instances");
+        ImGui.sameLine();
+        widgets.action(ViewerAction.FEWER_INSTANCES);
+        ImGui.sameLine();
+        widgets.action(ViewerAction.MORE_INSTANCES);
+        ImGui.sameLine();
+        ImGui.textUnformatted(instances.of(s.instances()));
+
+        ImGui.separator();
+        widgets.action(ViewerAction.CENTRE_CAMERA);
+        ImGui.sameLine();
+        widgets.action(ViewerAction.SCREENSHOT);
+        ImGui.sameLine();
+        widgets.action(ViewerAction.TOGGLE_HELP);
+        ImGui.sameLine();
+        widgets.action(ViewerAction.QUIT);
+        ImGui.end();
+    }
+
+    private String modelLine(LoadedModel model) {
+        if (model != namedModel) {
+            namedModel = model;
+            namedJoint = -1;
+            modelLine = model == null ? "(none)" : model.displayName();
+        }
+        return modelLine;
+    }
+
+    private String jointLine(Viewer viewer, LoadedModel model, int joint) {
+        if (joint != namedJoint || model != namedModel) {
+            namedJoint = joint;
+            int count = viewer.jointCount();
+            String name = "-";
+            if (model != null && count > 0) {
+                int node = model.mesh().geometries().get(0).jointNode(joint);
+                Model m = model.model();
+                name = node < 0 ? "(bind shape)" : m.node(node).name() != null ? m.node(node).name() : m.node(node).id();
+            }
+            jointLine = "joint " + joint + " of " + count + ": " + name;
+        }
+        return jointLine;
+    }
+
+    private void clips(Viewer viewer, LoadedModel model) {
+        if (model == null) {
+            return;
+        }
+        if (ImGui.beginCombo("Clip", model.clipName())) {
+            for (int i = 0; i < model.model().clips().size(); i++) {
+                AnimationClip c = model.model().clips().get(i);
+                if (ImGui.selectable(c.name(), i == model.clipIndex())) {
+                    viewer.playClip(i);
+                }
+            }
+            ImGui.endCombo();
+        }
+        widgets.remember("Clip");
+    }
+
+    private void timeline(AppFrame f, Viewer viewer, LoadedModel model) {
+        float duration = model == null ? 0f : (float) model.mesh().clipDuration();
+        float start = model == null || model.clipIndex() < 0 ? 0f
+                : model.model().clips().get(model.clipIndex()).start();
+        if (!scrubbing) {
+            timeline[0] = (float) f.clipTime() - start;
+        }
+        boolean moved = ImGui.sliderFloat("Time", timeline, 0f, Math.max(duration, 1e-3f), "%.2f s");
+        scrubbing = ImGui.isItemActive();
+        widgets.remember("Time");
+        if (moved) {
+            // Scrubbing pauses: the frame under the slider is the one to look at.
+            viewer.config().stopAnimation();
+            viewer.seek(timeline[0]);
+        }
+    }
+}
