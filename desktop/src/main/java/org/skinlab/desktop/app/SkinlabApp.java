@@ -52,6 +52,7 @@ public final class SkinlabApp implements AutoCloseable {
     private final WindowInput input;
     private final int[] size = new int[2];
     private AppUi ui = AppUi.NONE;
+    private ScriptPlayer player;
     private LoadedModel shown;
     private ModelRenderer renderer;
     private long frameNumber;
@@ -68,6 +69,8 @@ public final class SkinlabApp implements AutoCloseable {
             config.stopAnimation();
         }
         viewer = new Viewer(ModelLibrary.find(), config, !options.headless());
+        viewer.settings().setView(options.view());
+        viewer.settings().setSplit(options.splitMethod() != null);
         shader = new SkinningShader();
         input = new WindowInput(window, viewer, this);
         info.viewer = viewer;
@@ -85,6 +88,18 @@ public final class SkinlabApp implements AutoCloseable {
      * the exit status. Failures to open a window are one line on stderr.
      */
     public static int run(AppOptions options) {
+        UiScript script = null;
+        if (options.script() != null) {
+            try {
+                script = UiScript.read(options.script());
+            } catch (IOException e) {
+                System.err.println("skinlab: cannot read the script " + options.script() + ": " + e.getMessage());
+                return FAILED;
+            } catch (IllegalArgumentException e) {
+                System.err.println("skinlab: " + e.getMessage());
+                return FAILED;
+            }
+        }
         GlWindow window;
         try {
             window = new GlWindow("skinlab", options.width(), options.height(), !options.headless(), options.glDebug());
@@ -93,6 +108,9 @@ public final class SkinlabApp implements AutoCloseable {
             return FAILED;
         }
         try (window; SkinlabApp app = new SkinlabApp(window, options)) {
+            if (script != null) {
+                app.player = new ScriptPlayer(script, window, app, app.viewer, app.ui);
+            }
             return options.headless() ? app.screenshotOnce() : app.loop();
         }
     }
@@ -126,6 +144,14 @@ public final class SkinlabApp implements AutoCloseable {
         int status = OK;
         while (!window.shouldClose() && !viewer.quitRequested()) {
             glfwPollEvents();
+            if (player != null) {
+                player.beforeFrame();
+                if (player.failure() != null) {
+                    System.err.println("skinlab: script failed: " + player.failure());
+                    status = FAILED;
+                    break;
+                }
+            }
             boolean last = options.exitAfterFrames() > 0 && frameNumber + 1 >= options.exitAfterFrames();
             boolean drew = renderFrame(false);
             if (last) {
@@ -136,7 +162,16 @@ public final class SkinlabApp implements AutoCloseable {
                 break;
             }
         }
+        if (options.exitAfterFrames() > 0 || player != null) {
+            System.out.printf(java.util.Locale.ROOT, "skinlab: %d frames, %.0f fps (mean), model %s%n", frameNumber,
+                    info.stats.fps.mean(), shown == null ? "none" : shown.displayName());
+        }
         return status;
+    }
+
+    /** A file dropped on the window (or by a script): opened, or its error shown. */
+    void dropped(Path file) {
+        viewer.open(file);
     }
 
     /**

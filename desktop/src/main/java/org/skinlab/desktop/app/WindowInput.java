@@ -115,7 +115,7 @@ final class WindowInput implements AutoCloseable {
     }
 
     private void onDrop(Path file) {
-        viewer.open(file);
+        app.dropped(file);
     }
 
     @Override

@@ -35,7 +35,7 @@ public final class ViewCommand implements Callable<Integer> {
     RotationInterpolation interpolation = RotationInterpolation.SLERP;
 
     @Option(names = "--split", paramLabel = "lbs|dqs", converter = PoseCommand.MethodConverter.class,
-            description = "split view: this method drawn beside --method, in sync")
+            description = "split view: this method (the other one) drawn beside --method, in sync")
     SkinningMethod split;
 
     @Option(names = "--gpu", description = "skin in the vertex shader (the default)")
@@ -57,7 +57,7 @@ public final class ViewCommand implements Callable<Integer> {
 
     @Option(names = "--size", paramLabel = "WxH", converter = SizeConverter.class,
             description = "window or screenshot size in pixels (default: 1280x800)")
-    int[] size = {AppOptions.DEFAULT_WIDTH, AppOptions.DEFAULT_HEIGHT};
+    Size size = new Size(AppOptions.DEFAULT_WIDTH, AppOptions.DEFAULT_HEIGHT);
 
     @Option(names = "--hide-ui", description = "draw the scene only, without the toolbar")
     boolean hideUi;
@@ -77,14 +77,19 @@ public final class ViewCommand implements Callable<Integer> {
         if (gpu && cpu) {
             throw new CommandFailure(ExitCodes.USAGE, "--gpu and --cpu exclude each other", null);
         }
+        if (split != null && split == method) {
+            throw new CommandFailure(ExitCodes.USAGE, "--split names the method drawn beside --method: use the other "
+                    + "one (--method " + method.key() + " --split " + (method == SkinningMethod.LBS ? "dqs" : "lbs") + ")",
+                    null);
+        }
         if (exitAfterFrames < 0) {
             throw new CommandFailure(ExitCodes.USAGE, "--exit-after-frames needs a count >= 0", null);
         }
         if (time != null && !(time >= 0 && !time.isInfinite())) {
             throw new CommandFailure(ExitCodes.USAGE, "--time needs a finite time >= 0 (seconds)", null);
         }
-        AppOptions options = new AppOptions(file, method, interpolation, !cpu, view, split, time, screenshot, size[0],
-                size[1], hideUi, script, exitAfterFrames, glDebug);
+        AppOptions options = new AppOptions(file, method, interpolation, !cpu, view, split, time, screenshot, size.width(),
+                size.height(), hideUi, script, exitAfterFrames, glDebug);
         return SkinlabApp.run(options);
     }
 
@@ -101,16 +106,20 @@ public final class ViewCommand implements Callable<Integer> {
         }
     }
 
-    static final class SizeConverter implements CommandLine.ITypeConverter<int[]> {
+    /** A window or picture size in pixels. */
+    record Size(int width, int height) {
+    }
+
+    static final class SizeConverter implements CommandLine.ITypeConverter<Size> {
         @Override
-        public int[] convert(String value) {
+        public Size convert(String value) {
             String[] parts = value.toLowerCase(Locale.ROOT).split("x");
             try {
                 if (parts.length == 2) {
                     int w = Integer.parseInt(parts[0].trim());
                     int h = Integer.parseInt(parts[1].trim());
                     if (w >= 16 && h >= 16 && w <= 16384 && h <= 16384) {
-                        return new int[] {w, h};
+                        return new Size(w, h);
                     }
                 }
             } catch (NumberFormatException e) {

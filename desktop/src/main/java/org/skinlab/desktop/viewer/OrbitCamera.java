@@ -23,6 +23,8 @@ public final class OrbitCamera {
     private float pitch = (float) Math.toRadians(12);
     private float distance = 3f;
     private float radius = 1f;
+    /** Whether the distance still waits for the view's aspect (set by frame, used by projection). */
+    private boolean fitPending;
 
     /** Looks at the sphere from the front, slightly above, so that it fills the view's height. */
     public void frame(Vector3f centre, float sphereRadius) {
@@ -31,6 +33,7 @@ public final class OrbitCamera {
         yaw = 0f;
         pitch = (float) Math.toRadians(12);
         distance = radius / (float) Math.sin(FOV_Y / 2) * 1.1f;
+        fitPending = true;
     }
 
     public void frame(ModelFraming framing) {
@@ -76,6 +79,12 @@ public final class OrbitCamera {
 
     /** A perspective projection whose near and far planes keep the framed sphere in depth range. */
     public Matrix4f projection(float aspect, Matrix4f dest) {
+        if (fitPending) {
+            // The sphere must fit the narrower of the two fields of view.
+            float halfX = (float) Math.atan(Math.tan(FOV_Y / 2) * aspect);
+            distance = radius / (float) Math.sin(Math.min(FOV_Y / 2, halfX)) * 1.1f;
+            fitPending = false;
+        }
         float near = Math.max(distance - 50f * radius, distance * 0.01f);
         float far = distance + 50f * radius;
         return dest.setPerspective(FOV_Y, aspect, near, far);

@@ -1,0 +1,222 @@
+package org.skinlab.desktop.app;
+
+import static org.lwjgl.glfw.GLFW.*;
+
+import org.lwjgl.glfw.GLFWCursorEnterCallback;
+import org.lwjgl.glfw.GLFWCursorPosCallback;
+import org.lwjgl.glfw.GLFWKeyCallback;
+import org.lwjgl.glfw.GLFWMouseButtonCallback;
+import org.lwjgl.glfw.GLFWScrollCallback;
+import org.skinlab.desktop.render.GlWindow;
+import org.skinlab.desktop.viewer.LoadedModel;
+import org.skinlab.desktop.viewer.Viewer;
+import org.skinlab.desktop.viewer.ViewerAction;
+import org.skinlab.skinning.SkinningMethod;
+
+/**
+ * Plays a {@link UiScript} in the render loop. Input steps go through the GLFW callbacks
+ * installed at that moment (the interface's, which chain to the window's), so the interface and
+ * the scene see them as they would see a user's; a click spreads over frames because ImGui needs
+ * separate frames to see the mouse arrive, go down and come up.
+ */
+final class ScriptPlayer {
+    private static final int LOAD_TIMEOUT_FRAMES = 60 * 60;
+
+    private final UiScript script;
+    private final GlWindow window;
+    private final SkinlabApp app;
+    private final Viewer viewer;
+    private final AppUi ui;
+    private int next;
+    private int waitFrames;
+    private int loadWait = -1;
+    /** A click in progress: frames until press (2), release (0). */
+    private int clickPhase = -1;
+    private String failure;
+    private boolean entered;
+
+    ScriptPlayer(UiScript script, GlWindow window, SkinlabApp app, Viewer viewer, AppUi ui) {
+        this.script = script;
+        this.window = window;
+        this.app = app;
+        this.viewer = viewer;
+        this.ui = ui;
+    }
+
+    /** Whether every step ran (or one failed). */
+    boolean done() {
+        return failure != null || (next >= script.steps().size() && clickPhase < 0 && waitFrames == 0);
+    }
+
+    /** The first failed expectation or step, or null. */
+    String failure() {
+        return failure;
+    }
+
+    /** Runs the steps due before this frame. */
+    void beforeFrame() {
+        if (!entered) {
+            entered = true;
+            // Without a cursor-enter event, ImGui's GLFW backend keeps reading the real pointer.
+            GLFWCursorEnterCallback cb = glfwSetCursorEnterCallback(window.handle(), null);
+            glfwSetCursorEnterCallback(window.handle(), cb);
+            if (cb != null) {
+                cb.invoke(window.handle(), true);
+            }
+        }
+        if (clickPhase >= 0) {
+            if (clickPhase == 2) {
+                button(GLFW_PRESS);
+            } else if (clickPhase == 0) {
+                button(GLFW_RELEASE);
+            }
+            clickPhase--;
+            return;
+        }
+        if (waitFrames > 0) {
+            waitFrames--;
+            return;
+        }
+        if (loadWait >= 0) {
+            if (viewer.loading() && loadWait < LOAD_TIMEOUT_FRAMES) {
+                loadWait++;
+                return;
+            }
+            if (viewer.loading()) {
+                failure = "the file being loaded was not shown within " + LOAD_TIMEOUT_FRAMES + " frames";
+                return;
+            }
+            loadWait = -1;
+            // Show what finished before the next steps look at it.
+            viewer.update();
+        }
+        while (next < script.steps().size() && failure == null && waitFrames == 0 && clickPhase < 0 && loadWait < 0) {
+            UiScript.Step step = script.steps().get(next++);
+            try {
+                run(step);
+            } catch (RuntimeException e) {
+                failure = where(step) + e.getMessage();
+            }
+        }
+    }
+
+    private String where(UiScript.Step step) {
+        return script.file() + " line " + step.line() + ": ";
+    }
+
+    private void run(UiScript.Step s) {
+        switch (s.verb()) {
+            case "action":
+                ViewerAction a = ViewerAction.byName(s.rest())
+                        .orElseThrow(() -> new IllegalArgumentException("no action named " + s.rest()));
+                app.windowAction(a);
+                break;
+            case "key":
+                key(Keys.code(s.arg(0)), s.args().size() > 1 ? Keys.modifier(s.arg(1)) : 0);
+                break;
+            case "click":
+                float[] c = ui.itemCentre(s.rest());
+                if (c == null) {
+                    throw new IllegalArgumentException("no interface item labelled \"" + s.rest() + "\" was drawn");
+                }
+                move(c[0], c[1]);
+                clickPhase = 2;
+                break;
+            case "move":
+                move(s.number(0), s.number(1));
+                break;
+            case "drag":
+                move(s.number(0), s.number(1));
+                button(GLFW_PRESS);
+                move((s.number(0) + s.number(2)) / 2, (s.number(1) + s.number(3)) / 2);
+                move(s.number(2), s.number(3));
+                button(GLFW_RELEASE);
+                break;
+            case "scroll":
+                GLFWScrollCallback sc = glfwSetScrollCallback(window.handle(), null);
+                glfwSetScrollCallback(window.handle(), sc);
+                if (sc != null) {
+                    sc.invoke(window.handle(), 0, s.number(0));
+                }
+                break;
+            case "drop":
+                app.dropped(script.resolve(s.rest()));
+                break;
+            case "open":
+                viewer.open(script.resolve(s.rest()));
+                break;
+            case "seek":
+                viewer.seek(s.number(0));
+                break;
+            case "wait":
+                waitFrames = Integer.parseInt(s.arg(0));
+                break;
+            case "wait-loaded":
+                loadWait = 0;
+                break;
+            case "screenshot":
+                app.writeScreenshot(script.resolve(s.rest()));
+                break;
+            case "expect":
+                expect(s);
+                break;
+            case "quit":
+                window.requestClose();
+                break;
+            default:
+                throw new IllegalArgumentException("unknown verb " + s.verb());
+        }
+    }
+
+    private void expect(UiScript.Step s) {
+        String value = String.join(" ", s.args().subList(1, s.args().size()));
+        LoadedModel current = viewer.current();
+        switch (s.arg(0)) {
+            case "mesh":
+                String shown = current == null ? "(none)" : current.displayName();
+                if (!shown.equals(value)) {
+                    throw new IllegalStateException("expected mesh " + value + " but " + shown + " is shown");
+                }
+                break;
+            case "status":
+                if (!viewer.statusMessage().contains(value)) {
+                    throw new IllegalStateException("expected the status to contain \"" + value + "\" but it reads \""
+                            + viewer.statusMessage() + "\"");
+                }
+                break;
+            case "method":
+                SkinningMethod m = viewer.config().method();
+                if (!m.name().equalsIgnoreCase(value)) {
+                    throw new IllegalStateException("expected method " + value + " but it is " + m);
+                }
+                break;
+            default:
+                throw new IllegalArgumentException("cannot expect " + s.arg(0));
+        }
+    }
+
+    private void key(int key, int mods) {
+        GLFWKeyCallback cb = glfwSetKeyCallback(window.handle(), null);
+        glfwSetKeyCallback(window.handle(), cb);
+        if (cb != null) {
+            cb.invoke(window.handle(), key, glfwGetKeyScancode(key), GLFW_PRESS, mods);
+            cb.invoke(window.handle(), key, glfwGetKeyScancode(key), GLFW_RELEASE, mods);
+        }
+    }
+
+    private void move(float x, float y) {
+        GLFWCursorPosCallback cb = glfwSetCursorPosCallback(window.handle(), null);
+        glfwSetCursorPosCallback(window.handle(), cb);
+        if (cb != null) {
+            cb.invoke(window.handle(), x, y);
+        }
+    }
+
+    private void button(int action) {
+        GLFWMouseButtonCallback cb = glfwSetMouseButtonCallback(window.handle(), null);
+        glfwSetMouseButtonCallback(window.handle(), cb);
+        if (cb != null) {
+            cb.invoke(window.handle(), GLFW_MOUSE_BUTTON_LEFT, action, 0);
+        }
+    }
+}
