@@ -29,7 +29,8 @@ final class ScriptPlayer {
     private final AppUi ui;
     private int next;
     private int waitFrames;
-    private int loadWait = -1;
+    /** Frames waited for a load; -1 when not waiting. A script starts once the first model is shown. */
+    private int loadWait = 0;
     /** A click in progress: frames until press (2), release (0). */
     private int clickPhase = -1;
     private String failure;

@@ -244,7 +244,7 @@ public final class SkinlabApp implements AutoCloseable {
         shown = current;
         info.stats.clear();
         if (current != null) {
-            renderer = new ModelRenderer(shader, current.mesh().geometries(), textures::texture);
+            renderer = new ModelRenderer(shader, current.model(), current.mesh().geometries(), textures::texture);
             info.vertices = renderer.vertexCount();
             info.shaderInfluences = renderer.shaderInfluences();
             info.cappedVertices = renderer.cappedVertices();
@@ -294,6 +294,9 @@ public final class SkinlabApp implements AutoCloseable {
         draw.spacing = 2.2f * shown.framing().radius();
         draw.wireframe = viewer.settings().wireframe();
         renderer.draw(draw);
+        if (viewer.settings().skeleton()) {
+            renderer.drawSkeleton(draw);
+        }
     }
 
     /** Whether the scene area holds any pixel other than the background. */

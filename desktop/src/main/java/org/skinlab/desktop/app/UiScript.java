@@ -30,7 +30,7 @@ import java.util.Locale;
  * expect method LBS|DQS  the skinning method
  * quit                   close the window
  * </pre>
- * Paths are relative to the script's folder. Parsing checks every line before anything runs;
+ * The first step runs once the first model is shown. Paths are relative to the script's folder. Parsing checks every line before anything runs;
  * errors name the file and the line.
  */
 public final class UiScript {

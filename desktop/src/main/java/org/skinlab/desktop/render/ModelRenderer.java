@@ -13,6 +13,7 @@ import org.skinlab.model.Material;
 import org.skinlab.model.MaterialBinding;
 import org.skinlab.model.MeshInstance;
 import org.skinlab.model.MeshPart;
+import org.skinlab.model.Model;
 import org.skinlab.model.Texture;
 import org.skinlab.simulation.Frame;
 import org.skinlab.skinning.SkinnedGeometry;
@@ -30,6 +31,8 @@ public final class ModelRenderer implements AutoCloseable {
     }
 
     private final SkinningShader shader;
+    private final Model scene;
+    private SkeletonOverlay skeleton;
     private final List<GpuGeometry> geometries = new ArrayList<>();
     private final PartDraw[][] parts;
     private long uploadedSequence = Long.MIN_VALUE;
@@ -39,8 +42,10 @@ public final class ModelRenderer implements AutoCloseable {
      * @param shader   the skinning program (shared between models)
      * @param textures the GL texture of an image, 0 when it has none (a texture cache)
      */
-    public ModelRenderer(SkinningShader shader, List<SkinnedGeometry> geometries, ToIntFunction<Image> textures) {
+    public ModelRenderer(SkinningShader shader, Model scene, List<SkinnedGeometry> geometries,
+            ToIntFunction<Image> textures) {
         this.shader = shader;
+        this.scene = scene;
         parts = new PartDraw[geometries.size()][];
         for (int g = 0; g < geometries.size(); g++) {
             GpuGeometry gpu = new GpuGeometry(geometries.get(g));
@@ -142,6 +147,28 @@ public final class ModelRenderer implements AutoCloseable {
         }
     }
 
+    /**
+     * Draws the skeleton of the first skinned geometry over what is drawn, from the palette of
+     * the frame last uploaded.
+     */
+    public void drawSkeleton(DrawSettings s) {
+        GpuGeometry skinned = null;
+        for (GpuGeometry g : geometries) {
+            if (g.geometry().isSkinned()) {
+                skinned = g;
+                break;
+            }
+        }
+        if (skinned == null) {
+            return;
+        }
+        if (skeleton == null) {
+            skeleton = new SkeletonOverlay(scene, skinned.geometry());
+        }
+        skinned.bind(true);
+        skeleton.draw(s);
+    }
+
     public int geometryCount() {
         return geometries.size();
     }
@@ -177,5 +204,8 @@ public final class ModelRenderer implements AutoCloseable {
     public void close() {
         geometries.forEach(GpuGeometry::close);
         geometries.clear();
+        if (skeleton != null) {
+            skeleton.close();
+        }
     }
 }
