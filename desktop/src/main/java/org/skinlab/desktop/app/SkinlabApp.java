@@ -11,6 +11,7 @@ import java.time.format.DateTimeFormatter;
 
 import org.lwjgl.system.MemoryUtil;
 import org.skinlab.desktop.render.DrawSettings;
+import org.skinlab.desktop.render.GlDebugLog;
 import org.skinlab.desktop.render.GlWindow;
 import org.skinlab.desktop.render.ModelRenderer;
 import org.skinlab.desktop.render.Screenshot;
@@ -53,6 +54,7 @@ public final class SkinlabApp implements AutoCloseable {
     private final int[] size = new int[2];
     private AppUi ui = AppUi.NONE;
     private ScriptPlayer player;
+    private final GlDebugLog debugLog;
     private LoadedModel shown;
     private ModelRenderer renderer;
     private long frameNumber;
@@ -71,6 +73,10 @@ public final class SkinlabApp implements AutoCloseable {
         viewer = new Viewer(ModelLibrary.find(), config, !options.headless());
         viewer.settings().setView(options.view());
         viewer.settings().setSplit(options.splitMethod() != null);
+        debugLog = options.glDebug() ? GlDebugLog.install(window.capabilities()) : null;
+        if (options.glDebug() && debugLog == null) {
+            System.err.println("skinlab: --gl-debug: this OpenGL reports no debug messages (no OpenGL 4.3 or KHR_debug)");
+        }
         shader = new SkinningShader();
         input = new WindowInput(window, viewer, this);
         info.viewer = viewer;
@@ -111,7 +117,8 @@ public final class SkinlabApp implements AutoCloseable {
             if (script != null) {
                 app.player = new ScriptPlayer(script, window, app, app.viewer, app.ui);
             }
-            return options.headless() ? app.screenshotOnce() : app.loop();
+            int status = options.headless() ? app.screenshotOnce() : app.loop();
+            return app.reportGlErrors() ? FAILED : status;
         }
     }
 
@@ -167,6 +174,23 @@ public final class SkinlabApp implements AutoCloseable {
                     info.stats.fps.mean(), shown == null ? "none" : shown.displayName());
         }
         return status;
+    }
+
+    /** Prints what the debug context reported; true when there were errors. */
+    private boolean reportGlErrors() {
+        if (debugLog == null) {
+            return false;
+        }
+        int n = debugLog.errorCount();
+        for (String m : debugLog.messages()) {
+            System.err.println("skinlab: GL error: " + m);
+        }
+        if (n > 0) {
+            System.err.println("skinlab: " + n + " OpenGL error" + (n == 1 ? "" : "s") + " reported by the driver");
+        } else {
+            System.out.println("skinlab: no OpenGL errors reported (debug context)");
+        }
+        return n > 0;
     }
 
     /** A file dropped on the window (or by a script): opened, or its error shown. */
@@ -352,5 +376,8 @@ public final class SkinlabApp implements AutoCloseable {
         textures.close();
         shader.close();
         input.close();
+        if (debugLog != null) {
+            debugLog.close();
+        }
     }
 }

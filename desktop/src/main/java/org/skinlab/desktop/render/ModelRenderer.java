@@ -58,7 +58,7 @@ public final class ModelRenderer implements AutoCloseable {
         List<MeshPart> meshParts = gpu.parts();
         MeshInstance instance = gpu.instance();
         if (meshParts.isEmpty()) {
-            return new PartDraw[] {new PartDraw(0, gpu.indexCount(), Material.DEFAULT.diffuse(), 0)};
+            return new PartDraw[] {new PartDraw(0, gpu.indexCount(), Material.DEFAULT.diffuse().clone(), 0)};
         }
         PartDraw[] result = new PartDraw[meshParts.size()];
         for (int i = 0; i < result.length; i++) {
@@ -66,7 +66,8 @@ public final class ModelRenderer implements AutoCloseable {
             MaterialBinding binding = instance == null || part.material() == null ? null
                     : instance.material(part.material());
             Material material = binding == null ? Material.DEFAULT : binding.material();
-            float[] diffuse = material.diffuse().clone();
+            // A material may have no diffuse colour (a texture, or only emission): white then.
+            float[] diffuse = material.diffuse() != null ? material.diffuse().clone() : new float[] {1f, 1f, 1f, 1f};
             diffuse[3] = Math.min(diffuse[3], material.opacity());
             Texture texture = material.baseTexture();
             int id = texture != null && gpu.hasUv() ? textures.applyAsInt(texture.image()) : 0;
@@ -167,6 +168,65 @@ public final class ModelRenderer implements AutoCloseable {
         }
         skinned.bind(true);
         skeleton.draw(s);
+    }
+
+    /**
+     * Skins geometry {@code g} of the frame last uploaded on the GPU with {@code method} and reads
+     * the skinned positions back with transform feedback (the shader's own output, before the
+     * model matrix): 3 floats per render vertex, into {@code out} (at least {@code 3 *}
+     * {@link #vertexCount(int)} long). For checking the GPU against the CPU kernels.
+     */
+    public void captureSkinned(int g, SkinningMethod method, float[] out) {
+        GpuGeometry gpu = geometries.get(g);
+        int n = gpu.vertexCount();
+        int buffer = glGenBuffers();
+        int query = glGenQueries();
+        try {
+            glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, buffer);
+            glBufferData(GL_TRANSFORM_FEEDBACK_BUFFER, 12L * Math.max(1, n), GL_STREAM_READ);
+            shader.use();
+            glUniform1i(shader.skinning, method == SkinningMethod.DQS ? 2 : 1);
+            glUniform1i(shader.compare, 0);
+            glUniform1i(shader.selectedJoint, -1);
+            glUniform1i(shader.columns, 1);
+            glUniform1f(shader.spacing, 0f);
+            PaletteBuffers p = gpu.palette();
+            glUniform1i(shader.influences, gpu.influences());
+            glUniform1i(shader.hasScale, p.hasScale() ? 1 : 0);
+            glUniform1i(shader.matricesMirror, p.matricesMirror() ? 1 : 0);
+            glUniform1i(shader.scalesMirror, p.scalesMirror() ? 1 : 0);
+            gpu.bind(true);
+            glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, buffer);
+            glEnable(GL_RASTERIZER_DISCARD);
+            glBeginQuery(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, query);
+            glBeginTransformFeedback(GL_POINTS);
+            glDrawArrays(GL_POINTS, 0, n);
+            glEndTransformFeedback();
+            glEndQuery(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN);
+            glDisable(GL_RASTERIZER_DISCARD);
+            int written = glGetQueryObjecti(query, GL_QUERY_RESULT);
+            if (written != n) {
+                throw new IllegalStateException("transform feedback wrote " + written + " of " + n + " vertices");
+            }
+            FloatBuffer read = org.lwjgl.system.MemoryUtil.memAllocFloat(3 * Math.max(1, n));
+            try {
+                glGetBufferSubData(GL_TRANSFORM_FEEDBACK_BUFFER, 0, read);
+                read.get(out, 0, 3 * n);
+            } finally {
+                org.lwjgl.system.MemoryUtil.memFree(read);
+            }
+        } finally {
+            glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 0);
+            glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, 0);
+            glBindVertexArray(0);
+            glDeleteQueries(query);
+            glDeleteBuffers(buffer);
+        }
+    }
+
+    /** Render vertices of geometry {@code g}. */
+    public int vertexCount(int g) {
+        return geometries.get(g).vertexCount();
     }
 
     public int geometryCount() {
