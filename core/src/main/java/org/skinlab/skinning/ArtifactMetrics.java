@@ -34,6 +34,37 @@ public final class ArtifactMetrics {
         return sum / 6;
     }
 
+    /**
+     * Whether a geometry's mesh is closed: every triangle edge, taken between POSITION entries
+     * (so UV seams and hard edges do not open it), is shared by exactly two triangles. Only then
+     * is {@link #signedVolume} a volume.
+     */
+    public static boolean isClosed(SkinnedGeometry geometry) {
+        if (geometry.mesh() == null || geometry.mesh().triangleCount() == 0) {
+            return false;
+        }
+        int[] triangles = geometry.mesh().triangles();
+        int[] positionOf = geometry.mesh().vertexPositions();
+        java.util.Map<Long, Integer> edges = new java.util.HashMap<>(4 * triangles.length);
+        for (int t = 0; t < triangles.length; t += 3) {
+            for (int c = 0; c < 3; c++) {
+                long a = positionOf[triangles[t + c]];
+                long b = positionOf[triangles[t + (c + 1) % 3]];
+                if (a == b) {
+                    return false;
+                }
+                long key = Math.min(a, b) << 32 | Math.max(a, b);
+                edges.merge(key, 1, Integer::sum);
+            }
+        }
+        for (int count : edges.values()) {
+            if (count != 2) {
+                return false;
+            }
+        }
+        return true;
+    }
+
     /** Deformed volume over rest volume of a geometry's closed mesh. */
     public static double relativeVolume(SkinnedGeometry geometry, float[] deformedPoints) {
         if (geometry.mesh() == null) {

@@ -22,6 +22,7 @@ import org.skinlab.desktop.viewer.LoadedModel;
 import org.skinlab.desktop.viewer.ModelLibrary;
 import org.skinlab.desktop.viewer.Viewer;
 import org.skinlab.desktop.viewer.ViewerAction;
+import org.skinlab.animation.WrapMode;
 import org.skinlab.simulation.AnimationConfig;
 import org.skinlab.simulation.Frame;
 import org.skinlab.skinning.SkinningMethod;
@@ -57,6 +58,7 @@ public final class SkinlabApp implements AutoCloseable {
     private final GlDebugLog debugLog;
     private LoadedModel shown;
     private ModelRenderer renderer;
+    private DifferenceProbe difference;
     private long frameNumber;
     private long lastNanos;
     private final long startNanos;
@@ -132,10 +134,12 @@ public final class SkinlabApp implements AutoCloseable {
             return INVALID_FILE;
         }
         LoadedModel model = viewer.current();
+        // A still picture of a time at or past the clip's end shows the end, not the loop's start.
+        config.setWrapMode(WrapMode.CLAMP);
         model.mesh().seek(options.time() == null ? 0.0 : options.time());
         model.mesh().step(0.0);
         // ImGui lays its windows out over the first frames: draw a few before the picture.
-        int frames = options.hideUi() ? 1 : 3;
+        int frames = options.hideUi() ? 1 : 5;
         for (int i = 0; i < frames; i++) {
             renderFrame(i == frames - 1);
         }
@@ -266,6 +270,10 @@ public final class SkinlabApp implements AutoCloseable {
             renderer = null;
         }
         shown = current;
+        difference = null;
+        info.maxDifference = Double.NaN;
+        info.lbsVolume = Double.NaN;
+        info.dqsVolume = Double.NaN;
         info.stats.clear();
         if (current != null) {
             renderer = new ModelRenderer(shader, current.model(), current.mesh().geometries(), textures::texture);
@@ -284,6 +292,19 @@ public final class SkinlabApp implements AutoCloseable {
         glEnable(GL_BLEND);
         glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
         draw.model.set(shown.framing().upright());
+        if (viewer.settings().drawView() == DrawSettings.View.DIFFERENCE) {
+            if (difference == null) {
+                difference = new DifferenceProbe(shown.mesh().geometries());
+            }
+            difference.measure(frame);
+            info.maxDifference = difference.maxRelative();
+            info.differenceFull = DIFFERENCE_FULL;
+            info.lbsVolume = difference.lbsVolume();
+            info.dqsVolume = difference.dqsVolume();
+        } else {
+            info.lbsVolume = Double.NaN;
+            info.dqsVolume = Double.NaN;
+        }
         boolean cpuFrame = frame.hasSkinnedMesh();
         SkinningMethod first = cpuFrame ? frame.method() : config.method();
         boolean split = viewer.settings().split();
@@ -312,8 +333,9 @@ public final class SkinlabApp implements AutoCloseable {
         draw.method = method;
         draw.view = viewer.settings().drawView();
         draw.selectedJoint = viewer.settings().selectedJoint();
-        draw.scalarFull = draw.view == DrawSettings.View.DIFFERENCE
-                ? DIFFERENCE_FULL * shown.framing().size() : 1f;
+        // Distances in the shader are in the file's units, as the probe's size is.
+        draw.scalarFull = draw.view == DrawSettings.View.DIFFERENCE && difference != null
+                ? (float) (DIFFERENCE_FULL * difference.size()) : 1f;
         draw.instances = viewer.settings().instances();
         draw.spacing = 2.2f * shown.framing().radius();
         draw.wireframe = viewer.settings().wireframe();

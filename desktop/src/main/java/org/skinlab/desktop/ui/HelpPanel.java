@@ -14,7 +14,7 @@ final class HelpPanel {
         ImGui.setNextWindowPos(f.width() - 8f, f.height() - 8f, ImGuiCond.Always, 1f, 1f);
         ImGui.setNextWindowBgAlpha(0.85f);
         ImGui.begin("Keys", ImGuiWindowFlags.AlwaysAutoResize | ImGuiWindowFlags.NoMove | ImGuiWindowFlags.NoCollapse);
-        ImGui.textDisabled("Mouse: left drag orbits, right or middle drag pans, wheel zooms; drop a .dae to open it");
+        Widgets.dim("Mouse: left drag orbits, right or middle drag pans, wheel zooms; drop a .dae to open it");
         if (ImGui.beginTable("keys", 4, ImGuiTableFlags.SizingFixedFit)) {
             ViewerAction[] all = ViewerAction.values();
             int half = (all.length + 1) / 2;
@@ -34,6 +34,6 @@ final class HelpPanel {
         ImGui.tableNextColumn();
         ImGui.textUnformatted(a.keyName());
         ImGui.tableNextColumn();
-        ImGui.textDisabled(a.description());
+        Widgets.dim(a.description());
     }
 }

@@ -64,17 +64,17 @@ final class StatsPanel {
             plot("##skin", stats.skinningMillis, null);
         }
         ImGui.textUnformatted(vertices.of(meanVertices));
-        ImGui.textDisabled(drawn.of(f.vertices()));
+        Widgets.dim(drawn.of(f.vertices()));
         if (f.viewer().settings().drawView() == DrawSettings.View.DIFFERENCE) {
             ImGui.separator();
             ImGui.textUnformatted(difference.of(100 * f.maxDifference()));
-            ImGui.textDisabled(full.of(100 * f.differenceFull()));
+            Widgets.dim(full.of(100 * f.differenceFull()));
             if (!Double.isNaN(f.lbsVolume())) {
                 ImGui.textUnformatted(lbsVolume.of(f.lbsVolume()));
                 ImGui.textUnformatted(dqsVolume.of(f.dqsVolume()));
                 plot("##volume", stats.lbsVolume, stats.dqsVolume);
             } else {
-                ImGui.textDisabled("volume: the mesh is not closed");
+                Widgets.dim("volume: the mesh is not closed");
             }
         }
         ImGui.end();

@@ -49,7 +49,7 @@ final class ToolbarPanel {
         ImGui.setNextWindowBgAlpha(0.85f);
         ImGui.begin(TITLE, ImGuiWindowFlags.AlwaysAutoResize | ImGuiWindowFlags.NoMove | ImGuiWindowFlags.NoCollapse);
 
-        ImGui.textDisabled("Model");
+        Widgets.dim("Model");
         ImGui.textUnformatted(modelLine(model));
         widgets.action(ViewerAction.PREVIOUS_MESH);
         ImGui.sameLine();
@@ -59,7 +59,7 @@ final class ToolbarPanel {
         clips(viewer, model);
 
         ImGui.separator();
-        ImGui.textDisabled("Animation");
+        Widgets.dim("Animation");
         widgets.action(ViewerAction.TOGGLE_ANIMATION);
         ImGui.sameLine();
         ImGui.textUnformatted(config.isAnimationRunning() ? "playing" : "paused");
@@ -83,7 +83,7 @@ final class ToolbarPanel {
         widgets.action(ViewerAction.STEP_FORWARD);
 
         ImGui.separator();
-        ImGui.textDisabled("Skinning");
+        Widgets.dim("Skinning");
         for (SkinningMethod m : SkinningMethod.values()) {
             if (m != SkinningMethod.values()[0]) {
                 ImGui.sameLine();
@@ -94,14 +94,14 @@ final class ToolbarPanel {
             widgets.remember(m.name());
         }
         widgets.toggle(ViewerAction.TOGGLE_GPU_SKINNING, "GPU skinning", !config.isCpuSkinning());
-        ImGui.textDisabled(influences.of(f.shaderInfluences()));
+        Widgets.dim(influences.of(f.shaderInfluences()));
         if (f.cappedVertices() > 0) {
-            ImGui.textDisabled(capped.of(f.cappedVertices()));
+            Widgets.dim(capped.of(f.cappedVertices()));
         }
         widgets.toggle(ViewerAction.TOGGLE_SPLIT, "Split view (the other method beside)", s.split());
 
         ImGui.separator();
-        ImGui.textDisabled("View");
+        Widgets.dim("View");
         widgets.radio(ViewerAction.VIEW_SHADED, s.drawView() == DrawSettings.View.SHADED);
         ImGui.sameLine();
         widgets.radio(ViewerAction.VIEW_WEIGHTS, s.drawView() == DrawSettings.View.WEIGHTS);

@@ -6,6 +6,7 @@ import java.util.function.Consumer;
 import org.skinlab.desktop.viewer.ViewerAction;
 
 import imgui.ImGui;
+import imgui.flag.ImGuiCol;
 
 /**
  * The interface's clickable items: each remembers where it was drawn (window coordinates, by
@@ -54,6 +55,16 @@ final class Widgets {
         if (clicked) {
             actions.accept(action);
         }
+    }
+
+    /**
+     * Text in the dimmed colour, drawn as it is (ImGui's own text functions read it as a format,
+     * so a '%' in a number's text would be eaten).
+     */
+    static void dim(String text) {
+        ImGui.pushStyleColor(ImGuiCol.Text, 0.6f, 0.6f, 0.65f, 1f);
+        ImGui.textUnformatted(text);
+        ImGui.popStyleColor();
     }
 
     /** Records the last item's rectangle under {@code label}. */
