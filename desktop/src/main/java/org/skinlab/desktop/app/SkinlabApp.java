@@ -153,7 +153,12 @@ public final class SkinlabApp implements AutoCloseable {
         viewer.open(options.file() != null ? options.file() : viewer.library().defaultModel());
         lastNanos = System.nanoTime();
         int status = OK;
+        AllocationMeter allocations = new AllocationMeter();
         while (!window.shouldClose() && !viewer.quitRequested()) {
+            // The second half of a bounded run: the window, the model and the JIT have settled.
+            if (frameNumber == options.exitAfterFrames() / 2) {
+                allocations.start(frameNumber);
+            }
             glfwPollEvents();
             if (player != null) {
                 player.beforeFrame();
@@ -174,8 +179,9 @@ public final class SkinlabApp implements AutoCloseable {
             }
         }
         if (options.exitAfterFrames() > 0 || player != null) {
-            System.out.printf(java.util.Locale.ROOT, "skinlab: %d frames, %.0f fps (mean), model %s%n", frameNumber,
-                    info.stats.fps.mean(), shown == null ? "none" : shown.displayName());
+            System.out.printf(java.util.Locale.ROOT, "skinlab: %d frames, %.0f fps (mean), model %s%s%n", frameNumber,
+                    info.stats.fps.mean(), shown == null ? "none" : shown.displayName(),
+                    allocations.describe(frameNumber));
         }
         return status;
     }

@@ -1,6 +1,7 @@
 package org.skinlab.desktop.cli;
 
 import java.io.PrintWriter;
+import java.util.List;
 
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
@@ -9,7 +10,7 @@ import picocli.CommandLine.Command;
 @Command(name = "skinlab", mixinStandardHelpOptions = true, versionProvider = SkinlabCommand.Version.class,
         description = "Skeletal animation lab: view COLLADA characters skinned with LBS and DQS (no subcommand: the window "
                 + "on the default character), inspect them, pose them, benchmark.",
-        subcommands = {ViewCommand.class, CheckGpuCommand.class, InspectCommand.class, PoseCommand.class, BenchCommand.class,
+        subcommands = {ViewCommand.class, CheckGpuCommand.class, RenderBenchCommand.class, InspectCommand.class, PoseCommand.class, BenchCommand.class,
                 CommandLine.HelpCommand.class})
 public final class SkinlabCommand implements Runnable {
     @CommandLine.Spec
@@ -17,11 +18,23 @@ public final class SkinlabCommand implements Runnable {
 
     @Override
     public void run() {
-        // No subcommand: the window on the default character.
-        int status = spec.commandLine().getSubcommands().get("view").execute();
-        if (status != ExitCodes.OK) {
-            throw new CommandFailure(status, "the viewer ended with status " + status, null);
+        throw new CommandLine.ParameterException(spec.commandLine(), "a subcommand is required");
+    }
+
+    /**
+     * The arguments with {@code view} in front when they name no subcommand: {@code skinlab} alone
+     * opens the window, and {@code skinlab --exit-after-frames 120} is {@code skinlab view ...}.
+     * The top-level help and version options stay the top level's.
+     */
+    static String[] withDefaultCommand(String... args) {
+        if (args.length > 0 && (!args[0].startsWith("-") || List.of("-h", "--help", "-V", "--version")
+                .contains(args[0]))) {
+            return args;
         }
+        String[] view = new String[args.length + 1];
+        view[0] = "view";
+        System.arraycopy(args, 0, view, 1, args.length);
+        return view;
     }
 
     /** Runs the command line and returns the exit status (see {@link ExitCodes}). */
@@ -46,7 +59,7 @@ public final class SkinlabCommand implements Runnable {
         });
         int status;
         try {
-            status = cl.execute(args);
+            status = cl.execute(withDefaultCommand(args));
         } catch (OutOfMemoryError e) {
             // Errors bypass picocli's exception handler; this one is worth a clear line.
             err.println("skinlab: out of memory; give Java more with SKINLAB_OPTS=-Xmx4g (or JAVA_OPTS)");

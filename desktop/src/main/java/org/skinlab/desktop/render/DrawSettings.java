@@ -34,12 +34,16 @@ public final class DrawSettings {
     /** The value at the top of the colour map: weight 1, or a distance in model units. */
     public float scalarFull = 1f;
     public int instances = 1;
+    /** The grid cell of the first instance drawn (copies with poses of their own are drawn one by one). */
+    public int firstInstance;
+    /** Grid cells per row; 0: about square for {@link #instances}. */
+    public int gridColumns;
     /** Distance between instances in the grid, in world units. */
     public float spacing = 1f;
     public boolean wireframe;
 
     /** Instances per row of the grid: about square. */
     public int columns() {
-        return Math.max(1, (int) Math.ceil(Math.sqrt(instances)));
+        return gridColumns > 0 ? gridColumns : Math.max(1, (int) Math.ceil(Math.sqrt(instances)));
     }
 }

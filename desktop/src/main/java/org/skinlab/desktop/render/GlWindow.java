@@ -3,7 +3,6 @@ package org.skinlab.desktop.render;
 import static org.lwjgl.glfw.GLFW.*;
 import static org.lwjgl.system.MemoryUtil.NULL;
 
-import java.nio.IntBuffer;
 
 import org.lwjgl.glfw.GLFWErrorCallback;
 import org.lwjgl.opengl.GL;
@@ -21,6 +20,8 @@ public final class GlWindow implements AutoCloseable {
     private final GLCapabilities capabilities;
     private final GLFWErrorCallback errorCallback;
     private final boolean debugContext;
+    private final int[] width = new int[1];
+    private final int[] height = new int[1];
 
     /** Raised when no window or no OpenGL 3.3 core context can be had. */
     public static final class WindowUnavailableException extends RuntimeException {
@@ -100,13 +101,9 @@ public final class GlWindow implements AutoCloseable {
 
     /** Framebuffer size in pixels (differs from the window size on HiDPI screens). */
     public void framebufferSize(int[] widthHeight) {
-        try (MemoryStack stack = MemoryStack.stackPush()) {
-            IntBuffer w = stack.mallocInt(1);
-            IntBuffer h = stack.mallocInt(1);
-            glfwGetFramebufferSize(handle, w, h);
-            widthHeight[0] = w.get(0);
-            widthHeight[1] = h.get(0);
-        }
+        glfwGetFramebufferSize(handle, width, height);
+        widthHeight[0] = width[0];
+        widthHeight[1] = height[0];
     }
 
     /** The monitor's content scale (UI scale on HiDPI screens), at least 1. */

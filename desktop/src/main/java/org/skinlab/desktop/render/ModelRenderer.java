@@ -7,7 +7,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.function.ToIntFunction;
 
-import org.lwjgl.system.MemoryStack;
+import org.lwjgl.system.MemoryUtil;
 import org.skinlab.model.Image;
 import org.skinlab.model.Material;
 import org.skinlab.model.MaterialBinding;
@@ -35,6 +35,8 @@ public final class ModelRenderer implements AutoCloseable {
     private SkeletonOverlay skeleton;
     private final List<GpuGeometry> geometries = new ArrayList<>();
     private final PartDraw[][] parts;
+    /** 16 floats off the heap for matrix uniforms: nothing is allocated per draw, JIT or not. */
+    private final FloatBuffer matrix = MemoryUtil.memAllocFloat(16);
     private long uploadedSequence = Long.MIN_VALUE;
     private Frame uploadedFrame;
 
@@ -98,11 +100,8 @@ public final class ModelRenderer implements AutoCloseable {
      */
     public void draw(DrawSettings s) {
         shader.use();
-        try (MemoryStack stack = MemoryStack.stackPush()) {
-            FloatBuffer m = stack.mallocFloat(16);
-            glUniformMatrix4fv(shader.viewProjection, false, s.viewProjection.get(m));
-            glUniformMatrix4fv(shader.model, false, s.model.get(m));
-        }
+        glUniformMatrix4fv(shader.viewProjection, false, s.viewProjection.get(matrix));
+        glUniformMatrix4fv(shader.model, false, s.model.get(matrix));
         glUniform3f(shader.eye, s.eye.x, s.eye.y, s.eye.z);
         glUniform1i(shader.skinning, !s.gpuSkinning ? 0 : s.method == SkinningMethod.DQS ? 2 : 1);
         glUniform1i(shader.compare, s.view == DrawSettings.View.DIFFERENCE ? 1 : 0);
@@ -111,6 +110,7 @@ public final class ModelRenderer implements AutoCloseable {
         glUniform1f(shader.scalarFull, s.scalarFull);
         glUniform1i(shader.columns, s.columns());
         glUniform1f(shader.spacing, s.spacing);
+        glUniform1i(shader.firstInstance, s.firstInstance);
         glUniform1i(shader.flat, 0);
         drawAll(s, false);
         if (s.wireframe) {
@@ -190,6 +190,7 @@ public final class ModelRenderer implements AutoCloseable {
             glUniform1i(shader.selectedJoint, -1);
             glUniform1i(shader.columns, 1);
             glUniform1f(shader.spacing, 0f);
+            glUniform1i(shader.firstInstance, 0);
             PaletteBuffers p = gpu.palette();
             glUniform1i(shader.influences, gpu.influences());
             glUniform1i(shader.hasScale, p.hasScale() ? 1 : 0);
@@ -208,12 +209,12 @@ public final class ModelRenderer implements AutoCloseable {
             if (written != n) {
                 throw new IllegalStateException("transform feedback wrote " + written + " of " + n + " vertices");
             }
-            FloatBuffer read = org.lwjgl.system.MemoryUtil.memAllocFloat(3 * Math.max(1, n));
+            FloatBuffer read = MemoryUtil.memAllocFloat(3 * Math.max(1, n));
             try {
                 glGetBufferSubData(GL_TRANSFORM_FEEDBACK_BUFFER, 0, read);
                 read.get(out, 0, 3 * n);
             } finally {
-                org.lwjgl.system.MemoryUtil.memFree(read);
+                MemoryUtil.memFree(read);
             }
         } finally {
             glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 0);
@@ -267,5 +268,6 @@ public final class ModelRenderer implements AutoCloseable {
         if (skeleton != null) {
             skeleton.close();
         }
+        MemoryUtil.memFree(matrix);
     }
 }

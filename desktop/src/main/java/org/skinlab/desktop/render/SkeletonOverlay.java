@@ -7,7 +7,6 @@ import java.nio.FloatBuffer;
 
 import org.joml.Matrix4f;
 import org.joml.Vector3f;
-import org.lwjgl.system.MemoryStack;
 import org.lwjgl.system.MemoryUtil;
 import org.skinlab.model.Model;
 import org.skinlab.skinning.SkinnedGeometry;
@@ -29,6 +28,7 @@ final class SkeletonOverlay implements AutoCloseable {
     private final int spacing;
     private final int pointSize;
     private final int color;
+    private final FloatBuffer matrix = MemoryUtil.memAllocFloat(16);
 
     SkeletonOverlay(Model scene, SkinnedGeometry geometry) {
         int joints = geometry.jointCount();
@@ -111,11 +111,8 @@ final class SkeletonOverlay implements AutoCloseable {
     /** Draws with the palette that is bound (the first geometry's). */
     void draw(DrawSettings s) {
         program.use();
-        try (MemoryStack stack = MemoryStack.stackPush()) {
-            FloatBuffer m = stack.mallocFloat(16);
-            glUniformMatrix4fv(viewProjection, false, s.viewProjection.get(m));
-            glUniformMatrix4fv(model, false, s.model.get(m));
-        }
+        glUniformMatrix4fv(viewProjection, false, s.viewProjection.get(matrix));
+        glUniformMatrix4fv(model, false, s.model.get(matrix));
         glUniform1i(columns, s.columns());
         glUniform1f(spacing, s.spacing);
         glDisable(GL_DEPTH_TEST);
@@ -136,5 +133,6 @@ final class SkeletonOverlay implements AutoCloseable {
         glDeleteVertexArrays(vao);
         glDeleteBuffers(vbo);
         program.close();
+        MemoryUtil.memFree(matrix);
     }
 }

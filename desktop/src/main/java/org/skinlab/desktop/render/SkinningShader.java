@@ -26,6 +26,7 @@ public final class SkinningShader implements AutoCloseable {
     final int scalarFull;
     final int columns;
     final int spacing;
+    final int firstInstance;
     final int flat;
     final int flatColor;
     final int diffuse;
@@ -47,6 +48,7 @@ public final class SkinningShader implements AutoCloseable {
         scalarFull = program.uniform("uScalarFull");
         columns = program.uniform("uColumns");
         spacing = program.uniform("uSpacing");
+        firstInstance = program.uniform("uFirstInstance");
         flat = program.uniform("uFlat");
         flatColor = program.uniform("uFlatColor");
         diffuse = program.uniform("uDiffuse");

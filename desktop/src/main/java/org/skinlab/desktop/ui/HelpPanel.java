@@ -10,13 +10,15 @@ import imgui.flag.ImGuiWindowFlags;
 
 /** Every key and what it does (the list is the actions' own, so it cannot go stale). */
 final class HelpPanel {
+    private static final ViewerAction[] ALL = ViewerAction.values();
+
     void draw(AppFrame f) {
         ImGui.setNextWindowPos(f.width() - 8f, f.height() - 8f, ImGuiCond.Always, 1f, 1f);
         ImGui.setNextWindowBgAlpha(0.85f);
         ImGui.begin("Keys", ImGuiWindowFlags.AlwaysAutoResize | ImGuiWindowFlags.NoMove | ImGuiWindowFlags.NoCollapse);
         Widgets.dim("Mouse: left drag orbits, right or middle drag pans, wheel zooms; drop a .dae to open it");
         if (ImGui.beginTable("keys", 4, ImGuiTableFlags.SizingFixedFit)) {
-            ViewerAction[] all = ViewerAction.values();
+            ViewerAction[] all = ALL;
             int half = (all.length + 1) / 2;
             for (int i = 0; i < half; i++) {
                 ImGui.tableNextRow();

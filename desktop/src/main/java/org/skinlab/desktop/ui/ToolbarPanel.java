@@ -24,6 +24,10 @@ final class ToolbarPanel {
     /** The toolbar's window title; scripts and tests find it by this name. */
     static final String TITLE = "skinlab";
 
+    // values() copies its array on every call; the interface draws every frame.
+    private static final RotationInterpolation[] INTERPOLATIONS = RotationInterpolation.values();
+    private static final SkinningMethod[] METHODS = SkinningMethod.values();
+
     private final Widgets widgets;
     private final float[] timeline = new float[1];
     private final CachedText speed = new CachedText("speed x%.2f");
@@ -70,7 +74,7 @@ final class ToolbarPanel {
         ImGui.sameLine();
         ImGui.textUnformatted(speed.of(config.speed()));
         ImGui.textUnformatted("Interpolation");
-        for (RotationInterpolation r : RotationInterpolation.values()) {
+        for (RotationInterpolation r : INTERPOLATIONS) {
             ImGui.sameLine();
             if (ImGui.radioButton(r.name(), config.interpolation() == r)) {
                 config.setInterpolation(r);
@@ -84,8 +88,8 @@ final class ToolbarPanel {
 
         ImGui.separator();
         Widgets.dim("Skinning");
-        for (SkinningMethod m : SkinningMethod.values()) {
-            if (m != SkinningMethod.values()[0]) {
+        for (SkinningMethod m : METHODS) {
+            if (m != METHODS[0]) {
                 ImGui.sameLine();
             }
             if (ImGui.radioButton(m.name(), config.method() == m)) {

@@ -27,6 +27,7 @@ uniform mat4 uModel;          // upright and unit fix, placement on the floor
 uniform mat4 uViewProjection;
 uniform int uColumns;         // instances: a grid of copies, gl_InstanceID row by row
 uniform float uSpacing;
+uniform int uFirstInstance;   // grid cell of instance 0 (one draw per copy when each has its own pose)
 
 out vec3 vWorld;
 out vec3 vNormal;
@@ -132,8 +133,9 @@ void main() {
         }
     }
     vPosed = posed;
-    int column = gl_InstanceID % uColumns;
-    int row = gl_InstanceID / uColumns;
+    int cell = gl_InstanceID + uFirstInstance;
+    int column = cell % uColumns;
+    int row = cell / uColumns;
     vec3 offset = vec3((float(column) - 0.5 * float(uColumns - 1)) * uSpacing, 0.0, -float(row) * uSpacing);
     vec4 world = uModel * vec4(posed, 1.0) + vec4(offset, 0.0);
     vWorld = world.xyz;
