@@ -4,6 +4,7 @@ import static org.lwjgl.glfw.GLFW.*;
 import static org.lwjgl.opengl.GL33C.*;
 
 import java.io.IOException;
+import java.io.PrintWriter;
 import java.nio.ByteBuffer;
 import java.nio.file.Path;
 import java.time.LocalDateTime;
@@ -44,6 +45,8 @@ public final class SkinlabApp implements AutoCloseable {
     private static final float DIFFERENCE_FULL = 0.05f;
 
     private final GlWindow window;
+    private final PrintWriter out;
+    private final PrintWriter err;
     private final AppOptions options;
     private final AnimationConfig config = new AnimationConfig();
     private final Viewer viewer;
@@ -63,8 +66,10 @@ public final class SkinlabApp implements AutoCloseable {
     private long lastNanos;
     private final long startNanos;
 
-    private SkinlabApp(GlWindow window, AppOptions options) {
+    private SkinlabApp(GlWindow window, AppOptions options, PrintWriter out, PrintWriter err) {
         this.window = window;
+        this.out = out;
+        this.err = err;
         this.options = options;
         config.setMethod(options.method());
         config.setInterpolation(options.interpolation());
@@ -77,7 +82,7 @@ public final class SkinlabApp implements AutoCloseable {
         viewer.settings().setSplit(options.splitMethod() != null);
         debugLog = options.glDebug() ? GlDebugLog.install(window.capabilities()) : null;
         if (options.glDebug() && debugLog == null) {
-            System.err.println("skinlab: --gl-debug: this OpenGL reports no debug messages (no OpenGL 4.3 or KHR_debug)");
+            err.println("skinlab: --gl-debug: this OpenGL reports no debug messages (no OpenGL 4.3 or KHR_debug)");
         }
         shader = new SkinningShader();
         input = new WindowInput(window, viewer, this);
@@ -95,16 +100,16 @@ public final class SkinlabApp implements AutoCloseable {
      * Runs the window (or, with a screenshot path, one off-screen frame) until it closes; returns
      * the exit status. Failures to open a window are one line on stderr.
      */
-    public static int run(AppOptions options) {
+    public static int run(AppOptions options, PrintWriter out, PrintWriter err) {
         UiScript script = null;
         if (options.script() != null) {
             try {
                 script = UiScript.read(options.script());
             } catch (IOException e) {
-                System.err.println("skinlab: cannot read the script " + options.script() + ": " + e.getMessage());
+                err.println("skinlab: cannot read the script " + options.script() + ": " + e.getMessage());
                 return FAILED;
             } catch (IllegalArgumentException e) {
-                System.err.println("skinlab: " + e.getMessage());
+                err.println("skinlab: " + e.getMessage());
                 return FAILED;
             }
         }
@@ -112,10 +117,10 @@ public final class SkinlabApp implements AutoCloseable {
         try {
             window = new GlWindow("skinlab", options.width(), options.height(), !options.headless(), options.glDebug());
         } catch (GlWindow.WindowUnavailableException e) {
-            System.err.println("skinlab: " + e.getMessage());
+            err.println("skinlab: " + e.getMessage());
             return FAILED;
         }
-        try (window; SkinlabApp app = new SkinlabApp(window, options)) {
+        try (window; SkinlabApp app = new SkinlabApp(window, options, out, err)) {
             if (script != null) {
                 app.player = new ScriptPlayer(script, window, app, app.viewer, app.ui);
             }
@@ -130,7 +135,7 @@ public final class SkinlabApp implements AutoCloseable {
         Path file = options.file() != null ? options.file() : viewer.library().defaultModel();
         String error = viewer.openAndWait(file);
         if (error != null) {
-            System.err.println("skinlab: " + error);
+            err.println("skinlab: " + error);
             return INVALID_FILE;
         }
         LoadedModel model = viewer.current();
@@ -163,7 +168,7 @@ public final class SkinlabApp implements AutoCloseable {
             if (player != null) {
                 player.beforeFrame();
                 if (player.failure() != null) {
-                    System.err.println("skinlab: script failed: " + player.failure());
+                    err.println("skinlab: script failed: " + player.failure());
                     status = FAILED;
                     break;
                 }
@@ -172,14 +177,14 @@ public final class SkinlabApp implements AutoCloseable {
             boolean drew = renderFrame(false);
             if (last) {
                 if (!drew || !sceneHasPixels()) {
-                    System.err.println("skinlab: nothing was drawn in " + options.exitAfterFrames() + " frames");
+                    err.println("skinlab: nothing was drawn in " + options.exitAfterFrames() + " frames");
                     status = FAILED;
                 }
                 break;
             }
         }
         if (options.exitAfterFrames() > 0 || player != null) {
-            System.out.printf(java.util.Locale.ROOT, "skinlab: %d frames, %.0f fps (mean), model %s%s%n", frameNumber,
+            out.printf(java.util.Locale.ROOT, "skinlab: %d frames, %.0f fps (mean), model %s%s%n", frameNumber,
                     info.stats.fps.mean(), shown == null ? "none" : shown.displayName(),
                     allocations.describe(frameNumber));
         }
@@ -193,12 +198,12 @@ public final class SkinlabApp implements AutoCloseable {
         }
         int n = debugLog.errorCount();
         for (String m : debugLog.messages()) {
-            System.err.println("skinlab: GL error: " + m);
+            err.println("skinlab: GL error: " + m);
         }
         if (n > 0) {
-            System.err.println("skinlab: " + n + " OpenGL error" + (n == 1 ? "" : "s") + " reported by the driver");
+            err.println("skinlab: " + n + " OpenGL error" + (n == 1 ? "" : "s") + " reported by the driver");
         } else {
-            System.out.println("skinlab: no OpenGL errors reported (debug context)");
+            out.println("skinlab: no OpenGL errors reported (debug context)");
         }
         return n > 0;
     }

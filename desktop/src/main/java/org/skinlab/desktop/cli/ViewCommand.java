@@ -14,6 +14,8 @@ import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+import picocli.CommandLine.Model.CommandSpec;
 
 /**
  * {@code skinlab view [FILE] [options]}: the window (the default character when no file is
@@ -23,6 +25,9 @@ import picocli.CommandLine.Parameters;
         description = {"Open the viewer window on a COLLADA file (default: the bundled walking character).",
                 "With --screenshot, render one frame to a PNG and exit (no window is shown)."})
 public final class ViewCommand implements Callable<Integer> {
+    @Spec
+    CommandSpec spec;
+
     @Parameters(index = "0", arity = "0..1", paramLabel = "FILE", description = "a .dae file")
     Path file;
 
@@ -90,7 +95,7 @@ public final class ViewCommand implements Callable<Integer> {
         }
         AppOptions options = new AppOptions(file, method, interpolation, !cpu, view, split, time, screenshot, size.width(),
                 size.height(), hideUi, script, exitAfterFrames, glDebug);
-        return SkinlabApp.run(options);
+        return SkinlabApp.run(options, spec.commandLine().getOut(), spec.commandLine().getErr());
     }
 
     static final class ViewConverter implements CommandLine.ITypeConverter<DrawSettings.View> {

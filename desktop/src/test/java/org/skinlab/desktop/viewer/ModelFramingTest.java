@@ -1,0 +1,49 @@
+package org.skinlab.desktop.viewer;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+
+import org.joml.Vector3f;
+import org.junit.jupiter.api.Test;
+import org.skinlab.collada.ColladaImporter;
+import org.skinlab.model.Model;
+import org.skinlab.model.UpAxis;
+import org.skinlab.simulation.Frame;
+import org.skinlab.simulation.SkeletalAnimatedMesh;
+
+/** Every file stands upright, on the floor, at its size in metres. */
+class ModelFramingTest {
+    private static ModelFraming framing(String asset) throws Exception {
+        Model model = ColladaImporter.read(ModelLibrary.find().defaultModel().getParent().getParent().resolve(asset));
+        try (SkeletalAnimatedMesh mesh = SkeletalAnimatedMesh.of(model)) {
+            mesh.step(0);
+            try (Frame f = mesh.acquire()) {
+                return ModelFraming.of(model.asset(), mesh.geometries(), f);
+            }
+        }
+    }
+
+    @Test
+    void theHumanoidStandsUprightOnTheFloor() throws Exception {
+        // A Z-up Blender file (assets/README.md: about 1.81 m tall, feet on z = 0).
+        Model model = ColladaImporter.read(ModelLibrary.find().defaultModel());
+        assertEquals(UpAxis.Z_UP, model.asset().upAxis());
+        ModelFraming f = framing("characters/humanoid-walk.dae");
+        assertEquals(1.81, f.height(), 0.1);
+        assertEquals(f.height() / 2, f.centre().y, 0.05);
+        // Its head is up: the top of the bounds is the head's height, and the radius covers it.
+        Vector3f head = f.upright().transformPosition(new Vector3f(0, 0, 1.75f), new Vector3f());
+        assertEquals(1.75, head.y, 0.1);
+        assertTrue(f.radius() >= f.height() / 2);
+    }
+
+    @Test
+    void theCylinderIsTwoMetresTall() throws Exception {
+        ModelFraming f = framing("cylinders/cylinder-twist-high.dae");
+        assertEquals(2.0, f.height(), 0.02);
+        assertEquals(0.0, f.centre().x, 1e-5);
+        assertEquals(0.0, f.centre().z, 1e-5);
+    }
+
+}

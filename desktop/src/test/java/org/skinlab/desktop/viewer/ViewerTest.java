@@ -1,0 +1,109 @@
+package org.skinlab.desktop.viewer;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertSame;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.function.BooleanSupplier;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.skinlab.desktop.render.DrawSettings;
+import org.skinlab.simulation.AnimationConfig;
+import org.skinlab.skinning.SkinningMethod;
+
+/** The viewer's actions and loading, without a window. */
+class ViewerTest {
+    private static Viewer viewer(boolean threaded) {
+        return new Viewer(ModelLibrary.find(), new AnimationConfig(), threaded);
+    }
+
+    private static void await(Viewer v, BooleanSupplier done) throws InterruptedException {
+        long deadline = System.nanoTime() + 60_000_000_000L;
+        while (!done.getAsBoolean()) {
+            assertTrue(System.nanoTime() < deadline, "timed out; status: " + v.statusMessage());
+            Thread.sleep(10);
+            v.update();
+        }
+    }
+
+    @Test
+    void nextMeshShowsTheNextBundledModel() throws Exception {
+        try (Viewer v = viewer(true)) {
+            assertNull(v.current());
+            v.open(v.library().defaultModel());
+            await(v, () -> v.current() != null);
+            assertEquals(ModelLibrary.DEFAULT_ASSET, v.current().displayName());
+            assertTrue(v.current().mesh().isRunning(), "the simulation runs once shown");
+            LoadedModel first = v.current();
+            v.perform(ViewerAction.NEXT_MESH);
+            await(v, () -> v.current() != first);
+            assertEquals(v.library().models().get(1), v.current().file());
+            assertFalse(first.mesh().isRunning(), "the previous simulation stops");
+            v.perform(ViewerAction.PREVIOUS_MESH);
+            await(v, () -> v.current().file().equals(first.file()));
+        }
+    }
+
+    @Test
+    void aBadFileKeepsThePreviousModelAndSaysWhy(@TempDir Path dir) throws Exception {
+        Path bad = dir.resolve("broken.dae");
+        Files.writeString(bad, "<COLLADA><library_geometries><geometry id=\"g\"><mesh>");
+        try (Viewer v = viewer(false)) {
+            assertEquals(null, v.openAndWait(v.library().defaultModel()));
+            LoadedModel shown = v.current();
+            String error = v.openAndWait(bad);
+            assertNotNull(error);
+            assertTrue(error.contains("broken.dae"), error);
+            assertSame(shown, v.current());
+            assertEquals(error, v.statusMessage());
+            String missing = v.openAndWait(dir.resolve("nothing.dae"));
+            assertTrue(missing.contains("nothing.dae") && missing.contains("not found"), missing);
+            assertTrue(v.openAndWait(dir).contains("directory"));
+            assertSame(shown, v.current());
+        }
+    }
+
+    @Test
+    void everyActionDoesSomethingOrIsTheWindows() throws Exception {
+        try (Viewer v = viewer(false)) {
+            v.openAndWait(v.library().defaultModel());
+            AnimationConfig c = v.config();
+            v.perform(ViewerAction.NEXT_METHOD);
+            assertEquals(SkinningMethod.DQS, c.method());
+            boolean running = c.isAnimationRunning();
+            v.perform(ViewerAction.TOGGLE_ANIMATION);
+            assertEquals(!running, c.isAnimationRunning());
+            double speed = c.speed();
+            v.perform(ViewerAction.FASTER);
+            assertTrue(c.speed() > speed);
+            boolean cpu = c.isCpuSkinning();
+            v.perform(ViewerAction.TOGGLE_GPU_SKINNING);
+            assertEquals(!cpu, c.isCpuSkinning());
+            v.perform(ViewerAction.MORE_INSTANCES);
+            assertEquals(2, v.settings().instances());
+            v.perform(ViewerAction.VIEW_DIFFERENCE);
+            assertEquals(DrawSettings.View.DIFFERENCE, v.settings().drawView());
+            v.perform(ViewerAction.PREVIOUS_JOINT);
+            assertEquals(v.jointCount() - 1, v.settings().selectedJoint());
+            double before = v.current().mesh().playbackTime();
+            v.perform(ViewerAction.STEP_FORWARD);
+            assertEquals(before + Viewer.STEP_SECONDS, v.current().mesh().playbackTime(), 1e-9);
+            v.perform(ViewerAction.QUIT);
+            assertTrue(v.quitRequested());
+            for (ViewerAction a : ViewerAction.values()) {
+                if (a != ViewerAction.NEXT_MESH && a != ViewerAction.PREVIOUS_MESH && a != ViewerAction.NEXT_CLIP) {
+                    v.perform(a);
+                }
+            }
+        }
+    }
+
+    private static void assertNull(Object o) {
+        assertEquals(null, o);
+    }
+}
