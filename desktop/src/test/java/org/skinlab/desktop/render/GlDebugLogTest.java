@@ -17,7 +17,7 @@ class GlDebugLogTest {
 
     @Test
     void countsErrorsAndNothingElse() {
-        try (GlWindow window = new GlWindow("test", 64, 64, false, true); SkinningShader shader = new SkinningShader()) {
+        try (GlWindow window = new GlWindow("test", 64, 64, false, true)) {
             GlDebugLog log = GlDebugLog.install(window.capabilities());
             assertNotNull(log, "Mesa's llvmpipe has OpenGL 4.5 with KHR_debug");
             try (log) {

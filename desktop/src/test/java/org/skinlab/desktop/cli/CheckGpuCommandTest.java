@@ -1,0 +1,62 @@
+package org.skinlab.desktop.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+
+import org.junit.jupiter.api.Assumptions;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.skinlab.desktop.render.GlTestDisplay;
+
+/**
+ * GPU skinning (the viewer's vertex shader, read back with transform feedback) against the CPU
+ * kernels on the same frames: within 1e-4 of the model's size (float rounding gives about 1e-7)
+ * for LBS and DQS, on our assets and on a corpus character with 6 influences per vertex (the
+ * shader's 8-influence view).
+ */
+class CheckGpuCommandTest {
+    @BeforeAll
+    static void display() {
+        GlTestDisplay.assume();
+    }
+
+    private static void assertAllOk(Cli r, int lines) {
+        assertEquals(0, r.status, r::toString);
+        List<String> out = r.out.lines().toList();
+        assertEquals(lines, out.size(), r::toString);
+        for (String line : out) {
+            assertTrue(line.startsWith("ok"), line);
+        }
+    }
+
+    @Test
+    void ourAssetsSkinTheSameOnGpuAndCpu() throws Exception {
+        List<String> args = new ArrayList<>(List.of("check-gpu", "--tolerance", "1e-4"));
+        try (var files = Files.list(Cli.root().resolve("assets").resolve("cylinders"))) {
+            files.filter(p -> p.toString().endsWith(".dae")).sorted().forEach(p -> args.add(p.toString()));
+        }
+        args.add(Cli.root().resolve("assets/characters/humanoid-walk.dae").toString());
+        args.add(Cli.root().resolve("assets/creatures/tentacle-wave.dae").toString());
+        assertAllOk(Cli.run(args.toArray(String[]::new)), 2 * (args.size() - 3));
+    }
+
+    @Test
+    void aSixInfluenceCharacterToo() {
+        Path cowboy = Cli.shared().resolve("corpus/S01_cowboy.dae");
+        Assumptions.assumeTrue(Files.isRegularFile(cowboy), "skipped: " + cowboy + " is absent (the shared corpus)");
+        assertAllOk(Cli.run("check-gpu", "--time", "0,0.3,0.9,1.7", cowboy.toString()), 2);
+    }
+
+    @Test
+    void aToleranceBelowFloatRoundingFails() {
+        Cli r = Cli.run("check-gpu", "--method", "dqs", "--tolerance", "1e-12",
+                Cli.root().resolve("assets/characters/humanoid-walk.dae").toString());
+        assertEquals(1, r.status, r::toString);
+        assertTrue(r.out.startsWith("FAIL dqs"), r::toString);
+    }
+}
