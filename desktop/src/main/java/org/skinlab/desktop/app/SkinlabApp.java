@@ -8,6 +8,7 @@ import java.io.PrintWriter;
 import java.nio.ByteBuffer;
 import java.nio.file.Path;
 import java.time.LocalDateTime;
+import java.util.List;
 import java.time.format.DateTimeFormatter;
 
 import org.lwjgl.system.MemoryUtil;
@@ -286,8 +287,15 @@ public final class SkinlabApp implements AutoCloseable {
         info.lbsVolume = Double.NaN;
         info.dqsVolume = Double.NaN;
         info.stats.clear();
+        textures.clear();
         if (current != null) {
             renderer = new ModelRenderer(shader, current.model(), current.mesh().geometries(), textures::texture);
+            window.setTitle("skinlab - " + current.displayName());
+            if (!textures.warnings().isEmpty()) {
+                List<String> w = textures.warnings();
+                viewer.setStatus(viewer.statusMessage() + "; " + w.get(0)
+                        + (w.size() > 1 ? " (and " + (w.size() - 1) + " more textures)" : ""));
+            }
             info.vertices = renderer.vertexCount();
             info.shaderInfluences = renderer.shaderInfluences();
             info.cappedVertices = renderer.cappedVertices();

@@ -51,7 +51,8 @@ public final class GlWindow implements AutoCloseable {
             glfwSetErrorCallback(null);
             errorCallback.free();
             throw new WindowUnavailableException("cannot start GLFW: " + orUnknown(lastError)
-                    + display());
+                    + display() + ". Without a screen, run it under xvfb-run (e.g. xvfb-run -a skinlab view --screenshot"
+                    + " OUT.png)");
         }
         glfwDefaultWindowHints();
         glfwWindowHint(GLFW_VISIBLE, visible ? GLFW_TRUE : GLFW_FALSE);
