@@ -38,8 +38,11 @@ public final class Screenshot {
             if (parent != null) {
                 Files.createDirectories(parent);
             }
+            // OpenGL's rows run bottom up. stb's flag is global state: set for this call only.
             STBImageWrite.stbi_flip_vertically_on_write(true);
-            if (!STBImageWrite.stbi_write_png(file.toString(), width, height, 4, rgba, 4 * width)) {
+            boolean written = STBImageWrite.stbi_write_png(file.toString(), width, height, 4, rgba, 4 * width);
+            STBImageWrite.stbi_flip_vertically_on_write(false);
+            if (!written) {
                 throw new IOException("cannot write the screenshot " + file);
             }
         } finally {

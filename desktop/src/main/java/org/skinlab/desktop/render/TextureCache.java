@@ -71,9 +71,11 @@ public final class TextureCache implements AutoCloseable {
                         + MAX_SIDE + " per side");
                 return 0;
             }
-            // COLLADA's (0, 0) is the image's bottom left, OpenGL's first row is its bottom.
+            // COLLADA's (0, 0) is the image's bottom left, OpenGL's first row is its bottom. The
+            // flag is stb's global state: set for this call only.
             STBImage.stbi_set_flip_vertically_on_load(true);
             ByteBuffer pixels = STBImage.stbi_load_from_memory(encoded, w, h, channels, 4);
+            STBImage.stbi_set_flip_vertically_on_load(false);
             if (pixels == null) {
                 warnings.add("texture " + name + ": " + STBImage.stbi_failure_reason());
                 return 0;
