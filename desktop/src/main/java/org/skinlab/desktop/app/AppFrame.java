@@ -1,6 +1,7 @@
 package org.skinlab.desktop.app;
 
 import org.skinlab.desktop.viewer.LiveStats;
+import org.skinlab.skinning.SkinningMethod;
 import org.skinlab.desktop.viewer.Viewer;
 
 /**
@@ -20,6 +21,11 @@ public final class AppFrame {
     boolean gpuSkinned;
     long sequence = -1;
     double clipTime;
+    /** The method each view shows (one, or two side by side), and whether the CPU skinned it. */
+    final SkinningMethod[] viewMethods = new SkinningMethod[2];
+    final boolean[] viewOnCpu = new boolean[2];
+    int views;
+    int sceneLeft;
     int vertices;
     long skinningNanos;
     int shaderInfluences;
@@ -33,6 +39,24 @@ public final class AppFrame {
 
     public LiveStats stats() {
         return stats;
+    }
+
+    /** Framebuffer pixels left of the scene (the toolbar's). */
+    public int sceneLeft() {
+        return sceneLeft;
+    }
+
+    /** Views drawn side by side: 1, or 2 in the split view. */
+    public int views() {
+        return views;
+    }
+
+    public SkinningMethod viewMethod(int view) {
+        return viewMethods[view];
+    }
+
+    public boolean viewOnCpu(int view) {
+        return viewOnCpu[view];
     }
 
     public Viewer viewer() {

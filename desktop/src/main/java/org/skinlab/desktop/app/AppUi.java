@@ -8,6 +8,9 @@ public interface AppUi extends AutoCloseable {
     /** Builds and draws the interface for this frame, over the scene already drawn. */
     void render(AppFrame frame);
 
+    /** Window pixels at the left the interface keeps for itself (the toolbar beside the scene). */
+    int reservedLeft();
+
     /** Whether the interface uses the mouse now (then the camera ignores it). */
     boolean wantsMouse();
 
@@ -27,6 +30,11 @@ public interface AppUi extends AutoCloseable {
     AppUi NONE = new AppUi() {
         @Override
         public void render(AppFrame frame) {
+        }
+
+        @Override
+        public int reservedLeft() {
+            return 0;
         }
 
         @Override

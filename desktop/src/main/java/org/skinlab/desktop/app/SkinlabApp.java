@@ -327,16 +327,24 @@ public final class SkinlabApp implements AutoCloseable {
         boolean cpuFrame = frame.hasSkinnedMesh();
         SkinningMethod first = cpuFrame ? frame.method() : config.method();
         boolean split = viewer.settings().split();
-        int w = size[0];
+        // The toolbar sits beside the scene, as in the thesis, unless the window is too narrow.
+        int left = ui.reservedLeft() < size[0] / 2 ? ui.reservedLeft() : 0;
+        info.sceneLeft = left;
+        int w = size[0] - left;
         int h = size[1];
+        info.views = split ? 2 : 1;
+        info.viewMethods[0] = first;
+        info.viewOnCpu[0] = cpuFrame;
         if (split) {
-            drawView(frame, first, cpuFrame, 0, w / 2, h);
-            drawView(frame, other(first), false, w / 2, w - w / 2, h);
+            drawView(frame, first, cpuFrame, left, w / 2, h);
+            drawView(frame, other(first), false, left + w / 2, w - w / 2, h);
+            info.viewMethods[1] = other(first);
+            info.viewOnCpu[1] = false;
         } else {
-            drawView(frame, first, cpuFrame, 0, w, h);
+            drawView(frame, first, cpuFrame, left, w, h);
         }
         info.gpuSkinned = !cpuFrame;
-        glViewport(0, 0, w, h);
+        glViewport(0, 0, size[0], size[1]);
     }
 
     private static SkinningMethod other(SkinningMethod m) {

@@ -8,6 +8,7 @@ import org.skinlab.desktop.app.AppFrame;
 import org.skinlab.desktop.app.AppUi;
 import org.skinlab.desktop.render.GlWindow;
 import org.skinlab.desktop.viewer.ViewerAction;
+import org.skinlab.skinning.SkinningMethod;
 
 import imgui.ImGui;
 import imgui.ImGuiIO;
@@ -64,8 +65,44 @@ public final class ImGuiUi implements AppUi {
             help.draw(frame);
         }
         status.draw(frame);
+        labelViews(frame);
         ImGui.render();
         gl3.renderDrawData(ImGui.getDrawData());
+    }
+
+    /** Names the method of each view at its bottom centre (the split view's two halves). */
+    private static void labelViews(AppFrame f) {
+        if (!f.drewMesh()) {
+            return;
+        }
+        // Window coordinates are framebuffer pixels divided by the content scale.
+        float scale = ImGui.getIO().getDisplayFramebufferScaleX();
+        float width = f.width() / (scale > 0 ? scale : 1f);
+        float height = f.height() / (scale > 0 ? scale : 1f);
+        float left = f.sceneLeft() / (scale > 0 ? scale : 1f);
+        float viewWidth = (width - left) / f.views();
+        for (int v = 0; v < f.views(); v++) {
+            String label = VIEW_LABELS[f.viewMethod(v).ordinal()][f.viewOnCpu(v) ? 1 : 0];
+            float x = left + v * viewWidth + (viewWidth - ImGui.calcTextSizeX(label)) / 2;
+            float y = height - 3 * ImGui.getFrameHeight();
+            ImGui.getForegroundDrawList().addText(x, y, 0xFFFFFFFF, label);
+        }
+    }
+
+    private static final String[][] VIEW_LABELS = labels();
+
+    private static String[][] labels() {
+        SkinningMethod[] methods = SkinningMethod.values();
+        String[][] labels = new String[methods.length][];
+        for (SkinningMethod m : methods) {
+            labels[m.ordinal()] = new String[] {m.name() + " (GPU)", m.name() + " (CPU)"};
+        }
+        return labels;
+    }
+
+    @Override
+    public int reservedLeft() {
+        return Math.round(toolbar.right() * ImGui.getIO().getDisplayFramebufferScaleX());
     }
 
     @Override

@@ -35,6 +35,7 @@ final class ToolbarPanel {
     private final CachedText influences = new CachedText("%.0f influences per vertex in the shader");
     private final CachedText capped = new CachedText("%.0f vertices capped (weights renormalised)");
     private boolean scrubbing;
+    private float right;
     private LoadedModel namedModel;
     private int namedJoint = -1;
     private String modelLine = "";
@@ -136,7 +137,13 @@ final class ToolbarPanel {
         widgets.action(ViewerAction.TOGGLE_HELP);
         ImGui.sameLine();
         widgets.action(ViewerAction.QUIT);
+        right = ImGui.getWindowPosX() + ImGui.getWindowWidth() + 8f;
         ImGui.end();
+    }
+
+    /** The toolbar's right edge with a margin, in window coordinates (0 before it was drawn). */
+    float right() {
+        return right;
     }
 
     private String modelLine(LoadedModel model) {
