@@ -162,7 +162,7 @@ public final class SkinlabApp implements AutoCloseable {
         AllocationMeter allocations = new AllocationMeter();
         while (!window.shouldClose() && !viewer.quitRequested()) {
             // The second half of a bounded run: the window, the model and the JIT have settled.
-            if (frameNumber == options.exitAfterFrames() / 2) {
+            if (options.exitAfterFrames() > 0 && frameNumber == options.exitAfterFrames() / 2) {
                 allocations.start(frameNumber);
             }
             glfwPollEvents();

@@ -29,7 +29,7 @@ final class StatsPanel {
     private final CachedText fps = new CachedText("%.0f fps");
     private final CachedText frameMs = new CachedText("frame %.2f ms");
     private final CachedText skinMs = new CachedText("CPU skinning %.3f ms per step");
-    private final CachedText vertices = new CachedText("%.1f M vertices skinned per second");
+    private final CachedText vertices = new CachedText("%.3g M vertices skinned per second");
     private final CachedText drawn = new CachedText("%.0f vertices per instance");
     private final CachedText difference = new CachedText("largest |LBS - DQS|: %.2f %% of the model's size");
     private final CachedText full = new CachedText("red: %.0f %% of the size or more");

@@ -1,0 +1,14 @@
+#!/usr/bin/env bash
+# Rebuilds the pictures in docs/images with skinlab itself: each is a replayed UI script
+# (docs/desktop.md, "Headless and scripted use"). Under Xvfb when there is no display.
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/../.."
+gradle -q :desktop:installDist
+skinlab=desktop/build/install/skinlab/bin/skinlab
+run() {
+  if [ -n "${DISPLAY:-}" ]; then "$@"; else xvfb-run -a -s '-screen 0 1920x1080x24' "$@"; fi
+}
+run "$skinlab" view --size 1280x800 --script docs/images/viewer.txt
+run "$skinlab" view --size 1280x720 --split dqs --script docs/images/split.txt
+run "$skinlab" view assets/cylinders/cylinder-twist-high.dae --size 1280x720 --view difference \
+  --script docs/images/difference.txt
