@@ -311,19 +311,15 @@ public final class SkinlabApp implements AutoCloseable {
         glEnable(GL_BLEND);
         glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
         draw.model.set(shown.framing().upright());
-        if (viewer.settings().drawView() == DrawSettings.View.DIFFERENCE) {
-            if (difference == null) {
-                difference = new DifferenceProbe(shown.mesh().geometries());
-            }
-            difference.measure(frame);
-            info.maxDifference = difference.maxRelative();
-            info.differenceFull = DIFFERENCE_FULL;
-            info.lbsVolume = difference.lbsVolume();
-            info.dqsVolume = difference.dqsVolume();
-        } else {
-            info.lbsVolume = Double.NaN;
-            info.dqsVolume = Double.NaN;
+        // Both methods' volumes are live numbers in every view; the difference view adds the distance.
+        if (difference == null) {
+            difference = new DifferenceProbe(shown.mesh().geometries());
         }
+        difference.measure(frame);
+        info.maxDifference = difference.maxRelative();
+        info.differenceFull = DIFFERENCE_FULL;
+        info.lbsVolume = difference.lbsVolume();
+        info.dqsVolume = difference.dqsVolume();
         boolean cpuFrame = frame.hasSkinnedMesh();
         SkinningMethod first = cpuFrame ? frame.method() : config.method();
         boolean split = viewer.settings().split();
@@ -359,12 +355,13 @@ public final class SkinlabApp implements AutoCloseable {
         draw.gpuSkinning = !cpuPositions;
         draw.method = method;
         draw.view = viewer.settings().drawView();
-        draw.selectedJoint = viewer.settings().selectedJoint();
+        draw.selectedNode = viewer.selectedJointNode();
         // Distances in the shader are in the file's units, as the probe's size is.
-        draw.scalarFull = draw.view == DrawSettings.View.DIFFERENCE && difference != null
+        draw.scalarFull = draw.view == DrawSettings.View.DIFFERENCE
                 ? (float) (DIFFERENCE_FULL * difference.size()) : 1f;
         draw.instances = viewer.settings().instances();
-        draw.spacing = 2.2f * shown.framing().radius();
+        draw.gridColumns = viewer.settings().columns();
+        draw.spacing = shown.framing().gridSpacing();
         draw.wireframe = viewer.settings().wireframe();
         renderer.draw(draw);
         if (viewer.settings().skeleton()) {

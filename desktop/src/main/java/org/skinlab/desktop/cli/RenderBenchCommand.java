@@ -19,7 +19,6 @@ import java.util.concurrent.Callable;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.SerializationFeature;
 
-import org.joml.Vector3f;
 import org.skinlab.desktop.render.DrawSettings;
 import org.skinlab.desktop.render.GlWindow;
 import org.skinlab.desktop.render.ModelRenderer;
@@ -172,17 +171,11 @@ public final class RenderBenchCommand implements Callable<Integer> {
             draw.gpuSkinning = gpu;
             draw.method = method;
             draw.instances = 1;
-            draw.gridColumns = Math.max(1, (int) Math.ceil(Math.sqrt(instances)));
-            draw.spacing = 2.2f * framing.radius();
+            draw.gridColumns = DrawSettings.squareColumns(instances);
+            draw.spacing = framing.gridSpacing();
             draw.model.set(framing.upright());
-            int columns = draw.gridColumns;
-            int rows = (instances + columns - 1) / columns;
-            float halfWidth = 0.5f * (columns - 1) * draw.spacing;
-            float depth = (rows - 1) * draw.spacing;
             OrbitCamera camera = new OrbitCamera();
-            Vector3f centre = new Vector3f(framing.centre()).add(0, 0, -0.5f * depth);
-            camera.frame(centre, (float) Math.sqrt(framing.radius() * framing.radius() + halfWidth * halfWidth
-                    + 0.25f * depth * depth));
+            camera.frame(framing, instances, draw.gridColumns);
             camera.projection(size.width() / (float) size.height(), draw.viewProjection);
             camera.viewTimesInto(draw.viewProjection);
             camera.eye(draw.eye);

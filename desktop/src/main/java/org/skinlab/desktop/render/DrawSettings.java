@@ -14,7 +14,7 @@ public final class DrawSettings {
     public enum View {
         /** Materials, textures and light. */
         SHADED,
-        /** Colour by the weight of {@link DrawSettings#selectedJoint}. */
+        /** Colour by the weight of {@link DrawSettings#selectedNode}. */
         WEIGHTS,
         /** Colour by the distance between the LBS and the DQS position of each vertex. */
         DIFFERENCE
@@ -29,8 +29,11 @@ public final class DrawSettings {
     /** The method the GPU skins with (CPU-skinned frames carry their own). */
     public SkinningMethod method = SkinningMethod.LBS;
     public View view = View.SHADED;
-    /** The palette joint the weight view shows. */
-    public int selectedJoint;
+    /**
+     * The joint the weight view shows, as its scene node (each geometry has its own palette
+     * order; a geometry the joint does not influence shows weight 0).
+     */
+    public int selectedNode = -1;
     /** The value at the top of the colour map: weight 1, or a distance in model units. */
     public float scalarFull = 1f;
     public int instances = 1;
@@ -44,6 +47,11 @@ public final class DrawSettings {
 
     /** Instances per row of the grid: about square. */
     public int columns() {
-        return gridColumns > 0 ? gridColumns : Math.max(1, (int) Math.ceil(Math.sqrt(instances)));
+        return gridColumns > 0 ? gridColumns : squareColumns(instances);
+    }
+
+    /** Columns of an about square grid of {@code instances} copies. */
+    public static int squareColumns(int instances) {
+        return Math.max(1, (int) Math.ceil(Math.sqrt(instances)));
     }
 }

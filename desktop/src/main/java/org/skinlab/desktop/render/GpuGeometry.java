@@ -189,6 +189,22 @@ final class GpuGeometry implements AutoCloseable {
         palette.bind();
     }
 
+    /**
+     * The palette index of scene node {@code node} in this geometry, or an index no vertex uses
+     * (the joint count) when the node is not one of its joints; -1 for node -1.
+     */
+    int paletteIndexOfNode(int node) {
+        if (node < 0) {
+            return -1;
+        }
+        for (int j = 0; j < geometry.jointCount(); j++) {
+            if (geometry.jointNode(j) == node) {
+                return j;
+            }
+        }
+        return geometry.jointCount();
+    }
+
     PaletteBuffers palette() {
         return palette;
     }

@@ -105,30 +105,32 @@ public final class ModelRenderer implements AutoCloseable {
         glUniform3f(shader.eye, s.eye.x, s.eye.y, s.eye.z);
         glUniform1i(shader.skinning, !s.gpuSkinning ? 0 : s.method == SkinningMethod.DQS ? 2 : 1);
         glUniform1i(shader.compare, s.view == DrawSettings.View.DIFFERENCE ? 1 : 0);
-        glUniform1i(shader.selectedJoint, s.view == DrawSettings.View.WEIGHTS ? s.selectedJoint : -1);
+        boolean weights = s.view == DrawSettings.View.WEIGHTS;
         glUniform1i(shader.viewMode, s.view.ordinal());
         glUniform1f(shader.scalarFull, s.scalarFull);
         glUniform1i(shader.columns, s.columns());
         glUniform1f(shader.spacing, s.spacing);
         glUniform1i(shader.firstInstance, s.firstInstance);
         glUniform1i(shader.flat, 0);
-        drawAll(s, false);
+        drawAll(s, false, weights);
         if (s.wireframe) {
             glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
             glEnable(GL_POLYGON_OFFSET_LINE);
             glPolygonOffset(-1f, -1f);
             glUniform1i(shader.flat, 1);
             glUniform4f(shader.flatColor, 0.05f, 0.05f, 0.08f, 0.6f);
-            drawAll(s, true);
+            drawAll(s, true, false);
             glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
             glDisable(GL_POLYGON_OFFSET_LINE);
         }
         glBindVertexArray(0);
     }
 
-    private void drawAll(DrawSettings s, boolean flat) {
+    private void drawAll(DrawSettings s, boolean flat, boolean weights) {
         for (int g = 0; g < geometries.size(); g++) {
             GpuGeometry gpu = geometries.get(g);
+            // No joint (-1) colours by nothing; a joint outside this palette shows weight 0 (blue).
+            glUniform1i(shader.selectedJoint, !weights ? -1 : gpu.paletteIndexOfNode(s.selectedNode));
             gpu.bind(s.gpuSkinning);
             PaletteBuffers p = gpu.palette();
             glUniform1i(shader.influences, gpu.influences());

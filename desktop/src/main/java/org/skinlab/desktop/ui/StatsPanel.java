@@ -65,17 +65,17 @@ final class StatsPanel {
         }
         ImGui.textUnformatted(vertices.of(meanVertices));
         Widgets.dim(drawn.of(f.vertices()));
+        ImGui.separator();
         if (f.viewer().settings().drawView() == DrawSettings.View.DIFFERENCE) {
-            ImGui.separator();
             ImGui.textUnformatted(difference.of(100 * f.maxDifference()));
             Widgets.dim(full.of(100 * f.differenceFull()));
-            if (!Double.isNaN(f.lbsVolume())) {
-                ImGui.textUnformatted(lbsVolume.of(f.lbsVolume()));
-                ImGui.textUnformatted(dqsVolume.of(f.dqsVolume()));
-                plot("##volume", stats.lbsVolume, stats.dqsVolume);
-            } else {
-                Widgets.dim("volume: the mesh is not closed");
-            }
+        }
+        if (!Double.isNaN(f.lbsVolume())) {
+            ImGui.textUnformatted(lbsVolume.of(f.lbsVolume()));
+            ImGui.textUnformatted(dqsVolume.of(f.dqsVolume()));
+            plot("##volume", stats.lbsVolume, stats.dqsVolume);
+        } else {
+            Widgets.dim("volume: the mesh is not closed");
         }
         ImGui.end();
     }

@@ -25,6 +25,24 @@ public record ModelFraming(Matrix4fc upright, Vector3f centre, float radius, flo
     /** The smallest radius a framing reports: a point-like or empty model still gets a camera. */
     public static final float MIN_RADIUS = 1e-3f;
 
+    /** Distance between copies in the instance grid: they never touch. */
+    public float gridSpacing() {
+        return 2.2f * radius;
+    }
+
+    /**
+     * The bounding sphere of a grid of {@code instances} copies laid out as the skinning shader
+     * does (rows of {@code columns} centred on x, going back along -z), into {@code centre};
+     * returns its radius.
+     */
+    public float gridSphere(int instances, int columns, Vector3f centre) {
+        int rows = (instances + columns - 1) / columns;
+        float halfWidth = 0.5f * (Math.min(instances, columns) - 1) * gridSpacing();
+        float depth = (rows - 1) * gridSpacing();
+        centre.set(this.centre).add(0, 0, -0.5f * depth);
+        return (float) Math.sqrt(radius * radius + halfWidth * halfWidth + 0.25f * depth * depth);
+    }
+
     /** The size the difference view measures against: the bounds' diagonal. */
     public float size() {
         return 2f * radius;

@@ -40,6 +40,13 @@ public final class OrbitCamera {
         frame(framing.centre(), framing.radius());
     }
 
+    /** Frames a grid of copies ({@link ModelFraming#gridSphere}). */
+    public void frame(ModelFraming framing, int instances, int columns) {
+        Vector3f centre = new Vector3f();
+        float r = framing.gridSphere(instances, columns, centre);
+        frame(centre, r);
+    }
+
     public void orbit(float dxPixels, float dyPixels) {
         yaw -= dxPixels * RADIANS_PER_PIXEL;
         pitch = Math.max(-MAX_PITCH, Math.min(MAX_PITCH, pitch + dyPixels * RADIANS_PER_PIXEL));

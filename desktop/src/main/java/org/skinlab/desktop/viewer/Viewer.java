@@ -200,10 +200,16 @@ public final class Viewer implements AutoCloseable {
             next.mesh().start();
         }
         if (!sameFile) {
-            camera.frame(next.framing());
+            frameCamera();
         }
         settings.selectJoint(settings.selectedJoint(), jointCount());
         status = next.displayName() + " (" + next.clipName() + ", " + Math.round(next.loadMillis()) + " ms)";
+    }
+
+    /** The scene node of the weight view's joint (a joint of the first geometry), -1 when none. */
+    public int selectedJointNode() {
+        int count = jointCount();
+        return count == 0 ? -1 : current.mesh().geometries().get(0).jointNode(settings.selectedJoint());
     }
 
     /** Palette joints of the first geometry (the weight view's joints). */
@@ -245,9 +251,7 @@ public final class Viewer implements AutoCloseable {
                 load(library.neighbour(current == null ? null : current.file(), 1), null, 0, 0.0);
                 break;
             case CENTRE_CAMERA:
-                if (current != null) {
-                    camera.frame(current.framing());
-                }
+                frameCamera();
                 break;
             case TOGGLE_GPU_SKINNING:
                 config.setCpuSkinning(!config.isCpuSkinning());
@@ -265,9 +269,11 @@ public final class Viewer implements AutoCloseable {
                 break;
             case FEWER_INSTANCES:
                 settings.fewerInstances();
+                frameCamera();
                 break;
             case MORE_INSTANCES:
                 settings.moreInstances();
+                frameCamera();
                 break;
             case TOGGLE_SKELETON:
                 settings.setSkeleton(!settings.skeleton());
@@ -311,6 +317,13 @@ public final class Viewer implements AutoCloseable {
     public void playClip(int index) {
         if (current != null && index >= 0 && index < current.model().clips().size() && index != current.clipIndex()) {
             load(current.file(), current.model(), index, 0.0);
+        }
+    }
+
+    /** Frames the model, or the grid of its copies. */
+    private void frameCamera() {
+        if (current != null) {
+            camera.frame(current.framing(), settings.instances(), settings.columns());
         }
     }
 

@@ -63,6 +63,11 @@ public final class ViewerSettings {
         return INSTANCE_STEPS[instanceStep];
     }
 
+    /** Copies per row of the instance grid: about square. */
+    public int columns() {
+        return DrawSettings.squareColumns(instances());
+    }
+
     /** Sets the smallest step of at least {@code n} instances. */
     public void setInstances(int n) {
         instanceStep = INSTANCE_STEPS.length - 1;
