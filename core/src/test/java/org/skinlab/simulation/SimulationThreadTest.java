@@ -269,6 +269,29 @@ class SimulationThreadTest {
     }
 
     @Test
+    void seekWhileThePausedThreadRunsShowsTheNewTime() throws Exception {
+        AnimationConfig config = new AnimationConfig();
+        config.stopAnimation();
+        try (SkeletalAnimatedMesh mesh = ribbon(config)) {
+            mesh.setStepRate(200);
+            mesh.start();
+            // A scrubber dragged over a paused animation: each position shows without playing.
+            for (double t : new double[] {0.5, 3.0, 1.75}) {
+                mesh.seek(t);
+                await("the frame at " + t + " s", 5, () -> {
+                    try (Frame f = mesh.acquire()) {
+                        return Math.abs(f.clipTime() - t) < 1e-6;
+                    }
+                });
+            }
+            assertTrue(mesh.isRunning());
+            try (Frame f = mesh.acquire()) {
+                assertNull(FrameChecker.ribbon(RIBBON).problem(f));
+            }
+        }
+    }
+
+    @Test
     void threadKeepsItsPaceWithoutBurstsAndPlaybackFollowsTheWallClock() throws Exception {
         try (SkeletalAnimatedMesh mesh = ribbon(new AnimationConfig())) {
             double rate = 100;

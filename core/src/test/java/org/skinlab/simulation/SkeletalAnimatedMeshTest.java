@@ -256,6 +256,85 @@ class SkeletalAnimatedMeshTest {
     }
 
     @Test
+    void seekThenStepZeroPublishesTheFrameAtThatTime() {
+        try (SkeletalAnimatedMesh sought = ribbon(new AnimationConfig());
+                SkeletalAnimatedMesh played = ribbon(new AnimationConfig())) {
+            sought.seek(2.5);
+            assertEquals(2.5, sought.playbackTime(), 1e-12, "the time is set before any step");
+            sought.step(0);
+            played.step(2.5);
+            try (Frame a = sought.acquire(); Frame b = played.acquire()) {
+                assertEquals(2.5f, a.clipTime(), TIME_TOLERANCE);
+                // The same time reached two ways poses the same: same code, same inputs.
+                assertArrayEquals(b.positions(0), a.positions(0), 0f);
+                assertNull(FrameChecker.ribbon(RIBBON).problem(a));
+            }
+        }
+    }
+
+    @Test
+    void seekMovesAPausedAnimationWhichThenStaysThere() {
+        AnimationConfig config = new AnimationConfig();
+        config.stopAnimation();
+        try (SkeletalAnimatedMesh mesh = ribbon(config)) {
+            mesh.seek(1.25);
+            mesh.step(0.5);
+            mesh.step(0.5);
+            assertEquals(1.25f, clipTime(mesh), TIME_TOLERANCE);
+            // Going on from the sought time once playing again.
+            config.setAnimationRunning(true);
+            mesh.step(0.5);
+            assertEquals(1.75f, clipTime(mesh), TIME_TOLERANCE);
+        }
+    }
+
+    @Test
+    void seekWrapsOrClampsAsTheWrapModeSays() {
+        AnimationConfig config = new AnimationConfig();
+        try (SkeletalAnimatedMesh mesh = ribbon(config)) {
+            // LOOP: into [0, 4) as playback wraps.
+            mesh.seek(5.5);
+            assertEquals(1.5, mesh.playbackTime(), 1e-9);
+            mesh.seek(-0.5);
+            assertEquals(3.5, mesh.playbackTime(), 1e-9);
+            mesh.seek(TwistRibbon.END);
+            assertEquals(0.0, mesh.playbackTime(), 1e-9);
+            // CLAMP: held at the clip's ends.
+            config.setWrapMode(WrapMode.CLAMP);
+            mesh.seek(5.5);
+            assertEquals(TwistRibbon.END, mesh.playbackTime(), 1e-9);
+            mesh.seek(-0.5);
+            assertEquals(0.0, mesh.playbackTime(), 1e-9);
+        }
+    }
+
+    @Test
+    void seekRefusesTimesThatAreNotFiniteAndKeepsTheTime() {
+        try (SkeletalAnimatedMesh mesh = ribbon(new AnimationConfig())) {
+            mesh.seek(1);
+            for (double bad : new double[] {Double.NaN, Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY}) {
+                IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> mesh.seek(bad));
+                assertTrue(e.getMessage().contains(String.valueOf(bad)), e.getMessage());
+            }
+            assertEquals(1.0, mesh.playbackTime(), 1e-12);
+        }
+    }
+
+    @Test
+    void clipDurationIsTheClipsLengthAndZeroAtRest() {
+        try (SkeletalAnimatedMesh mesh = ribbon(new AnimationConfig())) {
+            assertEquals(TwistRibbon.END, mesh.clipDuration(), 1e-9);
+        }
+        Model still = Fixtures.resource("geometry/several-primitives.dae");
+        assumeTrue(still.clips().isEmpty(), "fixture gained a clip");
+        try (SkeletalAnimatedMesh mesh = SkeletalAnimatedMesh.of(still)) {
+            assertEquals(0.0, mesh.clipDuration());
+            mesh.seek(3);
+            assertEquals(0.0, mesh.playbackTime(), "a model at rest has only time 0");
+        }
+    }
+
+    @Test
     void anUnknownClipNameIsRefusedNamingTheClipsThereAre() {
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
                 () -> SkeletalAnimatedMesh.of(RIBBON, "run", new AnimationConfig()));
