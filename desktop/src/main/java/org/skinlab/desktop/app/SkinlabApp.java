@@ -13,6 +13,7 @@ import java.time.format.DateTimeFormatter;
 
 import org.lwjgl.system.MemoryUtil;
 import org.skinlab.desktop.render.DrawSettings;
+import org.skinlab.desktop.render.FloorGrid;
 import org.skinlab.desktop.render.GlDebugLog;
 import org.skinlab.desktop.render.GlWindow;
 import org.skinlab.desktop.render.ModelRenderer;
@@ -52,11 +53,14 @@ public final class SkinlabApp implements AutoCloseable {
     private final AnimationConfig config = new AnimationConfig();
     private final Viewer viewer;
     private final SkinningShader shader;
+    private final FloorGrid floor;
     private final TextureCache textures = new TextureCache();
     private final DrawSettings draw = new DrawSettings();
     private final AppFrame info = new AppFrame();
     private final WindowInput input;
     private final int[] size = new int[2];
+    private final org.joml.Vector3f floorCentre = new org.joml.Vector3f();
+    private float floorExtent;
     private AppUi ui = AppUi.NONE;
     private ScriptPlayer player;
     private final GlDebugLog debugLog;
@@ -86,6 +90,7 @@ public final class SkinlabApp implements AutoCloseable {
             err.println("skinlab: --gl-debug: this OpenGL reports no debug messages (no OpenGL 4.3 or KHR_debug)");
         }
         shader = new SkinningShader();
+        floor = new FloorGrid();
         input = new WindowInput(window, viewer, this);
         info.viewer = viewer;
         info.uiScale = window.contentScale();
@@ -363,6 +368,9 @@ public final class SkinlabApp implements AutoCloseable {
         draw.gridColumns = viewer.settings().columns();
         draw.spacing = shown.framing().gridSpacing();
         draw.wireframe = viewer.settings().wireframe();
+        // The floor reaches a little beyond the model, or the grid of its copies.
+        floorExtent = 1.3f * shown.framing().gridSphere(draw.instances, draw.gridColumns, floorCentre);
+        floor.draw(draw, floorCentre.x, floorCentre.z, floorExtent);
         renderer.draw(draw);
         if (viewer.settings().skeleton()) {
             renderer.drawSkeleton(draw);
@@ -421,6 +429,7 @@ public final class SkinlabApp implements AutoCloseable {
         viewer.close();
         textures.close();
         shader.close();
+        floor.close();
         input.close();
         if (debugLog != null) {
             debugLog.close();

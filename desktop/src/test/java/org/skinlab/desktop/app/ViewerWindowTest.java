@@ -51,6 +51,9 @@ class ViewerWindowTest {
         Run r = skinlab("--exit-after-frames", "20", "--size", "640x400");
         assertEquals(0, r.status(), r::toString);
         assertTrue(r.out().contains("20 frames") && r.out().contains("characters/humanoid-walk.dae"), r::toString);
+        // The simulation thread stops with the window.
+        assertTrue(Thread.getAllStackTraces().keySet().stream()
+                .noneMatch(t -> t.isAlive() && t.getName().startsWith("skinlab-simulation")), "a simulation thread lives on");
     }
 
     @Test
