@@ -11,7 +11,7 @@ import org.skinlab.animation.AnimationHelper;
  * <p>The pose comes as the skinning matrices a {@code Frame} carries (12 floats per joint,
  * row-major 3x4); the dual quaternions and scale parts are derived from them by the same
  * {@link JointPalette} code the simulation uses, so both methods run exactly as the simulation
- * would run them. Both skins use core's kernels ({@link Skinners}). One instance per geometry;
+ * would run them. Both skins use core's scalar kernels ({@link Skinners#scalar}). One instance per geometry;
  * {@link #compare} allocates nothing; not thread-safe.
  */
 public final class MethodComparison {
@@ -34,8 +34,10 @@ public final class MethodComparison {
     public MethodComparison(SkinnedGeometry geometry) {
         this.geometry = geometry;
         palette = geometry.newPalette();
-        lbs = Skinners.create(SkinningMethod.LBS, geometry, NormalTransform.INVERSE_TRANSPOSE);
-        dqs = Skinners.create(SkinningMethod.DQS, geometry, NormalTransform.INVERSE_TRANSPOSE);
+        // Core's scalar kernels: a probe that runs a few times a second never gets the JIT to
+        // compile SIMD kernels (which allocate until it has), and needs no threads.
+        lbs = Skinners.scalar(SkinningMethod.LBS, geometry, NormalTransform.INVERSE_TRANSPOSE);
+        dqs = Skinners.scalar(SkinningMethod.DQS, geometry, NormalTransform.INVERSE_TRANSPOSE);
         int n = geometry.pointCount();
         lbsPositions = new float[3 * n];
         dqsPositions = new float[3 * n];
