@@ -43,6 +43,10 @@ public final class Viewer implements AutoCloseable {
     /** The finished load the window thread has not taken yet: a LoadedModel or an error message. */
     private final AtomicReference<Object> finished = new AtomicReference<>();
     private Future<?> inFlight;
+    /** The newest load asked for: older ones still queued are skipped, finished ones dropped. */
+    private volatile long newestRequest;
+    /** The file of the newest load asked for (previous/next mesh step from it while it loads). */
+    private Path requested;
     private LoadedModel current;
     private String status = "";
     private boolean quit;
@@ -122,7 +126,24 @@ public final class Viewer implements AutoCloseable {
         Path path = file.toAbsolutePath().normalize();
         String name = library.displayName(path);
         status = "loading " + name + " ...";
-        inFlight = loader.submit(() -> finished.set(build(path, name, already, clip, time)));
+        long request = ++newestRequest;
+        requested = path;
+        inFlight = loader.submit(() -> {
+            // Pressing "next mesh" five times shows the fifth model, not all five in turn.
+            if (request != newestRequest) {
+                return;
+            }
+            Object result = build(path, name, already, clip, time);
+            Object replaced = finished.getAndSet(result);
+            if (replaced instanceof LoadedModel) {
+                ((LoadedModel) replaced).close();
+            }
+        });
+    }
+
+    /** The file the next previous/next step starts from: the newest asked for, else the one shown. */
+    private Path stepBase() {
+        return loading() && requested != null ? requested : current == null ? null : current.file();
     }
 
     /** Imports and prepares a model (loader thread): a LoadedModel, or a one-line error. */
@@ -245,10 +266,10 @@ public final class Viewer implements AutoCloseable {
                 config.faster();
                 break;
             case PREVIOUS_MESH:
-                load(library.neighbour(current == null ? null : current.file(), -1), null, 0, 0.0);
+                load(library.neighbour(stepBase(), -1), null, 0, 0.0);
                 break;
             case NEXT_MESH:
-                load(library.neighbour(current == null ? null : current.file(), 1), null, 0, 0.0);
+                load(library.neighbour(stepBase(), 1), null, 0, 0.0);
                 break;
             case CENTRE_CAMERA:
                 frameCamera();

@@ -50,6 +50,20 @@ class ViewerTest {
     }
 
     @Test
+    void quickPressesShowTheNewestRequest() throws Exception {
+        try (Viewer v = viewer(false)) {
+            v.openAndWait(v.library().defaultModel());
+            for (int i = 0; i < 3; i++) {
+                v.perform(ViewerAction.NEXT_MESH);
+            }
+            await(v, () -> !v.loading() && v.current().file().equals(v.library().models().get(3)));
+            Thread.sleep(200);
+            v.update();
+            assertEquals(v.library().models().get(3), v.current().file(), "the third press's model stays");
+        }
+    }
+
+    @Test
     void aBadFileKeepsThePreviousModelAndSaysWhy(@TempDir Path dir) throws Exception {
         Path bad = dir.resolve("broken.dae");
         Files.writeString(bad, "<COLLADA><library_geometries><geometry id=\"g\"><mesh>");
