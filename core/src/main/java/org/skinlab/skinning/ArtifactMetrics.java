@@ -34,6 +34,27 @@ public final class ArtifactMetrics {
         return sum / 6;
     }
 
+    /** The diagonal of the bounding box of the first {@code count} points (3 floats each); 0 for none. */
+    public static double boundsDiagonal(float[] points, int count) {
+        if (count <= 0) {
+            return 0;
+        }
+        double minX = Double.MAX_VALUE, minY = Double.MAX_VALUE, minZ = Double.MAX_VALUE;
+        double maxX = -Double.MAX_VALUE, maxY = -Double.MAX_VALUE, maxZ = -Double.MAX_VALUE;
+        for (int i = 0; i < count; i++) {
+            minX = Math.min(minX, points[3 * i]);
+            maxX = Math.max(maxX, points[3 * i]);
+            minY = Math.min(minY, points[3 * i + 1]);
+            maxY = Math.max(maxY, points[3 * i + 1]);
+            minZ = Math.min(minZ, points[3 * i + 2]);
+            maxZ = Math.max(maxZ, points[3 * i + 2]);
+        }
+        double dx = maxX - minX;
+        double dy = maxY - minY;
+        double dz = maxZ - minZ;
+        return Math.sqrt(dx * dx + dy * dy + dz * dz);
+    }
+
     /**
      * Whether a geometry's mesh is closed: every triangle edge, taken between POSITION entries
      * (so UV seams and hard edges do not open it), is shared by exactly two triangles. Only then

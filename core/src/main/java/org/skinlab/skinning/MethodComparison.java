@@ -46,7 +46,7 @@ public final class MethodComparison {
         boolean closed = ArtifactMetrics.isClosed(geometry);
         triangles = closed ? geometry.mesh().triangles() : null;
         restVolume = closed ? ArtifactMetrics.signedVolume(geometry.positionArray(), triangles) : Double.NaN;
-        size = diagonal(geometry.positionArray(), geometry.vertexCount());
+        size = ArtifactMetrics.boundsDiagonal(geometry.positionArray(), geometry.vertexCount());
     }
 
     /**
@@ -77,23 +77,6 @@ public final class MethodComparison {
             lbsVolume = ArtifactMetrics.signedVolume(lbsPositions, triangles) / restVolume;
             dqsVolume = ArtifactMetrics.signedVolume(dqsPositions, triangles) / restVolume;
         }
-    }
-
-    private static double diagonal(float[] p, int n) {
-        double minX = Double.MAX_VALUE, minY = Double.MAX_VALUE, minZ = Double.MAX_VALUE;
-        double maxX = -Double.MAX_VALUE, maxY = -Double.MAX_VALUE, maxZ = -Double.MAX_VALUE;
-        for (int i = 0; i < n; i++) {
-            minX = Math.min(minX, p[3 * i]);
-            maxX = Math.max(maxX, p[3 * i]);
-            minY = Math.min(minY, p[3 * i + 1]);
-            maxY = Math.max(maxY, p[3 * i + 1]);
-            minZ = Math.min(minZ, p[3 * i + 2]);
-            maxZ = Math.max(maxZ, p[3 * i + 2]);
-        }
-        if (n == 0) {
-            return 0;
-        }
-        return Math.sqrt((maxX - minX) * (maxX - minX) + (maxY - minY) * (maxY - minY) + (maxZ - minZ) * (maxZ - minZ));
     }
 
     public SkinnedGeometry geometry() {

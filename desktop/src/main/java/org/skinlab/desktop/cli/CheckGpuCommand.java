@@ -14,6 +14,7 @@ import org.skinlab.model.Model;
 import org.skinlab.simulation.AnimationConfig;
 import org.skinlab.simulation.Frame;
 import org.skinlab.simulation.SkeletalAnimatedMesh;
+import org.skinlab.skinning.ArtifactMetrics;
 import org.skinlab.skinning.SkinningMethod;
 
 import picocli.CommandLine.Command;
@@ -126,7 +127,7 @@ public final class CheckGpuCommand implements Callable<Integer> {
                                 double dz = gpu[i + 2] - cpu[i + 2];
                                 maxDistance = Math.max(maxDistance, Math.sqrt(dx * dx + dy * dy + dz * dz));
                             }
-                            size = Math.max(size, diagonal(cpu, n));
+                            size = Math.max(size, ArtifactMetrics.boundsDiagonal(cpu, n));
                         }
                     }
                 }
@@ -134,21 +135,5 @@ public final class CheckGpuCommand implements Callable<Integer> {
             }
         }
         return new Result(file.toString(), method, vertices, maxDistance, size);
-    }
-
-    private static double diagonal(float[] p, int n) {
-        double[] min = {Double.MAX_VALUE, Double.MAX_VALUE, Double.MAX_VALUE};
-        double[] max = {-Double.MAX_VALUE, -Double.MAX_VALUE, -Double.MAX_VALUE};
-        for (int i = 0; i < n; i++) {
-            for (int c = 0; c < 3; c++) {
-                min[c] = Math.min(min[c], p[3 * i + c]);
-                max[c] = Math.max(max[c], p[3 * i + c]);
-            }
-        }
-        double d = 0;
-        for (int c = 0; c < 3 && n > 0; c++) {
-            d += (max[c] - min[c]) * (max[c] - min[c]);
-        }
-        return Math.sqrt(d);
     }
 }
