@@ -3,10 +3,13 @@ package org.skinlab.desktop.app;
 import static org.lwjgl.glfw.GLFW.*;
 
 import org.lwjgl.glfw.GLFWCursorEnterCallback;
+import org.lwjgl.PointerBuffer;
 import org.lwjgl.glfw.GLFWCursorPosCallback;
+import org.lwjgl.glfw.GLFWDropCallback;
 import org.lwjgl.glfw.GLFWKeyCallback;
 import org.lwjgl.glfw.GLFWMouseButtonCallback;
 import org.lwjgl.glfw.GLFWScrollCallback;
+import org.lwjgl.system.MemoryStack;
 import org.skinlab.desktop.render.GlWindow;
 import org.skinlab.desktop.viewer.LoadedModel;
 import org.skinlab.desktop.viewer.Viewer;
@@ -141,7 +144,7 @@ final class ScriptPlayer {
                 }
                 break;
             case "drop":
-                app.dropped(script.resolve(s.rest()));
+                drop(script.resolve(s.rest()));
                 break;
             case "open":
                 viewer.open(script.resolve(s.rest()));
@@ -202,6 +205,18 @@ final class ScriptPlayer {
         if (cb != null) {
             cb.invoke(window.handle(), key, glfwGetKeyScancode(key), GLFW_PRESS, mods);
             cb.invoke(window.handle(), key, glfwGetKeyScancode(key), GLFW_RELEASE, mods);
+        }
+    }
+
+    /** A file drop through the window's installed drop callback, with GLFW's list of UTF-8 paths. */
+    private void drop(java.nio.file.Path file) {
+        GLFWDropCallback cb = glfwSetDropCallback(window.handle(), null);
+        glfwSetDropCallback(window.handle(), cb);
+        if (cb != null) {
+            try (MemoryStack stack = MemoryStack.stackPush()) {
+                PointerBuffer names = stack.pointers(stack.UTF8(file.toString()));
+                cb.invoke(window.handle(), 1, names.address());
+            }
         }
     }
 
