@@ -52,6 +52,10 @@ final class SharedPositionSkinner extends AbstractSkinner {
         double direct;
         double frame;
         double derived;
+        if (method == SkinningMethod.COR) {
+            // Its kernel is scalar so far: measured with the SIMD kernels, this rule does not apply.
+            return false;
+        }
         if (method == SkinningMethod.LBS) {
             direct = 2 + 2.2 * influences;
             frame = 3 + 1.75 * influences;

@@ -63,6 +63,8 @@ public final class SkinnedGeometry {
     private final int[] frameOfPoint;
     private final SkinnedGeometry sharedPositions;
     private final boolean windingMirrored;
+    /** CoR skinning's centres, computed on first request (CentersOfRotation). */
+    private volatile float[] centersOfRotation;
 
     private SkinnedGeometry(MeshInstance instance, int vertexCount, float[] positions, float[] normals,
             int influences, int[] joints, float[] weights, int[] jointNodes, float[] bindMatrices,
@@ -445,6 +447,25 @@ public final class SkinnedGeometry {
      */
     public int[] frameOfPointArray() {
         return frameOfPoint;
+    }
+
+    /**
+     * The centre of rotation of every point (3 floats per point, bind space) for CoR skinning,
+     * computed on the first call ({@link CentersOfRotation}, sigma 0.1, in parallel) and kept.
+     * Read-only.
+     */
+    public float[] centersOfRotation() {
+        float[] c = centersOfRotation;
+        if (c == null) {
+            synchronized (this) {
+                c = centersOfRotation;
+                if (c == null) {
+                    c = CentersOfRotation.compute(this, CentersOfRotation.DEFAULT_SIGMA, CentersOfRotation.Progress.NONE);
+                    centersOfRotation = c;
+                }
+            }
+        }
+        return c;
     }
 
     /** A palette sized for this geometry, with its DQS pivots. */

@@ -28,6 +28,7 @@ public final class SkinnedModel {
     private final JointPalette[] palettes;
     private final boolean[] dualQuaternionsReady;
     private final Skinner[][] skinners;
+    private final NormalTransform normals;
 
     /**
      * @param clip the clip to play, or null to keep the model at rest
@@ -35,6 +36,7 @@ public final class SkinnedModel {
      */
     public SkinnedModel(Model model, AnimationClip clip, NormalTransform normals) {
         this.model = model;
+        this.normals = normals;
         this.skeleton = Skeleton.of(model);
         this.sampler = clip == null ? AnimationSampler.rest(skeleton) : new AnimationSampler(skeleton, clip);
         this.pose = skeleton.newPose();
@@ -50,7 +52,8 @@ public final class SkinnedModel {
         for (int g = 0; g < n; g++) {
             SkinnedGeometry geometry = geometries.get(g);
             palettes[g] = geometry.newPalette();
-            for (SkinningMethod m : SkinningMethod.values()) {
+            // LBS and DQS now; CoR's skinner on first use (its centres take a precomputation).
+            for (SkinningMethod m : new SkinningMethod[] {SkinningMethod.LBS, SkinningMethod.DQS}) {
                 skinners[g][m.ordinal()] = Skinners.create(m, geometry, normals);
             }
         }
@@ -102,9 +105,14 @@ public final class SkinnedModel {
         return palettes[g];
     }
 
-    /** The skinner geometry {@code g} uses for a method. */
+    /** The skinner geometry {@code g} uses for a method (made on first use). */
     public Skinner skinner(int g, SkinningMethod method) {
-        return skinners[g][method.ordinal()];
+        Skinner s = skinners[g][method.ordinal()];
+        if (s == null) {
+            s = Skinners.create(method, geometries.get(g), normals);
+            skinners[g][method.ordinal()] = s;
+        }
+        return s;
     }
 
     /**
@@ -127,9 +135,10 @@ public final class SkinnedModel {
      * (size {@code 3 * pointCount()}). DQS derives the palette's dual quaternions once per pose.
      */
     public void skin(int g, SkinningMethod method, float[] outPositions, float[] outNormals) {
-        if (method == SkinningMethod.DQS) {
+        if (method != SkinningMethod.LBS) {
+            // DQS and CoR read the rotations of the dual quaternions.
             preparePalette(g);
         }
-        skinners[g][method.ordinal()].skinAll(palettes[g], outPositions, outNormals);
+        skinner(g, method).skinAll(palettes[g], outPositions, outNormals);
     }
 }

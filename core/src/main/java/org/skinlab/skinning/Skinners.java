@@ -110,6 +110,8 @@ public final class Skinners {
                 return new ScalarLbsSkinner(geometry, normals);
             case DQS:
                 return new ScalarDqsSkinner(geometry, normals);
+            case COR:
+                return new ScalarCorSkinner(geometry, normals);
             default:
                 throw new IllegalArgumentException(String.valueOf(method));
         }

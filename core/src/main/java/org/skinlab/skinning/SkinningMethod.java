@@ -9,9 +9,15 @@ public enum SkinningMethod {
      * quaternions, normalised, transforms each point; joint scale is blended linearly first
      * (the two-phase split, see {@link JointPalette}).
      */
-    DQS;
+    DQS,
+    /**
+     * Skinning with optimized centres of rotation (Le and Hodgins 2016): the rotations blended as
+     * in DQS, the translation LBS's at a per-point centre of rotation precomputed from the weights
+     * ({@link CentersOfRotation}); see {@link ScalarCorSkinner}.
+     */
+    COR;
 
-    /** The lower-case name used on the command line and in JSON ("lbs", "dqs"). */
+    /** The lower-case name used on the command line and in JSON ("lbs", "dqs", "cor"). */
     public String key() {
         return name().toLowerCase(java.util.Locale.ROOT);
     }
@@ -23,6 +29,6 @@ public enum SkinningMethod {
                 return m;
             }
         }
-        throw new IllegalArgumentException("unknown skinning method \"" + key + "\" (expected lbs or dqs)");
+        throw new IllegalArgumentException("unknown skinning method \"" + key + "\" (expected lbs, dqs or cor)");
     }
 }

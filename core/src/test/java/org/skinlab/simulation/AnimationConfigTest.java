@@ -69,6 +69,8 @@ class AnimationConfigTest {
         assertEquals(new AnimationConfig.Settings(1.0, SkinningMethod.DQS, RotationInterpolation.LERP, false, false,
                 false, true, WrapMode.CLAMP), c.settings());
         assertFalse(c.isCpuSkinning());
+        // The methods in order: LBS, DQS, CoR, then LBS again.
+        assertEquals(SkinningMethod.COR, c.nextMethod());
         assertEquals(SkinningMethod.LBS, c.nextMethod());
         assertEquals(RotationInterpolation.SLERP, c.nextInterpolation());
         c.startAnimation();
@@ -78,9 +80,9 @@ class AnimationConfigTest {
 
     @Test
     void concurrentSwitchesLoseNoUpdate() throws Exception {
-        // Each nextMethod() flips LBS <-> DQS. 4 threads x 10,001 flips = 40,004, an even number:
-        // the method ends where it began only if no flip was lost to a race (a read-then-write
-        // setter loses some and ends on either method by chance). Concurrent faster()/slower() in
+        // Each nextMethod() steps LBS -> DQS -> CoR -> LBS. 4 threads x 10,001 steps = 40,004:
+        // the method ends 40,004 mod 3 = 1 step from LBS only if no step was lost to a race (a
+        // read-then-write setter loses some and ends on any method by chance). Concurrent faster()/slower() in
         // equal numbers must likewise cancel out (clamping never reached: at most 2 steps away).
         AnimationConfig c = new AnimationConfig();
         int threads = 4;
@@ -118,7 +120,7 @@ class AnimationConfigTest {
         for (Thread w : workers) {
             w.join();
         }
-        assertEquals(SkinningMethod.LBS, c.method());
+        assertEquals(SkinningMethod.values()[(threads * flips) % SkinningMethod.values().length], c.method());
         // 40,004 steps through three interpolations from SLERP (index 1): (1 + 40004) mod 3 = 0.
         assertEquals(RotationInterpolation.values()[(1 + threads * flips) % 3], c.interpolation());
         assertEquals(1.0, c.speed(), 1e-9);

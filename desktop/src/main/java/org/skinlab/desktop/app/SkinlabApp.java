@@ -348,8 +348,13 @@ public final class SkinlabApp implements AutoCloseable {
         glViewport(0, 0, size[0], size[1]);
     }
 
-    private static SkinningMethod other(SkinningMethod m) {
-        return m == SkinningMethod.LBS ? SkinningMethod.DQS : SkinningMethod.LBS;
+    /** The method the split view draws beside {@code first}: --split's, else LBS and DQS face each other (CoR faces DQS). */
+    private SkinningMethod other(SkinningMethod first) {
+        SkinningMethod chosen = options.splitMethod();
+        if (chosen != null && chosen != first) {
+            return chosen;
+        }
+        return first == SkinningMethod.DQS ? SkinningMethod.LBS : SkinningMethod.DQS;
     }
 
     private void drawView(Frame frame, SkinningMethod method, boolean cpuPositions, int x, int width, int height) {

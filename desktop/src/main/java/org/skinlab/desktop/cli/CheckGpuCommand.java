@@ -24,7 +24,7 @@ import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
 
 /**
- * {@code skinlab check-gpu FILE... [--method lbs|dqs|both] [--time T,...] [--tolerance R]}: skins
+ * {@code skinlab check-gpu FILE... [--method lbs|dqs|cor|all] [--time T,...] [--tolerance R]}: skins
  * each file on the GPU (the viewer's vertex shader, read back with transform feedback) and on the
  * CPU (core's kernels) from the same frame, and reports the largest distance between the two
  * relative to the model's size. Exit status 1 when a distance exceeds the tolerance: a driver, a
@@ -37,8 +37,8 @@ public final class CheckGpuCommand implements Callable<Integer> {
     @Parameters(arity = "1..*", paramLabel = "FILE", description = ".dae files")
     List<Path> files;
 
-    @Option(names = "--method", paramLabel = "lbs|dqs|both", description = "methods to check (default: both)")
-    String method = "both";
+    @Option(names = "--method", paramLabel = "lbs|dqs|cor|all", description = "methods to check (default: all)")
+    String method = "all";
 
     @Option(names = "--time", split = ",", paramLabel = "T", description = "playback times in seconds "
             + "(default: 0, a quarter, half and three quarters of the clip)")
@@ -89,13 +89,13 @@ public final class CheckGpuCommand implements Callable<Integer> {
     }
 
     private static List<SkinningMethod> methods(String name) {
-        if (name.equalsIgnoreCase("both")) {
-            return List.of(SkinningMethod.LBS, SkinningMethod.DQS);
+        if (name.equalsIgnoreCase("all")) {
+            return List.of(SkinningMethod.values());
         }
         try {
             return List.of(SkinningMethod.fromKey(name));
         } catch (IllegalArgumentException e) {
-            throw new CommandFailure(ExitCodes.USAGE, "--method " + name + ": expected lbs, dqs or both", e);
+            throw new CommandFailure(ExitCodes.USAGE, "--method " + name + ": expected lbs, dqs, cor or all", e);
         }
     }
 

@@ -131,7 +131,8 @@ final class FrameBench {
         float t = skinned.sampler().clipTime(frame / 60.0, WrapMode.LOOP);
         skinned.pose(t, RotationInterpolation.SLERP);
         for (int g = 0; g < positions.length; g++) {
-            JointPalette palette = method == SkinningMethod.DQS ? skinned.preparePalette(g) : skinned.palette(g);
+            // DQS and CoR read the dual quaternions.
+            JointPalette palette = method != SkinningMethod.LBS ? skinned.preparePalette(g) : skinned.palette(g);
             skinners[g][method.ordinal()].skinAll(palette, positions[g], normals[g]);
         }
     }

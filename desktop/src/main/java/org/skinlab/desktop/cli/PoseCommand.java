@@ -78,7 +78,7 @@ public final class PoseCommand implements Callable<Integer> {
             description = "clip times in seconds, comma-separated; clamped to the clip")
     List<Float> times = new ArrayList<>();
 
-    @Option(names = "--method", required = true, paramLabel = "lbs|dqs", converter = MethodConverter.class,
+    @Option(names = "--method", required = true, paramLabel = "lbs|dqs|cor", converter = MethodConverter.class,
             description = "skinning method: lbs (linear blend) or dqs (dual quaternion)")
     SkinningMethod method;
 
@@ -273,7 +273,7 @@ public final class PoseCommand implements Callable<Integer> {
             try {
                 return SkinningMethod.fromKey(value);
             } catch (IllegalArgumentException e) {
-                throw new CommandLine.TypeConversionException("'" + value + "' is not a skinning method (expected lbs or dqs)");
+                throw new CommandLine.TypeConversionException("'" + value + "' is not a skinning method (expected lbs, dqs or cor)");
             }
         }
     }

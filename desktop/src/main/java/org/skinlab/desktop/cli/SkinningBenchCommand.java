@@ -41,7 +41,7 @@ public final class SkinningBenchCommand implements Callable<Integer> {
     @Option(names = "--threads", paramLabel = "T", description = "threads, the caller's included (default: ${DEFAULT-VALUE})")
     int threads = 1;
 
-    @Option(names = "--method", paramLabel = "lbs|dqs", description = "skinning method (default: ${DEFAULT-VALUE})")
+    @Option(names = "--method", paramLabel = "lbs|dqs|cor", description = "skinning method (default: ${DEFAULT-VALUE})")
     String method = "lbs";
 
     @Option(names = "--implementation", paramLabel = "auto|scalar|vector",
@@ -104,6 +104,9 @@ public final class SkinningBenchCommand implements Callable<Integer> {
         }
         if (baseline != null && !baseline.equals("thesis")) {
             throw usage("unknown baseline \"" + baseline + "\" (expected thesis)");
+        }
+        if (baseline != null && m == SkinningMethod.COR) {
+            throw usage("the thesis baseline skins with LBS or DQS only");
         }
         SyntheticSkinData data = new SyntheticSkinData(vertices);
         SkinnedGeometry geometry = data.geometry();

@@ -31,7 +31,7 @@ public final class ViewCommand implements Callable<Integer> {
     @Parameters(index = "0", arity = "0..1", paramLabel = "FILE", description = "a .dae file")
     Path file;
 
-    @Option(names = "--method", paramLabel = "lbs|dqs", converter = PoseCommand.MethodConverter.class,
+    @Option(names = "--method", paramLabel = "lbs|dqs|cor", converter = PoseCommand.MethodConverter.class,
             description = "skinning method at start (default: lbs)")
     SkinningMethod method = SkinningMethod.LBS;
 
@@ -39,8 +39,8 @@ public final class ViewCommand implements Callable<Integer> {
             description = "rotation interpolation between keyframes (default: slerp)")
     RotationInterpolation interpolation = RotationInterpolation.SLERP;
 
-    @Option(names = "--split", paramLabel = "lbs|dqs", converter = PoseCommand.MethodConverter.class,
-            description = "split view: this method (the other one) drawn beside --method, in sync")
+    @Option(names = "--split", paramLabel = "lbs|dqs|cor", converter = PoseCommand.MethodConverter.class,
+            description = "split view: this method drawn beside --method, in sync")
     SkinningMethod split;
 
     @Option(names = "--gpu", description = "skin in the vertex shader (the default)")
@@ -83,9 +83,8 @@ public final class ViewCommand implements Callable<Integer> {
             throw new CommandFailure(ExitCodes.USAGE, "--gpu and --cpu exclude each other", null);
         }
         if (split != null && split == method) {
-            throw new CommandFailure(ExitCodes.USAGE, "--split names the method drawn beside --method: use the other "
-                    + "one (--method " + method.key() + " --split " + (method == SkinningMethod.LBS ? "dqs" : "lbs") + ")",
-                    null);
+            throw new CommandFailure(ExitCodes.USAGE, "--split names the method drawn beside --method: use another "
+                    + "one than " + method.key(), null);
         }
         if (exitAfterFrames < 0) {
             throw new CommandFailure(ExitCodes.USAGE, "--exit-after-frames needs a count >= 0", null);

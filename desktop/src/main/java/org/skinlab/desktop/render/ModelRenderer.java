@@ -103,7 +103,7 @@ public final class ModelRenderer implements AutoCloseable {
         glUniformMatrix4fv(shader.viewProjection, false, s.viewProjection.get(matrix));
         glUniformMatrix4fv(shader.model, false, s.model.get(matrix));
         glUniform3f(shader.eye, s.eye.x, s.eye.y, s.eye.z);
-        glUniform1i(shader.skinning, !s.gpuSkinning ? 0 : s.method == SkinningMethod.DQS ? 2 : 1);
+        glUniform1i(shader.skinning, !s.gpuSkinning ? 0 : shaderMethod(s.method));
         glUniform1i(shader.compare, s.view == DrawSettings.View.DIFFERENCE ? 1 : 0);
         boolean weights = s.view == DrawSettings.View.WEIGHTS;
         glUniform1i(shader.viewMode, s.view.ordinal());
@@ -126,9 +126,26 @@ public final class ModelRenderer implements AutoCloseable {
         glBindVertexArray(0);
     }
 
+    /** The skinning shader's {@code uSkinning} for a method skinned on the GPU. */
+    private static int shaderMethod(SkinningMethod method) {
+        switch (method) {
+            case LBS:
+                return 1;
+            case DQS:
+                return 2;
+            case COR:
+                return 3;
+            default:
+                throw new IllegalArgumentException("no shader for " + method);
+        }
+    }
+
     private void drawAll(DrawSettings s, boolean flat, boolean weights) {
         for (int g = 0; g < geometries.size(); g++) {
             GpuGeometry gpu = geometries.get(g);
+            if (s.gpuSkinning && s.method == SkinningMethod.COR) {
+                gpu.ensureCentres();
+            }
             // No joint (-1) colours by nothing; a joint outside this palette shows weight 0 (blue).
             glUniform1i(shader.selectedJoint, !weights ? -1 : gpu.paletteIndexOfNode(s.selectedNode));
             gpu.bind(s.gpuSkinning);
@@ -187,7 +204,10 @@ public final class ModelRenderer implements AutoCloseable {
             glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, buffer);
             glBufferData(GL_TRANSFORM_FEEDBACK_BUFFER, 12L * Math.max(1, n), GL_STREAM_READ);
             shader.use();
-            glUniform1i(shader.skinning, method == SkinningMethod.DQS ? 2 : 1);
+            glUniform1i(shader.skinning, shaderMethod(method));
+            if (method == SkinningMethod.COR) {
+                gpu.ensureCentres();
+            }
             glUniform1i(shader.compare, 0);
             glUniform1i(shader.selectedJoint, -1);
             glUniform1i(shader.columns, 1);

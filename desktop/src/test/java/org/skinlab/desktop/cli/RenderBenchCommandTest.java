@@ -14,7 +14,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.skinlab.desktop.render.GlTestDisplay;
 
-/** The thesis' figure's shape: four series over the instance steps, each point measured. */
+/** The thesis' figure's shape: six series (CPU and GPU; LBS, DQS, CoR) over the instance steps, each point measured. */
 class RenderBenchCommandTest {
     @BeforeAll
     static void display() {
@@ -28,20 +28,21 @@ class RenderBenchCommandTest {
     }
 
     @Test
-    void fourSeriesOfMeasuredPoints(@TempDir Path dir) throws Exception {
+    void sixSeriesOfMeasuredPoints(@TempDir Path dir) throws Exception {
         Path json = dir.resolve("render.json");
         Cli r = Cli.run("bench-render", "--size", "160x120", "--seconds", "0.1", "--max-instances", "4", "--min-fps", "0",
                 "--json", json.toString());
         assertEquals(0, r.status, r::toString);
         JsonNode points = new ObjectMapper().readTree(json.toFile()).get("points");
-        assertEquals(8, points.size(), r::toString);
+        assertEquals(12, points.size(), r::toString);
         for (JsonNode p : points) {
             assertTrue(p.get("fps").asDouble() > 0, p::toString);
             assertTrue(List.of("cpu", "gpu").contains(p.get("skinning").asText()), p::toString);
         }
-        assertEquals("gpu", points.get(7).get("skinning").asText());
-        assertEquals("dqs", points.get(7).get("method").asText());
-        assertEquals(4, points.get(7).get("instances").asInt());
+        // CPU then GPU; LBS, DQS, CoR; 1 and 4 copies each.
+        assertEquals("gpu", points.get(11).get("skinning").asText());
+        assertEquals("cor", points.get(11).get("method").asText());
+        assertEquals(4, points.get(11).get("instances").asInt());
         assertTrue(r.out.contains("instances") && r.out.contains("bytes/frame"), r::toString);
     }
 }

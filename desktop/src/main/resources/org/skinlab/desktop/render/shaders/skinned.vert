@@ -10,12 +10,13 @@ layout(location = 3) in uvec4 aJoints0;
 layout(location = 4) in vec4 aWeights0;
 layout(location = 5) in uvec4 aJoints1;   // influences 5-8 (zero weights with a 4-influence view)
 layout(location = 6) in vec4 aWeights1;
+layout(location = 7) in vec3 aCentre;     // CoR skinning: the point's centre of rotation (bind space)
 
 uniform samplerBuffer uMatrices;      // 3 texels per joint: the rows of a 3x4 affine matrix
 uniform samplerBuffer uDualQuaternions; // 2 texels per joint: rotation (x y z w), dual part
 uniform samplerBuffer uScales;        // 3 texels per joint: rows of the scale/shear part
 
-uniform int uSkinning;        // 0: positions are already posed (CPU), 1: LBS, 2: DQS
+uniform int uSkinning;        // 0: positions are already posed (CPU), 1: LBS, 2: DQS, 3: CoR
 uniform int uInfluences;      // 4 or 8
 uniform bool uHasScale;       // DQS: run the scale phase first
 uniform bool uMatricesMirror; // LBS normals: times the sign of the blend's determinant
@@ -111,6 +112,33 @@ void dqs(vec3 p, vec3 n, out vec3 outP, out vec3 outN) {
     outN = rotate(br, n);
 }
 
+// CoR (Le and Hodgins 2016): the rotations blended as in DQS, the translation LBS's (of the
+// joints' rigid parts) at the point's centre of rotation; the scale phase first, as in DQS.
+void cor(vec3 p, vec3 n, out vec3 outP, out vec3 outN) {
+    vec3 c = aCentre;
+    if (uHasScale) {
+        vec4 s0, s1, s2;
+        blendRows(uScales, s0, s1, s2);
+        n = cofactorTimes(s0, s1, s2, n, uScalesMirror);
+        p = applyRows(s0, s1, s2, p);
+        c = applyRows(s0, s1, s2, c);
+    }
+    vec4 pivot = texel(uDualQuaternions, aJoints0.x, 2, 0);
+    vec4 q = vec4(0.0);
+    vec3 t = vec3(0.0);
+    for (int i = 0; i < uInfluences; i++) {
+        uint j = jointAt(i);
+        float w = weightAt(i);
+        vec4 r = texel(uDualQuaternions, j, 2, 0);
+        vec4 d = texel(uDualQuaternions, j, 2, 1);
+        q += (dot(pivot, r) < 0.0 ? -w : w) * r;
+        t += w * (rotate(r, c) + 2.0 * (r.w * d.xyz - d.w * r.xyz + cross(r.xyz, d.xyz)));
+    }
+    q = normalize(q);
+    outP = rotate(q, p - c) + t;
+    outN = rotate(q, n);
+}
+
 void main() {
     vec3 posed = aPosition;
     vec3 normal = aNormal;
@@ -119,6 +147,8 @@ void main() {
         lbs(aPosition, aNormal, posed, normal);
     } else if (uSkinning == 2) {
         dqs(aPosition, aNormal, posed, normal);
+    } else if (uSkinning == 3) {
+        cor(aPosition, aNormal, posed, normal);
     }
     if (uCompare) {
         vec3 pl, pd, unused;
