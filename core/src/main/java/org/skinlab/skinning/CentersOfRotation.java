@@ -1,5 +1,6 @@
 package org.skinlab.skinning;
 
+import java.nio.file.Path;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.stream.IntStream;
 
@@ -39,7 +40,45 @@ public final class CentersOfRotation {
         };
     }
 
+    /** Where computed centres are kept between runs; null: nowhere (see {@link #setCacheDirectory}). */
+    private static volatile Path cacheDirectory;
+
     private CentersOfRotation() {
+    }
+
+    /**
+     * Keeps computed centres in {@code directory} (created when needed), one file per geometry
+     * named by a hash of everything the centres depend on (bind positions, triangles, influences,
+     * sigma), so that loading a file again costs a file read. Null turns the cache off (the
+     * default). Set once by an application at start; a cache that cannot be read or written is
+     * passed by silently (the centres are then computed).
+     */
+    public static void setCacheDirectory(Path directory) {
+        cacheDirectory = directory;
+    }
+
+    public static Path cacheDirectory() {
+        return cacheDirectory;
+    }
+
+    /**
+     * The centres from the cache when it holds them for this geometry and sigma, else computed
+     * (and then stored in the cache, if one is set).
+     */
+    public static float[] computeOrLoad(SkinnedGeometry geometry, double sigma, Progress progress) {
+        Path dir = cacheDirectory;
+        if (dir == null) {
+            return compute(geometry, sigma, progress);
+        }
+        String key = CentresCache.key(geometry, sigma);
+        float[] cached = CentresCache.load(dir, key, 3 * geometry.pointCount());
+        if (cached != null) {
+            progress.update(1, 1);
+            return cached;
+        }
+        float[] centres = compute(geometry, sigma, progress);
+        CentresCache.store(dir, key, centres);
+        return centres;
     }
 
     /**

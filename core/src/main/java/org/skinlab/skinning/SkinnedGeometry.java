@@ -451,7 +451,8 @@ public final class SkinnedGeometry {
 
     /**
      * The centre of rotation of every point (3 floats per point, bind space) for CoR skinning,
-     * computed on the first call ({@link CentersOfRotation}, sigma 0.1, in parallel) and kept.
+     * computed on the first call ({@link CentersOfRotation}, sigma 0.1, in parallel; read from
+     * its disk cache when one is set) and kept.
      * Read-only.
      */
     public float[] centersOfRotation() {
@@ -460,7 +461,8 @@ public final class SkinnedGeometry {
             synchronized (this) {
                 c = centersOfRotation;
                 if (c == null) {
-                    c = CentersOfRotation.compute(this, CentersOfRotation.DEFAULT_SIGMA, CentersOfRotation.Progress.NONE);
+                    c = CentersOfRotation.computeOrLoad(this, CentersOfRotation.DEFAULT_SIGMA,
+                            CentersOfRotation.Progress.NONE);
                     centersOfRotation = c;
                 }
             }
