@@ -118,30 +118,62 @@ public final class ScalarCorSkinner extends AbstractSkinner {
             }
         }
         // Blend the rotations (antipodality against the dominant influence) and move the centre
-        // by the rigid parts: D c = r c r* + t, t = 2 (rw d - dw r + r x d).
+        // by the rigid parts D: without scale D = M, and LBS of the centre is the blended matrix
+        // applied once; with scale, D c = r c r* + t, t = 2 (rw d - dw r + r x d), per influence.
         int q = 8 * joints[o];
         float p0 = dq[q], p1 = dq[q + 1], p2 = dq[q + 2], p3 = dq[q + 3];
         float r0 = 0, r1 = 0, r2 = 0, r3 = 0;
         float tx = 0, ty = 0, tz = 0;
-        for (int k = 0; k < width; k++) {
-            q = 8 * joints[o + k];
-            float w = weights[o + k];
-            float ax = dq[q], ay = dq[q + 1], az = dq[q + 2], aw = dq[q + 3];
-            float bx = dq[q + 4], by = dq[q + 5], bz = dq[q + 6], bw = dq[q + 7];
-            float sw = Math.copySign(w, p0 * ax + p1 * ay + p2 * az + p3 * aw + 0f);
-            r0 += sw * ax;
-            r1 += sw * ay;
-            r2 += sw * az;
-            r3 += sw * aw;
-            float ux = ay * cz - az * cy + aw * cx;
-            float uy = az * cx - ax * cz + aw * cy;
-            float uz = ax * cy - ay * cx + aw * cz;
-            float dx = cx + 2 * (ay * uz - az * uy) + 2 * (aw * bx - bw * ax + (ay * bz - az * by));
-            float dy = cy + 2 * (az * ux - ax * uz) + 2 * (aw * by - bw * ay + (az * bx - ax * bz));
-            float dz = cz + 2 * (ax * uy - ay * ux) + 2 * (aw * bz - bw * az + (ax * by - ay * bx));
-            tx += w * dx;
-            ty += w * dy;
-            tz += w * dz;
+        if (!palette.hasScale()) {
+            final float[] mat = palette.matrices();
+            float a0 = 0, a1 = 0, a2 = 0, a3 = 0, a4 = 0, a5 = 0, a6 = 0, a7 = 0, a8 = 0, a9 = 0, a10 = 0, a11 = 0;
+            for (int k = 0; k < width; k++) {
+                int j = joints[o + k];
+                float w = weights[o + k];
+                q = 8 * j;
+                float sw = Math.copySign(w, p0 * dq[q] + p1 * dq[q + 1] + p2 * dq[q + 2] + p3 * dq[q + 3] + 0f);
+                r0 += sw * dq[q];
+                r1 += sw * dq[q + 1];
+                r2 += sw * dq[q + 2];
+                r3 += sw * dq[q + 3];
+                int m = 12 * j;
+                a0 += w * mat[m];
+                a1 += w * mat[m + 1];
+                a2 += w * mat[m + 2];
+                a3 += w * mat[m + 3];
+                a4 += w * mat[m + 4];
+                a5 += w * mat[m + 5];
+                a6 += w * mat[m + 6];
+                a7 += w * mat[m + 7];
+                a8 += w * mat[m + 8];
+                a9 += w * mat[m + 9];
+                a10 += w * mat[m + 10];
+                a11 += w * mat[m + 11];
+            }
+            tx = a0 * cx + a1 * cy + a2 * cz + a3;
+            ty = a4 * cx + a5 * cy + a6 * cz + a7;
+            tz = a8 * cx + a9 * cy + a10 * cz + a11;
+        } else {
+            for (int k = 0; k < width; k++) {
+                q = 8 * joints[o + k];
+                float w = weights[o + k];
+                float ax = dq[q], ay = dq[q + 1], az = dq[q + 2], aw = dq[q + 3];
+                float bx = dq[q + 4], by = dq[q + 5], bz = dq[q + 6], bw = dq[q + 7];
+                float sw = Math.copySign(w, p0 * ax + p1 * ay + p2 * az + p3 * aw + 0f);
+                r0 += sw * ax;
+                r1 += sw * ay;
+                r2 += sw * az;
+                r3 += sw * aw;
+                float ux = ay * cz - az * cy + aw * cx;
+                float uy = az * cx - ax * cz + aw * cy;
+                float uz = ax * cy - ay * cx + aw * cz;
+                float dx = cx + 2 * (ay * uz - az * uy) + 2 * (aw * bx - bw * ax + (ay * bz - az * by));
+                float dy = cy + 2 * (az * ux - ax * uz) + 2 * (aw * by - bw * ay + (az * bx - ax * bz));
+                float dz = cz + 2 * (ax * uy - ay * ux) + 2 * (aw * bz - bw * az + (ax * by - ay * bx));
+                tx += w * dx;
+                ty += w * dy;
+                tz += w * dz;
+            }
         }
         float inv = (float) (1.0 / Math.sqrt(r0 * r0 + r1 * r1 + r2 * r2 + r3 * r3));
         float x = r0 * inv, y = r1 * inv, z = r2 * inv, w = r3 * inv;
