@@ -130,9 +130,18 @@ void cor(vec3 p, vec3 n, out vec3 outP, out vec3 outN) {
         uint j = jointAt(i);
         float w = weightAt(i);
         vec4 r = texel(uDualQuaternions, j, 2, 0);
-        vec4 d = texel(uDualQuaternions, j, 2, 1);
         q += (dot(pivot, r) < 0.0 ? -w : w) * r;
-        t += w * (rotate(r, c) + 2.0 * (r.w * d.xyz - d.w * r.xyz + cross(r.xyz, d.xyz)));
+        if (uHasScale) {
+            // The rigid part D of a scaled joint, from its dual quaternion.
+            vec4 d = texel(uDualQuaternions, j, 2, 1);
+            t += w * (rotate(r, c) + 2.0 * (r.w * d.xyz - d.w * r.xyz + cross(r.xyz, d.xyz)));
+        }
+    }
+    if (!uHasScale) {
+        // D = M: LBS of the centre is the blended matrix applied once (as the CPU kernel does).
+        vec4 m0, m1, m2;
+        blendRows(uMatrices, m0, m1, m2);
+        t = applyRows(m0, m1, m2, c);
     }
     q = normalize(q);
     outP = rotate(q, p - c) + t;
