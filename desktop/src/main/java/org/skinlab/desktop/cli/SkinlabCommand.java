@@ -10,7 +10,8 @@ import picocli.CommandLine.Command;
 @Command(name = "skinlab", mixinStandardHelpOptions = true, versionProvider = SkinlabCommand.Version.class,
         description = "Skeletal animation lab: view COLLADA characters skinned with LBS and DQS (no subcommand: the window "
                 + "on the default character), inspect them, pose them, benchmark.",
-        subcommands = {ViewCommand.class, CheckGpuCommand.class, RenderBenchCommand.class, InspectCommand.class, PoseCommand.class, BenchCommand.class,
+        subcommands = {ViewCommand.class, CheckGpuCommand.class, RenderBenchCommand.class, CompareCommand.class,
+                InspectCommand.class, PoseCommand.class, BenchCommand.class,
                 CommandLine.HelpCommand.class})
 public final class SkinlabCommand implements Runnable {
     @CommandLine.Spec

@@ -54,4 +54,19 @@ class CorMethodCommandTest {
         assertEquals(2, unknown.status, unknown::toString);
         assertTrue(unknown.err.contains("expected lbs, dqs or cor"), unknown::toString);
     }
+
+    @Test
+    void compareTabulatesTheMethodsAtAJoint() {
+        Cli r = Cli.run("compare", Cli.root().resolve("assets/cylinders/cylinder-bend.dae").toString(), "--joint", "upper",
+                "--time", "4");
+        assertEquals(0, r.status, r::toString);
+        assertTrue(r.out.contains("joint upper with parent lower, 640 points in the joint region"), r::toString);
+        // At 170 degrees of bend: DQS bulges 0.038 m, CoR 0.006, LBS loses 8.5% of the volume.
+        assertTrue(r.out.contains("| LBS | 0.9146 |"), r::toString);
+        assertTrue(r.out.contains("| DQS | 0.9985 | 0.8182 | 0.0378 |"), r::toString);
+        assertTrue(r.out.contains("| COR | 0.9749 | 0.8173 | 0.0061 |"), r::toString);
+        Cli none = Cli.run("compare", Cli.defaultAsset().toString(), "--joint", "no_such_joint");
+        assertEquals(2, none.status, none::toString);
+        assertTrue(none.err.contains("no skin has a joint named no_such_joint"), none::toString);
+    }
 }

@@ -1,0 +1,145 @@
+package org.skinlab.desktop.cli;
+
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.EnumMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.concurrent.Callable;
+
+import org.skinlab.animation.RotationInterpolation;
+import org.skinlab.model.Model;
+import org.skinlab.model.Node;
+import org.skinlab.skinning.JointArtifacts;
+import org.skinlab.skinning.NormalTransform;
+import org.skinlab.skinning.SkinnedGeometry;
+import org.skinlab.skinning.SkinnedModel;
+import org.skinlab.skinning.SkinningMethod;
+
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+import picocli.CommandLine.Model.CommandSpec;
+
+/**
+ * {@code skinlab compare FILE --joint NAME [--time T,...]}: where each skinning method wins at one
+ * joint of a user's file, as a markdown table per time: volume, joint ring, bulge, and the
+ * distance to every other method ({@code JointArtifacts}, docs/skinning.md).
+ */
+@Command(name = "compare", mixinStandardHelpOptions = true,
+        description = {"LBS, DQS and CoR at one joint: volume kept, joint ring, bulge, distance between the methods "
+                + "(a markdown table per time)."})
+public final class CompareCommand implements Callable<Integer> {
+    @Parameters(index = "0", paramLabel = "FILE", description = "a .dae file")
+    Path file;
+
+    @Option(names = "--joint", required = true, paramLabel = "NAME",
+            description = "the joint (node name, id or sid) whose region is measured with its parent's bone")
+    String joint;
+
+    @Option(names = "--time", split = ",", paramLabel = "T", description = "clip times in seconds (default: the clip's"
+            + " start, middle and end)")
+    List<Float> times;
+
+    @Spec
+    CommandSpec spec;
+
+    @Override
+    public Integer call() {
+        Model model = ModelFiles.load(file).model;
+        SkinnedModel skinned = new SkinnedModel(model, model.clips().isEmpty() ? null : model.clips().get(0),
+                NormalTransform.INVERSE_TRANSPOSE);
+        PrintWriter out = spec.commandLine().getOut();
+        int found = 0;
+        for (int g = 0; g < skinned.geometries().size(); g++) {
+            SkinnedGeometry geometry = skinned.geometries().get(g);
+            int j = paletteIndex(model, geometry, joint);
+            if (j < 0) {
+                continue;
+            }
+            int p = parentInPalette(model, geometry, j);
+            if (p < 0) {
+                throw new CommandFailure(ExitCodes.USAGE, joint + " has no parent joint in its skin: no joint region"
+                        + " to measure", null);
+            }
+            found++;
+            JointArtifacts artifacts = new JointArtifacts(geometry, j, p);
+            out.printf(Locale.ROOT, "%s, mesh %s: joint %s with parent %s, %d points in the joint region%n",
+                    file.getFileName(), geometry.mesh() == null ? "?" : geometry.mesh().id(), joint,
+                    name(model, geometry.jointNode(p)), artifacts.regionSize());
+            float start = skinned.sampler().start();
+            float end = skinned.sampler().end();
+            List<Float> at = times != null ? times : List.of(start, (start + end) / 2, end);
+            for (float t : at) {
+                skinned.pose(skinned.sampler().clamp(t), RotationInterpolation.SLERP);
+                Map<SkinningMethod, float[]> posed = new EnumMap<>(SkinningMethod.class);
+                for (SkinningMethod m : SkinningMethod.values()) {
+                    float[] points = new float[3 * geometry.pointCount()];
+                    skinned.skin(g, m, points, new float[points.length]);
+                    posed.put(m, points);
+                }
+                table(out, t, artifacts.report(posed, skinned.palette(g).matrices()));
+            }
+        }
+        if (found == 0) {
+            throw new CommandFailure(ExitCodes.USAGE, file + ": no skin has a joint named " + joint, null);
+        }
+        out.flush();
+        return ExitCodes.OK;
+    }
+
+    private static void table(PrintWriter out, float time, List<JointArtifacts.Report> reports) {
+        out.printf(Locale.ROOT, "%n| t = %.3f s | volume / rest | joint ring / rest | bulge | distance to LBS | DQS | CoR |%n",
+                time);
+        out.println("|---|---:|---:|---:|---:|---:|---:|");
+        for (JointArtifacts.Report r : reports) {
+            List<String> cells = new ArrayList<>();
+            for (SkinningMethod other : SkinningMethod.values()) {
+                Double d = r.distanceTo().get(other);
+                cells.add(d == null ? "" : String.format(Locale.ROOT, "%.4f", d));
+            }
+            out.printf(Locale.ROOT, "| %s | %s | %s | %s | %s |%n", r.method().name(), number(r.volume()),
+                    number(r.ringRadius()), number(r.bulge()), String.join(" | ", cells));
+        }
+    }
+
+    private static String number(double v) {
+        return Double.isNaN(v) ? "-" : String.format(Locale.ROOT, "%.4f", v);
+    }
+
+    private static String name(Model model, int node) {
+        if (node < 0) {
+            return "(bind shape)";
+        }
+        Node n = model.node(node);
+        return n.name() != null ? n.name() : n.id();
+    }
+
+    private static int paletteIndex(Model model, SkinnedGeometry g, String name) {
+        for (int j = 0; j < g.jointCount(); j++) {
+            int node = g.jointNode(j);
+            if (node >= 0) {
+                Node n = model.node(node);
+                if (name.equals(n.name()) || name.equals(n.id()) || name.equals(n.sid())) {
+                    return j;
+                }
+            }
+        }
+        return -1;
+    }
+
+    /** The palette index of the nearest ancestor of joint {@code j} that is in the palette, or -1. */
+    private static int parentInPalette(Model model, SkinnedGeometry g, int j) {
+        for (int node = model.node(g.jointNode(j)).parent(); node >= 0; node = model.node(node).parent()) {
+            for (int k = 0; k < g.jointCount(); k++) {
+                if (g.jointNode(k) == node) {
+                    return k;
+                }
+            }
+        }
+        return -1;
+    }
+}
