@@ -36,7 +36,13 @@ public final class Screenshot {
             }
             Path parent = file.toAbsolutePath().getParent();
             if (parent != null) {
-                Files.createDirectories(parent);
+                try {
+                    Files.createDirectories(parent);
+                } catch (IOException e) {
+                    // Java's message is the bare folder name (e.g. a file stands in its way).
+                    throw new IOException("cannot write the screenshot " + file + ": cannot create the folder "
+                            + parent + " (" + e.getClass().getSimpleName() + ")", e);
+                }
             }
             // OpenGL's rows run bottom up. stb's flag is global state: set for this call only.
             STBImageWrite.stbi_flip_vertically_on_write(true);
