@@ -2,6 +2,7 @@ package org.skinlab.desktop.render;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.lwjgl.opengl.GL33C.*;
 
@@ -28,5 +29,26 @@ class GlDebugLogTest {
                 assertTrue(log.messages().get(0).length() > 0);
             }
         }
+    }
+
+    /** Without a debug context: glGetError at a named place, every recorded error drained. */
+    @Test
+    void checkNamesThePlaceAndTheError() {
+        try (GlWindow window = new GlWindow("test", 64, 64, false, false)) {
+            assertTrue(!window.isDebugContext());
+            GlDebugLog.check("a clear");
+            glBindTexture(0x1234, 0);
+            IllegalStateException e = assertThrows(IllegalStateException.class,
+                    () -> GlDebugLog.check("binding a texture"));
+            assertEquals("OpenGL error after binding a texture: GL_INVALID_ENUM", e.getMessage());
+            GlDebugLog.check("the check before");
+            glBindTexture(0x1234, 0);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, -5);
+            e = assertThrows(IllegalStateException.class, () -> GlDebugLog.check("two calls"));
+            assertTrue(e.getMessage().startsWith("OpenGL error after two calls: GL_INVALID_ENUM"), e.getMessage());
+            GlDebugLog.check("the check before");
+        }
+        assertEquals("GL_INVALID_FRAMEBUFFER_OPERATION", GlDebugLog.errorName(GL_INVALID_FRAMEBUFFER_OPERATION));
+        assertEquals("GL error 0x1234", GlDebugLog.errorName(0x1234));
     }
 }
