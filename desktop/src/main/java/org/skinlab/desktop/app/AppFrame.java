@@ -14,7 +14,6 @@ public final class AppFrame {
     Viewer viewer;
     int width;
     int height;
-    float uiScale = 1f;
     long frameNumber;
     double frameMillis;
     boolean drewMesh;
@@ -71,9 +70,6 @@ public final class AppFrame {
         return height;
     }
 
-    public float uiScale() {
-        return uiScale;
-    }
 
     public long frameNumber() {
         return frameNumber;

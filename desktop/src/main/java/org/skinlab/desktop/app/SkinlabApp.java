@@ -93,7 +93,6 @@ public final class SkinlabApp implements AutoCloseable {
         floor = new FloorGrid();
         input = new WindowInput(window, viewer, this);
         info.viewer = viewer;
-        info.uiScale = window.contentScale();
         if (!options.hideUi()) {
             // After the window's own callbacks: ImGui's backend chains to them.
             ui = new ImGuiUi(window, this::windowAction);

@@ -68,17 +68,6 @@ public final class ViewerSettings {
         return DrawSettings.squareColumns(instances());
     }
 
-    /** Sets the smallest step of at least {@code n} instances. */
-    public void setInstances(int n) {
-        instanceStep = INSTANCE_STEPS.length - 1;
-        for (int i = 0; i < INSTANCE_STEPS.length; i++) {
-            if (INSTANCE_STEPS[i] >= n) {
-                instanceStep = i;
-                break;
-            }
-        }
-    }
-
     public void moreInstances() {
         instanceStep = Math.min(INSTANCE_STEPS.length - 1, instanceStep + 1);
     }

@@ -40,8 +40,8 @@ class TwistScreenshotTest {
                 int height = h.get(0);
                 int background = rgb(pixels, width, 0, 0);
                 // The cylinder spans the picture's height: its joint (z = 1 of 0..2) at the middle.
-                int middle = widestNear(pixels, width, height / 2, 6, background);
-                int quarter = widestNear(pixels, width, height / 4, 0, background);
+                int middle = narrowestNear(pixels, width, height / 2, 6, background);
+                int quarter = narrowestNear(pixels, width, height / 4, 0, background);
                 return new int[] {middle, quarter};
             } finally {
                 STBImage.stbi_image_free(pixels);
@@ -50,7 +50,7 @@ class TwistScreenshotTest {
     }
 
     /** The narrowest silhouette width over the rows within {@code spread} of {@code row}. */
-    private static int widestNear(ByteBuffer p, int width, int row, int spread, int background) {
+    private static int narrowestNear(ByteBuffer p, int width, int row, int spread, int background) {
         int narrowest = Integer.MAX_VALUE;
         for (int y = row - spread; y <= row + spread; y++) {
             int n = 0;
