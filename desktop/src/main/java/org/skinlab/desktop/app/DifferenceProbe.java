@@ -4,7 +4,6 @@ import java.util.List;
 
 import org.skinlab.simulation.Frame;
 import org.skinlab.skinning.MethodComparison;
-import org.skinlab.skinning.SkinnedGeometry;
 
 /**
  * The numbers beside the difference view: LBS against DQS on the frame shown (core's
@@ -23,16 +22,16 @@ final class DifferenceProbe {
     private double lbsVolume = Double.NaN;
     private double dqsVolume = Double.NaN;
 
-    DifferenceProbe(List<SkinnedGeometry> geometries) {
-        comparisons = new MethodComparison[geometries.size()];
+    /** @param comparisons one per geometry, made off the window's thread ({@code LoadedModel}) */
+    DifferenceProbe(List<MethodComparison> made) {
+        comparisons = made.toArray(new MethodComparison[0]);
         double largest = 0;
         int volume = -1;
         for (int g = 0; g < comparisons.length; g++) {
-            comparisons[g] = new MethodComparison(geometries.get(g));
             largest = Math.max(largest, comparisons[g].size());
             // The volume shown is the largest closed mesh's (a character's body, not its eyes).
             if (comparisons[g].closed() && (volume < 0
-                    || geometries.get(g).pointCount() > geometries.get(volume).pointCount())) {
+                    || comparisons[g].geometry().pointCount() > comparisons[volume].geometry().pointCount())) {
                 volume = g;
             }
         }

@@ -317,7 +317,7 @@ public final class SkinlabApp implements AutoCloseable {
         draw.model.set(shown.framing().upright());
         // Both methods' volumes are live numbers in every view; the difference view adds the distance.
         if (difference == null) {
-            difference = new DifferenceProbe(shown.mesh().geometries());
+            difference = new DifferenceProbe(shown.comparisons());
         }
         difference.measure(frame);
         info.maxDifference = difference.maxRelative();

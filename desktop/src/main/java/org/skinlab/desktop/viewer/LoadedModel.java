@@ -2,8 +2,11 @@ package org.skinlab.desktop.viewer;
 
 import java.nio.file.Path;
 
+import java.util.List;
+
 import org.skinlab.model.Model;
 import org.skinlab.simulation.SkeletalAnimatedMesh;
+import org.skinlab.skinning.MethodComparison;
 
 /**
  * A model the viewer shows: the file, the imported {@link Model}, the clip it plays, its
@@ -16,16 +19,18 @@ public final class LoadedModel implements AutoCloseable {
     private final int clip;
     private final SkeletalAnimatedMesh mesh;
     private final ModelFraming framing;
+    private final List<MethodComparison> comparisons;
     private final double loadMillis;
 
     LoadedModel(Path file, String displayName, Model model, int clip, SkeletalAnimatedMesh mesh, ModelFraming framing,
-            double loadMillis) {
+            List<MethodComparison> comparisons, double loadMillis) {
         this.file = file;
         this.displayName = displayName;
         this.model = model;
         this.clip = clip;
         this.mesh = mesh;
         this.framing = framing;
+        this.comparisons = List.copyOf(comparisons);
         this.loadMillis = loadMillis;
     }
 
@@ -56,6 +61,11 @@ public final class LoadedModel implements AutoCloseable {
 
     public ModelFraming framing() {
         return framing;
+    }
+
+    /** LBS against DQS per geometry (the difference view's numbers), made when the model was loaded. */
+    public List<MethodComparison> comparisons() {
+        return comparisons;
     }
 
     public double loadMillis() {

@@ -3,6 +3,8 @@ package org.skinlab.desktop.viewer;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
@@ -16,6 +18,8 @@ import org.skinlab.model.Model;
 import org.skinlab.simulation.AnimationConfig;
 import org.skinlab.simulation.Frame;
 import org.skinlab.simulation.SkeletalAnimatedMesh;
+import org.skinlab.skinning.MethodComparison;
+import org.skinlab.skinning.SkinnedGeometry;
 
 /**
  * The viewer's state and what its actions do, apart from drawing: the model shown (loaded off the
@@ -160,7 +164,13 @@ public final class Viewer implements AutoCloseable {
             try (Frame frame = mesh.acquire()) {
                 framing = ModelFraming.of(model.asset(), mesh.geometries(), frame);
             }
-            return new LoadedModel(path, name, model, clipIndex, mesh, framing, (System.nanoTime() - t0) / 1e6);
+            // The difference probe's skinners and closed-mesh check, here rather than on the window's thread.
+            List<MethodComparison> comparisons = new ArrayList<>();
+            for (SkinnedGeometry g : mesh.geometries()) {
+                comparisons.add(new MethodComparison(g));
+            }
+            return new LoadedModel(path, name, model, clipIndex, mesh, framing, comparisons,
+                    (System.nanoTime() - t0) / 1e6);
         } catch (ColladaException e) {
             close(mesh);
             return oneLine(e.getMessage());
