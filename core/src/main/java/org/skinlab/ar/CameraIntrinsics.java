@@ -1,0 +1,59 @@
+package org.skinlab.ar;
+
+/**
+ * Pinhole intrinsics of an undistorted camera image, in pixels.
+ *
+ * <p>Conventions (the ones {@code skinlab track} writes and other tools score): camera x to the
+ * right, y down, z forward; pixel (i, j) has its centre at (i, j), so the image spans
+ * [-0.5, width - 0.5] in x. The intrinsics JSON file holds exactly these six fields:
+ * {@code {"width","height","fx","fy","cx","cy"}}.
+ *
+ * @param width  image width in pixels
+ * @param height image height in pixels
+ * @param fx     focal length along x, in pixels
+ * @param fy     focal length along y, in pixels
+ * @param cx     principal point x (pixel-centre-at-integer convention)
+ * @param cy     principal point y
+ */
+public record CameraIntrinsics(int width, int height, double fx, double fy, double cx, double cy) {
+
+    public CameraIntrinsics {
+        if (width <= 0 || height <= 0) {
+            throw new IllegalArgumentException("image size must be positive: " + width + "x" + height);
+        }
+        if (!(fx > 0) || !(fy > 0) || !Double.isFinite(fx) || !Double.isFinite(fy)) {
+            throw new IllegalArgumentException("focal lengths must be positive and finite: fx=" + fx + " fy=" + fy);
+        }
+        if (!Double.isFinite(cx) || !Double.isFinite(cy)) {
+            throw new IllegalArgumentException("principal point must be finite: cx=" + cx + " cy=" + cy);
+        }
+    }
+
+    /**
+     * Intrinsics estimated from a horizontal field of view: square pixels, principal point at the
+     * image centre. Good enough for a phone whose calibration is unknown; poses then carry the
+     * error of the field-of-view guess mostly in depth.
+     */
+    public static CameraIntrinsics fromHorizontalFov(int width, int height, double horizontalFovDegrees) {
+        if (!(horizontalFovDegrees > 1 && horizontalFovDegrees < 179)) {
+            throw new IllegalArgumentException("horizontal field of view must be in (1, 179) degrees: "
+                    + horizontalFovDegrees);
+        }
+        double f = 0.5 * width / Math.tan(Math.toRadians(horizontalFovDegrees) / 2);
+        return new CameraIntrinsics(width, height, f, f, (width - 1) / 2.0, (height - 1) / 2.0);
+    }
+
+    /** The same camera at another resolution (a preview stream scaled from the sensor's). */
+    public CameraIntrinsics scaledTo(int newWidth, int newHeight) {
+        double sx = (double) newWidth / width;
+        double sy = (double) newHeight / height;
+        // Scaling maps pixel edges to pixel edges: x_edge = x_centre + 0.5.
+        return new CameraIntrinsics(newWidth, newHeight, fx * sx, fy * sy,
+                (cx + 0.5) * sx - 0.5, (cy + 0.5) * sy - 0.5);
+    }
+
+    /** Horizontal field of view in degrees. */
+    public double horizontalFovDegrees() {
+        return Math.toDegrees(2 * Math.atan(0.5 * width / fx));
+    }
+}
