@@ -31,6 +31,8 @@ final class VectorKernels {
                 return new VectorLbsSkinner(geometry, normals);
             case DQS:
                 return new VectorDqsSkinner(geometry, normals);
+            case COR:
+                return new VectorCorSkinner(geometry, normals);
             default:
                 return null;
         }

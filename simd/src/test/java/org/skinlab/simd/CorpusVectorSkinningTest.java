@@ -16,8 +16,6 @@ import org.skinlab.animation.RotationInterpolation;
 import org.skinlab.collada.ColladaImporter;
 import org.skinlab.model.Model;
 import org.skinlab.skinning.NormalTransform;
-import org.skinlab.skinning.ScalarDqsSkinner;
-import org.skinlab.skinning.ScalarLbsSkinner;
 import org.skinlab.skinning.SkinnedGeometry;
 import org.skinlab.skinning.SkinnedModel;
 import org.skinlab.skinning.Skinner;
@@ -35,8 +33,8 @@ import org.skinlab.skinning.SkinningMethod;
  * for positions. Skipped, saying so, when the corpus is absent.
  */
 class CorpusVectorSkinningTest {
-    /** The methods with Vector API kernels (CoR's kernel is scalar so far: CorSkinningTest in core). */
-    private static final SkinningMethod[] WITH_VECTOR_KERNELS = {SkinningMethod.LBS, SkinningMethod.DQS};
+    /** The methods with Vector API kernels: all of them. */
+    private static final SkinningMethod[] WITH_VECTOR_KERNELS = SkinningMethod.values();
 
     private static final float TOLERANCE = 2e-5f;
 
@@ -73,8 +71,7 @@ class CorpusVectorSkinningTest {
                     SkinnedGeometry geometry = skinned.geometries().get(g);
                     Skinner fast = Skinners.create(method, geometry, rule);
                     assertTrue(fast.implementation().startsWith("vector-256"), fast.implementation());
-                    Skinner reference = method == SkinningMethod.LBS ? new ScalarLbsSkinner(geometry, rule)
-                            : new ScalarDqsSkinner(geometry, rule);
+                    Skinner reference = Skinners.scalar(method, geometry, rule);
                     for (int t = 0; t < 5; t++) {
                         skinned.pose(start + (end - start) * t / 4f, RotationInterpolation.SLERP);
                         skinned.palette(g).prepareDualQuaternions();

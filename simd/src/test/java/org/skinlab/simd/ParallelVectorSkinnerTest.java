@@ -14,11 +14,12 @@ import org.skinlab.skinning.SkinningMethod;
 /**
  * The vector kernels split over threads give the same bits as one call: LBS computes a range's
  * last points with the same vector arithmetic (through a scratch array), and the parallel split
- * keeps DQS's blocks whole (its range alignment is 8).
+ * keeps DQS's and CoR's blocks whole (their range alignment is 8).
  */
 class ParallelVectorSkinnerTest {
     @ParameterizedTest(name = "{0} {1}")
-    @CsvSource({"LBS, BLENDED_MATRIX", "LBS, INVERSE_TRANSPOSE", "DQS, BLENDED_MATRIX", "DQS, INVERSE_TRANSPOSE"})
+    @CsvSource({"LBS, BLENDED_MATRIX", "LBS, INVERSE_TRANSPOSE", "DQS, BLENDED_MATRIX", "DQS, INVERSE_TRANSPOSE",
+        "COR, BLENDED_MATRIX", "COR, INVERSE_TRANSPOSE"})
     void splitOverThreadsIsBitIdenticalToOneCall(SkinningMethod method, NormalTransform normals) {
         for (int points : new int[] {1, 2, 3, 17, 64, 1003}) {
             SkinnedGeometry g = Geometries.random(points, points, 4, 10);
@@ -42,7 +43,7 @@ class ParallelVectorSkinnerTest {
                 float[] n = new float[3 * points];
                 kernel.skin(palette, p, n, 0, cut);
                 kernel.skin(palette, p, n, cut, points);
-                if (method == SkinningMethod.LBS || cut % 8 == 0) { // DQS: partial blocks go scalar
+                if (method == SkinningMethod.LBS || cut % 8 == 0) { // DQS, CoR: partial blocks go scalar
                     assertArrayEquals(p1, p, "cut at " + cut);
                     assertArrayEquals(n1, n, "cut at " + cut);
                 }

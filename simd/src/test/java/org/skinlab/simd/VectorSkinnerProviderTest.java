@@ -65,7 +65,7 @@ class VectorSkinnerProviderTest {
         assertTrue(p.waitFor(60, TimeUnit.SECONDS), "child JVM did not finish in 60 s");
         String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8).trim();
         assertEquals(0, p.exitValue(), out);
-        assertEquals("lbs=vector-256 dqs=vector-256 cor=scalar", out);
+        assertEquals("lbs=vector-256 dqs=vector-256 cor=vector-256", out);
     }
 
     /** Test classes, simd's classes and resources (the service file), core and JOML. */

@@ -14,8 +14,6 @@ import org.skinlab.skinning.JointPalette;
 import org.skinlab.skinning.NormalTransform;
 import org.skinlab.skinning.SkinnedGeometry;
 import org.skinlab.skinning.Skinner;
-import org.skinlab.skinning.ScalarDqsSkinner;
-import org.skinlab.skinning.ScalarLbsSkinner;
 import org.skinlab.skinning.Skinners;
 import org.skinlab.skinning.SkinningMethod;
 
@@ -31,8 +29,8 @@ import org.skinlab.skinning.SkinningMethod;
  * wrong lane, sign or component (those are off by 1e-2 or more).
  */
 class VectorSkinnerTest {
-    /** The methods with Vector API kernels (CoR's kernel is scalar so far: CorSkinningTest in core). */
-    private static final SkinningMethod[] WITH_VECTOR_KERNELS = {SkinningMethod.LBS, SkinningMethod.DQS};
+    /** The methods with Vector API kernels: all of them. */
+    private static final SkinningMethod[] WITH_VECTOR_KERNELS = SkinningMethod.values();
 
     private static final float TOLERANCE = 2e-5f;
 
@@ -87,7 +85,9 @@ class VectorSkinnerTest {
         "LBS, INVERSE_TRANSPOSE, 7", "LBS, INVERSE_TRANSPOSE, 8", "LBS, BLENDED_MATRIX, 9", "LBS, INVERSE_TRANSPOSE, 10",
         "LBS, INVERSE_TRANSPOSE, 11", "LBS, BLENDED_MATRIX, 12", "DQS, INVERSE_TRANSPOSE, 5", "DQS, BLENDED_MATRIX, 6",
         "DQS, INVERSE_TRANSPOSE, 7", "DQS, INVERSE_TRANSPOSE, 8", "DQS, BLENDED_MATRIX, 9", "DQS, INVERSE_TRANSPOSE, 10",
-        "DQS, BLENDED_MATRIX, 11", "DQS, INVERSE_TRANSPOSE, 12"})
+        "DQS, BLENDED_MATRIX, 11", "DQS, INVERSE_TRANSPOSE, 12", "COR, BLENDED_MATRIX, 4", "COR, INVERSE_TRANSPOSE, 4",
+        "COR, INVERSE_TRANSPOSE, 1", "COR, BLENDED_MATRIX, 3", "COR, INVERSE_TRANSPOSE, 6", "COR, INVERSE_TRANSPOSE, 8",
+        "COR, BLENDED_MATRIX, 11"})
     void agreesWithScalarOnRandomPointsForEveryRange(SkinningMethod method, NormalTransform normals, int width) {
         // 203 points: 25 whole blocks of 8 and a tail of 3; 16 joints so 12 distinct ones fit.
         SkinnedGeometry g = Geometries.random(7 + width, 203, width, 16);
@@ -108,7 +108,8 @@ class VectorSkinnerTest {
     @ParameterizedTest(name = "{0} {1}, {2} influences")
     @CsvSource({"LBS, BLENDED_MATRIX, 4", "LBS, INVERSE_TRANSPOSE, 4", "DQS, BLENDED_MATRIX, 4",
         "DQS, INVERSE_TRANSPOSE, 4", "DQS, INVERSE_TRANSPOSE, 1", "DQS, INVERSE_TRANSPOSE, 6",
-        "DQS, BLENDED_MATRIX, 8", "DQS, INVERSE_TRANSPOSE, 11", "LBS, INVERSE_TRANSPOSE, 6"})
+        "DQS, BLENDED_MATRIX, 8", "DQS, INVERSE_TRANSPOSE, 11", "LBS, INVERSE_TRANSPOSE, 6",
+        "COR, INVERSE_TRANSPOSE, 4"})
     void agreesWithScalarWhenJointsAreScaled(SkinningMethod method, NormalTransform normals, int width) {
         SkinnedGeometry g = Geometries.random(3 + width, 101, width, 16);
         JointPalette palette = Geometries.pose(g, 5, true);
@@ -122,7 +123,8 @@ class VectorSkinnerTest {
     @ParameterizedTest(name = "{0} {1}, {2} influences, scaled {3}")
     @CsvSource({"LBS, BLENDED_MATRIX, 4, false", "LBS, INVERSE_TRANSPOSE, 3, false", "LBS, INVERSE_TRANSPOSE, 7, false",
         "LBS, INVERSE_TRANSPOSE, 12, true", "DQS, BLENDED_MATRIX, 2, false", "DQS, INVERSE_TRANSPOSE, 4, false",
-        "DQS, INVERSE_TRANSPOSE, 6, false", "DQS, INVERSE_TRANSPOSE, 6, true", "DQS, BLENDED_MATRIX, 9, true"})
+        "DQS, INVERSE_TRANSPOSE, 6, false", "DQS, INVERSE_TRANSPOSE, 6, true", "DQS, BLENDED_MATRIX, 9, true",
+        "COR, INVERSE_TRANSPOSE, 4, false", "COR, BLENDED_MATRIX, 6, false", "COR, INVERSE_TRANSPOSE, 9, false"})
     void framesAgreeWithScalar(SkinningMethod method, NormalTransform normals, int width, boolean scaled) {
         SkinnedGeometry g = Geometries.random(40 + width, 203, width, 16);
         JointPalette palette = Geometries.pose(g, 41, scaled);
@@ -173,8 +175,7 @@ class VectorSkinnerTest {
     /** skinFrames of both kernels on [from, to), outputs compared (nothing written outside). */
     private static void assertFramesAgree(Skinner vector, JointPalette palette, int from, int to) {
         SkinnedGeometry g = vector.geometry();
-        Skinner scalar = vector.method() == SkinningMethod.LBS ? new ScalarLbsSkinner(g, vector.normalTransform())
-                : new ScalarDqsSkinner(g, vector.normalTransform());
+        Skinner scalar = Skinners.scalar(vector.method(), g, vector.normalTransform());
         int n = g.pointCount();
         float[] vf = nanFilled(Skinner.FRAME_FLOATS * n);
         float[] sf = nanFilled(Skinner.FRAME_FLOATS * n);
@@ -193,11 +194,24 @@ class VectorSkinnerTest {
     }
 
     @ParameterizedTest(name = "{0} {1}")
-    @CsvSource({"LBS, BLENDED_MATRIX", "LBS, INVERSE_TRANSPOSE", "DQS, BLENDED_MATRIX", "DQS, INVERSE_TRANSPOSE"})
+    @CsvSource({"LBS, BLENDED_MATRIX", "LBS, INVERSE_TRANSPOSE", "DQS, BLENDED_MATRIX", "DQS, INVERSE_TRANSPOSE",
+        "COR, BLENDED_MATRIX", "COR, INVERSE_TRANSPOSE"})
     void agreesWithScalarOnTheDefaultCharacter(SkinningMethod method, NormalTransform normals) throws Exception {
         SkinnedGeometry g = Geometries.humanoid();
         assertTrue(g.influencesPerPoint() <= 4, "the humanoid has at most 4 influences per point");
         JointPalette palette = Geometries.pose(g, 23, false);
+        if (method == SkinningMethod.COR) {
+            // Random geometries have no triangles, so their centres are the points themselves
+            // (p' = A p); the character's mesh gives real centres, which this case must exercise.
+            float[] c = g.centersOfRotation();
+            float[] p = g.positionArray();
+            int away = 0;
+            for (int i = 0; i < g.pointCount(); i++) {
+                double dx = c[3 * i] - p[3 * i], dy = c[3 * i + 1] - p[3 * i + 1], dz = c[3 * i + 2] - p[3 * i + 2];
+                away += dx * dx + dy * dy + dz * dz > 1e-6 ? 1 : 0;
+            }
+            assertTrue(away > g.pointCount() / 4, "centres away from their points: " + away + " of " + g.pointCount());
+        }
         Skinner k = vector(method, g, normals);
         assertAgrees(k, palette, 0, g.pointCount());
         assertAgrees(k, palette, 13, g.pointCount() - 5);
