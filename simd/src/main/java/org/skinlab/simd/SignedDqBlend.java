@@ -42,10 +42,10 @@ final class SignedDqBlend {
     /** Per point and influence, the weight (0 for padding). */
     final float[] passWeights;
     /** Per point and influence, the index of its (pivot, joint) pair. */
-    private final int[] pairOf;
+    final int[] pairOf;
     /** The distinct (pivot, other joint) pairs of the geometry. */
-    private final char[] pairPivot;
-    private final char[] pairOther;
+    final char[] pairPivot;
+    final char[] pairOther;
     /** Per pair, the other joint's dual quaternion times the pair's sign ({@link #signedPairs}). */
     private final ThreadLocal<float[]> signedTable;
     /** One pass of points' blended dual quaternions, 8 floats each. */
@@ -100,11 +100,18 @@ final class SignedDqBlend {
         for (int p = 0; p < pairPivot.length; p++) {
             int a = pairPivot[p] << 3;
             int q = pairOther[p] << 3;
-            float sign = Math.copySign(1f, dq[a] * dq[q] + dq[a + 1] * dq[q + 1] + dq[a + 2] * dq[q + 2]
-                    + dq[a + 3] * dq[q + 3] + 0f);
-            FloatVector.fromArray(S, dq, q).mul(sign).intoArray(tab, p << 3);
+            FloatVector.fromArray(S, dq, q).mul(sign(dq, a, q)).intoArray(tab, p << 3);
         }
         return tab;
+    }
+
+    /**
+     * The antipodality sign of the rotation quaternions at {@code dq[a]} and {@code dq[q]}:
+     * {@code copySign(1, q_a . q_q + 0)}, in the scalar kernels' order of operations.
+     */
+    static float sign(float[] dq, int a, int q) {
+        return Math.copySign(1f, dq[a] * dq[q] + dq[a + 1] * dq[q + 1] + dq[a + 2] * dq[q + 2]
+                + dq[a + 3] * dq[q + 3] + 0f);
     }
 
     /**
