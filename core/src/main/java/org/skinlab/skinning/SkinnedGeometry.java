@@ -65,6 +65,13 @@ public final class SkinnedGeometry {
     private final boolean windingMirrored;
     /** CoR skinning's centres, computed on first request (CentersOfRotation). */
     private volatile float[] centersOfRotation;
+    /**
+     * For a {@link #sharedPositions()} geometry, the geometry whose positions it holds: its centres
+     * come from there, since its mesh's triangles index that geometry's points, not its own. Set
+     * by that geometry's constructor, before either is published (and reached through its final
+     * field, so visible wherever it is).
+     */
+    private SkinnedGeometry positionsOf;
 
     private SkinnedGeometry(MeshInstance instance, int vertexCount, float[] positions, float[] normals,
             int influences, int[] joints, float[] weights, int[] jointNodes, float[] bindMatrices,
@@ -89,6 +96,9 @@ public final class SkinnedGeometry {
         this.pointOfPosition = pointOfPosition;
         this.frameOfPoint = frameOfPoint;
         this.sharedPositions = sharedPositions;
+        if (sharedPositions != null) {
+            sharedPositions.positionsOf = this;
+        }
         this.windingMirrored = windingMirrored;
     }
 
@@ -461,13 +471,28 @@ public final class SkinnedGeometry {
             synchronized (this) {
                 c = centersOfRotation;
                 if (c == null) {
-                    c = CentersOfRotation.computeOrLoad(this, CentersOfRotation.DEFAULT_SIGMA,
-                            CentersOfRotation.Progress.NONE);
+                    c = positionsOf != null ? positionsOf.centresOfSharedPositions()
+                            : CentersOfRotation.computeOrLoad(this, CentersOfRotation.DEFAULT_SIGMA,
+                                    CentersOfRotation.Progress.NONE);
                     centersOfRotation = c;
                 }
             }
         }
         return c;
+    }
+
+    /**
+     * The centres of {@link #sharedPositions()}' points, one per position: every point carrying a
+     * position has that position's centre ({@link CentersOfRotation#compute}); a position no point
+     * carries keeps itself.
+     */
+    private float[] centresOfSharedPositions() {
+        float[] perPoint = centersOfRotation();
+        float[] perPosition = sharedPositions.positionArray().clone();
+        for (int i = 0; i < pointCount; i++) {
+            System.arraycopy(perPoint, 3 * i, perPosition, 3 * frameOfPoint[i], 3);
+        }
+        return perPosition;
     }
 
     /** A palette sized for this geometry, with its DQS pivots. */

@@ -62,8 +62,7 @@ public final class Skinners {
     /** The geometry's positions when they are to be skinned once, else null. */
     private static SkinnedGeometry shared(SkinningMethod method, SkinnedGeometry geometry, PositionSharing sharing) {
         SkinnedGeometry shared = geometry.sharedPositions();
-        // CoR's centres come from the render vertices' triangles: its kernel skins every point.
-        if (shared == null || sharing == PositionSharing.NEVER || method == SkinningMethod.COR) {
+        if (shared == null || sharing == PositionSharing.NEVER) {
             return null;
         }
         return sharing == PositionSharing.ALWAYS || SharedPositionSkinner.pays(method, geometry.pointCount(),

@@ -25,12 +25,10 @@ import org.skinlab.testing.TestPaths;
  * per term).
  */
 class SharedPositionsTest {
-    /** The methods this test is about (CoR has its own tests: CorSkinningTest). */
-    private static final SkinningMethod[] LBS_AND_DQS = {SkinningMethod.LBS, SkinningMethod.DQS};
 
     @Test
     void theRuleSharesWhereItSaves() {
-        for (SkinningMethod m : LBS_AND_DQS) {
+        for (SkinningMethod m : SkinningMethod.values()) {
             assertTrue(SharedPositionSkinner.pays(m, 4252, 740, 6), m + ": the cowboy, 5.7 points per position");
             assertFalse(SharedPositionSkinner.pays(m, 951, 951, 4), m + ": one point per position");
             assertTrue(SharedPositionSkinner.pays(m, 10710, 1856, 3), m + ": Suzanne, 5.8 points per position");
@@ -41,6 +39,30 @@ class SharedPositionsTest {
         assertTrue(SharedPositionSkinner.pays(SkinningMethod.DQS, 5174, 3275, 6));
         assertFalse(SharedPositionSkinner.pays(SkinningMethod.DQS, 5000, 4000, 6));
         assertTrue(SharedPositionSkinner.pays(SkinningMethod.LBS, 5000, 4000, 6));
+        // CoR: the stormtrooper shares (both ways measured alike); at 1.25 points per position the
+        // direct kernel wins.
+        assertTrue(SharedPositionSkinner.pays(SkinningMethod.COR, 5174, 3275, 6));
+        assertFalse(SharedPositionSkinner.pays(SkinningMethod.COR, 5000, 4000, 6));
+    }
+
+    @Test
+    void theSharedPositionsCarryTheCentresOfTheirPoints() throws Exception {
+        // CoR's centres come from the render vertices' triangles; the positions' twin must take
+        // them from there (its mesh's triangles index the render vertices, not the positions).
+        Path file = TestPaths.corpusFileOrSkip("S01_cowboy.dae");
+        SkinnedGeometry g = SkinnedModel.of(ColladaImporter.read(file)).geometries().get(0);
+        SkinnedGeometry shared = g.sharedPositions();
+        float[] perPosition = shared.centersOfRotation();
+        float[] perPoint = g.centersOfRotation();
+        int moved = 0;
+        for (int i = 0; i < g.pointCount(); i++) {
+            int f = g.frameOfPointArray()[i];
+            for (int c = 0; c < 3; c++) {
+                assertEquals(perPoint[3 * i + c], perPosition[3 * f + c], 0f, "point " + i);
+            }
+            moved += perPoint[3 * i] != g.positionArray()[3 * i] ? 1 : 0;
+        }
+        assertTrue(moved > g.pointCount() / 4, "centres away from their points: " + moved);
     }
 
     @Test
@@ -88,12 +110,11 @@ class SharedPositionsTest {
         }
         float start = skinned.sampler().start();
         float end = skinned.sampler().end();
-        for (SkinningMethod method : LBS_AND_DQS) {
+        for (SkinningMethod method : SkinningMethod.values()) {
             for (NormalTransform rule : NormalTransform.values()) {
                 Skinner once = Skinners.scalar(method, g, rule);
                 assertTrue(once.implementation().contains("each position once"), once.implementation());
-                Skinner everyPoint = method == SkinningMethod.LBS ? new ScalarLbsSkinner(g, rule)
-                        : new ScalarDqsSkinner(g, rule);
+                Skinner everyPoint = Skinners.create(method, g, rule, PositionSharing.NEVER);
                 for (int t = 0; t < 5; t++) {
                     skinned.pose(start + (end - start) * t / 4f, RotationInterpolation.SLERP);
                     skinned.palette(0).prepareDualQuaternions();

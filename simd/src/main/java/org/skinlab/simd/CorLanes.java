@@ -88,4 +88,61 @@ final class CorLanes {
             ox.rearrange(Lanes.X2).blend(oy.rearrange(Lanes.Y2), Lanes.MY2).blend(oz.rearrange(Lanes.Z2), Lanes.MZ2).intoArray(outNormals, out + 16);
         }
     }
+
+    /**
+     * Blocks {@code [firstBlock, endBlock)}, in place in {@code first}: each point's motion
+     * {@code p -> R p + T}, {@code T = A c - R c}, as the dual quaternion that
+     * {@link DqsLanes#rigidFrames} reads (component c at {@code 8 c}: the blended rotation
+     * quaternion as it is, then the dual part). For the unit quaternion r the dual part is
+     * {@code d = T r / 2} (T as a pure quaternion), {@code d_v = (r_w T + T x r) / 2},
+     * {@code d_w = -(T . r) / 2}; it is stored times |blend| because rigidFrames divides both
+     * parts by it.
+     */
+    static void asDualQuaternions(float[] first, float[] second, float[] centres, int firstBlock, int endBlock) {
+        final FloatVector one = FloatVector.broadcast(S, 1f);
+        for (int b = firstBlock; b < endBlock; b++) {
+            int so = DqsLanes.SCRATCH * (b - firstBlock);
+            int co = 3 * DqsLanes.BLOCK * b;
+            FloatVector x0 = FloatVector.fromArray(S, first, so);
+            FloatVector x1 = FloatVector.fromArray(S, first, so + 8);
+            FloatVector x2 = FloatVector.fromArray(S, first, so + 16);
+            FloatVector x3 = FloatVector.fromArray(S, first, so + 24);
+            FloatVector norm = x0.mul(x0).add(x1.mul(x1)).add(x2.mul(x2)).add(x3.mul(x3)).sqrt();
+            FloatVector inv = one.div(norm);
+            FloatVector rx = x0.mul(inv);
+            FloatVector ry = x1.mul(inv);
+            FloatVector rz = x2.mul(inv);
+            FloatVector rw = x3.mul(inv);
+            FloatVector cx = FloatVector.fromArray(S, centres, co);
+            FloatVector cy = FloatVector.fromArray(S, centres, co + 8);
+            FloatVector cz = FloatVector.fromArray(S, centres, co + 16);
+            FloatVector tx = FloatVector.fromArray(S, first, so + 32).mul(cx)
+                    .add(FloatVector.fromArray(S, first, so + 40).mul(cy))
+                    .add(FloatVector.fromArray(S, first, so + 48).mul(cz))
+                    .add(FloatVector.fromArray(S, first, so + 56));
+            FloatVector ty = FloatVector.fromArray(S, second, so).mul(cx)
+                    .add(FloatVector.fromArray(S, second, so + 8).mul(cy))
+                    .add(FloatVector.fromArray(S, second, so + 16).mul(cz))
+                    .add(FloatVector.fromArray(S, second, so + 24));
+            FloatVector tz = FloatVector.fromArray(S, second, so + 32).mul(cx)
+                    .add(FloatVector.fromArray(S, second, so + 40).mul(cy))
+                    .add(FloatVector.fromArray(S, second, so + 48).mul(cz))
+                    .add(FloatVector.fromArray(S, second, so + 56));
+            // T = A c - R c, R c = c + 2 r x (r x c + w c).
+            FloatVector ux = ry.mul(cz).sub(rz.mul(cy)).add(rw.mul(cx));
+            FloatVector uy = rz.mul(cx).sub(rx.mul(cz)).add(rw.mul(cy));
+            FloatVector uz = rx.mul(cy).sub(ry.mul(cx)).add(rw.mul(cz));
+            FloatVector ex = ry.mul(uz).sub(rz.mul(uy));
+            FloatVector ey = rz.mul(ux).sub(rx.mul(uz));
+            FloatVector ez = rx.mul(uy).sub(ry.mul(ux));
+            tx = tx.sub(cx.add(ex.add(ex)));
+            ty = ty.sub(cy.add(ey.add(ey)));
+            tz = tz.sub(cz.add(ez.add(ez)));
+            FloatVector half = norm.mul(0.5f);
+            rw.mul(tx).add(ty.mul(rz).sub(tz.mul(ry))).mul(half).intoArray(first, so + 32);
+            rw.mul(ty).add(tz.mul(rx).sub(tx.mul(rz))).mul(half).intoArray(first, so + 40);
+            rw.mul(tz).add(tx.mul(ry).sub(ty.mul(rx))).mul(half).intoArray(first, so + 48);
+            tx.mul(rx).add(ty.mul(ry)).add(tz.mul(rz)).mul(half).neg().intoArray(first, so + 56);
+        }
+    }
 }

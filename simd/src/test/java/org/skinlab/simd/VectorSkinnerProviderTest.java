@@ -21,8 +21,8 @@ import org.skinlab.skinning.SkinningMethod;
 
 /** When the provider offers its kernels and when core's scalar ones run instead. */
 class VectorSkinnerProviderTest {
-    /** The methods with Vector API kernels (CoR's kernel is scalar so far: CorSkinningTest in core). */
-    private static final SkinningMethod[] WITH_VECTOR_KERNELS = {SkinningMethod.LBS, SkinningMethod.DQS};
+    /** The methods with Vector API kernels: all of them. */
+    private static final SkinningMethod[] WITH_VECTOR_KERNELS = SkinningMethod.values();
 
     @Test
     void skinnersPicksTheVectorKernelsForAnyInfluenceCount() {
@@ -36,7 +36,7 @@ class VectorSkinnerProviderTest {
                 assertEquals("vector-256", s.implementation(), m + " with " + width + " influences");
                 assertEquals(m, s.method());
                 assertEquals(NormalTransform.INVERSE_TRANSPOSE, s.normalTransform());
-                assertEquals(m == SkinningMethod.DQS ? 8 : 1, s.rangeAlignment());
+                assertEquals(m == SkinningMethod.LBS ? 1 : 8, s.rangeAlignment());
             }
         }
         assertEquals("vector-256", Skinners.expansion(new int[] {0, 0}, new float[6]).implementation());
