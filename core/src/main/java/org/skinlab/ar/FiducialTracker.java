@@ -1,0 +1,213 @@
+package org.skinlab.ar;
+
+import java.util.ArrayList;
+import java.util.List;
+
+import boofcv.abst.fiducial.SquareHamming_to_FiducialDetector;
+import boofcv.alg.fiducial.square.DetectFiducialSquareHamming;
+import boofcv.alg.fiducial.square.FoundFiducial;
+import boofcv.alg.fiducial.square.QuadPoseEstimator;
+import boofcv.factory.distort.LensDistortionFactory;
+import boofcv.factory.fiducial.ConfigFiducialHammingDetector;
+import boofcv.factory.fiducial.ConfigHammingMarker;
+import boofcv.factory.fiducial.FactoryFiducial;
+import boofcv.struct.calib.CameraPinholeBrown;
+import boofcv.struct.image.GrayU8;
+import georegression.struct.se.Se3_F64;
+import georegression.struct.shapes.Quadrilateral_F64;
+
+/**
+ * Finds square fiducials (BoofCV's {@code squareHamming} detector: ArUco and AprilTag codes) in
+ * gray camera images and estimates each one's pose; one instance per thread (it keeps BoofCV's
+ * work images between frames).
+ *
+ * <p><b>Conventions</b> (those of {@link MarkerDetection}): BoofCV places a pixel's centre at
+ * (x + 0.5, y + 0.5), ours at (x, y); corners are reported in ours (BoofCV's minus 0.5) and the
+ * pose is estimated with the principal point moved by +0.5 into BoofCV's, so pose and corners agree
+ * with {@link CameraIntrinsics}. Without that, every pose is off by half a pixel's ray (0.6 mm at
+ * 0.6 m for fx = 500).
+ *
+ * <p><b>False markers.</b> BoofCV accepts a square whose bits are up to the dictionary's minimum
+ * Hamming distance away from a code (12 of 36 bits for 36h12), which reads codes into clutter, into
+ * other dictionaries' markers and into AprilTags; {@link TrackerConfig#maxBitErrors()} caps it.
+ *
+ * <p><b>Video.</b> {@link #track} first looks at the image region around the markers of the last
+ * frame (enlarged by half their size, at least 24 px: a marker moving that far between frames is
+ * found by the whole-frame pass that follows a miss) and only then at the whole frame; every
+ * {@link #FULL_FRAME_EVERY}th frame it looks at the whole frame anyway, so that markers coming into
+ * view are found. {@link #detect} always looks at the whole frame.
+ *
+ * <p>Pose: BoofCV's quadrilateral estimator (IPPE's two planar solutions, the better kept, then
+ * refined by Gauss-Newton on the four corners). Near face-on both solutions fit almost equally well
+ * and one frame's choice may flip; callers that filter over time must not trust a sudden rotation
+ * jump there ({@code MarkerTracking}).
+ */
+public final class FiducialTracker {
+    /** In {@link #track}, a whole-frame search at least this often (frames). */
+    public static final int FULL_FRAME_EVERY = 15;
+    /** A search region is given up for the whole frame when it covers more than this share of it. */
+    private static final double REGION_LIMIT = 0.5;
+
+    private final TrackerConfig config;
+    private final CameraIntrinsics intrinsics;
+    private final DetectFiducialSquareHamming<GrayU8> detector;
+    private final QuadPoseEstimator pose = new QuadPoseEstimator(1e-6, 200);
+    private final Quadrilateral_F64 quad = new Quadrilateral_F64();
+    private final GrayU8 frame = new GrayU8(1, 1);
+    private final GrayU8 region = new GrayU8(1, 1);
+    /** The last frame's markers' bounds in pixels (x0, y0, x1, y1), or empty. */
+    private final double[] lastBounds = new double[4];
+    private boolean haveLast;
+    private int framesSinceFullSearch;
+
+    public FiducialTracker(TrackerConfig config, CameraIntrinsics intrinsics) {
+        this.config = config;
+        this.intrinsics = intrinsics;
+        ConfigHammingMarker code = config.dictionary().config();
+        code.targetWidth = config.markerSizeMetres();
+        // BoofCV accepts a read while its bit errors (plus a penalty for ambiguous bits) stay within
+        // this number.
+        code.minimumHamming = config.maxBitErrors();
+        SquareHamming_to_FiducialDetector<GrayU8> d = FactoryFiducial.squareHamming(code,
+                new ConfigFiducialHammingDetector(), GrayU8.class);
+        this.detector = d.getAlgorithm();
+        pose.setLensDistoriton(LensDistortionFactory.narrow(new CameraPinholeBrown(intrinsics.fx(), intrinsics.fy(),
+                0, intrinsics.cx() + 0.5, intrinsics.cy() + 0.5, intrinsics.width(), intrinsics.height())));
+        double r = config.markerSizeMetres() / 2;
+        // TL, TR, BR, BL of the printed marker in its frame (y toward the top edge): BoofCV's corner order.
+        pose.setFiducial(-r, r, r, r, r, -r, -r, -r);
+    }
+
+    public TrackerConfig config() {
+        return config;
+    }
+
+    public CameraIntrinsics intrinsics() {
+        return intrinsics;
+    }
+
+    /** Every marker in the whole image (of the target id, if the config names one). */
+    public List<MarkerDetection> detect(GrayImage image) {
+        wrap(image);
+        List<MarkerDetection> found = new ArrayList<>(2);
+        search(frame, 0, 0, found);
+        remember(found);
+        framesSinceFullSearch = 0;
+        return found;
+    }
+
+    /**
+     * The markers of one video frame: near the last frame's markers first when the config says so,
+     * else (and when nothing is found there) in the whole image.
+     */
+    public List<MarkerDetection> track(GrayImage image) {
+        if (!config.searchNearLastPose() || !haveLast || framesSinceFullSearch + 1 >= FULL_FRAME_EVERY) {
+            return detect(image);
+        }
+        wrap(image);
+        double w = lastBounds[2] - lastBounds[0];
+        double h = lastBounds[3] - lastBounds[1];
+        double margin = Math.max(24, 0.5 * Math.max(w, h));
+        int x0 = (int) Math.max(0, Math.floor(lastBounds[0] - margin));
+        int y0 = (int) Math.max(0, Math.floor(lastBounds[1] - margin));
+        int x1 = (int) Math.min(image.width(), Math.ceil(lastBounds[2] + margin));
+        int y1 = (int) Math.min(image.height(), Math.ceil(lastBounds[3] + margin));
+        if ((double) (x1 - x0) * (y1 - y0) > REGION_LIMIT * image.width() * image.height()) {
+            return detect(image);
+        }
+        frame.subimage(x0, y0, x1, y1, region);
+        List<MarkerDetection> found = new ArrayList<>(2);
+        search(region, x0, y0, found);
+        if (found.isEmpty()) {
+            return detect(image);
+        }
+        remember(found);
+        framesSinceFullSearch++;
+        return found;
+    }
+
+    /** Forgets the last frame (a cut in the video, a new camera). */
+    public void reset() {
+        haveLast = false;
+        framesSinceFullSearch = 0;
+    }
+
+    /** Makes {@link #frame} a view of the image's bytes (no copy). */
+    private void wrap(GrayImage image) {
+        if (image.width() != intrinsics.width() || image.height() != intrinsics.height()) {
+            throw new IllegalArgumentException("image of " + image.width() + "x" + image.height()
+                    + " for a camera of " + intrinsics.width() + "x" + intrinsics.height());
+        }
+        frame.data = image.pixels();
+        frame.width = image.width();
+        frame.height = image.height();
+        frame.stride = image.rowStride();
+        frame.startIndex = 0;
+        frame.subImage = false;
+    }
+
+    /** Detects in {@code image}, whose pixel (0, 0) is the frame's (x0, y0), and estimates poses. */
+    private void search(GrayU8 image, int x0, int y0, List<MarkerDetection> out) {
+        detector.process(image);
+        for (FoundFiducial f : detector.getFound().toList()) {
+            if (config.targetId() >= 0 && f.id != config.targetId()) {
+                continue;
+            }
+            for (int i = 0; i < 4; i++) {
+                quad.get(i).setTo(f.distortedPixels.get(i).x + x0, f.distortedPixels.get(i).y + y0);
+            }
+            if (!pose.process(quad, true)) {
+                continue;
+            }
+            Se3_F64 m = pose.getWorldToCamera();
+            double[] corners = new double[8];
+            for (int i = 0; i < 4; i++) {
+                corners[2 * i] = quad.get(i).x - 0.5;
+                corners[2 * i + 1] = quad.get(i).y - 0.5;
+            }
+            double[] rotation = new double[9];
+            for (int row = 0; row < 3; row++) {
+                for (int col = 0; col < 3; col++) {
+                    rotation[3 * row + col] = m.R.get(row, col);
+                }
+            }
+            double[] translation = {m.T.x, m.T.y, m.T.z};
+            out.add(new MarkerDetection((int) f.id, corners, rotation, translation, reprojectionError(corners,
+                    rotation, translation)));
+        }
+    }
+
+    /** Root-mean-square distance in pixels between the corners and the pose's projections of the marker's corners. */
+    private double reprojectionError(double[] corners, double[] r, double[] t) {
+        double h = config.markerSizeMetres() / 2;
+        double[] mx = {-h, h, h, -h};
+        double[] my = {h, h, -h, -h};
+        double sum = 0;
+        for (int i = 0; i < 4; i++) {
+            double x = r[0] * mx[i] + r[1] * my[i] + t[0];
+            double y = r[3] * mx[i] + r[4] * my[i] + t[1];
+            double z = r[6] * mx[i] + r[7] * my[i] + t[2];
+            double u = intrinsics.fx() * x / z + intrinsics.cx() - corners[2 * i];
+            double v = intrinsics.fy() * y / z + intrinsics.cy() - corners[2 * i + 1];
+            sum += u * u + v * v;
+        }
+        return Math.sqrt(sum / 4);
+    }
+
+    private void remember(List<MarkerDetection> found) {
+        haveLast = !found.isEmpty();
+        if (!haveLast) {
+            return;
+        }
+        lastBounds[0] = lastBounds[1] = Double.POSITIVE_INFINITY;
+        lastBounds[2] = lastBounds[3] = Double.NEGATIVE_INFINITY;
+        for (MarkerDetection d : found) {
+            for (int i = 0; i < 4; i++) {
+                lastBounds[0] = Math.min(lastBounds[0], d.cornerX(i));
+                lastBounds[1] = Math.min(lastBounds[1], d.cornerY(i));
+                lastBounds[2] = Math.max(lastBounds[2], d.cornerX(i));
+                lastBounds[3] = Math.max(lastBounds[3], d.cornerY(i));
+            }
+        }
+    }
+}

@@ -1,0 +1,260 @@
+package org.skinlab.ar.synthetic;
+
+import java.util.List;
+import java.util.Random;
+
+import org.skinlab.ar.CameraIntrinsics;
+import org.skinlab.ar.GrayImage;
+import org.skinlab.ar.MarkerPattern;
+
+/**
+ * Renders printed markers into gray camera images of known pose: an ideal pinhole camera
+ * ({@link CameraIntrinsics}, pixel (i, j) centred at (i, j)), each pixel the mean of
+ * {@code supersampling^2} rays intersected with the markers' planes, then blur, lighting falloff
+ * and noise ({@link SceneOptions}). The ground truth for the tracker's tests and benchmark and for
+ * {@code skinlab ar-demo}: plain Java, deterministic for a seed.
+ *
+ * <p>What a ray sees: the first marker sheet it hits (the black square with its code, white paper
+ * 1.6 times the square's width around it, an occluder lying on it), else the background: a
+ * smooth texture with blocky detail and, with {@link SceneOptions#clutter()}, dark rectangles and
+ * squares with a random bit pattern inside a black border (marker-like, not codes of any
+ * dictionary by intent), drawn in image space.
+ */
+public final class SyntheticCamera {
+    /** Gray levels of printed black, paper white and an occluder (a thumb in gray). */
+    public static final int INK = 25;
+    public static final int PAPER = 230;
+    public static final int OCCLUDER = 150;
+    /** The paper sheet's width over the black square's. */
+    public static final double PAPER_SCALE = 1.6;
+
+    private final CameraIntrinsics camera;
+
+    public SyntheticCamera(CameraIntrinsics camera) {
+        this.camera = camera;
+    }
+
+    public CameraIntrinsics intrinsics() {
+        return camera;
+    }
+
+    /** One frame of {@code markers} (none: a negative frame) under {@code options}. */
+    public GrayImage render(List<PlacedMarker> markers, SceneOptions options) {
+        int w = camera.width();
+        int h = camera.height();
+        Random random = new Random(options.seed());
+        Background background = new Background(random, w, h, options.clutter());
+        double angle = random.nextDouble() * 2 * Math.PI;
+        double gx = Math.cos(angle), gy = Math.sin(angle);
+        double span = Math.abs(gx) * w + Math.abs(gy) * h;
+        double g0 = Math.min(0, gx * (w - 1)) + Math.min(0, gy * (h - 1));
+        Sheet[] sheets = new Sheet[markers.size()];
+        for (int i = 0; i < sheets.length; i++) {
+            sheets[i] = new Sheet(markers.get(i));
+        }
+        int n = options.supersampling();
+        float[] image = new float[w * h];
+        for (int y = 0; y < h; y++) {
+            for (int x = 0; x < w; x++) {
+                double sum = 0;
+                for (int sy = 0; sy < n; sy++) {
+                    double py = y + (sy + 0.5) / n - 0.5;
+                    double dy = (py - camera.cy()) / camera.fy();
+                    for (int sx = 0; sx < n; sx++) {
+                        double px = x + (sx + 0.5) / n - 0.5;
+                        double dx = (px - camera.cx()) / camera.fx();
+                        sum += sample(sheets, background, px, py, dx, dy);
+                    }
+                }
+                double light = 1 - options.gradient() * ((gx * x + gy * y - g0) / span);
+                image[y * w + x] = (float) (sum / (n * n) * light);
+            }
+        }
+        if (options.blurSigma() > 0) {
+            blur(image, w, h, options.blurSigma());
+        }
+        byte[] pixels = new byte[w * h];
+        for (int i = 0; i < pixels.length; i++) {
+            double v = image[i] + (options.noiseSigma() > 0 ? random.nextGaussian() * options.noiseSigma() : 0);
+            pixels[i] = (byte) Math.max(0, Math.min(255, Math.round(v)));
+        }
+        return new GrayImage(w, h, w, pixels);
+    }
+
+    /**
+     * Where the marker's corners (TL, TR, BR, BL of the black square) project, x0, y0, ..., x3, y3 in
+     * pixels: the ground truth of a detection's corners.
+     */
+    public double[] projectCorners(PlacedMarker marker) {
+        double r = marker.sizeMetres() / 2;
+        double[] mx = {-r, r, r, -r};
+        double[] my = {r, r, -r, -r};
+        double[] rot = marker.rotation();
+        double[] t = marker.translation();
+        double[] out = new double[8];
+        for (int i = 0; i < 4; i++) {
+            double x = rot[0] * mx[i] + rot[1] * my[i] + t[0];
+            double y = rot[3] * mx[i] + rot[4] * my[i] + t[1];
+            double z = rot[6] * mx[i] + rot[7] * my[i] + t[2];
+            out[2 * i] = camera.fx() * x / z + camera.cx();
+            out[2 * i + 1] = camera.fy() * y / z + camera.cy();
+        }
+        return out;
+    }
+
+    private static double sample(Sheet[] sheets, Background background, double px, double py, double dx, double dy) {
+        double nearest = Double.POSITIVE_INFINITY;
+        double value = -1;
+        for (Sheet s : sheets) {
+            double v = s.hit(dx, dy);
+            if (v >= 0 && s.depth < nearest) {
+                nearest = s.depth;
+                value = v;
+            }
+        }
+        return value >= 0 ? value : background.at(px, py);
+    }
+
+    /** One marker's plane: ray hits in its frame. Not thread-safe (keeps the last hit's depth). */
+    private static final class Sheet {
+        final MarkerPattern pattern;
+        final double[] r;
+        final double[] t;
+        final double nx, ny, nz, nt;
+        final double half, paperHalf;
+        final double ox, oy, or2;
+        double depth;
+
+        Sheet(PlacedMarker m) {
+            pattern = m.pattern();
+            r = m.rotation();
+            t = m.translation();
+            nx = r[2];
+            ny = r[5];
+            nz = r[8];
+            nt = nx * t[0] + ny * t[1] + nz * t[2];
+            half = m.sizeMetres() / 2;
+            paperHalf = half * PAPER_SCALE;
+            ox = m.occluderX();
+            oy = m.occluderY();
+            or2 = m.occluderRadius() * m.occluderRadius();
+        }
+
+        /** The gray level where the ray (dx, dy, 1) meets this sheet, or -1 when it misses. */
+        double hit(double dx, double dy) {
+            double nd = nx * dx + ny * dy + nz;
+            if (Math.abs(nd) < 1e-12) {
+                return -1;
+            }
+            double lambda = nt / nd;
+            if (!(lambda > 0)) {
+                return -1;
+            }
+            double px = lambda * dx - t[0], py = lambda * dy - t[1], pz = lambda - t[2];
+            // X_marker = R^T (X_cam - t)
+            double x = r[0] * px + r[3] * py + r[6] * pz;
+            double y = r[1] * px + r[4] * py + r[7] * pz;
+            if (Math.abs(x) > paperHalf || Math.abs(y) > paperHalf) {
+                return -1;
+            }
+            depth = lambda;
+            if (or2 > 0 && (x - ox) * (x - ox) + (y - oy) * (y - oy) <= or2) {
+                return OCCLUDER;
+            }
+            double u = (x + half) / (2 * half);
+            double v = (half - y) / (2 * half);
+            return pattern.isBlackAt(u, v) ? INK : PAPER;
+        }
+    }
+
+    /** The background: a seeded smooth texture with blocky detail, and clutter. */
+    private static final class Background {
+        final double p1, p2, p3;
+        final long salt;
+        /** Per item x0, y0, x1, y1, kind (0 dark box, 1 bit square). */
+        final double[] clutter;
+        /** Per item, the bit square's 36 bits. */
+        final long[] bits;
+        final int count;
+
+        Background(Random random, int w, int h, int count) {
+            p1 = random.nextDouble() * 6.28;
+            p2 = random.nextDouble() * 6.28;
+            p3 = random.nextDouble() * 6.28;
+            salt = random.nextLong();
+            this.count = count;
+            clutter = new double[5 * count];
+            bits = new long[count];
+            for (int i = 0; i < count; i++) {
+                double size = 24 + random.nextDouble() * Math.min(90, Math.min(w, h) / 4.0);
+                double aspect = random.nextBoolean() ? 1 : 0.4 + random.nextDouble();
+                double x0 = random.nextDouble() * (w - size);
+                double y0 = random.nextDouble() * (h - size * aspect);
+                clutter[5 * i] = x0;
+                clutter[5 * i + 1] = y0;
+                clutter[5 * i + 2] = x0 + size;
+                clutter[5 * i + 3] = y0 + size * aspect;
+                clutter[5 * i + 4] = aspect == 1 ? 1 : 0;
+                bits[i] = random.nextLong();
+            }
+        }
+
+        double at(double x, double y) {
+            for (int i = count - 1; i >= 0; i--) {
+                int o = 5 * i;
+                if (x >= clutter[o] && x < clutter[o + 2] && y >= clutter[o + 1] && y < clutter[o + 3]) {
+                    if (clutter[o + 4] == 0) {
+                        return 45;
+                    }
+                    // A black-bordered square of 8x8 cells whose inner 6x6 are random bits.
+                    int cx = (int) ((x - clutter[o]) / (clutter[o + 2] - clutter[o]) * 8);
+                    int cy = (int) ((y - clutter[o + 1]) / (clutter[o + 3] - clutter[o + 1]) * 8);
+                    if (cx == 0 || cy == 0 || cx == 7 || cy == 7) {
+                        return INK;
+                    }
+                    return (bits[i] >>> ((cy - 1) * 6 + cx - 1) & 1) == 0 ? INK : PAPER;
+                }
+            }
+            double smooth = 125 + 45 * Math.sin(0.031 * x + p1) * Math.sin(0.027 * y + p2)
+                    + 15 * Math.sin(0.11 * x + 0.07 * y + p3);
+            long block = ((long) Math.floor(x / 7) * 73856093L) ^ ((long) Math.floor(y / 7) * 19349663L) ^ salt;
+            block = block * 0x9E3779B97F4A7C15L;
+            return smooth + ((block >>> 40) & 31) - 16;
+        }
+    }
+
+    /** Separable Gaussian blur in place, edges clamped. */
+    private static void blur(float[] image, int w, int h, double sigma) {
+        int radius = (int) Math.ceil(3 * sigma);
+        float[] kernel = new float[2 * radius + 1];
+        double sum = 0;
+        for (int i = -radius; i <= radius; i++) {
+            kernel[i + radius] = (float) Math.exp(-i * i / (2 * sigma * sigma));
+            sum += kernel[i + radius];
+        }
+        for (int i = 0; i < kernel.length; i++) {
+            kernel[i] /= (float) sum;
+        }
+        float[] tmp = new float[image.length];
+        for (int y = 0; y < h; y++) {
+            for (int x = 0; x < w; x++) {
+                float s = 0;
+                for (int k = -radius; k <= radius; k++) {
+                    int xx = Math.min(w - 1, Math.max(0, x + k));
+                    s += kernel[k + radius] * image[y * w + xx];
+                }
+                tmp[y * w + x] = s;
+            }
+        }
+        for (int y = 0; y < h; y++) {
+            for (int x = 0; x < w; x++) {
+                float s = 0;
+                for (int k = -radius; k <= radius; k++) {
+                    int yy = Math.min(h - 1, Math.max(0, y + k));
+                    s += kernel[k + radius] * tmp[yy * w + x];
+                }
+                image[y * w + x] = s;
+            }
+        }
+    }
+}
