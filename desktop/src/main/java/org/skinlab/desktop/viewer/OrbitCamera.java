@@ -3,6 +3,8 @@ package org.skinlab.desktop.viewer;
 import org.joml.Matrix4f;
 import org.joml.Vector3f;
 
+import org.skinlab.scene.ModelFraming;
+
 /**
  * A camera orbiting a target: yaw and pitch around it at a distance, Y up. Dragging orbits,
  * scrolling zooms by a factor per step, and {@link #frame} puts a model's bounding sphere in view

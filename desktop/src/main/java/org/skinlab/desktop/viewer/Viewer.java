@@ -15,6 +15,7 @@ import org.skinlab.collada.ColladaException;
 import org.skinlab.collada.ColladaImporter;
 import org.skinlab.desktop.render.DrawSettings;
 import org.skinlab.model.Model;
+import org.skinlab.scene.ModelFraming;
 import org.skinlab.simulation.AnimationConfig;
 import org.skinlab.simulation.Frame;
 import org.skinlab.simulation.SkeletalAnimatedMesh;

@@ -1,4 +1,4 @@
-package org.skinlab.desktop.viewer;
+package org.skinlab.scene;
 
 import java.util.List;
 

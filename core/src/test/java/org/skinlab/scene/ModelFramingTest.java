@@ -1,4 +1,4 @@
-package org.skinlab.desktop.viewer;
+package org.skinlab.scene;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -11,11 +11,12 @@ import org.skinlab.model.Model;
 import org.skinlab.model.UpAxis;
 import org.skinlab.simulation.Frame;
 import org.skinlab.simulation.SkeletalAnimatedMesh;
+import org.skinlab.testing.TestPaths;
 
 /** Every file stands upright, on the floor, at its size in metres. */
 class ModelFramingTest {
     private static ModelFraming framing(String asset) throws Exception {
-        Model model = ColladaImporter.read(ModelLibrary.find().defaultModel().getParent().getParent().resolve(asset));
+        Model model = ColladaImporter.read(TestPaths.asset(asset));
         try (SkeletalAnimatedMesh mesh = SkeletalAnimatedMesh.of(model)) {
             mesh.step(0);
             try (Frame f = mesh.acquire()) {
@@ -27,7 +28,7 @@ class ModelFramingTest {
     @Test
     void theHumanoidStandsUprightOnTheFloor() throws Exception {
         // A Z-up Blender file (assets/README.md: about 1.81 m tall, feet on z = 0).
-        Model model = ColladaImporter.read(ModelLibrary.find().defaultModel());
+        Model model = ColladaImporter.read(TestPaths.asset("characters/humanoid-walk.dae"));
         assertEquals(UpAxis.Z_UP, model.asset().upAxis());
         ModelFraming f = framing("characters/humanoid-walk.dae");
         assertEquals(1.81, f.height(), 0.1);
