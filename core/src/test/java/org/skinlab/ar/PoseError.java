@@ -6,13 +6,7 @@ final class PoseError {
     }
 
     static double rotationDegrees(double[] a, double[] b) {
-        double trace = 0;
-        for (int i = 0; i < 3; i++) {
-            for (int k = 0; k < 3; k++) {
-                trace += a[3 * k + i] * b[3 * k + i];
-            }
-        }
-        return Math.toDegrees(Math.acos(Math.max(-1, Math.min(1, (trace - 1) / 2))));
+        return PoseMath.angleDegrees(a, b);
     }
 
     static double distance(double[] a, double[] b) {

@@ -1,0 +1,51 @@
+package org.skinlab.ar;
+
+/**
+ * What the renderer reads each frame: one consistent, immutable result of one camera frame's
+ * tracking ({@link ArSession#current()}). The arrays are copies nobody else writes.
+ *
+ * @param state          tracking state (the model is drawn when {@link TrackingState#showsModel()})
+ * @param rotation       the filtered marker pose R (row-major; {@code X_cam = R X_marker + t})
+ * @param translation    the filtered t in metres
+ * @param markers        how many markers the frame's detector reported
+ * @param trackerMillis  the detector's time on this frame
+ * @param timeNanos      the camera frame's timestamp
+ * @param frameNumber    1 for the first frame tracked, counting up
+ */
+public record ArPose(TrackingState state, double[] rotation, double[] translation, int markers, double trackerMillis,
+        long timeNanos, long frameNumber) {
+
+    /** Before the first frame. */
+    public static final ArPose NONE = new ArPose(TrackingState.SEARCHING, new double[] {1, 0, 0, 0, -1, 0, 0, 0, -1},
+            new double[] {0, 0, 1}, 0, 0, 0, 0);
+
+    public ArPose {
+        rotation = rotation.clone();
+        translation = translation.clone();
+    }
+
+    @Override
+    public double[] rotation() {
+        return rotation.clone();
+    }
+
+    @Override
+    public double[] translation() {
+        return translation.clone();
+    }
+
+    /** Whether the model is drawn. */
+    public boolean visible() {
+        return state.showsModel();
+    }
+
+    /** The marker's OpenGL model-view ({@link ArCamera#markerModelView}) into {@code dest}. */
+    public org.joml.Matrix4f markerModelView(org.joml.Matrix4f dest) {
+        return ArCamera.markerModelView(rotation, translation, dest);
+    }
+
+    /** The yaw that faces the camera from this pose ({@link CameraFollow#yawTowardCamera}). */
+    public double yawTowardCamera(double fallback) {
+        return CameraFollow.yawTowardCamera(rotation, translation, fallback);
+    }
+}

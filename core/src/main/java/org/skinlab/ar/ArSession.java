@@ -1,0 +1,72 @@
+package org.skinlab.ar;
+
+import java.util.List;
+import java.util.Objects;
+import java.util.concurrent.atomic.AtomicReference;
+import java.util.function.Function;
+
+/**
+ * The AR pipeline between a camera and a renderer, safe across their threads: the camera's (or a
+ * tracking) thread calls {@link #onCameraFrame} with each gray frame, which runs the detector (for
+ * example {@link FiducialTracker#track}) and {@link MarkerTracking}, and publishes an immutable
+ * {@link ArPose}; the render thread reads the latest with {@link #current()}, one volatile read, so
+ * it never sees half of one frame's pose and half of another's.
+ *
+ * <p>Frames must come from one thread at a time (the detector and the tracking keep state); a
+ * second caller is refused rather than silently interleaved.
+ */
+public final class ArSession {
+    private final Function<GrayImage, List<MarkerDetection>> detector;
+    private final MarkerTracking tracking;
+    private final double[] rotation = new double[9];
+    private final double[] translation = new double[3];
+    private volatile ArPose current = ArPose.NONE;
+    private final AtomicReference<Thread> feeder = new AtomicReference<>();
+    private long frames;
+
+    public ArSession(Function<GrayImage, List<MarkerDetection>> detector, MarkerTracking tracking) {
+        this.detector = Objects.requireNonNull(detector, "detector");
+        this.tracking = Objects.requireNonNull(tracking, "tracking");
+    }
+
+    /** A session over a tracker's video search and the default tracking (any id, 0.5 s hold). */
+    public static ArSession of(FiducialTracker tracker) {
+        return new ArSession(tracker::track, new MarkerTracking(tracker.config().targetId(),
+                MarkerTracking.DEFAULT_HOLD_NANOS));
+    }
+
+    /** Tracks one camera frame taken at {@code timeNanos} and publishes the result, which it returns. */
+    public ArPose onCameraFrame(GrayImage image, long timeNanos) {
+        Thread me = Thread.currentThread();
+        Thread owner = feeder.compareAndExchange(null, me);
+        if (owner != null && owner != me) {
+            throw new IllegalStateException("camera frames from " + me.getName() + " while " + owner.getName()
+                    + " feeds this session; call release() between feeders");
+        }
+        long start = System.nanoTime();
+        List<MarkerDetection> found = detector.apply(image);
+        double millis = (System.nanoTime() - start) * 1e-6;
+        TrackingState state = tracking.update(timeNanos, found);
+        tracking.rotation(rotation);
+        tracking.translation(translation);
+        ArPose pose = new ArPose(state, rotation, translation, found.size(), millis, timeNanos, ++frames);
+        current = pose;
+        return pose;
+    }
+
+    /** The latest published pose; from any thread. */
+    public ArPose current() {
+        return current;
+    }
+
+    /**
+     * Lets another thread feed frames (the camera was closed and reopened on a new thread), and
+     * starts the tracking over: the next pose restarts the filter. Call it once the last feeder has
+     * stopped (its last {@link #onCameraFrame} returned).
+     */
+    public void release() {
+        feeder.set(null);
+        tracking.reset();
+        current = ArPose.NONE;
+    }
+}

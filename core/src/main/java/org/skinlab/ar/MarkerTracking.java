@@ -1,0 +1,147 @@
+package org.skinlab.ar;
+
+import java.util.List;
+
+/**
+ * One marker followed over the frames of a video: which detection is the marker, its filtered pose
+ * ({@link PoseFilter}), and the {@link TrackingState} the presenter shows. Fed once per frame by
+ * the tracking thread; not thread-safe ({@link ArSession} publishes its results).
+ *
+ * <ul>
+ * <li>The marker is the detection of the target id, or with id -1 the nearest one.</li>
+ * <li>Missing from a frame, the last pose is held for {@link #holdNanos()} (state HOLDING), then
+ *     the model is hidden (LOST); found again, the filter restarts at the new pose.</li>
+ * <li><b>The planar ambiguity.</b> A square seen nearly face-on has two poses that explain its
+ *     corners almost equally well, mirror images about the line of sight; from one frame to the
+ *     next the estimator may pick the other, a jump of tens of degrees. A rotation more than
+ *     {@link #FLIP_DEGREES} away from the filtered one is therefore not believed at once: the
+ *     position is updated, the rotation kept, until {@link #FLIP_FRAMES} frames in a row agree
+ *     (within {@link #FLIP_DEGREES} of each other) on the new rotation, which is then taken as
+ *     it is. A real fast turn costs those frames of lag; a flip of a frame or two never shows.</li>
+ * </ul>
+ */
+public final class MarkerTracking {
+    /** How long the last pose is held after the marker disappears, unless told otherwise. */
+    public static final long DEFAULT_HOLD_NANOS = 500_000_000L;
+    /** A rotation jump beyond this (degrees) between frames is not believed at once. */
+    public static final double FLIP_DEGREES = 25;
+    /** Frames a jumped-to rotation must persist before it is taken. */
+    public static final int FLIP_FRAMES = 3;
+
+    private final int targetId;
+    private final long holdNanos;
+    private final PoseFilter filter = new PoseFilter();
+    private final double[] rotation = new double[9];
+    private final double[] translation = new double[3];
+    private final double[] candidate = new double[9];
+    private int candidateFrames;
+    private TrackingState state = TrackingState.SEARCHING;
+    private long lastSeenNanos;
+    private MarkerDetection last;
+
+    /**
+     * @param targetId  the marker's id, or -1 for the nearest marker of any id
+     * @param holdNanos how long a lost marker's pose is held
+     */
+    public MarkerTracking(int targetId, long holdNanos) {
+        if (holdNanos < 0) {
+            throw new IllegalArgumentException("hold time must not be negative: " + holdNanos);
+        }
+        this.targetId = targetId;
+        this.holdNanos = holdNanos;
+    }
+
+    /** Any id, the default hold. */
+    public MarkerTracking() {
+        this(-1, DEFAULT_HOLD_NANOS);
+    }
+
+    public long holdNanos() {
+        return holdNanos;
+    }
+
+    /** One frame's detections (possibly none), taken at {@code timeNanos}; returns the new state. */
+    public TrackingState update(long timeNanos, List<MarkerDetection> detections) {
+        MarkerDetection d = pick(detections);
+        if (d == null) {
+            if (state == TrackingState.TRACKING || state == TrackingState.HOLDING) {
+                state = timeNanos - lastSeenNanos < holdNanos ? TrackingState.HOLDING : TrackingState.LOST;
+            }
+            return state;
+        }
+        if (!state.showsModel()) {
+            filter.reset();
+            candidateFrames = 0;
+        }
+        double[] r = d.rotation();
+        if (state.showsModel() && PoseMath.angleDegrees(rotation, r) > FLIP_DEGREES) {
+            // A jump: believed only once it persists.
+            if (candidateFrames > 0 && PoseMath.angleDegrees(candidate, r) <= FLIP_DEGREES) {
+                candidateFrames++;
+            } else {
+                candidateFrames = 1;
+            }
+            System.arraycopy(r, 0, candidate, 0, 9);
+            if (candidateFrames >= FLIP_FRAMES) {
+                filter.reset();
+                candidateFrames = 0;
+            } else {
+                // The filter holds this rotation: fed itself, it stays.
+                filter.update(rotation, d.translation(), timeNanos, rotation, translation);
+                lastSeenNanos = timeNanos;
+                last = d;
+                state = TrackingState.TRACKING;
+                return state;
+            }
+        } else {
+            candidateFrames = 0;
+        }
+        filter.update(r, d.translation(), timeNanos, rotation, translation);
+        lastSeenNanos = timeNanos;
+        last = d;
+        state = TrackingState.TRACKING;
+        return state;
+    }
+
+    public TrackingState state() {
+        return state;
+    }
+
+    /** The filtered rotation (row-major) into {@code dest}; meaningful while {@link TrackingState#showsModel()}. */
+    public double[] rotation(double[] dest) {
+        System.arraycopy(rotation, 0, dest, 0, 9);
+        return dest;
+    }
+
+    /** The filtered translation into {@code dest}. */
+    public double[] translation(double[] dest) {
+        System.arraycopy(translation, 0, dest, 0, 3);
+        return dest;
+    }
+
+    /** The last detection used (unfiltered), or null before the first. */
+    public MarkerDetection lastDetection() {
+        return last;
+    }
+
+    /** Back to SEARCHING (a new video, the camera reopened). */
+    public void reset() {
+        state = TrackingState.SEARCHING;
+        filter.reset();
+        candidateFrames = 0;
+        last = null;
+    }
+
+    private MarkerDetection pick(List<MarkerDetection> detections) {
+        MarkerDetection best = null;
+        for (MarkerDetection d : detections) {
+            if (targetId >= 0 && d.id() != targetId) {
+                continue;
+            }
+            if (best == null || d.distance() < best.distance()) {
+                best = d;
+            }
+        }
+        return best;
+    }
+}
