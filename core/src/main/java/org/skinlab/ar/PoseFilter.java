@@ -10,12 +10,13 @@ import org.joml.Quaterniond;
  * measurement by the filter's factor along the shorter arc (nlerp of quaternions in one
  * hemisphere, so a measurement's sign flip q = -q never spins the model).
  *
- * <p>Defaults, for a 10 cm marker at 0.3-1.5 m: position minCutoff 1.5 Hz, beta 20 per m/s, rotation
- * minCutoff 1.5 Hz, beta 1.5 per rad/s, speed cutoffs 1 Hz. Still, at 30 frames per second, the
- * alpha of 1.5 Hz is 0.24: noise is averaged over about 7 frames (its standard deviation drops
- * about 2.5-3x for white noise; more for the slow tremor of a hand). Moving at 0.3 m/s, the cutoff
- * rises to 7.5 Hz (alpha 0.61): the lag of a first-order filter, {@code 1 / (2 pi fc)}, falls from
- * 106 ms at rest to 21 ms. Not thread-safe; allocation-free per update.
+ * <p>Defaults, for a 10 cm marker at 0.3-1.5 m: position minCutoff 1 Hz, beta 20 per m/s, rotation
+ * minCutoff 1 Hz, beta 1.5 per rad/s, speed cutoffs 1 Hz. Still, at 30 frames per second, the
+ * alpha of 1 Hz is 0.17: white noise's standard deviation drops by {@code sqrt((2 - a) / a)} =
+ * 3.2x (measured 2.9x: the noise's own speed raises the cutoff a little, PoseFilterTest). Moving
+ * at 0.3 m/s, the cutoff
+ * rises to 7 Hz: the lag of a first-order filter, {@code 1 / (2 pi fc)}, falls from 159 ms at rest
+ * to 23 ms. Not thread-safe; allocation-free per update.
  */
 public final class PoseFilter {
     private final OneEuroFilter x;
@@ -45,7 +46,7 @@ public final class PoseFilter {
 
     /** The defaults above. */
     public PoseFilter() {
-        this(1.5, 20, 1.5, 1.5);
+        this(1.0, 20, 1.0, 1.5);
     }
 
     /**
