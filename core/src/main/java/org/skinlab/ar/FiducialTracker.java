@@ -58,6 +58,7 @@ public final class FiducialTracker {
     /** The last frame's markers' bounds in pixels (x0, y0, x1, y1), or empty. */
     private final double[] lastBounds = new double[4];
     private boolean haveLast;
+    private boolean lastFromRegion;
     private int framesSinceFullSearch;
 
     public FiducialTracker(TrackerConfig config, CameraIntrinsics intrinsics) {
@@ -93,6 +94,7 @@ public final class FiducialTracker {
         search(frame, 0, 0, found);
         remember(found);
         framesSinceFullSearch = 0;
+        lastFromRegion = false;
         return found;
     }
 
@@ -123,7 +125,16 @@ public final class FiducialTracker {
         }
         remember(found);
         framesSinceFullSearch++;
+        lastFromRegion = true;
         return found;
+    }
+
+    /**
+     * Whether the last call found its markers in the region around the previous frame's, without a
+     * whole-frame search ({@link #track}'s fast path; the benchmark reports how often).
+     */
+    public boolean lastFoundInRegion() {
+        return lastFromRegion;
     }
 
     /** Forgets the last frame (a cut in the video, a new camera). */

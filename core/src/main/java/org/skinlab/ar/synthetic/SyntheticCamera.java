@@ -54,7 +54,8 @@ public final class SyntheticCamera {
         }
         int n = options.supersampling();
         float[] image = new float[w * h];
-        for (int y = 0; y < h; y++) {
+        // Rows in parallel: a frame is millions of rays, and nothing below is shared but read.
+        java.util.stream.IntStream.range(0, h).parallel().forEach(y -> {
             for (int x = 0; x < w; x++) {
                 double sum = 0;
                 for (int sy = 0; sy < n; sy++) {
@@ -69,7 +70,7 @@ public final class SyntheticCamera {
                 double light = 1 - options.gradient() * ((gx * x + gy * y - g0) / span);
                 image[y * w + x] = (float) (sum / (n * n) * light);
             }
-        }
+        });
         if (options.blurSigma() > 0) {
             blur(image, w, h, options.blurSigma());
         }
@@ -104,18 +105,18 @@ public final class SyntheticCamera {
 
     private static double sample(Sheet[] sheets, Background background, double px, double py, double dx, double dy) {
         double nearest = Double.POSITIVE_INFINITY;
-        double value = -1;
+        Sheet hit = null;
         for (Sheet s : sheets) {
-            double v = s.hit(dx, dy);
-            if (v >= 0 && s.depth < nearest) {
-                nearest = s.depth;
-                value = v;
+            double depth = s.depth(dx, dy);
+            if (depth < nearest) {
+                nearest = depth;
+                hit = s;
             }
         }
-        return value >= 0 ? value : background.at(px, py);
+        return hit != null ? hit.value(dx, dy, nearest) : background.at(px, py);
     }
 
-    /** One marker's plane: ray hits in its frame. Not thread-safe (keeps the last hit's depth). */
+    /** One marker's plane: where rays meet it, in its frame. Immutable, shared by the rendering threads. */
     private static final class Sheet {
         final MarkerPattern pattern;
         final double[] r;
@@ -123,7 +124,6 @@ public final class SyntheticCamera {
         final double nx, ny, nz, nt;
         final double half, paperHalf;
         final double ox, oy, or2;
-        double depth;
 
         Sheet(PlacedMarker m) {
             pattern = m.pattern();
@@ -140,24 +140,28 @@ public final class SyntheticCamera {
             or2 = m.occluderRadius() * m.occluderRadius();
         }
 
-        /** The gray level where the ray (dx, dy, 1) meets this sheet, or -1 when it misses. */
-        double hit(double dx, double dy) {
+        /** The depth at which the ray (dx, dy, 1) meets the paper, or +infinity when it misses. */
+        double depth(double dx, double dy) {
             double nd = nx * dx + ny * dy + nz;
             if (Math.abs(nd) < 1e-12) {
-                return -1;
+                return Double.POSITIVE_INFINITY;
             }
             double lambda = nt / nd;
             if (!(lambda > 0)) {
-                return -1;
+                return Double.POSITIVE_INFINITY;
             }
+            double px = lambda * dx - t[0], py = lambda * dy - t[1], pz = lambda - t[2];
+            double x = r[0] * px + r[3] * py + r[6] * pz;
+            double y = r[1] * px + r[4] * py + r[7] * pz;
+            return Math.abs(x) > paperHalf || Math.abs(y) > paperHalf ? Double.POSITIVE_INFINITY : lambda;
+        }
+
+        /** The gray level where the ray meets the paper at {@code lambda}. */
+        double value(double dx, double dy, double lambda) {
             double px = lambda * dx - t[0], py = lambda * dy - t[1], pz = lambda - t[2];
             // X_marker = R^T (X_cam - t)
             double x = r[0] * px + r[3] * py + r[6] * pz;
             double y = r[1] * px + r[4] * py + r[7] * pz;
-            if (Math.abs(x) > paperHalf || Math.abs(y) > paperHalf) {
-                return -1;
-            }
-            depth = lambda;
             if (or2 > 0 && (x - ox) * (x - ox) + (y - oy) * (y - oy) <= or2) {
                 return OCCLUDER;
             }
