@@ -11,7 +11,7 @@ import picocli.CommandLine.Command;
         description = "Skeletal animation lab: view COLLADA characters skinned with LBS and DQS (no subcommand: the window "
                 + "on the default character), inspect them, pose them, benchmark.",
         subcommands = {ViewCommand.class, CheckGpuCommand.class, RenderBenchCommand.class, CompareCommand.class,
-                InspectCommand.class, PoseCommand.class, BenchCommand.class,
+                InspectCommand.class, PoseCommand.class, BenchCommand.class, TrackCommand.class,
                 CommandLine.HelpCommand.class})
 public final class SkinlabCommand implements Runnable {
     @CommandLine.Spec

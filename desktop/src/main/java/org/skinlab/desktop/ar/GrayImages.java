@@ -1,0 +1,88 @@
+package org.skinlab.desktop.ar;
+
+import java.awt.image.BufferedImage;
+import java.awt.image.DataBufferByte;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Locale;
+import java.util.stream.Collectors;
+import java.util.stream.Stream;
+
+import javax.imageio.ImageIO;
+
+import org.skinlab.ar.GrayImage;
+
+/** Camera frames from files on the desktop (ImageIO: PNG, JPEG, BMP, GIF) as gray images, and back. */
+public final class GrayImages {
+    private GrayImages() {
+    }
+
+    /** The image files of a folder (png, jpg, jpeg, bmp), in name order; an error when there are none. */
+    public static List<Path> list(Path dir) throws IOException {
+        if (!Files.isDirectory(dir)) {
+            throw new IllegalArgumentException(dir + ": not a folder");
+        }
+        List<Path> files;
+        try (Stream<Path> s = Files.list(dir)) {
+            files = s.filter(p -> {
+                String n = p.getFileName().toString().toLowerCase(Locale.ROOT);
+                return Files.isRegularFile(p) && (n.endsWith(".png") || n.endsWith(".jpg") || n.endsWith(".jpeg")
+                        || n.endsWith(".bmp"));
+            }).sorted().collect(Collectors.toList());
+        }
+        if (files.isEmpty()) {
+            throw new IllegalArgumentException(dir + ": no images (.png, .jpg, .jpeg, .bmp)");
+        }
+        return files;
+    }
+
+    /** An image file's luminance (Rec. 601 weights); IllegalArgumentException naming the file when unreadable. */
+    public static GrayImage read(Path file) throws IOException {
+        BufferedImage image = ImageIO.read(file.toFile());
+        if (image == null) {
+            throw new IllegalArgumentException(file + ": not an image ImageIO can read");
+        }
+        return of(image);
+    }
+
+    /** The luminance of a decoded image. */
+    public static GrayImage of(BufferedImage image) {
+        int w = image.getWidth();
+        int h = image.getHeight();
+        byte[] pixels = new byte[w * h];
+        if (image.getType() == BufferedImage.TYPE_BYTE_GRAY) {
+            byte[] data = ((DataBufferByte) image.getRaster().getDataBuffer()).getData();
+            System.arraycopy(data, 0, pixels, 0, pixels.length);
+        } else {
+            int[] row = new int[w];
+            for (int y = 0; y < h; y++) {
+                image.getRGB(0, y, w, 1, row, 0, w);
+                for (int x = 0; x < w; x++) {
+                    int c = row[x];
+                    int r = c >> 16 & 0xFF, g = c >> 8 & 0xFF, b = c & 0xFF;
+                    pixels[y * w + x] = (byte) ((299 * r + 587 * g + 114 * b + 500) / 1000);
+                }
+            }
+        }
+        return new GrayImage(w, h, w, pixels);
+    }
+
+    /** A gray image as an 8-bit gray BufferedImage (for PNG files). */
+    public static BufferedImage toBufferedImage(GrayImage g) {
+        BufferedImage image = new BufferedImage(g.width(), g.height(), BufferedImage.TYPE_BYTE_GRAY);
+        byte[] data = ((DataBufferByte) image.getRaster().getDataBuffer()).getData();
+        for (int y = 0; y < g.height(); y++) {
+            System.arraycopy(g.pixels(), y * g.rowStride(), data, y * g.width(), g.width());
+        }
+        return image;
+    }
+
+    /** Writes a gray image as PNG. */
+    public static void writePng(GrayImage g, Path file) throws IOException {
+        if (!ImageIO.write(toBufferedImage(g), "png", file.toFile())) {
+            throw new IOException(file + ": no PNG writer");
+        }
+    }
+}
