@@ -44,7 +44,7 @@ import georegression.struct.shapes.Quadrilateral_F64;
  */
 public final class FiducialTracker {
     /** In {@link #track}, a whole-frame search at least this often (frames). */
-    public static final int FULL_FRAME_EVERY = 15;
+    public static final int FULL_FRAME_EVERY = 30;
     /** A search region is given up for the whole frame when it covers more than this share of it. */
     private static final double REGION_LIMIT = 0.5;
 
