@@ -23,12 +23,8 @@ import georegression.struct.se.Se3_F64;
 import org.skinlab.ar.CameraIntrinsics;
 import org.skinlab.ar.FiducialTracker;
 import org.skinlab.ar.GrayImage;
-import org.skinlab.ar.MarkerDictionary;
-import org.skinlab.ar.MarkerPattern;
 import org.skinlab.ar.TrackerConfig;
-import org.skinlab.ar.synthetic.PlacedMarker;
-import org.skinlab.ar.synthetic.SceneOptions;
-import org.skinlab.ar.synthetic.SyntheticCamera;
+import org.skinlab.desktop.ar.DemoVideo;
 
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
@@ -36,8 +32,9 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 
 /**
- * {@code skinlab bench track}: milliseconds per 640x480 frame of a synthetic video (a 10 cm marker
- * moving between 0.5 and 1.2 m, tilting and turning, with blur, noise, falloff and some clutter),
+ * {@code skinlab bench track}: milliseconds per 640x480 frame of the synthetic video of
+ * {@link DemoVideo} (a 10 cm marker 0.35-0.75 m away, seen from 20-50 degrees, with blur, noise,
+ * falloff and some clutter),
  * for BoofCV's squareHamming detector with its default settings (detection and its pose per
  * marker), our {@link FiducialTracker#detect} (whole frame) and {@link FiducialTracker#track} (near
  * the last marker first). Rounds alternate between the three; the report gives each one's median
@@ -67,7 +64,11 @@ public final class TrackBenchCommand implements Callable<Integer> {
             throw new CommandFailure(ExitCodes.USAGE, "need --frames >= 2 and positive times", null);
         }
         CameraIntrinsics k = CameraIntrinsics.fromHorizontalFov(640, 480, 60);
-        List<GrayImage> video = video(k, frames);
+        DemoVideo demo = new DemoVideo(k, frames);
+        List<GrayImage> video = new ArrayList<>(frames);
+        for (int i = 0; i < frames; i++) {
+            video.add(demo.frame(i));
+        }
         TrackerConfig config = TrackerConfig.defaults(0.1);
         FiducialTracker ours = new FiducialTracker(config, k);
         FiducialDetector<GrayU8> boof = FactoryFiducial.squareHamming(
@@ -159,21 +160,5 @@ public final class TrackBenchCommand implements Callable<Integer> {
         }
         out.flush();
         return ExitCodes.OK;
-    }
-
-    /** A marker moving, tilting and turning in front of the camera; clutter on one frame in four. */
-    static List<GrayImage> video(CameraIntrinsics k, int frames) {
-        SyntheticCamera camera = new SyntheticCamera(k);
-        MarkerPattern pattern = MarkerPattern.of(MarkerDictionary.DEFAULT, 0);
-        List<GrayImage> video = new ArrayList<>(frames);
-        for (int i = 0; i < frames; i++) {
-            double s = i / (double) frames;
-            double a = 2 * Math.PI * s;
-            double[] r = PlacedMarker.facingCamera(30 + 20 * Math.sin(a), 15 * Math.cos(a), 60 * s);
-            double[] t = {0.15 * Math.sin(a), 0.06 * Math.cos(2 * a), 0.85 + 0.35 * Math.sin(a + 1)};
-            SceneOptions options = SceneOptions.camera(i).withClutter(i % 4 == 0 ? 6 : 0);
-            video.add(camera.render(List.of(PlacedMarker.of(pattern, 0.1, r, t)), options));
-        }
-        return video;
     }
 }

@@ -1,0 +1,58 @@
+package org.skinlab.desktop.ar;
+
+import java.util.List;
+
+import org.skinlab.ar.CameraIntrinsics;
+import org.skinlab.ar.GrayImage;
+import org.skinlab.ar.MarkerDictionary;
+import org.skinlab.ar.MarkerPattern;
+import org.skinlab.ar.synthetic.PlacedMarker;
+import org.skinlab.ar.synthetic.SceneOptions;
+import org.skinlab.ar.synthetic.SyntheticCamera;
+
+/**
+ * A synthetic camera video of the default printed marker (id 0, 10 cm) on a desk: one loop of a
+ * hand-held camera circling it between 0.35 and 0.75 m, looking down at 20-50 degrees, turning
+ * about it by 60 degrees, with a phone camera's blur, noise and uneven light, and some clutter on
+ * one frame in four. {@code skinlab ar-demo} writes it to files so that {@code skinlab ar} runs
+ * anywhere; {@code skinlab bench track} times the tracker on it.
+ */
+public final class DemoVideo {
+    /** The printed marker's width in the video. */
+    public static final double MARKER_METRES = 0.10;
+
+    private final SyntheticCamera camera;
+    private final MarkerPattern pattern = MarkerPattern.of(MarkerDictionary.DEFAULT, 0);
+    private final int frames;
+
+    public DemoVideo(CameraIntrinsics intrinsics, int frames) {
+        if (frames < 2) {
+            throw new IllegalArgumentException("a video needs at least 2 frames: " + frames);
+        }
+        this.camera = new SyntheticCamera(intrinsics);
+        this.frames = frames;
+    }
+
+    public int frames() {
+        return frames;
+    }
+
+    public CameraIntrinsics intrinsics() {
+        return camera.intrinsics();
+    }
+
+    /** Where the marker is in frame {@code i}: the ground truth. */
+    public PlacedMarker marker(int i) {
+        double s = i / (double) frames;
+        double a = 2 * Math.PI * s;
+        double[] r = PlacedMarker.facingCamera(35 + 15 * Math.sin(a), 15 * Math.cos(a), 60 * s);
+        double[] t = {0.09 * Math.sin(a), 0.04 * Math.cos(2 * a), 0.55 + 0.2 * Math.sin(a + 1)};
+        return PlacedMarker.of(pattern, MARKER_METRES, r, t);
+    }
+
+    /** Frame {@code i}'s image. */
+    public GrayImage frame(int i) {
+        SceneOptions options = SceneOptions.camera(i).withClutter(i % 4 == 0 ? 6 : 0);
+        return camera.render(List.of(marker(i)), options);
+    }
+}
