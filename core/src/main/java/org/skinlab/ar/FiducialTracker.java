@@ -31,9 +31,10 @@ import georegression.struct.shapes.Quadrilateral_F64;
  * Hamming distance away from a code (12 of 36 bits for 36h12), which reads codes into clutter, into
  * other dictionaries' markers and into AprilTags; {@link TrackerConfig#maxBitErrors()} caps it.
  *
- * <p><b>Video.</b> {@link #track} first looks at the image region around the markers of the last
- * frame (enlarged by half their size, at least 24 px: a marker moving that far between frames is
- * found by the whole-frame pass that follows a miss) and only then at the whole frame; every
+ * <p><b>Video.</b> {@link #track} first looks at the image region where the markers of the last
+ * frame should be now (their bounds moved as between the last two frames, enlarged by a quarter of
+ * their size plus that motion, at least 24 px; a marker that jumps farther is found by the
+ * whole-frame pass that follows a miss) and only then at the whole frame; every
  * {@link #FULL_FRAME_EVERY}th frame it looks at the whole frame anyway, so that markers coming into
  * view are found. {@link #detect} always looks at the whole frame.
  *
@@ -57,6 +58,9 @@ public final class FiducialTracker {
     private final GrayU8 region = new GrayU8(1, 1);
     /** The last frame's markers' bounds in pixels (x0, y0, x1, y1), or empty. */
     private final double[] lastBounds = new double[4];
+    /** How far the bounds' centre moved from the frame before (pixels), 0 after a whole-frame search gap. */
+    private double motionX;
+    private double motionY;
     private boolean haveLast;
     private boolean lastFromRegion;
     private int framesSinceFullSearch;
@@ -109,11 +113,16 @@ public final class FiducialTracker {
         wrap(image);
         double w = lastBounds[2] - lastBounds[0];
         double h = lastBounds[3] - lastBounds[1];
-        double margin = Math.max(24, 0.5 * Math.max(w, h));
-        int x0 = (int) Math.max(0, Math.floor(lastBounds[0] - margin));
-        int y0 = (int) Math.max(0, Math.floor(lastBounds[1] - margin));
-        int x1 = (int) Math.min(image.width(), Math.ceil(lastBounds[2] + margin));
-        int y1 = (int) Math.min(image.height(), Math.ceil(lastBounds[3] + margin));
+        // Where the markers should be now if they keep moving as between the last two frames, with
+        // room for a quarter of their size (turning, coming closer) and for the motion doubling.
+        double margin = Math.max(24, 0.25 * Math.max(w, h) + Math.hypot(motionX, motionY));
+        int x0 = (int) Math.max(0, Math.floor(lastBounds[0] + motionX - margin));
+        int y0 = (int) Math.max(0, Math.floor(lastBounds[1] + motionY - margin));
+        int x1 = (int) Math.min(image.width(), Math.ceil(lastBounds[2] + motionX + margin));
+        int y1 = (int) Math.min(image.height(), Math.ceil(lastBounds[3] + motionY + margin));
+        if (x1 - x0 < 16 || y1 - y0 < 16) {
+            return detect(image);
+        }
         if ((double) (x1 - x0) * (y1 - y0) > REGION_LIMIT * image.width() * image.height()) {
             return detect(image);
         }
@@ -140,6 +149,7 @@ public final class FiducialTracker {
     /** Forgets the last frame (a cut in the video, a new camera). */
     public void reset() {
         haveLast = false;
+        motionX = motionY = 0;
         framesSinceFullSearch = 0;
     }
 
@@ -206,8 +216,12 @@ public final class FiducialTracker {
     }
 
     private void remember(List<MarkerDetection> found) {
+        boolean had = haveLast;
+        double oldX = (lastBounds[0] + lastBounds[2]) / 2;
+        double oldY = (lastBounds[1] + lastBounds[3]) / 2;
         haveLast = !found.isEmpty();
         if (!haveLast) {
+            motionX = motionY = 0;
             return;
         }
         lastBounds[0] = lastBounds[1] = Double.POSITIVE_INFINITY;
@@ -220,5 +234,7 @@ public final class FiducialTracker {
                 lastBounds[3] = Math.max(lastBounds[3], d.cornerY(i));
             }
         }
+        motionX = had ? (lastBounds[0] + lastBounds[2]) / 2 - oldX : 0;
+        motionY = had ? (lastBounds[1] + lastBounds[3]) / 2 - oldY : 0;
     }
 }
