@@ -113,8 +113,12 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
 
     /** The model's first clip (at rest if it has none), a fresh config, exact normals. */
     public static SkeletalAnimatedMesh of(Model model) {
-        return new SkeletalAnimatedMesh(model, model.clips().isEmpty() ? null : model.clips().get(0),
-                new AnimationConfig());
+        return of(model, new AnimationConfig());
+    }
+
+    /** The model's first clip (at rest if it has none) under {@code config}, exact normals. */
+    public static SkeletalAnimatedMesh of(Model model, AnimationConfig config) {
+        return new SkeletalAnimatedMesh(model, model.clips().isEmpty() ? null : model.clips().get(0), config);
     }
 
     /**

@@ -16,7 +16,7 @@ import java.util.stream.Stream;
  */
 public final class ModelLibrary {
     /** The model the viewer opens when given none, relative to the assets folder. */
-    public static final String DEFAULT_ASSET = "characters/humanoid-walk.dae";
+    public static final String DEFAULT_ASSET = org.skinlab.scene.DefaultAsset.PATH;
 
     private final Path assets;
     private final List<Path> models = new ArrayList<>();

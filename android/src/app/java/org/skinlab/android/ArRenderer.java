@@ -1,0 +1,204 @@
+package org.skinlab.android;
+
+import static android.opengl.GLES30.*;
+
+import java.nio.ByteBuffer;
+import java.nio.ByteOrder;
+import java.nio.FloatBuffer;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.function.Consumer;
+
+import javax.microedition.khronos.egl.EGLConfig;
+import javax.microedition.khronos.opengles.GL10;
+
+import android.graphics.SurfaceTexture;
+import android.opengl.GLES11Ext;
+import android.opengl.GLSurfaceView;
+
+import org.joml.Matrix4f;
+import org.skinlab.android.logic.FpsCounter;
+import org.skinlab.android.logic.GlesShaders;
+import org.skinlab.ar.ArCamera;
+import org.skinlab.ar.ArPose;
+import org.skinlab.ar.ArSession;
+import org.skinlab.ar.CameraFollow;
+import org.skinlab.ar.CameraIntrinsics;
+import org.skinlab.ar.MarkerScene;
+import org.skinlab.scene.ModelFraming;
+import org.skinlab.simulation.AnimationConfig;
+import org.skinlab.simulation.Frame;
+import org.skinlab.simulation.SkeletalAnimatedMesh;
+import org.skinlab.skinning.SkinningMethod;
+
+/**
+ * Draws one AR frame on the GL thread: the camera image (the preview's SurfaceTexture) across the
+ * view, turned to the display, and the skinned model on the marker with the pose the tracking
+ * thread published last ({@link ArSession#current()}); the joint palette of the simulation's latest
+ * frame is skinned in the vertex shader. Everything it reads from other threads is one volatile
+ * reference each (the session, the mesh, the intrinsics): a frame never mixes two of them.
+ */
+final class ArRenderer implements GLSurfaceView.Renderer {
+    private final AnimationConfig config;
+    private final Consumer<SurfaceTexture> onPreviewTexture;
+    private final FpsCounter fps = new FpsCounter();
+    private final CameraFollow follow = new CameraFollow();
+    private final Matrix4f projection = new Matrix4f();
+    private final Matrix4f imageToViewport = new Matrix4f();
+    private final Matrix4f markerView = new Matrix4f();
+    private final Matrix4f modelView = new Matrix4f();
+    private final float[] matrix = new float[16];
+    private final float[] textureTransform = new float[16];
+    private volatile ArSession session;
+    private volatile CameraIntrinsics intrinsics;
+    private volatile int imageRotation;
+    private volatile SkeletalAnimatedMesh mesh;
+    private volatile MarkerScene scene = new MarkerScene(0.1);
+    private SkeletalAnimatedMesh meshOnGpu;
+    private List<ModelGl> models = new ArrayList<>();
+    private ModelFraming framing;
+    private SurfaceTexture preview;
+    private int previewTexture;
+    private int background;
+    private int skinned;
+    private int quad;
+    private int width = 1;
+    private int height = 1;
+
+    ArRenderer(AnimationConfig config, Consumer<SurfaceTexture> onPreviewTexture) {
+        this.config = config;
+        this.onPreviewTexture = onPreviewTexture;
+    }
+
+    void setSession(ArSession session, CameraIntrinsics intrinsics, int imageRotationDegrees) {
+        this.intrinsics = intrinsics;
+        this.imageRotation = imageRotationDegrees;
+        this.session = session;
+    }
+
+    void setImageRotation(int imageRotationDegrees) {
+        this.imageRotation = imageRotationDegrees;
+    }
+
+    void setMarkerScene(MarkerScene scene) {
+        this.scene = scene;
+    }
+
+    void setMesh(SkeletalAnimatedMesh mesh) {
+        this.mesh = mesh;
+    }
+
+    double fps() {
+        return fps.fps();
+    }
+
+    @Override
+    public void onSurfaceCreated(GL10 unused, EGLConfig eglConfig) {
+        background = GlProgram.link(GlesShaders.BACKGROUND_VERTEX, GlesShaders.BACKGROUND_FRAGMENT);
+        skinned = GlProgram.link(GlesShaders.SKINNED_VERTEX, GlesShaders.SKINNED_FRAGMENT);
+        int[] t = new int[1];
+        glGenTextures(1, t, 0);
+        previewTexture = t[0];
+        glBindTexture(GLES11Ext.GL_TEXTURE_EXTERNAL_OES, previewTexture);
+        glTexParameteri(GLES11Ext.GL_TEXTURE_EXTERNAL_OES, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTexParameteri(GLES11Ext.GL_TEXTURE_EXTERNAL_OES, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        preview = new SurfaceTexture(previewTexture);
+        FloatBuffer corners = ByteBuffer.allocateDirect(32).order(ByteOrder.nativeOrder()).asFloatBuffer();
+        corners.put(new float[] {-1, -1, 1, -1, -1, 1, 1, 1}).flip();
+        int[] vao = new int[1];
+        glGenVertexArrays(1, vao, 0);
+        quad = vao[0];
+        glBindVertexArray(quad);
+        int[] vbo = new int[1];
+        glGenBuffers(1, vbo, 0);
+        glBindBuffer(GL_ARRAY_BUFFER, vbo[0]);
+        glBufferData(GL_ARRAY_BUFFER, 32, corners, GL_STATIC_DRAW);
+        glEnableVertexAttribArray(0);
+        glVertexAttribPointer(0, 2, GL_FLOAT, false, 8, 0);
+        glBindVertexArray(0);
+        // The EGL context is new: whatever was on the GPU is gone.
+        models = new ArrayList<>();
+        meshOnGpu = null;
+        onPreviewTexture.accept(preview);
+    }
+
+    @Override
+    public void onSurfaceChanged(GL10 unused, int w, int h) {
+        width = Math.max(1, w);
+        height = Math.max(1, h);
+        glViewport(0, 0, width, height);
+    }
+
+    @Override
+    public void onDrawFrame(GL10 unused) {
+        fps.frame(System.nanoTime());
+        glClearColor(0.1f, 0.1f, 0.12f, 1f);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        CameraIntrinsics k = intrinsics;
+        ArSession s = session;
+        if (k == null || s == null) {
+            return;
+        }
+        preview.updateTexImage();
+        preview.getTransformMatrix(textureTransform);
+        ArCamera.imageToViewport(k.width(), k.height(), width, height, imageRotation, false, imageToViewport);
+        glDisable(GL_DEPTH_TEST);
+        glUseProgram(background);
+        glUniformMatrix4fv(glGetUniformLocation(background, "uImageToViewport"), 1, false, imageToViewport.get(matrix), 0);
+        glUniformMatrix4fv(glGetUniformLocation(background, "uTexture"), 1, false, textureTransform, 0);
+        glActiveTexture(GL_TEXTURE0);
+        glBindTexture(GLES11Ext.GL_TEXTURE_EXTERNAL_OES, previewTexture);
+        glUniform1i(glGetUniformLocation(background, "uCamera"), 0);
+        glBindVertexArray(quad);
+        glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+        glBindVertexArray(0);
+
+        ArPose pose = s.current();
+        SkeletalAnimatedMesh m = mesh;
+        if (!pose.visible() || m == null || m.isClosed()) {
+            return;
+        }
+        try (Frame frame = m.acquire()) {
+            if (m != meshOnGpu) {
+                for (ModelGl g : models) {
+                    g.release();
+                }
+                models = new ArrayList<>();
+                for (int g = 0; g < m.geometries().size(); g++) {
+                    models.add(new ModelGl(m.geometries().get(g)));
+                }
+                framing = ModelFraming.of(m.model().asset(), m.geometries(), frame);
+                meshOnGpu = m;
+                follow.reset();
+            }
+            double yaw = config.isFollowCamera() ? follow.update(pose.rotation(), pose.translation()) : 0;
+            pose.markerModelView(markerView);
+            scene.modelView(markerView, framing, yaw, modelView);
+            ArCamera.projection(k, 0.01f, 20f, width, height, imageRotation, false, projection);
+            glEnable(GL_DEPTH_TEST);
+            glUseProgram(skinned);
+            glUniformMatrix4fv(glGetUniformLocation(skinned, "uProjection"), 1, false, projection.get(matrix), 0);
+            glUniformMatrix4fv(glGetUniformLocation(skinned, "uModelView"), 1, false, modelView.get(matrix), 0);
+            glUniform1i(glGetUniformLocation(skinned, "uMethod"), methodCode(frame.method()));
+            glUniform1i(glGetUniformLocation(skinned, "uPalette"), 1);
+            for (int g = 0; g < models.size(); g++) {
+                ModelGl model = models.get(g);
+                model.palette(frame, g);
+                glUniform1i(glGetUniformLocation(skinned, "uHasScale"), frame.hasScale(g) ? 1 : 0);
+                glUniform4fv(glGetUniformLocation(skinned, "uColor"), 1, model.color, 0);
+                model.draw();
+            }
+        }
+    }
+
+    private static int methodCode(SkinningMethod method) {
+        switch (method) {
+            case DQS:
+                return 2;
+            case COR:
+                return 3;
+            default:
+                return 1;
+        }
+    }
+}

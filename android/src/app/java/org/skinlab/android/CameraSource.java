@@ -1,0 +1,219 @@
+package org.skinlab.android;
+
+import java.util.Arrays;
+import java.util.List;
+
+import android.content.Context;
+import android.graphics.ImageFormat;
+import android.graphics.Rect;
+import android.graphics.SurfaceTexture;
+import android.hardware.camera2.CameraAccessException;
+import android.hardware.camera2.CameraCaptureSession;
+import android.hardware.camera2.CameraCharacteristics;
+import android.hardware.camera2.CameraDevice;
+import android.hardware.camera2.CameraManager;
+import android.hardware.camera2.CaptureRequest;
+import android.media.Image;
+import android.media.ImageReader;
+import android.os.Handler;
+import android.os.HandlerThread;
+import android.util.SizeF;
+import android.view.Surface;
+
+import org.skinlab.android.logic.IntrinsicsEstimate;
+import org.skinlab.android.logic.YPlane;
+import org.skinlab.ar.ArSession;
+import org.skinlab.ar.CameraIntrinsics;
+import org.skinlab.ar.GrayImage;
+
+/**
+ * The back camera through Camera2: a preview stream into the renderer's SurfaceTexture (the video
+ * background) and a 640x480 YUV stream whose luminance plane the tracking thread hands to the
+ * {@link ArSession}. Opened by {@link #open}, released by {@link #close} (the Activity's onPause),
+ * both from the UI thread; camera callbacks run on their own thread, tracking on another.
+ */
+final class CameraSource {
+    /** The analysed stream; the preview has the same 4:3 aspect at twice the size. */
+    static final int WIDTH = 640;
+    static final int HEIGHT = 480;
+
+    interface Listener {
+        /** The camera is open: its intrinsics for the analysed stream and its orientation on the sensor. */
+        void onOpened(CameraIntrinsics intrinsics, int sensorOrientation);
+
+        /** The camera failed or was taken away; the message is for the status line. */
+        void onError(String message);
+    }
+
+    private final CameraManager manager;
+    private final Listener listener;
+    private HandlerThread cameraThread;
+    private HandlerThread trackingThread;
+    private CameraDevice device;
+    private CameraCaptureSession capture;
+    private ImageReader reader;
+    private Surface previewSurface;
+    private final YPlane yPlane = new YPlane();
+    private volatile ArSession session;
+
+    CameraSource(Context context, Listener listener) {
+        this.manager = (CameraManager) context.getSystemService(Context.CAMERA_SERVICE);
+        this.listener = listener;
+    }
+
+    /** Frames go to this session from now on (set before or after open). */
+    void setSession(ArSession session) {
+        this.session = session;
+    }
+
+    /** Opens the back camera; the caller holds the CAMERA permission. */
+    void open(SurfaceTexture preview) {
+        cameraThread = new HandlerThread("camera");
+        cameraThread.start();
+        trackingThread = new HandlerThread("tracking");
+        trackingThread.start();
+        Handler cameraHandler = new Handler(cameraThread.getLooper());
+        Handler trackingHandler = new Handler(trackingThread.getLooper());
+        try {
+            String id = backCamera();
+            CameraCharacteristics c = manager.getCameraCharacteristics(id);
+            Integer orientation = c.get(CameraCharacteristics.SENSOR_ORIENTATION);
+            listener.onOpened(intrinsics(c), orientation == null ? 90 : orientation);
+            preview.setDefaultBufferSize(2 * WIDTH, 2 * HEIGHT);
+            previewSurface = new Surface(preview);
+            reader = ImageReader.newInstance(WIDTH, HEIGHT, ImageFormat.YUV_420_888, 2);
+            reader.setOnImageAvailableListener(this::track, trackingHandler);
+            manager.openCamera(id, new CameraDevice.StateCallback() {
+                @Override
+                public void onOpened(CameraDevice camera) {
+                    device = camera;
+                    startCapture(cameraHandler);
+                }
+
+                @Override
+                public void onDisconnected(CameraDevice camera) {
+                    camera.close();
+                    device = null;
+                    listener.onError("camera disconnected");
+                }
+
+                @Override
+                public void onError(CameraDevice camera, int error) {
+                    camera.close();
+                    device = null;
+                    listener.onError("camera error " + error);
+                }
+            }, cameraHandler);
+        } catch (CameraAccessException | SecurityException | IllegalStateException e) {
+            listener.onError("cannot open the camera: " + e.getMessage());
+        }
+    }
+
+    /** Stops the streams and releases the camera and both threads. */
+    void close() {
+        if (capture != null) {
+            capture.close();
+            capture = null;
+        }
+        if (device != null) {
+            device.close();
+            device = null;
+        }
+        if (reader != null) {
+            reader.close();
+            reader = null;
+        }
+        if (previewSurface != null) {
+            previewSurface.release();
+            previewSurface = null;
+        }
+        for (HandlerThread t : new HandlerThread[] {cameraThread, trackingThread}) {
+            if (t != null) {
+                t.quitSafely();
+                try {
+                    t.join(2000);
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                }
+            }
+        }
+        cameraThread = null;
+        trackingThread = null;
+    }
+
+    // createCaptureSession(List, ...) is deprecated from API 30 on; its successor needs API 28 (min is 26).
+    @SuppressWarnings("deprecation")
+    private void startCapture(Handler handler) {
+        try {
+            List<Surface> targets = Arrays.asList(previewSurface, reader.getSurface());
+            device.createCaptureSession(targets, new CameraCaptureSession.StateCallback() {
+                @Override
+                public void onConfigured(CameraCaptureSession s) {
+                    if (device == null) {
+                        return;
+                    }
+                    capture = s;
+                    try {
+                        CaptureRequest.Builder b = device.createCaptureRequest(CameraDevice.TEMPLATE_PREVIEW);
+                        b.addTarget(previewSurface);
+                        b.addTarget(reader.getSurface());
+                        b.set(CaptureRequest.CONTROL_AF_MODE, CaptureRequest.CONTROL_AF_MODE_CONTINUOUS_VIDEO);
+                        s.setRepeatingRequest(b.build(), null, handler);
+                    } catch (CameraAccessException | IllegalStateException e) {
+                        listener.onError("cannot start the camera: " + e.getMessage());
+                    }
+                }
+
+                @Override
+                public void onConfigureFailed(CameraCaptureSession s) {
+                    listener.onError("the camera refused the preview and tracking streams");
+                }
+            }, handler);
+        } catch (CameraAccessException | IllegalStateException e) {
+            listener.onError("cannot start the camera: " + e.getMessage());
+        }
+    }
+
+    /** On the tracking thread: the newest frame's Y plane through the session; older frames are dropped. */
+    private void track(ImageReader r) {
+        Image image = r.acquireLatestImage();
+        if (image == null) {
+            return;
+        }
+        try {
+            ArSession s = session;
+            if (s != null) {
+                Image.Plane y = image.getPlanes()[0];
+                GrayImage gray = yPlane.copy(y.getBuffer(), y.getRowStride(), y.getPixelStride(), image.getWidth(),
+                        image.getHeight());
+                s.onCameraFrame(gray, image.getTimestamp());
+            }
+        } finally {
+            image.close();
+        }
+    }
+
+    private String backCamera() throws CameraAccessException {
+        String[] ids = manager.getCameraIdList();
+        for (String id : ids) {
+            Integer facing = manager.getCameraCharacteristics(id).get(CameraCharacteristics.LENS_FACING);
+            if (facing != null && facing == CameraCharacteristics.LENS_FACING_BACK) {
+                return id;
+            }
+        }
+        if (ids.length == 0) {
+            throw new IllegalStateException("this device has no camera");
+        }
+        return ids[0];
+    }
+
+    private static CameraIntrinsics intrinsics(CameraCharacteristics c) {
+        float[] calibration = c.get(CameraCharacteristics.LENS_INTRINSIC_CALIBRATION);
+        Rect active = c.get(CameraCharacteristics.SENSOR_INFO_ACTIVE_ARRAY_SIZE);
+        float[] focal = c.get(CameraCharacteristics.LENS_INFO_AVAILABLE_FOCAL_LENGTHS);
+        SizeF physical = c.get(CameraCharacteristics.SENSOR_INFO_PHYSICAL_SIZE);
+        return IntrinsicsEstimate.estimate(calibration, active == null ? 0 : active.width(),
+                active == null ? 0 : active.height(), focal == null || focal.length == 0 ? Double.NaN : focal[0],
+                physical == null ? Double.NaN : physical.getWidth(), WIDTH, HEIGHT);
+    }
+}

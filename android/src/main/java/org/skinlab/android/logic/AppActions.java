@@ -1,0 +1,39 @@
+package org.skinlab.android.logic;
+
+import java.util.List;
+import java.util.Locale;
+import java.util.function.Supplier;
+
+import org.skinlab.simulation.AnimationConfig;
+
+/**
+ * The on-screen buttons of the AR app, one per {@link AnimationConfig} function of the thesis plus
+ * the mesh switch: each has a label that shows the current state and an action. The Activity only
+ * lays them out and calls {@link Action#run()} on a tap (from the UI thread; AnimationConfig may be
+ * changed from any thread).
+ */
+public final class AppActions {
+    /** One button. */
+    public record Action(String id, Supplier<String> label, Runnable run) {
+    }
+
+    private AppActions() {
+    }
+
+    /** The buttons over {@code config}; {@code nextMesh} switches to the next bundled model. */
+    public static List<Action> of(AnimationConfig config, Runnable nextMesh) {
+        return List.of(
+                new Action("mesh-updates", () -> config.isMeshUpdatesRunning() ? "Stop mesh" : "Start mesh",
+                        () -> config.setMeshUpdatesRunning(!config.isMeshUpdatesRunning())),
+                new Action("animation", () -> config.isAnimationRunning() ? "Stop anim" : "Start anim",
+                        () -> config.setAnimationRunning(!config.isAnimationRunning())),
+                new Action("follow-camera", () -> config.isFollowCamera() ? "Follow: on" : "Follow: off",
+                        () -> config.setFollowCamera(!config.isFollowCamera())),
+                new Action("method", () -> config.method().key().toUpperCase(Locale.ROOT),
+                        config::nextMethod),
+                new Action("interpolation", () -> config.interpolation().name(), config::nextInterpolation),
+                new Action("slower", () -> "Slower", config::slower),
+                new Action("faster", () -> "Faster", config::faster),
+                new Action("next-mesh", () -> "Next mesh", nextMesh));
+    }
+}

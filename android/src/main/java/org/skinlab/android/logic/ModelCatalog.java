@@ -1,0 +1,44 @@
+package org.skinlab.android.logic;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+
+import org.skinlab.scene.DefaultAsset;
+
+/** The models bundled in the APK, the default character first, then the rest by name; cycles on "next". */
+public final class ModelCatalog {
+    private final List<String> names;
+    private int current;
+
+    public ModelCatalog(String[] fileNames) {
+        List<String> list = new ArrayList<>();
+        for (String n : fileNames) {
+            if (n.toLowerCase(java.util.Locale.ROOT).endsWith(".dae")) {
+                list.add(n);
+            }
+        }
+        list.sort(null);
+        if (list.remove(DefaultAsset.fileName())) {
+            list.add(0, DefaultAsset.fileName());
+        }
+        if (list.isEmpty()) {
+            throw new IllegalArgumentException("no .dae model among " + Arrays.toString(fileNames));
+        }
+        this.names = List.copyOf(list);
+    }
+
+    public List<String> names() {
+        return names;
+    }
+
+    public String current() {
+        return names.get(current);
+    }
+
+    /** Moves to the next model (wrapping) and returns its name. */
+    public String next() {
+        current = (current + 1) % names.size();
+        return current();
+    }
+}

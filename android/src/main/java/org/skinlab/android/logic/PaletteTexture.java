@@ -1,0 +1,49 @@
+package org.skinlab.android.logic;
+
+import org.skinlab.simulation.Frame;
+
+/**
+ * One geometry's joint palette of a {@link Frame} laid out for an OpenGL ES 3.0 float texture
+ * (ES 3.0 has no texture buffers): {@value #TEXELS_PER_JOINT} RGBA32F texels per joint in one row
+ * per joint, read in the shader with {@code texelFetch(palette, ivec2(k, joint), 0)}: k = 0-2 the
+ * rows of the 3x4 skinning matrix, 3-4 the dual quaternion (rotation x y z w, dual part), 5-7 the
+ * rows of the scale part (DQS's and CoR's scale phase; identity rows when the frame has none).
+ */
+public final class PaletteTexture {
+    public static final int TEXELS_PER_JOINT = 8;
+    private static final float[] IDENTITY_ROWS = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
+
+    private PaletteTexture() {
+    }
+
+    /** Floats needed for {@code joints} joints. */
+    public static int floats(int joints) {
+        return 4 * TEXELS_PER_JOINT * joints;
+    }
+
+    /** Packs geometry {@code g}'s palette of {@code frame} into {@code dest} (at least {@link #floats}). */
+    public static void pack(Frame frame, int g, float[] dest) {
+        int joints = frame.jointCount(g);
+        float[] m = frame.skinningMatrices(g);
+        float[] dq = frame.dualQuaternions(g);
+        float[] sc = frame.hasScale(g) ? frame.scales(g) : null;
+        pack(joints, m, dq, sc, dest);
+    }
+
+    /**
+     * The packing itself: {@code matrices} 12 floats per joint (row-major 3x4), {@code dualQuaternions}
+     * 8 per joint, {@code scales} 12 per joint or null (identity).
+     */
+    public static void pack(int joints, float[] matrices, float[] dualQuaternions, float[] scales, float[] dest) {
+        for (int j = 0; j < joints; j++) {
+            int o = 4 * TEXELS_PER_JOINT * j;
+            System.arraycopy(matrices, 12 * j, dest, o, 12);
+            System.arraycopy(dualQuaternions, 8 * j, dest, o + 12, 8);
+            if (scales != null) {
+                System.arraycopy(scales, 12 * j, dest, o + 20, 12);
+            } else {
+                System.arraycopy(IDENTITY_ROWS, 0, dest, o + 20, 12);
+            }
+        }
+    }
+}

@@ -1,0 +1,52 @@
+package org.skinlab.android.logic;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+
+import org.skinlab.ar.ArSession;
+import org.skinlab.ar.CameraIntrinsics;
+import org.skinlab.ar.FiducialTracker;
+import org.skinlab.ar.GrayImage;
+import org.skinlab.ar.MarkerDictionary;
+import org.skinlab.ar.MarkerPattern;
+import org.skinlab.ar.TrackerConfig;
+import org.skinlab.ar.synthetic.PlacedMarker;
+import org.skinlab.ar.synthetic.SceneOptions;
+import org.skinlab.ar.synthetic.SyntheticCamera;
+import org.skinlab.collada.ColladaImporter;
+import org.skinlab.simulation.AnimationConfig;
+import org.skinlab.simulation.Frame;
+import org.skinlab.simulation.SkeletalAnimatedMesh;
+
+/**
+ * Runs the app's core paths (import, simulation, marker tracking) on a desktop JVM after R8 has
+ * shrunk them with the APK's rules ({@code gradle :android:checkShrunk}): the APK cannot be run
+ * here, but this shows that shrinking left BoofCV, JOML and core working (nothing they reach by
+ * reflection was removed). Exits 0 and prints "shrunk app paths work" on success.
+ */
+public final class ShrinkProbe {
+    private ShrinkProbe() {
+    }
+
+    public static void main(String[] args) throws Exception {
+        Path model = Path.of(args[0]);
+        try (SkeletalAnimatedMesh mesh = SkeletalAnimatedMesh.of(ColladaImporter.read(Files.newInputStream(model),
+                model.getFileName().toString()), new AnimationConfig(AnimationConfig.Settings.DEFAULT
+                        .withCpuSkinning(false)))) {
+            mesh.step(0.1);
+            try (Frame f = mesh.acquire()) {
+                float[] palette = new float[PaletteTexture.floats(f.jointCount(0))];
+                PaletteTexture.pack(f, 0, palette);
+            }
+        }
+        CameraIntrinsics k = IntrinsicsEstimate.estimate(null, 4000, 3000, 4.3, 5.6, 640, 480);
+        GrayImage image = new SyntheticCamera(k).render(List.of(PlacedMarker.of(MarkerPattern.of(MarkerDictionary.DEFAULT,
+                0), 0.1, PlacedMarker.facingCamera(30, 10, 20), new double[] {0.02, 0.01, 0.5})), SceneOptions.camera(1));
+        ArSession session = ArSession.of(new FiducialTracker(TrackerConfig.defaults(0.1), k));
+        if (!session.onCameraFrame(image, 1).visible()) {
+            throw new IllegalStateException("the shrunk tracker did not find the marker");
+        }
+        System.out.println("shrunk app paths work");
+    }
+}

@@ -1,0 +1,154 @@
+package org.skinlab.android.logic;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.ByteBuffer;
+import java.util.List;
+import java.util.concurrent.atomic.AtomicInteger;
+
+import org.junit.jupiter.api.Test;
+import org.skinlab.animation.RotationInterpolation;
+import org.skinlab.ar.CameraIntrinsics;
+import org.skinlab.ar.GrayImage;
+import org.skinlab.ar.TrackingState;
+import org.skinlab.simulation.AnimationConfig;
+import org.skinlab.skinning.SkinningMethod;
+
+/** What the Activity delegates to, on the JVM: buttons, permission flow, intrinsics, Y plane, palette, catalog. */
+class AndroidLogicTest {
+    @Test
+    void everyButtonDoesItsAnimationConfigFunction() {
+        AnimationConfig config = new AnimationConfig();
+        AtomicInteger next = new AtomicInteger();
+        List<AppActions.Action> actions = AppActions.of(config, next::incrementAndGet);
+        assertEquals(List.of("mesh-updates", "animation", "follow-camera", "method", "interpolation", "slower", "faster",
+                "next-mesh"), actions.stream().map(AppActions.Action::id).toList());
+        AppActions.Action mesh = actions.get(0);
+        assertEquals("Stop mesh", mesh.label().get());
+        mesh.run().run();
+        assertFalse(config.isMeshUpdatesRunning());
+        assertEquals("Start mesh", mesh.label().get());
+        actions.get(1).run().run();
+        assertFalse(config.isAnimationRunning());
+        actions.get(2).run().run();
+        assertTrue(config.isFollowCamera());
+        assertEquals("Follow: on", actions.get(2).label().get());
+        assertEquals("LBS", actions.get(3).label().get());
+        actions.get(3).run().run();
+        assertEquals(SkinningMethod.DQS, config.method());
+        assertEquals("DQS", actions.get(3).label().get());
+        RotationInterpolation before = config.interpolation();
+        actions.get(4).run().run();
+        assertTrue(config.interpolation() != before);
+        actions.get(6).run().run();
+        assertEquals(AnimationConfig.SPEED_STEP, config.speed(), 1e-12);
+        actions.get(5).run().run();
+        actions.get(5).run().run();
+        assertEquals(1 / AnimationConfig.SPEED_STEP, config.speed(), 1e-12);
+        actions.get(7).run().run();
+        assertEquals(1, next.get());
+    }
+
+    @Test
+    void aRefusedPermissionExplainsAndRetriesNeverOpensTheCamera() {
+        PermissionFlow flow = new PermissionFlow();
+        assertTrue(flow.onResume(false), "ask at first");
+        assertFalse(flow.cameraAllowed());
+        flow.onResult(false, true);
+        assertEquals(PermissionFlow.Screen.EXPLAIN_AND_RETRY, flow.screen());
+        assertFalse(flow.onResume(false), "back from the background: no dialog storm, the explanation stays");
+        assertTrue(flow.onRetry());
+        flow.onResult(false, false);
+        assertEquals(PermissionFlow.Screen.EXPLAIN_SETTINGS, flow.screen());
+        assertFalse(flow.onRetry(), "Android will not show the dialog again: settings");
+        assertFalse(flow.cameraAllowed());
+        assertFalse(flow.onResume(true), "allowed in settings meanwhile");
+        assertTrue(flow.cameraAllowed());
+    }
+
+    @Test
+    void intrinsicsFromCalibrationPhysicalSizeOrFieldOfView() {
+        // A 4000x3000 active array streamed at 640x480 (same 4:3 aspect): a pure scale by 0.16.
+        CameraIntrinsics k = IntrinsicsEstimate.estimate(new float[] {3200, 3210, 2010, 1490, 0}, 4000, 3000, 0, 0,
+                640, 480);
+        assertEquals(512, k.fx(), 1e-9);
+        assertEquals(513.6, k.fy(), 1e-9);
+        assertEquals((2010 + 0.5) * 0.16 - 0.5, k.cx(), 1e-9);
+        // A 16:9 active array streamed at 4:3: the centred crop, then the scale.
+        CameraIntrinsics crop = IntrinsicsEstimate.estimate(new float[] {3000, 3000, 1999.5f, 1124.5f, 0}, 4000, 2250,
+                0, 0, 640, 480);
+        assertEquals(319.5, crop.cx(), 1e-6, "the centre stays the centre");
+        assertEquals(239.5, crop.cy(), 1e-6);
+        assertEquals(3000 * 640 / 3000.0, crop.fx(), 1e-6);
+        // Focal length 4.3 mm on a 5.6 mm wide sensor: fx = 4.3 / 5.6 of the width.
+        CameraIntrinsics physical = IntrinsicsEstimate.estimate(null, 4000, 3000, 4.3, 5.6, 640, 480);
+        assertEquals(4.3 / 5.6 * 640, physical.fx(), 1e-9);
+        CameraIntrinsics guess = IntrinsicsEstimate.estimate(null, 0, 0, Double.NaN, Double.NaN, 640, 480);
+        assertEquals(IntrinsicsEstimate.FALLBACK_FOV_DEGREES, guess.horizontalFovDegrees(), 1e-9);
+    }
+
+    @Test
+    void theYPlaneIsCopiedWithItsStrides() {
+        int w = 5, h = 3, rowStride = 12;
+        ByteBuffer plane = ByteBuffer.allocate(rowStride * (h - 1) + 2 * (w - 1) + 1);
+        for (int y = 0; y < h; y++) {
+            for (int x = 0; x < w; x++) {
+                plane.put(y * rowStride + 2 * x, (byte) (10 * y + x));
+            }
+        }
+        GrayImage g = new YPlane().copy(plane, rowStride, 2, w, h);
+        for (int y = 0; y < h; y++) {
+            for (int x = 0; x < w; x++) {
+                assertEquals(10 * y + x, g.get(x, y));
+            }
+        }
+        ByteBuffer packed = ByteBuffer.allocate(rowStride * h);
+        packed.put(rowStride + 4, (byte) 200);
+        assertEquals(200, new YPlane().copy(packed, rowStride, 1, w, h).get(4, 1));
+        assertThrows(IllegalArgumentException.class, () -> new YPlane().copy(packed, 3, 1, w, h));
+    }
+
+    @Test
+    void thePaletteTextureLaysOutMatricesDualQuaternionsAndScales() {
+        float[] m = new float[24];
+        float[] dq = new float[16];
+        for (int i = 0; i < m.length; i++) {
+            m[i] = i;
+        }
+        for (int i = 0; i < dq.length; i++) {
+            dq[i] = 100 + i;
+        }
+        float[] dest = new float[PaletteTexture.floats(2)];
+        PaletteTexture.pack(2, m, dq, null, dest);
+        int row = 4 * PaletteTexture.TEXELS_PER_JOINT;
+        assertEquals(12, dest[row], "joint 1's first matrix row starts its texture row");
+        assertEquals(108, dest[row + 12], "then its dual quaternion");
+        assertArrayEquals(new float[] {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0}, java.util.Arrays.copyOfRange(dest, 20, 32),
+                "no scale: identity rows");
+    }
+
+    @Test
+    void theCatalogStartsWithTheDefaultCharacterAndCycles() {
+        ModelCatalog c = new ModelCatalog(new String[] {"tentacle-wave.dae", "notes.txt", "humanoid-walk.dae"});
+        assertEquals(List.of("humanoid-walk.dae", "tentacle-wave.dae"), c.names());
+        assertEquals("tentacle-wave.dae", c.next());
+        assertEquals("humanoid-walk.dae", c.next());
+        assertThrows(IllegalArgumentException.class, () -> new ModelCatalog(new String[] {"a.txt"}));
+    }
+
+    @Test
+    void theStatusLineSaysWhatIsGoingOn() {
+        String s = StatusLine.format(29.6, TrackingState.HOLDING, 2.54, AnimationConfig.Settings.DEFAULT
+                .withMethod(SkinningMethod.COR).withFollowCamera(true), "humanoid-walk.dae");
+        assertEquals("30 fps | marker: holding (2.5 ms) | COR SLERP x1.00 | follow | humanoid-walk.dae", s);
+        FpsCounter fps = new FpsCounter();
+        for (int i = 0; i <= 60; i++) {
+            fps.frame(i * 16_666_667L);
+        }
+        assertEquals(60, fps.fps(), 0.5);
+    }
+}
