@@ -64,6 +64,9 @@ public final class SkinlabApp implements AutoCloseable {
     private AppUi ui = AppUi.NONE;
     private ScriptPlayer player;
     private final GlDebugLog debugLog;
+    /** The AR mode's camera background and marker placement ({@code skinlab ar}), or null. */
+    private final ArPresenter ar;
+    private org.skinlab.ar.TrackingState arState;
     private LoadedModel shown;
     private ModelRenderer renderer;
     private DifferenceProbe difference;
@@ -71,7 +74,7 @@ public final class SkinlabApp implements AutoCloseable {
     private long lastNanos;
     private final long startNanos;
 
-    private SkinlabApp(GlWindow window, AppOptions options, PrintWriter out, PrintWriter err) {
+    private SkinlabApp(GlWindow window, AppOptions options, ArSetup arSetup, PrintWriter out, PrintWriter err) {
         this.window = window;
         this.out = out;
         this.err = err;
@@ -98,6 +101,7 @@ public final class SkinlabApp implements AutoCloseable {
             ui = new ImGuiUi(window, this::windowAction);
             input.setUi(ui);
         }
+        ar = arSetup == null ? null : new ArPresenter(arSetup);
         startNanos = System.nanoTime();
     }
 
@@ -106,6 +110,15 @@ public final class SkinlabApp implements AutoCloseable {
      * the exit status. Failures to open a window are one line on stderr.
      */
     public static int run(AppOptions options, PrintWriter out, PrintWriter err) {
+        return run(options, null, out, err);
+    }
+
+    /**
+     * As {@link #run(AppOptions, PrintWriter, PrintWriter)}, in AR mode when {@code ar} is given:
+     * the camera feed as background and the model on the marker ({@code skinlab ar}); the window
+     * owns the feed from here on and closes it.
+     */
+    public static int run(AppOptions options, ArSetup ar, PrintWriter out, PrintWriter err) {
         UiScript script = null;
         if (options.script() != null) {
             try {
@@ -123,9 +136,12 @@ public final class SkinlabApp implements AutoCloseable {
             window = new GlWindow("skinlab", options.width(), options.height(), !options.headless(), options.glDebug());
         } catch (GlWindow.WindowUnavailableException e) {
             err.println("skinlab: " + e.getMessage());
+            if (ar != null) {
+                ar.feed().close();
+            }
             return FAILED;
         }
-        try (window; SkinlabApp app = new SkinlabApp(window, options, out, err)) {
+        try (window; SkinlabApp app = new SkinlabApp(window, options, ar, out, err)) {
             if (script != null) {
                 app.player = new ScriptPlayer(script, window, app, app.viewer, app.ui);
             }
@@ -144,6 +160,9 @@ public final class SkinlabApp implements AutoCloseable {
             return INVALID_FILE;
         }
         LoadedModel model = viewer.current();
+        if (ar != null && !awaitCameraFrame()) {
+            return FAILED;
+        }
         // A still picture of a time at or past the clip's end shows the end, not the loop's start.
         config.setWrapMode(WrapMode.CLAMP);
         model.mesh().seek(options.time() == null ? 0.0 : options.time());
@@ -154,6 +173,19 @@ public final class SkinlabApp implements AutoCloseable {
             renderFrame(i == frames - 1);
         }
         return OK;
+    }
+
+    /** AR, headless: the first tracked camera frame, or false with the feed's error. */
+    private boolean awaitCameraFrame() {
+        try {
+            if (ar.awaitFirst(20_000)) {
+                return true;
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+        err.println("skinlab: no camera frame" + (ar.failure() != null ? ": " + ar.failure() : " in 20 s"));
+        return false;
     }
 
     // ---------------------------------------------------------------------------- interactive
@@ -235,6 +267,9 @@ public final class SkinlabApp implements AutoCloseable {
         glClearColor(BACKGROUND[0], BACKGROUND[1], BACKGROUND[2], 1f);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         boolean drew = false;
+        if (ar != null) {
+            drawArBackground();
+        }
         if (renderer != null) {
             try (Frame frame = shown.mesh().acquire()) {
                 if (frame != null) {
@@ -332,10 +367,12 @@ public final class SkinlabApp implements AutoCloseable {
         info.sceneLeft = left;
         int w = size[0] - left;
         int h = size[1];
-        info.views = split ? 2 : 1;
+        info.views = split && ar == null ? 2 : 1;
         info.viewMethods[0] = first;
         info.viewOnCpu[0] = cpuFrame;
-        if (split) {
+        if (ar != null) {
+            drawArModel(first, cpuFrame, left, w, h);
+        } else if (split) {
             drawView(frame, first, cpuFrame, left, w / 2, h);
             drawView(frame, other(first), false, left + w / 2, w - w / 2, h);
             info.viewMethods[1] = other(first);
@@ -375,6 +412,40 @@ public final class SkinlabApp implements AutoCloseable {
         // The floor reaches a little beyond the model, or the grid of its copies.
         floorExtent = 1.3f * shown.framing().gridSphere(draw.instances, draw.gridColumns, floorCentre);
         floor.draw(draw, floorCentre.x, floorCentre.z, floorExtent);
+        renderer.draw(draw);
+        if (viewer.settings().skeleton()) {
+            renderer.drawSkeleton(draw);
+        }
+    }
+
+    /** AR: the newest camera frame across the scene area; the tracking state in the status line when it changes. */
+    private void drawArBackground() {
+        int left = ui.reservedLeft() < size[0] / 2 ? ui.reservedLeft() : 0;
+        glViewport(left, 0, size[0] - left, size[1]);
+        ar.drawBackground(size[0] - left, size[1]);
+        org.skinlab.ar.TrackingState state = ar.state();
+        if (state != arState) {
+            arState = state;
+            viewer.setStatus(ar.failure() != null ? "camera: " + ar.failure() : "AR: marker " + state.label());
+        }
+    }
+
+    /** AR: the model on the marker, or nothing while the marker is not shown. */
+    private void drawArModel(SkinningMethod method, boolean cpuPositions, int x, int width, int height) {
+        glViewport(x, 0, width, height);
+        if (!ar.placeModel(shown.framing(), config, draw, width, height)) {
+            return;
+        }
+        draw.gpuSkinning = !cpuPositions;
+        draw.method = method;
+        draw.view = viewer.settings().drawView();
+        draw.selectedNode = viewer.selectedJointNode();
+        draw.scalarFull = draw.view == DrawSettings.View.DIFFERENCE
+                ? (float) (DIFFERENCE_FULL * difference.size()) : 1f;
+        draw.instances = 1;
+        draw.gridColumns = 1;
+        draw.wireframe = viewer.settings().wireframe();
+        glEnable(GL_DEPTH_TEST);
         renderer.draw(draw);
         if (viewer.settings().skeleton()) {
             renderer.drawSkeleton(draw);
@@ -426,6 +497,9 @@ public final class SkinlabApp implements AutoCloseable {
 
     @Override
     public void close() {
+        if (ar != null) {
+            ar.close();
+        }
         ui.close();
         if (renderer != null) {
             renderer.close();

@@ -45,7 +45,8 @@ public final class DemoVideo {
     public PlacedMarker marker(int i) {
         double s = i / (double) frames;
         double a = 2 * Math.PI * s;
-        double[] r = PlacedMarker.facingCamera(35 + 15 * Math.sin(a), 15 * Math.cos(a), 60 * s);
+        // Negative turns about x tip the marker's top edge away: the camera looks down onto a desk.
+        double[] r = PlacedMarker.facingCamera(-(35 + 15 * Math.sin(a)), 15 * Math.cos(a), 60 * s);
         double[] t = {0.09 * Math.sin(a), 0.04 * Math.cos(2 * a), 0.55 + 0.2 * Math.sin(a + 1)};
         return PlacedMarker.of(pattern, MARKER_METRES, r, t);
     }

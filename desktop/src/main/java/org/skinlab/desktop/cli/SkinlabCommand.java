@@ -12,7 +12,7 @@ import picocli.CommandLine.Command;
                 + "on the default character), inspect them, pose them, benchmark.",
         subcommands = {ViewCommand.class, CheckGpuCommand.class, RenderBenchCommand.class, CompareCommand.class,
                 InspectCommand.class, PoseCommand.class, BenchCommand.class, TrackCommand.class,
-                MarkerCommand.class, ArDemoCommand.class,
+                MarkerCommand.class, ArCommand.class, ArDemoCommand.class,
                 CommandLine.HelpCommand.class})
 public final class SkinlabCommand implements Runnable {
     @CommandLine.Spec

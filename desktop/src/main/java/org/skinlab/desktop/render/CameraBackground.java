@@ -1,0 +1,111 @@
+package org.skinlab.desktop.render;
+
+import static org.lwjgl.opengl.GL33C.*;
+
+import java.nio.ByteBuffer;
+import java.nio.FloatBuffer;
+
+import org.joml.Matrix4fc;
+import org.lwjgl.system.MemoryUtil;
+import org.skinlab.ar.GrayImage;
+
+/**
+ * The camera image behind the AR scene ({@code skinlab ar}): an 8-bit texture refilled from each
+ * new gray frame (one reused upload buffer: nothing allocated per frame), drawn as a quad through
+ * {@code ArCamera.imageToViewport}, so it lines up with the projection the model is drawn with.
+ */
+public final class CameraBackground implements AutoCloseable {
+    private final ShaderProgram program;
+    private final int imageToViewport;
+    private final int imageUnit;
+    private final int vao;
+    private final int vbo;
+    private final int texture;
+    private final FloatBuffer matrix = MemoryUtil.memAllocFloat(16);
+    private ByteBuffer upload = MemoryUtil.memAlloc(1);
+    private int width;
+    private int height;
+
+    public CameraBackground() {
+        program = ShaderProgram.load("background", "background");
+        imageToViewport = program.uniform("uImageToViewport");
+        imageUnit = program.uniform("uImage");
+        FloatBuffer corners = MemoryUtil.memAllocFloat(8);
+        try {
+            corners.put(new float[] {-1, -1, 1, -1, -1, 1, 1, 1}).flip();
+            vao = glGenVertexArrays();
+            vbo = glGenBuffers();
+            glBindVertexArray(vao);
+            glBindBuffer(GL_ARRAY_BUFFER, vbo);
+            glBufferData(GL_ARRAY_BUFFER, corners, GL_STATIC_DRAW);
+            glEnableVertexAttribArray(0);
+            glVertexAttribPointer(0, 2, GL_FLOAT, false, 0, 0L);
+            glBindVertexArray(0);
+            glBindBuffer(GL_ARRAY_BUFFER, 0);
+        } finally {
+            MemoryUtil.memFree(corners);
+        }
+        texture = glGenTextures();
+        glBindTexture(GL_TEXTURE_2D, texture);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        glBindTexture(GL_TEXTURE_2D, 0);
+    }
+
+    /** Uploads a camera frame (its size may change: the texture follows). */
+    public void upload(GrayImage image) {
+        int w = image.width();
+        int h = image.height();
+        if (upload.capacity() < w * h) {
+            MemoryUtil.memFree(upload);
+            upload = MemoryUtil.memAlloc(w * h);
+        }
+        upload.clear();
+        for (int y = 0; y < h; y++) {
+            upload.put(image.pixels(), y * image.rowStride(), w);
+        }
+        upload.flip();
+        glBindTexture(GL_TEXTURE_2D, texture);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        if (w != width || h != height) {
+            glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, w, h, 0, GL_RED, GL_UNSIGNED_BYTE, upload);
+            width = w;
+            height = h;
+        } else {
+            glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, w, h, GL_RED, GL_UNSIGNED_BYTE, upload);
+        }
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+        glBindTexture(GL_TEXTURE_2D, 0);
+    }
+
+    /** Draws the last uploaded frame through {@code imageToViewport}, behind everything (no depth writes). */
+    public void draw(Matrix4fc imageToViewportMatrix) {
+        if (width == 0) {
+            return;
+        }
+        program.use();
+        glUniformMatrix4fv(imageToViewport, false, imageToViewportMatrix.get(matrix));
+        glActiveTexture(GL_TEXTURE0);
+        glBindTexture(GL_TEXTURE_2D, texture);
+        glUniform1i(imageUnit, 0);
+        glDepthMask(false);
+        glDisable(GL_DEPTH_TEST);
+        glBindVertexArray(vao);
+        glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+        glBindVertexArray(0);
+        glDepthMask(true);
+        glBindTexture(GL_TEXTURE_2D, 0);
+    }
+
+    @Override
+    public void close() {
+        glDeleteTextures(texture);
+        glDeleteVertexArrays(vao);
+        glDeleteBuffers(vbo);
+        program.close();
+        MemoryUtil.memFree(matrix);
+        MemoryUtil.memFree(upload);
+    }
+}

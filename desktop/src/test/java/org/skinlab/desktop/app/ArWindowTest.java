@@ -1,0 +1,110 @@
+package org.skinlab.desktop.app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.awt.image.BufferedImage;
+import java.nio.file.Files;
+import java.nio.file.Path;
+
+import javax.imageio.ImageIO;
+
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.skinlab.ar.CameraIntrinsics;
+import org.skinlab.ar.synthetic.PlacedMarker;
+import org.skinlab.desktop.ar.DemoVideo;
+import org.skinlab.desktop.ar.GrayImages;
+import org.skinlab.desktop.ar.IntrinsicsFile;
+import org.skinlab.desktop.render.GlTestDisplay;
+
+/**
+ * {@code skinlab ar} renders one frame of the demo video under Xvfb, once following marker 0 (the
+ * model shown) and once following marker 99 (not in the frame: only the camera image), at the
+ * camera's own size so that screen pixels are image pixels. The pixels that differ are the model's;
+ * they must stand on the marker: some within 12 px of where the marker's centre projects (the
+ * feet; the tracker's pose puts it within a pixel or two, the model's soles a few pixels around
+ * it), and all inside the projection of the box the model can occupy on a 10 cm marker (1.5
+ * marker widths tall, within a marker width of the centre, MarkerSceneTest), widened by 4 px.
+ */
+class ArWindowTest {
+    @BeforeAll
+    static void display() {
+        GlTestDisplay.assume();
+    }
+
+    @Test
+    void theModelStandsOnTheMarker(@TempDir Path dir) throws Exception {
+        CameraIntrinsics k = CameraIntrinsics.fromHorizontalFov(640, 480, 60);
+        DemoVideo video = new DemoVideo(k, 120);
+        int frame = 10;
+        Path frames = Files.createDirectories(dir.resolve("frames"));
+        GrayImages.writePng(video.frame(frame), frames.resolve("f.png"));
+        Path intrinsics = dir.resolve("k.json");
+        IntrinsicsFile.write(k, intrinsics);
+        Path with = dir.resolve("with.png");
+        Path without = dir.resolve("without.png");
+        for (Object[] run : new Object[][] {{"0", with}, {"99", without}}) {
+            ViewerWindowTest.Run r = ViewerWindowTest.skinlab("ar", "--images", frames.toString(), "--intrinsics",
+                    intrinsics.toString(), "--id", (String) run[0], "--hide-ui", "--size", "640x480", "--screenshot",
+                    run[1].toString());
+            assertEquals(0, r.status(), r.toString());
+        }
+        BufferedImage a = ImageIO.read(with.toFile());
+        BufferedImage b = ImageIO.read(without.toFile());
+        assertEquals(640, a.getWidth());
+        PlacedMarker m = video.marker(frame);
+        double[] centre = project(k, m, 0, 0, 0);
+        double[] box = boxBounds(k, m);
+        int changed = 0;
+        int outside = 0;
+        double nearest = Double.POSITIVE_INFINITY;
+        for (int y = 0; y < a.getHeight(); y++) {
+            for (int x = 0; x < a.getWidth(); x++) {
+                if (differs(a.getRGB(x, y), b.getRGB(x, y))) {
+                    changed++;
+                    if (x < box[0] - 4 || x > box[2] + 4 || y < box[1] - 4 || y > box[3] + 4) {
+                        outside++;
+                    }
+                    nearest = Math.min(nearest, Math.hypot(x - centre[0], y - centre[1]));
+                }
+            }
+        }
+        assertTrue(changed > 200, "the model is drawn: " + changed + " pixels");
+        assertEquals(0, outside, "model pixels outside the box over the marker " + java.util.Arrays.toString(box));
+        assertTrue(nearest < 12, "the feet at the marker's centre " + java.util.Arrays.toString(centre) + ": " + nearest);
+    }
+
+    private static boolean differs(int p, int q) {
+        int d = Math.abs((p >> 16 & 0xFF) - (q >> 16 & 0xFF)) + Math.abs((p >> 8 & 0xFF) - (q >> 8 & 0xFF))
+                + Math.abs((p & 0xFF) - (q & 0xFF));
+        return d > 24;
+    }
+
+    private static double[] project(CameraIntrinsics k, PlacedMarker m, double x, double y, double z) {
+        double[] r = m.rotation();
+        double[] t = m.translation();
+        double cx = r[0] * x + r[1] * y + r[2] * z + t[0];
+        double cy = r[3] * x + r[4] * y + r[5] * z + t[1];
+        double cz = r[6] * x + r[7] * y + r[8] * z + t[2];
+        return new double[] {k.fx() * cx / cz + k.cx(), k.fy() * cy / cz + k.cy()};
+    }
+
+    /** The screen bounds (x0, y0, x1, y1) of the box |x|, |y| <= 0.1 m, 0 <= z <= 0.155 m over the marker. */
+    private static double[] boxBounds(CameraIntrinsics k, PlacedMarker m) {
+        double[] b = {Double.MAX_VALUE, Double.MAX_VALUE, -Double.MAX_VALUE, -Double.MAX_VALUE};
+        for (double x : new double[] {-0.1, 0.1}) {
+            for (double y : new double[] {-0.1, 0.1}) {
+                for (double z : new double[] {0, 0.155}) {
+                    double[] p = project(k, m, x, y, z);
+                    b[0] = Math.min(b[0], p[0]);
+                    b[1] = Math.min(b[1], p[1]);
+                    b[2] = Math.max(b[2], p[0]);
+                    b[3] = Math.max(b[3], p[1]);
+                }
+            }
+        }
+        return b;
+    }
+}
