@@ -1,0 +1,125 @@
+package org.skinlab.desktop.ar;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+
+import org.jcodec.api.SequenceEncoder;
+import org.jcodec.common.io.NIOUtils;
+import org.jcodec.common.model.ColorSpace;
+import org.jcodec.common.model.Picture;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.skinlab.ar.CameraIntrinsics;
+import org.skinlab.ar.GrayImage;
+import org.skinlab.desktop.cli.SkinlabCommand;
+
+/** The frame sources of {@code skinlab ar}: order, looping, sizes, and clear errors. */
+class FrameSourceTest {
+    private static GrayImage flat(int w, int h, int value) {
+        GrayImage g = GrayImage.blank(w, h);
+        java.util.Arrays.fill(g.pixels(), (byte) value);
+        return g;
+    }
+
+    @Test
+    void anImageFolderPlaysInNameOrderAndLoops(@TempDir Path dir) throws Exception {
+        GrayImages.writePng(flat(32, 24, 30), dir.resolve("b.png"));
+        GrayImages.writePng(flat(32, 24, 10), dir.resolve("a.png"));
+        GrayImages.writePng(flat(32, 24, 20), dir.resolve("a2.png"));
+        Files.writeString(dir.resolve("readme.txt"), "x");
+        try (ImageFolderSource s = new ImageFolderSource(dir, 30)) {
+            assertEquals(32, s.width());
+            assertEquals(24, s.height());
+            int[] expected = {10, 20, 30, 10};
+            for (int v : expected) {
+                assertEquals(v, s.next().get(0, 0));
+            }
+        }
+    }
+
+    @Test
+    void aFolderWithoutImagesOrWithAnotherSizeOrABrokenFileIsNamed(@TempDir Path dir) throws Exception {
+        IllegalArgumentException empty = assertThrows(IllegalArgumentException.class, () -> new ImageFolderSource(dir, 30));
+        assertTrue(empty.getMessage().contains("no images"), empty.getMessage());
+        GrayImages.writePng(flat(32, 24, 0), dir.resolve("a.png"));
+        GrayImages.writePng(flat(16, 24, 0), dir.resolve("b.png"));
+        Files.writeString(dir.resolve("c.png"), "not a png");
+        try (ImageFolderSource s = new ImageFolderSource(dir, 30)) {
+            s.next();
+            IllegalArgumentException size = assertThrows(IllegalArgumentException.class, s::next);
+            assertTrue(size.getMessage().contains("b.png") && size.getMessage().contains("16x24"), size.getMessage());
+            IllegalArgumentException broken = assertThrows(IllegalArgumentException.class, s::next);
+            assertTrue(broken.getMessage().contains("c.png"), broken.getMessage());
+        }
+    }
+
+    @Test
+    void anMp4VideoGivesItsLuminanceFramesAndLoops(@TempDir Path dir) throws Exception {
+        // Written with JCodec's own H.264 encoder: three frames of known brightness.
+        Path mp4 = dir.resolve("v.mp4");
+        SequenceEncoder enc = SequenceEncoder.createSequenceEncoder(mp4.toFile(), 10);
+        int[] levels = {40, 128, 200};
+        for (int level : levels) {
+            Picture p = Picture.create(64, 48, ColorSpace.RGB);
+            java.util.Arrays.fill(p.getPlaneData(0), (byte) (level - 128)); // a gray frame
+            enc.encodeNativeFrame(p);
+        }
+        enc.finish();
+        try (VideoFileSource s = new VideoFileSource(mp4, 30)) {
+            assertEquals(64, s.width());
+            assertEquals(48, s.height());
+            int[] seen = new int[4];
+            for (int i = 0; i < 4; i++) {
+                seen[i] = s.next().get(32, 24);
+                // RGB to YUV (video range) and H.264 move a gray level by up to ~10%.
+                assertEquals(levels[i % 3], seen[i], 0.12 * levels[i % 3] + 8, "frame " + i);
+            }
+            assertTrue(seen[0] < seen[1] && seen[1] < seen[2], java.util.Arrays.toString(seen));
+            assertEquals(seen[0], seen[3], 2, "looped to the first frame");
+        }
+        IllegalArgumentException missing = assertThrows(IllegalArgumentException.class,
+                () -> new VideoFileSource(dir.resolve("none.mp4"), 30));
+        assertTrue(missing.getMessage().contains("none.mp4"), missing.getMessage());
+        Path junk = dir.resolve("junk.mp4");
+        Files.writeString(junk, "not a video");
+        IllegalArgumentException bad = assertThrows(IllegalArgumentException.class, () -> new VideoFileSource(junk, 30));
+        assertTrue(bad.getMessage().contains("junk.mp4"), bad.getMessage());
+    }
+
+    @Test
+    void withoutAWebcamArSaysSoInOneLineAndExits1() {
+        StringWriter out = new StringWriter();
+        StringWriter err = new StringWriter();
+        int status = SkinlabCommand.run(new PrintWriter(out, true), new PrintWriter(err, true), "ar", "--webcam",
+                "--exit-after-frames", "1");
+        // This machine has no camera; on one that has, the window would open instead.
+        org.junit.jupiter.api.Assumptions.assumeTrue(status != 0, "a webcam is attached here");
+        assertEquals(1, status, err.toString());
+        String[] lines = err.toString().strip().split("\n");
+        assertEquals(1, lines.length, err.toString());
+        assertTrue(lines[0].startsWith("skinlab: ") && lines[0].contains("webcam"), lines[0]);
+    }
+
+    @Test
+    void theFeedPublishesEachImageWithItsOwnPose(@TempDir Path dir) throws Exception {
+        CameraIntrinsics k = CameraIntrinsics.fromHorizontalFov(320, 240, 60);
+        DemoVideo video = new DemoVideo(k, 6);
+        for (int i = 0; i < 6; i++) {
+            GrayImages.writePng(video.frame(i), dir.resolve(String.format("f%02d.png", i)));
+        }
+        org.skinlab.ar.ArSession session = org.skinlab.ar.ArSession.of(new org.skinlab.ar.FiducialTracker(
+                org.skinlab.ar.TrackerConfig.defaults(0.1), k));
+        try (ArFeed feed = new ArFeed(new ImageFolderSource(dir, 60), session)) {
+            assertTrue(feed.awaitFirst(10_000), "a first frame");
+            ArFeed.Shot shot = feed.latest();
+            assertTrue(shot.pose().visible(), "the demo marker is tracked");
+            assertEquals(shot.number(), shot.pose().frameNumber(), "the shot's image and pose are one frame's");
+        }
+    }
+}
