@@ -7,11 +7,19 @@ import com.github.sarxos.webcam.Webcam;
 
 import org.skinlab.ar.GrayImage;
 
-/** The default webcam at 640x480 (webcam-capture); a clear error when there is none. */
+/**
+ * The default webcam at 640x480 (webcam-capture; on Linux its native grabber needs libv4l2, Debian's
+ * {@code libv4l-0}); a clear error when there is none.
+ */
 public final class WebcamSource implements FrameSource {
     private final Webcam webcam;
 
     public WebcamSource() {
+        if (linuxWithoutVideoDevices()) {
+            // Checked first: webcam-capture's native grabber prints its own errors when it finds nothing.
+            throw new IllegalStateException("no webcam found (no /dev/video* device): connect one, or use --images DIR "
+                    + "or --video FILE");
+        }
         Webcam found;
         try {
             found = Webcam.getDefault(3000);
@@ -26,6 +34,14 @@ public final class WebcamSource implements FrameSource {
         if (!webcam.open()) {
             throw new IllegalStateException("the webcam " + webcam.getName() + " does not open");
         }
+    }
+
+    private static boolean linuxWithoutVideoDevices() {
+        if (!System.getProperty("os.name", "").toLowerCase(java.util.Locale.ROOT).contains("linux")) {
+            return false;
+        }
+        String[] devices = new java.io.File("/dev").list((d, n) -> n.startsWith("video"));
+        return devices == null || devices.length == 0;
     }
 
     @Override
