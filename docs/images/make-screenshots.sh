@@ -12,3 +12,10 @@ run "$skinlab" view --size 1280x800 --script docs/images/viewer.txt
 run "$skinlab" view --size 1280x720 --split dqs --script docs/images/split.txt
 run "$skinlab" view assets/cylinders/cylinder-twist-high.dae --size 1280x720 --view difference \
   --script docs/images/difference.txt
+# The AR preview on one frame of the synthetic demo video (the model on the printed marker).
+demo=$(mktemp -d)
+"$skinlab" ar-demo "$demo" --frames 40 --size 960x720
+find "$demo" -name 'frame-*.png' ! -name frame-0002.png -delete
+run "$skinlab" ar --images "$demo" --intrinsics "$demo/intrinsics.json" --method dqs --size 1280x800 \
+  --screenshot docs/images/ar-demo.png
+rm -rf "$demo"
