@@ -34,6 +34,8 @@ final class ArPresenter implements AutoCloseable {
     private final Matrix4f markerView = new Matrix4f();
     private long uploaded = -1;
     private ArFeed.Shot shot;
+    private TrackingState shownState;
+    private String shownFailure;
 
     ArPresenter(ArSetup setup) {
         this.feed = setup.feed();
@@ -82,14 +84,28 @@ final class ArPresenter implements AutoCloseable {
         return shot == null ? TrackingState.SEARCHING : shot.pose().state();
     }
 
-    /** Waits for the feed's first tracked frame; false on timeout or failure. */
-    boolean awaitFirst(long millis) throws InterruptedException {
-        return feed.awaitFirst(millis);
+    /** For the status line: what changed since the last call (the tracking state, a camera failure), or null. */
+    String statusChange() {
+        TrackingState state = state();
+        String failure = feed.failure();
+        if (state == shownState && failure == shownFailure) {
+            return null;
+        }
+        shownState = state;
+        shownFailure = failure;
+        return failure != null ? "camera: " + failure : "AR: marker " + state.label();
     }
 
-    /** The feed's failure (an unreadable frame), or null. */
-    String failure() {
-        return feed.failure();
+    /** Headless runs: waits for the first tracked frame; null when there is one, else why not. */
+    String awaitCameraFrame() {
+        try {
+            if (feed.awaitFirst(20_000)) {
+                return null;
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+        return "no camera frame" + (feed.failure() != null ? ": " + feed.failure() : " in 20 s");
     }
 
     @Override

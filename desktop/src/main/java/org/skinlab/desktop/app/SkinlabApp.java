@@ -66,7 +66,6 @@ public final class SkinlabApp implements AutoCloseable {
     private final GlDebugLog debugLog;
     /** The AR mode's camera background and marker placement ({@code skinlab ar}), or null. */
     private final ArPresenter ar;
-    private org.skinlab.ar.TrackingState arState;
     private LoadedModel shown;
     private ModelRenderer renderer;
     private DifferenceProbe difference;
@@ -160,7 +159,9 @@ public final class SkinlabApp implements AutoCloseable {
             return INVALID_FILE;
         }
         LoadedModel model = viewer.current();
-        if (ar != null && !awaitCameraFrame()) {
+        String noFrame = ar == null ? null : ar.awaitCameraFrame();
+        if (noFrame != null) {
+            err.println("skinlab: " + noFrame);
             return FAILED;
         }
         // A still picture of a time at or past the clip's end shows the end, not the loop's start.
@@ -173,19 +174,6 @@ public final class SkinlabApp implements AutoCloseable {
             renderFrame(i == frames - 1);
         }
         return OK;
-    }
-
-    /** AR, headless: the first tracked camera frame, or false with the feed's error. */
-    private boolean awaitCameraFrame() {
-        try {
-            if (ar.awaitFirst(20_000)) {
-                return true;
-            }
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
-        err.println("skinlab: no camera frame" + (ar.failure() != null ? ": " + ar.failure() : " in 20 s"));
-        return false;
     }
 
     // ---------------------------------------------------------------------------- interactive
@@ -398,6 +386,14 @@ public final class SkinlabApp implements AutoCloseable {
         viewer.camera().projection(width / (float) Math.max(1, height), draw.viewProjection);
         viewer.camera().viewTimesInto(draw.viewProjection);
         viewer.camera().eye(draw.eye);
+        drawModel(method, cpuPositions, viewer.settings().instances(), viewer.settings().columns(), true);
+    }
+
+    /**
+     * The model with the viewer's switches, on the camera (and model matrix) already in
+     * {@link #draw}: {@code instances} copies in rows of {@code columns}, on the floor grid or not.
+     */
+    private void drawModel(SkinningMethod method, boolean cpuPositions, int instances, int columns, boolean withFloor) {
         draw.gpuSkinning = !cpuPositions;
         draw.method = method;
         draw.view = viewer.settings().drawView();
@@ -405,13 +401,16 @@ public final class SkinlabApp implements AutoCloseable {
         // Distances in the shader are in the file's units, as the probe's size is.
         draw.scalarFull = draw.view == DrawSettings.View.DIFFERENCE
                 ? (float) (DIFFERENCE_FULL * difference.size()) : 1f;
-        draw.instances = viewer.settings().instances();
-        draw.gridColumns = viewer.settings().columns();
+        draw.instances = instances;
+        draw.gridColumns = columns;
         draw.spacing = shown.framing().gridSpacing();
         draw.wireframe = viewer.settings().wireframe();
-        // The floor reaches a little beyond the model, or the grid of its copies.
-        floorExtent = 1.3f * shown.framing().gridSphere(draw.instances, draw.gridColumns, floorCentre);
-        floor.draw(draw, floorCentre.x, floorCentre.z, floorExtent);
+        if (withFloor) {
+            // The floor reaches a little beyond the model, or the grid of its copies.
+            floorExtent = 1.3f * shown.framing().gridSphere(draw.instances, draw.gridColumns, floorCentre);
+            floor.draw(draw, floorCentre.x, floorCentre.z, floorExtent);
+        }
+        glEnable(GL_DEPTH_TEST);
         renderer.draw(draw);
         if (viewer.settings().skeleton()) {
             renderer.drawSkeleton(draw);
@@ -423,32 +422,17 @@ public final class SkinlabApp implements AutoCloseable {
         int left = ui.reservedLeft() < size[0] / 2 ? ui.reservedLeft() : 0;
         glViewport(left, 0, size[0] - left, size[1]);
         ar.drawBackground(size[0] - left, size[1]);
-        org.skinlab.ar.TrackingState state = ar.state();
-        if (state != arState) {
-            arState = state;
-            viewer.setStatus(ar.failure() != null ? "camera: " + ar.failure() : "AR: marker " + state.label());
+        String change = ar.statusChange();
+        if (change != null) {
+            viewer.setStatus(change);
         }
     }
 
     /** AR: the model on the marker, or nothing while the marker is not shown. */
     private void drawArModel(SkinningMethod method, boolean cpuPositions, int x, int width, int height) {
         glViewport(x, 0, width, height);
-        if (!ar.placeModel(shown.framing(), config, draw, width, height)) {
-            return;
-        }
-        draw.gpuSkinning = !cpuPositions;
-        draw.method = method;
-        draw.view = viewer.settings().drawView();
-        draw.selectedNode = viewer.selectedJointNode();
-        draw.scalarFull = draw.view == DrawSettings.View.DIFFERENCE
-                ? (float) (DIFFERENCE_FULL * difference.size()) : 1f;
-        draw.instances = 1;
-        draw.gridColumns = 1;
-        draw.wireframe = viewer.settings().wireframe();
-        glEnable(GL_DEPTH_TEST);
-        renderer.draw(draw);
-        if (viewer.settings().skeleton()) {
-            renderer.drawSkeleton(draw);
+        if (ar.placeModel(shown.framing(), config, draw, width, height)) {
+            drawModel(method, cpuPositions, 1, 1, false);
         }
     }
 
