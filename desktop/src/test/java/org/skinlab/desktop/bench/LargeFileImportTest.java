@@ -80,11 +80,17 @@ class LargeFileImportTest {
     }
 
     /**
-     * The jars and class folders of the application, found from its classes (a test runner's
-     * own {@code java.class.path} need not list them).
+     * The jars and class folders of the application: the test JVM's class path (every library the
+     * command line's subcommands name, BoofCV, PDFBox, JCodec, ...), plus the places of its own
+     * classes, found from them (a test runner's own {@code java.class.path} need not list those).
      */
     private static String classPath() throws Exception {
         Set<String> entries = new LinkedHashSet<>();
+        for (String e : System.getProperty("java.class.path", "").split(File.pathSeparator)) {
+            if (!e.isEmpty()) {
+                entries.add(e);
+            }
+        }
         for (Class<?> c : new Class<?>[] {SkinlabMain.class, ColladaImporter.class, org.joml.Matrix4f.class,
                 picocli.CommandLine.class, ObjectMapper.class, com.fasterxml.jackson.core.JsonParser.class,
                 com.fasterxml.jackson.annotation.JsonProperty.class}) {
