@@ -73,7 +73,7 @@ public final class SkinlabActivity extends Activity {
     private volatile ArSession session;
     private volatile SkeletalAnimatedMesh mesh;
     private volatile String problem = "";
-    private boolean resumed;
+    private volatile boolean resumed;
 
     private final Runnable statusUpdate = new Runnable() {
         @Override

@@ -69,6 +69,9 @@ final class ToolbarPanel {
         ImGui.sameLine();
         ImGui.textUnformatted(config.isAnimationRunning() ? "playing" : "paused");
         widgets.toggle(ViewerAction.TOGGLE_MESH_UPDATES, "Mesh updates", config.isMeshUpdatesRunning());
+        ImGui.sameLine();
+        // The thesis' AR interaction: used by `skinlab ar`; outside AR it changes nothing visible.
+        widgets.toggle(ViewerAction.TOGGLE_FOLLOW_CAMERA, "Follow camera", config.isFollowCamera());
         widgets.action(ViewerAction.SLOWER);
         ImGui.sameLine();
         widgets.action(ViewerAction.FASTER);

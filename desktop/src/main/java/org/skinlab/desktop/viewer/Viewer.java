@@ -264,6 +264,9 @@ public final class Viewer implements AutoCloseable {
             case TOGGLE_MESH_UPDATES:
                 config.setMeshUpdatesRunning(!config.isMeshUpdatesRunning());
                 break;
+            case TOGGLE_FOLLOW_CAMERA:
+                config.setFollowCamera(!config.isFollowCamera());
+                break;
             case NEXT_METHOD:
                 config.nextMethod();
                 break;

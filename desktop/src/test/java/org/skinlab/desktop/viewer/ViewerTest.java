@@ -107,6 +107,8 @@ class ViewerTest {
             double before = v.current().mesh().playbackTime();
             v.perform(ViewerAction.STEP_FORWARD);
             assertEquals(before + Viewer.STEP_SECONDS, v.current().mesh().playbackTime(), 1e-9);
+            v.perform(ViewerAction.TOGGLE_FOLLOW_CAMERA);
+            assertTrue(c.isFollowCamera(), "follow the camera (AR mode)");
             v.perform(ViewerAction.QUIT);
             assertTrue(v.quitRequested());
             for (ViewerAction a : ViewerAction.values()) {
