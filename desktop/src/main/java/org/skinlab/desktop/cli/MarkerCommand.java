@@ -15,7 +15,7 @@ import picocli.CommandLine.Spec;
 
 /** {@code skinlab marker}: the printable marker as an A4 PDF and a PNG at exact physical size. */
 @Command(name = "marker", mixinStandardHelpOptions = true,
-        description = "Write the printable marker: an A4 PDF (print at 100%) and/or a PNG at exact size.")
+        description = "Write the printable marker: an A4 PDF (print at 100%%) and/or a PNG at exact size.")
 public final class MarkerCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
