@@ -19,3 +19,12 @@ find "$demo" -name 'frame-*.png' ! -name frame-0002.png -delete
 run "$skinlab" ar --images "$demo" --intrinsics "$demo/intrinsics.json" --method dqs --size 1280x800 \
   --screenshot docs/images/ar-demo.png
 rm -rf "$demo"
+# LBS, DQS and CoR side by side (docs/skinning.md): the twist cylinder at 172 degrees and the bend
+# cylinder at 90 degrees seen from the side.
+for m in lbs dqs cor; do
+  run "$skinlab" view assets/cylinders/cylinder-twist-high.dae --method "$m" --time 4 --hide-ui --size 360x540 \
+    --screenshot "docs/images/methods-twist-$m.png"
+  run "$skinlab" view assets/cylinders/cylinder-bend.dae --method "$m" --hide-ui --size 360x540 \
+    --script docs/images/methods-bend.txt
+  mv docs/images/methods-bend.png "docs/images/methods-bend-$m.png"
+done
