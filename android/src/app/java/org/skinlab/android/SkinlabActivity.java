@@ -27,6 +27,7 @@ import android.widget.LinearLayout;
 import android.widget.TextView;
 
 import org.skinlab.android.logic.AppActions;
+import org.skinlab.android.logic.MarkerSize;
 import org.skinlab.android.logic.ModelCatalog;
 import org.skinlab.android.logic.PermissionFlow;
 import org.skinlab.android.logic.StatusLine;
@@ -34,6 +35,7 @@ import org.skinlab.ar.ArPose;
 import org.skinlab.ar.ArSession;
 import org.skinlab.ar.CameraIntrinsics;
 import org.skinlab.ar.FiducialTracker;
+import org.skinlab.ar.MarkerScene;
 import org.skinlab.ar.TrackerConfig;
 import org.skinlab.collada.ColladaImporter;
 import org.skinlab.model.Model;
@@ -42,15 +44,14 @@ import org.skinlab.simulation.SkeletalAnimatedMesh;
 
 /**
  * The AR app's one Activity: the camera image with the animated character standing on the printed
- * marker (docs/marker: ArUco MIP_36h12 id 0, 100 mm), a status line, and a button for every user
+ * marker (docs/marker: ArUco MIP_36h12 id 0, 100 mm by default; a button steps through other
+ * printed sizes), a status line, and a button for every user
  * function of the thesis ({@link AppActions}). Threads: the UI thread (this class), the GL thread
  * ({@link ArRenderer}), the camera and tracking threads ({@link CameraSource}), the simulation
  * thread ({@link SkeletalAnimatedMesh}) and one loader thread for models. onPause closes the camera
  * and stops the simulation; onResume starts both again.
  */
 public final class SkinlabActivity extends Activity {
-    /** The printed marker's black square (docs/marker's default). */
-    static final double MARKER_SIZE_METRES = 0.10;
     private static final int CAMERA_REQUEST = 1;
 
     private final PermissionFlow permission = new PermissionFlow();
@@ -58,6 +59,8 @@ public final class SkinlabActivity extends Activity {
     private final Handler ui = new Handler(Looper.getMainLooper());
     private final ExecutorService loader = Executors.newSingleThreadExecutor(r -> new Thread(r, "model-loader"));
     private final List<Button> buttons = new ArrayList<>();
+    /** The printed marker's size (docs/marker's 100 mm unless the user taps another). */
+    private final MarkerSize markerSize = new MarkerSize(metres -> ui.post(this::onMarkerSize));
     private List<AppActions.Action> actions;
     private ModelCatalog catalog;
     private GLSurfaceView glView;
@@ -116,7 +119,7 @@ public final class SkinlabActivity extends Activity {
 
         LinearLayout row = new LinearLayout(this);
         row.setOrientation(LinearLayout.HORIZONTAL);
-        actions = AppActions.of(config, this::nextModel);
+        actions = AppActions.of(config, this::nextModel, markerSize);
         for (AppActions.Action a : actions) {
             Button b = new Button(this);
             b.setAllCaps(false);
@@ -246,10 +249,7 @@ public final class SkinlabActivity extends Activity {
             public void onOpened(CameraIntrinsics k, int orientation) {
                 intrinsics = k;
                 sensorOrientation = orientation;
-                ArSession s = ArSession.of(new FiducialTracker(TrackerConfig.defaults(MARKER_SIZE_METRES), k));
-                session = s;
-                camera.setSession(s);
-                renderer.setSession(s, k, imageRotation());
+                startSession();
                 problem = "";
             }
 
@@ -259,6 +259,24 @@ public final class SkinlabActivity extends Activity {
             }
         });
         camera.open(previewTexture);
+    }
+
+    /** A tracking session for the open camera and the marker size, handed to the camera and the renderer. */
+    private void startSession() {
+        ArSession s = ArSession.of(new FiducialTracker(TrackerConfig.defaults(markerSize.metres()), intrinsics));
+        session = s;
+        camera.setSession(s);
+        renderer.setMarkerScene(new MarkerScene(markerSize.metres()));
+        renderer.setSession(s, intrinsics, imageRotation());
+    }
+
+    /** On the UI thread: another marker size; the tracking starts over with it. */
+    private void onMarkerSize() {
+        if (camera != null && intrinsics != null) {
+            startSession();
+        } else {
+            renderer.setMarkerScene(new MarkerScene(markerSize.metres()));
+        }
     }
 
     private void closeCamera() {

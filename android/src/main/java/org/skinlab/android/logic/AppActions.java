@@ -20,8 +20,11 @@ public final class AppActions {
     private AppActions() {
     }
 
-    /** The buttons over {@code config}; {@code nextMesh} switches to the next bundled model. */
-    public static List<Action> of(AnimationConfig config, Runnable nextMesh) {
+    /**
+     * The buttons over {@code config}; {@code nextMesh} switches to the next bundled model,
+     * {@code marker} is the printed marker's size (measured by the user: the poses scale with it).
+     */
+    public static List<Action> of(AnimationConfig config, Runnable nextMesh, MarkerSize marker) {
         return List.of(
                 new Action("mesh-updates", () -> config.isMeshUpdatesRunning() ? "Stop mesh" : "Start mesh",
                         () -> config.setMeshUpdatesRunning(!config.isMeshUpdatesRunning())),
@@ -34,6 +37,7 @@ public final class AppActions {
                 new Action("interpolation", () -> config.interpolation().name(), config::nextInterpolation),
                 new Action("slower", () -> "Slower", config::slower),
                 new Action("faster", () -> "Faster", config::faster),
-                new Action("next-mesh", () -> "Next mesh", nextMesh));
+                new Action("next-mesh", () -> "Next mesh", nextMesh),
+                new Action("marker-size", marker::label, marker::next));
     }
 }

@@ -24,9 +24,19 @@ class AndroidLogicTest {
     void everyButtonDoesItsAnimationConfigFunction() {
         AnimationConfig config = new AnimationConfig();
         AtomicInteger next = new AtomicInteger();
-        List<AppActions.Action> actions = AppActions.of(config, next::incrementAndGet);
+        double[] told = new double[1];
+        MarkerSize marker = new MarkerSize(m -> told[0] = m);
+        List<AppActions.Action> actions = AppActions.of(config, next::incrementAndGet, marker);
         assertEquals(List.of("mesh-updates", "animation", "follow-camera", "method", "interpolation", "slower", "faster",
-                "next-mesh"), actions.stream().map(AppActions.Action::id).toList());
+                "next-mesh", "marker-size"), actions.stream().map(AppActions.Action::id).toList());
+        assertEquals("Marker 100 mm", actions.get(8).label().get(), "docs/marker's default");
+        actions.get(8).run().run();
+        assertEquals(0.15, told[0], 1e-12);
+        assertEquals("Marker 150 mm", actions.get(8).label().get());
+        for (int i = 1; i < MarkerSize.SIZES_MM.length; i++) {
+            actions.get(8).run().run();
+        }
+        assertEquals(100, marker.millimetres(), 0, "round the sizes back to 100 mm");
         AppActions.Action mesh = actions.get(0);
         assertEquals("Stop mesh", mesh.label().get());
         mesh.run().run();
