@@ -1,35 +1,59 @@
 package org.skinlab.skinning;
 
 import java.nio.file.Path;
+import java.util.Arrays;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.stream.IntStream;
 
 /**
  * The per-point centres of rotation of skinning with optimized centers of rotation (Le and Hodgins,
  * "Real-time Skeletal Skinning with Optimized Centers of Rotation", SIGGRAPH 2016, section 4):
- * for a point with weights w_i at rest, the centre is the area-weighted mean of the triangle
- * centroids, each weighted by how similar the triangle's weights are to the point's:
+ * for a point with weights w_i at rest, the centre is the area-weighted mean of the surface,
+ * weighted by how similar the weights there are to the point's:
  *
  * <pre>
  * p*_i = sum_t s(w_i, w_t) c_t a_t / sum_t s(w_i, w_t) a_t
  * s(w_p, w_v) = sum_{j != k} w_pj w_pk w_vj w_vk exp(-(w_pj w_vk - w_pk w_vj)^2 / sigma^2)
  * </pre>
  *
- * with c_t, a_t the rest centroid and area of triangle t and w_t the mean of its corners'
- * weights. Two weight vectors are similar only where both have weight on the same two joints, so
- * a point with one influence (rigid) or none has no similar triangle: its centre is undefined,
- * and it is set to the point itself, which makes the run-time formula reduce to LBS there (the
- * point moves with its one joint, rigidly).
+ * over the triangles t of the rest mesh subdivided until the weights of every edge's ends are at
+ * most epsilon apart (the paper's numerical integration, {@link SimilarityTriangles}), with c_t,
+ * a_t a (sub-)triangle's centroid and area and w_t the mean of its corners' weights. Two weight
+ * vectors are similar only where both weight the same two joints, so a point with one influence
+ * (rigid) or none has no similar triangle: its centre is undefined, and it is set to the point
+ * itself, which makes the run-time formula reduce to LBS there (the point moves with its one
+ * joint, rigidly).
  *
- * <p><b>Cost.</b> Every point against every triangle: O(P T k^2) for P points, T triangles and
- * k influences per point (only joints both share enter the inner sum, so most pairs cost one
- * look-up). Computed per mesh position, not per render vertex (vertices sharing a position share
- * its weights), in parallel over positions. The paper's acceleration (clustering similar weight
- * vectors) is not needed at our sizes: docs/skinning.md has the timings.
+ * <p><b>Cost.</b> Per point, the triangles sharing two of its joints, each cut into n^2
+ * sub-triangles, k^2 similarity terms each: O(P T_j n^2 k^2) for P points and T_j triangles
+ * around a joint pair, far below the paper's every-point-against-every-triangle. Computed per
+ * mesh position, not per render vertex (vertices sharing a position share its weights), in
+ * parallel over positions. The paper's further acceleration (clustering similar weight vectors)
+ * is not needed at our sizes: docs/skinning.md has the timings ({@code skinlab bench centres}).
  */
 public final class CentersOfRotation {
-    /** The paper's default width of the similarity kernel. */
-    public static final double DEFAULT_SIGMA = 0.1;
+    /**
+     * The precomputation's two parameters: the width of the similarity kernel and the largest
+     * weight distance along an edge of the integration mesh (both the paper's defaults: 0.1).
+     * Epsilon may be infinite (no subdivision, the triangles as they are); below
+     * {@link #MIN_WEIGHT_EPSILON} the subdivision would grow without bound and is refused.
+     */
+    public record Parameters(double sigma, double weightEpsilon) {
+        public static final Parameters DEFAULT = new Parameters(0.1, 0.1);
+
+        public Parameters {
+            if (!(sigma > 0) || Double.isInfinite(sigma)) {
+                throw new IllegalArgumentException("sigma " + sigma + " (need a finite width > 0)");
+            }
+            if (!(weightEpsilon >= MIN_WEIGHT_EPSILON)) {
+                throw new IllegalArgumentException("weight epsilon " + weightEpsilon + " (need at least "
+                        + MIN_WEIGHT_EPSILON + ", or infinity for no subdivision)");
+            }
+        }
+    }
+
+    /** The smallest weight epsilon: an edge from one joint to another (distance sqrt 2) in 142 segments. */
+    public static final double MIN_WEIGHT_EPSILON = 0.01;
 
     /** Told how far a computation is: positions done of all; called from worker threads. */
     @FunctionalInterface
@@ -49,7 +73,7 @@ public final class CentersOfRotation {
     /**
      * Keeps computed centres in {@code directory} (created when needed), one file per geometry
      * named by a hash of everything the centres depend on (bind positions, triangles, influences,
-     * sigma), so that loading a file again costs a file read. Null turns the cache off (the
+     * parameters), so that loading a file again costs a file read. Null turns the cache off (the
      * default). Set once by an application at start; a cache that cannot be read or written is
      * passed by silently (the centres are then computed).
      */
@@ -62,21 +86,21 @@ public final class CentersOfRotation {
     }
 
     /**
-     * The centres from the cache when it holds them for this geometry and sigma, else computed
-     * (and then stored in the cache, if one is set).
+     * The centres from the cache when it holds them for this geometry and these parameters, else
+     * computed (and then stored in the cache, if one is set).
      */
-    public static float[] computeOrLoad(SkinnedGeometry geometry, double sigma, Progress progress) {
+    public static float[] computeOrLoad(SkinnedGeometry geometry, Parameters parameters, Progress progress) {
         Path dir = cacheDirectory;
         if (dir == null) {
-            return compute(geometry, sigma, progress);
+            return compute(geometry, parameters, progress);
         }
-        String key = CentresCache.key(geometry, sigma);
+        String key = CentresCache.key(geometry, parameters);
         float[] cached = CentresCache.load(dir, key, 3 * geometry.pointCount());
         if (cached != null) {
             progress.update(1, 1);
             return cached;
         }
-        float[] centres = compute(geometry, sigma, progress);
+        float[] centres = compute(geometry, parameters, progress);
         CentresCache.store(dir, key, centres);
         return centres;
     }
@@ -85,25 +109,34 @@ public final class CentersOfRotation {
      * The centre of every point of {@code geometry}, 3 floats per point in bind space (the space
      * of {@link SkinnedGeometry#positionArray()}).
      */
-    public static float[] compute(SkinnedGeometry geometry, double sigma, Progress progress) {
-        if (!(sigma > 0) || Double.isInfinite(sigma)) {
-            throw new IllegalArgumentException("sigma " + sigma + " (need a finite width > 0)");
-        }
+    public static float[] compute(SkinnedGeometry geometry, Parameters parameters, Progress progress) {
+        return compute(geometry, triangles(geometry), parameters, progress);
+    }
+
+    /** How many triangles the integration runs over after subdivision (for reports and benchmarks). */
+    public static long integrationTriangles(SkinnedGeometry geometry, Parameters parameters) {
+        return new SimilarityTriangles(geometry, triangles(geometry), parameters.weightEpsilon()).integrationTriangles();
+    }
+
+    private static int[] triangles(SkinnedGeometry geometry) {
+        return geometry.mesh() == null ? new int[0] : geometry.mesh().triangles();
+    }
+
+    /** The centres over the given triangles (indices of the geometry's points). */
+    static float[] compute(SkinnedGeometry geometry, int[] triangles, Parameters parameters, Progress progress) {
         SkinnedGeometry positions = geometry.sharedPositions() != null ? geometry.sharedPositions() : geometry;
-        int[] triangles = geometry.mesh() == null ? new int[0] : geometry.mesh().triangles();
-        Triangles t = new Triangles(geometry, triangles);
+        SimilarityTriangles t = new SimilarityTriangles(geometry, triangles, parameters.weightEpsilon());
         int n = positions.pointCount();
         float[] centres = new float[3 * n];
         AtomicInteger done = new AtomicInteger();
         int chunk = 64;
-        double inverseSigmaSquared = 1.0 / (sigma * sigma);
+        double inverseSigmaSquared = 1.0 / (parameters.sigma() * parameters.sigma());
         IntStream.range(0, (n + chunk - 1) / chunk).parallel().forEach(c -> {
             int from = c * chunk;
             int to = Math.min(n, from + chunk);
-            float[] weightOfJoint = new float[positions.jointCount()];
-            float[] shared = new float[2 * t.maxSupport];
+            Scratch scratch = new Scratch(positions, t);
             for (int p = from; p < to; p++) {
-                centre(positions, p, t, inverseSigmaSquared, weightOfJoint, shared, centres);
+                centre(positions, p, t, inverseSigmaSquared, scratch, centres);
             }
             progress.update(done.addAndGet(to - from), n);
         });
@@ -118,150 +151,131 @@ public final class CentersOfRotation {
         return perPoint;
     }
 
-    /** One point's centre into {@code out}; the scratch arrays are the caller's thread's own. */
-    private static void centre(SkinnedGeometry g, int p, Triangles t, double inverseSigmaSquared, float[] weightOfJoint,
-            float[] shared, float[] out) {
+    /** One worker's arrays, reused for its points. */
+    private static final class Scratch {
+        /** The point's weight on each joint (zero elsewhere between points). */
+        final float[] weightOfJoint;
+        final int[] pointJoints;
+        final byte[] hits;
+        final int[] candidates;
+        /** Per shared joint: w_p, then the corners' weights wa, wb, wc. */
+        final double[] shared;
+        /** Per shared joint: the weight at the sub-triangle's centroid. */
+        final double[] atCentroid;
+        /** The centroid sums x, y, z weighted by similarity times area, and that weight's sum. */
+        final double[] sums = new double[4];
+
+        Scratch(SkinnedGeometry g, SimilarityTriangles t) {
+            weightOfJoint = new float[g.jointCount()];
+            pointJoints = new int[g.influencesPerPoint()];
+            hits = new byte[t.count];
+            candidates = new int[t.count];
+            shared = new double[4 * t.maxSupport];
+            atCentroid = new double[t.maxSupport];
+        }
+    }
+
+    /** One point's centre into {@code out}. */
+    private static void centre(SkinnedGeometry g, int p, SimilarityTriangles t, double inverseSigmaSquared,
+            Scratch scratch, float[] out) {
         int k = g.influencesPerPoint();
         int[] joints = g.jointArray();
         float[] weights = g.weightArray();
+        float[] weightOfJoint = scratch.weightOfJoint;
         int support = 0;
         for (int a = 0; a < k; a++) {
             float w = weights[k * p + a];
             if (w > 0) {
-                weightOfJoint[joints[k * p + a]] += w;
-                support++;
+                int j = joints[k * p + a];
+                if (weightOfJoint[j] == 0) {
+                    scratch.pointJoints[support++] = j;
+                }
+                weightOfJoint[j] += w;
             }
         }
-        double sx = 0;
-        double sy = 0;
-        double sz = 0;
-        double sum = 0;
-        if (support >= 2) {
-            for (int tri = 0; tri < t.count; tri++) {
-                // The joints both weight vectors have: (w_p, w_t) pairs.
-                int m = 0;
-                for (int e = t.start[tri]; e < t.start[tri + 1]; e++) {
-                    float wp = weightOfJoint[t.joints[e]];
-                    if (wp > 0) {
-                        shared[2 * m] = wp;
-                        shared[2 * m + 1] = t.weights[e];
-                        m++;
+        double[] sums = scratch.sums;
+        Arrays.fill(sums, 0);
+        int found = support >= 2 ? t.candidates(scratch.pointJoints, support, scratch.hits, scratch.candidates) : 0;
+        double[] shared = scratch.shared;
+        for (int c = 0; c < found; c++) {
+            int tri = scratch.candidates[c];
+            // The joints both the point and the triangle weight: w_p and the corners' weights.
+            int m = 0;
+            for (int e = t.start[tri]; e < t.start[tri + 1]; e++) {
+                float wp = weightOfJoint[t.joints[e]];
+                if (wp > 0) {
+                    shared[4 * m] = wp;
+                    shared[4 * m + 1] = t.cornerWeights[3 * e];
+                    shared[4 * m + 2] = t.cornerWeights[3 * e + 1];
+                    shared[4 * m + 3] = t.cornerWeights[3 * e + 2];
+                    m++;
+                }
+            }
+            // The n x n grid's sub-triangles by their centroids, at (u, v) n along the edges ab and
+            // ac: upward ones at (i + 1/3, j + 1/3), downward ones at (i + 2/3, j + 2/3).
+            int n = t.segments[tri];
+            for (int i = 0; i < n; i++) {
+                for (int j = 0; j < n - i; j++) {
+                    add(t, tri, (i + 1.0 / 3) / n, (j + 1.0 / 3) / n, shared, m, inverseSigmaSquared, scratch);
+                    if (i + j < n - 1) {
+                        add(t, tri, (i + 2.0 / 3) / n, (j + 2.0 / 3) / n, shared, m, inverseSigmaSquared, scratch);
                     }
                 }
-                if (m < 2) {
-                    continue;
-                }
-                double s = 0;
-                for (int j = 0; j < m; j++) {
-                    double pj = shared[2 * j];
-                    double tj = shared[2 * j + 1];
-                    for (int l = j + 1; l < m; l++) {
-                        double pl = shared[2 * l];
-                        double tl = shared[2 * l + 1];
-                        double d = pj * tl - pl * tj;
-                        s += pj * pl * tj * tl * Math.exp(-d * d * inverseSigmaSquared);
-                    }
-                }
-                double sa = s * t.area[tri];
-                sx += sa * t.centroid[3 * tri];
-                sy += sa * t.centroid[3 * tri + 1];
-                sz += sa * t.centroid[3 * tri + 2];
-                sum += sa;
             }
         }
         float[] rest = g.positionArray();
-        if (sum > 0) {
-            out[3 * p] = (float) (sx / sum);
-            out[3 * p + 1] = (float) (sy / sum);
-            out[3 * p + 2] = (float) (sz / sum);
+        if (sums[3] > 0) {
+            out[3 * p] = (float) (sums[0] / sums[3]);
+            out[3 * p + 1] = (float) (sums[1] / sums[3]);
+            out[3 * p + 2] = (float) (sums[2] / sums[3]);
         } else {
             out[3 * p] = rest[3 * p];
             out[3 * p + 1] = rest[3 * p + 1];
             out[3 * p + 2] = rest[3 * p + 2];
         }
-        for (int a = 0; a < k; a++) {
-            weightOfJoint[joints[k * p + a]] = 0;
+        for (int a = 0; a < support; a++) {
+            weightOfJoint[scratch.pointJoints[a]] = 0;
         }
     }
 
-    /** Per triangle: rest centroid, area, and its corners' mean weights as a sparse list. */
-    private static final class Triangles {
-        final int count;
-        final double[] centroid;
-        final double[] area;
-        final int[] start;
-        final int[] joints;
-        final float[] weights;
-        final int maxSupport;
-
-        Triangles(SkinnedGeometry g, int[] triangles) {
-            count = triangles.length / 3;
-            centroid = new double[3 * count];
-            area = new double[count];
-            start = new int[count + 1];
-            int k = g.influencesPerPoint();
-            int[] gj = g.jointArray();
-            float[] gw = g.weightArray();
-            float[] rest = g.positionArray();
-            int[] scratchJoints = new int[3 * k];
-            float[] scratchWeights = new float[3 * k];
-            int[] allJoints = new int[3 * k * Math.max(1, count)];
-            float[] allWeights = new float[3 * k * Math.max(1, count)];
-            int used = 0;
-            int most = 0;
-            for (int t = 0; t < count; t++) {
-                int a = triangles[3 * t];
-                int b = triangles[3 * t + 1];
-                int c = triangles[3 * t + 2];
-                double abx = rest[3 * b] - rest[3 * a];
-                double aby = rest[3 * b + 1] - rest[3 * a + 1];
-                double abz = rest[3 * b + 2] - rest[3 * a + 2];
-                double acx = rest[3 * c] - rest[3 * a];
-                double acy = rest[3 * c + 1] - rest[3 * a + 1];
-                double acz = rest[3 * c + 2] - rest[3 * a + 2];
-                double cx = aby * acz - abz * acy;
-                double cy = abz * acx - abx * acz;
-                double cz = abx * acy - aby * acx;
-                area[t] = 0.5 * Math.sqrt(cx * cx + cy * cy + cz * cz);
-                for (int d = 0; d < 3; d++) {
-                    centroid[3 * t + d] = (rest[3 * a + d] + rest[3 * b + d] + rest[3 * c + d]) / 3.0;
-                }
-                // Merge the corners' influences: each distinct joint once, weight the mean.
-                int m = 0;
-                for (int corner = 0; corner < 3; corner++) {
-                    int v = triangles[3 * t + corner];
-                    for (int e = 0; e < k; e++) {
-                        float w = gw[k * v + e];
-                        if (w <= 0) {
-                            continue;
-                        }
-                        int j = gj[k * v + e];
-                        int found = -1;
-                        for (int q = 0; q < m; q++) {
-                            if (scratchJoints[q] == j) {
-                                found = q;
-                                break;
-                            }
-                        }
-                        if (found < 0) {
-                            scratchJoints[m] = j;
-                            scratchWeights[m] = w / 3f;
-                            m++;
-                        } else {
-                            scratchWeights[found] += w / 3f;
-                        }
-                    }
-                }
-                start[t] = used;
-                System.arraycopy(scratchJoints, 0, allJoints, used, m);
-                System.arraycopy(scratchWeights, 0, allWeights, used, m);
-                used += m;
-                most = Math.max(most, m);
-            }
-            start[count] = used;
-            joints = java.util.Arrays.copyOf(allJoints, used);
-            weights = java.util.Arrays.copyOf(allWeights, used);
-            maxSupport = Math.max(1, most);
+    /**
+     * Adds the sub-triangle of triangle {@code tri} centred at (u, v) along its edges ab and ac:
+     * its centroid times similarity times area to {@code sums[0..3)}, similarity times area to
+     * {@code sums[3]}.
+     */
+    private static void add(SimilarityTriangles t, int tri, double u, double v, double[] shared, int m,
+            double inverseSigmaSquared, Scratch scratch) {
+        double sa = t.subArea[tri] * similarity(shared, m, 1 - u - v, u, v, inverseSigmaSquared, scratch.atCentroid);
+        double[] x = t.corners;
+        int o = 9 * tri;
+        double[] sums = scratch.sums;
+        for (int d = 0; d < 3; d++) {
+            sums[d] += sa * (x[o + d] + u * (x[o + 3 + d] - x[o + d]) + v * (x[o + 6 + d] - x[o + d]));
         }
+        sums[3] += sa;
+    }
+
+    /**
+     * The similarity of the point's weights to those at barycentric (ba, bb, bc) of a triangle,
+     * over the shared joints only (the others contribute nothing); each unordered pair once, which
+     * halves the paper's sum over ordered pairs, and the factor cancels in the centre's quotient.
+     */
+    private static double similarity(double[] shared, int m, double ba, double bb, double bc,
+            double inverseSigmaSquared, double[] at) {
+        for (int q = 0; q < m; q++) {
+            at[q] = ba * shared[4 * q + 1] + bb * shared[4 * q + 2] + bc * shared[4 * q + 3];
+        }
+        double s = 0;
+        for (int q = 0; q < m; q++) {
+            double pq = shared[4 * q];
+            double tq = at[q];
+            for (int r = q + 1; r < m; r++) {
+                double pr = shared[4 * r];
+                double tr = at[r];
+                double d = pq * tr - pr * tq;
+                s += pq * pr * tq * tr * Math.exp(-d * d * inverseSigmaSquared);
+            }
+        }
+        return s;
     }
 }

@@ -13,19 +13,20 @@ import java.security.NoSuchAlgorithmException;
 /**
  * The files of {@link CentersOfRotation}'s cache: {@code HASH.cor}, a header (magic, version,
  * float count) and the centres, little-endian. The name is the SHA-256 of everything the centres
- * depend on, so a changed file or sigma is a different name and a stale entry is never read.
+ * depend on, so a changed file or parameter is a different name and a stale entry is never read.
  * Files are written to a temporary name and moved into place, so a reader never sees half a file.
  */
 final class CentresCache {
     private static final int MAGIC = 0x534b434f; // "SKCO"
-    private static final int VERSION = 1;
+    /** 2: the integration mesh subdivided by weight epsilon (version 1 integrated over the triangles as they were). */
+    private static final int VERSION = 2;
     private static final int HEADER = 12;
 
     private CentresCache() {
     }
 
-    /** The hex SHA-256 of the geometry's positions, triangles, influences and sigma. */
-    static String key(SkinnedGeometry g, double sigma) {
+    /** The hex SHA-256 of the geometry's positions, triangles, influences and the parameters. */
+    static String key(SkinnedGeometry g, CentersOfRotation.Parameters parameters) {
         MessageDigest sha;
         try {
             sha = MessageDigest.getInstance("SHA-256");
@@ -35,7 +36,8 @@ final class CentresCache {
         int[] triangles = g.mesh() == null ? new int[0] : g.mesh().triangles();
         ByteBuffer b = ByteBuffer.allocate(4 * (g.positionArray().length + triangles.length + 2 * g.jointArray().length)
                 + 32).order(ByteOrder.LITTLE_ENDIAN);
-        b.putInt(VERSION).putInt(g.pointCount()).putInt(g.influencesPerPoint()).putDouble(sigma);
+        b.putInt(VERSION).putInt(g.pointCount()).putInt(g.influencesPerPoint()).putDouble(parameters.sigma())
+                .putDouble(parameters.weightEpsilon());
         for (float f : g.positionArray()) {
             b.putFloat(f);
         }

@@ -461,7 +461,7 @@ public final class SkinnedGeometry {
 
     /**
      * The centre of rotation of every point (3 floats per point, bind space) for CoR skinning,
-     * computed on the first call ({@link CentersOfRotation}, sigma 0.1, in parallel; read from
+     * computed on the first call ({@link CentersOfRotation} with the paper's parameters, in parallel; read from
      * its disk cache when one is set) and kept.
      * Read-only.
      */
@@ -472,7 +472,7 @@ public final class SkinnedGeometry {
                 c = centersOfRotation;
                 if (c == null) {
                     c = positionsOf != null ? positionsOf.centresOfSharedPositions()
-                            : CentersOfRotation.computeOrLoad(this, CentersOfRotation.DEFAULT_SIGMA,
+                            : CentersOfRotation.computeOrLoad(this, CentersOfRotation.Parameters.DEFAULT,
                                     CentersOfRotation.Progress.NONE);
                     centersOfRotation = c;
                 }
