@@ -11,6 +11,7 @@ import picocli.CommandLine.Command;
         description = "Skeletal animation lab: view COLLADA characters skinned with LBS and DQS (no subcommand: the window "
                 + "on the default character), inspect them, pose them, benchmark.",
         subcommands = {ViewCommand.class, CheckGpuCommand.class, RenderBenchCommand.class, CompareCommand.class,
+                CentresCommand.class,
                 InspectCommand.class, PoseCommand.class, BenchCommand.class, TrackCommand.class,
                 MarkerCommand.class, ArCommand.class, ArDemoCommand.class,
                 CommandLine.HelpCommand.class})
