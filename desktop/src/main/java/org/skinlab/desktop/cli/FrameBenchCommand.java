@@ -33,7 +33,7 @@ import picocli.CommandLine.Model.CommandSpec;
  * sample, skinning matrices, skin), minimum and median in microseconds per frame.
  *
  * <p>One file and one method (the default: the default character, LBS) print two lines. Several
- * files, or {@code --method both}, print a markdown table with a row per file and a column per
+ * files, or {@code --method both|all}, print a markdown table with a row per file and a column per
  * method, each row as soon as its file is measured; several files default to both methods and to
  * shorter timings (0.5 s of warm-up and 1 s of frames per file and method instead of 2 s and 3 s;
  * a method's first file still warms up for 2 s, while the JIT compiles its kernels), so that
@@ -43,7 +43,7 @@ import picocli.CommandLine.Model.CommandSpec;
  */
 @Command(name = "frame", mixinStandardHelpOptions = true,
         description = {"Time of one frame (sample, skinning matrices, skin) of characters, in microseconds.",
-            "One file and method: two lines; several files or --method both: a markdown table, one row per file."})
+            "One file and method: two lines; several files or --method both|all: a markdown table, one row per file."})
 public final class FrameBenchCommand implements Callable<Integer> {
     static final Path DEFAULT_FILE = Path.of("assets/characters/humanoid-walk.dae");
     private static final double FIRST_WARMUP = 2.0;
@@ -60,8 +60,9 @@ public final class FrameBenchCommand implements Callable<Integer> {
             + BenchCorpus.SHARED_CORPUS + " beside the repository root, else beside the current directory)")
     Path corpus;
 
-    @Option(names = "--method", paramLabel = "lbs|dqs|both",
-            description = "skinning method (default: lbs for one file, both for several)")
+    @Option(names = "--method", paramLabel = "lbs|dqs|cor|both|all",
+            description = "skinning method; both: lbs and dqs; all: lbs, dqs and cor (default: lbs for one file, both"
+                    + " for several)")
     String method;
 
     @Option(names = "--normals", paramLabel = "exact|blended",
@@ -215,10 +216,13 @@ public final class FrameBenchCommand implements Callable<Integer> {
         if (method.equalsIgnoreCase("both")) {
             return List.of(SkinningMethod.LBS, SkinningMethod.DQS);
         }
+        if (method.equalsIgnoreCase("all")) {
+            return List.of(SkinningMethod.values());
+        }
         try {
             return List.of(SkinningMethod.fromKey(method));
         } catch (IllegalArgumentException e) {
-            throw usage("unknown skinning method \"" + method + "\" (expected lbs, dqs or both)");
+            throw usage("unknown skinning method \"" + method + "\" (expected lbs, dqs, cor, both or all)");
         }
     }
 

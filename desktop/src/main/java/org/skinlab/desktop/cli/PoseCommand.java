@@ -33,7 +33,7 @@ import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
 
 /**
- * {@code skinlab pose FILE --time T1[,T2...] --method lbs|dqs [--clip NAME] [--json OUT]}: the
+ * {@code skinlab pose FILE --time T1[,T2...] --method lbs|dqs|cor [--clip NAME] [--json OUT]}: the
  * deformed positions of every placed mesh at the given clip times. The JSON form is a contract
  * other tools compare against:
  * <pre>
@@ -44,7 +44,7 @@ import picocli.CommandLine.Model.CommandSpec;
  * <li>{@code file}: the path as given on the command line.</li>
  * <li>{@code clip}: the name of the clip played ({@code --clip}, else the file's first clip);
  *     null when the file has no animation: then every time gives the rest pose.</li>
- * <li>{@code method}: {@code "lbs"} or {@code "dqs"}.</li>
+ * <li>{@code method}: {@code "lbs"}, {@code "dqs"} or {@code "cor"}.</li>
  * <li>{@code times}: the times actually used, in the order given: clamped to
  *     [clip start, clip end]; as given when there is no clip.</li>
  * <li>{@code meshes}: one entry per placed mesh ({@code <instance_controller>} or
@@ -59,7 +59,7 @@ import picocli.CommandLine.Model.CommandSpec;
  * {@link Float#toString(float)}).
  */
 @Command(name = "pose", mixinStandardHelpOptions = true, sortOptions = false,
-        description = {"Deform every placed mesh of a COLLADA file at given clip times (LBS or DQS) and write the "
+        description = {"Deform every placed mesh of a COLLADA file at given clip times (LBS, DQS or CoR) and write the "
                 + "world positions.",
                 "",
                 "JSON (--json OUT, '-' for stdout): {\"file\", \"clip\", \"method\", \"times\", \"meshes\":[{\"geometry\", "
@@ -79,7 +79,7 @@ public final class PoseCommand implements Callable<Integer> {
     List<Float> times = new ArrayList<>();
 
     @Option(names = "--method", required = true, paramLabel = "lbs|dqs|cor", converter = MethodConverter.class,
-            description = "skinning method: lbs (linear blend) or dqs (dual quaternion)")
+            description = "skinning method: lbs (linear blend), dqs (dual quaternion) or cor (optimized centres of rotation)")
     SkinningMethod method;
 
     @Option(names = "--clip", paramLabel = "NAME", description = "the clip to play (default: the file's first clip)")

@@ -175,6 +175,12 @@ class FrameBenchCommandTest {
         assertEquals(5, lines.length, r::toString);
         assertEquals("humanoid-walk.dae", cells(lines[4]).get(0));
         assertEquals(8, cells(lines[4]).size());
+
+        r = bench(Cli.defaultAsset().toString(), "--method", "all");
+        assertEquals(ExitCodes.OK, r.status, r::toString);
+        lines = r.out.split("\n");
+        assertEquals(List.of("LBS frame", "DQS frame", "COR frame"), cells(lines[2]).subList(6, 9));
+        assertEquals(9, cells(lines[4]).size());
     }
 
     @Test
