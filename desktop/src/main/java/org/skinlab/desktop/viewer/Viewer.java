@@ -143,6 +143,16 @@ public final class Viewer implements AutoCloseable {
             if (replaced instanceof LoadedModel) {
                 ((LoadedModel) replaced).close();
             }
+            if (result instanceof LoadedModel && request == newestRequest) {
+                // CoR's centres (up to half a second the first time, then from the disk cache), here
+                // while the model is shown, not on the window's or the simulation's thread when the
+                // user first switches to CoR.
+                for (SkinnedGeometry g : ((LoadedModel) result).mesh().geometries()) {
+                    if (g.isSkinned()) {
+                        g.centersOfRotation();
+                    }
+                }
+            }
         });
     }
 
