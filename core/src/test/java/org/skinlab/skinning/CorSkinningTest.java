@@ -116,6 +116,39 @@ class CorSkinningTest {
     }
 
     @Test
+    void rigidPartsMoveRigidlyWithTheirJoint() throws Exception {
+        // The paper's first property: a point weighted to one joint moves with that joint alone.
+        Posed p = new Posed("characters/humanoid-walk.dae", 0.3f);
+        float[] cor = p.skin(SkinningMethod.COR);
+        float[] matrices = p.skinned.palette(0).matrices();
+        int k = p.g.influencesPerPoint();
+        float[] x = p.g.positionArray();
+        int rigid = 0;
+        for (int i = 0; i < p.g.vertexCount(); i++) {
+            int one = -1;
+            int count = 0;
+            for (int a = 0; a < k; a++) {
+                if (p.g.weightArray()[k * i + a] > 0) {
+                    one = p.g.jointArray()[k * i + a];
+                    count++;
+                }
+            }
+            if (count != 1) {
+                continue;
+            }
+            rigid++;
+            for (int row = 0; row < 3; row++) {
+                int m = 12 * one + 4 * row;
+                double v = matrices[m] * x[3 * i] + matrices[m + 1] * x[3 * i + 1] + matrices[m + 2] * x[3 * i + 2]
+                        + matrices[m + 3];
+                // Float skinning of a 2 m model: a few ulps.
+                assertEquals(v, cor[3 * i + row], 2e-6, "point " + i + " row " + row);
+            }
+        }
+        assertTrue(rigid > 400, "points with one influence: " + rigid);
+    }
+
+    @Test
     void theTwistKeepsTheJointRingAndTheVolume() throws Exception {
         // Issue 11's goal: at about 170 degrees of twist the joint ring keeps 95% of its radius.
         Posed p = new Posed("cylinders/cylinder-twist-high.dae", 4f);
