@@ -1,5 +1,6 @@
 package org.skinlab.android;
 
+import java.io.File;
 import java.io.IOException;
 import java.io.InputStream;
 import java.util.ArrayList;
@@ -41,6 +42,8 @@ import org.skinlab.collada.ColladaImporter;
 import org.skinlab.model.Model;
 import org.skinlab.simulation.AnimationConfig;
 import org.skinlab.simulation.SkeletalAnimatedMesh;
+import org.skinlab.skinning.CentersOfRotation;
+import org.skinlab.skinning.SkinnedGeometry;
 
 /**
  * The AR app's one Activity: the camera image with the animated character standing on the printed
@@ -96,6 +99,8 @@ public final class SkinlabActivity extends Activity {
     @Override
     protected void onCreate(Bundle saved) {
         super.onCreate(saved);
+        // CoR's centres are computed once per model and then read from the app's cache folder.
+        CentersOfRotation.setCacheDirectory(new File(getCacheDir(), "centres").toPath());
         try {
             catalog = new ModelCatalog(getAssets().list("models"));
         } catch (IOException | IllegalArgumentException e) {
@@ -322,6 +327,12 @@ public final class SkinlabActivity extends Activity {
             try (InputStream in = getAssets().open("models/" + name)) {
                 Model model = ColladaImporter.read(in, name);
                 SkeletalAnimatedMesh next = SkeletalAnimatedMesh.of(model, config);
+                // CoR's centres here, not on the GL thread when the model is first uploaded.
+                for (SkinnedGeometry g : next.geometries()) {
+                    if (g.isSkinned()) {
+                        g.centersOfRotation();
+                    }
+                }
                 if (resumed) {
                     next.start();
                 }

@@ -3,6 +3,8 @@ package org.skinlab.android.logic;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.stream.Collectors;
+import java.util.stream.Stream;
 
 import org.skinlab.ar.ArSession;
 import org.skinlab.ar.CameraIntrinsics;
@@ -18,12 +20,13 @@ import org.skinlab.collada.ColladaImporter;
 import org.skinlab.simulation.AnimationConfig;
 import org.skinlab.simulation.Frame;
 import org.skinlab.simulation.SkeletalAnimatedMesh;
+import org.skinlab.skinning.CentersOfRotation;
 
 /**
- * Runs the app's core paths (import, simulation, marker tracking) on a desktop JVM after R8 has
- * shrunk them with the APK's rules ({@code gradle :android:checkShrunk}): the APK cannot be run
- * here, but this shows that shrinking left BoofCV, JOML and core working (nothing they reach by
- * reflection was removed). Exits 0 and prints "shrunk app paths work" on success.
+ * Runs the app's core paths (import, simulation, CoR's centres and their cache, marker tracking)
+ * on a desktop JVM after R8 has shrunk them with the APK's rules ({@code gradle
+ * :android:checkShrunk}): the APK cannot be run here, but this shows that shrinking left BoofCV,
+ * JOML and core working (nothing they reach by reflection was removed). Exits 0 and prints "shrunk app paths work" on success.
  */
 public final class ShrinkProbe {
     private ShrinkProbe() {
@@ -31,6 +34,8 @@ public final class ShrinkProbe {
 
     public static void main(String[] args) throws Exception {
         Path model = Path.of(args[0]);
+        Path cache = Files.createTempDirectory("skinlab-centres");
+        CentersOfRotation.setCacheDirectory(cache);
         try (SkeletalAnimatedMesh mesh = SkeletalAnimatedMesh.of(ColladaImporter.read(Files.newInputStream(model),
                 model.getFileName().toString()), new AnimationConfig(AnimationConfig.Settings.DEFAULT
                         .withCpuSkinning(false)))) {
@@ -39,7 +44,17 @@ public final class ShrinkProbe {
                 float[] palette = new float[PaletteTexture.floats(f.jointCount(0))];
                 PaletteTexture.pack(f, 0, palette);
             }
+            // CoR's centres as the Activity's loader prepares them, kept in the app's cache folder.
+            mesh.geometries().get(0).centersOfRotation();
         }
+        try (Stream<Path> cached = Files.list(cache)) {
+            List<Path> files = cached.collect(Collectors.toList());
+            if (files.size() != 1) {
+                throw new IllegalStateException("the shrunk centres' cache holds " + files);
+            }
+            Files.delete(files.get(0));
+        }
+        Files.delete(cache);
         CameraIntrinsics k = IntrinsicsEstimate.estimate(null, 4000, 3000, 4.3, 5.6, 640, 480);
         GrayImage image = new SyntheticCamera(k).render(List.of(PlacedMarker.of(MarkerPattern.of(MarkerDictionary.DEFAULT,
                 0), 0.1, PlacedMarker.facingCamera(30, 10, 20), new double[] {0.02, 0.01, 0.5})), SceneOptions.camera(1));
