@@ -19,6 +19,7 @@ import android.opengl.GLSurfaceView;
 import org.joml.Matrix4f;
 import org.skinlab.android.logic.FpsCounter;
 import org.skinlab.android.logic.GlesShaders;
+import org.skinlab.android.logic.PreviewOrientation;
 import org.skinlab.ar.ArCamera;
 import org.skinlab.ar.ArPose;
 import org.skinlab.ar.ArSession;
@@ -33,7 +34,7 @@ import org.skinlab.skinning.SkinningMethod;
 
 /**
  * Draws one AR frame on the GL thread: the camera image (the preview's SurfaceTexture) across the
- * view, turned to the display, and the skinned model on the marker with the pose the tracking
+ * view, turned to the display as the projection is ({@link PreviewOrientation}), and the skinned model on the marker with the pose the tracking
  * thread published last ({@link ArSession#current()}); the joint palette of the simulation's latest
  * frame is skinned in the vertex shader. Everything it reads from other threads is one volatile
  * reference each (the session, the mesh, the intrinsics): a frame never mixes two of them.
@@ -49,9 +50,13 @@ final class ArRenderer implements GLSurfaceView.Renderer {
     private final Matrix4f modelView = new Matrix4f();
     private final float[] matrix = new float[16];
     private final float[] textureTransform = new float[16];
+    private final float[] sensorToNatural = new float[16];
     private volatile ArSession session;
     private volatile CameraIntrinsics intrinsics;
     private volatile int imageRotation;
+    private volatile int sensorOrientation = 90;
+    /** Why nothing can be drawn (the driver refused our shaders), or null. */
+    private volatile String glProblem;
     private volatile SkeletalAnimatedMesh mesh;
     private volatile MarkerScene scene = new MarkerScene(0.1);
     private SkeletalAnimatedMesh meshOnGpu;
@@ -70,9 +75,11 @@ final class ArRenderer implements GLSurfaceView.Renderer {
         this.onPreviewTexture = onPreviewTexture;
     }
 
-    void setSession(ArSession session, CameraIntrinsics intrinsics, int imageRotationDegrees) {
+    void setSession(ArSession session, CameraIntrinsics intrinsics, int imageRotationDegrees,
+            int sensorOrientationDegrees) {
         this.intrinsics = intrinsics;
         this.imageRotation = imageRotationDegrees;
+        this.sensorOrientation = sensorOrientationDegrees;
         this.session = session;
     }
 
@@ -92,16 +99,30 @@ final class ArRenderer implements GLSurfaceView.Renderer {
         return fps.fps();
     }
 
+    /** Why the GL view shows nothing (the driver's log of a shader that did not build), or null. */
+    String problem() {
+        return glProblem;
+    }
+
     @Override
     public void onSurfaceCreated(GL10 unused, EGLConfig eglConfig) {
-        background = GlProgram.link(GlesShaders.BACKGROUND_VERTEX, GlesShaders.BACKGROUND_FRAGMENT);
-        skinned = GlProgram.link(GlesShaders.SKINNED_VERTEX, GlesShaders.SKINNED_FRAGMENT);
+        try {
+            background = GlProgram.link(GlesShaders.BACKGROUND_VERTEX, GlesShaders.BACKGROUND_FRAGMENT);
+            skinned = GlProgram.link(GlesShaders.SKINNED_VERTEX, GlesShaders.SKINNED_FRAGMENT);
+            glProblem = null;
+        } catch (IllegalStateException e) {
+            // A driver that refuses our GLSL ES: say why in the status line instead of crashing.
+            glProblem = e.getMessage();
+        }
         int[] t = new int[1];
         glGenTextures(1, t, 0);
         previewTexture = t[0];
         glBindTexture(GLES11Ext.GL_TEXTURE_EXTERNAL_OES, previewTexture);
         glTexParameteri(GLES11Ext.GL_TEXTURE_EXTERNAL_OES, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
         glTexParameteri(GLES11Ext.GL_TEXTURE_EXTERNAL_OES, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        if (preview != null) {
+            preview.release(); // the lost context's
+        }
         preview = new SurfaceTexture(previewTexture);
         FloatBuffer corners = ByteBuffer.allocateDirect(32).order(ByteOrder.nativeOrder()).asFloatBuffer();
         corners.put(new float[] {-1, -1, 1, -1, -1, 1, 1, 1}).flip();
@@ -136,7 +157,7 @@ final class ArRenderer implements GLSurfaceView.Renderer {
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         CameraIntrinsics k = intrinsics;
         ArSession s = session;
-        if (k == null || s == null) {
+        if (k == null || s == null || glProblem != null) {
             return;
         }
         preview.updateTexImage();
@@ -145,6 +166,8 @@ final class ArRenderer implements GLSurfaceView.Renderer {
         glDisable(GL_DEPTH_TEST);
         glUseProgram(background);
         glUniformMatrix4fv(glGetUniformLocation(background, "uImageToViewport"), 1, false, imageToViewport.get(matrix), 0);
+        glUniformMatrix4fv(glGetUniformLocation(background, "uSensorToNatural"), 1, false,
+                PreviewOrientation.sensorToNatural(sensorOrientation, sensorToNatural), 0);
         glUniformMatrix4fv(glGetUniformLocation(background, "uTexture"), 1, false, textureTransform, 0);
         glActiveTexture(GL_TEXTURE0);
         glBindTexture(GLES11Ext.GL_TEXTURE_EXTERNAL_OES, previewTexture);

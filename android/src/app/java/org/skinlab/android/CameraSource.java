@@ -2,6 +2,8 @@ package org.skinlab.android;
 
 import java.util.Arrays;
 import java.util.List;
+import java.util.concurrent.Semaphore;
+import java.util.concurrent.TimeUnit;
 
 import android.content.Context;
 import android.graphics.ImageFormat;
@@ -30,7 +32,9 @@ import org.skinlab.ar.GrayImage;
  * The back camera through Camera2: a preview stream into the renderer's SurfaceTexture (the video
  * background) and a 640x480 YUV stream whose luminance plane the tracking thread hands to the
  * {@link ArSession}. Opened by {@link #open}, released by {@link #close} (the Activity's onPause),
- * both from the UI thread; camera callbacks run on their own thread, tracking on another.
+ * both from the UI thread; camera callbacks run on their own thread, tracking on another. While the
+ * camera is opening, {@link #close} waits for it (the device arrives in a callback and must then be
+ * closed), as Camera2's own samples do; a session configured after close is closed at once.
  */
 final class CameraSource {
     /** The analysed stream; the preview has the same 4:3 aspect at twice the size. */
@@ -47,12 +51,15 @@ final class CameraSource {
 
     private final CameraManager manager;
     private final Listener listener;
+    /** Held from openCamera until the device (or its failure) arrives, so close never misses a device. */
+    private final Semaphore opening = new Semaphore(1);
+    private volatile boolean closed;
     private HandlerThread cameraThread;
     private HandlerThread trackingThread;
-    private CameraDevice device;
-    private CameraCaptureSession capture;
-    private ImageReader reader;
-    private Surface previewSurface;
+    private volatile CameraDevice device;
+    private volatile CameraCaptureSession capture;
+    private volatile ImageReader reader;
+    private volatile Surface previewSurface;
     private final YPlane yPlane = new YPlane();
     private volatile ArSession session;
 
@@ -83,17 +90,27 @@ final class CameraSource {
             previewSurface = new Surface(preview);
             reader = ImageReader.newInstance(WIDTH, HEIGHT, ImageFormat.YUV_420_888, 2);
             reader.setOnImageAvailableListener(this::track, trackingHandler);
+            if (!opening.tryAcquire(2500, TimeUnit.MILLISECONDS)) {
+                listener.onError("the camera is still being opened or closed");
+                return;
+            }
             manager.openCamera(id, new CameraDevice.StateCallback() {
                 @Override
                 public void onOpened(CameraDevice camera) {
-                    device = camera;
-                    startCapture(cameraHandler);
+                    if (closed) {
+                        camera.close();
+                    } else {
+                        device = camera;
+                        startCapture(cameraHandler);
+                    }
+                    opening.release();
                 }
 
                 @Override
                 public void onDisconnected(CameraDevice camera) {
                     camera.close();
                     device = null;
+                    opening.release();
                     listener.onError("camera disconnected");
                 }
 
@@ -101,62 +118,99 @@ final class CameraSource {
                 public void onError(CameraDevice camera, int error) {
                     camera.close();
                     device = null;
+                    opening.release();
                     listener.onError("camera error " + error);
                 }
             }, cameraHandler);
         } catch (CameraAccessException | SecurityException | IllegalStateException e) {
+            opening.release();
             listener.onError("cannot open the camera: " + e.getMessage());
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
         }
     }
 
-    /** Stops the streams and releases the camera and both threads. */
+    /**
+     * Stops the streams and releases the camera and both threads: the device once it has arrived,
+     * the tracking thread before the reader whose images it reads.
+     */
     void close() {
-        if (capture != null) {
-            capture.close();
+        closed = true;
+        boolean held = false;
+        try {
+            held = opening.tryAcquire(2500, TimeUnit.MILLISECONDS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+        try {
+            CameraCaptureSession c = capture;
             capture = null;
-        }
-        if (device != null) {
-            device.close();
+            if (c != null) {
+                c.close();
+            }
+            CameraDevice d = device;
             device = null;
-        }
-        if (reader != null) {
-            reader.close();
-            reader = null;
-        }
-        if (previewSurface != null) {
-            previewSurface.release();
-            previewSurface = null;
-        }
-        for (HandlerThread t : new HandlerThread[] {cameraThread, trackingThread}) {
-            if (t != null) {
-                t.quitSafely();
-                try {
-                    t.join(2000);
-                } catch (InterruptedException e) {
-                    Thread.currentThread().interrupt();
-                }
+            if (d != null) {
+                d.close();
+            }
+        } finally {
+            if (held) {
+                opening.release();
             }
         }
-        cameraThread = null;
+        quit(trackingThread);
         trackingThread = null;
+        ImageReader r = reader;
+        reader = null;
+        if (r != null) {
+            r.close();
+        }
+        quit(cameraThread);
+        cameraThread = null;
+        Surface p = previewSurface;
+        previewSurface = null;
+        if (p != null) {
+            p.release();
+        }
+    }
+
+    private static void quit(HandlerThread t) {
+        if (t == null) {
+            return;
+        }
+        t.quitSafely();
+        try {
+            t.join(2000);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
     }
 
     // createCaptureSession(List, ...) is deprecated from API 30 on; its successor needs API 28 (min is 26).
     @SuppressWarnings("deprecation")
     private void startCapture(Handler handler) {
+        CameraDevice d = device;
+        ImageReader r = reader;
+        if (d == null || r == null || previewSurface == null) {
+            return;
+        }
         try {
-            List<Surface> targets = Arrays.asList(previewSurface, reader.getSurface());
-            device.createCaptureSession(targets, new CameraCaptureSession.StateCallback() {
+            List<Surface> targets = Arrays.asList(previewSurface, r.getSurface());
+            d.createCaptureSession(targets, new CameraCaptureSession.StateCallback() {
                 @Override
                 public void onConfigured(CameraCaptureSession s) {
-                    if (device == null) {
+                    CameraDevice d = device;
+                    ImageReader r = reader;
+                    Surface p = previewSurface;
+                    if (closed || d == null || r == null || p == null) {
+                        s.close();
                         return;
                     }
                     capture = s;
                     try {
-                        CaptureRequest.Builder b = device.createCaptureRequest(CameraDevice.TEMPLATE_PREVIEW);
-                        b.addTarget(previewSurface);
-                        b.addTarget(reader.getSurface());
+                        CaptureRequest.Builder b = d.createCaptureRequest(CameraDevice.TEMPLATE_PREVIEW);
+                        b.addTarget(p);
+                        b.addTarget(r.getSurface());
                         b.set(CaptureRequest.CONTROL_AF_MODE, CaptureRequest.CONTROL_AF_MODE_CONTINUOUS_VIDEO);
                         s.setRepeatingRequest(b.build(), null, handler);
                     } catch (CameraAccessException | IllegalStateException e) {

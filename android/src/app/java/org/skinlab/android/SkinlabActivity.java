@@ -14,6 +14,7 @@ import android.content.pm.PackageManager;
 import android.content.res.Configuration;
 import android.graphics.Color;
 import android.graphics.SurfaceTexture;
+import android.hardware.display.DisplayManager;
 import android.opengl.GLSurfaceView;
 import android.os.Bundle;
 import android.os.Handler;
@@ -88,7 +89,9 @@ public final class SkinlabActivity extends Activity {
             ArPose pose = s == null ? ArPose.NONE : s.current();
             String line = StatusLine.format(renderer.fps(), pose.state(), pose.trackerMillis(), config.settings(),
                     catalog.current());
-            status.setText(problem.isEmpty() ? line : line + "\n" + problem);
+            String gl = renderer.problem();
+            String trouble = gl != null ? "OpenGL ES: " + gl : problem;
+            status.setText(trouble.isEmpty() ? line : line + "\n" + trouble);
             for (int i = 0; i < buttons.size(); i++) {
                 buttons.get(i).setText(actions.get(i).label().get());
             }
@@ -181,6 +184,8 @@ public final class SkinlabActivity extends Activity {
             m.start();
         }
         maybeOpenCamera();
+        getSystemService(DisplayManager.class).registerDisplayListener(displayTurns, ui);
+        renderer.setImageRotation(imageRotation());
         ui.post(statusUpdate);
     }
 
@@ -188,6 +193,7 @@ public final class SkinlabActivity extends Activity {
     protected void onPause() {
         resumed = false;
         ui.removeCallbacks(statusUpdate);
+        getSystemService(DisplayManager.class).unregisterDisplayListener(displayTurns);
         closeCamera();
         SkeletalAnimatedMesh m = mesh;
         if (m != null) {
@@ -223,6 +229,22 @@ public final class SkinlabActivity extends Activity {
         super.onConfigurationChanged(newConfig);
         renderer.setImageRotation(imageRotation());
     }
+
+    /** A half turn (landscape to reverse landscape) changes no configuration: the display says so. */
+    private final DisplayManager.DisplayListener displayTurns = new DisplayManager.DisplayListener() {
+        @Override
+        public void onDisplayChanged(int displayId) {
+            renderer.setImageRotation(imageRotation());
+        }
+
+        @Override
+        public void onDisplayAdded(int displayId) {
+        }
+
+        @Override
+        public void onDisplayRemoved(int displayId) {
+        }
+    };
 
     private void showScreen() {
         PermissionFlow.Screen screen = permission.screen();
@@ -272,7 +294,7 @@ public final class SkinlabActivity extends Activity {
         session = s;
         camera.setSession(s);
         renderer.setMarkerScene(new MarkerScene(markerSize.metres()));
-        renderer.setSession(s, intrinsics, imageRotation());
+        renderer.setSession(s, intrinsics, imageRotation(), sensorOrientation);
     }
 
     /** On the UI thread: another marker size; the tracking starts over with it. */
@@ -321,31 +343,42 @@ public final class SkinlabActivity extends Activity {
         load(catalog.next());
     }
 
-    /** Loads a bundled model on the loader thread, then swaps it in and retires the old one. */
+    /**
+     * Loads a bundled model on the loader thread, then swaps it in on the UI thread, where onPause
+     * and onResume run: the new model's simulation runs only while the Activity is resumed.
+     */
     private void load(String name) {
         loader.execute(() -> {
+            SkeletalAnimatedMesh next;
             try (InputStream in = getAssets().open("models/" + name)) {
                 Model model = ColladaImporter.read(in, name);
-                SkeletalAnimatedMesh next = SkeletalAnimatedMesh.of(model, config);
+                next = SkeletalAnimatedMesh.of(model, config);
                 // CoR's centres here, not on the GL thread when the model is first uploaded.
                 for (SkinnedGeometry g : next.geometries()) {
                     if (g.isSkinned()) {
                         g.centersOfRotation();
                     }
                 }
-                if (resumed) {
-                    next.start();
+            } catch (Exception e) {
+                problem = name + ": " + e.getMessage();
+                return;
+            }
+            ui.post(() -> {
+                if (isDestroyed()) {
+                    next.close();
+                    return;
                 }
                 SkeletalAnimatedMesh old = mesh;
                 mesh = next;
                 renderer.setMesh(next);
+                if (resumed) {
+                    next.start();
+                }
                 if (old != null) {
                     old.close();
                 }
                 problem = "";
-            } catch (Exception e) {
-                problem = name + ": " + e.getMessage();
-            }
+            });
         });
     }
 }

@@ -12,13 +12,14 @@ public final class GlesShaders {
 
     public static final String BACKGROUND_VERTEX = """
             #version 300 es
-            layout(location = 0) in vec2 aCorner;   // image corner in NDC of the unturned image
+            layout(location = 0) in vec2 aCorner;   // corner of the sensor's image, in its NDC (y up)
             uniform mat4 uImageToViewport;          // ArCamera.imageToViewport
+            uniform mat4 uSensorToNatural;          // PreviewOrientation.sensorToNatural
             uniform mat4 uTexture;                  // SurfaceTexture's transform
             out vec2 vUv;
             void main() {
                 vec2 uv = aCorner * 0.5 + 0.5;
-                vUv = (uTexture * vec4(uv.x, 1.0 - uv.y, 0.0, 1.0)).xy;
+                vUv = (uTexture * uSensorToNatural * vec4(uv, 0.0, 1.0)).xy;
                 gl_Position = uImageToViewport * vec4(aCorner, 0.0, 1.0);
             }
             """;

@@ -101,6 +101,53 @@ class AndroidLogicTest {
         assertEquals(IntrinsicsEstimate.FALLBACK_FOV_DEGREES, guess.horizontalFovDegrees(), 1e-9);
     }
 
+    /**
+     * The preview's orientation, checked against an image turned by hand: a small "sensor image"
+     * with a distinct value per pixel is turned clockwise by the sensor orientation pixel by pixel
+     * (what Camera2's buffer transform shows); reading that upright image at sensorToNatural of a
+     * sensor pixel's texture coordinates must give the sensor pixel.
+     */
+    @Test
+    void thePreviewIsReadAtTheSensorsOwnPixels() {
+        int w = 4;
+        int h = 3;
+        for (int orientation = 0; orientation < 360; orientation += 90) {
+            // The upright image: the sensor's turned clockwise by `orientation`, row 0 at the top.
+            int[][] upright = new int[h][w];
+            for (int y = 0; y < h; y++) {
+                for (int x = 0; x < w; x++) {
+                    upright[y][x] = 10 * y + x;
+                }
+            }
+            for (int turn = 0; turn < orientation / 90; turn++) {
+                int rows = upright.length;
+                int cols = upright[0].length;
+                int[][] turned = new int[cols][rows];
+                for (int y = 0; y < rows; y++) {
+                    for (int x = 0; x < cols; x++) {
+                        turned[x][rows - 1 - y] = upright[y][x]; // one clockwise quarter turn
+                    }
+                }
+                upright = turned;
+            }
+            float[] m = PreviewOrientation.sensorToNatural(orientation, new float[16]);
+            for (int y = 0; y < h; y++) {
+                for (int x = 0; x < w; x++) {
+                    float u = (x + 0.5f) / w;
+                    float v = 1 - (y + 0.5f) / h; // v up
+                    float un = m[0] * u + m[4] * v + m[12];
+                    float vn = m[1] * u + m[5] * v + m[13];
+                    int rows = upright.length;
+                    int cols = upright[0].length;
+                    int col = (int) Math.floor(un * cols);
+                    int row = (int) Math.floor((1 - vn) * rows);
+                    assertEquals(10 * y + x, upright[row][col], "orientation " + orientation + ", sensor pixel " + x + "," + y);
+                }
+            }
+        }
+        assertThrows(IllegalArgumentException.class, () -> PreviewOrientation.sensorToNatural(45, new float[16]));
+    }
+
     @Test
     void theYPlaneIsCopiedWithItsStrides() {
         int w = 5, h = 3, rowStride = 12;
