@@ -70,8 +70,9 @@ public final class ArFeed implements AutoCloseable {
             }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
-        } catch (Exception e) {
-            failure = e.getMessage();
+        } catch (Exception | OutOfMemoryError e) {
+            // Shown in the status line; the window keeps running on the last frame.
+            failure = e.getMessage() != null ? e.getMessage() : String.valueOf(e);
         }
     }
 

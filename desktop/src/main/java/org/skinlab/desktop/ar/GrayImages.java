@@ -38,9 +38,18 @@ public final class GrayImages {
         return files;
     }
 
-    /** An image file's luminance (Rec. 601 weights); IllegalArgumentException naming the file when unreadable. */
-    public static GrayImage read(Path file) throws IOException {
-        BufferedImage image = ImageIO.read(file.toFile());
+    /**
+     * An image file's luminance (Rec. 601 weights); IllegalArgumentException naming the file when
+     * it is not an image, is damaged or cannot be read.
+     */
+    public static GrayImage read(Path file) {
+        BufferedImage image;
+        try {
+            image = ImageIO.read(file.toFile());
+        } catch (IOException | RuntimeException e) {
+            // ImageIO's messages ("Error reading PNG image data") say what, not which file.
+            throw new IllegalArgumentException(file + ": cannot be read as an image: " + e.getMessage(), e);
+        }
         if (image == null) {
             throw new IllegalArgumentException(file + ": not an image ImageIO can read");
         }

@@ -1,10 +1,12 @@
 package org.skinlab.desktop.ar;
 
 import java.io.IOException;
+import java.io.InputStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 
 import com.fasterxml.jackson.core.JsonProcessingException;
+import com.fasterxml.jackson.databind.DeserializationFeature;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ObjectNode;
@@ -18,6 +20,8 @@ import org.skinlab.ar.CameraIntrinsics;
  */
 public final class IntrinsicsFile {
     private static final String[] FIELDS = {"width", "height", "fx", "fy", "cx", "cy"};
+    /** The largest image side a camera file may name (a 64k-pixel-wide sensor is far beyond any camera's). */
+    static final int MAX_SIDE = 65_536;
 
     private IntrinsicsFile() {
     }
@@ -25,8 +29,9 @@ public final class IntrinsicsFile {
     /** Reads {@code file}; IllegalArgumentException naming the file and field on any problem. */
     public static CameraIntrinsics read(Path file) throws IOException {
         JsonNode root;
-        try {
-            root = new ObjectMapper().readTree(Files.readString(file));
+        try (InputStream in = Files.newInputStream(file)) {
+            // Bytes, not a string: the parser detects the encoding and reports bad bytes as JSON errors.
+            root = new ObjectMapper().enable(DeserializationFeature.FAIL_ON_TRAILING_TOKENS).readTree(in);
         } catch (JsonProcessingException e) {
             throw new IllegalArgumentException(file + ": not JSON: " + e.getOriginalMessage());
         }
@@ -45,8 +50,9 @@ public final class IntrinsicsFile {
             v[i] = n.asDouble();
         }
         for (int i = 0; i < 2; i++) {
-            if (v[i] != Math.rint(v[i]) || v[i] < 1) {
-                throw new IllegalArgumentException(file + ": field \"" + FIELDS[i] + "\" must be a positive whole number of pixels, is " + v[i]);
+            if (v[i] != Math.rint(v[i]) || v[i] < 1 || v[i] > MAX_SIDE) {
+                throw new IllegalArgumentException(file + ": field \"" + FIELDS[i] + "\" must be a whole number of pixels"
+                        + " from 1 to " + MAX_SIDE + ", is " + v[i]);
             }
         }
         try {

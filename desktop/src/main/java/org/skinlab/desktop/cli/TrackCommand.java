@@ -78,7 +78,7 @@ public final class TrackCommand implements Callable<Integer> {
             GrayImage image;
             try {
                 image = GrayImages.read(file);
-            } catch (IllegalArgumentException | IOException e) {
+            } catch (IllegalArgumentException e) {
                 throw new CommandFailure(ExitCodes.INVALID_FILE, e.getMessage(), e);
             }
             if (tracker == null || tracker.intrinsics().width() != image.width()

@@ -106,6 +106,32 @@ class TrackCommandTest {
         Cli broken = Cli.run("track", "--images", frames.toString(), "--marker-size", "100", "--json", "-");
         assertEquals(ExitCodes.INVALID_FILE, broken.status);
         assertTrue(broken.err.contains("broken.png"), broken.toString());
+        // A PNG cut short: ImageIO's own message names no file; ours does.
+        Files.delete(frames.resolve("broken.png"));
+        byte[] png = Files.readAllBytes(frames.resolve("square.png"));
+        Files.write(frames.resolve("cut.png"), java.util.Arrays.copyOf(png, png.length / 2));
+        Cli cut = Cli.run("track", "--images", frames.toString(), "--marker-size", "100", "--json", "-");
+        assertEquals(ExitCodes.INVALID_FILE, cut.status);
+        assertTrue(cut.err.contains("cut.png"), cut.toString());
+        Files.delete(frames.resolve("cut.png"));
+        // Intrinsics files: text after the object, bytes that are not UTF-8, a side beyond any camera.
+        String[][] badIntrinsics = {
+            {"{\"width\": 400, \"height\": 400, \"fx\": 400, \"fy\": 400, \"cx\": 200, \"cy\": 200} x", "not JSON"},
+            {"{\"width\": 1e10, \"height\": 400, \"fx\": 400, \"fy\": 400, \"cx\": 200, \"cy\": 200}", "\"width\""},
+        };
+        for (String[] bad : badIntrinsics) {
+            Files.writeString(k, bad[0]);
+            Cli r = Cli.run("track", "--images", frames.toString(), "--intrinsics", k.toString(), "--marker-size",
+                    "100", "--json", "-");
+            assertEquals(ExitCodes.USAGE, r.status, r::toString);
+            assertTrue(r.err.contains("k.json") && r.err.contains(bad[1]), r.toString());
+        }
+        Files.write(k, new byte[] {'{', '"', (byte) 0xff, (byte) 0xfe, '"', ':', '1', '}'});
+        Cli latin = Cli.run("track", "--images", frames.toString(), "--intrinsics", k.toString(), "--marker-size", "100",
+                "--json", "-");
+        assertEquals(ExitCodes.USAGE, latin.status, latin::toString);
+        assertTrue(latin.err.contains("k.json: not JSON"), latin.toString());
+        IntrinsicsFile.write(K, k);
         Cli dictionary = Cli.run("track", "--images", frames.toString(), "--marker-size", "100", "--dictionary", "x",
                 "--json", "-");
         assertEquals(ExitCodes.USAGE, dictionary.status);
