@@ -36,6 +36,8 @@ public enum MarkerDictionary {
     public static final MarkerDictionary DEFAULT = ARUCO_MIP_36H12;
 
     private final HammingDictionary boofcv;
+    /** BoofCV's description, parsed from its resource on first use (read-only here: {@link #config} copies). */
+    private volatile ConfigHammingMarker parsed;
 
     MarkerDictionary(HammingDictionary boofcv) {
         this.boofcv = boofcv;
@@ -64,21 +66,33 @@ public enum MarkerDictionary {
 
     /** Bits per side of the code grid (6 for 36h12). */
     public int gridWidth() {
-        return config().gridWidth;
+        return parsed().gridWidth;
     }
 
     /** How many codes (ids 0 .. codeCount - 1). */
     public int codeCount() {
-        return config().encoding.size();
+        return parsed().encoding.size();
     }
 
     /** The smallest Hamming distance between two codes of the dictionary. */
     public int minimumHamming() {
-        return config().minimumHamming;
+        return parsed().minimumHamming;
     }
 
-    /** A fresh BoofCV description of the dictionary (each caller may change its copy). */
+    /** A BoofCV description of the dictionary of the caller's own, which it may change. */
     ConfigHammingMarker config() {
-        return ConfigHammingMarker.loadDictionary(boofcv);
+        ConfigHammingMarker copy = new ConfigHammingMarker();
+        copy.setTo(parsed());
+        return copy;
+    }
+
+    private ConfigHammingMarker parsed() {
+        ConfigHammingMarker p = parsed;
+        if (p == null) {
+            // Parsing a dictionary's text resource takes milliseconds; racing threads parse the same.
+            p = ConfigHammingMarker.loadDictionary(boofcv);
+            parsed = p;
+        }
+        return p;
     }
 }

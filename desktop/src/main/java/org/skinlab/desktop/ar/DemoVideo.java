@@ -51,6 +51,11 @@ public final class DemoVideo {
         return PlacedMarker.of(pattern, MARKER_METRES, r, t);
     }
 
+    /** Where the marker's corners (TL, TR, BR, BL) project in frame {@code i}: x0, y0, ..., x3, y3. */
+    public double[] corners(int i) {
+        return camera.projectCorners(marker(i));
+    }
+
     /** Frame {@code i}'s image. */
     public GrayImage frame(int i) {
         SceneOptions options = SceneOptions.camera(i).withClutter(i % 4 == 0 ? 6 : 0);

@@ -3,6 +3,7 @@ package org.skinlab.desktop.cli;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 
@@ -12,6 +13,7 @@ import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
 import org.skinlab.ar.CameraIntrinsics;
+import org.skinlab.ar.MarkerDetection;
 import org.skinlab.ar.synthetic.PlacedMarker;
 import org.skinlab.desktop.ar.DemoVideo;
 import org.skinlab.desktop.ar.GrayImages;
@@ -25,8 +27,8 @@ import picocli.CommandLine.Spec;
 
 /**
  * {@code skinlab ar-demo OUT}: the synthetic video of {@link DemoVideo} as numbered PNG frames, with
- * {@code intrinsics.json} (the camera) and {@code poses.json} (each frame's true marker pose, in
- * {@code skinlab track}'s format), so {@code skinlab ar --images OUT --intrinsics OUT/intrinsics.json}
+ * {@code intrinsics.json} (the camera) and {@code poses.json} (each frame's true marker pose and
+ * corners, in {@code skinlab track}'s format without the time, and the marker's size), so {@code skinlab ar --images OUT --intrinsics OUT/intrinsics.json}
  * runs on any machine.
  */
 @Command(name = "ar-demo", mixinStandardHelpOptions = true,
@@ -71,18 +73,8 @@ public final class ArDemoCommand implements Callable<Integer> {
             String name = String.format(Locale.ROOT, "frame-%04d.png", i);
             GrayImages.writePng(video.frame(i), out.resolve(name));
             PlacedMarker m = video.marker(i);
-            ObjectNode f = list.addObject();
-            f.put("frame", name);
-            ArrayNode detections = f.putArray("detections");
-            ObjectNode d = detections.addObject();
-            d.put("id", m.pattern().id());
-            ArrayNode r = d.putArray("R");
-            double[] rot = m.rotation();
-            for (int row = 0; row < 3; row++) {
-                r.addArray().add(rot[3 * row]).add(rot[3 * row + 1]).add(rot[3 * row + 2]);
-            }
-            double[] t = m.translation();
-            d.putArray("t").add(t[0]).add(t[1]).add(t[2]);
+            TrackJson.addFrame(list, name, Double.NaN, List.of(new MarkerDetection(m.pattern().id(), video.corners(i),
+                    m.rotation(), m.translation(), 0)));
         }
         Files.writeString(out.resolve("poses.json"), mapper.writeValueAsString(root) + "\n");
         spec.commandLine().getOut().println("wrote " + frames + " frames, intrinsics.json and poses.json to " + out);

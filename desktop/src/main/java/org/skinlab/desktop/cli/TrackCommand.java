@@ -95,25 +95,7 @@ public final class TrackCommand implements Callable<Integer> {
             long start = System.nanoTime();
             List<MarkerDetection> found = tracker.detect(image);
             double millis = (System.nanoTime() - start) * 1e-6;
-            ObjectNode frame = frames.addObject();
-            frame.put("frame", file.getFileName().toString());
-            frame.put("millis", Math.round(millis * 1000) / 1000.0);
-            ArrayNode detections = frame.putArray("detections");
-            for (MarkerDetection d : found) {
-                ObjectNode o = detections.addObject();
-                o.put("id", d.id());
-                ArrayNode corners = o.putArray("corners");
-                for (int i = 0; i < 4; i++) {
-                    corners.addArray().add(d.cornerX(i)).add(d.cornerY(i));
-                }
-                ArrayNode r = o.putArray("R");
-                double[] rot = d.rotation();
-                for (int row = 0; row < 3; row++) {
-                    r.addArray().add(rot[3 * row]).add(rot[3 * row + 1]).add(rot[3 * row + 2]);
-                }
-                double[] t = d.translation();
-                o.putArray("t").add(t[0]).add(t[1]).add(t[2]);
-            }
+            TrackJson.addFrame(frames, file.getFileName().toString(), millis, found);
         }
         String text = mapper.writeValueAsString(root) + "\n";
         if ("-".equals(json)) {

@@ -37,10 +37,19 @@ class ArDemoCommandTest {
             JsonNode d = found.get(i).get("detections");
             assertEquals(1, d.size(), "frame " + i);
             assertEquals(0, d.get(0).get("id").asInt());
+            JsonNode real = truth.get(i).get("detections").get(0);
             for (int c = 0; c < 3; c++) {
-                assertEquals(truth.get(i).get("detections").get(0).get("t").get(c).asDouble(),
-                        d.get(0).get("t").get(c).asDouble(), 0.003, "frame " + i + " t" + c);
+                assertEquals(real.get("t").get(c).asDouble(), d.get(0).get("t").get(c).asDouble(), 0.003,
+                        "frame " + i + " t" + c);
             }
+            // The same format: the true corners where the tracker finds them (a 320x240 frame, blur and noise).
+            for (int c = 0; c < 4; c++) {
+                for (int xy = 0; xy < 2; xy++) {
+                    assertEquals(real.get("corners").get(c).get(xy).asDouble(),
+                            d.get(0).get("corners").get(c).get(xy).asDouble(), 0.5, "frame " + i + " corner " + c);
+                }
+            }
+            assertTrue(found.get(i).has("millis") && !truth.get(i).has("millis"), "the truth took no time");
         }
         Cli bad = Cli.run("ar-demo", dir.resolve("x").toString(), "--size", "640by480");
         assertEquals(ExitCodes.USAGE, bad.status);
