@@ -12,8 +12,9 @@ import java.util.function.Function;
  * {@link ArPose}; the render thread reads the latest with {@link #current()}, one volatile read, so
  * it never sees half of one frame's pose and half of another's.
  *
- * <p>Frames must come from one thread at a time (the detector and the tracking keep state); a
- * second caller is refused rather than silently interleaved.
+ * <p>Frames must come from one thread (the detector and the tracking keep state); a second caller
+ * is refused rather than silently interleaved. A camera reopened on a new thread gets a new
+ * session, which also starts the tracking over.
  */
 public final class ArSession {
     private final Function<GrayImage, List<MarkerDetection>> detector;
@@ -41,7 +42,7 @@ public final class ArSession {
         Thread owner = feeder.compareAndExchange(null, me);
         if (owner != null && owner != me) {
             throw new IllegalStateException("camera frames from " + me.getName() + " while " + owner.getName()
-                    + " feeds this session; call release() between feeders");
+                    + " feeds this session; a new camera stream needs a new session");
         }
         long start = System.nanoTime();
         List<MarkerDetection> found = detector.apply(image);
@@ -57,16 +58,5 @@ public final class ArSession {
     /** The latest published pose; from any thread. */
     public ArPose current() {
         return current;
-    }
-
-    /**
-     * Lets another thread feed frames (the camera was closed and reopened on a new thread), and
-     * starts the tracking over: the next pose restarts the filter. Call it once the last feeder has
-     * stopped (its last {@link #onCameraFrame} returned).
-     */
-    public void release() {
-        feeder.set(null);
-        tracking.reset();
-        current = ArPose.NONE;
     }
 }

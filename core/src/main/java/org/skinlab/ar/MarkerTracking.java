@@ -119,11 +119,6 @@ public final class MarkerTracking {
         return dest;
     }
 
-    /** The last detection used (unfiltered), or null before the first. */
-    public MarkerDetection lastDetection() {
-        return last;
-    }
-
     /** Back to SEARCHING (a new video, the camera reopened). */
     public void reset() {
         state = TrackingState.SEARCHING;
