@@ -78,6 +78,35 @@ class FiducialTrackerTest {
     }
 
     @Test
+    void paddedRowsGiveTheSamePoses() {
+        // An Android Y plane: rows longer than the image, the last row without its padding.
+        SyntheticCamera camera = new SyntheticCamera(CAMERA);
+        PlacedMarker m = marker(5, PlacedMarker.facingCamera(25, -15, 40), 0.02, -0.01, 0.5);
+        GrayImage packed = camera.render(List.of(m), SceneOptions.camera(4));
+        int stride = CAMERA.width() + 64;
+        byte[] padded = new byte[stride * (CAMERA.height() - 1) + CAMERA.width()];
+        java.util.Arrays.fill(padded, (byte) 0x5a);
+        for (int y = 0; y < CAMERA.height(); y++) {
+            System.arraycopy(packed.pixels(), y * packed.rowStride(), padded, y * stride, CAMERA.width());
+        }
+        GrayImage strided = new GrayImage(CAMERA.width(), CAMERA.height(), stride, padded);
+        for (boolean video : new boolean[] {false, true}) {
+            FiducialTracker a = new FiducialTracker(TrackerConfig.defaults(SIZE), CAMERA);
+            FiducialTracker b = new FiducialTracker(TrackerConfig.defaults(SIZE), CAMERA);
+            List<MarkerDetection> expected = video ? a.track(packed) : a.detect(packed);
+            List<MarkerDetection> found = video ? b.track(strided) : b.detect(strided);
+            assertEquals(1, expected.size());
+            assertEquals(1, found.size());
+            for (int i = 0; i < 8; i++) {
+                assertEquals(expected.get(0).corners()[i], found.get(0).corners()[i], 0, "corner coordinate " + i);
+            }
+            for (int i = 0; i < 3; i++) {
+                assertEquals(expected.get(0).translation()[i], found.get(0).translation()[i], 0);
+            }
+        }
+    }
+
+    @Test
     void theTargetIdFiltersOtherMarkers() {
         SyntheticCamera camera = new SyntheticCamera(CAMERA);
         GrayImage frame = camera.render(List.of(marker(1, PlacedMarker.facingCamera(0, 0, 0), -0.1, 0, 0.5),
