@@ -19,6 +19,7 @@ import android.media.Image;
 import android.media.ImageReader;
 import android.os.Handler;
 import android.os.HandlerThread;
+import android.util.Size;
 import android.util.SizeF;
 import android.view.Surface;
 
@@ -264,10 +265,23 @@ final class CameraSource {
     private static CameraIntrinsics intrinsics(CameraCharacteristics c) {
         float[] calibration = c.get(CameraCharacteristics.LENS_INTRINSIC_CALIBRATION);
         Rect active = c.get(CameraCharacteristics.SENSOR_INFO_ACTIVE_ARRAY_SIZE);
+        Rect preCorrection = c.get(CameraCharacteristics.SENSOR_INFO_PRE_CORRECTION_ACTIVE_ARRAY_SIZE);
         float[] focal = c.get(CameraCharacteristics.LENS_INFO_AVAILABLE_FOCAL_LENGTHS);
         SizeF physical = c.get(CameraCharacteristics.SENSOR_INFO_PHYSICAL_SIZE);
-        return IntrinsicsEstimate.estimate(calibration, active == null ? 0 : active.width(),
-                active == null ? 0 : active.height(), focal == null || focal.length == 0 ? Double.NaN : focal[0],
-                physical == null ? Double.NaN : physical.getWidth(), WIDTH, HEIGHT);
+        Size pixelArray = c.get(CameraCharacteristics.SENSOR_INFO_PIXEL_ARRAY_SIZE);
+        if (active == null) {
+            return IntrinsicsEstimate.estimate(null, 0, 0, Double.NaN, Double.NaN, WIDTH, HEIGHT);
+        }
+        if (calibration != null && calibration.length >= 4 && preCorrection != null) {
+            // The calibration's principal point is in the pre-correction array: move it into the active one.
+            calibration = calibration.clone();
+            calibration[2] -= active.left - preCorrection.left;
+            calibration[3] -= active.top - preCorrection.top;
+        }
+        // The physical size is the whole pixel array's; the active array is part of it, at the same pitch.
+        double activeWidthMm = physical == null || pixelArray == null || pixelArray.getWidth() <= 0 ? Double.NaN
+                : physical.getWidth() * active.width() / pixelArray.getWidth();
+        return IntrinsicsEstimate.estimate(calibration, active.width(), active.height(),
+                focal == null || focal.length == 0 ? Double.NaN : focal[0], activeWidthMm, WIDTH, HEIGHT);
     }
 }

@@ -17,11 +17,13 @@ public final class IntrinsicsEstimate {
     }
 
     /**
-     * @param calibration  LENS_INTRINSIC_CALIBRATION or null
+     * @param calibration  LENS_INTRINSIC_CALIBRATION with its principal point moved from the
+     *                     pre-correction array into the active array, or null
      * @param activeWidth  SENSOR_INFO_ACTIVE_ARRAY_SIZE width in pixels
      * @param activeHeight its height
      * @param focalMm      the first of LENS_INFO_AVAILABLE_FOCAL_LENGTHS, or NaN
-     * @param sensorWidthMm  SENSOR_INFO_PHYSICAL_SIZE width, or NaN
+     * @param sensorWidthMm  the active array's width in mm (SENSOR_INFO_PHYSICAL_SIZE is the whole
+     *                     pixel array's: scale it by the active share of SENSOR_INFO_PIXEL_ARRAY_SIZE), or NaN
      * @param streamWidth  the analysed stream's width
      * @param streamHeight its height
      */
