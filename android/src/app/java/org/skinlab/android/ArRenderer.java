@@ -47,6 +47,7 @@ final class ArRenderer implements GLSurfaceView.Renderer {
     private final Matrix4f projection = new Matrix4f();
     private final Matrix4f imageToViewport = new Matrix4f();
     private final Matrix4f markerView = new Matrix4f();
+    private final Matrix4f model = new Matrix4f();
     private final Matrix4f modelView = new Matrix4f();
     private final float[] matrix = new float[16];
     private final float[] textureTransform = new float[16];
@@ -194,9 +195,8 @@ final class ArRenderer implements GLSurfaceView.Renderer {
                 meshOnGpu = m;
                 follow.reset();
             }
-            double yaw = config.isFollowCamera() ? follow.update(pose.rotation(), pose.translation()) : 0;
-            pose.markerModelView(markerView);
-            scene.modelView(markerView, framing, yaw, modelView);
+            scene.place(pose, follow, config.isFollowCamera(), framing, markerView, model);
+            markerView.mul(model, modelView);
             ArCamera.projection(k, 0.01f, 20f, width, height, imageRotation, false, projection);
             glEnable(GL_DEPTH_TEST);
             glUseProgram(skinned);

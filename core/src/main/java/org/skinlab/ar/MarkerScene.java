@@ -1,7 +1,6 @@
 package org.skinlab.ar;
 
 import org.joml.Matrix4f;
-import org.joml.Matrix4fc;
 import org.skinlab.scene.ModelFraming;
 
 /**
@@ -50,9 +49,17 @@ public final class MarkerScene {
         return dest.rotationZ((float) yawRadians).scale(scale).rotateX((float) (Math.PI / 2)).mul(framing.upright());
     }
 
-    /** The OpenGL model-view of the mesh: the marker's model-view ({@link ArCamera#markerModelView}) times {@link #modelToMarker}. */
-    public Matrix4f modelView(Matrix4fc markerModelView, ModelFraming framing, double yawRadians, Matrix4f dest) {
-        Matrix4f model = modelToMarker(framing, yawRadians, new Matrix4f());
-        return markerModelView.mul(model, dest);
+    /**
+     * The model on the marker in one camera frame, for the desktop's and the phone's renderers
+     * alike: the marker's OpenGL model-view ({@link ArPose#markerModelView}) into {@code markerView}
+     * and {@link #modelToMarker} into {@code model}, turned toward the camera by {@code follow}
+     * (which keeps its last yaw when the camera is overhead) when {@code followCamera} is on. The
+     * mesh's model-view is {@code markerView * model}.
+     */
+    public void place(ArPose pose, CameraFollow follow, boolean followCamera, ModelFraming framing, Matrix4f markerView,
+            Matrix4f model) {
+        double yaw = followCamera ? follow.update(pose.rotation(), pose.translation()) : 0;
+        pose.markerModelView(markerView);
+        modelToMarker(framing, yaw, model);
     }
 }

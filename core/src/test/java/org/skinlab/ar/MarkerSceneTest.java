@@ -105,6 +105,24 @@ class MarkerSceneTest {
                 "1 degree off the normal: still overhead, the last yaw stays");
     }
 
+    @Test
+    void placeGivesTheMarkersViewAndTheModelFollowingOrNot() {
+        double[] r = multiply(org.skinlab.ar.synthetic.PlacedMarker.facingCamera(-45, 0, 0),
+                new double[] {0, -1, 0, 1, 0, 0, 0, 0, 1});
+        double[] t = {0.05, -0.02, 0.5};
+        ArPose pose = new ArPose(TrackingState.TRACKING, r, t, 1, 1.0, 0L, 1L);
+        MarkerScene scene = new MarkerScene(0.1);
+        Matrix4f markerView = new Matrix4f();
+        Matrix4f model = new Matrix4f();
+        scene.place(pose, new CameraFollow(), false, Y_UP_TWO_METRES, markerView, model);
+        assertTrue(markerView.equals(pose.markerModelView(new Matrix4f()), 0f));
+        assertTrue(model.equals(scene.modelToMarker(Y_UP_TWO_METRES, 0, new Matrix4f()), 0f), "no follow: yaw 0");
+        scene.place(pose, new CameraFollow(), true, Y_UP_TWO_METRES, markerView, model);
+        double yaw = CameraFollow.yawTowardCamera(r, t, 0);
+        assertTrue(Math.abs(yaw) > 1, "the camera is off to the side: " + yaw);
+        assertTrue(model.equals(scene.modelToMarker(Y_UP_TWO_METRES, yaw, new Matrix4f()), 1e-6f), "follow: the camera's yaw");
+    }
+
     private static double[] cameraCentre(double[] r, double[] t) {
         return new double[] {-(r[0] * t[0] + r[3] * t[1] + r[6] * t[2]), -(r[1] * t[0] + r[4] * t[1] + r[7] * t[2])};
     }

@@ -2,7 +2,6 @@ package org.skinlab.desktop.app;
 
 import org.joml.Matrix4f;
 import org.skinlab.ar.ArCamera;
-import org.skinlab.ar.ArPose;
 import org.skinlab.ar.CameraFollow;
 import org.skinlab.ar.CameraIntrinsics;
 import org.skinlab.ar.MarkerScene;
@@ -68,14 +67,11 @@ final class ArPresenter implements AutoCloseable {
         if (shot == null || !shot.pose().visible()) {
             return false;
         }
-        ArPose pose = shot.pose();
-        double yaw = config.isFollowCamera() ? follow.update(pose.rotation(), pose.translation()) : 0;
+        scene.place(shot.pose(), follow, config.isFollowCamera(), framing, markerView, draw.model);
         ArCamera.projection(intrinsics, NEAR, FAR, viewportWidth, viewportHeight, 0, true, projection);
-        pose.markerModelView(markerView);
         draw.viewProjection.set(projection).mul(markerView);
         // The camera centre in the marker frame (the scene's frame here), for the lighting.
         markerView.originAffine(draw.eye);
-        scene.modelToMarker(framing, yaw, draw.model);
         return true;
     }
 
