@@ -8,18 +8,12 @@ import java.io.PrintWriter;
 import java.nio.ByteBuffer;
 import java.nio.file.Path;
 import java.time.LocalDateTime;
-import java.util.List;
 import java.time.format.DateTimeFormatter;
 
 import org.lwjgl.system.MemoryUtil;
-import org.skinlab.desktop.render.DrawSettings;
-import org.skinlab.desktop.render.FloorGrid;
 import org.skinlab.desktop.render.GlDebugLog;
 import org.skinlab.desktop.render.GlWindow;
-import org.skinlab.desktop.render.ModelRenderer;
 import org.skinlab.desktop.render.Screenshot;
-import org.skinlab.desktop.render.SkinningShader;
-import org.skinlab.desktop.render.TextureCache;
 import org.skinlab.desktop.ui.ImGuiUi;
 import org.skinlab.desktop.viewer.LoadedModel;
 import org.skinlab.desktop.viewer.ModelLibrary;
@@ -28,13 +22,13 @@ import org.skinlab.desktop.viewer.ViewerAction;
 import org.skinlab.animation.WrapMode;
 import org.skinlab.simulation.AnimationConfig;
 import org.skinlab.simulation.Frame;
-import org.skinlab.skinning.SkinningMethod;
 
 /**
- * The viewer window: the render loop that ties the {@link Viewer} (model, switches, camera),
- * the {@link ModelRenderer} (what the GPU draws) and the {@link AppUi} (toolbar) together. Each
- * loop iteration acquires the newest simulation {@link Frame} once and draws everything from it,
- * so a split view, the instances and the numbers always show the same time step.
+ * The viewer window: the render loop that ties the {@link Viewer} (model, switches, camera), the
+ * {@link ScenePainter} (the scene on the GPU) and the {@link AppUi} (toolbar) together, for a
+ * person, a script or one headless picture. Each loop iteration acquires the newest simulation
+ * {@link Frame} once and draws everything from it, so a split view, the instances and the numbers
+ * always show the same time step.
  */
 public final class SkinlabApp implements AutoCloseable {
     /** Exit statuses (the command line's: 0 fine, 1 failure, 3 a file that cannot be read). */
@@ -43,8 +37,6 @@ public final class SkinlabApp implements AutoCloseable {
     public static final int INVALID_FILE = 3;
 
     private static final float[] BACKGROUND = {0.17f, 0.18f, 0.21f};
-    /** The top of the difference colour map: this share of the model's size. */
-    private static final float DIFFERENCE_FULL = 0.05f;
 
     private final GlWindow window;
     private final PrintWriter out;
@@ -52,23 +44,15 @@ public final class SkinlabApp implements AutoCloseable {
     private final AppOptions options;
     private final AnimationConfig config = new AnimationConfig();
     private final Viewer viewer;
-    private final SkinningShader shader;
-    private final FloorGrid floor;
-    private final TextureCache textures = new TextureCache();
-    private final DrawSettings draw = new DrawSettings();
     private final AppFrame info = new AppFrame();
+    private final ScenePainter scene;
     private final WindowInput input;
     private final int[] size = new int[2];
-    private final org.joml.Vector3f floorCentre = new org.joml.Vector3f();
-    private float floorExtent;
     private AppUi ui = AppUi.NONE;
     private ScriptPlayer player;
     private final GlDebugLog debugLog;
     /** The AR mode's camera background and marker placement ({@code skinlab ar}), or null. */
     private final ArPresenter ar;
-    private LoadedModel shown;
-    private ModelRenderer renderer;
-    private DifferenceProbe difference;
     private long frameNumber;
     private long lastNanos;
     private final long startNanos;
@@ -91,8 +75,8 @@ public final class SkinlabApp implements AutoCloseable {
         if (options.glDebug() && debugLog == null) {
             err.println("skinlab: --gl-debug: this OpenGL reports no debug messages (no OpenGL 4.3 or KHR_debug)");
         }
-        shader = new SkinningShader();
-        floor = new FloorGrid();
+        ar = arSetup == null ? null : new ArPresenter(arSetup);
+        scene = new ScenePainter(window, viewer, config, options.splitMethod(), info, ar);
         input = new WindowInput(window, viewer, this);
         info.viewer = viewer;
         if (!options.hideUi()) {
@@ -100,7 +84,6 @@ public final class SkinlabApp implements AutoCloseable {
             ui = new ImGuiUi(window, this::windowAction);
             input.setUi(ui);
         }
-        ar = arSetup == null ? null : new ArPresenter(arSetup);
         startNanos = System.nanoTime();
     }
 
@@ -210,7 +193,7 @@ public final class SkinlabApp implements AutoCloseable {
         }
         if (options.exitAfterFrames() > 0 || player != null) {
             out.printf(java.util.Locale.ROOT, "skinlab: %d frames, %.0f fps (mean), model %s%s%n", frameNumber,
-                    info.stats.fps.mean(), shown == null ? "none" : shown.displayName(),
+                    info.stats.fps.mean(), scene.shown() == null ? "none" : scene.shown().displayName(),
                     allocations.describe(frameNumber));
         }
         return status;
@@ -247,25 +230,13 @@ public final class SkinlabApp implements AutoCloseable {
         info.frameMillis = (now - lastNanos) / 1e6;
         lastNanos = now;
         viewer.update();
-        syncRenderer();
         window.framebufferSize(size);
         info.width = size[0];
         info.height = size[1];
         glViewport(0, 0, size[0], size[1]);
         glClearColor(BACKGROUND[0], BACKGROUND[1], BACKGROUND[2], 1f);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        boolean drew = false;
-        if (ar != null) {
-            drawArBackground();
-        }
-        if (renderer != null) {
-            try (Frame frame = shown.mesh().acquire()) {
-                if (frame != null) {
-                    drawScene(frame);
-                    drew = true;
-                }
-            }
-        }
+        boolean drew = scene.paint(size[0], size[1], ui.reservedLeft());
         info.drewMesh = drew;
         info.frameNumber = frameNumber++;
         sample(drew);
@@ -288,152 +259,14 @@ public final class SkinlabApp implements AutoCloseable {
         info.stats.fps.add(t, ms > 0 ? 1000f / ms : Float.NaN);
         if (info.gpuSkinned) {
             info.stats.skinningMillis.clear();
-            info.stats.verticesPerSecond.add(t, ms > 0 ? info.vertices * (float) draw.instances / ms / 1e3f : Float.NaN);
+            info.stats.verticesPerSecond.add(t, ms > 0 ? info.vertices * (float) scene.instances() / ms / 1e3f : Float.NaN);
         } else {
             info.stats.skinningMillis.add(t, (float) (info.skinningNanos / 1e6));
             // The simulation skins one copy per step, whatever the instances drawn.
-            info.stats.verticesPerSecond.add(t, (float) (info.vertices * shown.mesh().stepRate() / 1e6));
+            info.stats.verticesPerSecond.add(t, (float) (info.vertices * scene.shown().mesh().stepRate() / 1e6));
         }
         info.stats.lbsVolume.add(t, (float) info.lbsVolume);
         info.stats.dqsVolume.add(t, (float) info.dqsVolume);
-    }
-
-    /** Rebuilds the GPU side when the viewer shows another model. */
-    private void syncRenderer() {
-        LoadedModel current = viewer.current();
-        if (current == shown) {
-            return;
-        }
-        if (renderer != null) {
-            renderer.close();
-            renderer = null;
-        }
-        shown = current;
-        difference = null;
-        info.maxDifference = Double.NaN;
-        info.lbsVolume = Double.NaN;
-        info.dqsVolume = Double.NaN;
-        info.stats.clear();
-        textures.clear();
-        if (current != null) {
-            renderer = new ModelRenderer(shader, current.model(), current.mesh().geometries(), textures::texture);
-            window.setTitle("skinlab - " + current.displayName());
-            if (!textures.warnings().isEmpty()) {
-                List<String> w = textures.warnings();
-                viewer.setStatus(viewer.statusMessage() + "; " + w.get(0)
-                        + (w.size() > 1 ? " (and " + (w.size() - 1) + " more textures)" : ""));
-            }
-            info.vertices = renderer.vertexCount();
-            info.shaderInfluences = renderer.shaderInfluences();
-            info.cappedVertices = renderer.cappedVertices();
-        }
-    }
-
-    private void drawScene(Frame frame) {
-        renderer.upload(frame);
-        info.sequence = frame.sequence();
-        info.skinningNanos = frame.skinningNanos();
-        info.clipTime = frame.clipTime();
-        glEnable(GL_DEPTH_TEST);
-        glEnable(GL_BLEND);
-        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-        draw.model.set(shown.framing().upright());
-        // Both methods' volumes are live numbers in every view; the difference view adds the distance.
-        if (difference == null) {
-            difference = new DifferenceProbe(shown.comparisons());
-        }
-        difference.measure(frame);
-        info.maxDifference = difference.maxRelative();
-        info.differenceFull = DIFFERENCE_FULL;
-        info.lbsVolume = difference.lbsVolume();
-        info.dqsVolume = difference.dqsVolume();
-        boolean cpuFrame = frame.hasSkinnedMesh();
-        SkinningMethod first = cpuFrame ? frame.method() : config.method();
-        boolean split = viewer.settings().split();
-        // The toolbar sits beside the scene, as in the thesis, unless the window is too narrow.
-        int left = ui.reservedLeft() < size[0] / 2 ? ui.reservedLeft() : 0;
-        info.sceneLeft = left;
-        int w = size[0] - left;
-        int h = size[1];
-        info.views = split && ar == null ? 2 : 1;
-        info.viewMethods[0] = first;
-        info.viewOnCpu[0] = cpuFrame;
-        if (ar != null) {
-            drawArModel(first, cpuFrame, left, w, h);
-        } else if (split) {
-            drawView(frame, first, cpuFrame, left, w / 2, h);
-            drawView(frame, other(first), false, left + w / 2, w - w / 2, h);
-            info.viewMethods[1] = other(first);
-            info.viewOnCpu[1] = false;
-        } else {
-            drawView(frame, first, cpuFrame, left, w, h);
-        }
-        info.gpuSkinned = !cpuFrame;
-        glViewport(0, 0, size[0], size[1]);
-    }
-
-    /** The method the split view draws beside {@code first}: --split's, else LBS and DQS face each other (CoR faces DQS). */
-    private SkinningMethod other(SkinningMethod first) {
-        SkinningMethod chosen = options.splitMethod();
-        if (chosen != null && chosen != first) {
-            return chosen;
-        }
-        return first == SkinningMethod.DQS ? SkinningMethod.LBS : SkinningMethod.DQS;
-    }
-
-    private void drawView(Frame frame, SkinningMethod method, boolean cpuPositions, int x, int width, int height) {
-        glViewport(x, 0, width, height);
-        viewer.camera().projection(width / (float) Math.max(1, height), draw.viewProjection);
-        viewer.camera().viewTimesInto(draw.viewProjection);
-        viewer.camera().eye(draw.eye);
-        drawModel(method, cpuPositions, viewer.settings().instances(), viewer.settings().columns(), true);
-    }
-
-    /**
-     * The model with the viewer's switches, on the camera (and model matrix) already in
-     * {@link #draw}: {@code instances} copies in rows of {@code columns}, on the floor grid or not.
-     */
-    private void drawModel(SkinningMethod method, boolean cpuPositions, int instances, int columns, boolean withFloor) {
-        draw.gpuSkinning = !cpuPositions;
-        draw.method = method;
-        draw.view = viewer.settings().drawView();
-        draw.selectedNode = viewer.selectedJointNode();
-        // Distances in the shader are in the file's units, as the probe's size is.
-        draw.scalarFull = draw.view == DrawSettings.View.DIFFERENCE
-                ? (float) (DIFFERENCE_FULL * difference.size()) : 1f;
-        draw.instances = instances;
-        draw.gridColumns = columns;
-        draw.spacing = shown.framing().gridSpacing();
-        draw.wireframe = viewer.settings().wireframe();
-        if (withFloor) {
-            // The floor reaches a little beyond the model, or the grid of its copies.
-            floorExtent = 1.3f * shown.framing().gridSphere(draw.instances, draw.gridColumns, floorCentre);
-            floor.draw(draw, floorCentre.x, floorCentre.z, floorExtent);
-        }
-        glEnable(GL_DEPTH_TEST);
-        renderer.draw(draw);
-        if (viewer.settings().skeleton()) {
-            renderer.drawSkeleton(draw);
-        }
-    }
-
-    /** AR: the newest camera frame across the scene area; the tracking state in the status line when it changes. */
-    private void drawArBackground() {
-        int left = ui.reservedLeft() < size[0] / 2 ? ui.reservedLeft() : 0;
-        glViewport(left, 0, size[0] - left, size[1]);
-        ar.drawBackground(size[0] - left, size[1]);
-        String change = ar.statusChange();
-        if (change != null) {
-            viewer.setStatus(change);
-        }
-    }
-
-    /** AR: the model on the marker, or nothing while the marker is not shown. */
-    private void drawArModel(SkinningMethod method, boolean cpuPositions, int x, int width, int height) {
-        glViewport(x, 0, width, height);
-        if (ar.placeModel(shown.framing(), config, draw, width, height)) {
-            drawModel(method, cpuPositions, 1, 1, false);
-        }
     }
 
     /** Whether the scene area holds any pixel other than the background. */
@@ -481,17 +314,9 @@ public final class SkinlabApp implements AutoCloseable {
 
     @Override
     public void close() {
-        if (ar != null) {
-            ar.close();
-        }
+        scene.close();
         ui.close();
-        if (renderer != null) {
-            renderer.close();
-        }
         viewer.close();
-        textures.close();
-        shader.close();
-        floor.close();
         input.close();
         if (debugLog != null) {
             debugLog.close();

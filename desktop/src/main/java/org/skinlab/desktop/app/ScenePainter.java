@@ -1,0 +1,241 @@
+package org.skinlab.desktop.app;
+
+import static org.lwjgl.opengl.GL33C.*;
+
+import java.util.List;
+
+import org.joml.Vector3f;
+import org.skinlab.desktop.render.DrawSettings;
+import org.skinlab.desktop.render.FloorGrid;
+import org.skinlab.desktop.render.GlWindow;
+import org.skinlab.desktop.render.ModelRenderer;
+import org.skinlab.desktop.render.SkinningShader;
+import org.skinlab.desktop.render.TextureCache;
+import org.skinlab.desktop.viewer.LoadedModel;
+import org.skinlab.desktop.viewer.Viewer;
+import org.skinlab.simulation.AnimationConfig;
+import org.skinlab.simulation.Frame;
+import org.skinlab.skinning.SkinningMethod;
+
+/**
+ * The scene of one window frame, beside the toolbar: the shown model's GPU side (rebuilt when the
+ * viewer shows another model), then from one simulation {@link Frame} the model in one view, the
+ * split view's two, or on the marker over the camera image (AR), with the floor, skeleton and
+ * difference colours the viewer's switches ask for; the numbers it measures go into the
+ * {@link AppFrame} the interface shows. GL thread only.
+ */
+final class ScenePainter implements AutoCloseable {
+    /** The top of the difference colour map: this share of the model's size. */
+    private static final float DIFFERENCE_FULL = 0.05f;
+
+    private final GlWindow window;
+    private final Viewer viewer;
+    private final AnimationConfig config;
+    private final SkinningMethod splitMethod;
+    private final AppFrame info;
+    /** The AR mode's camera background and marker placement ({@code skinlab ar}), or null. */
+    private final ArPresenter ar;
+    private final SkinningShader shader = new SkinningShader();
+    private final FloorGrid floor = new FloorGrid();
+    private final TextureCache textures = new TextureCache();
+    private final DrawSettings draw = new DrawSettings();
+    private final Vector3f floorCentre = new Vector3f();
+    private LoadedModel shown;
+    private ModelRenderer renderer;
+    private DifferenceProbe difference;
+    private int width;
+    private int height;
+    private int left;
+
+    ScenePainter(GlWindow window, Viewer viewer, AnimationConfig config, SkinningMethod splitMethod, AppFrame info,
+            ArPresenter ar) {
+        this.window = window;
+        this.viewer = viewer;
+        this.config = config;
+        this.splitMethod = splitMethod;
+        this.info = info;
+        this.ar = ar;
+    }
+
+    /** The model drawn (the viewer's current one once {@link #paint} has run), or null. */
+    LoadedModel shown() {
+        return shown;
+    }
+
+    /** Copies of the model drawn per frame. */
+    int instances() {
+        return draw.instances;
+    }
+
+    /**
+     * Draws the scene into a framebuffer of {@code width x height} whose left {@code reserved}
+     * pixels the toolbar covers (unless that is half the window or more: then the scene takes it
+     * all, the toolbar floats over it). Returns whether a model frame was drawn.
+     */
+    boolean paint(int width, int height, int reserved) {
+        this.width = width;
+        this.height = height;
+        this.left = reserved < width / 2 ? reserved : 0;
+        info.sceneLeft = left;
+        sync();
+        if (ar != null) {
+            drawArBackground();
+        }
+        if (renderer == null) {
+            return false;
+        }
+        try (Frame frame = shown.mesh().acquire()) {
+            if (frame == null) {
+                return false;
+            }
+            drawScene(frame);
+            return true;
+        }
+    }
+
+    /** Rebuilds the GPU side when the viewer shows another model. */
+    private void sync() {
+        LoadedModel current = viewer.current();
+        if (current == shown) {
+            return;
+        }
+        if (renderer != null) {
+            renderer.close();
+            renderer = null;
+        }
+        shown = current;
+        difference = null;
+        info.maxDifference = Double.NaN;
+        info.lbsVolume = Double.NaN;
+        info.dqsVolume = Double.NaN;
+        info.stats.clear();
+        textures.clear();
+        if (current != null) {
+            renderer = new ModelRenderer(shader, current.model(), current.mesh().geometries(), textures::texture);
+            window.setTitle("skinlab - " + current.displayName());
+            if (!textures.warnings().isEmpty()) {
+                List<String> w = textures.warnings();
+                viewer.setStatus(viewer.statusMessage() + "; " + w.get(0)
+                        + (w.size() > 1 ? " (and " + (w.size() - 1) + " more textures)" : ""));
+            }
+            info.vertices = renderer.vertexCount();
+            info.shaderInfluences = renderer.shaderInfluences();
+            info.cappedVertices = renderer.cappedVertices();
+        }
+    }
+
+    private void drawScene(Frame frame) {
+        renderer.upload(frame);
+        info.sequence = frame.sequence();
+        info.skinningNanos = frame.skinningNanos();
+        info.clipTime = frame.clipTime();
+        glEnable(GL_DEPTH_TEST);
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        draw.model.set(shown.framing().upright());
+        // Both methods' volumes are live numbers in every view; the difference view adds the distance.
+        if (difference == null) {
+            difference = new DifferenceProbe(shown.comparisons());
+        }
+        difference.measure(frame);
+        info.maxDifference = difference.maxRelative();
+        info.differenceFull = DIFFERENCE_FULL;
+        info.lbsVolume = difference.lbsVolume();
+        info.dqsVolume = difference.dqsVolume();
+        boolean cpuFrame = frame.hasSkinnedMesh();
+        SkinningMethod first = cpuFrame ? frame.method() : config.method();
+        boolean split = viewer.settings().split();
+        int w = width - left;
+        info.views = split && ar == null ? 2 : 1;
+        info.viewMethods[0] = first;
+        info.viewOnCpu[0] = cpuFrame;
+        if (ar != null) {
+            drawArModel(first, cpuFrame, w);
+        } else if (split) {
+            drawView(first, cpuFrame, left, w / 2);
+            drawView(other(first), false, left + w / 2, w - w / 2);
+            info.viewMethods[1] = other(first);
+            info.viewOnCpu[1] = false;
+        } else {
+            drawView(first, cpuFrame, left, w);
+        }
+        info.gpuSkinned = !cpuFrame;
+        glViewport(0, 0, width, height);
+    }
+
+    /** The method the split view draws beside {@code first}: --split's, else LBS and DQS face each other (CoR faces DQS). */
+    private SkinningMethod other(SkinningMethod first) {
+        if (splitMethod != null && splitMethod != first) {
+            return splitMethod;
+        }
+        return first == SkinningMethod.DQS ? SkinningMethod.LBS : SkinningMethod.DQS;
+    }
+
+    private void drawView(SkinningMethod method, boolean cpuPositions, int x, int viewWidth) {
+        glViewport(x, 0, viewWidth, height);
+        viewer.camera().projection(viewWidth / (float) Math.max(1, height), draw.viewProjection);
+        viewer.camera().viewTimesInto(draw.viewProjection);
+        viewer.camera().eye(draw.eye);
+        drawModel(method, cpuPositions, viewer.settings().instances(), viewer.settings().columns(), true);
+    }
+
+    /**
+     * The model with the viewer's switches, on the camera (and model matrix) already in
+     * {@link #draw}: {@code instances} copies in rows of {@code columns}, on the floor grid or not.
+     */
+    private void drawModel(SkinningMethod method, boolean cpuPositions, int instances, int columns, boolean withFloor) {
+        draw.gpuSkinning = !cpuPositions;
+        draw.method = method;
+        draw.view = viewer.settings().drawView();
+        draw.selectedNode = viewer.selectedJointNode();
+        // Distances in the shader are in the file's units, as the probe's size is.
+        draw.scalarFull = draw.view == DrawSettings.View.DIFFERENCE
+                ? (float) (DIFFERENCE_FULL * difference.size()) : 1f;
+        draw.instances = instances;
+        draw.gridColumns = columns;
+        draw.spacing = shown.framing().gridSpacing();
+        draw.wireframe = viewer.settings().wireframe();
+        if (withFloor) {
+            // The floor reaches a little beyond the model, or the grid of its copies.
+            float extent = 1.3f * shown.framing().gridSphere(draw.instances, draw.gridColumns, floorCentre);
+            floor.draw(draw, floorCentre.x, floorCentre.z, extent);
+        }
+        glEnable(GL_DEPTH_TEST);
+        renderer.draw(draw);
+        if (viewer.settings().skeleton()) {
+            renderer.drawSkeleton(draw);
+        }
+    }
+
+    /** AR: the newest camera frame across the scene area; the tracking state in the status line when it changes. */
+    private void drawArBackground() {
+        glViewport(left, 0, width - left, height);
+        ar.drawBackground(width - left, height);
+        String change = ar.statusChange();
+        if (change != null) {
+            viewer.setStatus(change);
+        }
+        glViewport(0, 0, width, height);
+    }
+
+    /** AR: the model on the marker, or nothing while the marker is not shown. */
+    private void drawArModel(SkinningMethod method, boolean cpuPositions, int viewWidth) {
+        glViewport(left, 0, viewWidth, height);
+        if (ar.placeModel(shown.framing(), config, draw, viewWidth, height)) {
+            drawModel(method, cpuPositions, 1, 1, false);
+        }
+    }
+
+    @Override
+    public void close() {
+        if (ar != null) {
+            ar.close();
+        }
+        if (renderer != null) {
+            renderer.close();
+        }
+        textures.close();
+        shader.close();
+        floor.close();
+    }
+}
