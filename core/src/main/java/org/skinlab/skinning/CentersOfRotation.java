@@ -29,7 +29,7 @@ import java.util.stream.IntStream;
  * around a joint pair, far below the paper's every-point-against-every-triangle. Computed per
  * mesh position, not per render vertex (vertices sharing a position share its weights), in
  * parallel over positions. The paper's further acceleration (clustering similar weight vectors)
- * is not needed at our sizes: docs/skinning.md has the timings ({@code skinlab bench centres}).
+ * is not needed at our sizes: docs/skinning.md has the timings ({@code skinlab centres}).
  */
 public final class CentersOfRotation {
     /**
