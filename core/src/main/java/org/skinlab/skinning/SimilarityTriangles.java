@@ -7,14 +7,14 @@ import java.util.Arrays;
  * triangle its corners, area, the joints any corner weights (its support) with each corner's
  * weight on them, and how finely it is integrated.
  *
- * <p><b>Subdivision</b> (Le and Hodgins 2016, section 4: the mesh is subdivided until the weights
- * of the two ends of every edge are at most epsilon apart). A triangle whose corners' weight
+ * <p><b>Subdivision</b> (Le and Hodgins 2016: the mesh is subdivided until the weights of the two
+ * ends of every edge are at most epsilon apart; the Radium Engine's implementation does the same). A triangle whose corners' weight
  * vectors differ by up to {@code d} (Euclidean distance, the largest of its three edges) is cut
  * into the {@code n x n} grid of congruent sub-triangles with {@code n = ceil(d / epsilon)}, so
  * every sub-edge's ends differ by at most epsilon; weights are linear over the triangle, so a
  * sub-triangle's mean weight is the weight at its centroid. Per triangle rather than by splitting
- * shared edges as the paper's figure shows: the integral is the same, and no connectivity is
- * needed.
+ * shared edges: the same integral, with no connectivity needed (docs/references.md compares the
+ * two).
  *
  * <p><b>Candidates.</b> Similarity needs two joints that both the point and the triangle weight,
  * so {@link #candidates} lists, per point, only the triangles whose support shares two of the

@@ -1,5 +1,7 @@
 package org.skinlab.android.logic;
 
+import java.util.Arrays;
+
 /**
  * Which way the camera preview's texture is read. The tracker and the projection work in the
  * sensor's image (the ImageReader's frames, as the sensor reads them out), and the renderer turns
@@ -21,10 +23,10 @@ public final class PreviewOrientation {
      * upright, so this is a clockwise turn by it about (0.5, 0.5).
      */
     public static float[] sensorToNatural(int sensorOrientationDegrees, float[] out) {
-        int quarter = Math.floorMod(sensorOrientationDegrees, 360) / 90;
         if (Math.floorMod(sensorOrientationDegrees, 90) != 0) {
             throw new IllegalArgumentException("sensor orientation " + sensorOrientationDegrees + " (need 0, 90, 180 or 270)");
         }
+        int quarter = Math.floorMod(sensorOrientationDegrees, 360) / 90;
         // Clockwise by 90 degrees with v up: (u, v) -> (v, 1 - u).
         float[][] turns = {
             {1, 0, 0, 1, 0, 0}, // u' = u, v' = v
@@ -34,7 +36,7 @@ public final class PreviewOrientation {
         };
         float[] t = turns[quarter];
         // u' = t0 u + t1 v + t4, v' = t2 u + t3 v + t5.
-        java.util.Arrays.fill(out, 0, 16, 0f);
+        Arrays.fill(out, 0, 16, 0f);
         out[0] = t[0];
         out[4] = t[1];
         out[12] = t[4];
