@@ -39,8 +39,9 @@ public final class ArSession {
     /** Tracks one camera frame taken at {@code timeNanos} and publishes the result, which it returns. */
     public ArPose onCameraFrame(GrayImage image, long timeNanos) {
         Thread me = Thread.currentThread();
-        Thread owner = feeder.compareAndExchange(null, me);
-        if (owner != null && owner != me) {
+        // compareAndSet, not compareAndExchange: the latter is Android 13+ (core runs on Android 8).
+        Thread owner = feeder.compareAndSet(null, me) ? me : feeder.get();
+        if (owner != me) {
             throw new IllegalStateException("camera frames from " + me.getName() + " while " + owner.getName()
                     + " feeds this session; a new camera stream needs a new session");
         }

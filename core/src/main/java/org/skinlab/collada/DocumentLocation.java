@@ -4,6 +4,7 @@ import java.io.ByteArrayOutputStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
+import java.nio.file.Paths;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
@@ -34,7 +35,7 @@ final class DocumentLocation {
     /** The location of a document known only by a name (a path as given, possibly relative). */
     static Path fromName(String name) {
         try {
-            return name == null || name.isEmpty() ? null : Path.of(name);
+            return name == null || name.isEmpty() ? null : Paths.get(name); // Path.of is Android 14+
         } catch (InvalidPathException e) {
             return null; // a stream name that is no path: relative URLs cannot be resolved
         }
@@ -57,7 +58,7 @@ final class DocumentLocation {
             return null;
         }
         try {
-            Path p = Path.of(path);
+            Path p = Paths.get(path);
             if (isAbsolute(path) || document == null) {
                 return p.normalize();
             }
