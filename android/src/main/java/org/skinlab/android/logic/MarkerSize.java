@@ -32,6 +32,17 @@ public final class MarkerSize {
         return String.format(Locale.ROOT, "Marker %.0f mm", SIZES_MM[index]);
     }
 
+    /** Makes {@code millimetres} the size if it is one of {@link #SIZES_MM}, without telling the listener. */
+    public boolean select(double millimetres) {
+        for (int i = 0; i < SIZES_MM.length; i++) {
+            if (SIZES_MM[i] == millimetres) {
+                index = i;
+                return true;
+            }
+        }
+        return false;
+    }
+
     /** The next size (wrapping), told to the listener. */
     public void next() {
         index = (index + 1) % SIZES_MM.length;

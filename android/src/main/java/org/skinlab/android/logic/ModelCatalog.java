@@ -36,6 +36,15 @@ public final class ModelCatalog {
         return names.get(current);
     }
 
+    /** Makes {@code name} the current model if the catalog has it; returns whether it does (never for null). */
+    public boolean select(String name) {
+        int i = name == null ? -1 : names.indexOf(name);
+        if (i >= 0) {
+            current = i;
+        }
+        return i >= 0;
+    }
+
     /** Moves to the next model (wrapping) and returns its name. */
     public String next() {
         current = (current + 1) % names.size();

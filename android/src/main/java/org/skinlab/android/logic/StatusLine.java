@@ -2,18 +2,42 @@ package org.skinlab.android.logic;
 
 import java.util.Locale;
 
-import org.skinlab.ar.TrackingState;
+import org.skinlab.ar.ArPose;
 import org.skinlab.simulation.AnimationConfig;
 
-/** The AR app's status line: fps, tracking state, method, interpolation, speed, model. */
+/**
+ * The AR app's status line: fps, tracking state, method, interpolation, speed, model; below it,
+ * each current problem on its own line. Problems come from different sources (the GL driver, the
+ * camera, the model loader) and each is kept and cleared by its own source, so that one's success
+ * never hides another's failure.
+ */
 public final class StatusLine {
     private StatusLine() {
     }
 
-    public static String format(double fps, TrackingState state, double trackerMillis, AnimationConfig.Settings s,
-            String model) {
-        return String.format(Locale.ROOT, "%.0f fps | marker: %s (%.1f ms) | %s %s x%.2f%s | %s", fps, state.label(),
-                trackerMillis, s.method().key().toUpperCase(Locale.ROOT), s.interpolation().name(), s.speed(),
+    /** What the marker line says before the camera delivers: no tracking runs yet. */
+    public static final String NO_CAMERA = "waiting for the camera";
+
+    /**
+     * The line; {@code pose} is the tracking session's latest, or null while no camera is open
+     * (so that "searching" always means: the camera runs and the marker is not in view).
+     */
+    public static String format(double fps, ArPose pose, AnimationConfig.Settings s, String model) {
+        String marker = pose == null ? NO_CAMERA
+                : String.format(Locale.ROOT, "%s (%.1f ms)", pose.state().label(), pose.trackerMillis());
+        return String.format(Locale.ROOT, "%.0f fps | marker: %s | %s %s x%.2f%s | %s", fps, marker,
+                s.method().key().toUpperCase(Locale.ROOT), s.interpolation().name(), s.speed(),
                 s.followCamera() ? " | follow" : "", model);
+    }
+
+    /** The line followed by every problem that is not empty (null counts as none), one per line. */
+    public static String withProblems(String line, String... problems) {
+        StringBuilder text = new StringBuilder(line);
+        for (String p : problems) {
+            if (p != null && !p.isEmpty()) {
+                text.append('\n').append(p);
+            }
+        }
+        return text.toString();
     }
 }

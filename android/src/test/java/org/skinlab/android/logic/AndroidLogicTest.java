@@ -12,6 +12,7 @@ import java.util.concurrent.atomic.AtomicInteger;
 
 import org.junit.jupiter.api.Test;
 import org.skinlab.animation.RotationInterpolation;
+import org.skinlab.ar.ArPose;
 import org.skinlab.ar.CameraIntrinsics;
 import org.skinlab.ar.GrayImage;
 import org.skinlab.ar.TrackingState;
@@ -68,16 +69,107 @@ class AndroidLogicTest {
         PermissionFlow flow = new PermissionFlow();
         assertTrue(flow.onResume(false), "ask at first");
         assertFalse(flow.cameraAllowed());
-        flow.onResult(false, true);
+        assertFalse(flow.onResult(PermissionFlow.Answer.DENIED, true));
         assertEquals(PermissionFlow.Screen.EXPLAIN_AND_RETRY, flow.screen());
         assertFalse(flow.onResume(false), "back from the background: no dialog storm, the explanation stays");
         assertTrue(flow.onRetry());
-        flow.onResult(false, false);
+        flow.onResult(PermissionFlow.Answer.DENIED, false);
         assertEquals(PermissionFlow.Screen.EXPLAIN_SETTINGS, flow.screen());
         assertFalse(flow.onRetry(), "Android will not show the dialog again: settings");
         assertFalse(flow.cameraAllowed());
         assertFalse(flow.onResume(true), "allowed in settings meanwhile");
         assertTrue(flow.cameraAllowed());
+    }
+
+    @Test
+    void aPendingRequestIsNotRepeatedAndACancelIsAskedAgainOnce() {
+        PermissionFlow flow = new PermissionFlow();
+        assertTrue(flow.onResume(false));
+        assertFalse(flow.onResume(false), "the dialog pauses us: resuming under it asks nothing");
+        assertTrue(flow.onResult(PermissionFlow.Answer.CANCELLED, true), "a cancelled request is asked again");
+        assertEquals(PermissionFlow.Screen.ASKING, flow.screen(), "not taken as a refusal");
+        assertFalse(flow.onResult(PermissionFlow.Answer.CANCELLED, true), "but only once");
+        assertEquals(PermissionFlow.Screen.EXPLAIN_AND_RETRY, flow.screen(), "then the user may ask");
+        assertTrue(flow.onRetry());
+        assertFalse(flow.onResult(PermissionFlow.Answer.GRANTED, false));
+        assertTrue(flow.cameraAllowed());
+    }
+
+    @Test
+    void whatIsHeldDecidesTheAnswer() {
+        assertEquals(PermissionFlow.Answer.GRANTED, PermissionFlow.Answer.of(new int[0], true),
+                "cancelled, but granted meanwhile");
+        assertEquals(PermissionFlow.Answer.CANCELLED, PermissionFlow.Answer.of(new int[0], false));
+        assertEquals(PermissionFlow.Answer.DENIED, PermissionFlow.Answer.of(new int[] {-1}, false));
+        assertEquals(PermissionFlow.Answer.DENIED, PermissionFlow.Answer.of(new int[] {0}, false),
+                "a grant the system does not hold opens nothing");
+    }
+
+    @Test
+    void thePermissionFlowSurvivesTheActivityBeingRecreated() {
+        PermissionFlow flow = new PermissionFlow();
+        flow.onResume(false);
+        flow.onResult(PermissionFlow.Answer.CANCELLED, true);
+        PermissionFlow restored = PermissionFlow.restore(flow.savedState());
+        assertEquals(flow.savedState(), restored.savedState());
+        assertFalse(restored.onResume(false), "the request still pending is not made twice");
+        assertFalse(restored.onResult(PermissionFlow.Answer.CANCELLED, true), "the one retry was used");
+        assertEquals(PermissionFlow.Screen.ASKING, PermissionFlow.restore("NONSENSE,x").screen(), "a strange state: anew");
+        assertEquals(PermissionFlow.Screen.ASKING, PermissionFlow.restore(null).screen());
+    }
+
+    @Test
+    void theStreamsShareOneAspectNearTheTrackersSize() {
+        int[][] yuv = {{4032, 3024}, {1920, 1080}, {1280, 720}, {800, 600}, {640, 480}, {320, 240}};
+        int[][] preview = {{4032, 3024}, {1920, 1440}, {1920, 1080}, {1280, 960}, {1280, 720}};
+        assertEquals(new StreamSizes(640, 480, 1920, 1440, true), StreamSizes.choose(yuv, preview),
+                "640x480 tracked, the largest 4:3 preview within the budget");
+        // A camera whose previews are all 16:9: the tracking follows them rather than stretching the picture.
+        StreamSizes wide = StreamSizes.choose(yuv, new int[][] {{1920, 1080}, {1280, 720}});
+        assertEquals(new StreamSizes(1280, 720, 1920, 1080, true), wide);
+        assertEquals("", wide.problem());
+        // No common aspect at all: the nearest, and the status line says why the model may drift.
+        StreamSizes odd = StreamSizes.choose(new int[][] {{640, 480}}, new int[][] {{1920, 1080}, {1280, 1024}});
+        assertFalse(odd.sameAspect());
+        assertEquals(1280, odd.previewWidth(), "5:4 is nearer to 4:3 than 16:9 is");
+        assertTrue(odd.problem().contains("640x480"));
+        // 1920x1088 is how some drivers list 16:9.
+        assertTrue(StreamSizes.choose(new int[][] {{1920, 1088}}, new int[][] {{1920, 1080}}).sameAspect());
+        assertThrows(IllegalArgumentException.class, () -> StreamSizes.choose(new int[0][], preview));
+    }
+
+    @Test
+    void autofocusOnlyInAModeTheCameraLists() {
+        assertEquals(FocusMode.CONTINUOUS_VIDEO, FocusMode.choose(new int[] {0, 1, 4, 3}));
+        assertEquals(FocusMode.CONTINUOUS_PICTURE, FocusMode.choose(new int[] {0, 1, 4}));
+        assertEquals(-1, FocusMode.choose(new int[] {0}), "fixed focus: none set");
+        assertEquals(-1, FocusMode.choose(null));
+    }
+
+    @Test
+    void theUsersChoicesRoundTripAndBadEntriesKeepTheDefaults() {
+        AnimationConfig.Settings chosen = AnimationConfig.Settings.DEFAULT.withMethod(SkinningMethod.COR)
+                .withSpeed(-2).withInterpolation(RotationInterpolation.LERP).withFollowCamera(true)
+                .withAnimationRunning(false);
+        SavedChoices saved = new SavedChoices(chosen, "tentacle-wave.dae", 150, "CAMERA,false,false");
+        assertEquals(saved, SavedChoices.fromMap(saved.toMap(), AnimationConfig.Settings.DEFAULT));
+        assertTrue(SavedChoices.KEYS.containsAll(saved.toMap().keySet()));
+        SavedChoices bad = SavedChoices.fromMap(java.util.Map.of("speed", "NaN", "method", "xyz", "interpolation",
+                "?", "followCamera", "maybe", "markerMillimetres", "big"), AnimationConfig.Settings.DEFAULT);
+        assertEquals(AnimationConfig.Settings.DEFAULT, bad.settings());
+        assertTrue(Double.isNaN(bad.markerMillimetres()));
+        assertEquals(null, bad.model());
+        MarkerSize marker = new MarkerSize(m -> {
+            throw new AssertionError("a restored size is not a change");
+        });
+        assertTrue(marker.select(150));
+        assertEquals("Marker 150 mm", marker.label());
+        assertFalse(marker.select(Double.NaN));
+        ModelCatalog catalog = new ModelCatalog(new String[] {"humanoid-walk.dae", "tentacle-wave.dae"});
+        assertTrue(catalog.select("tentacle-wave.dae"));
+        assertFalse(catalog.select(null));
+        assertFalse(catalog.select("gone.dae"));
+        assertEquals("tentacle-wave.dae", catalog.current());
     }
 
     @Test
@@ -199,9 +291,15 @@ class AndroidLogicTest {
 
     @Test
     void theStatusLineSaysWhatIsGoingOn() {
-        String s = StatusLine.format(29.6, TrackingState.HOLDING, 2.54, AnimationConfig.Settings.DEFAULT
-                .withMethod(SkinningMethod.COR).withFollowCamera(true), "humanoid-walk.dae");
+        ArPose holding = new ArPose(TrackingState.HOLDING, ArPose.NONE.rotation(), ArPose.NONE.translation(), 0, 2.54,
+                1, 1);
+        String s = StatusLine.format(29.6, holding, AnimationConfig.Settings.DEFAULT.withMethod(SkinningMethod.COR)
+                .withFollowCamera(true), "humanoid-walk.dae");
         assertEquals("30 fps | marker: holding (2.5 ms) | COR SLERP x1.00 | follow | humanoid-walk.dae", s);
+        assertEquals("0 fps | marker: waiting for the camera | LBS SLERP x1.00 | a.dae",
+                StatusLine.format(0, null, AnimationConfig.Settings.DEFAULT, "a.dae"));
+        assertEquals("line\ncamera gone\nmodel broken", StatusLine.withProblems("line", "", null, "camera gone",
+                "model broken"), "each problem on its own line, empty ones left out");
         FpsCounter fps = new FpsCounter();
         for (int i = 0; i <= 60; i++) {
             fps.frame(i * 16_666_667L);
