@@ -41,7 +41,7 @@ import org.skinlab.skinning.SkinningMethod;
  */
 final class ArRenderer implements GLSurfaceView.Renderer {
     private final AnimationConfig config;
-    private final Consumer<SurfaceTexture> onPreviewTexture;
+    private final Consumer<SurfaceTexture> onSurfaceReady;
     private final FpsCounter fps = new FpsCounter();
     private final CameraFollow follow = new CameraFollow();
     private final Matrix4f projection = new Matrix4f();
@@ -71,9 +71,15 @@ final class ArRenderer implements GLSurfaceView.Renderer {
     private int width = 1;
     private int height = 1;
 
-    ArRenderer(AnimationConfig config, Consumer<SurfaceTexture> onPreviewTexture) {
+    /**
+     * {@code onSurfaceReady} hears, on the GL thread, each time the view's surface is ready (at
+     * start, after every resume, after a lost context), the camera preview's texture of the current
+     * context: the camera may stream into it from then on. A new context makes a new texture; the
+     * listener releases the old one once the camera has let go of it.
+     */
+    ArRenderer(AnimationConfig config, Consumer<SurfaceTexture> onSurfaceReady) {
         this.config = config;
-        this.onPreviewTexture = onPreviewTexture;
+        this.onSurfaceReady = onSurfaceReady;
     }
 
     void setSession(ArSession session, CameraIntrinsics intrinsics, int imageRotationDegrees,
@@ -121,9 +127,6 @@ final class ArRenderer implements GLSurfaceView.Renderer {
         glBindTexture(GLES11Ext.GL_TEXTURE_EXTERNAL_OES, previewTexture);
         glTexParameteri(GLES11Ext.GL_TEXTURE_EXTERNAL_OES, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
         glTexParameteri(GLES11Ext.GL_TEXTURE_EXTERNAL_OES, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        if (preview != null) {
-            preview.release(); // the lost context's
-        }
         preview = new SurfaceTexture(previewTexture);
         FloatBuffer corners = ByteBuffer.allocateDirect(32).order(ByteOrder.nativeOrder()).asFloatBuffer();
         corners.put(new float[] {-1, -1, 1, -1, -1, 1, 1, 1}).flip();
@@ -141,7 +144,6 @@ final class ArRenderer implements GLSurfaceView.Renderer {
         // The EGL context is new: whatever was on the GPU is gone.
         models = new ArrayList<>();
         meshOnGpu = null;
-        onPreviewTexture.accept(preview);
     }
 
     @Override
@@ -149,6 +151,8 @@ final class ArRenderer implements GLSurfaceView.Renderer {
         width = Math.max(1, w);
         height = Math.max(1, h);
         glViewport(0, 0, width, height);
+        // Called after onSurfaceCreated and after every resume (GLSurfaceView remakes its surface).
+        onSurfaceReady.accept(preview);
     }
 
     @Override

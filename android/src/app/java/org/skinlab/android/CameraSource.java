@@ -1,11 +1,8 @@
 package org.skinlab.android;
 
+import java.nio.ByteBuffer;
 import java.util.Arrays;
-import java.util.List;
-import java.util.concurrent.Semaphore;
-import java.util.concurrent.TimeUnit;
 
-import android.content.Context;
 import android.graphics.ImageFormat;
 import android.graphics.Rect;
 import android.graphics.SurfaceTexture;
@@ -15,15 +12,17 @@ import android.hardware.camera2.CameraCharacteristics;
 import android.hardware.camera2.CameraDevice;
 import android.hardware.camera2.CameraManager;
 import android.hardware.camera2.CaptureRequest;
+import android.hardware.camera2.params.StreamConfigurationMap;
 import android.media.Image;
 import android.media.ImageReader;
 import android.os.Handler;
-import android.os.HandlerThread;
 import android.util.Size;
 import android.util.SizeF;
 import android.view.Surface;
 
+import org.skinlab.android.logic.FocusMode;
 import org.skinlab.android.logic.IntrinsicsEstimate;
+import org.skinlab.android.logic.StreamSizes;
 import org.skinlab.android.logic.YPlane;
 import org.skinlab.ar.ArSession;
 import org.skinlab.ar.CameraIntrinsics;
@@ -31,41 +30,48 @@ import org.skinlab.ar.GrayImage;
 
 /**
  * The back camera through Camera2: a preview stream into the renderer's SurfaceTexture (the video
- * background) and a 640x480 YUV stream whose luminance plane the tracking thread hands to the
- * {@link ArSession}. Opened by {@link #open}, released by {@link #close} (the Activity's onPause),
- * both from the UI thread; camera callbacks run on their own thread, tracking on another. While the
- * camera is opening, {@link #close} waits for it (the device arrives in a callback and must then be
- * closed), as Camera2's own samples do; a session configured after close is closed at once.
+ * background) and a YUV stream of the same aspect ({@link StreamSizes}) whose luminance plane the
+ * tracking thread hands to the {@link ArSession}.
+ *
+ * <p>Threads: {@link #open} and {@link #close} may be called from any thread (the Activity calls
+ * them from the UI thread) and return at once; all camera work, and every Camera2 callback, runs
+ * on the camera thread, one message after another, so that no state is shared between threads but
+ * the session and the closed flag. Closing before the device has arrived is therefore simple: the
+ * device is closed as soon as it arrives. Frames are analysed on the tracking thread, which also
+ * closes the ImageReader, so that no frame is being read while its buffer goes away. Every failure
+ * on either thread, whatever its type, goes to the listener as a message, never up the thread.
  */
 final class CameraSource {
-    /** The analysed stream; the preview has the same 4:3 aspect at twice the size. */
-    static final int WIDTH = 640;
-    static final int HEIGHT = 480;
-
+    /** What the Activity hears, on the camera or the tracking thread. */
     interface Listener {
-        /** The camera is open: its intrinsics for the analysed stream and its orientation on the sensor. */
+        /** The camera is open: the analysed stream's intrinsics and the sensor's orientation. */
         void onOpened(CameraIntrinsics intrinsics, int sensorOrientation);
 
-        /** The camera failed or was taken away; the message is for the status line. */
-        void onError(String message);
+        /** Something failed or was taken away; the message is for the status line. */
+        void onProblem(String message);
     }
 
-    private final CameraManager manager;
-    private final Listener listener;
-    /** Held from openCamera until the device (or its failure) arrives, so close never misses a device. */
-    private final Semaphore opening = new Semaphore(1);
-    private volatile boolean closed;
-    private HandlerThread cameraThread;
-    private HandlerThread trackingThread;
-    private volatile CameraDevice device;
-    private volatile CameraCaptureSession capture;
-    private volatile ImageReader reader;
-    private volatile Surface previewSurface;
-    private final YPlane yPlane = new YPlane();
-    private volatile ArSession session;
+    /** Without a stream map (not a real Camera2 device): the sizes every camera has offered. */
+    private static final StreamSizes FALLBACK_SIZES = new StreamSizes(640, 480, 1280, 960, true);
 
-    CameraSource(Context context, Listener listener) {
-        this.manager = (CameraManager) context.getSystemService(Context.CAMERA_SERVICE);
+    private final CameraManager manager;
+    private final Handler cameraThread;
+    private final Handler trackingThread;
+    private final Listener listener;
+    private final YPlane yPlane = new YPlane();
+    private volatile boolean closed;
+    private volatile ArSession session;
+    // Camera thread only.
+    private CameraDevice device;
+    private CameraCaptureSession capture;
+    private ImageReader reader;
+    private Surface previewSurface;
+    private int focusMode = -1;
+
+    CameraSource(CameraManager manager, Handler cameraThread, Handler trackingThread, Listener listener) {
+        this.manager = manager;
+        this.cameraThread = cameraThread;
+        this.trackingThread = trackingThread;
         this.listener = listener;
     }
 
@@ -74,178 +80,166 @@ final class CameraSource {
         this.session = session;
     }
 
-    /** Opens the back camera; the caller holds the CAMERA permission. */
+    /** Opens the back camera onto {@code preview}; the caller holds the CAMERA permission. */
     void open(SurfaceTexture preview) {
-        cameraThread = new HandlerThread("camera");
-        cameraThread.start();
-        trackingThread = new HandlerThread("tracking");
-        trackingThread.start();
-        Handler cameraHandler = new Handler(cameraThread.getLooper());
-        Handler trackingHandler = new Handler(trackingThread.getLooper());
-        try {
-            String id = backCamera();
-            CameraCharacteristics c = manager.getCameraCharacteristics(id);
-            Integer orientation = c.get(CameraCharacteristics.SENSOR_ORIENTATION);
-            listener.onOpened(intrinsics(c), orientation == null ? 90 : orientation);
-            preview.setDefaultBufferSize(2 * WIDTH, 2 * HEIGHT);
-            previewSurface = new Surface(preview);
-            reader = ImageReader.newInstance(WIDTH, HEIGHT, ImageFormat.YUV_420_888, 2);
-            reader.setOnImageAvailableListener(this::track, trackingHandler);
-            if (!opening.tryAcquire(2500, TimeUnit.MILLISECONDS)) {
-                listener.onError("the camera is still being opened or closed");
-                return;
-            }
-            manager.openCamera(id, new CameraDevice.StateCallback() {
-                @Override
-                public void onOpened(CameraDevice camera) {
-                    if (closed) {
-                        camera.close();
-                    } else {
-                        device = camera;
-                        startCapture(cameraHandler);
-                    }
-                    opening.release();
-                }
-
-                @Override
-                public void onDisconnected(CameraDevice camera) {
-                    camera.close();
-                    device = null;
-                    opening.release();
-                    listener.onError("camera disconnected");
-                }
-
-                @Override
-                public void onError(CameraDevice camera, int error) {
-                    camera.close();
-                    device = null;
-                    opening.release();
-                    listener.onError("camera error " + error);
-                }
-            }, cameraHandler);
-        } catch (CameraAccessException | SecurityException | IllegalStateException e) {
-            opening.release();
-            listener.onError("cannot open the camera: " + e.getMessage());
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
+        cameraThread.post(() -> guarded("cannot open the camera", () -> openNow(preview)));
     }
 
     /**
-     * Stops the streams and releases the camera and both threads: the device once it has arrived,
-     * the tracking thread before the reader whose images it reads.
+     * Stops the streams and releases the camera; returns at once. The device is closed on the
+     * camera thread (at once, or when it arrives), the ImageReader on the tracking thread.
      */
     void close() {
         closed = true;
-        boolean held = false;
-        try {
-            held = opening.tryAcquire(2500, TimeUnit.MILLISECONDS);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
-        try {
-            CameraCaptureSession c = capture;
-            capture = null;
-            if (c != null) {
-                c.close();
-            }
-            CameraDevice d = device;
-            device = null;
-            if (d != null) {
-                d.close();
-            }
-        } finally {
-            if (held) {
-                opening.release();
-            }
-        }
-        quit(trackingThread);
-        trackingThread = null;
-        ImageReader r = reader;
-        reader = null;
-        if (r != null) {
-            r.close();
-        }
-        quit(cameraThread);
-        cameraThread = null;
-        Surface p = previewSurface;
-        previewSurface = null;
-        if (p != null) {
-            p.release();
-        }
+        cameraThread.post(() -> guarded("closing the camera", this::closeNow));
     }
 
-    private static void quit(HandlerThread t) {
-        if (t == null) {
+    private void openNow(SurfaceTexture preview) throws CameraAccessException {
+        if (closed) {
             return;
         }
-        t.quitSafely();
-        try {
-            t.join(2000);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
+        String id = backCamera();
+        CameraCharacteristics c = manager.getCameraCharacteristics(id);
+        StreamConfigurationMap map = c.get(CameraCharacteristics.SCALER_STREAM_CONFIGURATION_MAP);
+        StreamSizes sizes = map == null ? FALLBACK_SIZES
+                : StreamSizes.choose(pairs(map.getOutputSizes(ImageFormat.YUV_420_888)),
+                        pairs(map.getOutputSizes(SurfaceTexture.class)));
+        if (!sizes.sameAspect()) {
+            report(sizes.problem());
+        }
+        CameraIntrinsics intrinsics = intrinsics(c, sizes.trackingWidth(), sizes.trackingHeight());
+        Integer orientation = c.get(CameraCharacteristics.SENSOR_ORIENTATION);
+        focusMode = FocusMode.choose(c.get(CameraCharacteristics.CONTROL_AF_AVAILABLE_MODES));
+        preview.setDefaultBufferSize(sizes.previewWidth(), sizes.previewHeight());
+        previewSurface = new Surface(preview);
+        reader = ImageReader.newInstance(sizes.trackingWidth(), sizes.trackingHeight(), ImageFormat.YUV_420_888, 2);
+        reader.setOnImageAvailableListener(this::onImage, trackingThread);
+        manager.openCamera(id, new CameraDevice.StateCallback() {
+            @Override
+            public void onOpened(CameraDevice camera) {
+                guarded("cannot start the camera", () -> {
+                    if (closed) {
+                        camera.close();
+                        return;
+                    }
+                    device = camera;
+                    listener.onOpened(intrinsics, orientation == null ? 90 : orientation);
+                    startCapture();
+                });
+            }
+
+            @Override
+            public void onDisconnected(CameraDevice camera) {
+                guarded("camera disconnected", () -> {
+                    lost(camera);
+                    report("the camera was disconnected (another app may be using it)");
+                });
+            }
+
+            @Override
+            public void onError(CameraDevice camera, int error) {
+                guarded("camera error", () -> {
+                    lost(camera);
+                    report("camera error " + error + " (" + describe(error) + ")");
+                });
+            }
+        }, cameraThread);
+    }
+
+    /** A device that failed or went away: closed, and forgotten if it is ours. */
+    private void lost(CameraDevice camera) {
+        camera.close();
+        if (device == camera) {
+            device = null;
+            capture = null;
         }
     }
 
     // createCaptureSession(List, ...) is deprecated from API 30 on; its successor needs API 28 (min is 26).
     @SuppressWarnings("deprecation")
-    private void startCapture(Handler handler) {
-        CameraDevice d = device;
-        ImageReader r = reader;
-        if (d == null || r == null || previewSurface == null) {
+    private void startCapture() throws CameraAccessException {
+        device.createCaptureSession(Arrays.asList(previewSurface, reader.getSurface()),
+                new CameraCaptureSession.StateCallback() {
+                    @Override
+                    public void onConfigured(CameraCaptureSession s) {
+                        guarded("cannot start the camera", () -> repeat(s));
+                    }
+
+                    @Override
+                    public void onConfigureFailed(CameraCaptureSession s) {
+                        report("the camera refused the preview and tracking streams");
+                    }
+                }, cameraThread);
+    }
+
+    private void repeat(CameraCaptureSession s) throws CameraAccessException {
+        if (closed || device == null) {
+            s.close();
             return;
         }
-        try {
-            List<Surface> targets = Arrays.asList(previewSurface, r.getSurface());
-            d.createCaptureSession(targets, new CameraCaptureSession.StateCallback() {
-                @Override
-                public void onConfigured(CameraCaptureSession s) {
-                    CameraDevice d = device;
-                    ImageReader r = reader;
-                    Surface p = previewSurface;
-                    if (closed || d == null || r == null || p == null) {
-                        s.close();
-                        return;
-                    }
-                    capture = s;
-                    try {
-                        CaptureRequest.Builder b = d.createCaptureRequest(CameraDevice.TEMPLATE_PREVIEW);
-                        b.addTarget(p);
-                        b.addTarget(r.getSurface());
-                        b.set(CaptureRequest.CONTROL_AF_MODE, CaptureRequest.CONTROL_AF_MODE_CONTINUOUS_VIDEO);
-                        s.setRepeatingRequest(b.build(), null, handler);
-                    } catch (CameraAccessException | IllegalStateException e) {
-                        listener.onError("cannot start the camera: " + e.getMessage());
-                    }
-                }
+        capture = s;
+        CaptureRequest.Builder b = device.createCaptureRequest(CameraDevice.TEMPLATE_PREVIEW);
+        b.addTarget(previewSurface);
+        b.addTarget(reader.getSurface());
+        if (focusMode >= 0) {
+            b.set(CaptureRequest.CONTROL_AF_MODE, focusMode);
+        }
+        s.setRepeatingRequest(b.build(), null, cameraThread);
+    }
 
-                @Override
-                public void onConfigureFailed(CameraCaptureSession s) {
-                    listener.onError("the camera refused the preview and tracking streams");
-                }
-            }, handler);
-        } catch (CameraAccessException | IllegalStateException e) {
-            listener.onError("cannot start the camera: " + e.getMessage());
+    private void closeNow() {
+        try {
+            if (capture != null) {
+                capture.close();
+            }
+            if (device != null) {
+                device.close();
+            }
+        } finally {
+            capture = null;
+            device = null;
+            ImageReader r = reader;
+            reader = null;
+            if (r != null) {
+                r.setOnImageAvailableListener(null, null);
+                trackingThread.post(r::close); // after the frame being analysed, if any
+            }
+            if (previewSurface != null) {
+                previewSurface.release();
+                previewSurface = null;
+            }
         }
     }
 
-    /** On the tracking thread: the newest frame's Y plane through the session; older frames are dropped. */
-    private void track(ImageReader r) {
-        Image image = r.acquireLatestImage();
-        if (image == null) {
-            return;
-        }
-        try {
-            ArSession s = session;
-            if (s != null) {
-                Image.Plane y = image.getPlanes()[0];
-                GrayImage gray = yPlane.copy(y.getBuffer(), y.getRowStride(), y.getPixelStride(), image.getWidth(),
-                        image.getHeight());
-                s.onCameraFrame(gray, image.getTimestamp());
+    /** On the tracking thread: the newest frame's luminance through {@link #track}; older frames are dropped. */
+    private void onImage(ImageReader r) {
+        guarded("reading a camera frame", () -> {
+            Image image = r.acquireLatestImage();
+            if (image == null) {
+                return;
             }
-        } finally {
-            image.close();
-        }
+            try {
+                Image.Plane y = image.getPlanes()[0];
+                track(y.getBuffer(), y.getRowStride(), y.getPixelStride(), image.getWidth(), image.getHeight(),
+                        image.getTimestamp());
+            } finally {
+                image.close();
+            }
+        });
+    }
+
+    /**
+     * On the tracking thread: one frame's luminance plane (Y of YUV_420_888, strides as the camera
+     * wrote them), copied out and tracked in the current session. Every camera frame arrives here.
+     */
+    void track(ByteBuffer plane, int rowStride, int pixelStride, int width, int height, long timestampNanos) {
+        guarded("tracking", () -> {
+            ArSession s = session;
+            if (s != null && !closed) {
+                GrayImage gray = yPlane.copy(plane, rowStride, pixelStride, width, height);
+                s.onCameraFrame(gray, timestampNanos);
+            }
+        });
     }
 
     private String backCamera() throws CameraAccessException {
@@ -262,7 +256,18 @@ final class CameraSource {
         return ids[0];
     }
 
-    private static CameraIntrinsics intrinsics(CameraCharacteristics c) {
+    private static int[][] pairs(Size[] sizes) {
+        if (sizes == null) {
+            return new int[0][];
+        }
+        int[][] pairs = new int[sizes.length][];
+        for (int i = 0; i < sizes.length; i++) {
+            pairs[i] = new int[] {sizes[i].getWidth(), sizes[i].getHeight()};
+        }
+        return pairs;
+    }
+
+    private static CameraIntrinsics intrinsics(CameraCharacteristics c, int width, int height) {
         float[] calibration = c.get(CameraCharacteristics.LENS_INTRINSIC_CALIBRATION);
         Rect active = c.get(CameraCharacteristics.SENSOR_INFO_ACTIVE_ARRAY_SIZE);
         Rect preCorrection = c.get(CameraCharacteristics.SENSOR_INFO_PRE_CORRECTION_ACTIVE_ARRAY_SIZE);
@@ -270,7 +275,7 @@ final class CameraSource {
         SizeF physical = c.get(CameraCharacteristics.SENSOR_INFO_PHYSICAL_SIZE);
         Size pixelArray = c.get(CameraCharacteristics.SENSOR_INFO_PIXEL_ARRAY_SIZE);
         if (active == null) {
-            return IntrinsicsEstimate.estimate(null, 0, 0, Double.NaN, Double.NaN, WIDTH, HEIGHT);
+            return IntrinsicsEstimate.estimate(null, 0, 0, Double.NaN, Double.NaN, width, height);
         }
         if (calibration != null && calibration.length >= 4 && preCorrection != null) {
             // The calibration's principal point is in the pre-correction array: move it into the active one.
@@ -282,6 +287,47 @@ final class CameraSource {
         double activeWidthMm = physical == null || pixelArray == null || pixelArray.getWidth() <= 0 ? Double.NaN
                 : physical.getWidth() * active.width() / pixelArray.getWidth();
         return IntrinsicsEstimate.estimate(calibration, active.width(), active.height(),
-                focal == null || focal.length == 0 ? Double.NaN : focal[0], activeWidthMm, WIDTH, HEIGHT);
+                focal == null || focal.length == 0 ? Double.NaN : focal[0], activeWidthMm, width, height);
+    }
+
+    private static String describe(int error) {
+        switch (error) {
+            case CameraDevice.StateCallback.ERROR_CAMERA_IN_USE:
+                return "in use by another app";
+            case CameraDevice.StateCallback.ERROR_MAX_CAMERAS_IN_USE:
+                return "too many cameras open";
+            case CameraDevice.StateCallback.ERROR_CAMERA_DISABLED:
+                return "disabled by a device policy";
+            case CameraDevice.StateCallback.ERROR_CAMERA_DEVICE:
+                return "the camera device failed";
+            case CameraDevice.StateCallback.ERROR_CAMERA_SERVICE:
+                return "the camera service failed";
+            default:
+                return "unknown";
+        }
+    }
+
+    /** Tells the listener, unless this source is closed: its problems are then nobody's. */
+    private void report(String problem) {
+        if (!closed) {
+            listener.onProblem(problem);
+        }
+    }
+
+    /** A step that may fail in any way. */
+    private interface Step {
+        void run() throws Exception;
+    }
+
+    /**
+     * Runs a step on a camera or tracking thread, reporting whatever it throws: an exception there
+     * would end the thread, and on a phone the app.
+     */
+    private void guarded(String what, Step step) {
+        try {
+            step.run();
+        } catch (Throwable e) { // errors too: a NoSuchMethodError or an OutOfMemoryError must not end the app
+            report(what + ": " + (e.getMessage() != null ? e.getMessage() : e.getClass().getSimpleName()));
+        }
     }
 }

@@ -4,9 +4,12 @@ import java.io.File;
 import java.io.IOException;
 import java.io.InputStream;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
+import java.util.concurrent.atomic.AtomicInteger;
 
 import android.Manifest;
 import android.app.Activity;
@@ -14,14 +17,17 @@ import android.content.pm.PackageManager;
 import android.content.res.Configuration;
 import android.graphics.Color;
 import android.graphics.SurfaceTexture;
+import android.hardware.camera2.CameraManager;
 import android.hardware.display.DisplayManager;
 import android.opengl.GLSurfaceView;
 import android.os.Bundle;
 import android.os.Handler;
+import android.os.HandlerThread;
 import android.os.Looper;
 import android.view.Gravity;
 import android.view.Surface;
 import android.view.View;
+import android.view.WindowInsets;
 import android.widget.Button;
 import android.widget.FrameLayout;
 import android.widget.HorizontalScrollView;
@@ -32,8 +38,8 @@ import org.skinlab.android.logic.AppActions;
 import org.skinlab.android.logic.MarkerSize;
 import org.skinlab.android.logic.ModelCatalog;
 import org.skinlab.android.logic.PermissionFlow;
+import org.skinlab.android.logic.SavedChoices;
 import org.skinlab.android.logic.StatusLine;
-import org.skinlab.ar.ArPose;
 import org.skinlab.ar.ArSession;
 import org.skinlab.ar.CameraIntrinsics;
 import org.skinlab.ar.FiducialTracker;
@@ -49,49 +55,63 @@ import org.skinlab.skinning.SkinnedGeometry;
 /**
  * The AR app's one Activity: the camera image with the animated character standing on the printed
  * marker (docs/marker: ArUco MIP_36h12 id 0, 100 mm by default; a button steps through other
- * printed sizes), a status line, and a button for every user
- * function of the thesis ({@link AppActions}). Threads: the UI thread (this class), the GL thread
- * ({@link ArRenderer}), the camera and tracking threads ({@link CameraSource}), the simulation
- * thread ({@link SkeletalAnimatedMesh}) and one loader thread for models. onPause closes the camera
- * and stops the simulation; onResume starts both again.
+ * printed sizes), a status line, and a button for every user function of the thesis
+ * ({@link AppActions}).
+ *
+ * <p>Threads: the UI thread (this class; it never waits on another thread), the GL thread
+ * ({@link ArRenderer}), the camera and tracking threads (made here, used by each
+ * {@link CameraSource}), the simulation thread ({@link SkeletalAnimatedMesh}) and one loader
+ * thread for models. onPause closes the camera and stops the simulation; onResume starts both
+ * again, the camera once the renderer's surface is ready. onDestroy ends every thread it started.
  */
 public final class SkinlabActivity extends Activity {
     private static final int CAMERA_REQUEST = 1;
 
-    private final PermissionFlow permission = new PermissionFlow();
     private final AnimationConfig config = new AnimationConfig(AnimationConfig.Settings.DEFAULT.withCpuSkinning(false));
     private final Handler ui = new Handler(Looper.getMainLooper());
     private final ExecutorService loader = Executors.newSingleThreadExecutor(r -> new Thread(r, "model-loader"));
     private final List<Button> buttons = new ArrayList<>();
     /** The printed marker's size (docs/marker's 100 mm unless the user taps another). */
     private final MarkerSize markerSize = new MarkerSize(metres -> ui.post(this::onMarkerSize));
+    private PermissionFlow permission;
     private List<AppActions.Action> actions;
     private ModelCatalog catalog;
     private GLSurfaceView glView;
     private ArRenderer renderer;
     private TextView status;
+    private HorizontalScrollView buttonRow;
     private LinearLayout explanation;
     private TextView explanationText;
     private Button retry;
-    private CameraSource camera;
+    private HandlerThread cameraThread;
+    private HandlerThread trackingThread;
+    /** The open camera, or null; package-private: the tests feed camera frames through it. */
+    CameraSource camera;
+    /** The camera preview's texture in the renderer's current context, once its surface is ready. */
     private SurfaceTexture previewTexture;
+    private boolean previewReady;
     private CameraIntrinsics intrinsics;
     private int sensorOrientation = 90;
     private volatile ArSession session;
     private volatile SkeletalAnimatedMesh mesh;
-    private volatile String problem = "";
+    /** What the camera or tracking last reported ("" when it works); kept apart from the model's. */
+    private volatile String cameraProblem = "";
+    /** What the model loader last reported. */
+    private volatile String modelProblem = "";
     private volatile boolean resumed;
+    /** The model asked for last; a load that is no longer wanted when its turn comes is skipped. */
+    private volatile String wantedModel;
+    private final AtomicInteger loadsPending = new AtomicInteger();
 
     private final Runnable statusUpdate = new Runnable() {
         @Override
         public void run() {
             ArSession s = session;
-            ArPose pose = s == null ? ArPose.NONE : s.current();
-            String line = StatusLine.format(renderer.fps(), pose.state(), pose.trackerMillis(), config.settings(),
-                    catalog.current());
+            String model = loadsPending.get() > 0 ? catalog.current() + " (loading)" : catalog.current();
+            String line = StatusLine.format(renderer.fps(), s == null ? null : s.current(), config.settings(), model);
             String gl = renderer.problem();
-            String trouble = gl != null ? "OpenGL ES: " + gl : problem;
-            status.setText(trouble.isEmpty() ? line : line + "\n" + trouble);
+            status.setText(StatusLine.withProblems(line, gl == null ? "" : "OpenGL ES: " + gl, cameraProblem,
+                    modelProblem));
             for (int i = 0; i < buttons.size(); i++) {
                 buttons.get(i).setText(actions.get(i).label().get());
             }
@@ -109,11 +129,25 @@ public final class SkinlabActivity extends Activity {
         } catch (IOException | IllegalArgumentException e) {
             throw new IllegalStateException("the APK carries no models: " + e.getMessage(), e);
         }
+        SavedChoices choices = SavedChoices.fromMap(savedMap(saved), config.settings());
+        config.update(s -> choices.settings().withCpuSkinning(false));
+        catalog.select(choices.model());
+        markerSize.select(choices.markerMillimetres());
+        permission = PermissionFlow.restore(choices.permission());
+        cameraThread = new HandlerThread("camera");
+        cameraThread.start();
+        trackingThread = new HandlerThread("tracking");
+        trackingThread.start();
+        setContentView(layout());
+        load(catalog.current());
+    }
+
+    private View layout() {
         FrameLayout root = new FrameLayout(this);
         glView = new GLSurfaceView(this);
         glView.setEGLContextClientVersion(3);
         glView.setPreserveEGLContextOnPause(true);
-        renderer = new ArRenderer(config, texture -> ui.post(() -> onPreviewTexture(texture)));
+        renderer = new ArRenderer(config, texture -> ui.post(() -> onSurfaceReady(texture)));
         glView.setRenderer(renderer);
         glView.setRenderMode(GLSurfaceView.RENDERMODE_CONTINUOUSLY);
         root.addView(glView);
@@ -121,7 +155,6 @@ public final class SkinlabActivity extends Activity {
         status = new TextView(this);
         status.setTextColor(Color.WHITE);
         status.setBackgroundColor(0x88000000);
-        status.setPadding(16, 8, 16, 8);
         root.addView(status, new FrameLayout.LayoutParams(FrameLayout.LayoutParams.MATCH_PARENT,
                 FrameLayout.LayoutParams.WRAP_CONTENT, Gravity.TOP));
 
@@ -139,10 +172,10 @@ public final class SkinlabActivity extends Activity {
             buttons.add(b);
             row.addView(b);
         }
-        HorizontalScrollView scroll = new HorizontalScrollView(this);
-        scroll.setBackgroundColor(0x66000000);
-        scroll.addView(row);
-        root.addView(scroll, new FrameLayout.LayoutParams(FrameLayout.LayoutParams.MATCH_PARENT,
+        buttonRow = new HorizontalScrollView(this);
+        buttonRow.setBackgroundColor(0x66000000);
+        buttonRow.addView(row);
+        root.addView(buttonRow, new FrameLayout.LayoutParams(FrameLayout.LayoutParams.MATCH_PARENT,
                 FrameLayout.LayoutParams.WRAP_CONTENT, Gravity.BOTTOM));
 
         explanation = new LinearLayout(this);
@@ -152,21 +185,32 @@ public final class SkinlabActivity extends Activity {
         explanation.setPadding(48, 48, 48, 48);
         explanationText = new TextView(this);
         explanationText.setTextColor(Color.WHITE);
-        explanationText.setText(PermissionFlow.EXPLANATION);
         explanation.addView(explanationText);
         retry = new Button(this);
         retry.setText("Allow the camera");
         retry.setOnClickListener(v -> {
             if (permission.onRetry()) {
-                requestPermissions(new String[] {Manifest.permission.CAMERA}, CAMERA_REQUEST);
+                requestCamera();
             }
             showScreen();
         });
         explanation.addView(retry);
         root.addView(explanation, new FrameLayout.LayoutParams(FrameLayout.LayoutParams.MATCH_PARENT,
                 FrameLayout.LayoutParams.MATCH_PARENT));
-        setContentView(root);
-        load(catalog.current());
+        // From target SDK 35 on, the window reaches under the system bars and the display cutout:
+        // the camera image may, the status line and the buttons keep clear of them.
+        root.setOnApplyWindowInsetsListener((v, insets) -> {
+            padInsets(status, insets, true);
+            padInsets(buttonRow, insets, false);
+            return insets;
+        });
+        return root;
+    }
+
+    @SuppressWarnings("deprecation") // getSystemWindowInset*: their successors need API 30 (min is 26)
+    private static void padInsets(View v, WindowInsets insets, boolean top) {
+        v.setPadding(16 + insets.getSystemWindowInsetLeft(), top ? 8 + insets.getSystemWindowInsetTop() : 0,
+                16 + insets.getSystemWindowInsetRight(), top ? 8 : insets.getSystemWindowInsetBottom());
     }
 
     @Override
@@ -174,9 +218,8 @@ public final class SkinlabActivity extends Activity {
         super.onResume();
         resumed = true;
         glView.onResume();
-        boolean granted = checkSelfPermission(Manifest.permission.CAMERA) == PackageManager.PERMISSION_GRANTED;
-        if (permission.onResume(granted)) {
-            requestPermissions(new String[] {Manifest.permission.CAMERA}, CAMERA_REQUEST);
+        if (permission.onResume(holdsCamera())) {
+            requestCamera();
         }
         showScreen();
         SkeletalAnimatedMesh m = mesh;
@@ -192,6 +235,8 @@ public final class SkinlabActivity extends Activity {
     @Override
     protected void onPause() {
         resumed = false;
+        // The GL context may be lost while paused: the camera waits for the renderer's next surface.
+        previewReady = false;
         ui.removeCallbacks(statusUpdate);
         getSystemService(DisplayManager.class).unregisterDisplayListener(displayTurns);
         closeCamera();
@@ -204,12 +249,30 @@ public final class SkinlabActivity extends Activity {
     }
 
     @Override
+    protected void onSaveInstanceState(Bundle out) {
+        super.onSaveInstanceState(out);
+        new SavedChoices(config.settings(), catalog.current(), markerSize.millimetres(), permission.savedState())
+                .toMap().forEach(out::putString);
+    }
+
+    @Override
     protected void onDestroy() {
+        closeCamera();
         loader.shutdownNow();
         SkeletalAnimatedMesh m = mesh;
         if (m != null) {
             m.close();
         }
+        SurfaceTexture texture = previewTexture;
+        previewTexture = null;
+        new Handler(cameraThread.getLooper()).post(() -> {
+            if (texture != null) {
+                texture.release();
+            }
+        });
+        // Both end after the work already posted to them: the camera's close, the reader's.
+        cameraThread.quitSafely();
+        trackingThread.quitSafely();
         super.onDestroy();
     }
 
@@ -218,8 +281,10 @@ public final class SkinlabActivity extends Activity {
         if (requestCode != CAMERA_REQUEST) {
             return;
         }
-        boolean granted = results.length > 0 && results[0] == PackageManager.PERMISSION_GRANTED;
-        permission.onResult(granted, shouldShowRequestPermissionRationale(Manifest.permission.CAMERA));
+        PermissionFlow.Answer answer = PermissionFlow.Answer.of(results, holdsCamera());
+        if (permission.onResult(answer, shouldShowRequestPermissionRationale(Manifest.permission.CAMERA))) {
+            requestCamera();
+        }
         showScreen();
         maybeOpenCamera();
     }
@@ -246,6 +311,14 @@ public final class SkinlabActivity extends Activity {
         }
     };
 
+    private boolean holdsCamera() {
+        return checkSelfPermission(Manifest.permission.CAMERA) == PackageManager.PERMISSION_GRANTED;
+    }
+
+    private void requestCamera() {
+        requestPermissions(new String[] {Manifest.permission.CAMERA}, CAMERA_REQUEST);
+    }
+
     private void showScreen() {
         PermissionFlow.Screen screen = permission.screen();
         boolean explain = screen == PermissionFlow.Screen.EXPLAIN_AND_RETRY
@@ -258,34 +331,55 @@ public final class SkinlabActivity extends Activity {
                 : PermissionFlow.EXPLANATION);
     }
 
-    /** On the UI thread: the renderer made (or remade, after a lost context) its preview texture. */
-    private void onPreviewTexture(SurfaceTexture texture) {
-        previewTexture = texture;
-        if (camera != null) {
+    /**
+     * On the UI thread: the renderer's surface is ready with this preview texture. A texture other
+     * than the one the camera streams into means a new GL context: the camera moves to the new one,
+     * and the old one is released once the camera has let go of it (on the camera thread, after the
+     * close).
+     */
+    void onSurfaceReady(SurfaceTexture texture) {
+        if (texture != previewTexture) {
+            SurfaceTexture old = previewTexture;
+            previewTexture = texture;
             closeCamera();
+            if (old != null) {
+                new Handler(cameraThread.getLooper()).post(old::release);
+            }
         }
+        previewReady = true;
         maybeOpenCamera();
     }
 
     private void maybeOpenCamera() {
-        if (!resumed || camera != null || previewTexture == null || !permission.cameraAllowed()) {
+        if (!resumed || camera != null || !previewReady || !permission.cameraAllowed() || isDestroyed()) {
             return;
         }
-        camera = new CameraSource(this, new CameraSource.Listener() {
-            @Override
-            public void onOpened(CameraIntrinsics k, int orientation) {
-                intrinsics = k;
-                sensorOrientation = orientation;
-                startSession();
-                problem = "";
-            }
+        cameraProblem = "";
+        CameraSource source = new CameraSource((CameraManager) getSystemService(CAMERA_SERVICE),
+                new Handler(cameraThread.getLooper()), new Handler(trackingThread.getLooper()),
+                new CameraSource.Listener() {
+                    @Override
+                    public void onOpened(CameraIntrinsics k, int orientation) {
+                        ui.post(() -> onCameraOpened(k, orientation));
+                    }
 
-            @Override
-            public void onError(String message) {
-                problem = message;
-            }
-        });
-        camera.open(previewTexture);
+                    @Override
+                    public void onProblem(String message) {
+                        cameraProblem = message;
+                    }
+                });
+        camera = source;
+        source.open(previewTexture);
+    }
+
+    /** On the UI thread: the camera is open; tracking starts with its intrinsics. */
+    private void onCameraOpened(CameraIntrinsics k, int orientation) {
+        if (camera == null) {
+            return; // closed meanwhile
+        }
+        intrinsics = k;
+        sensorOrientation = orientation;
+        startSession();
     }
 
     /** A tracking session for the open camera and the marker size, handed to the camera and the renderer. */
@@ -310,6 +404,8 @@ public final class SkinlabActivity extends Activity {
         if (camera != null) {
             camera.close();
             camera = null;
+            intrinsics = null;
+            session = null;
         }
     }
 
@@ -348,7 +444,13 @@ public final class SkinlabActivity extends Activity {
      * and onResume run: the new model's simulation runs only while the Activity is resumed.
      */
     private void load(String name) {
+        wantedModel = name;
+        loadsPending.incrementAndGet();
         loader.execute(() -> {
+            if (!name.equals(wantedModel)) {
+                loadsPending.decrementAndGet(); // the user went on to another model meanwhile
+                return;
+            }
             SkeletalAnimatedMesh next;
             try (InputStream in = getAssets().open("models/" + name)) {
                 Model model = ColladaImporter.read(in, name);
@@ -359,11 +461,14 @@ public final class SkinlabActivity extends Activity {
                         g.centersOfRotation();
                     }
                 }
-            } catch (Exception e) {
-                problem = name + ": " + e.getMessage();
+            } catch (Throwable e) { // errors too: a model too big for the heap must not end the app
+                modelProblem = e.getMessage() != null && e.getMessage().contains(name) ? e.getMessage()
+                        : name + ": " + (e.getMessage() != null ? e.getMessage() : e.getClass().getSimpleName());
+                loadsPending.decrementAndGet();
                 return;
             }
             ui.post(() -> {
+                loadsPending.decrementAndGet();
                 if (isDestroyed()) {
                     next.close();
                     return;
@@ -377,8 +482,21 @@ public final class SkinlabActivity extends Activity {
                 if (old != null) {
                     old.close();
                 }
-                problem = "";
+                modelProblem = "";
             });
         });
+    }
+
+    private static Map<String, String> savedMap(Bundle saved) {
+        Map<String, String> map = new HashMap<>();
+        if (saved != null) {
+            for (String key : SavedChoices.KEYS) {
+                String value = saved.getString(key);
+                if (value != null) {
+                    map.put(key, value);
+                }
+            }
+        }
+        return map;
     }
 }
