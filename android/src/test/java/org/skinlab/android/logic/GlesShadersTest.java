@@ -33,7 +33,7 @@ class GlesShadersTest {
             try {
                 glfwMakeContextCurrent(window);
                 GLESCapabilities caps = GLES.createCapabilities();
-                assertEquals(0, link(GlesShaders.SKINNED_VERTEX, GlesShaders.SKINNED_FRAGMENT).length(),
+                assertEquals(0, link(GlesShaders.skinnedVertex(), GlesShaders.SKINNED_FRAGMENT).length(),
                         "skinning program");
                 if (caps.GL_OES_EGL_image_external_essl3) {
                     assertEquals(0, link(GlesShaders.BACKGROUND_VERTEX, GlesShaders.BACKGROUND_FRAGMENT).length(),
