@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Checks the debug APK as CI does (no device here): manifest facts through aapt's badging, the v2+
 # signature, our classes and the tracker's surviving R8's shrinking in the dex, BoofCV's dictionary
-# resources at the APK's root, and the size budget. Usage: android/check-apk.sh [APK]
+# resources and the skinning shader's formulas at the APK's root, and the size budget.
+# Usage: android/check-apk.sh [APK]
 set -euo pipefail
 apk=${1:-"$(dirname "$0")/build/outputs/skinlab-debug.apk"}
 budget=$((2 * 1024 * 1024))
@@ -43,6 +44,7 @@ echo "check-apk: dex: $(wc -l <<<"$classes") classes; the Activity, renderer, ca
 
 listing=$(unzip -l "$apk")
 grep -q 'boofcv/factory/fiducial/aruco_mip_36h12.txt' <<<"$listing" || fail "BoofCV's dictionary resources missing"
+grep -q ' org/skinlab/skinning/skinning.glsl$' <<<"$listing" || fail "the skinning shader's formulas (core's skinning.glsl) missing"
 grep -q 'assets/models/humanoid-walk.dae' <<<"$listing" || fail "the default model is not bundled"
 size=$(stat -c %s "$apk")
 echo "check-apk: size $size bytes ($(( size / 1024 )) KiB; budget $(( budget / 1024 )) KiB)"

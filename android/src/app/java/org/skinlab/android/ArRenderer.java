@@ -115,7 +115,7 @@ final class ArRenderer implements GLSurfaceView.Renderer {
     public void onSurfaceCreated(GL10 unused, EGLConfig eglConfig) {
         try {
             background = GlProgram.link(GlesShaders.BACKGROUND_VERTEX, GlesShaders.BACKGROUND_FRAGMENT);
-            skinned = GlProgram.link(GlesShaders.SKINNED_VERTEX, GlesShaders.SKINNED_FRAGMENT);
+            skinned = GlProgram.link(GlesShaders.skinnedVertex(), GlesShaders.SKINNED_FRAGMENT);
             glProblem = null;
         } catch (IllegalStateException e) {
             // A driver that refuses our GLSL ES: say why in the status line instead of crashing.
@@ -212,6 +212,8 @@ final class ArRenderer implements GLSurfaceView.Renderer {
                 ModelGl model = models.get(g);
                 model.palette(frame, g);
                 glUniform1i(glGetUniformLocation(skinned, "uHasScale"), frame.hasScale(g) ? 1 : 0);
+                glUniform1i(glGetUniformLocation(skinned, "uMatricesMirror"), frame.mirrorsMatrices(g) ? 1 : 0);
+                glUniform1i(glGetUniformLocation(skinned, "uScalesMirror"), frame.mirrorsScales(g) ? 1 : 0);
                 glUniform4fv(glGetUniformLocation(skinned, "uColor"), 1, model.color, 0);
                 model.draw();
             }

@@ -8,6 +8,7 @@ import java.nio.FloatBuffer;
 import java.nio.IntBuffer;
 import java.nio.ShortBuffer;
 
+import org.skinlab.android.logic.GlesShaders;
 import org.skinlab.android.logic.PaletteTexture;
 import org.skinlab.model.MaterialBinding;
 import org.skinlab.simulation.Frame;
@@ -15,8 +16,9 @@ import org.skinlab.skinning.InfluenceView;
 import org.skinlab.skinning.SkinnedGeometry;
 
 /**
- * One skinned geometry on the GPU (GL thread only): bind-pose positions and normals, 4 influences
- * per vertex ({@link InfluenceView}), CoR's centres, the triangles, and the palette texture
+ * One skinned geometry on the GPU (GL thread only), at the attribute locations of
+ * {@link GlesShaders#skinnedVertex()}: bind-pose positions and normals, 4 influences per vertex
+ * ({@link InfluenceView}), CoR's centres, the triangles, and the palette texture
  * refilled from each frame ({@link PaletteTexture}).
  */
 final class ModelGl {
@@ -31,7 +33,7 @@ final class ModelGl {
 
     ModelGl(SkinnedGeometry g) {
         int n = g.vertexCount();
-        InfluenceView view = InfluenceView.of(g, 4);
+        InfluenceView view = InfluenceView.of(g, GlesShaders.INFLUENCES);
         int[] triangles = g.mesh() == null ? new int[0] : g.mesh().triangles();
         indexCount = triangles.length;
         joints = g.jointCount();
@@ -39,23 +41,24 @@ final class ModelGl {
         glGenBuffers(buffers.length, buffers, 0);
         vao = genVertexArray();
         glBindVertexArray(vao);
-        floats(buffers[0], g.positionArray(), 3 * n, 0, 3);
-        floats(buffers[1], g.normalArray(), 3 * n, 1, 3);
-        ShortBuffer j = ByteBuffer.allocateDirect(Math.max(2, 8 * n)).order(ByteOrder.nativeOrder()).asShortBuffer();
+        floats(buffers[0], g.positionArray(), 3 * n, GlesShaders.POSITION, 3);
+        floats(buffers[1], g.normalArray(), 3 * n, GlesShaders.NORMAL, 3);
+        int k = GlesShaders.INFLUENCES;
+        ShortBuffer j = ByteBuffer.allocateDirect(Math.max(2, 2 * k * n)).order(ByteOrder.nativeOrder()).asShortBuffer();
         view.putJointIndices(j, n);
         j.flip();
         glBindBuffer(GL_ARRAY_BUFFER, buffers[2]);
-        glBufferData(GL_ARRAY_BUFFER, 8 * n, j, GL_STATIC_DRAW);
-        glEnableVertexAttribArray(2);
-        glVertexAttribIPointer(2, 4, GL_UNSIGNED_SHORT, 8, 0);
-        FloatBuffer w = ByteBuffer.allocateDirect(Math.max(4, 16 * n)).order(ByteOrder.nativeOrder()).asFloatBuffer();
+        glBufferData(GL_ARRAY_BUFFER, 2 * k * n, j, GL_STATIC_DRAW);
+        glEnableVertexAttribArray(GlesShaders.JOINTS);
+        glVertexAttribIPointer(GlesShaders.JOINTS, k, GL_UNSIGNED_SHORT, 2 * k, 0);
+        FloatBuffer w = ByteBuffer.allocateDirect(Math.max(4, 4 * k * n)).order(ByteOrder.nativeOrder()).asFloatBuffer();
         view.putWeights(w, n);
         w.flip();
         glBindBuffer(GL_ARRAY_BUFFER, buffers[3]);
-        glBufferData(GL_ARRAY_BUFFER, 16 * n, w, GL_STATIC_DRAW);
-        glEnableVertexAttribArray(3);
-        glVertexAttribPointer(3, 4, GL_FLOAT, false, 16, 0);
-        floats(buffers[4], g.centersOfRotation(), 3 * n, 4, 3);
+        glBufferData(GL_ARRAY_BUFFER, 4 * k * n, w, GL_STATIC_DRAW);
+        glEnableVertexAttribArray(GlesShaders.WEIGHTS);
+        glVertexAttribPointer(GlesShaders.WEIGHTS, k, GL_FLOAT, false, 4 * k, 0);
+        floats(buffers[4], g.centersOfRotation(), 3 * n, GlesShaders.CENTRE, 3);
         IntBuffer idx = ByteBuffer.allocateDirect(Math.max(4, 4 * indexCount)).order(ByteOrder.nativeOrder()).asIntBuffer();
         idx.put(triangles).flip();
         glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffers[5]);

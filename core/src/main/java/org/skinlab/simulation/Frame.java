@@ -76,6 +76,8 @@ public final class Frame implements AutoCloseable {
     private final float[][] dualQuaternions;
     private final float[][] scales;
     private final boolean[] scaled;
+    private final boolean[] matricesMirror;
+    private final boolean[] scalesMirror;
     /** Readers holding this buffer; the simulation writes only into buffers with none. */
     final AtomicInteger leases = new AtomicInteger();
 
@@ -102,6 +104,8 @@ public final class Frame implements AutoCloseable {
         dualQuaternions = new float[n][];
         scales = new float[n][];
         scaled = new boolean[n];
+        matricesMirror = new boolean[n];
+        scalesMirror = new boolean[n];
         for (int g = 0; g < n; g++) {
             positions[g] = new float[3 * pointCounts[g]];
             normals[g] = new float[3 * pointCounts[g]];
@@ -129,6 +133,8 @@ public final class Frame implements AutoCloseable {
         System.arraycopy(palette.dualQuaternions(), 0, dualQuaternions[g], 0, dualQuaternions[g].length);
         System.arraycopy(palette.scales(), 0, scales[g], 0, scales[g].length);
         scaled[g] = palette.hasScale();
+        matricesMirror[g] = palette.mirrorsMatrices();
+        scalesMirror[g] = palette.mirrorsScales();
     }
 
     void describe(long sequence, double playbackTime, float clipTime, SkinningMethod method,
@@ -217,6 +223,20 @@ public final class Frame implements AutoCloseable {
     /** Whether some joint of geometry {@code g} has a scale part in this step (DQS needs its first phase). */
     public boolean hasScale(int g) {
         return scaled[g];
+    }
+
+    /**
+     * Whether some joint's skinning matrix of geometry {@code g} mirrors in this step
+     * ({@link JointPalette#mirrorsMatrices()}): LBS's normals then carry the sign of the blend's
+     * determinant, in the CPU kernels and so in a shader.
+     */
+    public boolean mirrorsMatrices(int g) {
+        return matricesMirror[g];
+    }
+
+    /** As {@link #mirrorsMatrices(int)} for the scale parts ({@link JointPalette#mirrorsScales()}). */
+    public boolean mirrorsScales(int g) {
+        return scalesMirror[g];
     }
 
     /**

@@ -116,6 +116,11 @@ final class FrameChecker {
             if (p == null && frame.hasScale(g) != expected.hasScale()) {
                 p = "frame " + frame.sequence() + ": geometry " + g + " hasScale " + frame.hasScale(g);
             }
+            if (p == null && (frame.mirrorsMatrices(g) != expected.mirrorsMatrices()
+                    || frame.mirrorsScales(g) != expected.mirrorsScales())) {
+                p = "frame " + frame.sequence() + ": geometry " + g + " mirror flags " + frame.mirrorsMatrices(g)
+                        + ", " + frame.mirrorsScales(g);
+            }
             if (p != null) {
                 return p;
             }

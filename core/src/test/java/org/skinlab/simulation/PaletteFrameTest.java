@@ -9,6 +9,7 @@ import static org.junit.jupiter.api.Assertions.fail;
 
 import java.util.function.BooleanSupplier;
 
+import org.joml.Matrix4f;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.skinlab.collada.ColladaImporter;
@@ -16,6 +17,7 @@ import org.skinlab.model.Mesh;
 import org.skinlab.model.MeshInstance;
 import org.skinlab.model.Model;
 import org.skinlab.model.Skin;
+import org.skinlab.skinning.JointPalette;
 import org.skinlab.skinning.SkinnedGeometry;
 import org.skinlab.skinning.SkinningMethod;
 import org.skinlab.testing.TestPaths;
@@ -110,6 +112,24 @@ class PaletteFrameTest {
                 }
             }
         }
+    }
+
+    @Test
+    void theFrameSaysWhetherItsPaletteMirrors() {
+        // A shader's normals need the sign rule of the CPU kernels: the frame carries the palette's flags.
+        JointPalette palette = JointPalette.withoutBindFrames(2);
+        Frame f = new Frame(new int[] {1}, new int[] {2});
+        palette.prepareDualQuaternions();
+        f.copyPalette(0, palette);
+        assertFalse(f.mirrorsMatrices(0));
+        assertFalse(f.mirrorsScales(0));
+        // A reflection is no rigid motion: DQS's split moves it into the joint's scale part.
+        palette.setMatrix(1, new Matrix4f().scaling(-1, 1, 1));
+        palette.prepareDualQuaternions();
+        f.copyPalette(0, palette);
+        assertTrue(f.mirrorsMatrices(0));
+        assertTrue(f.hasScale(0));
+        assertTrue(f.mirrorsScales(0));
     }
 
     @Test

@@ -1,12 +1,28 @@
 package org.skinlab.android.logic;
 
+import org.skinlab.skinning.SkinningGlsl;
+
 /**
  * The AR app's OpenGL ES 3.00 shaders: the camera image (an external OES texture) as background,
  * and the model skinned in the vertex shader by LBS, DQS or CoR from the palette texture of
- * {@link PaletteTexture} (the desktop's {@code skinned.vert} formulas, with a 2-D float texture
- * instead of texture buffers, which ES 3.0 lacks; 4 influences per vertex).
+ * {@link PaletteTexture}, with the formulas the desktop's shader shares ({@link SkinningGlsl}: a 2-D
+ * float texture instead of the desktop's texture buffers, which ES 3.0 lacks; {@value #INFLUENCES}
+ * influences per vertex). The skinned model's vertex attributes sit at the locations below
+ * (what the app's buffers and the tests bind).
  */
 public final class GlesShaders {
+    /** Vertex attribute locations of {@link #skinnedVertex()}: bind-space position and normal (3 floats each). */
+    public static final int POSITION = 0;
+    public static final int NORMAL = 1;
+    /** {@value #INFLUENCES} joint indices per vertex, unsigned 16-bit integers ({@code glVertexAttribIPointer}). */
+    public static final int JOINTS = 2;
+    /** {@value #INFLUENCES} weights per vertex, floats. */
+    public static final int WEIGHTS = 3;
+    /** CoR's centre of rotation per vertex, 3 floats ({@code SkinnedGeometry.centersOfRotation()}). */
+    public static final int CENTRE = 4;
+    /** Influences per vertex the shader reads: the app skins an {@code InfluenceView} of this many. */
+    public static final int INFLUENCES = 4;
+
     private GlesShaders() {
     }
 
@@ -36,85 +52,68 @@ public final class GlesShaders {
             }
             """;
 
-    public static final String SKINNED_VERTEX = """
-            #version 300 es
+    /**
+     * The skinned model's vertex shader: this app's header and main around the formulas both apps
+     * share ({@link SkinningGlsl}), read from core's resource on each call (once per GL context).
+     *
+     * @throws IllegalStateException when the formulas cannot be read (an APK without them)
+     */
+    public static String skinnedVertex() {
+        return SkinningGlsl.expand(SKINNED_VERTEX_HEADER + SKINNED_VERTEX_BODY);
+    }
+
+    /** The numbers the Java side and the shader must agree on, as GLSL macros. */
+    private static final String SKINNED_VERTEX_HEADER = "#version 300 es\n"
+            + "#define POSITION_LOCATION " + POSITION + "\n"
+            + "#define NORMAL_LOCATION " + NORMAL + "\n"
+            + "#define JOINTS_LOCATION " + JOINTS + "\n"
+            + "#define WEIGHTS_LOCATION " + WEIGHTS + "\n"
+            + "#define CENTRE_LOCATION " + CENTRE + "\n"
+            + "#define INFLUENCES " + INFLUENCES + "\n"
+            + "#define MATRIX_TEXEL " + PaletteTexture.MATRIX_TEXEL + "\n"
+            + "#define ROTATION_TEXEL " + PaletteTexture.ROTATION_TEXEL + "\n"
+            + "#define SCALE_TEXEL " + PaletteTexture.SCALE_TEXEL + "\n";
+
+    private static final String SKINNED_VERTEX_BODY = """
             precision highp float;
             precision highp int;
-            layout(location = 0) in vec3 aPosition;
-            layout(location = 1) in vec3 aNormal;
-            layout(location = 2) in uvec4 aJoints;
-            layout(location = 3) in vec4 aWeights;
-            layout(location = 4) in vec3 aCentre;
-            uniform highp sampler2D uPalette;   // 8 texels per joint row (PaletteTexture)
+            layout(location = POSITION_LOCATION) in vec3 aPosition;   // bind space
+            layout(location = NORMAL_LOCATION) in vec3 aNormal;
+            layout(location = JOINTS_LOCATION) in uvec4 aJoints;      // InfluenceView with INFLUENCES slots
+            layout(location = WEIGHTS_LOCATION) in vec4 aWeights;
+            layout(location = CENTRE_LOCATION) in vec3 aCentre;       // CoR: the point's centre of rotation
+            uniform highp sampler2D uPalette;   // TEXELS_PER_JOINT texels per joint row (PaletteTexture)
             uniform int uMethod;                // 1 LBS, 2 DQS, 3 CoR
-            uniform bool uHasScale;
             uniform mat4 uModelView;
             uniform mat4 uProjection;
             out vec3 vNormal;
             out vec3 vEye;
-            vec4 texel(uint joint, int k) { return texelFetch(uPalette, ivec2(k, int(joint)), 0); }
-            void blendRows(int first, out vec4 r0, out vec4 r1, out vec4 r2) {
-                r0 = vec4(0.0); r1 = vec4(0.0); r2 = vec4(0.0);
-                for (int i = 0; i < 4; i++) {
-                    float w = aWeights[i];
-                    uint j = aJoints[i];
-                    r0 += w * texel(j, first); r1 += w * texel(j, first + 1); r2 += w * texel(j, first + 2);
-                }
-            }
-            vec3 applyRows(vec4 r0, vec4 r1, vec4 r2, vec3 p) {
-                vec4 h = vec4(p, 1.0);
-                return vec3(dot(r0, h), dot(r1, h), dot(r2, h));
-            }
-            vec3 cofactorTimes(vec4 r0, vec4 r1, vec4 r2, vec3 n) {
-                return vec3(dot(cross(r1.xyz, r2.xyz), n), dot(cross(r2.xyz, r0.xyz), n), dot(cross(r0.xyz, r1.xyz), n));
-            }
-            vec3 rotate(vec4 q, vec3 v) { return v + 2.0 * cross(q.xyz, cross(q.xyz, v) + q.w * v); }
+
+            // The palette as skinning.glsl reads it: parts are the first texel of their rows.
+            const int MATRIX_ROWS = MATRIX_TEXEL;
+            const int SCALE_ROWS = SCALE_TEXEL;
+            int influenceCount() { return INFLUENCES; }
+            float weightAt(int i) { return aWeights[i]; }
+            uint jointAt(int i) { return aJoints[i]; }
+            vec4 paletteRow(int part, uint joint, int row) { return texelFetch(uPalette, ivec2(part + row, int(joint)), 0); }
+            vec4 paletteRotation(uint joint) { return texelFetch(uPalette, ivec2(ROTATION_TEXEL, int(joint)), 0); }
+            vec4 paletteDual(uint joint) { return texelFetch(uPalette, ivec2(ROTATION_TEXEL + 1, int(joint)), 0); }
+
+            #include "skinning.glsl"
+
             void main() {
-                vec3 p = aPosition;
-                vec3 n = aNormal;
-                vec3 c = aCentre;
-                vec3 outP;
-                vec3 outN;
-                if (uMethod == 1) {
-                    vec4 r0, r1, r2;
-                    blendRows(0, r0, r1, r2);
-                    outP = applyRows(r0, r1, r2, p);
-                    outN = cofactorTimes(r0, r1, r2, n);
+                vec3 p;
+                vec3 n;
+                if (uMethod == 2) {
+                    dqs(aPosition, aNormal, p, n);
+                } else if (uMethod == 3) {
+                    cor(aPosition, aNormal, aCentre, p, n);
                 } else {
-                    if (uHasScale) {
-                        vec4 s0, s1, s2;
-                        blendRows(5, s0, s1, s2);
-                        n = cofactorTimes(s0, s1, s2, n);
-                        p = applyRows(s0, s1, s2, p);
-                        c = applyRows(s0, s1, s2, c);
-                    }
-                    vec4 pivot = texel(aJoints.x, 3);
-                    vec4 br = vec4(0.0);
-                    vec4 bd = vec4(0.0);
-                    vec3 t = vec3(0.0);
-                    for (int i = 0; i < 4; i++) {
-                        uint j = aJoints[i];
-                        vec4 r = texel(j, 3);
-                        vec4 d = texel(j, 4);
-                        float w = dot(pivot, r) < 0.0 ? -aWeights[i] : aWeights[i];
-                        br += w * r;
-                        bd += w * d;
-                        t += aWeights[i] * (rotate(r, c) + 2.0 * (r.w * d.xyz - d.w * r.xyz + cross(r.xyz, d.xyz)));
-                    }
-                    float len = length(br);
-                    br /= len;
-                    bd /= len;
-                    if (uMethod == 2) {
-                        outP = rotate(br, p) + 2.0 * (br.w * bd.xyz - bd.w * br.xyz + cross(br.xyz, bd.xyz));
-                    } else {
-                        // CoR: the rotation blended as in DQS, the translation LBS's of the rigid parts at c.
-                        outP = rotate(br, p - c) + t;
-                    }
-                    outN = rotate(br, n);
+                    lbs(aPosition, aNormal, p, n);
                 }
-                vec4 eye = uModelView * vec4(outP, 1.0);
+                vec4 eye = uModelView * vec4(p, 1.0);
                 vEye = eye.xyz;
-                vNormal = mat3(uModelView) * outN;
+                vNormal = mat3(uModelView) * n;
                 gl_Position = uProjection * eye;
             }
             """;

@@ -8,9 +8,16 @@ import org.skinlab.simulation.Frame;
  * per joint, read in the shader with {@code texelFetch(palette, ivec2(k, joint), 0)}: k = 0-2 the
  * rows of the 3x4 skinning matrix, 3-4 the dual quaternion (rotation x y z w, dual part), 5-7 the
  * rows of the scale part (DQS's and CoR's scale phase; identity rows when the frame has none).
+ * The shader's header takes those k from the constants below ({@link GlesShaders}).
  */
 public final class PaletteTexture {
     public static final int TEXELS_PER_JOINT = 8;
+    /** First texel of a joint's skinning matrix rows (3 texels). */
+    public static final int MATRIX_TEXEL = 0;
+    /** The texel of a joint's dual quaternion's rotation; its dual part is the next one. */
+    public static final int ROTATION_TEXEL = 3;
+    /** First texel of a joint's scale part rows (3 texels). */
+    public static final int SCALE_TEXEL = 5;
     private static final float[] IDENTITY_ROWS = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
 
     private PaletteTexture() {
@@ -37,12 +44,12 @@ public final class PaletteTexture {
     public static void pack(int joints, float[] matrices, float[] dualQuaternions, float[] scales, float[] dest) {
         for (int j = 0; j < joints; j++) {
             int o = 4 * TEXELS_PER_JOINT * j;
-            System.arraycopy(matrices, 12 * j, dest, o, 12);
-            System.arraycopy(dualQuaternions, 8 * j, dest, o + 12, 8);
+            System.arraycopy(matrices, 12 * j, dest, o + 4 * MATRIX_TEXEL, 12);
+            System.arraycopy(dualQuaternions, 8 * j, dest, o + 4 * ROTATION_TEXEL, 8);
             if (scales != null) {
-                System.arraycopy(scales, 12 * j, dest, o + 20, 12);
+                System.arraycopy(scales, 12 * j, dest, o + 4 * SCALE_TEXEL, 12);
             } else {
-                System.arraycopy(IDENTITY_ROWS, 0, dest, o + 20, 12);
+                System.arraycopy(IDENTITY_ROWS, 0, dest, o + 4 * SCALE_TEXEL, 12);
             }
         }
     }

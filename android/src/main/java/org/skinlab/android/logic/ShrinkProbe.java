@@ -23,10 +23,11 @@ import org.skinlab.simulation.SkeletalAnimatedMesh;
 import org.skinlab.skinning.CentersOfRotation;
 
 /**
- * Runs the app's core paths (import, simulation, CoR's centres and their cache, marker tracking)
- * on a desktop JVM after R8 has shrunk them with the APK's rules ({@code gradle
- * :android:checkShrunk}): the APK cannot be run here, but this shows that shrinking left BoofCV,
- * JOML and core working (nothing they reach by reflection was removed). Exits 0 and prints "shrunk app paths work" on success.
+ * Runs the app's core paths (import, simulation, CoR's centres and their cache, the skinning
+ * shader's text with core's formulas, marker tracking) on a desktop JVM after R8 has shrunk them
+ * with the APK's rules ({@code gradle :android:checkShrunk}): the APK cannot be run here, but this
+ * shows that shrinking left BoofCV, JOML and core working (nothing they reach by reflection or as
+ * a resource was removed). Exits 0 and prints "shrunk app paths work" on success.
  */
 public final class ShrinkProbe {
     private ShrinkProbe() {
@@ -46,6 +47,10 @@ public final class ShrinkProbe {
             }
             // CoR's centres as the Activity's loader prepares them, kept in the app's cache folder.
             mesh.geometries().get(0).centersOfRotation();
+        }
+        // The skinning shader as the renderer builds it: core's formulas, a resource beside the classes.
+        if (!GlesShaders.skinnedVertex().contains("void cor(")) {
+            throw new IllegalStateException("the shrunk app's skinning shader lacks the shared formulas");
         }
         try (Stream<Path> cached = Files.list(cache)) {
             List<Path> files = cached.collect(Collectors.toList());

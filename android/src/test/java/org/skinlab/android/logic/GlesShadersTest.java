@@ -1,13 +1,9 @@
 package org.skinlab.android.logic;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assumptions.assumeTrue;
-import static org.lwjgl.glfw.GLFW.*;
 import static org.lwjgl.opengles.GLES30.*;
 
 import org.junit.jupiter.api.Test;
-import org.lwjgl.opengles.GLES;
-import org.lwjgl.opengles.GLESCapabilities;
 
 /**
  * The app's GLSL ES 3.00 shaders compile and link on a real OpenGL ES 3 implementation: Mesa's
@@ -18,36 +14,15 @@ import org.lwjgl.opengles.GLESCapabilities;
 class GlesShadersTest {
     @Test
     void theShadersCompileAndLinkOnOpenGlEs3() {
-        assumeTrue(System.getenv("DISPLAY") != null, "no display for an OpenGL ES context (install Xvfb)");
-        glfwInitHint(GLFW_PLATFORM, GLFW_PLATFORM_X11);
-        assumeTrue(glfwInit(), "GLFW does not start");
-        try {
-            glfwDefaultWindowHints();
-            glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE);
-            glfwWindowHint(GLFW_CLIENT_API, GLFW_OPENGL_ES_API);
-            glfwWindowHint(GLFW_CONTEXT_CREATION_API, GLFW_EGL_CONTEXT_API);
-            glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
-            glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 0);
-            long window = glfwCreateWindow(64, 64, "gles", 0, 0);
-            assumeTrue(window != 0, "no OpenGL ES 3.0 context here");
-            try {
-                glfwMakeContextCurrent(window);
-                GLESCapabilities caps = GLES.createCapabilities();
-                assertEquals(0, link(GlesShaders.SKINNED_VERTEX, GlesShaders.SKINNED_FRAGMENT).length(),
-                        "skinning program");
-                if (caps.GL_OES_EGL_image_external_essl3) {
-                    assertEquals(0, link(GlesShaders.BACKGROUND_VERTEX, GlesShaders.BACKGROUND_FRAGMENT).length(),
-                            "background program");
-                } else {
-                    System.out.println("GlesShadersTest: no GL_OES_EGL_image_external_essl3 here: the camera "
-                            + "background shader is not compiled (phones have it)");
-                }
-            } finally {
-                GLES.setCapabilities(null);
-                glfwDestroyWindow(window);
+        try (GlesContext context = GlesContext.openOrSkip()) {
+            assertEquals(0, link(GlesShaders.skinnedVertex(), GlesShaders.SKINNED_FRAGMENT).length(), "skinning program");
+            if (context.capabilities().GL_OES_EGL_image_external_essl3) {
+                assertEquals(0, link(GlesShaders.BACKGROUND_VERTEX, GlesShaders.BACKGROUND_FRAGMENT).length(),
+                        "background program");
+            } else {
+                System.out.println("GlesShadersTest: no GL_OES_EGL_image_external_essl3 here: the camera "
+                        + "background shader is not compiled (phones have it)");
             }
-        } finally {
-            glfwTerminate();
         }
     }
 

@@ -46,22 +46,8 @@ final class PaletteBuffers implements AutoCloseable {
         glBufferSubData(GL_TEXTURE_BUFFER, 0, frame.scales(g));
         glBindBuffer(GL_TEXTURE_BUFFER, 0);
         hasScale = frame.hasScale(g);
-        matricesMirror = mirrors(frame.skinningMatrices(g), frame.jointCount(g));
-        scalesMirror = hasScale && mirrors(frame.scales(g), frame.jointCount(g));
-    }
-
-    /** Whether some joint's 3x3 part has a negative determinant (then normals need its sign). */
-    private static boolean mirrors(float[] m, int joints) {
-        for (int j = 0; j < joints; j++) {
-            int o = 12 * j;
-            double det = m[o] * ((double) m[o + 5] * m[o + 10] - (double) m[o + 6] * m[o + 9])
-                    - m[o + 1] * ((double) m[o + 4] * m[o + 10] - (double) m[o + 6] * m[o + 8])
-                    + m[o + 2] * ((double) m[o + 4] * m[o + 9] - (double) m[o + 5] * m[o + 8]);
-            if (det < 0) {
-                return true;
-            }
-        }
-        return false;
+        matricesMirror = frame.mirrorsMatrices(g);
+        scalesMirror = frame.mirrorsScales(g);
     }
 
     void bind() {

@@ -18,9 +18,6 @@ uniform samplerBuffer uScales;        // 3 texels per joint: rows of the scale/s
 
 uniform int uSkinning;        // 0: positions are already posed (CPU), 1: LBS, 2: DQS, 3: CoR
 uniform int uInfluences;      // 4 or 8
-uniform bool uHasScale;       // DQS: run the scale phase first
-uniform bool uMatricesMirror; // LBS normals: times the sign of the blend's determinant
-uniform bool uScalesMirror;
 uniform bool uCompare;        // difference view: also skin with the other method
 uniform int uSelectedJoint;   // weight view
 
@@ -36,8 +33,13 @@ out vec2 vUv;
 out float vScalar;            // weight view: weight; difference view: |LBS - DQS|
 out vec3 vPosed;              // for transform feedback: the skinned position before uModel
 
-vec4 texel(samplerBuffer s, uint joint, int stride, int i) {
-    return texelFetch(s, int(joint) * stride + i);
+// The palette as skinning.glsl reads it: matrices, dual quaternions and scale parts each in
+// their own texture buffer.
+const int MATRIX_ROWS = 0;
+const int SCALE_ROWS = 1;
+
+int influenceCount() {
+    return uInfluences;
 }
 
 float weightAt(int i) {
@@ -48,105 +50,21 @@ uint jointAt(int i) {
     return i < 4 ? aJoints0[i] : aJoints1[i - 4];
 }
 
-// Weighted sum of the rows of a 3x4 matrix palette.
-void blendRows(samplerBuffer s, out vec4 r0, out vec4 r1, out vec4 r2) {
-    r0 = vec4(0.0); r1 = vec4(0.0); r2 = vec4(0.0);
-    for (int i = 0; i < uInfluences; i++) {
-        float w = weightAt(i);
-        uint j = jointAt(i);
-        r0 += w * texel(s, j, 3, 0);
-        r1 += w * texel(s, j, 3, 1);
-        r2 += w * texel(s, j, 3, 2);
-    }
+vec4 paletteRow(int part, uint joint, int row) {
+    int texel = int(joint) * 3 + row;
+    return part == SCALE_ROWS ? texelFetch(uScales, texel) : texelFetch(uMatrices, texel);
 }
 
-vec3 applyRows(vec4 r0, vec4 r1, vec4 r2, vec3 p) {
-    vec4 h = vec4(p, 1.0);
-    return vec3(dot(r0, h), dot(r1, h), dot(r2, h));
+vec4 paletteRotation(uint joint) {
+    return texelFetch(uDualQuaternions, int(joint) * 2);
 }
 
-// The inverse transpose up to a positive factor: the cofactor matrix, as core's kernels do.
-vec3 cofactorTimes(vec4 r0, vec4 r1, vec4 r2, vec3 n, bool mirrors) {
-    vec3 c0 = cross(r1.xyz, r2.xyz);
-    vec3 c1 = cross(r2.xyz, r0.xyz);
-    vec3 c2 = cross(r0.xyz, r1.xyz);
-    vec3 m = vec3(dot(c0, n), dot(c1, n), dot(c2, n));
-    return mirrors && dot(r0.xyz, c0) < 0.0 ? -m : m;
+vec4 paletteDual(uint joint) {
+    return texelFetch(uDualQuaternions, int(joint) * 2 + 1);
 }
 
-void lbs(vec3 p, vec3 n, out vec3 outP, out vec3 outN) {
-    vec4 r0, r1, r2;
-    blendRows(uMatrices, r0, r1, r2);
-    outP = applyRows(r0, r1, r2, p);
-    outN = cofactorTimes(r0, r1, r2, n, uMatricesMirror);
-}
-
-vec3 rotate(vec4 q, vec3 v) {
-    return v + 2.0 * cross(q.xyz, cross(q.xyz, v) + q.w * v);
-}
-
-void dqs(vec3 p, vec3 n, out vec3 outP, out vec3 outN) {
-    if (uHasScale) {
-        vec4 s0, s1, s2;
-        blendRows(uScales, s0, s1, s2);
-        n = cofactorTimes(s0, s1, s2, n, uScalesMirror);
-        p = applyRows(s0, s1, s2, p);
-    }
-    vec4 pivot = texel(uDualQuaternions, aJoints0.x, 2, 0);
-    vec4 br = vec4(0.0);
-    vec4 bd = vec4(0.0);
-    for (int i = 0; i < uInfluences; i++) {
-        uint j = jointAt(i);
-        vec4 r = texel(uDualQuaternions, j, 2, 0);
-        vec4 d = texel(uDualQuaternions, j, 2, 1);
-        // Antipodality: each rotation on the pivot's side of the 4-sphere (Kavan et al. 2008).
-        float w = dot(pivot, r) < 0.0 ? -weightAt(i) : weightAt(i);
-        br += w * r;
-        bd += w * d;
-    }
-    float len = length(br);
-    br /= len;
-    bd /= len;
-    vec3 t = 2.0 * (br.w * bd.xyz - bd.w * br.xyz + cross(br.xyz, bd.xyz));
-    outP = rotate(br, p) + t;
-    outN = rotate(br, n);
-}
-
-// CoR (Le and Hodgins 2016): the rotations blended as in DQS, the translation LBS's (of the
-// joints' rigid parts) at the point's centre of rotation; the scale phase first, as in DQS.
-void cor(vec3 p, vec3 n, out vec3 outP, out vec3 outN) {
-    vec3 c = aCentre;
-    if (uHasScale) {
-        vec4 s0, s1, s2;
-        blendRows(uScales, s0, s1, s2);
-        n = cofactorTimes(s0, s1, s2, n, uScalesMirror);
-        p = applyRows(s0, s1, s2, p);
-        c = applyRows(s0, s1, s2, c);
-    }
-    vec4 pivot = texel(uDualQuaternions, aJoints0.x, 2, 0);
-    vec4 q = vec4(0.0);
-    vec3 t = vec3(0.0);
-    for (int i = 0; i < uInfluences; i++) {
-        uint j = jointAt(i);
-        float w = weightAt(i);
-        vec4 r = texel(uDualQuaternions, j, 2, 0);
-        q += (dot(pivot, r) < 0.0 ? -w : w) * r;
-        if (uHasScale) {
-            // The rigid part D of a scaled joint, from its dual quaternion.
-            vec4 d = texel(uDualQuaternions, j, 2, 1);
-            t += w * (rotate(r, c) + 2.0 * (r.w * d.xyz - d.w * r.xyz + cross(r.xyz, d.xyz)));
-        }
-    }
-    if (!uHasScale) {
-        // D = M: LBS of the centre is the blended matrix applied once (as the CPU kernel does).
-        vec4 m0, m1, m2;
-        blendRows(uMatrices, m0, m1, m2);
-        t = applyRows(m0, m1, m2, c);
-    }
-    q = normalize(q);
-    outP = rotate(q, p - c) + t;
-    outN = rotate(q, n);
-}
+// LBS, DQS and CoR: the formulas the Android app's shader shares (core's skinning.glsl).
+#include "skinning.glsl"
 
 void main() {
     vec3 posed = aPosition;
@@ -157,7 +75,7 @@ void main() {
     } else if (uSkinning == 2) {
         dqs(aPosition, aNormal, posed, normal);
     } else if (uSkinning == 3) {
-        cor(aPosition, aNormal, posed, normal);
+        cor(aPosition, aNormal, aCentre, posed, normal);
     }
     if (uCompare) {
         vec3 pl, pd, unused;

@@ -1,0 +1,130 @@
+// The skinning formulas on the GPU: LBS, DQS with its scale phase, CoR, as core's CPU kernels
+// compute them (ScalarLbsSkinner, ScalarDqsSkinner, ScalarCorSkinner; Frame's class comment has
+// the palette's layouts). Both apps' vertex shaders are made from this one text, so that they
+// cannot drift apart: the desktop's skinned.vert (GLSL 330, the palette in texture buffers) and
+// the Android app's GlesShaders.skinnedVertex() (GLSL ES 3.00, the palette in one float texture,
+// PaletteTexture) each hold their own header (#version, precision, inputs, how the palette is
+// fetched, how many influences) and main, and between them the line
+//     #include "skinning.glsl"
+// that SkinningGlsl.expand replaces with this text before the driver sees it (GLSL has no include).
+//
+// Why a Java resource of core, read at run time: both apps depend on core, so its jar brings the
+// file to the desktop, to the Android tests and to R8 without a build step of its own, and one
+// mechanism serves both apps (the desktop reads all its shaders as resources). To core it is only
+// text: core gains no GL type. In the APK it sits at the root, where Android's class loader finds
+// Java resources (android/build.gradle's apk task adds it; android/check-apk.sh checks it).
+//
+// The header declares, before the include line, in the same text for both GLSL versions:
+//   const int MATRIX_ROWS, SCALE_ROWS     which palette part paletteRow reads
+//   int influenceCount()                  influences per vertex the loops read
+//   float weightAt(int i), uint jointAt(int i)
+//                                         slot i's weight and palette joint (slot 0 the heaviest:
+//                                         the DQS pivot)
+//   vec4 paletteRow(int part, uint joint, int row)
+//                                         row 0-2 of the joint's skinning matrix M (MATRIX_ROWS)
+//                                         or scale part S (SCALE_ROWS), row-major 3x4
+//   vec4 paletteRotation(uint joint), vec4 paletteDual(uint joint)
+//                                         the joint's dual quaternion: rotation (x y z w), dual part
+
+uniform bool uHasScale;       // some joint has a scale part this frame: DQS and CoR run the scale phase first
+uniform bool uMatricesMirror; // LBS normals: times the sign of the blend's determinant (Frame.mirrorsMatrices)
+uniform bool uScalesMirror;   // the scale phase's normals: the same for the blended S (Frame.mirrorsScales)
+
+// Weighted sum of the rows of a 3x4 matrix palette part.
+void blendRows(int part, out vec4 r0, out vec4 r1, out vec4 r2) {
+    r0 = vec4(0.0); r1 = vec4(0.0); r2 = vec4(0.0);
+    for (int i = 0; i < influenceCount(); i++) {
+        float w = weightAt(i);
+        uint j = jointAt(i);
+        r0 += w * paletteRow(part, j, 0);
+        r1 += w * paletteRow(part, j, 1);
+        r2 += w * paletteRow(part, j, 2);
+    }
+}
+
+vec3 applyRows(vec4 r0, vec4 r1, vec4 r2, vec3 p) {
+    vec4 h = vec4(p, 1.0);
+    return vec3(dot(r0, h), dot(r1, h), dot(r2, h));
+}
+
+// The inverse transpose up to a positive factor: the cofactor matrix, as core's kernels do.
+vec3 cofactorTimes(vec4 r0, vec4 r1, vec4 r2, vec3 n, bool mirrors) {
+    vec3 c0 = cross(r1.xyz, r2.xyz);
+    vec3 c1 = cross(r2.xyz, r0.xyz);
+    vec3 c2 = cross(r0.xyz, r1.xyz);
+    vec3 m = vec3(dot(c0, n), dot(c1, n), dot(c2, n));
+    return mirrors && dot(r0.xyz, c0) < 0.0 ? -m : m;
+}
+
+void lbs(vec3 p, vec3 n, out vec3 outP, out vec3 outN) {
+    vec4 r0, r1, r2;
+    blendRows(MATRIX_ROWS, r0, r1, r2);
+    outP = applyRows(r0, r1, r2, p);
+    outN = cofactorTimes(r0, r1, r2, n, uMatricesMirror);
+}
+
+vec3 rotate(vec4 q, vec3 v) {
+    return v + 2.0 * cross(q.xyz, cross(q.xyz, v) + q.w * v);
+}
+
+void dqs(vec3 p, vec3 n, out vec3 outP, out vec3 outN) {
+    if (uHasScale) {
+        vec4 s0, s1, s2;
+        blendRows(SCALE_ROWS, s0, s1, s2);
+        n = cofactorTimes(s0, s1, s2, n, uScalesMirror);
+        p = applyRows(s0, s1, s2, p);
+    }
+    vec4 pivot = paletteRotation(jointAt(0));
+    vec4 br = vec4(0.0);
+    vec4 bd = vec4(0.0);
+    for (int i = 0; i < influenceCount(); i++) {
+        uint j = jointAt(i);
+        vec4 r = paletteRotation(j);
+        vec4 d = paletteDual(j);
+        // Antipodality: each rotation on the pivot's side of the 4-sphere (Kavan et al. 2008).
+        float w = dot(pivot, r) < 0.0 ? -weightAt(i) : weightAt(i);
+        br += w * r;
+        bd += w * d;
+    }
+    float len = length(br);
+    br /= len;
+    bd /= len;
+    vec3 t = 2.0 * (br.w * bd.xyz - bd.w * br.xyz + cross(br.xyz, bd.xyz));
+    outP = rotate(br, p) + t;
+    outN = rotate(br, n);
+}
+
+// CoR (Le and Hodgins 2016) of point p with centre c: the rotations blended as in DQS, the
+// translation LBS's (of the joints' rigid parts) at the centre; the scale phase first, as in DQS.
+void cor(vec3 p, vec3 n, vec3 c, out vec3 outP, out vec3 outN) {
+    if (uHasScale) {
+        vec4 s0, s1, s2;
+        blendRows(SCALE_ROWS, s0, s1, s2);
+        n = cofactorTimes(s0, s1, s2, n, uScalesMirror);
+        p = applyRows(s0, s1, s2, p);
+        c = applyRows(s0, s1, s2, c);
+    }
+    vec4 pivot = paletteRotation(jointAt(0));
+    vec4 q = vec4(0.0);
+    vec3 t = vec3(0.0);
+    for (int i = 0; i < influenceCount(); i++) {
+        uint j = jointAt(i);
+        float w = weightAt(i);
+        vec4 r = paletteRotation(j);
+        q += (dot(pivot, r) < 0.0 ? -w : w) * r;
+        if (uHasScale) {
+            // The rigid part D of a scaled joint, from its dual quaternion.
+            vec4 d = paletteDual(j);
+            t += w * (rotate(r, c) + 2.0 * (r.w * d.xyz - d.w * r.xyz + cross(r.xyz, d.xyz)));
+        }
+    }
+    if (!uHasScale) {
+        // D = M: LBS of the centre is the blended matrix applied once (as the CPU kernel does).
+        vec4 m0, m1, m2;
+        blendRows(MATRIX_ROWS, m0, m1, m2);
+        t = applyRows(m0, m1, m2, c);
+    }
+    q = normalize(q);
+    outP = rotate(q, p - c) + t;
+    outN = rotate(q, n);
+}
