@@ -25,8 +25,8 @@ record ApiReport(String what, int minSdk, int classes, int platformReferences, i
 
     /** One line on success; on failure, every violation and stale exception, and what to do. */
     String message() {
-        String counts = String.format(Locale.ROOT, "%s: %,d classes, %,d references to the platform", what, classes,
-                platformReferences);
+        String counts = what + ": " + count(classes, "class", "classes") + ", "
+                + count(platformReferences, "reference", "references") + " to the platform";
         if (passed()) {
             String allowedText = allowed == 0 ? "" : String.format(Locale.ROOT, ", %d allowed by %s", allowed, exceptionsName);
             return String.format(Locale.ROOT, "api-check: %s, all at API %d (%d guarded%s)", counts, minSdk, guarded,
@@ -34,9 +34,9 @@ record ApiReport(String what, int minSdk, int classes, int platformReferences, i
         }
         StringBuilder s = new StringBuilder("api-check: FAILED: ").append(counts).append('\n');
         if (!violations.isEmpty()) {
-            s.append(String.format(Locale.ROOT,
-                    "%d reference(s) to classes or members that API %d lacks, not under an SDK_INT guard:%n", violations.size(),
-                    minSdk));
+            s.append(count(violations.size(), "reference", "references"))
+                    .append(String.format(Locale.ROOT, " to classes or members that API %d lacks, not under an SDK_INT guard:%n",
+                            minSdk));
             s.append(violations.stream().map(Violation::format).collect(Collectors.joining("\n"))).append('\n');
             s.append(String.format(Locale.ROOT, "Levels are ranges: 'API 27-33' is in the API-33 signature, 'above API 33' "
                     + "in neither (newer, or never in Android's public API).%n"));
@@ -49,5 +49,9 @@ record ApiReport(String what, int minSdk, int classes, int platformReferences, i
             unusedExceptions.forEach(e -> s.append("  ").append(e.format()).append('\n'));
         }
         return s.toString().stripTrailing();
+    }
+
+    private static String count(int n, String one, String many) {
+        return String.format(Locale.ROOT, "%,d %s", n, n == 1 ? one : many);
     }
 }

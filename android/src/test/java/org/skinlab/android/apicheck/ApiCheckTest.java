@@ -34,7 +34,7 @@ class ApiCheckTest {
         assertEquals(LevelRange.ABOVE_API_33, v.level());
         assertTrue(report.message().contains("  " + FIXTURES + "UnguardedPathOf.run() (UnguardedPathOf.java:11)\n"
                 + "      calls " + PATH_OF + ": above API 33"), report.message());
-        assertTrue(report.message().startsWith("api-check: FAILED: fixture: 1 classes"), report.message());
+        assertTrue(report.message().startsWith("api-check: FAILED: fixture: 1 class, "), report.message());
     }
 
     @Test
@@ -42,7 +42,7 @@ class ApiCheckTest {
         ApiReport report = FixtureDex.check(FixtureDex.d8(dir, "GuardedPathOf"));
         assertTrue(report.passed(), report.message());
         assertEquals(1, report.guarded(), "the Path.of call counts as guarded");
-        assertTrue(report.message().matches("api-check: fixture: 1 classes, \\d+ references to the platform, "
+        assertTrue(report.message().matches("api-check: fixture: 1 class, \\d+ references to the platform, "
                 + "all at API 26 \\(1 guarded\\)"), report.message());
     }
 
