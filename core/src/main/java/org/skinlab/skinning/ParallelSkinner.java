@@ -1,5 +1,8 @@
 package org.skinlab.skinning;
 
+import java.lang.invoke.MethodHandle;
+import java.lang.invoke.MethodHandles;
+import java.lang.invoke.MethodType;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.atomic.AtomicReference;
@@ -33,6 +36,12 @@ import java.util.concurrent.locks.LockSupport;
 public final class ParallelSkinner implements Skinner, AutoCloseable {
     /** Spins before a waiting thread parks (worker) or yields (caller); some tens of µs. */
     private static final int SPIN = 20_000;
+    /**
+     * {@link Thread#onSpinWait()} where the platform has it, else a handle that does nothing: the
+     * method is Java 9 but Android's only from API 33, and core runs on Android 8 (a direct call
+     * would fail there). A constant handle is inlined by the JIT as a direct call is.
+     */
+    private static final MethodHandle SPIN_WAIT = spinWaitHandle();
     /** Chunks per thread: enough to even out a late start, few enough to keep per-call costs small. */
     private static final int CHUNKS_PER_THREAD = 4;
     /** Points below which a chunk is not worth a handoff. */
@@ -156,7 +165,7 @@ public final class ParallelSkinner implements Skinner, AutoCloseable {
         int done = runChunks(generation, true);
         for (int spins = 0; completed.get() + done < chunkCount; spins++) {
             if (spins < SPIN) {
-                Thread.onSpinWait();
+                spinWait();
             } else {
                 Thread.yield();
             }
@@ -236,7 +245,7 @@ public final class ParallelSkinner implements Skinner, AutoCloseable {
     private void waitForFrame(int seen) {
         for (int spins = 0; (int) (claim.get() >>> 32) == seen && !closed; spins++) {
             if (spins < SPIN) {
-                Thread.onSpinWait();
+                spinWait();
             } else {
                 parked.incrementAndGet();
                 // Re-check after announcing: a frame published before the increment would
@@ -267,6 +276,26 @@ public final class ParallelSkinner implements Skinner, AutoCloseable {
                 Thread.currentThread().interrupt();
                 return;
             }
+        }
+    }
+
+    private static MethodHandle spinWaitHandle() {
+        MethodType noArguments = MethodType.methodType(void.class);
+        try {
+            return MethodHandles.publicLookup().findStatic(Thread.class, "onSpinWait", noArguments);
+        } catch (NoSuchMethodException | IllegalAccessException e) {
+            // A handle returning a constant, its result dropped: does nothing.
+            return MethodHandles.constant(Integer.class, 0).asType(noArguments);
+        }
+    }
+
+    private static void spinWait() {
+        try {
+            SPIN_WAIT.invokeExact();
+        } catch (RuntimeException | Error e) {
+            throw e;
+        } catch (Throwable e) {
+            throw new AssertionError("neither spin-wait handle throws a checked exception", e);
         }
     }
 }
