@@ -44,8 +44,8 @@ import org.skinlab.ar.GrayImage;
 final class CameraSource {
     /** What the Activity hears, on the camera or the tracking thread. */
     interface Listener {
-        /** The camera is open: the analysed stream's intrinsics and the sensor's orientation. */
-        void onOpened(CameraIntrinsics intrinsics, int sensorOrientation);
+        /** {@code source}'s camera is open: the analysed stream's intrinsics and the sensor's orientation. */
+        void onOpened(CameraSource source, CameraIntrinsics intrinsics, int sensorOrientation);
 
         /** Something failed or was taken away; the message is for the status line. */
         void onProblem(String message);
@@ -123,7 +123,7 @@ final class CameraSource {
                         return;
                     }
                     device = camera;
-                    listener.onOpened(intrinsics, orientation == null ? 90 : orientation);
+                    listener.onOpened(CameraSource.this, intrinsics, orientation == null ? 90 : orientation);
                     startCapture();
                 });
             }

@@ -338,6 +338,10 @@ public final class SkinlabActivity extends Activity {
      * close).
      */
     void onSurfaceReady(SurfaceTexture texture) {
+        if (isDestroyed()) {
+            texture.release(); // the GL thread's last word, after onDestroy ended the camera thread
+            return;
+        }
         if (texture != previewTexture) {
             SurfaceTexture old = previewTexture;
             previewTexture = texture;
@@ -359,8 +363,8 @@ public final class SkinlabActivity extends Activity {
                 new Handler(cameraThread.getLooper()), new Handler(trackingThread.getLooper()),
                 new CameraSource.Listener() {
                     @Override
-                    public void onOpened(CameraIntrinsics k, int orientation) {
-                        ui.post(() -> onCameraOpened(k, orientation));
+                    public void onOpened(CameraSource opened, CameraIntrinsics k, int orientation) {
+                        ui.post(() -> onCameraOpened(opened, k, orientation));
                     }
 
                     @Override
@@ -372,10 +376,10 @@ public final class SkinlabActivity extends Activity {
         source.open(previewTexture);
     }
 
-    /** On the UI thread: the camera is open; tracking starts with its intrinsics. */
-    private void onCameraOpened(CameraIntrinsics k, int orientation) {
-        if (camera == null) {
-            return; // closed meanwhile
+    /** On the UI thread: a camera is open; if it is still the current one, tracking starts with its intrinsics. */
+    private void onCameraOpened(CameraSource opened, CameraIntrinsics k, int orientation) {
+        if (camera != opened) {
+            return; // closed meanwhile (and perhaps another opened)
         }
         intrinsics = k;
         sensorOrientation = orientation;
