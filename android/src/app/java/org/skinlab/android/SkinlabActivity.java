@@ -2,14 +2,10 @@ package org.skinlab.android;
 
 import java.io.File;
 import java.io.IOException;
-import java.io.InputStream;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
-import java.util.concurrent.atomic.AtomicInteger;
 
 import android.Manifest;
 import android.app.Activity;
@@ -36,6 +32,7 @@ import android.widget.TextView;
 
 import org.skinlab.android.logic.AppActions;
 import org.skinlab.android.logic.MarkerSize;
+import org.skinlab.android.logic.ModelLoader;
 import org.skinlab.android.logic.ModelCatalog;
 import org.skinlab.android.logic.PermissionFlow;
 import org.skinlab.android.logic.SavedChoices;
@@ -45,12 +42,9 @@ import org.skinlab.ar.CameraIntrinsics;
 import org.skinlab.ar.FiducialTracker;
 import org.skinlab.ar.MarkerScene;
 import org.skinlab.ar.TrackerConfig;
-import org.skinlab.collada.ColladaImporter;
-import org.skinlab.model.Model;
 import org.skinlab.simulation.AnimationConfig;
 import org.skinlab.simulation.SkeletalAnimatedMesh;
 import org.skinlab.skinning.CentersOfRotation;
-import org.skinlab.skinning.SkinnedGeometry;
 
 /**
  * The AR app's one Activity: the camera image with the animated character standing on the printed
@@ -69,7 +63,8 @@ public final class SkinlabActivity extends Activity {
 
     private final AnimationConfig config = new AnimationConfig(AnimationConfig.Settings.DEFAULT.withCpuSkinning(false));
     private final Handler ui = new Handler(Looper.getMainLooper());
-    private final ExecutorService loader = Executors.newSingleThreadExecutor(r -> new Thread(r, "model-loader"));
+    private final ModelLoader models = new ModelLoader(name -> getAssets().open("models/" + name), config,
+            mesh -> ui.post(() -> swapIn(mesh)));
     private final List<Button> buttons = new ArrayList<>();
     /** The printed marker's size (docs/marker's 100 mm unless the user taps another). */
     private final MarkerSize markerSize = new MarkerSize(metres -> ui.post(this::onMarkerSize));
@@ -96,22 +91,17 @@ public final class SkinlabActivity extends Activity {
     private volatile SkeletalAnimatedMesh mesh;
     /** What the camera or tracking last reported ("" when it works); kept apart from the model's. */
     private volatile String cameraProblem = "";
-    /** What the model loader last reported. */
-    private volatile String modelProblem = "";
     private volatile boolean resumed;
-    /** The model asked for last; a load that is no longer wanted when its turn comes is skipped. */
-    private volatile String wantedModel;
-    private final AtomicInteger loadsPending = new AtomicInteger();
 
     private final Runnable statusUpdate = new Runnable() {
         @Override
         public void run() {
             ArSession s = session;
-            String model = loadsPending.get() > 0 ? catalog.current() + " (loading)" : catalog.current();
+            String model = models.loading() ? catalog.current() + " (loading)" : catalog.current();
             String line = StatusLine.format(renderer.fps(), s == null ? null : s.current(), config.settings(), model);
             String gl = renderer.problem();
             status.setText(StatusLine.withProblems(line, gl == null ? "" : "OpenGL ES: " + gl, cameraProblem,
-                    modelProblem));
+                    models.problem()));
             for (int i = 0; i < buttons.size(); i++) {
                 buttons.get(i).setText(actions.get(i).label().get());
             }
@@ -139,7 +129,7 @@ public final class SkinlabActivity extends Activity {
         trackingThread = new HandlerThread("tracking");
         trackingThread.start();
         setContentView(layout());
-        load(catalog.current());
+        models.load(catalog.current());
     }
 
     private View layout() {
@@ -258,7 +248,7 @@ public final class SkinlabActivity extends Activity {
     @Override
     protected void onDestroy() {
         closeCamera();
-        loader.shutdownNow();
+        models.close();
         SkeletalAnimatedMesh m = mesh;
         if (m != null) {
             m.close();
@@ -440,55 +430,27 @@ public final class SkinlabActivity extends Activity {
     }
 
     private void nextModel() {
-        load(catalog.next());
+        models.load(catalog.next());
     }
 
     /**
-     * Loads a bundled model on the loader thread, then swaps it in on the UI thread, where onPause
-     * and onResume run: the new model's simulation runs only while the Activity is resumed.
+     * On the UI thread, where onPause and onResume run: a loaded model replaces the shown one, so
+     * that its simulation runs only while the Activity is resumed.
      */
-    private void load(String name) {
-        wantedModel = name;
-        loadsPending.incrementAndGet();
-        loader.execute(() -> {
-            if (!name.equals(wantedModel)) {
-                loadsPending.decrementAndGet(); // the user went on to another model meanwhile
-                return;
-            }
-            SkeletalAnimatedMesh next;
-            try (InputStream in = getAssets().open("models/" + name)) {
-                Model model = ColladaImporter.read(in, name);
-                next = SkeletalAnimatedMesh.of(model, config);
-                // CoR's centres here, not on the GL thread when the model is first uploaded.
-                for (SkinnedGeometry g : next.geometries()) {
-                    if (g.isSkinned()) {
-                        g.centersOfRotation();
-                    }
-                }
-            } catch (Throwable e) { // errors too: a model too big for the heap must not end the app
-                modelProblem = e.getMessage() != null && e.getMessage().contains(name) ? e.getMessage()
-                        : name + ": " + (e.getMessage() != null ? e.getMessage() : e.getClass().getSimpleName());
-                loadsPending.decrementAndGet();
-                return;
-            }
-            ui.post(() -> {
-                loadsPending.decrementAndGet();
-                if (isDestroyed()) {
-                    next.close();
-                    return;
-                }
-                SkeletalAnimatedMesh old = mesh;
-                mesh = next;
-                renderer.setMesh(next);
-                if (resumed) {
-                    next.start();
-                }
-                if (old != null) {
-                    old.close();
-                }
-                modelProblem = "";
-            });
-        });
+    private void swapIn(SkeletalAnimatedMesh next) {
+        if (isDestroyed()) {
+            next.close();
+            return;
+        }
+        SkeletalAnimatedMesh old = mesh;
+        mesh = next;
+        renderer.setMesh(next);
+        if (resumed) {
+            next.start();
+        }
+        if (old != null) {
+            old.close();
+        }
     }
 
     private static Map<String, String> savedMap(Bundle saved) {

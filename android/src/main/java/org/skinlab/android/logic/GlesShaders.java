@@ -1,6 +1,7 @@
 package org.skinlab.android.logic;
 
 import org.skinlab.skinning.SkinningGlsl;
+import org.skinlab.skinning.SkinningMethod;
 
 /**
  * The AR app's OpenGL ES 3.00 shaders: the camera image (an external OES texture) as background,
@@ -51,6 +52,18 @@ public final class GlesShaders {
                 color = texture(uCamera, vUv);
             }
             """;
+
+    /** The skinned vertex shader's {@code uMethod} for a skinning method: 1 LBS, 2 DQS, 3 CoR. */
+    public static int methodCode(SkinningMethod method) {
+        switch (method) {
+            case DQS:
+                return 2;
+            case COR:
+                return 3;
+            default:
+                return 1;
+        }
+    }
 
     /**
      * The skinned model's vertex shader: this app's header and main around the formulas both apps

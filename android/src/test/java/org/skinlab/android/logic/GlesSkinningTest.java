@@ -161,7 +161,7 @@ class GlesSkinningTest {
         float[] cpuPositions = new float[3 * reference.pointCount()];
         float[] cpuNormals = new float[3 * reference.pointCount()];
         float[] packed = new float[PaletteTexture.floats(geometry.jointCount())];
-        int code = shaderMethod(method);
+        int code = GlesShaders.methodCode(method);
         try (SkinnedVertexCapture gpu = new SkinnedVertexCapture(reference, view)) {
             int n = gpu.vertexCount();
             float[] gpuPositions = new float[3 * n];
@@ -288,17 +288,6 @@ class GlesSkinningTest {
         return largest;
     }
 
-    /** The shader's uMethod (ArRenderer's codes). */
-    private static int shaderMethod(SkinningMethod method) {
-        switch (method) {
-            case DQS:
-                return 2;
-            case COR:
-                return 3;
-            default:
-                return 1;
-        }
-    }
 
     private static int link(String vertex, String fragment) {
         int p = glCreateProgram();

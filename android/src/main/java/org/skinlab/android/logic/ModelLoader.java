@@ -1,0 +1,94 @@
+package org.skinlab.android.logic;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.function.Consumer;
+
+import org.skinlab.collada.ColladaImporter;
+import org.skinlab.simulation.AnimationConfig;
+import org.skinlab.simulation.SkeletalAnimatedMesh;
+import org.skinlab.skinning.SkinnedGeometry;
+
+/**
+ * The app's models, loaded one at a time on their own thread ({@value #THREAD}): imported, made a
+ * {@link SkeletalAnimatedMesh} (not started) and their CoR centres computed there, not on the GL
+ * thread when a model is first drawn. Each loaded mesh goes to the listener on the loader thread;
+ * the app swaps it in on its UI thread. A model the user skipped past before its turn is not loaded.
+ * A model that fails, in any way, becomes {@link #problem()}: never the end of the thread.
+ */
+public final class ModelLoader implements AutoCloseable {
+    /** The loader thread's name. */
+    public static final String THREAD = "model-loader";
+
+    /** Where a model's bytes come from (the APK's assets on a phone). */
+    public interface Source {
+        InputStream open(String name) throws IOException;
+    }
+
+    private final Source source;
+    private final AnimationConfig config;
+    private final Consumer<SkeletalAnimatedMesh> loaded;
+    private final ExecutorService thread = Executors.newSingleThreadExecutor(r -> new Thread(r, THREAD));
+    private final AtomicInteger pending = new AtomicInteger();
+    private volatile String wanted;
+    private volatile String problem = "";
+
+    /** Loads from {@code source} for simulations under {@code config}; {@code loaded} hears each mesh. */
+    public ModelLoader(Source source, AnimationConfig config, Consumer<SkeletalAnimatedMesh> loaded) {
+        this.source = source;
+        this.config = config;
+        this.loaded = loaded;
+    }
+
+    /** Loads {@code name} after the loads asked for before it (any thread). */
+    public void load(String name) {
+        wanted = name;
+        pending.incrementAndGet();
+        thread.execute(() -> {
+            try {
+                if (name.equals(wanted)) {
+                    loadNow(name);
+                }
+            } finally {
+                pending.decrementAndGet();
+            }
+        });
+    }
+
+    private void loadNow(String name) {
+        SkeletalAnimatedMesh mesh;
+        try (InputStream in = source.open(name)) {
+            mesh = SkeletalAnimatedMesh.of(ColladaImporter.read(in, name), config);
+            for (SkinnedGeometry g : mesh.geometries()) {
+                if (g.isSkinned()) {
+                    g.centersOfRotation();
+                }
+            }
+        } catch (Throwable e) { // errors too: a model too big for the heap must not end the app
+            String message = e.getMessage() != null ? e.getMessage() : e.getClass().getSimpleName();
+            problem = message.contains(name) ? message : name + ": " + message;
+            return;
+        }
+        problem = "";
+        loaded.accept(mesh);
+    }
+
+    /** Whether a load is asked for or under way. */
+    public boolean loading() {
+        return pending.get() > 0;
+    }
+
+    /** Why the last model asked for did not load, or "" when it did (or none failed yet). */
+    public String problem() {
+        return problem;
+    }
+
+    /** Stops loading: a load under way is interrupted, the ones waiting are dropped. */
+    @Override
+    public void close() {
+        thread.shutdownNow();
+    }
+}

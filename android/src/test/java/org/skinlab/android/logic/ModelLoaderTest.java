@@ -1,0 +1,112 @@
+package org.skinlab.android.logic;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.ByteArrayInputStream;
+import java.io.IOException;
+import java.io.InputStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+
+import org.junit.jupiter.api.Test;
+import org.skinlab.simulation.AnimationConfig;
+import org.skinlab.simulation.SkeletalAnimatedMesh;
+
+/** The app's model loader: loads in order on its thread, skips what the user skipped, reports failures. */
+class ModelLoaderTest {
+    private static final Path MODELS = Path.of(System.getProperty("skinlab.root", "."), "assets", "characters");
+
+    @Test
+    void loadsOneModelAfterAnotherSkippingTheOnesNoLongerWanted() throws Exception {
+        CountDownLatch firstOpened = new CountDownLatch(1);
+        CountDownLatch goOn = new CountDownLatch(1);
+        List<String> opened = new CopyOnWriteArrayList<>();
+        List<SkeletalAnimatedMesh> loaded = new CopyOnWriteArrayList<>();
+        ModelLoader.Source source = name -> {
+            opened.add(name);
+            if (opened.size() == 1) {
+                firstOpened.countDown();
+                await(goOn);
+            }
+            return Files.newInputStream(MODELS.resolve("humanoid-walk.dae"));
+        };
+        try (ModelLoader loader = new ModelLoader(source, new AnimationConfig(), loaded::add)) {
+            loader.load("first.dae");
+            assertTrue(firstOpened.await(30, TimeUnit.SECONDS));
+            loader.load("skipped.dae");
+            loader.load("last.dae");
+            assertTrue(loader.loading());
+            goOn.countDown();
+            long end = System.currentTimeMillis() + 60_000;
+            while (loader.loading() && System.currentTimeMillis() < end) {
+                Thread.sleep(10);
+            }
+            assertFalse(loader.loading());
+            assertEquals(List.of("first.dae", "last.dae"), opened, "the one skipped past is not even opened");
+            assertEquals(2, loaded.size());
+            for (SkeletalAnimatedMesh m : loaded) {
+                assertFalse(m.isRunning(), "handed over, not started: the app starts it while resumed");
+                m.close();
+            }
+            assertEquals("", loader.problem());
+        }
+    }
+
+    @Test
+    void aModelThatFailsInAnyWayIsAProblemNamingItAndTheThreadGoesOn() throws Exception {
+        List<SkeletalAnimatedMesh> loaded = new CopyOnWriteArrayList<>();
+        ModelLoader.Source source = name -> {
+            switch (name) {
+                case "cut.dae":
+                    return new ByteArrayInputStream("<COLLADA><library_geometries>".getBytes(StandardCharsets.UTF_8));
+                case "huge.dae":
+                    throw new OutOfMemoryError();
+                case "gone.dae":
+                    throw new IOException("no such asset");
+                default:
+                    return Files.newInputStream(MODELS.resolve(name));
+            }
+        };
+        try (ModelLoader loader = new ModelLoader(source, new AnimationConfig(), loaded::add)) {
+            for (String name : new String[] {"cut.dae", "huge.dae", "gone.dae"}) {
+                loader.load(name);
+                String problem = awaitIdle(loader).problem();
+                assertTrue(problem.startsWith(name) || problem.contains(name), problem);
+            }
+            assertEquals("huge.dae: OutOfMemoryError", awaitProblem(loader, "huge.dae"));
+            loader.load("humanoid-walk.dae");
+            assertEquals("", awaitIdle(loader).problem(), "a model that loads clears the problem");
+            assertEquals(1, loaded.size());
+            loaded.get(0).close();
+        }
+    }
+
+    private static String awaitProblem(ModelLoader loader, String name) throws InterruptedException {
+        loader.load(name);
+        return awaitIdle(loader).problem();
+    }
+
+    private static ModelLoader awaitIdle(ModelLoader loader) throws InterruptedException {
+        long end = System.currentTimeMillis() + 60_000;
+        while (loader.loading() && System.currentTimeMillis() < end) {
+            Thread.sleep(10);
+        }
+        assertFalse(loader.loading(), "the loader finished");
+        return loader;
+    }
+
+    private static void await(CountDownLatch latch) throws IOException {
+        try {
+            latch.await(30, TimeUnit.SECONDS);
+        } catch (InterruptedException e) {
+            throw new IOException(e);
+        }
+    }
+}
