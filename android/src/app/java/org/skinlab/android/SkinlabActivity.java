@@ -400,6 +400,8 @@ public final class SkinlabActivity extends Activity {
             camera = null;
             intrinsics = null;
             session = null;
+            // No stale pose drawn over the next camera's first frames.
+            renderer.setSession(null, null, imageRotation(), sensorOrientation);
         }
     }
 
