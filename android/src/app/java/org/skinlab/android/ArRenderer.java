@@ -30,6 +30,7 @@ import org.skinlab.scene.ModelFraming;
 import org.skinlab.simulation.AnimationConfig;
 import org.skinlab.simulation.Frame;
 import org.skinlab.simulation.SkeletalAnimatedMesh;
+import org.skinlab.skinning.SkinningGlsl;
 
 /**
  * Draws one AR frame on the GL thread: the camera image (the preview's SurfaceTexture) across the
@@ -205,7 +206,7 @@ final class ArRenderer implements GLSurfaceView.Renderer {
             glUseProgram(skinned);
             glUniformMatrix4fv(glGetUniformLocation(skinned, "uProjection"), 1, false, projection.get(matrix), 0);
             glUniformMatrix4fv(glGetUniformLocation(skinned, "uModelView"), 1, false, modelView.get(matrix), 0);
-            glUniform1i(glGetUniformLocation(skinned, "uMethod"), GlesShaders.methodCode(frame.method()));
+            glUniform1i(glGetUniformLocation(skinned, "uMethod"), SkinningGlsl.methodCode(frame.method()));
             glUniform1i(glGetUniformLocation(skinned, "uPalette"), 1);
             for (int g = 0; g < models.size(); g++) {
                 ModelGl model = models.get(g);

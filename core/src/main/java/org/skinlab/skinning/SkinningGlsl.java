@@ -51,6 +51,20 @@ public final class SkinningGlsl {
         return -1;
     }
 
+    /** The code of a method in the formulas' {@code skin(method, ...)}: 1 LBS, 2 DQS, 3 CoR (0 skins nothing). */
+    public static int methodCode(SkinningMethod method) {
+        switch (method) {
+            case LBS:
+                return 1;
+            case DQS:
+                return 2;
+            case COR:
+                return 3;
+            default:
+                throw new IllegalArgumentException("no shader code for " + method);
+        }
+    }
+
     /** The formulas' text, read from the resource on each call (once per program a renderer builds). */
     public static String formulas() {
         // Read by hand: InputStream.readAllBytes needs Android 13, and the app runs from Android 8.

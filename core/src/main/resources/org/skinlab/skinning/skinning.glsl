@@ -128,3 +128,17 @@ void cor(vec3 p, vec3 n, vec3 c, out vec3 outP, out vec3 outN) {
     outP = rotate(q, p - c) + t;
     outN = rotate(q, n);
 }
+
+// Point p (normal n, CoR centre c) skinned by the method with this code, SkinningGlsl.methodCode's:
+// 1 LBS, 2 DQS, 3 CoR; any other code leaves them as they are (the desktop's CPU-skinned points).
+void skin(int method, vec3 p, vec3 n, vec3 c, out vec3 outP, out vec3 outN) {
+    outP = p;
+    outN = n;
+    if (method == 1) {
+        lbs(p, n, outP, outN);
+    } else if (method == 2) {
+        dqs(p, n, outP, outN);
+    } else if (method == 3) {
+        cor(p, n, c, outP, outN);
+    }
+}

@@ -4,6 +4,9 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.util.HashSet;
+import java.util.Set;
+
 import org.junit.jupiter.api.Test;
 
 /**
@@ -33,5 +36,16 @@ class SkinningGlslTest {
     void includingTwiceIsRefused() {
         String twice = SkinningGlsl.INCLUDE + "\n" + SkinningGlsl.INCLUDE + "\n";
         assertThrows(IllegalStateException.class, () -> SkinningGlsl.expand(twice));
+    }
+
+    @Test
+    void everyMethodHasItsOwnCodeAndNoneIsTheCpusZero() {
+        Set<Integer> codes = new HashSet<>();
+        for (SkinningMethod m : SkinningMethod.values()) {
+            int code = SkinningGlsl.methodCode(m);
+            assertTrue(code > 0 && codes.add(code), m + " -> " + code);
+            assertTrue(SkinningGlsl.formulas().contains("method == " + code),
+                    "skin() dispatches " + m);
+        }
     }
 }

@@ -1,7 +1,6 @@
 package org.skinlab.android.logic;
 
 import org.skinlab.skinning.SkinningGlsl;
-import org.skinlab.skinning.SkinningMethod;
 
 /**
  * The AR app's OpenGL ES 3.00 shaders: the camera image (an external OES texture) as background,
@@ -53,18 +52,6 @@ public final class GlesShaders {
             }
             """;
 
-    /** The skinned vertex shader's {@code uMethod} for a skinning method: 1 LBS, 2 DQS, 3 CoR. */
-    public static int methodCode(SkinningMethod method) {
-        switch (method) {
-            case DQS:
-                return 2;
-            case COR:
-                return 3;
-            default:
-                return 1;
-        }
-    }
-
     /**
      * The skinned model's vertex shader: this app's header and main around the formulas both apps
      * share ({@link SkinningGlsl}), read from core's resource on each call (once per GL context).
@@ -96,7 +83,7 @@ public final class GlesShaders {
             layout(location = WEIGHTS_LOCATION) in vec4 aWeights;
             layout(location = CENTRE_LOCATION) in vec3 aCentre;       // CoR: the point's centre of rotation
             uniform highp sampler2D uPalette;   // TEXELS_PER_JOINT texels per joint row (PaletteTexture)
-            uniform int uMethod;                // 1 LBS, 2 DQS, 3 CoR
+            uniform int uMethod;                // SkinningGlsl.methodCode
             uniform mat4 uModelView;
             uniform mat4 uProjection;
             out vec3 vNormal;
@@ -117,13 +104,7 @@ public final class GlesShaders {
             void main() {
                 vec3 p;
                 vec3 n;
-                if (uMethod == 2) {
-                    dqs(aPosition, aNormal, p, n);
-                } else if (uMethod == 3) {
-                    cor(aPosition, aNormal, aCentre, p, n);
-                } else {
-                    lbs(aPosition, aNormal, p, n);
-                }
+                skin(uMethod, aPosition, aNormal, aCentre, p, n);
                 vec4 eye = uModelView * vec4(p, 1.0);
                 vEye = eye.xyz;
                 vNormal = mat3(uModelView) * n;

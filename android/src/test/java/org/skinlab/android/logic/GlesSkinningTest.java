@@ -29,6 +29,7 @@ import org.skinlab.skinning.NormalTransform;
 import org.skinlab.skinning.SkinnedGeometry;
 import org.skinlab.skinning.Skinner;
 import org.skinlab.skinning.Skinners;
+import org.skinlab.skinning.SkinningGlsl;
 import org.skinlab.skinning.SkinningMethod;
 
 /**
@@ -161,7 +162,7 @@ class GlesSkinningTest {
         float[] cpuPositions = new float[3 * reference.pointCount()];
         float[] cpuNormals = new float[3 * reference.pointCount()];
         float[] packed = new float[PaletteTexture.floats(geometry.jointCount())];
-        int code = GlesShaders.methodCode(method);
+        int code = SkinningGlsl.methodCode(method);
         try (SkinnedVertexCapture gpu = new SkinnedVertexCapture(reference, view)) {
             int n = gpu.vertexCount();
             float[] gpuPositions = new float[3 * n];

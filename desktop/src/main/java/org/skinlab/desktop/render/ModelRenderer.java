@@ -17,6 +17,7 @@ import org.skinlab.model.Model;
 import org.skinlab.model.Texture;
 import org.skinlab.simulation.Frame;
 import org.skinlab.skinning.SkinnedGeometry;
+import org.skinlab.skinning.SkinningGlsl;
 import org.skinlab.skinning.SkinningMethod;
 
 /**
@@ -103,7 +104,7 @@ public final class ModelRenderer implements AutoCloseable {
         glUniformMatrix4fv(shader.viewProjection, false, s.viewProjection.get(matrix));
         glUniformMatrix4fv(shader.model, false, s.model.get(matrix));
         glUniform3f(shader.eye, s.eye.x, s.eye.y, s.eye.z);
-        glUniform1i(shader.skinning, !s.gpuSkinning ? 0 : shaderMethod(s.method));
+        glUniform1i(shader.skinning, !s.gpuSkinning ? 0 : SkinningGlsl.methodCode(s.method));
         glUniform1i(shader.compare, s.view == DrawSettings.View.DIFFERENCE ? 1 : 0);
         boolean weights = s.view == DrawSettings.View.WEIGHTS;
         glUniform1i(shader.viewMode, s.view.ordinal());
@@ -126,19 +127,6 @@ public final class ModelRenderer implements AutoCloseable {
         glBindVertexArray(0);
     }
 
-    /** The skinning shader's {@code uSkinning} for a method skinned on the GPU. */
-    private static int shaderMethod(SkinningMethod method) {
-        switch (method) {
-            case LBS:
-                return 1;
-            case DQS:
-                return 2;
-            case COR:
-                return 3;
-            default:
-                throw new IllegalArgumentException("no shader for " + method);
-        }
-    }
 
     private void drawAll(DrawSettings s, boolean flat, boolean weights) {
         for (int g = 0; g < geometries.size(); g++) {
@@ -204,7 +192,7 @@ public final class ModelRenderer implements AutoCloseable {
             glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, buffer);
             glBufferData(GL_TRANSFORM_FEEDBACK_BUFFER, 12L * Math.max(1, n), GL_STREAM_READ);
             shader.use();
-            glUniform1i(shader.skinning, shaderMethod(method));
+            glUniform1i(shader.skinning, SkinningGlsl.methodCode(method));
             if (method == SkinningMethod.COR) {
                 gpu.ensureCentres();
             }

@@ -70,13 +70,7 @@ void main() {
     vec3 posed = aPosition;
     vec3 normal = aNormal;
     vScalar = 0.0;
-    if (uSkinning == 1) {
-        lbs(aPosition, aNormal, posed, normal);
-    } else if (uSkinning == 2) {
-        dqs(aPosition, aNormal, posed, normal);
-    } else if (uSkinning == 3) {
-        cor(aPosition, aNormal, aCentre, posed, normal);
-    }
+    skin(uSkinning, aPosition, aNormal, aCentre, posed, normal);
     if (uCompare) {
         vec3 pl, pd, unused;
         lbs(aPosition, aNormal, pl, unused);
