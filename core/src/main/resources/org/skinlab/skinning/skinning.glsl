@@ -67,12 +67,20 @@ vec3 rotate(vec4 q, vec3 v) {
     return v + 2.0 * cross(q.xyz, cross(q.xyz, v) + q.w * v);
 }
 
+// DQS's and CoR's scale phase (JointPalette's two-phase split, as ScalarDqsSkinner): the blended S applied
+// first, to the point, its normal (by the cofactor) and its CoR centre.
+void scalePhase(inout vec3 p, inout vec3 n, inout vec3 c) {
+    vec4 s0, s1, s2;
+    blendRows(SCALE_ROWS, s0, s1, s2);
+    n = cofactorTimes(s0, s1, s2, n, uScalesMirror);
+    p = applyRows(s0, s1, s2, p);
+    c = applyRows(s0, s1, s2, c);
+}
+
 void dqs(vec3 p, vec3 n, out vec3 outP, out vec3 outN) {
     if (uHasScale) {
-        vec4 s0, s1, s2;
-        blendRows(SCALE_ROWS, s0, s1, s2);
-        n = cofactorTimes(s0, s1, s2, n, uScalesMirror);
-        p = applyRows(s0, s1, s2, p);
+        vec3 noCentre = vec3(0.0);
+        scalePhase(p, n, noCentre);
     }
     vec4 pivot = paletteRotation(jointAt(0));
     vec4 br = vec4(0.0);
@@ -98,11 +106,7 @@ void dqs(vec3 p, vec3 n, out vec3 outP, out vec3 outN) {
 // translation LBS's (of the joints' rigid parts) at the centre; the scale phase first, as in DQS.
 void cor(vec3 p, vec3 n, vec3 c, out vec3 outP, out vec3 outN) {
     if (uHasScale) {
-        vec4 s0, s1, s2;
-        blendRows(SCALE_ROWS, s0, s1, s2);
-        n = cofactorTimes(s0, s1, s2, n, uScalesMirror);
-        p = applyRows(s0, s1, s2, p);
-        c = applyRows(s0, s1, s2, c);
+        scalePhase(p, n, c);
     }
     vec4 pivot = paletteRotation(jointAt(0));
     vec4 q = vec4(0.0);
