@@ -1,12 +1,14 @@
 package org.skinlab.ar;
 
 /**
- * Pinhole intrinsics of an undistorted camera image, in pixels.
+ * A camera's intrinsics in pixels: the pinhole (focal lengths, principal point) and the lens'
+ * distortion ({@link LensDistortion}, {@link LensDistortion#NONE} for an ideal or already
+ * undistorted image).
  *
  * <p>Conventions (the ones {@code skinlab track} writes and other tools score): camera x to the
  * right, y down, z forward; pixel (i, j) has its centre at (i, j), so the image spans
- * [-0.5, width - 0.5] in x. The intrinsics JSON file holds exactly these six fields:
- * {@code {"width","height","fx","fy","cx","cy"}}.
+ * [-0.5, width - 0.5] in x. A point (X, Y, Z) appears at pixel {@code u = fx x_d + cx},
+ * {@code v = fy y_d + cy}, where (x_d, y_d) is (X / Z, Y / Z) distorted ({@link #toPixel}).
  *
  * @param width  image width in pixels
  * @param height image height in pixels
@@ -14,8 +16,11 @@ package org.skinlab.ar;
  * @param fy     focal length along y, in pixels
  * @param cx     principal point x (pixel-centre-at-integer convention)
  * @param cy     principal point y
+ * @param distortion the lens' Brown-Conrady terms, in normalised coordinates (so they hold at any
+ *                   resolution of the same sensor area)
  */
-public record CameraIntrinsics(int width, int height, double fx, double fy, double cx, double cy) {
+public record CameraIntrinsics(int width, int height, double fx, double fy, double cx, double cy,
+        LensDistortion distortion) {
 
     public CameraIntrinsics {
         if (width <= 0 || height <= 0) {
@@ -27,6 +32,39 @@ public record CameraIntrinsics(int width, int height, double fx, double fy, doub
         if (!Double.isFinite(cx) || !Double.isFinite(cy)) {
             throw new IllegalArgumentException("principal point must be finite: cx=" + cx + " cy=" + cy);
         }
+        if (distortion == null) {
+            throw new IllegalArgumentException("no lens distortion (LensDistortion.NONE for none)");
+        }
+    }
+
+    /** A pinhole camera without distortion. */
+    public CameraIntrinsics(int width, int height, double fx, double fy, double cx, double cy) {
+        this(width, height, fx, fy, cx, cy, LensDistortion.NONE);
+    }
+
+    /** The same pinhole with {@code d} as its lens. */
+    public CameraIntrinsics withDistortion(LensDistortion d) {
+        return new CameraIntrinsics(width, height, fx, fy, cx, cy, d);
+    }
+
+    /** Whether the image is distorted (the lens has a term that is not zero). */
+    public boolean isDistorted() {
+        return !distortion.isNone();
+    }
+
+    /** The pixel where the camera-frame point (x, y, z), z > 0, appears, into {@code out[0..1]}. */
+    public void toPixel(double x, double y, double z, double[] out) {
+        distortion.distort(x / z, y / z, out);
+        out[0] = fx * out[0] + cx;
+        out[1] = fy * out[1] + cy;
+    }
+
+    /**
+     * The ideal normalised coordinates (x / z, y / z) of what appears at pixel (u, v), into
+     * {@code out[0..1]}; false where the lens model cannot be inverted ({@link LensDistortion#undistort}).
+     */
+    public boolean toNormalized(double u, double v, double[] out) {
+        return distortion.undistort((u - cx) / fx, (v - cy) / fy, out);
     }
 
     /**
@@ -49,7 +87,7 @@ public record CameraIntrinsics(int width, int height, double fx, double fy, doub
         double sy = (double) newHeight / height;
         // Scaling maps pixel edges to pixel edges: x_edge = x_centre + 0.5.
         return new CameraIntrinsics(newWidth, newHeight, fx * sx, fy * sy,
-                (cx + 0.5) * sx - 0.5, (cy + 0.5) * sy - 0.5);
+                (cx + 0.5) * sx - 0.5, (cy + 0.5) * sy - 0.5, distortion);
     }
 
     /** Horizontal field of view in degrees. */

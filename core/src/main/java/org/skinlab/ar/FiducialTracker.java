@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 
 import boofcv.abst.fiducial.SquareHamming_to_FiducialDetector;
+import boofcv.alg.distort.LensDistortionNarrowFOV;
 import boofcv.alg.fiducial.square.DetectFiducialSquareHamming;
 import boofcv.alg.fiducial.square.FoundFiducial;
 import boofcv.alg.fiducial.square.QuadPoseEstimator;
@@ -11,7 +12,6 @@ import boofcv.factory.distort.LensDistortionFactory;
 import boofcv.factory.fiducial.ConfigFiducialHammingDetector;
 import boofcv.factory.fiducial.ConfigHammingMarker;
 import boofcv.factory.fiducial.FactoryFiducial;
-import boofcv.struct.calib.CameraPinholeBrown;
 import boofcv.struct.image.GrayU8;
 import georegression.struct.se.Se3_F64;
 import georegression.struct.shapes.Quadrilateral_F64;
@@ -23,9 +23,13 @@ import georegression.struct.shapes.Quadrilateral_F64;
  *
  * <p><b>Conventions</b> (those of {@link MarkerDetection}): BoofCV places a pixel's centre at
  * (x + 0.5, y + 0.5), ours at (x, y); corners are reported in ours (BoofCV's minus 0.5) and the
- * pose is estimated with the principal point moved by +0.5 into BoofCV's, so pose and corners agree
- * with {@link CameraIntrinsics}. Without that, every pose is off by half a pixel's ray (0.6 mm at
+ * pose is estimated with BoofCV's camera ({@link BoofCameras}), so pose and corners agree with
+ * {@link CameraIntrinsics}. Without that, every pose is off by half a pixel's ray (0.6 mm at
  * 0.6 m for fx = 500).
+ *
+ * <p><b>Lens distortion.</b> With a distorted camera the corners are where they appear in the
+ * image (distorted pixels); the detector fits the square's sides to its undistorted contour and
+ * the pose estimator undistorts the corners, so only points are undistorted, never the image.
  *
  * <p><b>False markers.</b> BoofCV accepts a square whose bits are up to the dictionary's minimum
  * Hamming distance away from a code (12 of 36 bits for 36h12), which reads codes into clutter, into
@@ -76,8 +80,13 @@ public final class FiducialTracker {
         SquareHamming_to_FiducialDetector<GrayU8> d = FactoryFiducial.squareHamming(code,
                 new ConfigFiducialHammingDetector(), GrayU8.class);
         this.detector = d.getAlgorithm();
-        pose.setLensDistoriton(LensDistortionFactory.narrow(new CameraPinholeBrown(intrinsics.fx(), intrinsics.fy(),
-                0, intrinsics.cx() + 0.5, intrinsics.cy() + 0.5, intrinsics.width(), intrinsics.height())));
+        LensDistortionNarrowFOV lens = LensDistortionFactory.narrow(BoofCameras.toBoof(intrinsics));
+        if (intrinsics.isDistorted()) {
+            // The square's contour is undistorted before its sides are fitted and its bits are read
+            // through the lens; the image itself is never remapped. Cached: a table per pixel.
+            detector.configure(lens, intrinsics.width(), intrinsics.height(), true);
+        }
+        pose.setLensDistoriton(lens);
         double r = config.markerSizeMetres() / 2;
         // TL, TR, BR, BL of the printed marker in its frame (y toward the top edge): BoofCV's corner order.
         pose.setFiducial(-r, r, r, r, r, -r, -r, -r);
@@ -203,13 +212,15 @@ public final class FiducialTracker {
         double h = config.markerSizeMetres() / 2;
         double[] mx = {-h, h, h, -h};
         double[] my = {h, h, -h, -h};
+        double[] pixel = new double[2];
         double sum = 0;
         for (int i = 0; i < 4; i++) {
             double x = r[0] * mx[i] + r[1] * my[i] + t[0];
             double y = r[3] * mx[i] + r[4] * my[i] + t[1];
             double z = r[6] * mx[i] + r[7] * my[i] + t[2];
-            double u = intrinsics.fx() * x / z + intrinsics.cx() - corners[2 * i];
-            double v = intrinsics.fy() * y / z + intrinsics.cy() - corners[2 * i + 1];
+            intrinsics.toPixel(x, y, z, pixel);
+            double u = pixel[0] - corners[2 * i];
+            double v = pixel[1] - corners[2 * i + 1];
             sum += u * u + v * v;
         }
         return Math.sqrt(sum / 4);

@@ -8,8 +8,9 @@ import org.skinlab.ar.GrayImage;
 import org.skinlab.ar.MarkerPattern;
 
 /**
- * Renders printed markers into gray camera images of known pose: an ideal pinhole camera
- * ({@link CameraIntrinsics}, pixel (i, j) centred at (i, j)), each pixel the mean of
+ * Renders printed markers into gray camera images of known pose: a pinhole camera with its lens
+ * ({@link CameraIntrinsics}, pixel (i, j) centred at (i, j); each sample's ray is the pixel
+ * undistorted through the lens' model), each pixel the mean of
  * {@code supersampling^2} rays intersected with the markers' planes, then blur, lighting falloff
  * and noise ({@link SceneOptions}). The ground truth for the tracker's tests and benchmark and for
  * {@code skinlab ar-demo}: plain Java, deterministic for a seed.
@@ -53,17 +54,24 @@ public final class SyntheticCamera {
             sheets[i] = new Sheet(markers.get(i));
         }
         int n = options.supersampling();
+        boolean lens = camera.isDistorted();
         float[] image = new float[w * h];
         // Rows in parallel: a frame is millions of rays, and nothing below is shared but read.
         java.util.stream.IntStream.range(0, h).parallel().forEach(y -> {
+            double[] ray = new double[2];
             for (int x = 0; x < w; x++) {
                 double sum = 0;
                 for (int sy = 0; sy < n; sy++) {
                     double py = y + (sy + 0.5) / n - 0.5;
-                    double dy = (py - camera.cy()) / camera.fy();
                     for (int sx = 0; sx < n; sx++) {
                         double px = x + (sx + 0.5) / n - 0.5;
-                        double dx = (px - camera.cx()) / camera.fx();
+                        if (lens && !camera.toNormalized(px, py, ray)) {
+                            // Beyond where the lens model inverts: nothing the tracker can use.
+                            sum += background.at(px, py);
+                            continue;
+                        }
+                        double dx = lens ? ray[0] : (px - camera.cx()) / camera.fx();
+                        double dy = lens ? ray[1] : (py - camera.cy()) / camera.fy();
                         sum += sample(sheets, background, px, py, dx, dy);
                     }
                 }
@@ -93,12 +101,14 @@ public final class SyntheticCamera {
         double[] rot = marker.rotation();
         double[] t = marker.translation();
         double[] out = new double[8];
+        double[] pixel = new double[2];
         for (int i = 0; i < 4; i++) {
             double x = rot[0] * mx[i] + rot[1] * my[i] + t[0];
             double y = rot[3] * mx[i] + rot[4] * my[i] + t[1];
             double z = rot[6] * mx[i] + rot[7] * my[i] + t[2];
-            out[2 * i] = camera.fx() * x / z + camera.cx();
-            out[2 * i + 1] = camera.fy() * y / z + camera.cy();
+            camera.toPixel(x, y, z, pixel);
+            out[2 * i] = pixel[0];
+            out[2 * i + 1] = pixel[1];
         }
         return out;
     }
