@@ -126,6 +126,6 @@ public record CalibrationTarget(Kind kind, int rows, int cols, double squareMetr
         double mm = metres * 1000;
         double whole = Math.rint(mm);
         return Math.abs(mm - whole) < 1e-9 ? Long.toString((long) whole)
-                : String.format(Locale.ROOT, "%.2f", mm).replaceAll("0+$", "");
+                : String.format(Locale.ROOT, "%.3f", mm).replaceAll("0+$", "");
     }
 }

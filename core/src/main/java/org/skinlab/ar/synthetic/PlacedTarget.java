@@ -51,16 +51,4 @@ public record PlacedTarget(CalibrationTarget target, double[] rotation, double[]
         return target.isBlackAt(x + target.width() / 2, target.height() / 2 - y) ? SyntheticCamera.INK
                 : SyntheticCamera.PAPER;
     }
-
-    /**
-     * Where the pattern's point (x, y) lies in the camera frame (metres; x right and y down from the
-     * pattern's top-left corner, {@link CalibrationTarget#isBlackAt}'s frame), into {@code out[0..2]}.
-     */
-    public void toCamera(double x, double y, double[] out) {
-        double sx = x - target.width() / 2;
-        double sy = target.height() / 2 - y;
-        for (int i = 0; i < 3; i++) {
-            out[i] = rotation[3 * i] * sx + rotation[3 * i + 1] * sy + translation[i];
-        }
-    }
 }

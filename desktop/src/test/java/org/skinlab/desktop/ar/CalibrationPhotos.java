@@ -102,12 +102,28 @@ public final class CalibrationPhotos {
                 TARGET.height() + m}, {-m, -m + f * (TARGET.height() + 2 * m)}, {TARGET.width() + m,
                 -m + f * (TARGET.height() + 2 * m)}};
             for (double[] e : edge) {
-                t.toCamera(e[0], e[1], cam);
+                toCamera(t, e[0], e[1], cam);
                 CAMERA.toPixel(cam[0], cam[1], cam[2], px);
                 min = Math.min(min, Math.min(Math.min(px[0] + 0.5, CAMERA.width() - 0.5 - px[0]),
                         Math.min(px[1] + 0.5, CAMERA.height() - 0.5 - px[1])));
             }
         }
         return min;
+    }
+
+    /**
+     * Where the point (x, y) of {@code placed}'s pattern lies in the camera frame (metres; x right
+     * and y down from the pattern's top-left corner, {@link CalibrationTarget#isBlackAt}'s frame).
+     */
+    public static void toCamera(PlacedTarget placed, double x, double y, double[] out) {
+        CalibrationTarget t = placed.target();
+        double[] r = placed.rotation();
+        double[] tr = placed.translation();
+        // The sheet frame: origin at the pattern's centre, y up.
+        double sx = x - t.width() / 2;
+        double sy = t.height() / 2 - y;
+        for (int i = 0; i < 3; i++) {
+            out[i] = r[3 * i] * sx + r[3 * i + 1] * sy + tr[i];
+        }
     }
 }

@@ -52,7 +52,7 @@ class TargetDetectorTest {
                         x = c * pitch + (corner == 1 || corner == 2 ? t.squareMetres() : 0);
                         y = r * pitch + (corner >= 2 ? t.squareMetres() : 0);
                     }
-                    placed.toCamera(x, y, cam);
+                    CalibrationPhotos.toCamera(placed, x, y, cam);
                     K.toPixel(cam[0], cam[1], cam[2], px);
                     out[2 * i] = px[0];
                     out[2 * i + 1] = px[1];
