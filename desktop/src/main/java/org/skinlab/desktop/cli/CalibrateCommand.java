@@ -35,8 +35,9 @@ import picocli.CommandLine.Spec;
  * the reprojection error, the result, and what the photos miss.
  */
 @Command(name = "calibrate", mixinStandardHelpOptions = true,
-        description = {"Calibrate a camera from photos of the printed target (skinlab calibration-target): focal lengths,",
-                "principal point and lens distortion (k1, k2, p1, p2), written as an intrinsics file for --intrinsics."})
+        description = {"Calibrate a camera from photos of the printed target (skinlab calibration-target).",
+                "Writes its focal lengths, principal point and lens distortion (k1, k2, p1, p2) as the intrinsics file "
+                        + "of skinlab ar/track --intrinsics, and reports the error and what the photos miss."})
 public final class CalibrateCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
