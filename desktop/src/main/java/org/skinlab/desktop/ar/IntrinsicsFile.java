@@ -62,7 +62,7 @@ public final class IntrinsicsFile {
         }
     }
 
-    /** Writes {@code k} to {@code file} in the same format. */
+    /** Writes {@code k} to {@code file} in the same format, the lens terms k1, k2, k3, p1, p2 when it has a lens. */
     public static void write(CameraIntrinsics k, Path file) throws IOException {
         ObjectMapper mapper = new ObjectMapper();
         ObjectNode o = mapper.createObjectNode();
@@ -72,6 +72,13 @@ public final class IntrinsicsFile {
         o.put("fy", k.fy());
         o.put("cx", k.cx());
         o.put("cy", k.cy());
+        if (k.isDistorted()) {
+            o.put("k1", k.distortion().k1());
+            o.put("k2", k.distortion().k2());
+            o.put("k3", k.distortion().k3());
+            o.put("p1", k.distortion().p1());
+            o.put("p2", k.distortion().p2());
+        }
         Files.writeString(file, mapper.writerWithDefaultPrettyPrinter().writeValueAsString(o) + "\n");
     }
 
