@@ -6,7 +6,8 @@ import org.skinlab.ar.ArPose;
 import org.skinlab.simulation.AnimationConfig;
 
 /**
- * The AR app's status line: fps, tracking state, method, interpolation, speed, model; below it,
+ * The AR app's status line: fps, tracking state (with the followed marker's id and the markers in
+ * view, {@link ArPose#markerLabel()}), method, interpolation, speed, model; below it,
  * each current problem on its own line. Problems come from different sources (the GL driver, the
  * camera, the model loader) and each is kept and cleared by its own source, so that one's success
  * never hides another's failure.
@@ -24,7 +25,7 @@ public final class StatusLine {
      */
     public static String format(double fps, ArPose pose, AnimationConfig.Settings s, String model) {
         String marker = pose == null ? NO_CAMERA
-                : String.format(Locale.ROOT, "%s (%.1f ms)", pose.state().label(), pose.trackerMillis());
+                : String.format(Locale.ROOT, "%s (%.1f ms)", pose.markerLabel(), pose.trackerMillis());
         return String.format(Locale.ROOT, "%.0f fps | marker: %s | %s %s x%.2f%s | %s", fps, marker,
                 s.method().key().toUpperCase(Locale.ROOT), s.interpolation().name(), s.speed(),
                 s.followCamera() ? " | follow" : "", model);

@@ -291,11 +291,20 @@ class AndroidLogicTest {
 
     @Test
     void theStatusLineSaysWhatIsGoingOn() {
-        ArPose holding = new ArPose(TrackingState.HOLDING, ArPose.NONE.rotation(), ArPose.NONE.translation(), 0, 2.54,
-                1, 1);
+        ArPose holding = new ArPose(TrackingState.HOLDING, ArPose.NONE.rotation(), ArPose.NONE.translation(), 3, 0,
+                2.54, 1, 1);
         String s = StatusLine.format(29.6, holding, AnimationConfig.Settings.DEFAULT.withMethod(SkinningMethod.COR)
                 .withFollowCamera(true), "humanoid-walk.dae");
-        assertEquals("30 fps | marker: holding (2.5 ms) | COR SLERP x1.00 | follow | humanoid-walk.dae", s);
+        assertEquals("30 fps | marker: holding id 3 (2.5 ms) | COR SLERP x1.00 | follow | humanoid-walk.dae", s);
+        ArPose two = new ArPose(TrackingState.TRACKING, ArPose.NONE.rotation(), ArPose.NONE.translation(), 0, 2, 1.0,
+                2, 2);
+        assertEquals("30 fps | marker: tracking id 0, 2 in view (1.0 ms) | LBS SLERP x1.00 | a.dae",
+                StatusLine.format(30, two, AnimationConfig.Settings.DEFAULT, "a.dae"), "the followed id and the count");
+        ArPose otherInView = new ArPose(TrackingState.SEARCHING, ArPose.NONE.rotation(), ArPose.NONE.translation(),
+                -1, 1, 1.0, 3, 3);
+        assertEquals("30 fps | marker: searching, 1 in view (1.0 ms) | LBS SLERP x1.00 | a.dae",
+                StatusLine.format(30, otherInView, AnimationConfig.Settings.DEFAULT, "a.dae"),
+                "a marker of another id than the target: in view, not followed");
         assertEquals("0 fps | marker: waiting for the camera | LBS SLERP x1.00 | a.dae",
                 StatusLine.format(0, null, AnimationConfig.Settings.DEFAULT, "a.dae"));
         assertEquals("line\ncamera gone\nmodel broken", StatusLine.withProblems("line", "", null, "camera gone",

@@ -33,7 +33,7 @@ final class ArPresenter implements AutoCloseable {
     private final Matrix4f markerView = new Matrix4f();
     private long uploaded = -1;
     private ArFeed.Shot shot;
-    private TrackingState shownState;
+    private String shownMarker;
     private String shownFailure;
 
     ArPresenter(ArSetup setup) {
@@ -75,21 +75,19 @@ final class ArPresenter implements AutoCloseable {
         return true;
     }
 
-    /** The tracking state of the frame shown (SEARCHING before any). */
-    TrackingState state() {
-        return shot == null ? TrackingState.SEARCHING : shot.pose().state();
-    }
-
-    /** For the status line: what changed since the last call (the tracking state, a camera failure), or null. */
+    /**
+     * For the status line: what changed since the last call (the tracking state, the followed id,
+     * the markers in view: {@link org.skinlab.ar.ArPose#markerLabel()}; a camera failure), or null.
+     */
     String statusChange() {
-        TrackingState state = state();
+        String marker = shot == null ? TrackingState.SEARCHING.label() : shot.pose().markerLabel();
         String failure = feed.failure();
-        if (state == shownState && failure == shownFailure) {
+        if (marker.equals(shownMarker) && failure == shownFailure) {
             return null;
         }
-        shownState = state;
+        shownMarker = marker;
         shownFailure = failure;
-        return failure != null ? "camera: " + failure : "AR: marker " + state.label();
+        return failure != null ? "camera: " + failure : "AR: marker " + marker;
     }
 
     /** Headless runs: waits for the first tracked frame; null when there is one, else why not. */
