@@ -283,7 +283,7 @@ final class AppDriver {
      * camera source's frame entry on the tracking thread, where the ImageReader's frames arrive.
      */
     void feedMarkerFrame(long timestampNanos) throws InterruptedException {
-        CameraIntrinsics k = IntrinsicsEstimate.estimate(null, 0, 0, Double.NaN, Double.NaN, 640, 480);
+        CameraIntrinsics k = CameraIntrinsics.fromHorizontalFov(640, 480, IntrinsicsEstimate.FALLBACK_FOV_DEGREES);
         GrayImage image = new SyntheticCamera(k).render(List.of(PlacedMarker.of(
                 MarkerPattern.of(MarkerDictionary.DEFAULT, 0), 0.1, PlacedMarker.facingCamera(20, 10, 15),
                 new double[] {0.01, 0.02, 0.5})), SceneOptions.camera(7));

@@ -31,6 +31,17 @@ public final class StatusLine {
                 s.followCamera() ? " | follow" : "", model);
     }
 
+    /** The notes that are not null joined by "; ", or null when all are null (one problem line made of several). */
+    public static String joined(String... notes) {
+        StringBuilder text = new StringBuilder();
+        for (String n : notes) {
+            if (n != null) {
+                text.append(text.length() > 0 ? "; " : "").append(n);
+            }
+        }
+        return text.length() > 0 ? text.toString() : null;
+    }
+
     /** The line followed by every problem that is not empty (null counts as none), one per line. */
     public static String withProblems(String line, String... problems) {
         StringBuilder text = new StringBuilder(line);

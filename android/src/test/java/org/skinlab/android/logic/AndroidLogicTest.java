@@ -13,13 +13,12 @@ import java.util.concurrent.atomic.AtomicInteger;
 import org.junit.jupiter.api.Test;
 import org.skinlab.animation.RotationInterpolation;
 import org.skinlab.ar.ArPose;
-import org.skinlab.ar.CameraIntrinsics;
 import org.skinlab.ar.GrayImage;
 import org.skinlab.ar.TrackingState;
 import org.skinlab.simulation.AnimationConfig;
 import org.skinlab.skinning.SkinningMethod;
 
-/** What the Activity delegates to, on the JVM: buttons, permission flow, intrinsics, Y plane, palette, catalog. */
+/** What the Activity delegates to, on the JVM: buttons, permission flow, Y plane, palette, catalog (intrinsics: IntrinsicsEstimateTest). */
 class AndroidLogicTest {
     @Test
     void everyButtonDoesItsAnimationConfigFunction() {
@@ -170,27 +169,6 @@ class AndroidLogicTest {
         assertFalse(catalog.select(null));
         assertFalse(catalog.select("gone.dae"));
         assertEquals("tentacle-wave.dae", catalog.current());
-    }
-
-    @Test
-    void intrinsicsFromCalibrationPhysicalSizeOrFieldOfView() {
-        // A 4000x3000 active array streamed at 640x480 (same 4:3 aspect): a pure scale by 0.16.
-        CameraIntrinsics k = IntrinsicsEstimate.estimate(new float[] {3200, 3210, 2010, 1490, 0}, 4000, 3000, 0, 0,
-                640, 480);
-        assertEquals(512, k.fx(), 1e-9);
-        assertEquals(513.6, k.fy(), 1e-9);
-        assertEquals((2010 + 0.5) * 0.16 - 0.5, k.cx(), 1e-9);
-        // A 16:9 active array streamed at 4:3: the centred crop, then the scale.
-        CameraIntrinsics crop = IntrinsicsEstimate.estimate(new float[] {3000, 3000, 1999.5f, 1124.5f, 0}, 4000, 2250,
-                0, 0, 640, 480);
-        assertEquals(319.5, crop.cx(), 1e-6, "the centre stays the centre");
-        assertEquals(239.5, crop.cy(), 1e-6);
-        assertEquals(3000 * 640 / 3000.0, crop.fx(), 1e-6);
-        // Focal length 4.3 mm on a 5.6 mm wide sensor: fx = 4.3 / 5.6 of the width.
-        CameraIntrinsics physical = IntrinsicsEstimate.estimate(null, 4000, 3000, 4.3, 5.6, 640, 480);
-        assertEquals(4.3 / 5.6 * 640, physical.fx(), 1e-9);
-        CameraIntrinsics guess = IntrinsicsEstimate.estimate(null, 0, 0, Double.NaN, Double.NaN, 640, 480);
-        assertEquals(IntrinsicsEstimate.FALLBACK_FOV_DEGREES, guess.horizontalFovDegrees(), 1e-9);
     }
 
     /**
