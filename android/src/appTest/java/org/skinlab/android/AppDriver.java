@@ -108,9 +108,10 @@ final class AppDriver {
 
     /**
      * A back camera as Camera2 lists it: 4:3 and 16:9 YUV and preview sizes, continuous video
-     * autofocus, the sensor turned 90 degrees (most phones).
+     * autofocus, the sensor turned 90 degrees (most phones). Returned for a test to add keys
+     * (before the camera opens).
      */
-    void addBackCamera(String id) {
+    CameraCharacteristics addBackCamera(String id) {
         CameraCharacteristics c = ShadowCameraCharacteristics.newCameraCharacteristics();
         shadowOf(c).set(CameraCharacteristics.LENS_FACING, CameraCharacteristics.LENS_FACING_BACK);
         shadowOf(c).set(CameraCharacteristics.SENSOR_ORIENTATION, 90);
@@ -124,6 +125,7 @@ final class AppDriver {
         }
         shadowOf(c).set(CameraCharacteristics.SCALER_STREAM_CONFIGURATION_MAP, map.build());
         shadowOf(cameras()).addCamera(id, c);
+        return c;
     }
 
     /**
