@@ -2,6 +2,7 @@ package org.skinlab.desktop.app;
 
 import org.joml.Matrix4f;
 import org.skinlab.ar.ArCamera;
+import org.skinlab.ar.ArPose;
 import org.skinlab.ar.CameraFollow;
 import org.skinlab.ar.CameraIntrinsics;
 import org.skinlab.ar.MarkerScene;
@@ -33,7 +34,10 @@ final class ArPresenter implements AutoCloseable {
     private final Matrix4f markerView = new Matrix4f();
     private long uploaded = -1;
     private ArFeed.Shot shot;
-    private String shownMarker;
+    /** What the status line last said: the pose's state, followed id and markers in view. */
+    private TrackingState shownState;
+    private int shownId;
+    private int shownCount;
     private String shownFailure;
 
     ArPresenter(ArSetup setup) {
@@ -80,14 +84,17 @@ final class ArPresenter implements AutoCloseable {
      * the markers in view: {@link org.skinlab.ar.ArPose#markerLabel()}; a camera failure), or null.
      */
     String statusChange() {
-        String marker = shot == null ? TrackingState.SEARCHING.label() : shot.pose().markerLabel();
+        ArPose pose = shot == null ? ArPose.NONE : shot.pose();
         String failure = feed.failure();
-        if (marker.equals(shownMarker) && failure == shownFailure) {
+        if (pose.state() == shownState && pose.markerId() == shownId && pose.markers() == shownCount
+                && failure == shownFailure) {
             return null;
         }
-        shownMarker = marker;
+        shownState = pose.state();
+        shownId = pose.markerId();
+        shownCount = pose.markers();
         shownFailure = failure;
-        return failure != null ? "camera: " + failure : "AR: marker " + marker;
+        return failure != null ? "camera: " + failure : "AR: marker " + pose.markerLabel();
     }
 
     /** Headless runs: waits for the first tracked frame; null when there is one, else why not. */
