@@ -49,7 +49,8 @@ public class CameraLensTest {
     /** The arrays (both the same) and the calibration; Robolectric's shadow takes each key once. */
     private static void geometry(CameraCharacteristics c, int width, int height, float[] calibration) {
         shadowOf(c).set(CameraCharacteristics.SENSOR_INFO_ACTIVE_ARRAY_SIZE, new Rect(0, 0, width, height));
-        shadowOf(c).set(CameraCharacteristics.SENSOR_INFO_PRE_CORRECTION_ACTIVE_ARRAY_SIZE, new Rect(0, 0, width, height));
+        shadowOf(c).set(CameraCharacteristics.SENSOR_INFO_PRE_CORRECTION_ACTIVE_ARRAY_SIZE,
+                new Rect(0, 0, width, height));
         shadowOf(c).set(CameraCharacteristics.LENS_INTRINSIC_CALIBRATION, calibration);
     }
 

@@ -61,7 +61,8 @@ class MarkerTrackingTest {
         assertEquals(1, any.followedId(), "holding 1 while only 2 is in view");
         assertEquals(TrackingState.LOST, any.update(4 * FRAME, List.of(at(2, r, 0.1, 0, 0.5))));
         assertEquals(-1, any.followedId());
-        assertEquals(TrackingState.TRACKING, any.update(5 * FRAME, List.of(at(1, r, 0, 0, 0.7), at(2, r, 0.1, 0, 0.5))));
+        assertEquals(TrackingState.TRACKING,
+                any.update(5 * FRAME, List.of(at(1, r, 0, 0, 0.7), at(2, r, 0.1, 0, 0.5))));
         assertEquals(2, any.followedId(), "lost: the nearest anew");
         any.reset();
         any.update(6 * FRAME, List.of(at(1, r, 0, 0, 0.4), at(2, r, 0.1, 0, 0.5)));

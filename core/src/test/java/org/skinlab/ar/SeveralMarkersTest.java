@@ -51,7 +51,8 @@ class SeveralMarkersTest {
 
     @Test
     void eachOfThreeMarkersIsReportedWithItsPose() {
-        PlacedMarker[] truth = {marker(3, -0.2, 0, 0.7, 20), marker(17, 0, 0.05, 0.6, -25), marker(42, 0.18, -0.05, 0.8, 30)};
+        PlacedMarker[] truth = {marker(3, -0.2, 0, 0.7, 20), marker(17, 0, 0.05, 0.6, -25),
+            marker(42, 0.18, -0.05, 0.8, 30)};
         FiducialTracker tracker = new FiducialTracker(TrackerConfig.defaults(SIZE), K);
         for (int f = 0; f < 3; f++) {
             GrayImage image = frame(f, truth);

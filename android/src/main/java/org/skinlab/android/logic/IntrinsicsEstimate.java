@@ -67,7 +67,8 @@ public record IntrinsicsEstimate(CameraIntrinsics intrinsics, boolean correction
         double cx = c[2] - 0.5;
         double cy = c[3] - 0.5;
         Camera2Lens.Reading lens = r.sdk() >= 28 ? Camera2Lens.fromLensDistortion(r.lensDistortion())
-                : Camera2Lens.fromRadialDistortion(r.radialDistortion(), c[0], c[1], c[2], c[3], width(pre), height(pre));
+                : Camera2Lens.fromRadialDistortion(r.radialDistortion(), c[0], c[1], c[2], c[3], width(pre),
+                        height(pre));
         // The pinhole of the corrected image in the active array: the fallback of every case below.
         CameraIntrinsics corrected = crop(width(active), height(active), c[0], c[1], cx + pre[0] - active[0],
                 cy + pre[1] - active[1], streamWidth, streamHeight);

@@ -62,8 +62,9 @@ public final class ShrinkProbe {
         Files.delete(cache);
         // A calibrated camera with a lens: the tracker's lens path as it ships.
         int[] array = {0, 0, 4000, 3000};
-        CameraIntrinsics k = IntrinsicsEstimate.of(new CameraReport(28, array, array, new float[] {3200, 3200, 2000, 1500, 0},
-                new float[] {-0.05f, 0.01f, 0, 0, 0}, null, null, Double.NaN, Double.NaN), 640, 480).intrinsics();
+        CameraReport camera = new CameraReport(28, array, array, new float[] {3200, 3200, 2000, 1500, 0},
+                new float[] {-0.05f, 0.01f, 0, 0, 0}, null, null, Double.NaN, Double.NaN);
+        CameraIntrinsics k = IntrinsicsEstimate.of(camera, 640, 480).intrinsics();
         if (!k.isDistorted()) {
             throw new IllegalStateException("the shrunk intrinsics lost the lens: " + k);
         }

@@ -18,7 +18,10 @@ import org.skinlab.ar.TrackingState;
 import org.skinlab.simulation.AnimationConfig;
 import org.skinlab.skinning.SkinningMethod;
 
-/** What the Activity delegates to, on the JVM: buttons, permission flow, Y plane, palette, catalog (intrinsics: IntrinsicsEstimateTest). */
+/**
+ * What the Activity delegates to, on the JVM: buttons, permission flow, Y plane, palette, catalog
+ * (the intrinsics: IntrinsicsEstimateTest).
+ */
 class AndroidLogicTest {
     @Test
     void everyButtonDoesItsAnimationConfigFunction() {

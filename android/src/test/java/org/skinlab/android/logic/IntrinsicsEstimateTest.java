@@ -73,8 +73,8 @@ class IntrinsicsEstimateTest {
 
     @Test
     void lensDistortionOnACameraThatDoesNotCorrectIsTakenAsItIs() {
-        IntrinsicsEstimate e = IntrinsicsEstimate.of(report(28, ARRAY_4_3, ARRAY_4_3, CALIBRATION_4_3, LENS, null, null),
-                640, 480);
+        IntrinsicsEstimate e = IntrinsicsEstimate.of(report(28, ARRAY_4_3, ARRAY_4_3, CALIBRATION_4_3, LENS, null,
+                null), 640, 480);
         LensDistortion d = e.intrinsics().distortion();
         // [k1, k2, k3, p1, p2]: kappa_4 multiplies 2 x y in x_c (OpenCV's p1), kappa_5 r^2 + 2 x^2 (p2).
         assertEquals(new LensDistortion(-0.1f, 0.02f, -0.003f, 0.0004f, -0.0005f), d);
@@ -120,8 +120,8 @@ class IntrinsicsEstimateTest {
         int[] active = {16, 12, 4016, 3012};
         float[] calibration = {3200, 3200, 2016, 1512, 0};
         // All zeros: an ideal lens, silently.
-        IntrinsicsEstimate zeros = IntrinsicsEstimate.of(report(28, pre, active, calibration, new float[5], null, MODES),
-                640, 480);
+        IntrinsicsEstimate zeros = IntrinsicsEstimate.of(report(28, pre, active, calibration, new float[5], null,
+                MODES), 640, 480);
         assertFalse(zeros.intrinsics().isDistorted());
         assertFalse(zeros.correctionOff());
         assertNull(zeros.problem());
@@ -139,8 +139,8 @@ class IntrinsicsEstimateTest {
         // stream's corner is at r_d = hypot(2016, 1512) / 2000 = 1.26: no inverse there. (Newton
         // does converge there, on the far branch: r = 1.7, mirrored through the centre, where
         // 1 - 0.6 r^2 < 0; the check along the ray from the centre is what refuses it.)
-        IntrinsicsEstimate folded = IntrinsicsEstimate.of(report(28, pre, active, new float[] {2000, 2000, 2016, 1512, 0},
-                new float[] {-0.6f, 0, 0, 0, 0}, null, MODES), 640, 480);
+        IntrinsicsEstimate folded = IntrinsicsEstimate.of(report(28, pre, active,
+                new float[] {2000, 2000, 2016, 1512, 0}, new float[] {-0.6f, 0, 0, 0, 0}, null, MODES), 640, 480);
         assertFalse(folded.intrinsics().isDistorted());
         assertFalse(folded.correctionOff(), "the device's own correction left on");
         assertTrue(folded.problem().contains("inverse fails at the stream's pixel (-0.5, -0.5)"), folded.problem());
@@ -218,8 +218,8 @@ class IntrinsicsEstimateTest {
                 new float[6], null), 600, 600);
         assertNull(zeros.problem(), "all zeros: nothing reported");
         assertFalse(zeros.intrinsics().isDistorted());
-        IntrinsicsEstimate five = IntrinsicsEstimate.of(report(26, SQUARE, SQUARE, SQUARE_CALIBRATION, null, LENS, null),
-                600, 600);
+        IntrinsicsEstimate five = IntrinsicsEstimate.of(report(26, SQUARE, SQUARE, SQUARE_CALIBRATION, null, LENS,
+                null), 600, 600);
         assertTrue(five.problem().contains("not 6 finite numbers"), five.problem());
         // Arrays that differ below API 28: the device may correct, and there is no control to stop it.
         IntrinsicsEstimate correcting = IntrinsicsEstimate.of(report(26, new int[] {0, 0, 3032, 3032},
