@@ -93,46 +93,49 @@ public record IntrinsicsEstimate(CameraIntrinsics intrinsics, boolean correction
         double f = lens.focalScale();
         CameraIntrinsics raw = crop(width(pre), height(pre), c[0] * f, c[1] * f, cx, cy, streamWidth, streamHeight)
                 .withDistortion(lens.lens());
-        String fails = invertibleInside(raw);
+        String fails = oneToOneInside(raw);
         if (fails != null) {
-            return new IntrinsicsEstimate(corrected, false, "lens distortion not used: its inverse fails at the "
-                    + "stream's " + fails);
+            return new IntrinsicsEstimate(corrected, false, "lens distortion not used: " + fails);
         }
         return new IntrinsicsEstimate(raw, correcting, null);
     }
 
-    /** Steps along each ray from the principal point to the stream's border in {@link #invertibleInside}. */
-    private static final int RAY_STEPS = 16;
+    /** Samples along each ray from the principal point in {@link #oneToOneInside}. */
+    private static final int RAY_STEPS = 32;
 
     /**
-     * Null when the lens can be undone everywhere in the stream, else the first border point where
-     * it cannot. Checked along the rays from the principal point to the corners and the edges'
-     * midpoints: each sample must undistort, and the ideal point must move outward as the sample
-     * does. The second test matters: past the radius where a strong barrel lens folds back, Newton
-     * can converge on the far branch, a point mirrored through the centre that maps to the sample
-     * exactly, so success alone would accept a lens that cannot describe the image's corners.
+     * Null when the lens maps the ideal image one-to-one onto the whole stream, else why not, at
+     * the first border point where it does not. For the rays from the principal point to the corners and the
+     * edges' midpoints: the border point must undistort, and distorting the ideal ray from the
+     * centre out to that ideal point must move outward all the way. The second test catches a lens
+     * whose radius folds back and rises again (a large negative k1 with a positive k2): its border
+     * points may undistort, onto the outer branch, while the image between shows some of the world
+     * twice.
      */
-    private static String invertibleInside(CameraIntrinsics k) {
-        double[] out = new double[2];
+    private static String oneToOneInside(CameraIntrinsics k) {
+        double[] ideal = new double[2];
+        double[] pixel = new double[2];
         double right = k.width() - 0.5;
         double bottom = k.height() - 0.5;
         double[][] points = {{-0.5, -0.5}, {right, -0.5}, {right, bottom}, {-0.5, bottom},
             {k.cx(), -0.5}, {right, k.cy()}, {k.cx(), bottom}, {-0.5, k.cy()}};
         for (double[] p : points) {
-            double dx = (p[0] - k.cx()) / k.fx();
-            double dy = (p[1] - k.cy()) / k.fy();
+            double dx = p[0] - k.cx();
+            double dy = p[1] - k.cy();
             if (dx == 0 && dy == 0) {
                 continue;
+            }
+            String where = "pixel (" + p[0] + ", " + p[1] + ")";
+            if (!k.toNormalized(p[0], p[1], ideal)) {
+                return "it cannot be undone at the stream's " + where;
             }
             double along = 0;
             for (int i = 1; i <= RAY_STEPS; i++) {
                 double t = (double) i / RAY_STEPS;
-                if (!k.toNormalized(k.cx() + t * (p[0] - k.cx()), k.cy() + t * (p[1] - k.cy()), out)) {
-                    return "pixel (" + p[0] + ", " + p[1] + ")";
-                }
-                double next = out[0] * dx + out[1] * dy;
+                k.toPixel(t * ideal[0], t * ideal[1], 1, pixel);
+                double next = (pixel[0] - k.cx()) * dx + (pixel[1] - k.cy()) * dy;
                 if (!(next > along)) {
-                    return "pixel (" + p[0] + ", " + p[1] + ")";
+                    return "it folds over inside the stream, toward " + where;
                 }
                 along = next;
             }

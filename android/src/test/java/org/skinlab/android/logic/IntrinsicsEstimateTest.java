@@ -136,14 +136,20 @@ class IntrinsicsEstimateTest {
         assertTrue(IntrinsicsEstimate.of(report(28, pre, active, calibration, new float[] {-0.1f, 0, 0}, null, MODES),
                 640, 480).problem().contains("not 5 finite"));
         // k1 = -0.6 folds back at r = 1 / sqrt(3 * 0.6) = 0.745, where r_d peaks at 0.497; the
-        // stream's corner is at r_d = hypot(2016, 1512) / 2000 = 1.26: no inverse there. (Newton
-        // does converge there, on the far branch: r = 1.7, mirrored through the centre, where
-        // 1 - 0.6 r^2 < 0; the check along the ray from the centre is what refuses it.)
+        // stream's corner is at r_d = hypot(2016, 1512) / 2000 = 1.26: no inverse there.
         IntrinsicsEstimate folded = IntrinsicsEstimate.of(report(28, pre, active,
                 new float[] {2000, 2000, 2016, 1512, 0}, new float[] {-0.6f, 0, 0, 0, 0}, null, MODES), 640, 480);
         assertFalse(folded.intrinsics().isDistorted());
         assertFalse(folded.correctionOff(), "the device's own correction left on");
-        assertTrue(folded.problem().contains("inverse fails at the stream's pixel (-0.5, -0.5)"), folded.problem());
+        assertTrue(folded.problem().contains("cannot be undone at the stream's pixel (-0.5, -0.5)"), folded.problem());
+        // k1 = -2, k2 = 1.2: r (1 - 2 r^2 + 1.2 r^4) rises to 0.29 at r = 0.46, falls to 0.15 at
+        // r = 0.89 and rises again. With fx = 4500 every border point (r_d 0.34 to 0.56) has its
+        // only preimage on the outer branch (r 1.09 to 1.16) and undoes; the image folds inside.
+        IntrinsicsEstimate foldAndRise = IntrinsicsEstimate.of(report(28, pre, active,
+                new float[] {4500, 4500, 2016, 1512, 0}, new float[] {-2, 1.2f, 0, 0, 0}, null, MODES), 640, 480);
+        assertFalse(foldAndRise.intrinsics().isDistorted());
+        assertTrue(foldAndRise.problem().contains("folds over inside the stream, toward pixel (-0.5, -0.5)"),
+                foldAndRise.problem());
         // A lens without a calibration to normalise it.
         IntrinsicsEstimate uncalibrated = IntrinsicsEstimate.of(new CameraReport(28, pre, active, null, LENS, null,
                 MODES, 4.3, 5.6), 640, 480);
