@@ -47,6 +47,8 @@ import org.skinlab.ar.LensDistortion;
 public record IntrinsicsEstimate(CameraIntrinsics intrinsics, boolean correctionOff, String problem) {
     /** The horizontal field of view assumed when the camera reports nothing (a typical phone main camera). */
     public static final double FALLBACK_FOV_DEGREES = 65;
+    /** Samples along each ray from the principal point in {@link #oneToOneInside}. */
+    private static final int RAY_STEPS = 32;
 
     /** The intrinsics of a {@code streamWidth} x {@code streamHeight} stream of the camera {@code r} describes. */
     public static IntrinsicsEstimate of(CameraReport r, int streamWidth, int streamHeight) {
@@ -100,14 +102,11 @@ public record IntrinsicsEstimate(CameraIntrinsics intrinsics, boolean correction
         return new IntrinsicsEstimate(raw, correcting, null);
     }
 
-    /** Samples along each ray from the principal point in {@link #oneToOneInside}. */
-    private static final int RAY_STEPS = 32;
-
     /**
      * Null when the lens maps the ideal image one-to-one onto the whole stream, else why not, at
-     * the first border point where it does not. For the rays from the principal point to the corners and the
-     * edges' midpoints: the border point must undistort, and distorting the ideal ray from the
-     * centre out to that ideal point must move outward all the way. The second test catches a lens
+     * the first border point where it does not. For the rays from the principal point to the
+     * corners and the edges' midpoints: the border point must undistort, and distorting the ideal
+     * ray from the centre out to that ideal point must move outward all the way. The second test catches a lens
      * whose radius folds back and rises again (a large negative k1 with a positive k2): its border
      * points may undistort, onto the outer branch, while the image between shows some of the world
      * twice.
