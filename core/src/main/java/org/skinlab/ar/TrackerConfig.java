@@ -14,7 +14,7 @@ package org.skinlab.ar;
  * @param searchNearLastPose whether {@link FiducialTracker#track} first searches the image region
  *                           around the last frame's markers (video), before the whole frame
  */
-public record TrackerConfig(MarkerDictionary dictionary, double markerSizeMetres, int targetId, int maxBitErrors,
+public record TrackerConfig(MarkerDictionary dictionary, double markerSizeMetres, int targetId, double maxBitErrors,
         boolean searchNearLastPose) {
 
     /**
@@ -25,7 +25,10 @@ public record TrackerConfig(MarkerDictionary dictionary, double markerSizeMetres
      * cluttered frames (a random bit square read as code 71) at the same detection rates as 2; with
      * 2, none. Occluders of a cell or two and blur still read within 2.
      */
-    public static final int DEFAULT_MAX_BIT_ERRORS = 2;
+    public static final double DEFAULT_MAX_BIT_ERRORS = 1;
+
+    /** The most uncertain bits a marker's read may have (see ConfidentHammingDetector). */
+    public static final int MAX_UNCERTAIN_BITS = 9;
 
     public TrackerConfig {
         if (dictionary == null) {
@@ -39,7 +42,7 @@ public record TrackerConfig(MarkerDictionary dictionary, double markerSizeMetres
                     + " (ids 0 to " + (dictionary.codeCount() - 1) + ", or -1 for any)");
         }
         int limit = (dictionary.minimumHamming() - 1) / 2;
-        if (maxBitErrors < 0 || maxBitErrors > limit) {
+        if (!(maxBitErrors >= 0 && maxBitErrors <= limit)) {
             throw new IllegalArgumentException("bit errors must be in 0.." + limit + " for " + dictionary.key()
                     + " (half its minimum distance " + dictionary.minimumHamming() + "): " + maxBitErrors);
         }
@@ -52,7 +55,7 @@ public record TrackerConfig(MarkerDictionary dictionary, double markerSizeMetres
 
     /** {@code dictionary}, any id, {@link #DEFAULT_MAX_BIT_ERRORS} (or fewer if the dictionary needs), video search on. */
     public static TrackerConfig of(MarkerDictionary dictionary, double markerSizeMetres) {
-        int errors = Math.min(DEFAULT_MAX_BIT_ERRORS, (dictionary.minimumHamming() - 1) / 2);
+        double errors = Math.min(DEFAULT_MAX_BIT_ERRORS, (dictionary.minimumHamming() - 1) / 2);
         return new TrackerConfig(dictionary, markerSizeMetres, -1, errors, true);
     }
 
@@ -60,7 +63,7 @@ public record TrackerConfig(MarkerDictionary dictionary, double markerSizeMetres
         return new TrackerConfig(dictionary, markerSizeMetres, id, maxBitErrors, searchNearLastPose);
     }
 
-    public TrackerConfig withMaxBitErrors(int errors) {
+    public TrackerConfig withMaxBitErrors(double errors) {
         return new TrackerConfig(dictionary, markerSizeMetres, targetId, errors, searchNearLastPose);
     }
 
