@@ -28,7 +28,10 @@ import georegression.struct.shapes.Quadrilateral_F64;
  *
  * <p><b>False markers.</b> BoofCV accepts a square whose bits are up to the dictionary's minimum
  * Hamming distance away from a code (12 of 36 bits for 36h12), which reads codes into clutter, into
- * other dictionaries' markers and into AprilTags; {@link TrackerConfig#maxBitErrors()} caps it.
+ * other dictionaries' markers and into AprilTags. We read each bit with a confidence and charge a
+ * wrong bit what we were sure of it ({@link ConfidentHammingDetector}, limits in
+ * {@link TrackerConfig#maxBitErrors()} and {@link TrackerConfig#MAX_UNCERTAIN_BITS}): clutter's bits
+ * are crisp, a far, tilted marker's wrong bits are smeared by blur.
  *
  * <p><b>Video.</b> {@link #track} first looks at the image region where the markers of the last
  * frame should be now (their bounds moved as between the last two frames, enlarged by a quarter of
