@@ -39,10 +39,11 @@ import org.skinlab.ar.synthetic.SyntheticCamera;
  * under 10 px); the same poses with the 100 mm marker are printed, not claimed (docs/ar.md).
  *
  * <p><b>Clutter</b>: 1,000 frames of 320x240 (the detector's decision is per square; small frames
- * render fast), each with 12 clutter items (SyntheticCamera's Background: dark boxes, squares of
+ * render fast), each with 12 clutter items (the synthetic Background's: dark boxes, squares of
  * random bits, AprilTag 36h11, ArUco 6x6 and MIP_25h7 codes, checkerboards, text, binary textures,
- * 12-120 px, turned and sheared), blur 0.3-1.2 px and noise 2-5 levels. No marker may be reported
- * with our rule; BoofCV's default cap reports some.
+ * our codes with 3-6 bits flipped, pictures in a black frame; 12-120 px, turned and sheared), blur
+ * 0.3-1.2 px and noise 2-5 levels. No marker may be reported with our rule; BoofCV's default cap
+ * reports some.
  *
  * <p><b>Trade-off</b>: each candidate square's read (CodeReader: its best code, the sum of its
  * wrong bits' confidences, its uncertain bits) is recorded once, and the detection rate and false
