@@ -54,6 +54,8 @@ public final class FiducialTracker {
     private static final double REGION_LIMIT = 0.5;
     /** The least room around a marker's predicted bounds in its search region (pixels). */
     private static final double MIN_MARGIN = 24;
+    /** How much a marker's outline may shrink or grow between two frames for the region search. */
+    private static final double CONTOUR_CHANGE = 1.5;
 
     private final TrackerConfig config;
     private final CameraIntrinsics intrinsics;
@@ -64,6 +66,8 @@ public final class FiducialTracker {
     private final GrayU8 region = new GrayU8(1, 1);
     /** The lens shifted to the searched region, or null for a camera without distortion. */
     private final RegionLens regionLens;
+    /** Keeps the region searches to contours of about the last markers' size. */
+    private final ContourSizeFilter contourSizes = new ContourSizeFilter();
     /** The last frame's markers: how many, their ids, bounds (x0, y0, x1, y1) and motion (dx, dy). */
     private int lastCount;
     private int[] lastIds = new int[4];
@@ -78,6 +82,9 @@ public final class FiducialTracker {
     /** This frame's search regions (x0, y0, x1, y1), {@link #regionCount} of them. */
     private int[] regions = new int[16];
     private int regionCount;
+    /** The contour lengths (pixels) this frame's region searches pass on to the square fitting. */
+    private int contourMin;
+    private int contourMax;
     private boolean lastFromRegion;
     private int framesSinceFullSearch;
 
@@ -92,6 +99,7 @@ public final class FiducialTracker {
         SquareHamming_to_FiducialDetector<GrayU8> d = FactoryFiducial.squareHamming(code,
                 new ConfigFiducialHammingDetector(), GrayU8.class);
         this.detector = d.getAlgorithm();
+        detector.getSquareDetector().setHelper(contourSizes);
         LensDistortionNarrowFOV lens = LensDistortionFactory.narrow(BoofCameras.toBoof(intrinsics));
         if (intrinsics.isDistorted()) {
             // The square's contour is undistorted before its sides are fitted and its bits are read
@@ -150,12 +158,14 @@ public final class FiducialTracker {
             if (regionLens != null) {
                 regionLens.setOffset(b[4 * r], b[4 * r + 1]);
             }
+            contourSizes.set(contourMin, contourMax);
             try {
                 search(region, b[4 * r], b[4 * r + 1], found);
             } finally {
                 if (regionLens != null) {
                     regionLens.setOffset(0, 0);
                 }
+                contourSizes.off();
             }
         }
         if (!foundAllLast(found)) {
@@ -176,11 +186,15 @@ public final class FiducialTracker {
             regions = new int[4 * lastCount];
         }
         regionCount = 0;
+        double shortest = Double.POSITIVE_INFINITY;
+        double longest = 0;
         for (int m = 0; m < lastCount; m++) {
             double x0 = lastBounds[4 * m];
             double y0 = lastBounds[4 * m + 1];
             double x1 = lastBounds[4 * m + 2];
             double y1 = lastBounds[4 * m + 3];
+            shortest = Math.min(shortest, 2 * (x1 - x0 + y1 - y0));
+            longest = Math.max(longest, 2 * (x1 - x0 + y1 - y0));
             double dx = lastMotion[2 * m];
             double dy = lastMotion[2 * m + 1];
             // Where the marker should be now if it keeps moving as between the last two frames, with
@@ -197,6 +211,10 @@ public final class FiducialTracker {
             regionCount++;
         }
         mergeOverlappingRegions();
+        // A quadrilateral's outline traced in 8-connected pixels has between a half and all of its
+        // bounding box's perimeter in pixels; the marker may shrink or grow by half since then.
+        contourMin = (int) Math.floor(shortest / 2 / CONTOUR_CHANGE);
+        contourMax = (int) Math.ceil(longest * CONTOUR_CHANGE) + 8;
         double area = 0;
         for (int r = 0; r < regionCount; r++) {
             area += (double) (regions[4 * r + 2] - regions[4 * r]) * (regions[4 * r + 3] - regions[4 * r + 1]);
