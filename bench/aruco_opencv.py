@@ -4,7 +4,7 @@
 Timing (the bench starts this and talks to it over stdin/stdout, so that its rounds alternate
 with the Java contenders' in one run):
 
-    aruco_opencv.py --frames DIR --codes FILE --camera fx,fy,cx,cy,k1,k2,p1,p2,k3 --marker-size M
+    aruco_opencv.py --frames DIR --codes FILE --camera fx,fy,cx,cy,k1,k2,p1,p2,k3 --marker-size M [--clock cpu]
 
 reads DIR's *.pgm frames in name order and the dictionary's codes from FILE (first line
 "GRID MAX_CORRECTION", then one line per id of GRID*GRID characters, '1' for a white cell, rows
@@ -13,7 +13,7 @@ JSON line {"opencv": VERSION, "frames": N} (or {"error": WHY} when cv2 is missin
 each line on stdin: "round" with a JSON list of per-frame milliseconds, "ids" with a JSON list
 of the ids found per frame. One thread (cv2.setNumThreads(1)). Each frame: detectMarkers with
 OpenCV's default parameters, then solvePnP (IPPE_SQUARE) per marker, as BoofCV's contenders
-estimate each marker's pose.
+estimate each marker's pose. --clock cpu times by the thread's CPU time instead of the wall clock.
 
 Decoding (OpenCV reads H.264 that the desktop's pure-Java decoder does not, e.g. interlaced):
 
@@ -71,6 +71,7 @@ def main():
     parser.add_argument("--codes")
     parser.add_argument("--camera")
     parser.add_argument("--marker-size", type=float, default=0.1)
+    parser.add_argument("--clock", choices=("wall", "cpu"), default="wall")
     parser.add_argument("--decode", nargs=2, metavar=("VIDEO", "OUTDIR"))
     args = parser.parse_args()
     try:
@@ -104,15 +105,16 @@ def main():
             cv2.solvePnP(square, c.reshape(4, 2).astype(np.float64), camera, lens, flags=cv2.SOLVEPNP_IPPE_SQUARE)
         return [] if ids is None else sorted(int(i) for i in ids.ravel())
 
+    now = time.thread_time_ns if args.clock == "cpu" else time.perf_counter_ns
     print(json.dumps({"opencv": cv2.__version__, "frames": len(frames)}), flush=True)
     for line in sys.stdin:
         command = line.strip()
         if command == "round":
             millis = []
             for frame in frames:
-                start = time.perf_counter_ns()
+                start = now()
                 search(frame)
-                millis.append((time.perf_counter_ns() - start) * 1e-6)
+                millis.append((now() - start) * 1e-6)
             print(json.dumps(millis), flush=True)
         elif command == "ids":
             print(json.dumps([search(frame) for frame in frames]), flush=True)

@@ -52,7 +52,7 @@ final class OpenCvAruco implements AutoCloseable {
      * python3, no cv2).
      */
     static OpenCvAruco start(Path script, Path work, List<GrayImage> frames, CameraIntrinsics k,
-            MarkerDictionary dictionary, double markerMetres, Failure why) throws IOException {
+            MarkerDictionary dictionary, double markerMetres, String clock, Failure why) throws IOException {
         if (!Files.isRegularFile(script)) {
             why.reason = "not run (no " + script + "; run from the repository root or give --opencv-script)";
             return null;
@@ -69,7 +69,7 @@ final class OpenCvAruco implements AutoCloseable {
         Process p;
         try {
             p = new ProcessBuilder("python3", script.toString(), "--frames", dir.toString(), "--codes",
-                    codes.toString(), "--camera", camera, "--marker-size", Double.toString(markerMetres))
+                    codes.toString(), "--camera", camera, "--marker-size", Double.toString(markerMetres), "--clock", clock)
                     .redirectError(ProcessBuilder.Redirect.INHERIT).start();
         } catch (IOException e) {
             why.reason = "not run (no python3: " + e.getMessage() + ")";
