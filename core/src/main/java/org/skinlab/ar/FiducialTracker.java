@@ -138,10 +138,10 @@ public final class FiducialTracker {
     /**
      * The markers of one video frame. When the config says so, each marker of the last frame is
      * looked for in its own region, where it should be now (its bounds moved as between the last
-     * two frames, enlarged by a quarter of its size plus that motion, at least {@link #MIN_MARGIN}
-     * px; overlapping regions are merged); the whole frame is searched instead when a marker of
-     * the last frame is not found again, when the regions would cover more than half the frame,
-     * and every {@link #FULL_FRAME_EVERY}th frame (markers coming into view).
+     * two frames, enlarged by a quarter of its size plus that motion, at least 24 px; overlapping
+     * regions are merged); the whole frame is searched instead when a marker of the last frame is
+     * not found again, when the regions would cover more than half the frame, and every
+     * {@link #FULL_FRAME_EVERY}th frame (markers coming into view).
      */
     public List<MarkerDetection> track(GrayImage image) {
         if (!config.searchNearLastPose() || lastCount == 0 || framesSinceFullSearch + 1 >= FULL_FRAME_EVERY) {
