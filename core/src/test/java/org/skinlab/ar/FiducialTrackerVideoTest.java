@@ -25,18 +25,26 @@ class FiducialTrackerVideoTest {
     static final double CORNER_TOLERANCE = 0.05;
     static final double SIZE = 0.08;
 
-    /** Three markers near three corners of the view, the camera drifting: one box around them would cover most of the frame. */
+    /**
+     * Three markers near three corners of the view, the camera drifting: one box around them would
+     * cover most of the frame.
+     */
     private static List<PlacedMarker> farApart(double s) {
         double dx = 0.03 * Math.sin(2 * Math.PI * s);
         double dy = 0.02 * Math.cos(2 * Math.PI * s);
         double[] r = PlacedMarker.facingCamera(15 * Math.sin(2 * Math.PI * s), 10, 30 * s);
-        return List.of(
-                PlacedMarker.of(MarkerPattern.of(MarkerDictionary.DEFAULT, 3), SIZE, r, new double[] {-0.19 + dx, -0.12 + dy, 0.7}),
-                PlacedMarker.of(MarkerPattern.of(MarkerDictionary.DEFAULT, 17), SIZE, r, new double[] {0.19 + dx, -0.12 + dy, 0.7}),
-                PlacedMarker.of(MarkerPattern.of(MarkerDictionary.DEFAULT, 200), SIZE, r, new double[] {0.19 + dx, 0.12 + dy, 0.7}));
+        return List.of(marker(3, r, -0.19 + dx, -0.12 + dy), marker(17, r, 0.19 + dx, -0.12 + dy),
+                marker(200, r, 0.19 + dx, 0.12 + dy));
     }
 
-    /** Tracks {@code frames} and checks every one against the whole-frame search; returns how many were found in the regions. */
+    private static PlacedMarker marker(int id, double[] r, double x, double y) {
+        return PlacedMarker.of(MarkerPattern.of(MarkerDictionary.DEFAULT, id), SIZE, r, new double[] {x, y, 0.7});
+    }
+
+    /**
+     * Tracks {@code frames} and checks every one against the whole-frame search; returns how many
+     * were found in the regions.
+     */
     private static int compare(CameraIntrinsics k, List<List<PlacedMarker>> frames, int expected) {
         SyntheticCamera camera = new SyntheticCamera(k);
         FiducialTracker video = new FiducialTracker(TrackerConfig.defaults(SIZE), k);

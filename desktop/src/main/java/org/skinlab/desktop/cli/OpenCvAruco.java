@@ -69,7 +69,8 @@ final class OpenCvAruco implements AutoCloseable {
         Process p;
         try {
             p = new ProcessBuilder("python3", script.toString(), "--frames", dir.toString(), "--codes",
-                    codes.toString(), "--camera", camera, "--marker-size", Double.toString(markerMetres), "--clock", clock)
+                    codes.toString(), "--camera", camera, "--marker-size", Double.toString(markerMetres), "--clock",
+                    clock)
                     .redirectError(ProcessBuilder.Redirect.INHERIT).start();
         } catch (IOException e) {
             why.reason = "not run (no python3: " + e.getMessage() + ")";

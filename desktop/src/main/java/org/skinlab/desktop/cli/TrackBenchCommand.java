@@ -61,11 +61,13 @@ public final class TrackBenchCommand implements Callable<Integer> {
     @Option(names = "--frames", paramLabel = "N", description = "frames of the synthetic video (default: ${DEFAULT-VALUE})")
     int frames = 60;
 
-    @Option(names = "--images", paramLabel = "DIR", description = "a real video's frames (.png/.jpg, name order) instead of the synthetic video")
+    @Option(names = "--images", paramLabel = "DIR",
+            description = "a real video's frames (.png/.jpg, name order) instead of the synthetic video")
     Path images;
 
     @Option(names = "--intrinsics", paramLabel = "FILE",
-            description = "with --images: their camera, our JSON or BoofCV's intrinsic.yaml (default: 60 degree field of view)")
+            description = "with --images: their camera, our JSON or BoofCV's intrinsic.yaml"
+                    + " (default: 60 degree field of view)")
     Path intrinsics;
 
     @Option(names = "--size", paramLabel = "WxH", description = "with --images: resample the frames to this size first")
@@ -87,13 +89,14 @@ public final class TrackBenchCommand implements Callable<Integer> {
     double seconds = 6.0;
 
     @Option(names = "--clock", paramLabel = "wall|cpu",
-            description = "time each frame by the wall clock, or by the CPU time of the thread (on a machine shared with other work) (default: ${DEFAULT-VALUE})")
+            description = "time each frame by the wall clock, or by the CPU time of the thread (on a machine shared"
+                    + " with other work) (default: ${DEFAULT-VALUE})")
     String clock = "wall";
 
     @Option(names = "--json", description = "print the result as one line of JSON")
     boolean json;
 
-    /** One contender's pass over the frames: its per-frame milliseconds go to {@code ms}, the ids found to {@code ids}. */
+    /** One contender's pass over the frames: its per-frame milliseconds to {@code ms}, the ids found to {@code ids}. */
     private interface Pass {
         void run(double[] ms, List<List<Integer>> ids) throws IOException;
     }
@@ -101,7 +104,8 @@ public final class TrackBenchCommand implements Callable<Integer> {
     @Override
     public Integer call() throws IOException {
         if (frames < 2 || seconds <= 0 || warmupSeconds < 0 || !(markerSizeMm > 0)) {
-            throw new CommandFailure(ExitCodes.USAGE, "need --frames >= 2, a positive --marker-size and positive times", null);
+            throw new CommandFailure(ExitCodes.USAGE, "need --frames >= 2, a positive --marker-size and positive times",
+                    null);
         }
         TrackBenchVideo video;
         MarkerDictionary dict;
@@ -307,14 +311,15 @@ public final class TrackBenchCommand implements Callable<Integer> {
             o.put("trackFoundInRegion", regionShare);
             out.println(o);
         } else {
-            out.printf(Locale.ROOT, "marker tracking, %s, %s, %d rounds, Java %s, one core (BoofCV's threads off), %s%n",
-                    video.name(), dict.key(), rounds, Runtime.version(),
+            out.printf(Locale.ROOT,
+                    "marker tracking, %s, %s, %d rounds, Java %s, one core (BoofCV's threads off), %s%n", video.name(),
+                    dict.key(), rounds, Runtime.version(),
                     clock.equals("cpu") ? "the thread's CPU time per frame" : "wall clock per frame");
             out.printf(Locale.ROOT, "%-46s %10s %10s %9s %14s %s%n", "", "median ms", "mean ms", "vs BoofCV",
                     "markers/frame", "frames with detect's ids");
             for (int i = 0; i < c; i++) {
-                out.printf(Locale.ROOT, "%-46s %10.2f %10.2f %8.2fx %14.2f %d of %d%n", names.get(i), median[i], mean[i],
-                        median[i] / median[0], perFrame[i], sameAsDetect[i], n);
+                out.printf(Locale.ROOT, "%-46s %10.2f %10.2f %8.2fx %14.2f %d of %d%n", names.get(i), median[i],
+                        mean[i], median[i] / median[0], perFrame[i], sameAsDetect[i], n);
             }
             if (c < 4) {
                 out.printf(Locale.ROOT, "OpenCV ArUco: %s%n", opencv);

@@ -60,7 +60,8 @@ record TrackBenchVideo(String name, List<GrayImage> frames, CameraIntrinsics cam
             k = CameraIntrinsics.fromHorizontalFov(first.width(), first.height(), 60);
         } else {
             String file = intrinsics.getFileName().toString().toLowerCase(Locale.ROOT);
-            k = file.endsWith(".yaml") || file.endsWith(".yml") ? boofYaml(intrinsics) : IntrinsicsFile.read(intrinsics);
+            boolean yaml = file.endsWith(".yaml") || file.endsWith(".yml");
+            k = yaml ? boofYaml(intrinsics) : IntrinsicsFile.read(intrinsics);
             k = IntrinsicsFile.forImage(k, first.width(), first.height(), dir.toString());
         }
         String name = frames.size() + " frames of " + dir.getFileName() + " (" + first.width() + "x" + first.height();

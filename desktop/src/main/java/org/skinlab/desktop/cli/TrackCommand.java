@@ -58,7 +58,8 @@ public final class TrackCommand implements Callable<Integer> {
     @Option(names = "--id", paramLabel = "N", description = "report only this marker id (default: every id)")
     int id = -1;
 
-    @Option(names = "--sequence", description = "the images are a video's frames in name order: search near the last markers first")
+    @Option(names = "--sequence",
+            description = "the images are a video's frames in name order: search near the last markers first")
     boolean sequence;
 
     @Option(names = "--json", required = true, paramLabel = "OUT", description = "where to write the JSON ('-' for standard output)")
