@@ -1,6 +1,7 @@
 package org.skinlab.ar;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 
 import boofcv.alg.distort.LensDistortionNarrowFOV;
@@ -33,12 +34,11 @@ import georegression.struct.shapes.Quadrilateral_F64;
  * {@link TrackerConfig#maxBitErrors()} and {@link TrackerConfig#MAX_UNCERTAIN_BITS}): clutter's bits
  * are crisp, a far, tilted marker's wrong bits are smeared by blur.
  *
- * <p><b>Video.</b> {@link #track} first looks at the image region where the markers of the last
- * frame should be now (their bounds moved as between the last two frames, enlarged by a quarter of
- * their size plus that motion, at least 24 px; a marker that jumps farther is found by the
- * whole-frame pass that follows a miss) and only then at the whole frame; every
- * {@link #FULL_FRAME_EVERY}th frame it looks at the whole frame anyway, so that markers coming into
- * view are found. {@link #detect} always looks at the whole frame.
+ * <p><b>Video.</b> {@link #track} first looks for each marker of the last frame in its own region
+ * of the image, where it should be now, and only when one of them is not found there at the whole
+ * frame; every {@link #FULL_FRAME_EVERY}th frame it looks at the whole frame anyway, so that markers
+ * coming into view are found. One region per marker, not one around all: markers far apart would
+ * make one box cover most of the frame. {@link #detect} always looks at the whole frame.
  *
  * <p>Pose: BoofCV's quadrilateral estimator (IPPE's two planar solutions, the better kept, then
  * refined by Gauss-Newton on the four corners). Near face-on both solutions fit almost equally well
@@ -50,6 +50,10 @@ public final class FiducialTracker {
     public static final int FULL_FRAME_EVERY = 30;
     /** A search region is given up for the whole frame when it covers more than this share of it. */
     private static final double REGION_LIMIT = 0.5;
+    /** The least room around a marker's predicted bounds in its search region (pixels). */
+    private static final double MIN_MARGIN = 24;
+    /** How much a marker's outline may shrink or grow between two frames for the region search. */
+    private static final double CONTOUR_CHANGE = 1.5;
 
     private final TrackerConfig config;
     private final CameraIntrinsics intrinsics;
@@ -58,12 +62,27 @@ public final class FiducialTracker {
     private final Quadrilateral_F64 quad = new Quadrilateral_F64();
     private final GrayU8 frame = new GrayU8(1, 1);
     private final GrayU8 region = new GrayU8(1, 1);
-    /** The last frame's markers' bounds in pixels (x0, y0, x1, y1), or empty. */
-    private final double[] lastBounds = new double[4];
-    /** How far the bounds' centre moved from the frame before (pixels), 0 after a whole-frame search gap. */
-    private double motionX;
-    private double motionY;
-    private boolean haveLast;
+    /** The lens shifted to the searched region, or null for a camera without distortion. */
+    private final RegionLens regionLens;
+    /** Keeps the region searches to contours of about the last markers' size. */
+    private final ContourSizeFilter contourSizes = new ContourSizeFilter();
+    /** The last frame's markers: how many, their ids, bounds (x0, y0, x1, y1) and motion (dx, dy). */
+    private int lastCount;
+    private int[] lastIds = new int[4];
+    private double[] lastBounds = new double[16];
+    /** How far each marker moved since the frame before (pixels), 0 if it was not in that frame. */
+    private double[] lastMotion = new double[8];
+    /** Spares that {@link #remember} fills and swaps with the last ones. */
+    private int[] nextIds = new int[4];
+    private double[] nextBounds = new double[16];
+    private double[] nextMotion = new double[8];
+    private boolean[] matched = new boolean[4];
+    /** This frame's search regions (x0, y0, x1, y1), {@link #regionCount} of them. */
+    private int[] regions = new int[16];
+    private int regionCount;
+    /** The contour lengths (pixels) this frame's region searches pass on to the square fitting. */
+    private int contourMin;
+    private int contourMax;
     private boolean lastFromRegion;
     private int framesSinceFullSearch;
 
@@ -72,11 +91,16 @@ public final class FiducialTracker {
         this.intrinsics = intrinsics;
         this.detector = ConfidentHammingDetector.create(config.dictionary(), config.maxBitErrors(),
                 TrackerConfig.MAX_UNCERTAIN_BITS);
+        detector.getSquareDetector().setHelper(contourSizes);
         LensDistortionNarrowFOV lens = LensDistortionFactory.narrow(BoofCameras.toBoof(intrinsics));
         if (intrinsics.isDistorted()) {
             // The square's contour is undistorted before its sides are fitted and its bits are read
-            // through the lens; the image itself is never remapped. Cached: a table per pixel.
-            detector.configure(lens, intrinsics.width(), intrinsics.height(), true);
+            // through the lens; the image itself is never remapped. RegionLens keeps the tables per
+            // pixel that BoofCV's cache would, and follows the searched region.
+            regionLens = new RegionLens(lens, intrinsics.width(), intrinsics.height());
+            detector.configure(regionLens, intrinsics.width(), intrinsics.height(), false);
+        } else {
+            regionLens = null;
         }
         pose.setLensDistoriton(lens);
         double r = config.markerSizeMetres() / 2;
@@ -104,39 +128,137 @@ public final class FiducialTracker {
     }
 
     /**
-     * The markers of one video frame: near the last frame's markers first when the config says so,
-     * else (and when nothing is found there) in the whole image.
+     * The markers of one video frame. When the config says so, each marker of the last frame is
+     * looked for in its own region, where it should be now (its bounds moved as between the last
+     * two frames, enlarged by a quarter of its size plus that motion, at least 24 px; overlapping
+     * regions are merged); the whole frame is searched instead when a marker of the last frame is
+     * not found again, when the regions would cover more than half the frame, and every
+     * {@link #FULL_FRAME_EVERY}th frame (markers coming into view).
      */
     public List<MarkerDetection> track(GrayImage image) {
-        if (!config.searchNearLastPose() || !haveLast || framesSinceFullSearch + 1 >= FULL_FRAME_EVERY) {
+        if (!config.searchNearLastPose() || lastCount == 0 || framesSinceFullSearch + 1 >= FULL_FRAME_EVERY) {
             return detect(image);
         }
         wrap(image);
-        double w = lastBounds[2] - lastBounds[0];
-        double h = lastBounds[3] - lastBounds[1];
-        // Where the markers should be now if they keep moving as between the last two frames, with
-        // room for a quarter of their size (turning, coming closer) and for the motion doubling.
-        double margin = Math.max(24, 0.25 * Math.max(w, h) + Math.hypot(motionX, motionY));
-        int x0 = (int) Math.max(0, Math.floor(lastBounds[0] + motionX - margin));
-        int y0 = (int) Math.max(0, Math.floor(lastBounds[1] + motionY - margin));
-        int x1 = (int) Math.min(image.width(), Math.ceil(lastBounds[2] + motionX + margin));
-        int y1 = (int) Math.min(image.height(), Math.ceil(lastBounds[3] + motionY + margin));
-        if (x1 - x0 < 16 || y1 - y0 < 16) {
+        if (!planRegions(image.width(), image.height())) {
             return detect(image);
         }
-        if ((double) (x1 - x0) * (y1 - y0) > REGION_LIMIT * image.width() * image.height()) {
-            return detect(image);
+        List<MarkerDetection> found = new ArrayList<>(lastCount);
+        for (int r = 0; r < regionCount; r++) {
+            int[] b = regions;
+            frame.subimage(b[4 * r], b[4 * r + 1], b[4 * r + 2], b[4 * r + 3], region);
+            if (regionLens != null) {
+                regionLens.setOffset(b[4 * r], b[4 * r + 1]);
+            }
+            contourSizes.set(contourMin, contourMax);
+            try {
+                search(region, b[4 * r], b[4 * r + 1], found);
+            } finally {
+                if (regionLens != null) {
+                    regionLens.setOffset(0, 0);
+                }
+                contourSizes.off();
+            }
         }
-        frame.subimage(x0, y0, x1, y1, region);
-        List<MarkerDetection> found = new ArrayList<>(2);
-        search(region, x0, y0, found);
-        if (found.isEmpty()) {
+        if (!foundAllLast(found)) {
             return detect(image);
         }
         remember(found);
         framesSinceFullSearch++;
         lastFromRegion = true;
         return found;
+    }
+
+    /**
+     * One region per last marker, overlapping ones merged, into {@link #regions}; false when the
+     * whole frame should be searched instead (regions too large, or one squeezed by the border).
+     */
+    private boolean planRegions(int width, int height) {
+        if (regions.length < 4 * lastCount) {
+            regions = new int[4 * lastCount];
+        }
+        regionCount = 0;
+        double shortest = Double.POSITIVE_INFINITY;
+        double longest = 0;
+        for (int m = 0; m < lastCount; m++) {
+            double x0 = lastBounds[4 * m];
+            double y0 = lastBounds[4 * m + 1];
+            double x1 = lastBounds[4 * m + 2];
+            double y1 = lastBounds[4 * m + 3];
+            shortest = Math.min(shortest, 2 * (x1 - x0 + y1 - y0));
+            longest = Math.max(longest, 2 * (x1 - x0 + y1 - y0));
+            double dx = lastMotion[2 * m];
+            double dy = lastMotion[2 * m + 1];
+            // Where the marker should be now if it keeps moving as between the last two frames, with
+            // room for a quarter of its size (turning, coming closer) and for the motion doubling.
+            double margin = Math.max(MIN_MARGIN, 0.25 * Math.max(x1 - x0, y1 - y0) + Math.hypot(dx, dy));
+            int r = 4 * regionCount;
+            regions[r] = (int) Math.max(0, Math.floor(x0 + dx - margin));
+            regions[r + 1] = (int) Math.max(0, Math.floor(y0 + dy - margin));
+            regions[r + 2] = (int) Math.min(width, Math.ceil(x1 + dx + margin));
+            regions[r + 3] = (int) Math.min(height, Math.ceil(y1 + dy + margin));
+            if (regions[r + 2] - regions[r] < 16 || regions[r + 3] - regions[r + 1] < 16) {
+                return false;
+            }
+            regionCount++;
+        }
+        mergeOverlappingRegions();
+        // A quadrilateral's outline traced in 8-connected pixels has between a half and all of its
+        // bounding box's perimeter in pixels; the marker may shrink or grow by half since then.
+        contourMin = (int) Math.floor(shortest / 2 / CONTOUR_CHANGE);
+        contourMax = (int) Math.ceil(longest * CONTOUR_CHANGE) + 8;
+        double area = 0;
+        for (int r = 0; r < regionCount; r++) {
+            area += (double) (regions[4 * r + 2] - regions[4 * r]) * (regions[4 * r + 3] - regions[4 * r + 1]);
+        }
+        return area <= REGION_LIMIT * width * height;
+    }
+
+    /**
+     * Replaces every two overlapping regions by their bounding box until none overlap: a marker
+     * lies wholly inside one region, and no pixel is searched twice.
+     */
+    private void mergeOverlappingRegions() {
+        int[] b = regions;
+        boolean merged = true;
+        while (merged) {
+            merged = false;
+            for (int i = 0; i < regionCount && !merged; i++) {
+                for (int j = i + 1; j < regionCount && !merged; j++) {
+                    int p = 4 * i;
+                    int q = 4 * j;
+                    if (b[p] < b[q + 2] && b[q] < b[p + 2] && b[p + 1] < b[q + 3] && b[q + 1] < b[p + 3]) {
+                        b[p] = Math.min(b[p], b[q]);
+                        b[p + 1] = Math.min(b[p + 1], b[q + 1]);
+                        b[p + 2] = Math.max(b[p + 2], b[q + 2]);
+                        b[p + 3] = Math.max(b[p + 3], b[q + 3]);
+                        int last = 4 * (regionCount - 1);
+                        System.arraycopy(b, last, b, q, 4);
+                        regionCount--;
+                        merged = true;
+                    }
+                }
+            }
+        }
+    }
+
+    /** Whether every marker of the last frame (each id as often as it was there) is among {@code found}. */
+    private boolean foundAllLast(List<MarkerDetection> found) {
+        for (int m = 0; m < lastCount; m++) {
+            int id = lastIds[m];
+            int before = 0;
+            for (int k = 0; k < lastCount; k++) {
+                before += lastIds[k] == id ? 1 : 0;
+            }
+            int now = 0;
+            for (MarkerDetection d : found) {
+                now += d.id() == id ? 1 : 0;
+            }
+            if (now < before) {
+                return false;
+            }
+        }
+        return true;
     }
 
     /**
@@ -149,8 +271,7 @@ public final class FiducialTracker {
 
     /** Forgets the last frame (a cut in the video, a new camera). */
     public void reset() {
-        haveLast = false;
-        motionX = motionY = 0;
+        lastCount = 0;
         framesSinceFullSearch = 0;
     }
 
@@ -218,26 +339,56 @@ public final class FiducialTracker {
         return Math.sqrt(sum / 4);
     }
 
+    /** Keeps {@code found} as the last frame's markers, with each one's motion since its last sighting. */
     private void remember(List<MarkerDetection> found) {
-        boolean had = haveLast;
-        double oldX = (lastBounds[0] + lastBounds[2]) / 2;
-        double oldY = (lastBounds[1] + lastBounds[3]) / 2;
-        haveLast = !found.isEmpty();
-        if (!haveLast) {
-            motionX = motionY = 0;
-            return;
+        int n = found.size();
+        // The new markers go to the spare arrays while the old ones are still read for the motion.
+        if (nextIds.length < n) {
+            nextIds = new int[n];
+            nextBounds = new double[4 * n];
+            nextMotion = new double[2 * n];
         }
-        lastBounds[0] = lastBounds[1] = Double.POSITIVE_INFINITY;
-        lastBounds[2] = lastBounds[3] = Double.NEGATIVE_INFINITY;
-        for (MarkerDetection d : found) {
+        if (matched.length < lastCount) {
+            matched = new boolean[lastCount];
+        }
+        Arrays.fill(matched, false);
+        int[] newIds = nextIds;
+        double[] newBounds = nextBounds;
+        double[] newMotion = nextMotion;
+        for (int m = 0; m < n; m++) {
+            MarkerDetection d = found.get(m);
+            double x0 = Double.POSITIVE_INFINITY;
+            double y0 = Double.POSITIVE_INFINITY;
+            double x1 = Double.NEGATIVE_INFINITY;
+            double y1 = Double.NEGATIVE_INFINITY;
             for (int i = 0; i < 4; i++) {
-                lastBounds[0] = Math.min(lastBounds[0], d.cornerX(i));
-                lastBounds[1] = Math.min(lastBounds[1], d.cornerY(i));
-                lastBounds[2] = Math.max(lastBounds[2], d.cornerX(i));
-                lastBounds[3] = Math.max(lastBounds[3], d.cornerY(i));
+                x0 = Math.min(x0, d.cornerX(i));
+                y0 = Math.min(y0, d.cornerY(i));
+                x1 = Math.max(x1, d.cornerX(i));
+                y1 = Math.max(y1, d.cornerY(i));
+            }
+            newIds[m] = d.id();
+            newBounds[4 * m] = x0;
+            newBounds[4 * m + 1] = y0;
+            newBounds[4 * m + 2] = x1;
+            newBounds[4 * m + 3] = y1;
+            newMotion[2 * m] = 0;
+            newMotion[2 * m + 1] = 0;
+            for (int k = 0; k < lastCount; k++) {
+                if (!matched[k] && lastIds[k] == d.id()) {
+                    matched[k] = true;
+                    newMotion[2 * m] = (x0 + x1 - lastBounds[4 * k] - lastBounds[4 * k + 2]) / 2;
+                    newMotion[2 * m + 1] = (y0 + y1 - lastBounds[4 * k + 1] - lastBounds[4 * k + 3]) / 2;
+                    break;
+                }
             }
         }
-        motionX = had ? (lastBounds[0] + lastBounds[2]) / 2 - oldX : 0;
-        motionY = had ? (lastBounds[1] + lastBounds[3]) / 2 - oldY : 0;
+        nextIds = lastIds;
+        nextBounds = lastBounds;
+        nextMotion = lastMotion;
+        lastIds = newIds;
+        lastBounds = newBounds;
+        lastMotion = newMotion;
+        lastCount = n;
     }
 }

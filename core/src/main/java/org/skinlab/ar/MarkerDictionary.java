@@ -79,6 +79,11 @@ public enum MarkerDictionary {
         return parsed().minimumHamming;
     }
 
+    /** BoofCV's name of the dictionary (for its own detector with its default settings, as benchmarks run it). */
+    public HammingDictionary boofcvDictionary() {
+        return boofcv;
+    }
+
     /** A BoofCV description of the dictionary of the caller's own, which it may change. */
     ConfigHammingMarker config() {
         ConfigHammingMarker copy = new ConfigHammingMarker();

@@ -94,4 +94,30 @@ public final class GrayImages {
             throw new IOException(file + ": no PNG writer");
         }
     }
+
+    /**
+     * {@code g} resampled to {@code width x height} (bilinear; pixel edges map to pixel edges, as
+     * {@link org.skinlab.ar.CameraIntrinsics#scaledTo} maps the camera).
+     */
+    public static GrayImage scaled(GrayImage g, int width, int height) {
+        byte[] out = new byte[width * height];
+        double sx = (double) g.width() / width;
+        double sy = (double) g.height() / height;
+        for (int y = 0; y < height; y++) {
+            double fy = Math.min(Math.max((y + 0.5) * sy - 0.5, 0), g.height() - 1);
+            int y0 = Math.min((int) fy, g.height() - 2 < 0 ? 0 : g.height() - 2);
+            int y1 = Math.min(y0 + 1, g.height() - 1);
+            double wy = fy - y0;
+            for (int x = 0; x < width; x++) {
+                double fx = Math.min(Math.max((x + 0.5) * sx - 0.5, 0), g.width() - 1);
+                int x0 = Math.min((int) fx, g.width() - 2 < 0 ? 0 : g.width() - 2);
+                int x1 = Math.min(x0 + 1, g.width() - 1);
+                double wx = fx - x0;
+                double top = g.get(x0, y0) * (1 - wx) + g.get(x1, y0) * wx;
+                double bottom = g.get(x0, y1) * (1 - wx) + g.get(x1, y1) * wx;
+                out[y * width + x] = (byte) Math.round(top * (1 - wy) + bottom * wy);
+            }
+        }
+        return new GrayImage(width, height, width, out);
+    }
 }

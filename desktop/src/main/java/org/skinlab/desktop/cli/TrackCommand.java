@@ -28,7 +28,10 @@ import picocli.CommandLine.Spec;
 /**
  * {@code skinlab track}: the marker tracker on a folder of images, written as JSON other tools
  * score (docs/ar.md, "skinlab track"). Each image is searched whole ({@link FiducialTracker#detect}),
- * independently of the others.
+ * independently of the others; with {@code --sequence} the images are the frames of a video, in
+ * name order, and each is searched near the markers of the frame before first
+ * ({@link FiducialTracker#track}), as the AR view does. The JSON is the same either way, each
+ * frame's {@code millis} the time of its search.
  */
 @Command(name = "track", mixinStandardHelpOptions = true,
         description = "Find the markers in a folder of images and write their ids, corners and poses as JSON.")
@@ -54,6 +57,10 @@ public final class TrackCommand implements Callable<Integer> {
 
     @Option(names = "--id", paramLabel = "N", description = "report only this marker id (default: every id)")
     int id = -1;
+
+    @Option(names = "--sequence",
+            description = "the images are a video's frames in name order: search near the last markers first")
+    boolean sequence;
 
     @Option(names = "--json", required = true, paramLabel = "OUT", description = "where to write the JSON ('-' for standard output)")
     String json;
@@ -93,7 +100,7 @@ public final class TrackCommand implements Callable<Integer> {
                 tracker = new FiducialTracker(config, k);
             }
             long start = System.nanoTime();
-            List<MarkerDetection> found = tracker.detect(image);
+            List<MarkerDetection> found = sequence ? tracker.track(image) : tracker.detect(image);
             double millis = (System.nanoTime() - start) * 1e-6;
             TrackJson.addFrame(frames, file.getFileName().toString(), millis, found);
         }

@@ -18,6 +18,7 @@ import org.skinlab.ar.MarkerPattern;
 import org.skinlab.ar.synthetic.PlacedMarker;
 import org.skinlab.ar.synthetic.SceneOptions;
 import org.skinlab.ar.synthetic.SyntheticCamera;
+import org.skinlab.desktop.ar.DemoVideo;
 import org.skinlab.desktop.ar.GrayImages;
 import org.skinlab.desktop.ar.IntrinsicsFile;
 
@@ -80,6 +81,70 @@ class TrackCommandTest {
                 assertEquals(r[3 * row + col], d.get("R").get(row).get(col).asDouble(), 0.01, "R " + row + col);
             }
         }
+    }
+
+    /**
+     * {@code --sequence} on the synthetic demo video (DemoVideo: one marker circled by a hand-held
+     * camera, a loop in 16 frames, so up to 60 px a frame) finds in every frame the markers the
+     * whole-image search finds, corners within 0.05 px (FiducialTrackerVideoTest's tolerance: the
+     * same BoofCV edge fit on a differently thresholded region); and it really is the video search:
+     * a second marker coming into view far from the first is not looked for until the next
+     * whole-frame pass, where the whole-image search finds it at once.
+     */
+    @Test
+    void sequenceFindsTheWholeImageDetectionsOnAVideo(@TempDir Path dir) throws Exception {
+        Path frames = Files.createDirectories(dir.resolve("video"));
+        DemoVideo video = new DemoVideo(K, 16);
+        for (int i = 0; i < video.frames(); i++) {
+            GrayImages.writePng(video.frame(i), frames.resolve(String.format("f%03d.png", i)));
+        }
+        Path intrinsics = dir.resolve("k.json");
+        IntrinsicsFile.write(K, intrinsics);
+        JsonNode whole = track(frames, intrinsics, false);
+        JsonNode sequence = track(frames, intrinsics, true);
+        assertEquals(video.frames(), sequence.size());
+        for (int i = 0; i < video.frames(); i++) {
+            JsonNode a = whole.get(i).get("detections");
+            JsonNode b = sequence.get(i).get("detections");
+            assertEquals(whole.get(i).get("frame"), sequence.get(i).get("frame"));
+            assertEquals(1, a.size(), "frame " + i + ": the whole-image search");
+            assertEquals(a.size(), b.size(), "frame " + i);
+            assertEquals(a.get(0).get("id"), b.get(0).get("id"), "frame " + i);
+            for (int c = 0; c < 4; c++) {
+                for (int xy = 0; xy < 2; xy++) {
+                    assertEquals(a.get(0).get("corners").get(c).get(xy).asDouble(),
+                            b.get(0).get("corners").get(c).get(xy).asDouble(), 0.05, "frame " + i + " corner " + c);
+                }
+            }
+        }
+
+        Path arrival = Files.createDirectories(dir.resolve("arrival"));
+        SyntheticCamera camera = new SyntheticCamera(K);
+        PlacedMarker near = PlacedMarker.of(MarkerPattern.of(MarkerDictionary.DEFAULT, 5), 0.1,
+                PlacedMarker.facingCamera(20, 0, 0), new double[] {-0.15, -0.1, 0.6});
+        PlacedMarker far = PlacedMarker.of(MarkerPattern.of(MarkerDictionary.DEFAULT, 9), 0.1,
+                PlacedMarker.facingCamera(20, 0, 0), new double[] {0.15, 0.1, 0.6});
+        for (int i = 0; i < 4; i++) {
+            List<PlacedMarker> markers = i < 2 ? List.of(near) : List.of(near, far);
+            GrayImages.writePng(camera.render(markers, SceneOptions.camera(10 + i)), arrival.resolve("f" + i + ".png"));
+        }
+        JsonNode all = track(arrival, intrinsics, false);
+        JsonNode first = track(arrival, intrinsics, true);
+        assertEquals(2, all.get(3).get("detections").size(), "the whole-image search sees both");
+        assertEquals(1, first.get(3).get("detections").size(), "the video search looks near marker 5 only");
+        assertEquals(5, first.get(3).get("detections").get(0).get("id").asInt());
+    }
+
+    private static JsonNode track(Path frames, Path intrinsics, boolean sequence) throws Exception {
+        Path out = frames.resolveSibling(frames.getFileName() + (sequence ? "-sequence.json" : "-whole.json"));
+        List<String> args = new java.util.ArrayList<>(List.of("track", "--images", frames.toString(), "--intrinsics",
+                intrinsics.toString(), "--marker-size", "100", "--json", out.toString()));
+        if (sequence) {
+            args.add("--sequence");
+        }
+        Cli cli = Cli.run(args.toArray(new String[0]));
+        assertEquals(0, cli.status, cli.toString());
+        return new ObjectMapper().readTree(Files.readString(out)).get("frames");
     }
 
     @Test
