@@ -56,6 +56,8 @@ public final class FiducialTracker {
     private final TrackerConfig config;
     private final CameraIntrinsics intrinsics;
     private final DetectFiducialSquareHamming<GrayU8> detector;
+    /** The detector's lens, moved to each searched region; null for an ideal camera. */
+    private final RegionLens regionLens;
     private final QuadPoseEstimator pose = new QuadPoseEstimator(1e-6, 200);
     private final Quadrilateral_F64 quad = new Quadrilateral_F64();
     private final GrayU8 frame = new GrayU8(1, 1);
@@ -83,8 +85,14 @@ public final class FiducialTracker {
         LensDistortionNarrowFOV lens = LensDistortionFactory.narrow(BoofCameras.toBoof(intrinsics));
         if (intrinsics.isDistorted()) {
             // The square's contour is undistorted before its sides are fitted and its bits are read
-            // through the lens; the image itself is never remapped. Cached: a table per pixel.
-            detector.configure(lens, intrinsics.width(), intrinsics.height(), true);
+            // through the lens; the image itself is never remapped. BoofCV applies the lens to the
+            // coordinates of the image it is given, which for track's region is a subimage: the
+            // region's lens shifts them back to the frame's (RegionLens). Not cached: BoofCV's
+            // tables (about 12% faster) are per pixel of the image configured, not of a moving region.
+            regionLens = new RegionLens(lens);
+            detector.configure(regionLens, intrinsics.width(), intrinsics.height(), false);
+        } else {
+            regionLens = null;
         }
         pose.setLensDistoriton(lens);
         double r = config.markerSizeMetres() / 2;
@@ -178,6 +186,9 @@ public final class FiducialTracker {
 
     /** Detects in {@code image}, whose pixel (0, 0) is the frame's (x0, y0), and estimates poses. */
     private void search(GrayU8 image, int x0, int y0, List<MarkerDetection> out) {
+        if (regionLens != null) {
+            regionLens.moveTo(x0, y0);
+        }
         detector.process(image);
         for (FoundFiducial f : detector.getFound().toList()) {
             if (config.targetId() >= 0 && f.id != config.targetId()) {
