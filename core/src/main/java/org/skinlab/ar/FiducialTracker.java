@@ -87,9 +87,10 @@ public final class FiducialTracker {
             // The square's contour is undistorted before its sides are fitted and its bits are read
             // through the lens; the image itself is never remapped. BoofCV applies the lens to the
             // coordinates of the image it is given, which for track's region is a subimage: the
-            // region's lens shifts them back to the frame's (RegionLens). Not cached: BoofCV's
-            // tables (about 12% faster) are per pixel of the image configured, not of a moving region.
-            regionLens = new RegionLens(lens);
+            // region's lens shifts them back to the frame's (RegionLens). Not BoofCV's cache: its
+            // tables are per pixel of the image configured, not of a moving region (RegionLens
+            // keeps the frame's instead).
+            regionLens = new RegionLens(lens, intrinsics.width(), intrinsics.height());
             detector.configure(regionLens, intrinsics.width(), intrinsics.height(), false);
         } else {
             regionLens = null;

@@ -16,14 +16,43 @@ import georegression.struct.point.Point2D_F64;
  * square's sides where they are straight, reads its bits where they are, and its own checks against
  * the image's bounds see coordinates of the image it has. One instance per detector; the transforms
  * read the offset at each call, so moving the region needs no reconfiguration.
+ *
+ * <p>BoofCV's own per-pixel tables (it calls its pixel transforms at whole pixels: the contour's,
+ * and more) assume the image it was configured with and are therefore not used; the same two
+ * tables, pixel to pixel undistorted and distorted, are kept here for the whole frame (four floats
+ * per pixel) and read at the region's offset.
  */
 final class RegionLens implements LensDistortionNarrowFOV {
     private final LensDistortionNarrowFOV frame;
-    private double x0;
-    private double y0;
+    private final int width;
+    private final int height;
+    /** Per frame pixel (x, y), at 2 (y width + x): where it is undistorted, in frame pixels. */
+    private final float[] undistorted;
+    /** Per undistorted frame pixel (x, y), at 2 (y width + x): where it appears, in frame pixels. */
+    private final float[] distorted;
+    private int x0;
+    private int y0;
 
-    RegionLens(LensDistortionNarrowFOV frame) {
+    /** The lens {@code frame} of a camera of {@code width x height} pixels (BoofCV's pixel convention). */
+    RegionLens(LensDistortionNarrowFOV frame, int width, int height) {
         this.frame = frame;
+        this.width = width;
+        this.height = height;
+        undistorted = table(frame.undistort_F32(true, true), width, height);
+        distorted = table(frame.distort_F32(true, true), width, height);
+    }
+
+    private static float[] table(Point2Transform2_F32 t, int width, int height) {
+        float[] table = new float[2 * width * height];
+        Point2D_F32 p = new Point2D_F32();
+        for (int y = 0; y < height; y++) {
+            for (int x = 0; x < width; x++) {
+                t.compute(x, y, p);
+                table[2 * (y * width + x)] = p.x;
+                table[2 * (y * width + x) + 1] = p.y;
+            }
+        }
+        return table;
     }
 
     /** The region's pixel (0, 0) is the frame's ({@code x0}, {@code y0}); (0, 0) for the whole frame. */
@@ -39,7 +68,8 @@ final class RegionLens implements LensDistortionNarrowFOV {
 
     @Override
     public Point2Transform2_F32 distort_F32(boolean pixelIn, boolean pixelOut) {
-        return shifted(frame.distort_F32(pixelIn, pixelOut), pixelIn, pixelOut);
+        Point2Transform2_F32 exact = shifted(frame.distort_F32(pixelIn, pixelOut), pixelIn, pixelOut);
+        return pixelIn && pixelOut ? tabled(exact, distorted) : exact;
     }
 
     @Override
@@ -49,7 +79,31 @@ final class RegionLens implements LensDistortionNarrowFOV {
 
     @Override
     public Point2Transform2_F32 undistort_F32(boolean pixelIn, boolean pixelOut) {
-        return shifted(frame.undistort_F32(pixelIn, pixelOut), pixelIn, pixelOut);
+        Point2Transform2_F32 exact = shifted(frame.undistort_F32(pixelIn, pixelOut), pixelIn, pixelOut);
+        return pixelIn && pixelOut ? tabled(exact, undistorted) : exact;
+    }
+
+    /** A pixel to pixel transform: whole pixels of the frame from {@code table}, others by {@code exact}. */
+    private Point2Transform2_F32 tabled(Point2Transform2_F32 exact, float[] table) {
+        return new Point2Transform2_F32() {
+            @Override
+            public void compute(float x, float y, Point2D_F32 out) {
+                int fx = (int) x + x0;
+                int fy = (int) y + y0;
+                if (x == (int) x && y == (int) y && fx >= 0 && fy >= 0 && fx < width && fy < height) {
+                    int i = 2 * (fy * width + fx);
+                    out.x = table[i] - x0;
+                    out.y = table[i + 1] - y0;
+                } else {
+                    exact.compute(x, y, out);
+                }
+            }
+
+            @Override
+            public Point2Transform2_F32 copyConcurrent() {
+                return tabled(exact.copyConcurrent(), table);
+            }
+        };
     }
 
     /** Undistorted pixels to normalised coordinates: pixels in, so shifted in. */
