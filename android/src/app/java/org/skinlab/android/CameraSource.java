@@ -15,13 +15,16 @@ import android.hardware.camera2.CaptureRequest;
 import android.hardware.camera2.params.StreamConfigurationMap;
 import android.media.Image;
 import android.media.ImageReader;
+import android.os.Build;
 import android.os.Handler;
 import android.util.Size;
 import android.util.SizeF;
 import android.view.Surface;
 
+import org.skinlab.android.logic.CameraReport;
 import org.skinlab.android.logic.FocusMode;
 import org.skinlab.android.logic.IntrinsicsEstimate;
+import org.skinlab.android.logic.StatusLine;
 import org.skinlab.android.logic.StreamSizes;
 import org.skinlab.android.logic.YPlane;
 import org.skinlab.ar.ArSession;
@@ -67,6 +70,8 @@ final class CameraSource {
     private ImageReader reader;
     private Surface previewSurface;
     private int focusMode = -1;
+    /** Whether the requests turn the device's distortion correction off (IntrinsicsEstimate#correctionOff). */
+    private boolean correctionOff;
 
     CameraSource(CameraManager manager, Handler cameraThread, Handler trackingThread, Listener listener) {
         this.manager = manager;
@@ -104,10 +109,14 @@ final class CameraSource {
         StreamSizes sizes = map == null ? FALLBACK_SIZES
                 : StreamSizes.choose(pairs(map.getOutputSizes(ImageFormat.YUV_420_888)),
                         pairs(map.getOutputSizes(SurfaceTexture.class)));
-        if (!sizes.sameAspect()) {
-            report(sizes.problem());
+        IntrinsicsEstimate estimate = IntrinsicsEstimate.of(geometry(c), sizes.trackingWidth(), sizes.trackingHeight());
+        // The listener keeps one camera problem: both notes in one.
+        String notes = StatusLine.joined(sizes.sameAspect() ? null : sizes.problem(), estimate.problem());
+        if (notes != null) {
+            report(notes);
         }
-        CameraIntrinsics intrinsics = intrinsics(c, sizes.trackingWidth(), sizes.trackingHeight());
+        CameraIntrinsics intrinsics = estimate.intrinsics();
+        correctionOff = estimate.correctionOff();
         Integer orientation = c.get(CameraCharacteristics.SENSOR_ORIENTATION);
         focusMode = FocusMode.choose(c.get(CameraCharacteristics.CONTROL_AF_AVAILABLE_MODES));
         preview.setDefaultBufferSize(sizes.previewWidth(), sizes.previewHeight());
@@ -183,6 +192,10 @@ final class CameraSource {
         b.addTarget(reader.getSurface());
         if (focusMode >= 0) {
             b.set(CaptureRequest.CONTROL_AF_MODE, focusMode);
+        }
+        // The intrinsics carry the lens only if the streams are the raw optics (IntrinsicsEstimate).
+        if (correctionOff && Build.VERSION.SDK_INT >= 28) {
+            b.set(CaptureRequest.DISTORTION_CORRECTION_MODE, CaptureRequest.DISTORTION_CORRECTION_MODE_OFF);
         }
         s.setRepeatingRequest(b.build(), null, cameraThread);
     }
@@ -267,27 +280,37 @@ final class CameraSource {
         return pairs;
     }
 
-    private static CameraIntrinsics intrinsics(CameraCharacteristics c, int width, int height) {
-        float[] calibration = c.get(CameraCharacteristics.LENS_INTRINSIC_CALIBRATION);
+    /**
+     * The camera's geometry as Camera2 reports it, every key read only at the API levels that have
+     * it; what it means is {@link IntrinsicsEstimate}'s to decide.
+     */
+    // LENS_RADIAL_DISTORTION is deprecated from API 28 on, where LENS_DISTORTION is read instead.
+    @SuppressWarnings("deprecation")
+    static CameraReport geometry(CameraCharacteristics c) {
+        float[] lens = null;
+        float[] radial = null;
+        int[] modes = null;
+        if (Build.VERSION.SDK_INT >= 28) {
+            lens = c.get(CameraCharacteristics.LENS_DISTORTION);
+            modes = c.get(CameraCharacteristics.DISTORTION_CORRECTION_AVAILABLE_MODES);
+        } else {
+            radial = c.get(CameraCharacteristics.LENS_RADIAL_DISTORTION);
+        }
         Rect active = c.get(CameraCharacteristics.SENSOR_INFO_ACTIVE_ARRAY_SIZE);
-        Rect preCorrection = c.get(CameraCharacteristics.SENSOR_INFO_PRE_CORRECTION_ACTIVE_ARRAY_SIZE);
         float[] focal = c.get(CameraCharacteristics.LENS_INFO_AVAILABLE_FOCAL_LENGTHS);
         SizeF physical = c.get(CameraCharacteristics.SENSOR_INFO_PHYSICAL_SIZE);
         Size pixelArray = c.get(CameraCharacteristics.SENSOR_INFO_PIXEL_ARRAY_SIZE);
-        if (active == null) {
-            return IntrinsicsEstimate.estimate(null, 0, 0, Double.NaN, Double.NaN, width, height);
-        }
-        if (calibration != null && calibration.length >= 4 && preCorrection != null) {
-            // The calibration's principal point is in the pre-correction array: move it into the active one.
-            calibration = calibration.clone();
-            calibration[2] -= active.left - preCorrection.left;
-            calibration[3] -= active.top - preCorrection.top;
-        }
         // The physical size is the whole pixel array's; the active array is part of it, at the same pitch.
-        double activeWidthMm = physical == null || pixelArray == null || pixelArray.getWidth() <= 0 ? Double.NaN
-                : physical.getWidth() * active.width() / pixelArray.getWidth();
-        return IntrinsicsEstimate.estimate(calibration, active.width(), active.height(),
-                focal == null || focal.length == 0 ? Double.NaN : focal[0], activeWidthMm, width, height);
+        double activeWidthMm = active == null || physical == null || pixelArray == null || pixelArray.getWidth() <= 0
+                ? Double.NaN : physical.getWidth() * active.width() / pixelArray.getWidth();
+        return new CameraReport(Build.VERSION.SDK_INT,
+                rect(c.get(CameraCharacteristics.SENSOR_INFO_PRE_CORRECTION_ACTIVE_ARRAY_SIZE)), rect(active),
+                c.get(CameraCharacteristics.LENS_INTRINSIC_CALIBRATION), lens, radial, modes,
+                focal == null || focal.length == 0 ? Double.NaN : focal[0], activeWidthMm);
+    }
+
+    private static int[] rect(Rect r) {
+        return r == null ? null : new int[] {r.left, r.top, r.right, r.bottom};
     }
 
     private static String describe(int error) {

@@ -108,9 +108,10 @@ final class AppDriver {
 
     /**
      * A back camera as Camera2 lists it: 4:3 and 16:9 YUV and preview sizes, continuous video
-     * autofocus, the sensor turned 90 degrees (most phones).
+     * autofocus, the sensor turned 90 degrees (most phones). Returned for a test to add keys
+     * (before the camera opens).
      */
-    void addBackCamera(String id) {
+    CameraCharacteristics addBackCamera(String id) {
         CameraCharacteristics c = ShadowCameraCharacteristics.newCameraCharacteristics();
         shadowOf(c).set(CameraCharacteristics.LENS_FACING, CameraCharacteristics.LENS_FACING_BACK);
         shadowOf(c).set(CameraCharacteristics.SENSOR_ORIENTATION, 90);
@@ -124,6 +125,7 @@ final class AppDriver {
         }
         shadowOf(c).set(CameraCharacteristics.SCALER_STREAM_CONFIGURATION_MAP, map.build());
         shadowOf(cameras()).addCamera(id, c);
+        return c;
     }
 
     /**
@@ -283,7 +285,7 @@ final class AppDriver {
      * camera source's frame entry on the tracking thread, where the ImageReader's frames arrive.
      */
     void feedMarkerFrame(long timestampNanos) throws InterruptedException {
-        CameraIntrinsics k = IntrinsicsEstimate.estimate(null, 0, 0, Double.NaN, Double.NaN, 640, 480);
+        CameraIntrinsics k = CameraIntrinsics.fromHorizontalFov(640, 480, IntrinsicsEstimate.FALLBACK_FOV_DEGREES);
         GrayImage image = new SyntheticCamera(k).render(List.of(PlacedMarker.of(
                 MarkerPattern.of(MarkerDictionary.DEFAULT, 0), 0.1, PlacedMarker.facingCamera(20, 10, 15),
                 new double[] {0.01, 0.02, 0.5})), SceneOptions.camera(7));

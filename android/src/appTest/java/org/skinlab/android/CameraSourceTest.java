@@ -58,7 +58,8 @@ public class CameraSourceTest {
         }
         app.feedMarkerFrame(1_000_000_000L);
         String status = app.awaitStatus("the marker tracked", s -> s.contains("marker: tracking"));
-        assertTrue("the tracker's time is shown: " + status, status.matches("(?s).*marker: tracking \\(\\d+\\.\\d ms\\).*"));
+        assertTrue("the followed id, the markers in view and the tracker's time are shown: " + status,
+                status.matches("(?s).*marker: tracking id 0, 1 in view \\(\\d+\\.\\d ms\\).*"));
     }
 
     @Test

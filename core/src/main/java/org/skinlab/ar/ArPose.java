@@ -7,17 +7,20 @@ package org.skinlab.ar;
  * @param state          tracking state (the model is drawn when {@link TrackingState#showsModel()})
  * @param rotation       the filtered marker pose R (row-major; {@code X_cam = R X_marker + t})
  * @param translation    the filtered t in metres
- * @param markers        how many markers the frame's detector reported
+ * @param markerId       the id of the marker the model is on ({@link MarkerTracking#followedId()}),
+ *                       -1 while the model is not shown
+ * @param markers        how many markers the frame's detector reported (of any id, unless the
+ *                       tracker's config names one)
  * @param trackerMillis  the detector's time on this frame
  * @param timeNanos      the camera frame's timestamp
  * @param frameNumber    1 for the first frame tracked, counting up
  */
-public record ArPose(TrackingState state, double[] rotation, double[] translation, int markers, double trackerMillis,
-        long timeNanos, long frameNumber) {
+public record ArPose(TrackingState state, double[] rotation, double[] translation, int markerId, int markers,
+        double trackerMillis, long timeNanos, long frameNumber) {
 
     /** Before the first frame. */
     public static final ArPose NONE = new ArPose(TrackingState.SEARCHING, new double[] {1, 0, 0, 0, -1, 0, 0, 0, -1},
-            new double[] {0, 0, 1}, 0, 0, 0, 0);
+            new double[] {0, 0, 1}, -1, 0, 0, 0, 0);
 
     public ArPose {
         rotation = rotation.clone();
@@ -32,6 +35,21 @@ public record ArPose(TrackingState state, double[] rotation, double[] translatio
     @Override
     public double[] translation() {
         return translation.clone();
+    }
+
+    /**
+     * The marker part of a status line: the state, the followed id while the model is shown, and
+     * how many markers the frame shows, e.g. "tracking id 3, 2 in view", "holding id 3", "searching".
+     */
+    public String markerLabel() {
+        StringBuilder s = new StringBuilder(state.label());
+        if (visible() && markerId >= 0) {
+            s.append(" id ").append(markerId);
+        }
+        if (markers > 0) {
+            s.append(", ").append(markers).append(" in view");
+        }
+        return s.toString();
     }
 
     /** Whether the model is drawn. */

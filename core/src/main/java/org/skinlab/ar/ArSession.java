@@ -51,7 +51,8 @@ public final class ArSession {
         TrackingState state = tracking.update(timeNanos, found);
         tracking.rotation(rotation);
         tracking.translation(translation);
-        ArPose pose = new ArPose(state, rotation, translation, found.size(), millis, timeNanos, ++frames);
+        ArPose pose = new ArPose(state, rotation, translation, tracking.followedId(), found.size(), millis, timeNanos,
+                ++frames);
         current = pose;
         return pose;
     }

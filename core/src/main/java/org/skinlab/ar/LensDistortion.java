@@ -88,8 +88,11 @@ public record LensDistortion(double k1, double k2, double k3, double p1, double 
                 out[0] = x;
                 out[1] = y;
                 // Newton may land on a fold's far branch: the true inverse keeps det > 0 (the lens
-                // does not mirror the image).
-                return fits && det > 0;
+                // does not mirror the image) and a positive radial factor. Past a barrel lens' fold
+                // det is positive again where the radial factor is negative, on a point mirrored
+                // through the centre that maps exactly onto (xd, yd).
+                double s2 = x * x + y * y;
+                return fits && det > 0 && 1 + s2 * (k1 + s2 * (k2 + s2 * k3)) > 0;
             }
         }
         return false;

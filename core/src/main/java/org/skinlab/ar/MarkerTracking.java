@@ -8,7 +8,11 @@ import java.util.List;
  * the tracking thread; not thread-safe ({@link ArSession} publishes its results).
  *
  * <ul>
- * <li>The marker is the detection of the target id, or with id -1 the nearest one.</li>
+ * <li>The marker is the detection of the target id, whatever else is in view. With id -1 it is the
+ *     nearest marker when the search starts, and from then on that marker's id ({@link
+ *     #followedId()}): a second marker that comes nearer does not take the model over, which
+ *     would otherwise jump between two markers at similar distances from frame to frame. The
+ *     choice is made anew only once the followed marker is LOST (or after {@link #reset()}).</li>
  * <li>Missing from a frame, the last pose is held for {@link #holdNanos()} (state HOLDING), then
  *     the model is hidden (LOST); found again, the filter restarts at the new pose.</li>
  * <li><b>The planar ambiguity.</b> A square seen nearly face-on has two poses that explain its
@@ -38,6 +42,8 @@ public final class MarkerTracking {
     private TrackingState state = TrackingState.SEARCHING;
     private long lastSeenNanos;
     private MarkerDetection last;
+    /** The id the model is on while it is shown; with target id -1, the marker locked on to. */
+    private int followedId = -1;
 
     /**
      * @param targetId  the marker's id, or -1 for the nearest marker of any id
@@ -72,6 +78,7 @@ public final class MarkerTracking {
         if (!state.showsModel()) {
             filter.reset();
             candidateFrames = 0;
+            followedId = d.id();
         }
         double[] r = d.rotation();
         if (state.showsModel() && PoseMath.angleDegrees(rotation, r) > FLIP_DEGREES) {
@@ -107,6 +114,11 @@ public final class MarkerTracking {
         return state;
     }
 
+    /** The id of the marker the model is on while it is shown (TRACKING, HOLDING), else -1. */
+    public int followedId() {
+        return state.showsModel() ? followedId : -1;
+    }
+
     /** The filtered rotation (row-major) into {@code dest}; meaningful while {@link TrackingState#showsModel()}. */
     public double[] rotation(double[] dest) {
         System.arraycopy(rotation, 0, dest, 0, 9);
@@ -125,12 +137,15 @@ public final class MarkerTracking {
         filter.reset();
         candidateFrames = 0;
         last = null;
+        followedId = -1;
     }
 
+    /** The followed marker's detection (the nearest, should its id be seen twice), or null. */
     private MarkerDetection pick(List<MarkerDetection> detections) {
+        int id = targetId >= 0 ? targetId : state.showsModel() ? followedId : -1;
         MarkerDetection best = null;
         for (MarkerDetection d : detections) {
-            if (targetId >= 0 && d.id() != targetId) {
+            if (id >= 0 && d.id() != id) {
                 continue;
             }
             if (best == null || d.distance() < best.distance()) {

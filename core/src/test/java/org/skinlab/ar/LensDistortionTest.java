@@ -66,6 +66,10 @@ class LensDistortionTest {
         assertFalse(d.undistort(0.6, 0, out));
         assertTrue(d.undistort(0.5, 0, out));
         assertEquals(0.5, out[0] * (1 - 0.5 * out[0] * out[0]), 1e-12);
+        // Far past the fold Newton can converge on the other branch: for k1 = -0.6 the point
+        // (-1.008, -0.756) (r_d = 1.26; the fold is at r_d = 0.497) is the exact image of a point
+        // at r = 1.7 on the opposite side, where 1 - 0.6 r^2 < 0 and det > 0 again. Not an inverse.
+        assertFalse(new LensDistortion(-0.6, 0, 0, 0, 0).undistort(-1.008, -0.756, out));
     }
 
     @Test

@@ -110,7 +110,7 @@ class MarkerSceneTest {
         double[] r = multiply(org.skinlab.ar.synthetic.PlacedMarker.facingCamera(-45, 0, 0),
                 new double[] {0, -1, 0, 1, 0, 0, 0, 0, 1});
         double[] t = {0.05, -0.02, 0.5};
-        ArPose pose = new ArPose(TrackingState.TRACKING, r, t, 1, 1.0, 0L, 1L);
+        ArPose pose = new ArPose(TrackingState.TRACKING, r, t, 0, 1, 1.0, 0L, 1L);
         MarkerScene scene = new MarkerScene(0.1);
         Matrix4f markerView = new Matrix4f();
         Matrix4f model = new Matrix4f();

@@ -48,6 +48,28 @@ class MarkerTrackingTest {
     }
 
     @Test
+    void anyIdKeepsTheMarkerItPickedUntilLostOrReset() {
+        double[] r = PlacedMarker.facingCamera(0, 0, 0);
+        MarkerTracking any = new MarkerTracking(-1, 2 * FRAME);
+        assertEquals(-1, any.followedId(), "none while searching");
+        any.update(FRAME, List.of(at(1, r, 0, 0, 0.7), at(2, r, 0.1, 0, 0.8)));
+        assertEquals(1, any.followedId());
+        any.update(2 * FRAME, List.of(at(1, r, 0, 0, 0.7), at(2, r, 0.1, 0, 0.5)));
+        assertEquals(1, any.followedId(), "2 came nearer: still 1");
+        assertEquals(0.7, any.translation(new double[3])[2], 1e-9);
+        assertEquals(TrackingState.HOLDING, any.update(3 * FRAME, List.of(at(2, r, 0.1, 0, 0.5))));
+        assertEquals(1, any.followedId(), "holding 1 while only 2 is in view");
+        assertEquals(TrackingState.LOST, any.update(4 * FRAME, List.of(at(2, r, 0.1, 0, 0.5))));
+        assertEquals(-1, any.followedId());
+        assertEquals(TrackingState.TRACKING,
+                any.update(5 * FRAME, List.of(at(1, r, 0, 0, 0.7), at(2, r, 0.1, 0, 0.5))));
+        assertEquals(2, any.followedId(), "lost: the nearest anew");
+        any.reset();
+        any.update(6 * FRAME, List.of(at(1, r, 0, 0, 0.4), at(2, r, 0.1, 0, 0.5)));
+        assertEquals(1, any.followedId(), "reset: the nearest anew");
+    }
+
+    @Test
     void aOneOrTwoFrameFlipIsIgnoredAPersistentTurnIsTaken() {
         MarkerTracking tracking = new MarkerTracking();
         double[] a = PlacedMarker.facingCamera(8, 0, 0);

@@ -60,7 +60,14 @@ public final class ShrinkProbe {
             Files.delete(files.get(0));
         }
         Files.delete(cache);
-        CameraIntrinsics k = IntrinsicsEstimate.estimate(null, 4000, 3000, 4.3, 5.6, 640, 480);
+        // A calibrated camera with a lens: the tracker's lens path as it ships.
+        int[] array = {0, 0, 4000, 3000};
+        CameraReport camera = new CameraReport(28, array, array, new float[] {3200, 3200, 2000, 1500, 0},
+                new float[] {-0.05f, 0.01f, 0, 0, 0}, null, null, Double.NaN, Double.NaN);
+        CameraIntrinsics k = IntrinsicsEstimate.of(camera, 640, 480).intrinsics();
+        if (!k.isDistorted()) {
+            throw new IllegalStateException("the shrunk intrinsics lost the lens: " + k);
+        }
         GrayImage image = new SyntheticCamera(k).render(List.of(PlacedMarker.of(MarkerPattern.of(MarkerDictionary.DEFAULT,
                 0), 0.1, PlacedMarker.facingCamera(30, 10, 20), new double[] {0.02, 0.01, 0.5})), SceneOptions.camera(1));
         ArSession session = ArSession.of(new FiducialTracker(TrackerConfig.defaults(0.1), k));

@@ -6,7 +6,8 @@ import org.skinlab.ar.ArPose;
 import org.skinlab.simulation.AnimationConfig;
 
 /**
- * The AR app's status line: fps, tracking state, method, interpolation, speed, model; below it,
+ * The AR app's status line: fps, tracking state (with the followed marker's id and the markers in
+ * view, {@link ArPose#markerLabel()}), method, interpolation, speed, model; below it,
  * each current problem on its own line. Problems come from different sources (the GL driver, the
  * camera, the model loader) and each is kept and cleared by its own source, so that one's success
  * never hides another's failure.
@@ -24,10 +25,21 @@ public final class StatusLine {
      */
     public static String format(double fps, ArPose pose, AnimationConfig.Settings s, String model) {
         String marker = pose == null ? NO_CAMERA
-                : String.format(Locale.ROOT, "%s (%.1f ms)", pose.state().label(), pose.trackerMillis());
+                : String.format(Locale.ROOT, "%s (%.1f ms)", pose.markerLabel(), pose.trackerMillis());
         return String.format(Locale.ROOT, "%.0f fps | marker: %s | %s %s x%.2f%s | %s", fps, marker,
                 s.method().key().toUpperCase(Locale.ROOT), s.interpolation().name(), s.speed(),
                 s.followCamera() ? " | follow" : "", model);
+    }
+
+    /** The notes that are not null joined by "; ", or null when all are null (one problem line made of several). */
+    public static String joined(String... notes) {
+        StringBuilder text = new StringBuilder();
+        for (String n : notes) {
+            if (n != null) {
+                text.append(text.length() > 0 ? "; " : "").append(n);
+            }
+        }
+        return text.length() > 0 ? text.toString() : null;
     }
 
     /** The line followed by every problem that is not empty (null counts as none), one per line. */

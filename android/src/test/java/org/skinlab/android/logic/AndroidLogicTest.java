@@ -13,13 +13,15 @@ import java.util.concurrent.atomic.AtomicInteger;
 import org.junit.jupiter.api.Test;
 import org.skinlab.animation.RotationInterpolation;
 import org.skinlab.ar.ArPose;
-import org.skinlab.ar.CameraIntrinsics;
 import org.skinlab.ar.GrayImage;
 import org.skinlab.ar.TrackingState;
 import org.skinlab.simulation.AnimationConfig;
 import org.skinlab.skinning.SkinningMethod;
 
-/** What the Activity delegates to, on the JVM: buttons, permission flow, intrinsics, Y plane, palette, catalog. */
+/**
+ * What the Activity delegates to, on the JVM: buttons, permission flow, Y plane, palette, catalog
+ * (the intrinsics: IntrinsicsEstimateTest).
+ */
 class AndroidLogicTest {
     @Test
     void everyButtonDoesItsAnimationConfigFunction() {
@@ -172,27 +174,6 @@ class AndroidLogicTest {
         assertEquals("tentacle-wave.dae", catalog.current());
     }
 
-    @Test
-    void intrinsicsFromCalibrationPhysicalSizeOrFieldOfView() {
-        // A 4000x3000 active array streamed at 640x480 (same 4:3 aspect): a pure scale by 0.16.
-        CameraIntrinsics k = IntrinsicsEstimate.estimate(new float[] {3200, 3210, 2010, 1490, 0}, 4000, 3000, 0, 0,
-                640, 480);
-        assertEquals(512, k.fx(), 1e-9);
-        assertEquals(513.6, k.fy(), 1e-9);
-        assertEquals((2010 + 0.5) * 0.16 - 0.5, k.cx(), 1e-9);
-        // A 16:9 active array streamed at 4:3: the centred crop, then the scale.
-        CameraIntrinsics crop = IntrinsicsEstimate.estimate(new float[] {3000, 3000, 1999.5f, 1124.5f, 0}, 4000, 2250,
-                0, 0, 640, 480);
-        assertEquals(319.5, crop.cx(), 1e-6, "the centre stays the centre");
-        assertEquals(239.5, crop.cy(), 1e-6);
-        assertEquals(3000 * 640 / 3000.0, crop.fx(), 1e-6);
-        // Focal length 4.3 mm on a 5.6 mm wide sensor: fx = 4.3 / 5.6 of the width.
-        CameraIntrinsics physical = IntrinsicsEstimate.estimate(null, 4000, 3000, 4.3, 5.6, 640, 480);
-        assertEquals(4.3 / 5.6 * 640, physical.fx(), 1e-9);
-        CameraIntrinsics guess = IntrinsicsEstimate.estimate(null, 0, 0, Double.NaN, Double.NaN, 640, 480);
-        assertEquals(IntrinsicsEstimate.FALLBACK_FOV_DEGREES, guess.horizontalFovDegrees(), 1e-9);
-    }
-
     /**
      * The preview's orientation, checked against an image turned by hand: a small "sensor image"
      * with a distinct value per pixel is turned clockwise by the sensor orientation pixel by pixel
@@ -291,11 +272,20 @@ class AndroidLogicTest {
 
     @Test
     void theStatusLineSaysWhatIsGoingOn() {
-        ArPose holding = new ArPose(TrackingState.HOLDING, ArPose.NONE.rotation(), ArPose.NONE.translation(), 0, 2.54,
-                1, 1);
+        ArPose holding = new ArPose(TrackingState.HOLDING, ArPose.NONE.rotation(), ArPose.NONE.translation(), 3, 0,
+                2.54, 1, 1);
         String s = StatusLine.format(29.6, holding, AnimationConfig.Settings.DEFAULT.withMethod(SkinningMethod.COR)
                 .withFollowCamera(true), "humanoid-walk.dae");
-        assertEquals("30 fps | marker: holding (2.5 ms) | COR SLERP x1.00 | follow | humanoid-walk.dae", s);
+        assertEquals("30 fps | marker: holding id 3 (2.5 ms) | COR SLERP x1.00 | follow | humanoid-walk.dae", s);
+        ArPose two = new ArPose(TrackingState.TRACKING, ArPose.NONE.rotation(), ArPose.NONE.translation(), 0, 2, 1.0,
+                2, 2);
+        assertEquals("30 fps | marker: tracking id 0, 2 in view (1.0 ms) | LBS SLERP x1.00 | a.dae",
+                StatusLine.format(30, two, AnimationConfig.Settings.DEFAULT, "a.dae"), "the followed id and the count");
+        ArPose otherInView = new ArPose(TrackingState.SEARCHING, ArPose.NONE.rotation(), ArPose.NONE.translation(),
+                -1, 1, 1.0, 3, 3);
+        assertEquals("30 fps | marker: searching, 1 in view (1.0 ms) | LBS SLERP x1.00 | a.dae",
+                StatusLine.format(30, otherInView, AnimationConfig.Settings.DEFAULT, "a.dae"),
+                "a marker of another id than the target: in view, not followed");
         assertEquals("0 fps | marker: waiting for the camera | LBS SLERP x1.00 | a.dae",
                 StatusLine.format(0, null, AnimationConfig.Settings.DEFAULT, "a.dae"));
         assertEquals("line\ncamera gone\nmodel broken", StatusLine.withProblems("line", "", null, "camera gone",

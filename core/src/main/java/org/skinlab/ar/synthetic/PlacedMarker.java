@@ -5,7 +5,8 @@ import org.skinlab.ar.MarkerPattern;
 /**
  * A printed marker in the synthetic scene: its pattern, the black square's width, the pose
  * {@code X_cam = R X_marker + t} (the conventions of {@link org.skinlab.ar.MarkerDetection}), and
- * an optional round occluder lying on the marker (a thumb, a pen: part of the marker hidden).
+ * an optional round occluder lying on the marker (a thumb, a pen: part of the marker hidden). Its
+ * paper is {@link SyntheticCamera#PAPER_SCALE} times the black square's width.
  *
  * @param pattern        the printed code
  * @param sizeMetres     the black square's width
@@ -16,7 +17,7 @@ import org.skinlab.ar.MarkerPattern;
  * @param occluderRadius its radius in metres (0: none)
  */
 public record PlacedMarker(MarkerPattern pattern, double sizeMetres, double[] rotation, double[] translation,
-        double occluderX, double occluderY, double occluderRadius) {
+        double occluderX, double occluderY, double occluderRadius) implements PlacedSheet {
 
     public PlacedMarker {
         if (rotation.length != 9 || translation.length != 3) {
@@ -44,6 +45,27 @@ public record PlacedMarker(MarkerPattern pattern, double sizeMetres, double[] ro
     @Override
     public double[] translation() {
         return translation.clone();
+    }
+
+    @Override
+    public double paperHalfWidth() {
+        return sizeMetres / 2 * SyntheticCamera.PAPER_SCALE;
+    }
+
+    @Override
+    public double paperHalfHeight() {
+        return paperHalfWidth();
+    }
+
+    @Override
+    public int grayAt(double x, double y) {
+        if (occluderRadius > 0 && (x - occluderX) * (x - occluderX) + (y - occluderY) * (y - occluderY)
+                <= occluderRadius * occluderRadius) {
+            return SyntheticCamera.OCCLUDER;
+        }
+        double half = sizeMetres / 2;
+        return pattern.isBlackAt((x + half) / sizeMetres, (half - y) / sizeMetres) ? SyntheticCamera.INK
+                : SyntheticCamera.PAPER;
     }
 
     /**

@@ -5,17 +5,18 @@ import java.util.Random;
 
 import org.skinlab.ar.CameraIntrinsics;
 import org.skinlab.ar.GrayImage;
-import org.skinlab.ar.MarkerPattern;
 
 /**
- * Renders printed markers into gray camera images of known pose: a pinhole camera with its lens
+ * Renders printed markers and calibration targets into gray camera images of known pose: a
+ * pinhole camera with its lens
  * ({@link CameraIntrinsics}, pixel (i, j) centred at (i, j); each sample's ray is the pixel
  * undistorted through the lens' model), each pixel the mean of
- * {@code supersampling^2} rays intersected with the markers' planes, then blur, lighting falloff
+ * {@code supersampling^2} rays intersected with the sheets' planes, then blur, lighting falloff
  * and noise ({@link SceneOptions}). The ground truth for the tracker's tests and benchmark and for
  * {@code skinlab ar-demo}: plain Java, deterministic for a seed.
  *
- * <p>What a ray sees: the first marker sheet it hits (the black square with its code, white paper
+ * <p>What a ray sees: the first sheet it hits ({@link PlacedSheet}: a calibration target, or a marker's
+ * black square with its code and white paper
  * 1.6 times the square's width around it, an occluder lying on it), else the background: a
  * smooth texture with blocky detail and, with {@link SceneOptions#clutter()}, dark rectangles and
  * squares with a random bit pattern inside a black border (marker-like, not codes of any
@@ -39,8 +40,11 @@ public final class SyntheticCamera {
         return camera;
     }
 
-    /** One frame of {@code markers} (none: a negative frame) under {@code options}. */
-    public GrayImage render(List<PlacedMarker> markers, SceneOptions options) {
+    /**
+     * One frame of {@code sheets} (printed markers, calibration targets; none: a negative frame)
+     * under {@code options}.
+     */
+    public GrayImage render(List<? extends PlacedSheet> sheets, SceneOptions options) {
         int w = camera.width();
         int h = camera.height();
         Random random = new Random(options.seed());
@@ -49,9 +53,9 @@ public final class SyntheticCamera {
         double gx = Math.cos(angle), gy = Math.sin(angle);
         double span = Math.abs(gx) * w + Math.abs(gy) * h;
         double g0 = Math.min(0, gx * (w - 1)) + Math.min(0, gy * (h - 1));
-        Sheet[] sheets = new Sheet[markers.size()];
-        for (int i = 0; i < sheets.length; i++) {
-            sheets[i] = new Sheet(markers.get(i));
+        Sheet[] planes = new Sheet[sheets.size()];
+        for (int i = 0; i < planes.length; i++) {
+            planes[i] = new Sheet(sheets.get(i));
         }
         int n = options.supersampling();
         boolean lens = camera.isDistorted();
@@ -72,7 +76,7 @@ public final class SyntheticCamera {
                         }
                         double dx = lens ? ray[0] : (px - camera.cx()) / camera.fx();
                         double dy = lens ? ray[1] : (py - camera.cy()) / camera.fy();
-                        sum += sample(sheets, background, px, py, dx, dy);
+                        sum += sample(planes, background, px, py, dx, dy);
                     }
                 }
                 double light = 1 - options.gradient() * ((gx * x + gy * y - g0) / span);
@@ -126,28 +130,24 @@ public final class SyntheticCamera {
         return hit != null ? hit.value(dx, dy, nearest) : background.at(px, py);
     }
 
-    /** One marker's plane: where rays meet it, in its frame. Immutable, shared by the rendering threads. */
+    /** One sheet's plane: where rays meet it, in its frame. Immutable, shared by the rendering threads. */
     private static final class Sheet {
-        final MarkerPattern pattern;
+        final PlacedSheet print;
         final double[] r;
         final double[] t;
         final double nx, ny, nz, nt;
-        final double half, paperHalf;
-        final double ox, oy, or2;
+        final double halfWidth, halfHeight;
 
-        Sheet(PlacedMarker m) {
-            pattern = m.pattern();
-            r = m.rotation();
-            t = m.translation();
+        Sheet(PlacedSheet s) {
+            print = s;
+            r = s.rotation();
+            t = s.translation();
             nx = r[2];
             ny = r[5];
             nz = r[8];
             nt = nx * t[0] + ny * t[1] + nz * t[2];
-            half = m.sizeMetres() / 2;
-            paperHalf = half * PAPER_SCALE;
-            ox = m.occluderX();
-            oy = m.occluderY();
-            or2 = m.occluderRadius() * m.occluderRadius();
+            halfWidth = s.paperHalfWidth();
+            halfHeight = s.paperHalfHeight();
         }
 
         /** The depth at which the ray (dx, dy, 1) meets the paper, or +infinity when it misses. */
@@ -163,21 +163,16 @@ public final class SyntheticCamera {
             double px = lambda * dx - t[0], py = lambda * dy - t[1], pz = lambda - t[2];
             double x = r[0] * px + r[3] * py + r[6] * pz;
             double y = r[1] * px + r[4] * py + r[7] * pz;
-            return Math.abs(x) > paperHalf || Math.abs(y) > paperHalf ? Double.POSITIVE_INFINITY : lambda;
+            return Math.abs(x) > halfWidth || Math.abs(y) > halfHeight ? Double.POSITIVE_INFINITY : lambda;
         }
 
         /** The gray level where the ray meets the paper at {@code lambda}. */
         double value(double dx, double dy, double lambda) {
             double px = lambda * dx - t[0], py = lambda * dy - t[1], pz = lambda - t[2];
-            // X_marker = R^T (X_cam - t)
+            // X_sheet = R^T (X_cam - t)
             double x = r[0] * px + r[3] * py + r[6] * pz;
             double y = r[1] * px + r[4] * py + r[7] * pz;
-            if (or2 > 0 && (x - ox) * (x - ox) + (y - oy) * (y - oy) <= or2) {
-                return OCCLUDER;
-            }
-            double u = (x + half) / (2 * half);
-            double v = (half - y) / (2 * half);
-            return pattern.isBlackAt(u, v) ? INK : PAPER;
+            return print.grayAt(x, y);
         }
     }
 

@@ -2,6 +2,7 @@ package org.skinlab.desktop.app;
 
 import org.joml.Matrix4f;
 import org.skinlab.ar.ArCamera;
+import org.skinlab.ar.ArPose;
 import org.skinlab.ar.CameraFollow;
 import org.skinlab.ar.CameraIntrinsics;
 import org.skinlab.ar.MarkerScene;
@@ -33,7 +34,10 @@ final class ArPresenter implements AutoCloseable {
     private final Matrix4f markerView = new Matrix4f();
     private long uploaded = -1;
     private ArFeed.Shot shot;
+    /** What the status line last said: the pose's state, followed id and markers in view. */
     private TrackingState shownState;
+    private int shownId;
+    private int shownCount;
     private String shownFailure;
 
     ArPresenter(ArSetup setup) {
@@ -75,21 +79,22 @@ final class ArPresenter implements AutoCloseable {
         return true;
     }
 
-    /** The tracking state of the frame shown (SEARCHING before any). */
-    TrackingState state() {
-        return shot == null ? TrackingState.SEARCHING : shot.pose().state();
-    }
-
-    /** For the status line: what changed since the last call (the tracking state, a camera failure), or null. */
+    /**
+     * For the status line: what changed since the last call (the tracking state, the followed id,
+     * the markers in view: {@link org.skinlab.ar.ArPose#markerLabel()}; a camera failure), or null.
+     */
     String statusChange() {
-        TrackingState state = state();
+        ArPose pose = shot == null ? ArPose.NONE : shot.pose();
         String failure = feed.failure();
-        if (state == shownState && failure == shownFailure) {
+        if (pose.state() == shownState && pose.markerId() == shownId && pose.markers() == shownCount
+                && failure == shownFailure) {
             return null;
         }
-        shownState = state;
+        shownState = pose.state();
+        shownId = pose.markerId();
+        shownCount = pose.markers();
         shownFailure = failure;
-        return failure != null ? "camera: " + failure : "AR: marker " + state.label();
+        return failure != null ? "camera: " + failure : "AR: marker " + pose.markerLabel();
     }
 
     /** Headless runs: waits for the first tracked frame; null when there is one, else why not. */

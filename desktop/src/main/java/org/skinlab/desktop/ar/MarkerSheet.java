@@ -1,27 +1,17 @@
 package org.skinlab.desktop.ar;
 
+import static org.skinlab.desktop.ar.PrintedPage.POINTS_PER_MM;
+import static org.skinlab.desktop.ar.PrintedPage.format;
+import static org.skinlab.desktop.ar.PrintedPage.text;
+
 import java.awt.image.BufferedImage;
 import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.Iterator;
-import java.util.Locale;
-
-import javax.imageio.IIOImage;
-import javax.imageio.ImageIO;
-import javax.imageio.ImageTypeSpecifier;
-import javax.imageio.ImageWriteParam;
-import javax.imageio.ImageWriter;
-import javax.imageio.metadata.IIOMetadata;
-import javax.imageio.metadata.IIOMetadataNode;
-import javax.imageio.stream.ImageOutputStream;
 
 import org.apache.pdfbox.pdmodel.PDDocument;
 import org.apache.pdfbox.pdmodel.PDPage;
 import org.apache.pdfbox.pdmodel.PDPageContentStream;
 import org.apache.pdfbox.pdmodel.common.PDRectangle;
-import org.apache.pdfbox.pdmodel.font.PDType1Font;
-import org.apache.pdfbox.pdmodel.font.Standard14Fonts;
 
 import org.skinlab.ar.MarkerPattern;
 
@@ -32,23 +22,10 @@ import org.skinlab.ar.MarkerPattern;
  * resolution metadata gives the same physical size.
  */
 public final class MarkerSheet {
-    /** Points per millimetre (PDF's unit is 1/72 inch). */
-    public static final double POINTS_PER_MM = 72 / 25.4;
     /** The largest black square that fits A4 with its margins and text, in mm. */
     public static final double MAX_SIZE_MM = 180;
     /** White cells around the black square in the PNG. */
     public static final int QUIET_CELLS = 2;
-
-    /**
-     * PDFBox logs through java.util.logging that it measures the standard Helvetica with a system
-     * font's metrics (viewers draw Helvetica themselves) and that it builds a font cache: noise for
-     * a command line. Kept in a field: loggers are only weakly held.
-     */
-    private static final java.util.logging.Logger PDFBOX_LOG = java.util.logging.Logger.getLogger("org.apache.pdfbox");
-
-    static {
-        PDFBOX_LOG.setLevel(java.util.logging.Level.SEVERE);
-    }
 
     private MarkerSheet() {
     }
@@ -76,36 +53,16 @@ public final class MarkerSheet {
                     }
                 }
                 cs.fill();
-                PDType1Font bold = new PDType1Font(Standard14Fonts.FontName.HELVETICA_BOLD);
-                PDType1Font plain = new PDType1Font(Standard14Fonts.FontName.HELVETICA);
-                text(cs, bold, 16, 56, a4.getHeight() - 64, "skinlab marker: " + pattern.dictionary().key() + ", id "
-                        + pattern.id() + ", black square " + format(sizeMm) + " mm");
-                text(cs, plain, 11, 56, a4.getHeight() - 84,
+                text(cs, PrintedPage.bold(), 16, 56, a4.getHeight() - 64, "skinlab marker: " + pattern.dictionary().key()
+                        + ", id " + pattern.id() + ", black square " + format(sizeMm) + " mm");
+                text(cs, PrintedPage.plain(), 11, 56, a4.getHeight() - 84,
                         "Print at 100% (actual size; no \"fit to page\"). Keep the white border around the black square.");
-                text(cs, plain, 11, 56, a4.getHeight() - 100,
+                text(cs, PrintedPage.plain(), 11, 56, a4.getHeight() - 100,
                         "Measure the black square; if it is not " + format(sizeMm) + " mm, give the measured width to skinlab "
                                 + "(--marker-size MM).");
-                // A 50 mm ruler with 10 mm ticks below the marker.
-                double ry = y0 - 60;
-                double rx = (a4.getWidth() - 50 * POINTS_PER_MM) / 2;
-                cs.setStrokingColor(0f);
-                cs.setLineWidth(0.7f);
-                cs.moveTo((float) rx, (float) ry);
-                cs.lineTo((float) (rx + 50 * POINTS_PER_MM), (float) ry);
-                for (int mm = 0; mm <= 50; mm += 10) {
-                    double x = rx + mm * POINTS_PER_MM;
-                    cs.moveTo((float) x, (float) ry);
-                    cs.lineTo((float) x, (float) (ry + (mm % 50 == 0 ? 10 : 6)));
-                }
-                cs.stroke();
-                text(cs, plain, 9, (float) (rx + 50 * POINTS_PER_MM + 8), (float) (ry - 3), "50 mm: check your print");
+                PrintedPage.ruler(cs, (a4.getWidth() - PrintedPage.RULER_MM * POINTS_PER_MM) / 2, y0 - 60);
             }
-            Path parent = file.toAbsolutePath().getParent();
-            if (parent != null) {
-                Files.createDirectories(parent);
-            }
-            Files.deleteIfExists(file);
-            doc.save(file.toFile());
+            PrintedPage.save(doc, file);
         }
     }
 
@@ -118,29 +75,7 @@ public final class MarkerSheet {
         BufferedImage image = image(pattern, sizeMm, dpi);
         int cellPixels = cellPixels(pattern, sizeMm, dpi);
         double pixelsPerMetre = cellPixels * pattern.cells() / (sizeMm / 1000);
-        Path parent = file.toAbsolutePath().getParent();
-        if (parent != null) {
-            Files.createDirectories(parent);
-        }
-        Files.deleteIfExists(file);
-        Iterator<ImageWriter> writers = ImageIO.getImageWritersByFormatName("png");
-        ImageWriter writer = writers.next();
-        ImageWriteParam param = writer.getDefaultWriteParam();
-        IIOMetadata metadata = writer.getDefaultImageMetadata(ImageTypeSpecifier.createFromRenderedImage(image), param);
-        IIOMetadataNode root = new IIOMetadataNode("javax_imageio_png_1.0");
-        IIOMetadataNode phys = new IIOMetadataNode("pHYs");
-        String ppm = Integer.toString((int) Math.round(pixelsPerMetre));
-        phys.setAttribute("pixelsPerUnitXAxis", ppm);
-        phys.setAttribute("pixelsPerUnitYAxis", ppm);
-        phys.setAttribute("unitSpecifier", "meter");
-        root.appendChild(phys);
-        metadata.mergeTree("javax_imageio_png_1.0", root);
-        try (ImageOutputStream out = ImageIO.createImageOutputStream(file.toFile())) {
-            writer.setOutput(out);
-            writer.write(null, new IIOImage(image, null, metadata), param);
-        } finally {
-            writer.dispose();
-        }
+        PrintedPage.writePng(image, pixelsPerMetre, file);
     }
 
     /** Pixels per cell of the PNG: the cell's width at {@code dpi}, rounded to a whole pixel. */
@@ -165,23 +100,10 @@ public final class MarkerSheet {
         return image;
     }
 
-    private static void text(PDPageContentStream cs, PDType1Font font, float size, float x, float y, String s)
-            throws IOException {
-        cs.beginText();
-        cs.setFont(font, size);
-        cs.newLineAtOffset(x, y);
-        cs.showText(s);
-        cs.endText();
-    }
-
     private static void checkSize(double sizeMm) {
         if (!(sizeMm >= 20 && sizeMm <= MAX_SIZE_MM)) {
             throw new IllegalArgumentException("marker size must be 20 to " + format(MAX_SIZE_MM) + " mm for an A4 page: "
                     + format(sizeMm));
         }
-    }
-
-    static String format(double mm) {
-        return mm == Math.rint(mm) ? Long.toString((long) mm) : String.format(Locale.ROOT, "%.1f", mm);
     }
 }

@@ -1,5 +1,7 @@
 /**
  * The desktop's side of augmented reality: camera frames and intrinsics from files, the
- * {@code skinlab track} output. The tracking itself is core's {@code org.skinlab.ar}.
+ * {@code skinlab track} output, the printable marker and calibration target, and the camera
+ * calibration (BoofCV's planar calibration, desktop only). The tracking itself is core's
+ * {@code org.skinlab.ar}.
  */
 package org.skinlab.desktop.ar;

@@ -13,7 +13,7 @@ import picocli.CommandLine.Command;
         subcommands = {ViewCommand.class, CheckGpuCommand.class, RenderBenchCommand.class, CompareCommand.class,
                 CentresCommand.class,
                 InspectCommand.class, PoseCommand.class, BenchCommand.class, TrackCommand.class,
-                MarkerCommand.class, ArCommand.class, ArDemoCommand.class,
+                MarkerCommand.class, CalibrationTargetCommand.class, CalibrateCommand.class, ArCommand.class, ArDemoCommand.class,
                 CommandLine.HelpCommand.class})
 public final class SkinlabCommand implements Runnable {
     @CommandLine.Spec

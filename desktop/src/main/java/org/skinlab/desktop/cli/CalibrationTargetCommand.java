@@ -1,0 +1,60 @@
+package org.skinlab.desktop.cli;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.concurrent.Callable;
+
+import org.skinlab.ar.CalibrationTarget;
+import org.skinlab.desktop.ar.CalibrationSheet;
+
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
+
+/** {@code skinlab calibration-target}: the printable calibration target as an A4 PDF and a PNG at exact size. */
+@Command(name = "calibration-target", mixinStandardHelpOptions = true,
+        description = {"Write the printable camera calibration target: an A4 PDF (print at 100%%) and/or a PNG.",
+                "The page names the options that tell skinlab calibrate about it."})
+public final class CalibrationTargetCommand implements Callable<Integer> {
+    @Spec
+    CommandSpec spec;
+
+    @Mixin
+    TargetOptions targetOptions;
+
+    @Option(names = "--pdf", paramLabel = "OUT.pdf", description = "where to write the A4 PDF")
+    Path pdf;
+
+    @Option(names = "--png", paramLabel = "OUT.png", description = "where to write the PNG")
+    Path png;
+
+    @Option(names = "--dpi", paramLabel = "DPI", description = "the PNG's resolution (default: ${DEFAULT-VALUE})")
+    int dpi = 300;
+
+    @Override
+    public Integer call() {
+        if (pdf == null && png == null) {
+            throw new CommandFailure(ExitCodes.USAGE, "nothing to write: give --pdf OUT.pdf and/or --png OUT.png", null);
+        }
+        CalibrationTarget target = targetOptions.target();
+        try {
+            if (pdf != null) {
+                CalibrationSheet.writePdf(target, pdf);
+                spec.commandLine().getOut().println("wrote " + pdf + " (" + target.describe() + "; skinlab calibrate "
+                        + target.options() + ")");
+            }
+            if (png != null) {
+                CalibrationSheet.writePng(target, dpi, png);
+                spec.commandLine().getOut().println("wrote " + png);
+            }
+        } catch (IllegalArgumentException e) {
+            throw new CommandFailure(ExitCodes.USAGE, e.getMessage(), e);
+        } catch (IOException e) {
+            throw new CommandFailure(ExitCodes.INTERNAL, "cannot write the calibration target: " + e.getMessage(), e);
+        }
+        spec.commandLine().getOut().flush();
+        return ExitCodes.OK;
+    }
+}
