@@ -16,8 +16,8 @@ import org.skinlab.ar.synthetic.SyntheticCamera;
 /**
  * The tracker on frames seen through a lens ({@link SyntheticCamera} renders each sample's ray
  * through {@link LensDistortion}): a strong webcam lens (k1 = -0.32, k2 = 0.12, k3 = -0.02,
- * p1 = 0.0012, p2 = -0.0008 at 640x480, fx = 520: the image's corners sit about 60 px inside where
- * a pinhole would put them) and a mild phone lens. A 10 cm marker is put anywhere in the image
+ * p1 = 0.0012, p2 = -0.0008 at 640x480, fx = 520: what the image's corners show, a pinhole would
+ * put about 110 px farther out) and a mild phone lens. A 10 cm marker is put anywhere in the image
  * where its sheet stays in view (its centre drawn uniformly over the distorted image, so near the
  * borders and corners too, where the lens moves points most), 0.3-1.5 m away, tilted 0-60 degrees,
  * with TrackerEvaluationTest's blur, noise and light falloff.
