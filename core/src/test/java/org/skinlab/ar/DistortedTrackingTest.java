@@ -274,7 +274,7 @@ class DistortedTrackingTest {
                 worstCorner, 1000 * worstPosition);
         assertTrue(inRegion >= frames - 3, "the region search found the marker in " + inRegion + " of " + frames);
         // The same edges fitted through the same lens: the same corners to rounding (with the
-        // frame's lens applied to the region's coordinates they were up to 1.9 px and 18 mm off).
+        // frame's lens applied to the region's coordinates they were up to 0.63 px and 5.2 mm off).
         assertTrue(worstCorner <= 0.01, "corner difference " + worstCorner + " px");
         assertTrue(worstPosition <= 1e-4, "position difference " + worstPosition + " m");
     }
