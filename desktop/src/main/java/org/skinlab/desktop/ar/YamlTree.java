@@ -1,5 +1,6 @@
 package org.skinlab.desktop.ar;
 
+import java.io.StringReader;
 import java.nio.file.Path;
 import java.util.List;
 
@@ -38,7 +39,7 @@ final class YamlTree {
         options.setTagInspector(tag -> OPENCV_MATRIX.equals(tag.getValue()));
         Node root;
         try {
-            root = new Yaml(new SafeConstructor(options)).compose(new java.io.StringReader(text));
+            root = new Yaml(new SafeConstructor(options)).compose(new StringReader(text));
         } catch (YAMLException e) {
             throw new IllegalArgumentException(file + ": not YAML: " + e.getMessage().trim());
         }
