@@ -3,15 +3,10 @@ package org.skinlab.ar;
 import java.util.ArrayList;
 import java.util.List;
 
-import boofcv.abst.fiducial.SquareHamming_to_FiducialDetector;
 import boofcv.alg.distort.LensDistortionNarrowFOV;
-import boofcv.alg.fiducial.square.DetectFiducialSquareHamming;
 import boofcv.alg.fiducial.square.FoundFiducial;
 import boofcv.alg.fiducial.square.QuadPoseEstimator;
 import boofcv.factory.distort.LensDistortionFactory;
-import boofcv.factory.fiducial.ConfigFiducialHammingDetector;
-import boofcv.factory.fiducial.ConfigHammingMarker;
-import boofcv.factory.fiducial.FactoryFiducial;
 import boofcv.struct.image.GrayU8;
 import georegression.struct.se.Se3_F64;
 import georegression.struct.shapes.Quadrilateral_F64;
@@ -33,7 +28,10 @@ import georegression.struct.shapes.Quadrilateral_F64;
  *
  * <p><b>False markers.</b> BoofCV accepts a square whose bits are up to the dictionary's minimum
  * Hamming distance away from a code (12 of 36 bits for 36h12), which reads codes into clutter, into
- * other dictionaries' markers and into AprilTags; {@link TrackerConfig#maxBitErrors()} caps it.
+ * other dictionaries' markers and into AprilTags. We read each bit with a confidence and charge a
+ * wrong bit what we were sure of it ({@link ConfidentHammingDetector}, limits in
+ * {@link TrackerConfig#maxBitErrors()} and {@link TrackerConfig#MAX_UNCERTAIN_BITS}): clutter's bits
+ * are crisp, a far, tilted marker's wrong bits are smeared by blur.
  *
  * <p><b>Video.</b> {@link #track} first looks at the image region where the markers of the last
  * frame should be now (their bounds moved as between the last two frames, enlarged by a quarter of
@@ -55,7 +53,7 @@ public final class FiducialTracker {
 
     private final TrackerConfig config;
     private final CameraIntrinsics intrinsics;
-    private final DetectFiducialSquareHamming<GrayU8> detector;
+    private final ConfidentHammingDetector detector;
     /** The detector's lens, moved to each searched region; null for an ideal camera. */
     private final RegionLens regionLens;
     private final QuadPoseEstimator pose = new QuadPoseEstimator(1e-6, 200);
@@ -74,14 +72,8 @@ public final class FiducialTracker {
     public FiducialTracker(TrackerConfig config, CameraIntrinsics intrinsics) {
         this.config = config;
         this.intrinsics = intrinsics;
-        ConfigHammingMarker code = config.dictionary().config();
-        code.targetWidth = config.markerSizeMetres();
-        // BoofCV accepts a read while its bit errors (plus a penalty for ambiguous bits) stay within
-        // this number.
-        code.minimumHamming = config.maxBitErrors();
-        SquareHamming_to_FiducialDetector<GrayU8> d = FactoryFiducial.squareHamming(code,
-                new ConfigFiducialHammingDetector(), GrayU8.class);
-        this.detector = d.getAlgorithm();
+        this.detector = ConfidentHammingDetector.create(config.dictionary(), config.maxBitErrors(),
+                TrackerConfig.MAX_UNCERTAIN_BITS);
         LensDistortionNarrowFOV lens = LensDistortionFactory.narrow(BoofCameras.toBoof(intrinsics));
         if (intrinsics.isDistorted()) {
             // The square's contour is undistorted before its sides are fitted and its bits are read

@@ -6,26 +6,39 @@ package org.skinlab.ar;
  * @param dictionary         the marker's code dictionary
  * @param markerSizeMetres   the printed black square's width in metres
  * @param targetId           the marker id to report, or -1 for every code of the dictionary
- * @param maxBitErrors       how many of the code's bits may be wrong for a square to count as a
- *                           marker; at most {@code (minimumHamming - 1) / 2} of the dictionary, so
- *                           that a read can never be closer to another code. BoofCV's own default
- *                           accepts up to minimumHamming (12 of 36 bits for 36h12), which reports
- *                           markers in clutter and in other codes; see {@link #DEFAULT_MAX_BIT_ERRORS}
+ * @param maxBitErrors       how wrong a square's code bits may be for it to count as a marker: the
+ *                           sum over its wrong bits of each one's confidence (a crisp cell 1, a cell
+ *                           smeared by blur or cut by an occluder less; {@link CodeReader}); at most
+ *                           {@code (minimumHamming - 1) / 2} of the dictionary, which also caps the
+ *                           wrong bits counted plainly, so that a read can never be nearer another
+ *                           code. BoofCV's own default accepts up to minimumHamming wrong bits (12 of
+ *                           36 for 36h12), which reports markers in clutter and in other codes; see
+ *                           {@link #DEFAULT_MAX_BIT_ERRORS} and {@link #MAX_UNCERTAIN_BITS}
  * @param searchNearLastPose whether {@link FiducialTracker#track} first searches the image region
  *                           around the last frame's markers (video), before the whole frame
  */
-public record TrackerConfig(MarkerDictionary dictionary, double markerSizeMetres, int targetId, int maxBitErrors,
+public record TrackerConfig(MarkerDictionary dictionary, double markerSizeMetres, int targetId, double maxBitErrors,
         boolean searchNearLastPose) {
 
     /**
-     * 2 wrong bits. A random 36-bit pattern (a square of clutter with bits in it) lands within 2
-     * bits of one of 36h12's 250 codes in its 4 rotations with probability
-     * {@code 1000 * 667 / 2^36 = 1e-5} (667 = the patterns within 2 bits of a code); within 3 bits,
-     * 1.1e-4. Measured on the harness (TrackerEvaluationTest): with 3, one false marker in 90
-     * cluttered frames (a random bit square read as code 71) at the same detection rates as 2; with
-     * 2, none. Occluders of a cell or two and blur still read within 2.
+     * 1: one crisp wrong bit, or several smeared ones whose confidences sum to 1. A random 36-bit
+     * pattern (a square of clutter with bits in it) lands within 1 bit of one of 36h12's 250 codes in
+     * its 4 rotations with probability {@code 1000 * 37 / 2^36 = 5e-7}; the clutter that matters is
+     * crisp, so its wrong bits cost about 1 each. Measured (FarTiltedDetectionTest, docs/ar.md): over
+     * 1,000 clutter frames with codes 3-6 bits from ours, limits up to 1.75 give no false marker and
+     * 2 gives two, while far, tilted markers are found as often from 1 to 1.75 (97.1% of 150 mm
+     * markers at 1.5-2 m, tilt 0-70; BoofCV's rule capped at 2, wrong bits plus half the ambiguous
+     * ones, 94.8%).
      */
-    public static final int DEFAULT_MAX_BIT_ERRORS = 2;
+    public static final double DEFAULT_MAX_BIT_ERRORS = 1;
+
+    /**
+     * At most 9 of a read's bits (a quarter of 36h12's) may be uncertain (confidence at most 1/2): a
+     * square whose inside is neither black nor white (a picture in a black frame, a blurred
+     * pattern) does not show a code whatever code it is nearest to. Measured as above: with 16 or
+     * more, limits from 1.25 up let a false marker through.
+     */
+    public static final int MAX_UNCERTAIN_BITS = 9;
 
     public TrackerConfig {
         if (dictionary == null) {
@@ -39,7 +52,7 @@ public record TrackerConfig(MarkerDictionary dictionary, double markerSizeMetres
                     + " (ids 0 to " + (dictionary.codeCount() - 1) + ", or -1 for any)");
         }
         int limit = (dictionary.minimumHamming() - 1) / 2;
-        if (maxBitErrors < 0 || maxBitErrors > limit) {
+        if (!(maxBitErrors >= 0 && maxBitErrors <= limit)) {
             throw new IllegalArgumentException("bit errors must be in 0.." + limit + " for " + dictionary.key()
                     + " (half its minimum distance " + dictionary.minimumHamming() + "): " + maxBitErrors);
         }
@@ -52,7 +65,7 @@ public record TrackerConfig(MarkerDictionary dictionary, double markerSizeMetres
 
     /** {@code dictionary}, any id, {@link #DEFAULT_MAX_BIT_ERRORS} (or fewer if the dictionary needs), video search on. */
     public static TrackerConfig of(MarkerDictionary dictionary, double markerSizeMetres) {
-        int errors = Math.min(DEFAULT_MAX_BIT_ERRORS, (dictionary.minimumHamming() - 1) / 2);
+        double errors = Math.min(DEFAULT_MAX_BIT_ERRORS, (dictionary.minimumHamming() - 1) / 2);
         return new TrackerConfig(dictionary, markerSizeMetres, -1, errors, true);
     }
 
@@ -60,7 +73,7 @@ public record TrackerConfig(MarkerDictionary dictionary, double markerSizeMetres
         return new TrackerConfig(dictionary, markerSizeMetres, id, maxBitErrors, searchNearLastPose);
     }
 
-    public TrackerConfig withMaxBitErrors(int errors) {
+    public TrackerConfig withMaxBitErrors(double errors) {
         return new TrackerConfig(dictionary, markerSizeMetres, targetId, errors, searchNearLastPose);
     }
 

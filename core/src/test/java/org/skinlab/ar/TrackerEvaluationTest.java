@@ -43,9 +43,10 @@ import org.skinlab.ar.synthetic.SyntheticCamera;
  * width's 27 px, 0.2 degrees, growing toward face-on where the perspective cue vanishes (the planar
  * ambiguity: 0.9 degrees median face-on at 1 m).
  *
- * <p><b>Negative frames</b>: clutter (dark boxes, black-bordered squares of random bits) and codes
- * of other dictionaries (AprilTag 36h11, ArUco 6x6 and MIP_25h7, which our 36h12 dictionary must not
- * read), 0.3-1 m away: no detection at all with our bit-error cap; BoofCV's default cap
+ * <p><b>Negative frames</b>: clutter (the synthetic Background's: dark boxes, squares of random
+ * bits, other codes, checkerboards, text, ...) and codes of other dictionaries (AprilTag 36h11,
+ * ArUco 6x6 and MIP_25h7, which our 36h12 dictionary must not read), 0.3-1 m away: no detection at
+ * all with our rule (FiducialTracker's "False markers"); BoofCV's default cap
  * (minimumHamming, 12 of 36 bits) on the same frames reports markers that are not there, which this
  * test shows.
  */

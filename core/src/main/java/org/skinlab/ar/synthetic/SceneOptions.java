@@ -7,8 +7,9 @@ package org.skinlab.ar.synthetic;
  * @param noiseSigma     Gaussian sensor noise in gray levels; 0 for none
  * @param gradient       lighting falloff across the image: the far side is {@code 1 - gradient}
  *                       as bright as the near side (0 for even light, up to 0.9)
- * @param clutter        dark rectangles and marker-like squares with random bits on the
- *                       background (negative frames)
+ * @param clutter        how many things a detector may mistake for markers (dark boxes, squares
+ *                       of random bits, other codes, checkerboards, text: {@link Background}) on
+ *                       the background
  * @param supersampling  samples per pixel side (4: 16 samples per pixel)
  * @param seed           the noise, clutter, background and gradient direction
  */

@@ -15,12 +15,10 @@ import org.skinlab.ar.GrayImage;
  * and noise ({@link SceneOptions}). The ground truth for the tracker's tests and benchmark and for
  * {@code skinlab ar-demo}: plain Java, deterministic for a seed.
  *
- * <p>What a ray sees: the first sheet it hits ({@link PlacedSheet}: a calibration target, or a marker's
- * black square with its code and white paper
- * 1.6 times the square's width around it, an occluder lying on it), else the background: a
- * smooth texture with blocky detail and, with {@link SceneOptions#clutter()}, dark rectangles and
- * squares with a random bit pattern inside a black border (marker-like, not codes of any
- * dictionary by intent), drawn in image space.
+ * <p>What a ray sees: the first sheet it hits ({@link PlacedSheet}: a calibration target, or a
+ * marker's black square with its code, white paper 1.6 times the square's width around it and an
+ * occluder lying on it), else the {@link Background}: a smooth texture with blocky detail and, with
+ * {@link SceneOptions#clutter()}, things a detector may mistake for markers, drawn in image space.
  */
 public final class SyntheticCamera {
     /** Gray levels of printed black, paper white and an occluder (a thumb in gray). */
@@ -173,62 +171,6 @@ public final class SyntheticCamera {
             double x = r[0] * px + r[3] * py + r[6] * pz;
             double y = r[1] * px + r[4] * py + r[7] * pz;
             return print.grayAt(x, y);
-        }
-    }
-
-    /** The background: a seeded smooth texture with blocky detail, and clutter. */
-    private static final class Background {
-        final double p1, p2, p3;
-        final long salt;
-        /** Per item x0, y0, x1, y1, kind (0 dark box, 1 bit square). */
-        final double[] clutter;
-        /** Per item, the bit square's 36 bits. */
-        final long[] bits;
-        final int count;
-
-        Background(Random random, int w, int h, int count) {
-            p1 = random.nextDouble() * 6.28;
-            p2 = random.nextDouble() * 6.28;
-            p3 = random.nextDouble() * 6.28;
-            salt = random.nextLong();
-            this.count = count;
-            clutter = new double[5 * count];
-            bits = new long[count];
-            for (int i = 0; i < count; i++) {
-                double size = 24 + random.nextDouble() * Math.min(90, Math.min(w, h) / 4.0);
-                double aspect = random.nextBoolean() ? 1 : 0.4 + random.nextDouble();
-                double x0 = random.nextDouble() * (w - size);
-                double y0 = random.nextDouble() * (h - size * aspect);
-                clutter[5 * i] = x0;
-                clutter[5 * i + 1] = y0;
-                clutter[5 * i + 2] = x0 + size;
-                clutter[5 * i + 3] = y0 + size * aspect;
-                clutter[5 * i + 4] = aspect == 1 ? 1 : 0;
-                bits[i] = random.nextLong();
-            }
-        }
-
-        double at(double x, double y) {
-            for (int i = count - 1; i >= 0; i--) {
-                int o = 5 * i;
-                if (x >= clutter[o] && x < clutter[o + 2] && y >= clutter[o + 1] && y < clutter[o + 3]) {
-                    if (clutter[o + 4] == 0) {
-                        return 45;
-                    }
-                    // A black-bordered square of 8x8 cells whose inner 6x6 are random bits.
-                    int cx = (int) ((x - clutter[o]) / (clutter[o + 2] - clutter[o]) * 8);
-                    int cy = (int) ((y - clutter[o + 1]) / (clutter[o + 3] - clutter[o + 1]) * 8);
-                    if (cx == 0 || cy == 0 || cx == 7 || cy == 7) {
-                        return INK;
-                    }
-                    return (bits[i] >>> ((cy - 1) * 6 + cx - 1) & 1) == 0 ? INK : PAPER;
-                }
-            }
-            double smooth = 125 + 45 * Math.sin(0.031 * x + p1) * Math.sin(0.027 * y + p2)
-                    + 15 * Math.sin(0.11 * x + 0.07 * y + p3);
-            long block = ((long) Math.floor(x / 7) * 73856093L) ^ ((long) Math.floor(y / 7) * 19349663L) ^ salt;
-            block = block * 0x9E3779B97F4A7C15L;
-            return smooth + ((block >>> 40) & 31) - 16;
         }
     }
 
