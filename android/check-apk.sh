@@ -45,6 +45,7 @@ echo "check-apk: dex: $(wc -l <<<"$classes") classes; the Activity, renderer, ca
 listing=$(unzip -l "$apk")
 grep -q 'boofcv/factory/fiducial/aruco_mip_36h12.txt' <<<"$listing" || fail "BoofCV's dictionary resources missing"
 grep -q ' org/skinlab/skinning/skinning.glsl$' <<<"$listing" || fail "the skinning shader's formulas (core's skinning.glsl) missing"
+grep -q ' org/skinlab/ar/lens.glsl$' <<<"$listing" || fail "the background shader's lens formulas (core's lens.glsl) missing"
 grep -q 'assets/models/humanoid-walk.dae' <<<"$listing" || fail "the default model is not bundled"
 size=$(stat -c %s "$apk")
 echo "check-apk: size $size bytes ($(( size / 1024 )) KiB; budget $(( budget / 1024 )) KiB)"

@@ -25,6 +25,7 @@ import org.skinlab.ar.ArPose;
 import org.skinlab.ar.ArSession;
 import org.skinlab.ar.CameraFollow;
 import org.skinlab.ar.CameraIntrinsics;
+import org.skinlab.ar.LensGlsl;
 import org.skinlab.ar.MarkerScene;
 import org.skinlab.scene.ModelFraming;
 import org.skinlab.simulation.AnimationConfig;
@@ -52,6 +53,7 @@ final class ArRenderer implements GLSurfaceView.Renderer {
     private final float[] matrix = new float[16];
     private final float[] textureTransform = new float[16];
     private final float[] sensorToNatural = new float[16];
+    private final float[] lens = new float[11];
     private volatile ArSession session;
     private volatile CameraIntrinsics intrinsics;
     private volatile int imageRotation;
@@ -114,7 +116,7 @@ final class ArRenderer implements GLSurfaceView.Renderer {
     @Override
     public void onSurfaceCreated(GL10 unused, EGLConfig eglConfig) {
         try {
-            background = GlProgram.link(GlesShaders.BACKGROUND_VERTEX, GlesShaders.BACKGROUND_FRAGMENT);
+            background = GlProgram.link(GlesShaders.BACKGROUND_VERTEX, GlesShaders.backgroundFragment());
             skinned = GlProgram.link(GlesShaders.skinnedVertex(), GlesShaders.SKINNED_FRAGMENT);
             glProblem = null;
         } catch (IllegalStateException e) {
@@ -174,6 +176,12 @@ final class ArRenderer implements GLSurfaceView.Renderer {
         glUniformMatrix4fv(glGetUniformLocation(background, "uSensorToNatural"), 1, false,
                 PreviewOrientation.sensorToNatural(sensorOrientation, sensorToNatural), 0);
         glUniformMatrix4fv(glGetUniformLocation(background, "uTexture"), 1, false, textureTransform, 0);
+        // The background as the pinhole image the model is projected into (lens.glsl).
+        LensGlsl.uniforms(k, lens);
+        glUniform2f(glGetUniformLocation(background, "uSize"), lens[0], lens[1]);
+        glUniform4f(glGetUniformLocation(background, "uPinhole"), lens[2], lens[3], lens[4], lens[5]);
+        glUniform3f(glGetUniformLocation(background, "uRadial"), lens[6], lens[7], lens[8]);
+        glUniform2f(glGetUniformLocation(background, "uTangential"), lens[9], lens[10]);
         glActiveTexture(GL_TEXTURE0);
         glBindTexture(GLES11Ext.GL_TEXTURE_EXTERNAL_OES, previewTexture);
         glUniform1i(glGetUniformLocation(background, "uCamera"), 0);

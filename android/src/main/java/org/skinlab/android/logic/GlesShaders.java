@@ -1,10 +1,11 @@
 package org.skinlab.android.logic;
 
+import org.skinlab.ar.LensGlsl;
 import org.skinlab.skinning.SkinningGlsl;
 
 /**
  * The AR app's OpenGL ES 3.00 shaders: the camera image (an external OES texture) as background,
- * and the model skinned in the vertex shader by LBS, DQS or CoR from the palette texture of
+ * undistorted through the camera's lens ({@link #backgroundFragment()}), and the model skinned in the vertex shader by LBS, DQS or CoR from the palette texture of
  * {@link PaletteTexture}, with the formulas the desktop's shader shares ({@link SkinningGlsl}: a 2-D
  * float texture instead of the desktop's texture buffers, which ES 3.0 lacks; {@value #INFLUENCES}
  * influences per vertex). The skinned model's vertex attributes sit at the locations below
@@ -26,31 +27,59 @@ public final class GlesShaders {
     private GlesShaders() {
     }
 
+    /**
+     * The camera background's vertex shader: the sensor's image across the viewport
+     * ({@code ArCamera.imageToViewport}); the fragment shader finds what to sample.
+     */
     public static final String BACKGROUND_VERTEX = """
             #version 300 es
             layout(location = 0) in vec2 aCorner;   // corner of the sensor's image, in its NDC (y up)
             uniform mat4 uImageToViewport;          // ArCamera.imageToViewport
-            uniform mat4 uSensorToNatural;          // PreviewOrientation.sensorToNatural
-            uniform mat4 uTexture;                  // SurfaceTexture's transform
-            out vec2 vUv;
+            out vec2 vSensor;                       // where in the sensor's image: 0..1, y up
             void main() {
-                vec2 uv = aCorner * 0.5 + 0.5;
-                vUv = (uTexture * uSensorToNatural * vec4(uv, 0.0, 1.0)).xy;
+                vSensor = aCorner * 0.5 + 0.5;
                 gl_Position = uImageToViewport * vec4(aCorner, 0.0, 1.0);
             }
             """;
 
-    public static final String BACKGROUND_FRAGMENT = """
+    private static final String BACKGROUND_FRAGMENT = """
             #version 300 es
             #extension GL_OES_EGL_image_external_essl3 : require
-            precision mediump float;
+            precision highp float;                  // pixel coordinates: mediump's 11 bits are too few
             uniform samplerExternalOES uCamera;
-            in vec2 vUv;
+            uniform mat4 uSensorToNatural;          // PreviewOrientation.sensorToNatural
+            uniform mat4 uTexture;                  // SurfaceTexture's transform
+            uniform vec2 uSize;                     // LensGlsl.uniforms: the sensor image's size,
+            uniform vec4 uPinhole;                  // fx, fy, cx, cy,
+            uniform vec3 uRadial;                   // k1, k2, k3,
+            uniform vec2 uTangential;               // p1, p2
+            in vec2 vSensor;
             out vec4 color;
+
+            #include "lens.glsl"
+
             void main() {
-                color = texture(uCamera, vUv);
+                // lens.glsl counts rows from the image's top; the sensor's NDC has y up.
+                vec2 st = lensSourceCoord(vec2(vSensor.x, 1.0 - vSensor.y), uSize, uPinhole, uRadial, uTangential);
+                if (any(lessThan(st, vec2(0.0))) || any(greaterThan(st, vec2(1.0)))) {
+                    color = vec4(0.0, 0.0, 0.0, 1.0);
+                    return;
+                }
+                vec2 uv = (uTexture * uSensorToNatural * vec4(st.x, 1.0 - st.y, 0.0, 1.0)).xy;
+                color = texture(uCamera, uv);
             }
             """;
+
+    /**
+     * The camera background's fragment shader: the ideal pinhole image the model is projected into,
+     * each fragment sampling the camera's external texture where the lens put its ray (core's
+     * {@code lens.glsl}, {@link LensGlsl}, shared with the desktop), black beyond the image.
+     *
+     * @throws IllegalStateException when the formulas cannot be read (an APK without them)
+     */
+    public static String backgroundFragment() {
+        return LensGlsl.expand(BACKGROUND_FRAGMENT);
+    }
 
     /**
      * The skinned model's vertex shader: this app's header and main around the formulas both apps

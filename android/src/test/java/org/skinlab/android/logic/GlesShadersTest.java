@@ -17,7 +17,7 @@ class GlesShadersTest {
         try (GlesContext context = GlesContext.openOrSkip()) {
             assertEquals(0, link(GlesShaders.skinnedVertex(), GlesShaders.SKINNED_FRAGMENT).length(), "skinning program");
             if (context.capabilities().GL_OES_EGL_image_external_essl3) {
-                assertEquals(0, link(GlesShaders.BACKGROUND_VERTEX, GlesShaders.BACKGROUND_FRAGMENT).length(),
+                assertEquals(0, link(GlesShaders.BACKGROUND_VERTEX, GlesShaders.backgroundFragment()).length(),
                         "background program");
             } else {
                 System.out.println("GlesShadersTest: no GL_OES_EGL_image_external_essl3 here: the camera "

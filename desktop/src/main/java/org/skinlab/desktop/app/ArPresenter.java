@@ -58,7 +58,7 @@ final class ArPresenter implements AutoCloseable {
         }
         ArCamera.imageToViewport(intrinsics.width(), intrinsics.height(), viewportWidth, viewportHeight, 0, true,
                 imageToViewport);
-        background.draw(imageToViewport);
+        background.draw(imageToViewport, intrinsics);
         return true;
     }
 

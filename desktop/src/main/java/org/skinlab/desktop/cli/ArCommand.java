@@ -68,7 +68,7 @@ public final class ArCommand implements Callable<Integer> {
     @Option(names = "--id", paramLabel = "N", description = "the marker id to follow (default: the nearest marker)")
     int id = -1;
 
-    @Option(names = "--intrinsics", paramLabel = "FILE", description = "camera intrinsics JSON (default: from --fov)")
+    @Option(names = "--intrinsics", paramLabel = "FILE", description = "camera intrinsics: our JSON, OpenCV's calibration YAML/XML or BoofCV's intrinsic.yaml (default: from --fov)")
     Path intrinsics;
 
     @Option(names = "--fov", paramLabel = "DEG", description = "horizontal field of view without --intrinsics (default: ${DEFAULT-VALUE})")

@@ -13,6 +13,7 @@ import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
 import org.skinlab.ar.CameraIntrinsics;
+import org.skinlab.ar.LensDistortion;
 import org.skinlab.ar.MarkerDetection;
 import org.skinlab.ar.synthetic.PlacedMarker;
 import org.skinlab.desktop.ar.DemoVideo;
@@ -29,7 +30,8 @@ import picocli.CommandLine.Spec;
  * {@code skinlab ar-demo OUT}: the synthetic video of {@link DemoVideo} as numbered PNG frames, with
  * {@code intrinsics.json} (the camera) and {@code poses.json} (each frame's true marker pose and
  * corners, in {@code skinlab track}'s format without the time, and the marker's size), so {@code skinlab ar --images OUT --intrinsics OUT/intrinsics.json}
- * runs on any machine.
+ * runs on any machine. With {@code --distortion} the frames are filmed through that lens (and the
+ * corners are where it puts them).
  */
 @Command(name = "ar-demo", mixinStandardHelpOptions = true,
         description = "Write a synthetic camera video of the printed marker (PNG frames, intrinsics.json, poses.json).")
@@ -49,6 +51,11 @@ public final class ArDemoCommand implements Callable<Integer> {
     @Option(names = "--fov", paramLabel = "DEG", description = "horizontal field of view (default: ${DEFAULT-VALUE})")
     double fov = 60;
 
+    @Option(names = "--distortion", paramLabel = "K1,K2,K3,P1,P2",
+            description = "film through this lens (Brown-Conrady, as OpenCV's k1, k2, k3, p1, p2; default: none);"
+                    + " intrinsics.json then has it")
+    String distortion;
+
     @Override
     public Integer call() throws IOException {
         CameraIntrinsics k;
@@ -59,6 +66,9 @@ public final class ArDemoCommand implements Callable<Integer> {
                 throw new IllegalArgumentException("--size must be WIDTHxHEIGHT, e.g. 640x480: " + size);
             }
             k = CameraIntrinsics.fromHorizontalFov(Integer.parseInt(wh[0].trim()), Integer.parseInt(wh[1].trim()), fov);
+            if (distortion != null) {
+                k = k.withDistortion(lens(distortion));
+            }
             video = new DemoVideo(k, frames);
         } catch (IllegalArgumentException e) {
             throw new CommandFailure(ExitCodes.USAGE, e.getMessage(), e);
@@ -80,5 +90,22 @@ public final class ArDemoCommand implements Callable<Integer> {
         spec.commandLine().getOut().println("wrote " + frames + " frames, intrinsics.json and poses.json to " + out);
         spec.commandLine().getOut().flush();
         return ExitCodes.OK;
+    }
+
+    /** "k1,k2,k3,p1,p2" as a lens; IllegalArgumentException naming the option otherwise. */
+    static LensDistortion lens(String text) {
+        String[] parts = text.split(",", -1);
+        if (parts.length != 5) {
+            throw new IllegalArgumentException("--distortion must be five numbers K1,K2,K3,P1,P2, is " + text);
+        }
+        double[] v = new double[5];
+        for (int i = 0; i < 5; i++) {
+            try {
+                v[i] = Double.parseDouble(parts[i].trim());
+            } catch (NumberFormatException e) {
+                throw new IllegalArgumentException("--distortion: term " + (i + 1) + " is not a number: " + parts[i]);
+            }
+        }
+        return new LensDistortion(v[0], v[1], v[2], v[3], v[4]);
     }
 }

@@ -43,7 +43,7 @@ public final class TrackCommand implements Callable<Integer> {
     Path images;
 
     @Option(names = "--intrinsics", paramLabel = "FILE",
-            description = "camera intrinsics JSON {\"width\",\"height\",\"fx\",\"fy\",\"cx\",\"cy\"} (scaled to images of the same aspect)")
+            description = "camera intrinsics: our JSON {\"width\",\"height\",\"fx\",\"fy\",\"cx\",\"cy\"[,\"k1\",\"k2\",\"k3\",\"p1\",\"p2\"]}, OpenCV's calibration YAML/XML or BoofCV's intrinsic.yaml (scaled to images of the same aspect)")
     Path intrinsics;
 
     @Option(names = "--fov", paramLabel = "DEG", description = "without --intrinsics: the horizontal field of view (default: ${DEFAULT-VALUE})")

@@ -7,17 +7,27 @@ import java.nio.FloatBuffer;
 
 import org.joml.Matrix4fc;
 import org.lwjgl.system.MemoryUtil;
+import org.skinlab.ar.CameraIntrinsics;
 import org.skinlab.ar.GrayImage;
+import org.skinlab.ar.LensGlsl;
 
 /**
  * The camera image behind the AR scene ({@code skinlab ar}): an 8-bit texture refilled from each
  * new gray frame (one reused upload buffer: nothing allocated per frame), drawn as a quad through
  * {@code ArCamera.imageToViewport}, so it lines up with the projection the model is drawn with.
+ * Through a distorted camera the quad shows the ideal pinhole image: its fragment shader samples
+ * the frame where the lens put each pixel's ray ({@link LensGlsl}), so straight edges are straight
+ * again and the model, projected by the pinhole, stands where the marker is.
  */
 public final class CameraBackground implements AutoCloseable {
     private final ShaderProgram program;
     private final int imageToViewport;
     private final int imageUnit;
+    private final int size;
+    private final int pinhole;
+    private final int radial;
+    private final int tangential;
+    private final float[] lens = new float[11];
     private final int vao;
     private final int vbo;
     private final int texture;
@@ -30,6 +40,10 @@ public final class CameraBackground implements AutoCloseable {
         program = ShaderProgram.load("background", "background");
         imageToViewport = program.uniform("uImageToViewport");
         imageUnit = program.uniform("uImage");
+        size = program.uniform("uSize");
+        pinhole = program.uniform("uPinhole");
+        radial = program.uniform("uRadial");
+        tangential = program.uniform("uTangential");
         FloatBuffer corners = MemoryUtil.memAllocFloat(8);
         try {
             corners.put(new float[] {-1, -1, 1, -1, -1, 1, 1, 1}).flip();
@@ -80,13 +94,21 @@ public final class CameraBackground implements AutoCloseable {
         glBindTexture(GL_TEXTURE_2D, 0);
     }
 
-    /** Draws the last uploaded frame through {@code imageToViewport}, behind everything (no depth writes). */
-    public void draw(Matrix4fc imageToViewportMatrix) {
+    /**
+     * Draws the last uploaded frame, seen by {@code camera} (of the frame's size or scaled to it),
+     * as its ideal pinhole image through {@code imageToViewport}, behind everything (no depth writes).
+     */
+    public void draw(Matrix4fc imageToViewportMatrix, CameraIntrinsics camera) {
         if (width == 0) {
             return;
         }
         program.use();
         glUniformMatrix4fv(imageToViewport, false, imageToViewportMatrix.get(matrix));
+        LensGlsl.uniforms(camera, lens);
+        glUniform2f(size, lens[0], lens[1]);
+        glUniform4f(pinhole, lens[2], lens[3], lens[4], lens[5]);
+        glUniform3f(radial, lens[6], lens[7], lens[8]);
+        glUniform2f(tangential, lens[9], lens[10]);
         glActiveTexture(GL_TEXTURE0);
         glBindTexture(GL_TEXTURE_2D, texture);
         glUniform1i(imageUnit, 0);
