@@ -378,6 +378,7 @@ public final class SkinlabActivity extends Activity {
 
     /** A tracking session for the open camera and the marker size, handed to the camera and the renderer. */
     private void startSession() {
+        FiducialTracker.runOnCallingThread();
         ArSession s = ArSession.of(new FiducialTracker(TrackerConfig.defaults(markerSize.metres()), intrinsics));
         session = s;
         camera.setSession(s);

@@ -5,6 +5,7 @@ import java.util.Arrays;
 import java.util.List;
 
 import boofcv.alg.distort.LensDistortionNarrowFOV;
+import boofcv.concurrency.BoofConcurrency;
 import boofcv.alg.fiducial.square.FoundFiducial;
 import boofcv.alg.fiducial.square.QuadPoseEstimator;
 import boofcv.factory.distort.LensDistortionFactory;
@@ -106,6 +107,16 @@ public final class FiducialTracker {
         double r = config.markerSizeMetres() / 2;
         // TL, TR, BR, BL of the printed marker in its frame (y toward the top edge): BoofCV's corner order.
         pose.setFiducial(-r, r, r, r, r, -r, -r, -r);
+    }
+
+    /**
+     * Makes BoofCV run on the calling thread alone, process-wide (its {@code BoofConcurrency}
+     * switch is global). For video: a region search is too small to be worth sharing out (on a real
+     * video the median frame was faster without BoofCV's pool: docs/benchmarks.md), and on a phone
+     * the other cores skin and draw.
+     */
+    public static void runOnCallingThread() {
+        BoofConcurrency.USE_CONCURRENT = false;
     }
 
     public TrackerConfig config() {

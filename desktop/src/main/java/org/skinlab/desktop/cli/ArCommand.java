@@ -123,6 +123,7 @@ public final class ArCommand implements Callable<Integer> {
             frames.close();
             throw new CommandFailure(ExitCodes.USAGE, e.getMessage(), e);
         }
+        FiducialTracker.runOnCallingThread();
         ArFeed feed = new ArFeed(frames, ArSession.of(new FiducialTracker(config, k)));
         AppOptions options = new AppOptions(file, method, RotationInterpolation.SLERP, true, DrawSettings.View.SHADED, null,
                 null, screenshot, size.width(), size.height(), hideUi, script, exitAfterFrames, false);

@@ -77,6 +77,9 @@ public final class TrackCommand implements Callable<Integer> {
         } catch (IllegalArgumentException | IOException e) {
             throw new CommandFailure(ExitCodes.USAGE, e.getMessage(), e);
         }
+        if (sequence) {
+            FiducialTracker.runOnCallingThread();
+        }
         ObjectMapper mapper = new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT);
         ObjectNode root = mapper.createObjectNode();
         ArrayNode frames = root.putArray("frames");
