@@ -1,9 +1,6 @@
 package org.skinlab.ar;
 
-import java.io.ByteArrayOutputStream;
-import java.io.IOException;
-import java.io.InputStream;
-import java.nio.charset.StandardCharsets;
+import org.skinlab.glsl.GlslInclude;
 
 /**
  * The GPU's twin of {@link LensDistortion#distort}: the GLSL text of {@code lens.glsl} (a resource
@@ -13,10 +10,10 @@ import java.nio.charset.StandardCharsets;
  * GL here. {@link #uniforms} gives the numbers its functions take.
  */
 public final class LensGlsl {
-    /** The line of a shader that {@link #expand} replaces with the formulas. */
-    public static final String INCLUDE = "#include \"lens.glsl\"";
+    private static final GlslInclude FILE = new GlslInclude("/org/skinlab/ar/lens.glsl", "the lens shader's formulas");
 
-    private static final String RESOURCE = "/org/skinlab/ar/lens.glsl";
+    /** The line of a shader that {@link #expand} replaces with the formulas. */
+    public static final String INCLUDE = FILE.line();
 
     private LensGlsl() {
     }
@@ -28,26 +25,7 @@ public final class LensGlsl {
      * @throws IllegalStateException when the line occurs twice, or the resource cannot be read
      */
     public static String expand(String shader) {
-        int at = lineStart(shader, 0);
-        if (at < 0) {
-            return shader;
-        }
-        if (lineStart(shader, at + INCLUDE.length()) >= 0) {
-            throw new IllegalStateException("a shader includes lens.glsl twice");
-        }
-        return shader.substring(0, at) + formulas() + shader.substring(at + INCLUDE.length());
-    }
-
-    private static int lineStart(String shader, int from) {
-        for (int at = shader.indexOf(INCLUDE, from); at >= 0; at = shader.indexOf(INCLUDE, at + 1)) {
-            int end = at + INCLUDE.length();
-            boolean startsLine = at == 0 || shader.charAt(at - 1) == '\n';
-            boolean endsLine = end == shader.length() || shader.charAt(end) == '\n' || shader.charAt(end) == '\r';
-            if (startsLine && endsLine) {
-                return at;
-            }
-        }
-        return -1;
+        return FILE.expand(shader);
     }
 
     /**
@@ -72,20 +50,6 @@ public final class LensGlsl {
 
     /** The formulas' text, read from the resource on each call (once per program a renderer builds). */
     public static String formulas() {
-        // Read by hand: InputStream.readAllBytes needs Android 13, and the app runs from Android 8.
-        try (InputStream in = LensGlsl.class.getResourceAsStream(RESOURCE)) {
-            if (in == null) {
-                throw new IllegalStateException("the lens shader's formulas " + RESOURCE
-                        + " are missing from the classpath (an APK must carry them at its root)");
-            }
-            ByteArrayOutputStream out = new ByteArrayOutputStream(4096);
-            byte[] buffer = new byte[4096];
-            for (int n = in.read(buffer); n >= 0; n = in.read(buffer)) {
-                out.write(buffer, 0, n);
-            }
-            return new String(out.toByteArray(), StandardCharsets.UTF_8);
-        } catch (IOException e) {
-            throw new IllegalStateException("cannot read the lens shader's formulas " + RESOURCE, e);
-        }
+        return FILE.text();
     }
 }

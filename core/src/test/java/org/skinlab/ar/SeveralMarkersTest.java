@@ -56,9 +56,10 @@ class SeveralMarkersTest {
         FiducialTracker tracker = new FiducialTracker(TrackerConfig.defaults(SIZE), K);
         for (int f = 0; f < 3; f++) {
             GrayImage image = frame(f, truth);
-            // detect: the whole frame; track: the region around the last frame's markers (here the
-            // whole frame again, the three spread over more than half of it).
+            // detect: the whole frame; track: one region around each of the last frame's markers,
+            // which must find all three there (no fall back to the whole frame).
             List<MarkerDetection> found = f == 0 ? tracker.detect(image) : tracker.track(image);
+            assertEquals(f > 0, tracker.lastFoundInRegion(), "frame " + f + " searched in the markers' regions");
             assertEquals(3, found.size(), "frame " + f + ": " + found);
             for (PlacedMarker m : truth) {
                 int id = m.pattern().id();

@@ -44,7 +44,7 @@ public final class VideoFileSource implements FrameSource {
             grab = FrameGrab.createFrameGrab(channel);
         } catch (JCodecException | RuntimeException e) {
             close();
-            throw new IllegalArgumentException(file + ": not a video JCodec can read (MP4 with H.264): " + e.getMessage());
+            throw new IllegalArgumentException(file + ": not a video JCodec can read (MP4 with H.264): " + said(e), e);
         }
     }
 
@@ -75,10 +75,10 @@ public final class VideoFileSource implements FrameSource {
             first = null;
             return f;
         }
-        Picture p = grab.getNativeFrame();
+        Picture p = decode();
         if (p == null) {
             open();
-            p = grab.getNativeFrame();
+            p = decode();
             if (p == null) {
                 throw new IllegalArgumentException(file + ": no frames");
             }
@@ -95,6 +95,26 @@ public final class VideoFileSource implements FrameSource {
             }
         }
         return new GrayImage(w, h, w, pixels);
+    }
+
+    /**
+     * The next frame, or null at the end. JCodec reports what it cannot decode (interlaced or
+     * MBAFF H.264, high bit depth, a broken stream) with bare runtime exceptions; they become
+     * this file's error, saying what JCodec said.
+     */
+    private Picture decode() throws IOException {
+        try {
+            return grab.getNativeFrame();
+        } catch (RuntimeException e) {
+            throw new IllegalArgumentException(file + ": JCodec cannot decode this video's frames: " + said(e), e);
+        }
+    }
+
+    /** What JCodec said: its message, with the exception's kind unless it is a bare RuntimeException. */
+    private static String said(Exception e) {
+        String kind = e.getClass() == RuntimeException.class ? "" : e.getClass().getSimpleName();
+        String message = e.getMessage() == null ? "" : e.getMessage();
+        return kind.isEmpty() || message.isEmpty() ? kind + message : kind + ": " + message;
     }
 
     @Override

@@ -66,7 +66,7 @@ public final class TrackBenchCommand implements Callable<Integer> {
     Path images;
 
     @Option(names = "--intrinsics", paramLabel = "FILE",
-            description = "with --images: their camera, our JSON or BoofCV's intrinsic.yaml"
+            description = "with --images: their camera, our JSON, OpenCV's calibration YAML/XML or BoofCV's intrinsic.yaml"
                     + " (default: 60 degree field of view)")
     Path intrinsics;
 

@@ -10,6 +10,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 
 import org.jcodec.api.SequenceEncoder;
+import org.jcodec.codecs.h264.io.model.SeqParameterSet;
 import org.jcodec.common.io.NIOUtils;
 import org.jcodec.common.model.ColorSpace;
 import org.jcodec.common.model.Picture;
@@ -90,6 +91,59 @@ class FrameSourceTest {
         Files.writeString(junk, "not a video");
         IllegalArgumentException bad = assertThrows(IllegalArgumentException.class, () -> new VideoFileSource(junk, 30));
         assertTrue(bad.getMessage().contains("junk.mp4"), bad.getMessage());
+    }
+
+    @Test
+    void anInterlacedMp4IsNamedWithWhatJCodecSaid(@TempDir Path dir) throws Exception {
+        // A real MP4 from JCodec's encoder whose sequence parameter set (in the avcC box) is then
+        // made to say "fields, not frames" (frame_mbs_only_flag 0): the boxes still parse, and
+        // JCodec's H.264 decoder refuses the first frame, as it does camcorders' interlaced video.
+        Path mp4 = dir.resolve("interlaced.mp4");
+        SequenceEncoder enc = SequenceEncoder.createSequenceEncoder(mp4.toFile(), 10);
+        for (int i = 0; i < 3; i++) {
+            Picture p = Picture.create(64, 48, ColorSpace.RGB);
+            java.util.Arrays.fill(p.getPlaneData(0), (byte) (40 * i));
+            enc.encodeNativeFrame(p);
+        }
+        enc.finish();
+        byte[] bytes = Files.readAllBytes(mp4);
+        int avcC = indexOf(bytes, "avcC".getBytes(java.nio.charset.StandardCharsets.US_ASCII));
+        // avcC: 4 type, 1 version, 1 profile, 1 compatibility, 1 level, 1 length size, 1 SPS count,
+        // 2 SPS length, then the SPS NAL unit (a 1-byte header, then the parameters).
+        assertEquals(1, bytes[avcC + 9] & 0x1f, "one SPS");
+        int length = ((bytes[avcC + 10] & 0xff) << 8) | (bytes[avcC + 11] & 0xff);
+        int at = avcC + 12 + 1;
+        SeqParameterSet sps = SeqParameterSet.read(java.nio.ByteBuffer.wrap(bytes, at, length - 1).slice());
+        assertTrue(sps.frameMbsOnlyFlag, "JCodec writes progressive frames");
+        sps.frameMbsOnlyFlag = false;
+        java.nio.ByteBuffer rewritten = java.nio.ByteBuffer.allocate(2 * length);
+        sps.write(rewritten);
+        rewritten.flip();
+        // One more bit (mb_adaptive_frame_field_flag, 0) fits in the last byte's padding.
+        assertEquals(length - 1, rewritten.remaining(), "the SPS keeps its length");
+        rewritten.get(bytes, at, length - 1);
+        Files.write(mp4, bytes);
+        IllegalArgumentException bad = assertThrows(IllegalArgumentException.class, () -> new VideoFileSource(mp4, 30));
+        assertTrue(bad.getMessage().startsWith(mp4 + ": ") && bad.getMessage().contains("interlace"), bad.getMessage());
+        System.out.println("an interlaced video: " + bad.getMessage());
+        StringWriter err = new StringWriter();
+        int status = SkinlabCommand.run(new PrintWriter(new StringWriter(), true), new PrintWriter(err, true), "ar",
+                "--video", mp4.toString(), "--exit-after-frames", "1");
+        assertEquals(3, status, err.toString());
+        assertEquals("skinlab: " + bad.getMessage(), err.toString().strip(), "one line, no stack trace");
+    }
+
+    private static int indexOf(byte[] data, byte[] part) {
+        search:
+        for (int i = 0; i + part.length <= data.length; i++) {
+            for (int j = 0; j < part.length; j++) {
+                if (data[i + j] != part[j]) {
+                    continue search;
+                }
+            }
+            return i;
+        }
+        throw new AssertionError("not found: " + new String(part, java.nio.charset.StandardCharsets.US_ASCII));
     }
 
     @Test

@@ -1,0 +1,89 @@
+package org.skinlab.glsl;
+
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.io.InputStream;
+import java.nio.charset.StandardCharsets;
+
+/**
+ * One GLSL file in core's resources that shaders pull in with an {@code #include "name"} line
+ * alone on its line (GLSL has no includes; the desktop's and the Android app's shader texts are
+ * expanded before they are compiled). Plain text: no GL here. A leaf package, so that every
+ * package holding shader formulas ({@code skinning}, {@code ar}) can use it.
+ */
+public final class GlslInclude {
+    private final String name;
+    private final String resource;
+    private final String what;
+    private final String line;
+
+    /**
+     * @param resource the file's absolute classpath name, e.g. {@code /org/skinlab/ar/lens.glsl};
+     *                 its last segment is the name the include line quotes
+     * @param what     what the file holds, for error messages, e.g. "the lens shader's formulas"
+     */
+    public GlslInclude(String resource, String what) {
+        if (!resource.startsWith("/") || resource.endsWith("/")) {
+            throw new IllegalArgumentException("not an absolute resource file name: " + resource);
+        }
+        this.resource = resource;
+        this.name = resource.substring(resource.lastIndexOf('/') + 1);
+        this.what = what;
+        this.line = "#include \"" + name + "\"";
+    }
+
+    /** The line of a shader that {@link #expand} replaces with the file's text. */
+    public String line() {
+        return line;
+    }
+
+    /**
+     * {@code shader} with its {@link #line} (alone on its line) replaced by the file's text; a
+     * shader without that line comes back unchanged.
+     *
+     * @throws IllegalStateException when the line occurs more than once (GLSL refuses functions
+     *                               defined twice; better said here), or the resource cannot be read
+     */
+    public String expand(String shader) {
+        int at = lineStart(shader, 0);
+        if (at < 0) {
+            return shader;
+        }
+        if (lineStart(shader, at + line.length()) >= 0) {
+            throw new IllegalStateException("a shader includes " + name + " twice");
+        }
+        return shader.substring(0, at) + text() + shader.substring(at + line.length());
+    }
+
+    /** Where the include line starts at or after {@code from} (alone on its line), or -1. */
+    private int lineStart(String shader, int from) {
+        for (int at = shader.indexOf(line, from); at >= 0; at = shader.indexOf(line, at + 1)) {
+            int end = at + line.length();
+            boolean startsLine = at == 0 || shader.charAt(at - 1) == '\n';
+            boolean endsLine = end == shader.length() || shader.charAt(end) == '\n' || shader.charAt(end) == '\r';
+            if (startsLine && endsLine) {
+                return at;
+            }
+        }
+        return -1;
+    }
+
+    /** The file's text, read from the resource on each call (once per program a renderer builds). */
+    public String text() {
+        // Read by hand: InputStream.readAllBytes needs Android 13, and the app runs from Android 8.
+        try (InputStream in = GlslInclude.class.getResourceAsStream(resource)) {
+            if (in == null) {
+                throw new IllegalStateException(what + " " + resource
+                        + " are missing from the classpath (an APK must carry them at its root)");
+            }
+            ByteArrayOutputStream out = new ByteArrayOutputStream(8192);
+            byte[] buffer = new byte[8192];
+            for (int n = in.read(buffer); n >= 0; n = in.read(buffer)) {
+                out.write(buffer, 0, n);
+            }
+            return new String(out.toByteArray(), StandardCharsets.UTF_8);
+        } catch (IOException e) {
+            throw new IllegalStateException("cannot read " + what + " " + resource, e);
+        }
+    }
+}
