@@ -10,7 +10,6 @@ import org.skinlab.desktop.ar.CalibrationSheet;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
-import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 
 /** {@code skinlab calibration-target}: the printable calibration target as an A4 PDF and a PNG at exact size. */
@@ -24,20 +23,15 @@ public final class CalibrationTargetCommand implements Callable<Integer> {
     @Mixin
     TargetOptions targetOptions;
 
-    @Option(names = "--pdf", paramLabel = "OUT.pdf", description = "where to write the A4 PDF")
-    Path pdf;
-
-    @Option(names = "--png", paramLabel = "OUT.png", description = "where to write the PNG")
-    Path png;
-
-    @Option(names = "--dpi", paramLabel = "DPI", description = "the PNG's resolution (default: ${DEFAULT-VALUE})")
-    int dpi = 300;
+    @Mixin
+    PrintOptions print;
 
     @Override
     public Integer call() {
-        if (pdf == null && png == null) {
-            throw new CommandFailure(ExitCodes.USAGE, "nothing to write: give --pdf OUT.pdf and/or --png OUT.png", null);
-        }
+        print.requireOutput();
+        Path pdf = print.pdf;
+        Path png = print.png;
+        int dpi = print.dpi;
         CalibrationTarget target = targetOptions.target();
         try {
             if (pdf != null) {

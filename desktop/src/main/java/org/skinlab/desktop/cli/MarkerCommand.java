@@ -9,6 +9,7 @@ import org.skinlab.ar.MarkerPattern;
 import org.skinlab.desktop.ar.MarkerSheet;
 
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
@@ -29,20 +30,15 @@ public final class MarkerCommand implements Callable<Integer> {
     @Option(names = "--size-mm", paramLabel = "MM", description = "the black square's printed width (default: ${DEFAULT-VALUE})")
     double sizeMm = 100;
 
-    @Option(names = "--pdf", paramLabel = "OUT.pdf", description = "where to write the A4 PDF")
-    Path pdf;
-
-    @Option(names = "--png", paramLabel = "OUT.png", description = "where to write the PNG")
-    Path png;
-
-    @Option(names = "--dpi", paramLabel = "DPI", description = "the PNG's resolution (default: ${DEFAULT-VALUE})")
-    int dpi = 300;
+    @Mixin
+    PrintOptions print;
 
     @Override
     public Integer call() {
-        if (pdf == null && png == null) {
-            throw new CommandFailure(ExitCodes.USAGE, "nothing to write: give --pdf OUT.pdf and/or --png OUT.png", null);
-        }
+        print.requireOutput();
+        Path pdf = print.pdf;
+        Path png = print.png;
+        int dpi = print.dpi;
         MarkerPattern pattern;
         try {
             pattern = MarkerPattern.of(MarkerDictionary.byName(dictionary), id);
