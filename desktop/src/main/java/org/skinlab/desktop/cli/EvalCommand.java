@@ -63,6 +63,9 @@ public final class EvalCommand implements Callable<Integer> {
             throw usage("run it inside the skinlab repository (no folder at or above "
                     + Path.of("").toAbsolutePath() + " holds settings.gradle and " + BenchCorpus.CHARACTERS + ")");
         }
+        if (Files.exists(out) && !Files.isDirectory(out)) {
+            throw usage("--out: not a folder: " + out);
+        }
         Files.createDirectories(out);
         PrintWriter err = spec.commandLine().getErr();
         EvalContext context = new EvalContext(quick, root, err);

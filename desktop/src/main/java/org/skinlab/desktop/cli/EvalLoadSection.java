@@ -46,7 +46,7 @@ final class EvalLoadSection implements EvalSection {
 
     @Override
     public double estimatedSeconds(EvalContext context) {
-        return context.quick() ? 12 : 90;
+        return context.quick() ? 4 : 25;
     }
 
     @Override

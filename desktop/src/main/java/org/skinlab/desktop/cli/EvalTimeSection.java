@@ -50,7 +50,7 @@ final class EvalTimeSection implements EvalSection {
 
     @Override
     public double estimatedSeconds(EvalContext context) {
-        return context.quick() ? 45 : 200;
+        return context.quick() ? 22 : 100;
     }
 
     @Override

@@ -89,6 +89,14 @@ class EvalCommandTest {
     }
 
     @Test
+    void anOutThatIsAFileIsAUsageError(@TempDir Path dir) throws Exception {
+        Path file = Files.writeString(dir.resolve("report"), "");
+        Cli run = Cli.run("eval", "--only", "load", "--out", file.toString());
+        assertEquals(ExitCodes.USAGE, run.status);
+        assertTrue(run.err.contains("--out: not a folder: " + file), run.err);
+    }
+
+    @Test
     void theNumberRulePrintsStoredValuesPlainly() {
         assertEquals("1.5", EvalReport.format(new DoubleNode(1.50)));
         assertEquals("3", EvalReport.format(new DoubleNode(3.0)));
