@@ -7,6 +7,7 @@ import java.util.Set;
 import org.skinlab.animation.RotationInterpolation;
 import org.skinlab.animation.WrapMode;
 import org.skinlab.model.Model;
+import org.skinlab.skinning.InfluenceView;
 import org.skinlab.skinning.JointPalette;
 import org.skinlab.skinning.NormalTransform;
 import org.skinlab.skinning.PositionSharing;
@@ -40,13 +41,26 @@ final class FrameBench {
     private final Shape shape;
 
     FrameBench(Model model, NormalTransform rule, PositionSharing sharing) {
+        this(model, rule, sharing, false, 0);
+    }
+
+    /**
+     * As above; {@code scalar}: core's scalar kernels instead of the fastest available;
+     * {@code influenceCap} above 0: each geometry with more influences per point than that cut to
+     * its heaviest ones, renormalised ({@link InfluenceView}, what a GPU's fixed slots see).
+     */
+    FrameBench(Model model, NormalTransform rule, PositionSharing sharing, boolean scalar, int influenceCap) {
         skinned = new SkinnedModel(model, model.clips().isEmpty() ? null : model.clips().get(0), rule);
         int n = skinned.geometries().size();
         skinners = new Skinner[n][SkinningMethod.values().length];
+        SkinnedGeometry[] used = new SkinnedGeometry[n];
         for (int g = 0; g < n; g++) {
+            SkinnedGeometry original = skinned.geometries().get(g);
+            used[g] = capped(original, influenceCap);
             for (SkinningMethod m : SkinningMethod.values()) {
-                skinners[g][m.ordinal()] = sharing == PositionSharing.AUTO ? skinned.skinner(g, m)
-                        : Skinners.create(m, skinned.geometries().get(g), rule, sharing);
+                skinners[g][m.ordinal()] = scalar ? Skinners.scalar(m, used[g], rule)
+                        : sharing == PositionSharing.AUTO && used[g] == original ? skinned.skinner(g, m)
+                        : Skinners.create(m, used[g], rule, sharing);
             }
         }
         positions = new float[n][];
@@ -56,7 +70,7 @@ final class FrameBench {
         int joints = 0;
         int influences = 0;
         for (int g = 0; g < n; g++) {
-            SkinnedGeometry geometry = skinned.geometries().get(g);
+            SkinnedGeometry geometry = used[g];
             positions[g] = new float[outputFloats(geometry)];
             normals[g] = new float[outputFloats(geometry)];
             skinnedPositions += positionsSkinned(geometry, skinners[g]);
@@ -65,6 +79,16 @@ final class FrameBench {
             influences = Math.max(influences, geometry.influencesPerPoint());
         }
         shape = new Shape(skinnedPositions, vertices, joints, influences);
+    }
+
+    /** The geometry with at most {@code cap} influences per point (itself when it has no more, or cap is 0). */
+    private static SkinnedGeometry capped(SkinnedGeometry geometry, int cap) {
+        if (cap <= 0 || geometry.influencesPerPoint() <= cap) {
+            return geometry;
+        }
+        InfluenceView view = InfluenceView.of(geometry, cap);
+        return SkinnedGeometry.fromArrays(geometry.positionArray(), geometry.normalArray(), view.influencesPerPoint(),
+                view.jointIndicesAsInts(), view.weights(), geometry.bindMatrixArray());
     }
 
     /**

@@ -1,12 +1,10 @@
 package org.skinlab.desktop.cli;
 
-import java.io.ByteArrayInputStream;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
@@ -17,12 +15,8 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
-import org.skinlab.collada.ColladaException;
-import org.skinlab.collada.ColladaImporter;
 import org.skinlab.desktop.bench.AssimpBaseline;
 import org.skinlab.desktop.bench.SyntheticCollada;
-import org.skinlab.model.Mesh;
-import org.skinlab.model.Model;
 
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -81,65 +75,8 @@ public final class ParseBenchCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    /** One file for assimp: its bytes in native memory and what the untimed first import gave. */
-    private static final class AssimpFile {
-        final AssimpBaseline assimp;
-        long triangles;
-        /** assimp's message when it refuses the file, else null. */
-        String failure;
-
-        AssimpFile(byte[] bytes) {
-            assimp = new AssimpBaseline(bytes);
-        }
-    }
-
-    /** One file's measurement. */
-    static final class Result {
-        final String name;
-        final long bytes;
-        final long triangles;
-        final double[] millis;
-        /** assimp's times, or null when not compared or when assimp failed. */
-        double[] assimpMillis;
-        long assimpTriangles;
-        /** assimp's message when it refused the file, else null. */
-        String assimpError;
-
-        Result(String name, long bytes, long triangles, double[] millis) {
-            this.name = name;
-            this.bytes = bytes;
-            this.triangles = triangles;
-            this.millis = millis;
-        }
-
-        double min() {
-            return min(millis);
-        }
-
-        double median() {
-            return median(millis);
-        }
-
-        static double min(double[] millis) {
-            return Arrays.stream(millis).min().orElse(Double.NaN);
-        }
-
-        static double median(double[] millis) {
-            double[] s = millis.clone();
-            Arrays.sort(s);
-            int n = s.length;
-            return n % 2 == 1 ? s[n / 2] : (s[n / 2 - 1] + s[n / 2]) / 2;
-        }
-
-        /** assimp median / our median: how many times faster we are. */
-        double assimpRatio() {
-            return median(assimpMillis) / median();
-        }
-
-        double mbPerSecond() {
-            return bytes / 1e6 / (median() / 1000.0);
-        }
-    }
+    /** The triangles the generated file has (its name in the report). */
+    private long generatedActual;
 
     @Override
     public Integer call() throws IOException {
@@ -159,6 +96,7 @@ public final class ParseBenchCommand implements Callable<Integer> {
             if (generatedTriangles > 0 && files.isEmpty()) {
                 generated = Files.createTempFile("skinlab-generated-", ".dae");
                 long t = SyntheticCollada.write(generated, generatedTriangles);
+                generatedActual = t;
                 err.printf(Locale.ROOT, "bench parse: generated %s (%d triangles, %.1f MB)%n", generated, t,
                         Files.size(generated) / 1e6);
                 inputs.add(generated);
@@ -180,7 +118,7 @@ public final class ParseBenchCommand implements Callable<Integer> {
                 err.printf(Locale.ROOT, "bench parse: comparing with assimp %s, flags %s%n", assimpVersion,
                         AssimpBaseline.describe(assimpFlags));
             }
-            List<Result> results = measure(inputs, data, generated, err);
+            List<ParseTimer.Result> results = measure(inputs, data, generated, err);
             if (json) {
                 out.println(new ObjectMapper().writeValueAsString(toJson(results, assimpVersion)));
             } else {
@@ -195,125 +133,15 @@ public final class ParseBenchCommand implements Callable<Integer> {
         }
     }
 
-    private List<Result> measure(List<Path> inputs, List<byte[]> data, Path generated, PrintWriter err) {
-        // Shared warm-up over the small files, then one import of each large file.
-        long warmupEnd = System.nanoTime() + (long) (warmupSeconds * 1e9);
-        do {
-            for (int i = 0; i < data.size(); i++) {
-                if (data.get(i).length < 10_000_000) {
-                    importOnce(inputs.get(i), data.get(i));
-                }
-            }
-        } while (System.nanoTime() < warmupEnd);
-        List<AssimpFile> assimp = new ArrayList<>();
-        try {
-            if (compareAssimp) {
-                for (byte[] bytes : data) {
-                    assimp.add(new AssimpFile(bytes));
-                }
-                assimpWarmup(assimp);
-            }
-            return measureEach(inputs, data, generated, assimp, err);
-        } finally {
-            for (AssimpFile a : assimp) {
-                a.assimp.close();
-            }
+    private List<ParseTimer.Result> measure(List<Path> inputs, List<byte[]> data, Path generated, PrintWriter err) {
+        List<ParseTimer.Input> timed = new ArrayList<>();
+        for (int i = 0; i < inputs.size(); i++) {
+            Path p = inputs.get(i);
+            String name = p.equals(generated) ? "generated-" + generatedActual + "-triangles.dae"
+                    : p.getFileName().toString();
+            timed.add(new ParseTimer.Input(name, data.get(i), null));
         }
-    }
-
-    /** Ours on each file, then assimp on it when compared ({@code assimp} empty otherwise). */
-    private List<Result> measureEach(List<Path> inputs, List<byte[]> data, Path generated, List<AssimpFile> assimp,
-            PrintWriter err) {
-        List<Result> results = new ArrayList<>();
-        for (int i = 0; i < data.size(); i++) {
-            byte[] bytes = data.get(i);
-            boolean large = bytes.length >= 10_000_000;
-            if (large) {
-                System.gc();
-                importOnce(inputs.get(i), bytes);
-            }
-            int n = large ? 5 : runs;
-            double[] millis = new double[n];
-            Model model = null;
-            for (int r = 0; r < n; r++) {
-                if (large) {
-                    System.gc();
-                }
-                long t0 = System.nanoTime();
-                model = importOnce(inputs.get(i), bytes);
-                millis[r] = (System.nanoTime() - t0) / 1e6;
-            }
-            long triangles = model.meshes().stream().mapToLong(Mesh::triangleCount).sum();
-            String name = inputs.get(i).equals(generated) ? "generated-" + triangles + "-triangles.dae"
-                    : inputs.get(i).getFileName().toString();
-            Result result = new Result(name, bytes.length, triangles, millis);
-            results.add(result);
-            if (!assimp.isEmpty()) {
-                measureAssimp(assimp.get(i), large, n, result, err);
-            } else {
-                err.printf(Locale.ROOT, "bench parse: %s %.2f ms%n", name, result.median());
-            }
-        }
-        return results;
-    }
-
-    /**
-     * Imports each file once with assimp (counting triangles, noting the files it refuses), then
-     * warms assimp up as ours: the same seconds over the small files it accepts.
-     */
-    private void assimpWarmup(List<AssimpFile> files) {
-        for (AssimpFile f : files) {
-            try {
-                f.triangles = f.assimp.triangles(assimpFlags);
-            } catch (IllegalArgumentException e) {
-                f.failure = e.getMessage();
-            }
-        }
-        long warmupEnd = System.nanoTime() + (long) (warmupSeconds * 1e9);
-        do {
-            for (AssimpFile f : files) {
-                if (f.assimp.size() < 10_000_000 && f.failure == null) {
-                    f.assimp.importOnce(assimpFlags);
-                }
-            }
-        } while (System.nanoTime() < warmupEnd);
-    }
-
-    /** assimp on one file: the same protocol as ours (one untimed import first when large). */
-    private void measureAssimp(AssimpFile f, boolean large, int n, Result result, PrintWriter err) {
-        if (f.failure != null) {
-            result.assimpError = f.failure;
-            err.printf(Locale.ROOT, "bench parse: %s %.2f ms, assimp failed: %s%n", result.name, result.median(),
-                    result.assimpError);
-            return;
-        }
-        result.assimpTriangles = f.triangles;
-        if (large) {
-            System.gc();
-            f.assimp.importOnce(assimpFlags);
-        }
-        double[] millis = new double[n];
-        for (int r = 0; r < n; r++) {
-            if (large) {
-                System.gc();
-            }
-            long t0 = System.nanoTime();
-            f.assimp.importOnce(assimpFlags);
-            millis[r] = (System.nanoTime() - t0) / 1e6;
-        }
-        result.assimpMillis = millis;
-        err.printf(Locale.ROOT, "bench parse: %s %.2f ms, assimp %.2f ms (%.1fx)%n", result.name,
-                result.median(), Result.median(millis), result.assimpRatio());
-    }
-
-    private static Model importOnce(Path path, byte[] bytes) {
-        try {
-            return ColladaImporter.read(new ByteArrayInputStream(bytes), path.getFileName().toString());
-        } catch (ColladaException e) {
-            throw new CommandFailure(ExitCodes.INVALID_FILE, e.getMessage(), e);
-        } catch (IOException e) {
-            throw new CommandFailure(ExitCodes.INVALID_FILE, path + ": " + e.getMessage(), e);
-        }
+        return new ParseTimer(warmupSeconds, runs, compareAssimp ? assimpFlags : -1, false, err, "bench parse: ").measure(timed);
     }
 
     private static List<Path> daeFiles(Path dir) throws IOException {
@@ -326,7 +154,7 @@ public final class ParseBenchCommand implements Callable<Integer> {
         }
     }
 
-    private ObjectNode toJson(List<Result> results, String assimpVersion) {
+    private ObjectNode toJson(List<ParseTimer.Result> results, String assimpVersion) {
         ObjectMapper mapper = new ObjectMapper();
         ObjectNode root = mapper.createObjectNode();
         root.put("benchmark", "parse");
@@ -337,7 +165,7 @@ public final class ParseBenchCommand implements Callable<Integer> {
             root.put("assimpFlags", AssimpBaseline.describe(assimpFlags));
         }
         ArrayNode list = root.putArray("files");
-        for (Result r : results) {
+        for (ParseTimer.Result r : results) {
             ObjectNode f = list.addObject();
             f.put("file", r.name);
             f.put("bytes", r.bytes);
@@ -350,8 +178,8 @@ public final class ParseBenchCommand implements Callable<Integer> {
                 // Present for every file when compared; null times (and assimpError) where assimp failed.
                 f.put("assimpTriangles", r.assimpError == null ? r.assimpTriangles : null);
                 if (r.assimpMillis != null) {
-                    f.put("assimpMinMillis", round(Result.min(r.assimpMillis)));
-                    f.put("assimpMedianMillis", round(Result.median(r.assimpMillis)));
+                    f.put("assimpMinMillis", round(ParseTimer.Result.min(r.assimpMillis)));
+                    f.put("assimpMedianMillis", round(ParseTimer.Result.median(r.assimpMillis)));
                     f.put("assimpRatio", round(r.assimpRatio()));
                 } else {
                     f.putNull("assimpMinMillis");
@@ -368,20 +196,20 @@ public final class ParseBenchCommand implements Callable<Integer> {
         return Math.round(d * 1000.0) / 1000.0;
     }
 
-    private static String table(List<Result> results, boolean withAssimp) {
+    private static String table(List<ParseTimer.Result> results, boolean withAssimp) {
         StringBuilder sb = new StringBuilder();
         sb.append(String.format(Locale.ROOT, "%-40s %9s %10s %9s %9s %8s", "file", "MB", "triangles", "min ms",
                 "median ms", "MB/s"));
         sb.append(withAssimp ? String.format(Locale.ROOT, " %10s %12s%n", "assimp ms", "assimp/ours") : System.lineSeparator());
         long bytes = 0;
         double millis = 0;
-        for (Result r : results) {
+        for (ParseTimer.Result r : results) {
             sb.append(String.format(Locale.ROOT, "%-40s %9.3f %10d %9.2f %9.2f %8.1f", r.name, r.bytes / 1e6,
                     r.triangles, r.min(), r.median(), r.mbPerSecond()));
             if (!withAssimp) {
                 sb.append(System.lineSeparator());
             } else if (r.assimpMillis != null) {
-                sb.append(String.format(Locale.ROOT, " %10.2f %12.2f%n", Result.median(r.assimpMillis),
+                sb.append(String.format(Locale.ROOT, " %10.2f %12.2f%n", ParseTimer.Result.median(r.assimpMillis),
                         r.assimpRatio()));
             } else {
                 sb.append(String.format(Locale.ROOT, " %10s%n", "failed"));

@@ -10,7 +10,7 @@ import picocli.CommandLine.Command;
 @Command(name = "skinlab", mixinStandardHelpOptions = true, versionProvider = SkinlabCommand.Version.class,
         description = "Skeletal animation lab: view COLLADA characters skinned with LBS and DQS (no subcommand: the window "
                 + "on the default character), inspect them, pose them, benchmark.",
-        subcommands = {ViewCommand.class, CheckGpuCommand.class, RenderBenchCommand.class, CompareCommand.class,
+        subcommands = {ViewCommand.class, EvalCommand.class, CheckGpuCommand.class, RenderBenchCommand.class, CompareCommand.class,
                 CentresCommand.class,
                 InspectCommand.class, PoseCommand.class, BenchCommand.class, TrackCommand.class,
                 MarkerCommand.class, CalibrationTargetCommand.class, CalibrateCommand.class, ArCommand.class, ArDemoCommand.class,

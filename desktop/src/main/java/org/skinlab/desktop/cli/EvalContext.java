@@ -1,0 +1,89 @@
+package org.skinlab.desktop.cli;
+
+import java.io.PrintWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+
+import me.tongfei.progressbar.ProgressBar;
+
+/**
+ * What a section of {@code skinlab eval} measures with: the mode (quick or full), the repository's
+ * assets, the shared fixtures when present, where to say what it skips, and the progress bar. The
+ * bar counts tenths of a second of the sections' estimates; a section reports the fraction of its
+ * own work done, so the library's estimate of the time left follows the estimates' weights.
+ */
+final class EvalContext {
+    static final String SHARED_CTS = "../shared/cts/collada-cts-1.4.1-subset.zip";
+
+    private final boolean quick;
+    private final Path root;
+    private final Path corpus;
+    private final Path cts;
+    private final PrintWriter log;
+    private ProgressBar bar;
+    private long sectionStart;
+    private long sectionLength;
+
+    EvalContext(boolean quick, Path root, PrintWriter log) {
+        this.quick = quick;
+        this.root = root;
+        this.corpus = BenchCorpus.sharedCorpus(root, Path.of(""));
+        Path zip = root.resolve(SHARED_CTS).normalize();
+        this.cts = Files.isRegularFile(zip) ? zip : null;
+        this.log = log;
+    }
+
+    boolean quick() {
+        return quick;
+    }
+
+    /** The repository root (holds assets/). */
+    Path root() {
+        return root;
+    }
+
+    /** The shared corpus folder, or null when absent. */
+    Path corpus() {
+        return corpus;
+    }
+
+    /** Where the shared corpus was looked for (for the line saying it is absent). */
+    Path corpusPlace() {
+        return root.resolve(BenchCorpus.SHARED_CORPUS).normalize();
+    }
+
+    /** The conformance suite's zip, or null when absent. */
+    Path cts() {
+        return cts;
+    }
+
+    Path ctsPlace() {
+        return root.resolve(SHARED_CTS).normalize();
+    }
+
+    /** Says something on stderr (above the bar). */
+    void say(String message) {
+        log.println("eval: " + message);
+        log.flush();
+    }
+
+    void useBar(ProgressBar bar) {
+        this.bar = bar;
+    }
+
+    /** Starts a section that spans {@code length} units of the bar. */
+    void startSection(String name, long length) {
+        sectionStart = bar == null ? 0 : bar.getCurrent();
+        sectionLength = length;
+        if (bar != null) {
+            bar.setExtraMessage(name);
+        }
+    }
+
+    /** The fraction (0 to 1) of the current section done. */
+    void progress(double fraction) {
+        if (bar != null) {
+            bar.stepTo(sectionStart + Math.round(Math.min(1, Math.max(0, fraction)) * sectionLength));
+        }
+    }
+}

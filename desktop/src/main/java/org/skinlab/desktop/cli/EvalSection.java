@@ -1,0 +1,26 @@
+package org.skinlab.desktop.cli;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+
+/**
+ * One section of {@code skinlab eval}'s report: it measures into its node of results.json, then
+ * writes its part of README.md and its figures from that node alone (so every number the report
+ * prints is one results.json holds). A new section is a class listed in {@link EvalCommand#SECTIONS}.
+ */
+interface EvalSection {
+    /** The name {@code --only} selects it by, e.g. "load"; also its key in results.json. */
+    String key();
+
+    /** The heading of its part of the report. */
+    String title();
+
+    /** About how long it measures, in seconds (weights the progress bar's estimate of the time left). */
+    double estimatedSeconds(EvalContext context);
+
+    /** Measures, writing every number into {@code results}; reports progress through the context. */
+    void measure(EvalContext context, ObjectNode results);
+
+    /** Its part of the report and its figures, from its results only. */
+    void report(JsonNode results, EvalReport report);
+}

@@ -1,0 +1,259 @@
+package org.skinlab.desktop.cli;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.node.ArrayNode;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+
+import org.knowm.xchart.CategoryChart;
+import org.knowm.xchart.CategoryChartBuilder;
+import org.knowm.xchart.style.Styler;
+import org.skinlab.model.MeshInstance;
+import org.skinlab.model.Model;
+import org.skinlab.skinning.NormalTransform;
+import org.skinlab.skinning.PositionSharing;
+import org.skinlab.skinning.SkinningMethod;
+
+/**
+ * Section "time": the time of one frame per asset and method ({@link FrameBench}, the timing of
+ * {@code bench frame}: sample, skinning matrices, skin, one thread, exact normals), with the
+ * fastest kernels (SIMD where the JVM has the Vector API) and core's scalar ones, with all
+ * influences and cut to 4 (only where a geometry has more), beside the thesis' table. The thesis'
+ * assets are ours: its cylinders are rebuilt in assets/cylinders (assets/README.md), its cowboy is
+ * S01_cowboy.dae of the shared corpus.
+ */
+final class EvalTimeSection implements EvalSection {
+    static final int CAP = 4;
+
+    /** One row of the thesis' table: its asset, ours, and its DQS and LBS times in ms. */
+    record ThesisRow(String thesisName, String file, double dqsMillis, double lbsMillis) {
+    }
+
+    static final List<ThesisRow> THESIS = List.of(new ThesisRow("cowboy", "S01_cowboy.dae", 4.35, 4.55),
+            new ThesisRow("cylinderYLow", "cylinder-twist-low.dae", 2.67, 3.00),
+            new ThesisRow("cylinderXHigh", "cylinder-bend.dae", 5.43, 6.5),
+            new ThesisRow("cylinderYHigh", "cylinder-twist-high.dae", 4.86, 6.37));
+
+    @Override
+    public String key() {
+        return "time";
+    }
+
+    @Override
+    public String title() {
+        return "Time per deformation";
+    }
+
+    @Override
+    public double estimatedSeconds(EvalContext context) {
+        return context.quick() ? 22 : 100;
+    }
+
+    @Override
+    public void measure(EvalContext context, ObjectNode results) {
+        boolean quick = context.quick();
+        double firstWarmup = quick ? 1.0 : 2.0;
+        double warmup = quick ? 0.15 : 0.5;
+        double seconds = quick ? 0.25 : 2.0;
+        results.put("warmupSeconds", warmup);
+        results.put("firstWarmupSeconds", firstWarmup);
+        results.put("seconds", seconds);
+        results.put("cap", CAP);
+        List<Path> files = new ArrayList<>();
+        for (ColladaFileSearch.Entry e : ColladaFileSearch.expand(List.of(context.root().resolve("assets")))) {
+            files.add(e.path());
+        }
+        Path cowboy = context.corpus() == null ? null : context.corpus().resolve(THESIS.get(0).file());
+        if (cowboy != null && Files.isRegularFile(cowboy)) {
+            files.add(cowboy);
+        } else {
+            results.put("cowboySkipped", "no " + THESIS.get(0).file() + " in the shared corpus at "
+                    + context.corpusPlace());
+        }
+        List<Model> models = new ArrayList<>();
+        List<Path> skinned = new ArrayList<>();
+        for (Path f : files) {
+            Model m = ModelFiles.load(f).model;
+            if (m.instances().stream().anyMatch(MeshInstance::isSkinned)) {
+                models.add(m);
+                skinned.add(f);
+            }
+        }
+        int total = models.size() * 2 * 2 * SkinningMethod.values().length;
+        int done = 0;
+        boolean[][] warmed = new boolean[2][SkinningMethod.values().length];
+        ArrayNode assets = results.putArray("assets");
+        for (int a = 0; a < models.size(); a++) {
+            ObjectNode asset = assets.addObject();
+            asset.put("file", skinned.get(a).getFileName().toString());
+            ArrayNode runs = asset.putArray("runs");
+            for (int cap : new int[] {0, CAP}) {
+                if (cap != 0 && asset.get("influences").asInt() <= CAP) {
+                    asset.put("capNoEffect", true);
+                    done += 2 * SkinningMethod.values().length;
+                    continue;
+                }
+                for (int k = 0; k < 2; k++) {
+                    boolean scalar = k == 1;
+                    FrameBench bench = new FrameBench(models.get(a), NormalTransform.INVERSE_TRANSPOSE,
+                            PositionSharing.AUTO, scalar, cap);
+                    FrameBench.Shape shape = bench.shape();
+                    if (cap == 0 && !scalar) {
+                        asset.put("positionsSkinned", shape.positionsSkinned());
+                        asset.put("renderVertices", shape.renderVertices());
+                        asset.put("joints", shape.joints());
+                        asset.put("influences", shape.influences());
+                    }
+                    for (SkinningMethod m : SkinningMethod.values()) {
+                        double w = warmed[k][m.ordinal()] ? warmup : firstWarmup;
+                        warmed[k][m.ordinal()] = true;
+                        FrameBench.Timing t = bench.measure(m, w, seconds);
+                        ObjectNode r = runs.addObject();
+                        r.put("method", m.key());
+                        r.put("kernels", scalar ? "scalar" : "fastest");
+                        r.put("implementation", t.kernel());
+                        r.put("influences", cap == 0 ? "all" : "at most " + CAP);
+                        r.put("frames", t.frames());
+                        r.put("medianMicros", EvalReport.round(t.medianMicros()));
+                        r.put("minMicros", EvalReport.round(t.minMicros()));
+                        context.progress((double) ++done / total);
+                    }
+                }
+            }
+        }
+        thesis(results);
+    }
+
+    /** The thesis' rows beside ours (fastest kernels, all influences): thesis / ours, how many times faster. */
+    private static void thesis(ObjectNode results) {
+        ArrayNode rows = results.putArray("thesis");
+        for (ThesisRow t : THESIS) {
+            ObjectNode row = rows.addObject();
+            row.put("thesisAsset", t.thesisName());
+            row.put("file", t.file());
+            row.put("thesisDqsMillis", t.dqsMillis());
+            row.put("thesisLbsMillis", t.lbsMillis());
+            JsonNode dqs = ours(results, t.file(), "dqs");
+            JsonNode lbs = ours(results, t.file(), "lbs");
+            if (dqs == null || lbs == null) {
+                row.put("missing", "not measured here");
+                continue;
+            }
+            row.put("oursDqsMicros", dqs.get("medianMicros").asDouble());
+            row.put("oursLbsMicros", lbs.get("medianMicros").asDouble());
+            row.put("dqsRatio", EvalReport.round(t.dqsMillis() * 1000 / dqs.get("medianMicros").asDouble()));
+            row.put("lbsRatio", EvalReport.round(t.lbsMillis() * 1000 / lbs.get("medianMicros").asDouble()));
+        }
+    }
+
+    private static JsonNode ours(ObjectNode results, String file, String method) {
+        for (JsonNode a : results.get("assets")) {
+            if (a.get("file").asText().equals(file)) {
+                for (JsonNode r : a.get("runs")) {
+                    if (r.get("method").asText().equals(method) && r.get("kernels").asText().equals("fastest")
+                            && r.get("influences").asText().equals("all")) {
+                        return r;
+                    }
+                }
+            }
+        }
+        return null;
+    }
+
+    @Override
+    public void report(JsonNode results, EvalReport report) {
+        report.paragraph("The time of one frame of the asset's first clip, one thread: sample the clip, the skinning"
+                + " matrices (and dual quaternions for DQS and CoR), skin every mesh, positions and exact normals"
+                + " (`bench frame`'s protocol). Per asset and method the median over "
+                + EvalReport.num(results, "/seconds") + " s of frames after " + EvalReport.num(results, "/warmupSeconds")
+                + " s of warm-up (" + EvalReport.num(results, "/firstWarmupSeconds") + " s for a kernel's first asset),"
+                + " in µs; with the fastest kernels here (SIMD where the Vector API is on; the kernel's name says"
+                + " which ran) and with core's scalar ones; with every influence, and cut to the "
+                + EvalReport.num(results, "/cap") + " heaviest (renormalised, what a GPU's fixed slots see) where an"
+                + " asset has more (the cut geometry skins every render vertex, without sharing positions, so part of"
+                + " that difference is the sharing). The scalar C++ reference of ../shared/perf is not run here yet"
+                + " (`bench/compare-skinning.sh` compiles and runs it; docs/benchmarks.md).");
+        report.header("asset", "influences", "method", "kernels", "kernel name", "influences used", "median µs",
+                "min µs");
+        JsonNode assets = results.get("assets");
+        for (int a = 0; a < assets.size(); a++) {
+            JsonNode asset = assets.get(a);
+            JsonNode runs = asset.get("runs");
+            for (int r = 0; r < runs.size(); r++) {
+                String p = "/assets/" + a + "/runs/" + r;
+                JsonNode run = runs.get(r);
+                report.row("`" + asset.get("file").asText() + "`", EvalReport.num(results, "/assets/" + a
+                        + "/influences"), run.get("method").asText().toUpperCase(java.util.Locale.ROOT),
+                        run.get("kernels").asText(), "`" + run.get("implementation").asText() + "`",
+                        run.get("influences").asText().equals("all") ? "all" : "heaviest " + EvalReport.num(results,
+                                "/cap"), EvalReport.num(results, p + "/medianMicros"),
+                        EvalReport.num(results, p + "/minMicros"));
+            }
+        }
+        report.line("");
+        if (results.has("cowboySkipped")) {
+            report.paragraph("The cowboy is skipped: `" + results.get("cowboySkipped").asText() + "`.");
+        }
+        report.heading(3, "Beside the thesis");
+        report.paragraph("The thesis' times per deformation (its table, ms) against ours (the fastest kernels, every"
+                + " influence; µs); thesis / ours is how many times faster this frame is. The thesis measured"
+                + " other hardware (a phone of its time), so the ratio mixes the code's and the machine's progress.");
+        report.header("thesis asset", "ours", "thesis DQS ms", "ours DQS µs", "DQS thesis / ours", "thesis LBS ms",
+                "ours LBS µs", "LBS thesis / ours");
+        JsonNode rows = results.get("thesis");
+        for (int i = 0; i < rows.size(); i++) {
+            String p = "/thesis/" + i;
+            JsonNode row = rows.get(i);
+            report.row(row.get("thesisAsset").asText(), "`" + row.get("file").asText() + "`",
+                    EvalReport.num(results, p + "/thesisDqsMillis"), EvalReport.numOrDash(results, p + "/oursDqsMicros"),
+                    EvalReport.numOrDash(results, p + "/dqsRatio"), EvalReport.num(results, p + "/thesisLbsMillis"),
+                    EvalReport.numOrDash(results, p + "/oursLbsMicros"), EvalReport.numOrDash(results, p + "/lbsRatio"));
+        }
+        report.line("");
+        for (int a = 0; a < assets.size(); a++) {
+            assetFigure(assets.get(a), report);
+        }
+    }
+
+    /** One bar chart per asset: method on the axis, a bar per kernel and influence variant. */
+    private static void assetFigure(JsonNode asset, EvalReport report) {
+        String file = asset.get("file").asText();
+        CategoryChart chart = new CategoryChartBuilder().width(900).height(500)
+                .title("Time per frame: " + file).xAxisTitle("method").yAxisTitle("µs per frame (median)").build();
+        chart.getStyler().setLegendPosition(Styler.LegendPosition.InsideNW);
+        List<String> variants = new ArrayList<>();
+        for (JsonNode r : asset.get("runs")) {
+            String v = variant(r);
+            if (!variants.contains(v)) {
+                variants.add(v);
+            }
+        }
+        List<String> methods = new ArrayList<>();
+        for (SkinningMethod m : SkinningMethod.values()) {
+            methods.add(m.key().toUpperCase(java.util.Locale.ROOT));
+        }
+        for (String v : variants) {
+            List<Double> values = new ArrayList<>();
+            for (SkinningMethod m : SkinningMethod.values()) {
+                double value = 0;
+                for (JsonNode r : asset.get("runs")) {
+                    if (variant(r).equals(v) && r.get("method").asText().equals(m.key())) {
+                        value = r.get("medianMicros").asDouble();
+                    }
+                }
+                values.add(value);
+            }
+            chart.addSeries(v, methods, values);
+        }
+        String png = "time-" + file.replaceAll("\\.dae$", "").replaceAll("[^A-Za-z0-9_-]", "_") + ".png";
+        report.figure(png, "Time per frame, " + file, chart);
+    }
+
+    private static String variant(JsonNode run) {
+        return run.get("kernels").asText() + " kernels, " + run.get("influences").asText() + " influences";
+    }
+}

@@ -1,0 +1,127 @@
+package org.skinlab.desktop.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.awt.image.BufferedImage;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Set;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import java.util.stream.Collectors;
+import java.util.stream.Stream;
+
+import javax.imageio.ImageIO;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.node.DoubleNode;
+import com.fasterxml.jackson.databind.node.IntNode;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * {@code skinlab eval --quick}: the report, results.json and every figure are written, and every
+ * number README.md prints is a number of results.json (printed by the same rule). About 30 s on
+ * the project's 2-core machine (the quick run of both sections).
+ */
+class EvalCommandTest {
+    /** A number standing alone: not part of a word, a file name or a longer number. */
+    private static final Pattern NUMBER = Pattern.compile("(?<![\\w.\\-])\\d+(?:\\.\\d+)?(?![\\w.]*\\w)");
+    private static final Pattern FIGURE = Pattern.compile("!\\[[^\\]]*\\]\\(([^)]+)\\)");
+
+    @Test
+    void quickRunWritesTheReportFromItsResultsWithEveryFigure(@TempDir Path dir) throws Exception {
+        Cli run = Cli.run("eval", "--quick", "--only", "load,time", "--out", dir.toString());
+        assertEquals(ExitCodes.OK, run.status, run.err);
+        JsonNode results = new ObjectMapper().readTree(dir.resolve("results.json").toFile());
+        String readme = Files.readString(dir.resolve("README.md"));
+        assertEquals(List.of("load", "time"), Cli.keys(results.get("sections")));
+        assertEquals("skinlab eval --quick --only load,time --out " + dir, results.at("/machine/command").asText());
+        assertTrue(readme.contains(results.at("/machine/cpu").asText()), "the report names the CPU");
+
+        // Every figure it links exists, decodes, and has a plot and a footer's worth of pixels.
+        List<String> linked = new ArrayList<>();
+        Matcher f = FIGURE.matcher(readme);
+        while (f.find()) {
+            linked.add(f.group(1));
+        }
+        assertTrue(linked.contains("load-files.png") && linked.contains("time-cylinder-bend.png"), linked.toString());
+        for (String png : linked) {
+            BufferedImage image = ImageIO.read(dir.resolve(png).toFile());
+            assertTrue(image != null && image.getWidth() >= 600 && image.getHeight() >= 400, png);
+            assertTrue(colours(image) >= 8, png + " looks blank");
+        }
+        try (Stream<Path> files = Files.list(dir)) {
+            Set<String> written = files.map(p -> p.getFileName().toString()).filter(n -> n.endsWith(".png"))
+                    .collect(Collectors.toSet());
+            assertEquals(new HashSet<>(linked), written, "every PNG written is linked, and only those");
+        }
+
+        // Every number of the text (outside code spans and figure links) is a value of results.json.
+        Set<String> values = new HashSet<>();
+        collect(results, values);
+        String text = FIGURE.matcher(readme).replaceAll("").replaceAll("`[^`\n]*`", "");
+        Matcher n = NUMBER.matcher(text);
+        int found = 0;
+        while (n.find()) {
+            found++;
+            assertTrue(values.contains(n.group()), "README prints " + n.group() + " (near \""
+                    + text.substring(Math.max(0, n.start() - 40), Math.min(text.length(), n.end() + 20))
+                    + "\"), which results.json does not hold");
+        }
+        assertTrue(found > 60, "only " + found + " numbers in the report");
+        // The thesis' table is there, beside ours.
+        assertTrue(values.contains("4.35") && values.contains("6.37"));
+        assertTrue(readme.contains("| cylinderYLow | `cylinder-twist-low.dae` | 2.67 |"), readme);
+    }
+
+    @Test
+    void anUnknownSectionIsAUsageErrorNamingTheValidOnes(@TempDir Path dir) {
+        Cli run = Cli.run("eval", "--only", "load,crowds", "--out", dir.toString());
+        assertEquals(ExitCodes.USAGE, run.status);
+        assertTrue(run.err.contains("unknown section \"crowds\" (valid: load, time)"), run.err);
+    }
+
+    @Test
+    void anOutThatIsAFileIsAUsageError(@TempDir Path dir) throws Exception {
+        Path file = Files.writeString(dir.resolve("report"), "");
+        Cli run = Cli.run("eval", "--only", "load", "--out", file.toString());
+        assertEquals(ExitCodes.USAGE, run.status);
+        assertTrue(run.err.contains("--out: not a folder: " + file), run.err);
+    }
+
+    @Test
+    void theNumberRulePrintsStoredValuesPlainly() {
+        assertEquals("1.5", EvalReport.format(new DoubleNode(1.50)));
+        assertEquals("3", EvalReport.format(new DoubleNode(3.0)));
+        assertEquals("0.0001", EvalReport.format(new DoubleNode(1e-4)));
+        assertEquals("12000", EvalReport.format(new DoubleNode(1.2e4)));
+        assertEquals("42", EvalReport.format(new IntNode(42)));
+        assertEquals(0.123, EvalReport.round(0.12345));
+    }
+
+    private static void collect(JsonNode node, Set<String> values) {
+        if (node.isNumber()) {
+            values.add(EvalReport.format(node));
+        }
+        for (JsonNode child : node) {
+            collect(child, values);
+        }
+    }
+
+    private static int colours(BufferedImage image) {
+        Set<Integer> seen = new HashSet<>();
+        for (int y = 0; y < image.getHeight(); y += 3) {
+            for (int x = 0; x < image.getWidth(); x += 3) {
+                seen.add(image.getRGB(x, y));
+            }
+        }
+        return seen.size();
+    }
+}
