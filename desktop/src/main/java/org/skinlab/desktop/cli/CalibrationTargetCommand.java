@@ -1,7 +1,6 @@
 package org.skinlab.desktop.cli;
 
 import java.io.IOException;
-import java.nio.file.Path;
 import java.util.concurrent.Callable;
 
 import org.skinlab.ar.CalibrationTarget;
@@ -29,19 +28,16 @@ public final class CalibrationTargetCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         print.requireOutput();
-        Path pdf = print.pdf;
-        Path png = print.png;
-        int dpi = print.dpi;
         CalibrationTarget target = targetOptions.target();
         try {
-            if (pdf != null) {
-                CalibrationSheet.writePdf(target, pdf);
-                spec.commandLine().getOut().println("wrote " + pdf + " (" + target.describe() + "; skinlab calibrate "
+            if (print.pdf != null) {
+                CalibrationSheet.writePdf(target, print.pdf);
+                spec.commandLine().getOut().println("wrote " + print.pdf + " (" + target.describe() + "; skinlab calibrate "
                         + target.options() + ")");
             }
-            if (png != null) {
-                CalibrationSheet.writePng(target, dpi, png);
-                spec.commandLine().getOut().println("wrote " + png);
+            if (print.png != null) {
+                CalibrationSheet.writePng(target, print.dpi, print.png);
+                spec.commandLine().getOut().println("wrote " + print.png);
             }
         } catch (IllegalArgumentException e) {
             throw new CommandFailure(ExitCodes.USAGE, e.getMessage(), e);

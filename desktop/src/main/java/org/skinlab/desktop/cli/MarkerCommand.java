@@ -1,7 +1,6 @@
 package org.skinlab.desktop.cli;
 
 import java.io.IOException;
-import java.nio.file.Path;
 import java.util.concurrent.Callable;
 
 import org.skinlab.ar.MarkerDictionary;
@@ -36,19 +35,16 @@ public final class MarkerCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         print.requireOutput();
-        Path pdf = print.pdf;
-        Path png = print.png;
-        int dpi = print.dpi;
         MarkerPattern pattern;
         try {
             pattern = MarkerPattern.of(MarkerDictionary.byName(dictionary), id);
-            if (pdf != null) {
-                MarkerSheet.writePdf(pattern, sizeMm, pdf);
-                spec.commandLine().getOut().println("wrote " + pdf);
+            if (print.pdf != null) {
+                MarkerSheet.writePdf(pattern, sizeMm, print.pdf);
+                spec.commandLine().getOut().println("wrote " + print.pdf);
             }
-            if (png != null) {
-                MarkerSheet.writePng(pattern, sizeMm, dpi, png);
-                spec.commandLine().getOut().println("wrote " + png);
+            if (print.png != null) {
+                MarkerSheet.writePng(pattern, sizeMm, print.dpi, print.png);
+                spec.commandLine().getOut().println("wrote " + print.png);
             }
         } catch (IllegalArgumentException e) {
             throw new CommandFailure(ExitCodes.USAGE, e.getMessage(), e);
