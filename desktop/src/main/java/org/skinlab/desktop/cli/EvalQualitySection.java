@@ -287,9 +287,9 @@ final class EvalQualitySection implements EvalSection {
             }
         }
         angleFigure(assets, "twist", "ringRadius", "joint ring / rest", "quality-twist-ring.png",
-                "Joint ring radius of the twist cylinders against the twist angle", report);
+                "Joint ring radius of the twist cylinders against the twist angle", Styler.LegendPosition.InsideSW, report);
         angleFigure(assets, "bend", "bulge", "bulge (model units)", "quality-bend-bulge.png",
-                "Bulge of the bend cylinder against the bend angle", report);
+                "Bulge of the bend cylinder against the bend angle", Styler.LegendPosition.InsideNW, report);
     }
 
     private static void capTable(JsonNode results, EvalReport report) {
@@ -338,10 +338,10 @@ final class EvalQualitySection implements EvalSection {
 
     /** A measure against the joint angle for the assets whose file name has {@code kind}, a line per method and asset. */
     private static void angleFigure(JsonNode assets, String kind, String measure, String axis, String png,
-            String caption, EvalReport report) {
+            String caption, Styler.LegendPosition legend, EvalReport report) {
         XYChart chart = new XYChartBuilder().width(900).height(500).title(caption)
                 .xAxisTitle("joint angle (degrees)").yAxisTitle(axis).build();
-        chart.getStyler().setLegendPosition(Styler.LegendPosition.InsideNW);
+        chart.getStyler().setLegendPosition(legend);
         int series = 0;
         for (JsonNode asset : assets) {
             String file = asset.get("file").asText();
