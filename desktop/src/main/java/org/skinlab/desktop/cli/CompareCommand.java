@@ -132,7 +132,7 @@ public final class CompareCommand implements Callable<Integer> {
     }
 
     /** The palette index of the nearest ancestor of joint {@code j} that is in the palette, or -1. */
-    private static int parentInPalette(Model model, SkinnedGeometry g, int j) {
+    static int parentInPalette(Model model, SkinnedGeometry g, int j) {
         for (int node = model.node(g.jointNode(j)).parent(); node >= 0; node = model.node(node).parent()) {
             for (int k = 0; k < g.jointCount(); k++) {
                 if (g.jointNode(k) == node) {
