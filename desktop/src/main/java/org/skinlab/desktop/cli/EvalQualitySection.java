@@ -18,6 +18,7 @@ import org.skinlab.animation.RotationInterpolation;
 import org.skinlab.model.Model;
 import org.skinlab.model.Node;
 import org.skinlab.skinning.InfluenceCapError;
+import org.skinlab.skinning.ArtifactMetrics;
 import org.skinlab.skinning.JointArtifacts;
 import org.skinlab.skinning.NormalTransform;
 import org.skinlab.skinning.SkinnedGeometry;
@@ -115,6 +116,9 @@ final class EvalQualitySection implements EvalSection {
         asset.put("joint", name(model, geometry.jointNode(joint)));
         asset.put("parent", name(model, geometry.jointNode(parent)));
         asset.put("regionPoints", artifacts.regionSize());
+        // The bulge in percent of the model's size (the distances' unit): model units rounded to 3
+        // decimals would step the bend's curve in thousandths of a cylinder.
+        double size = ArtifactMetrics.boundsDiagonal(geometry.positionArray(), geometry.vertexCount());
         float[] times = times(skinned.sampler().start(), skinned.sampler().end(), quick);
         ArrayNode t = asset.putArray("times");
         ArrayNode angles = asset.putArray("angleDegrees");
@@ -146,7 +150,7 @@ final class EvalQualitySection implements EvalSection {
                 ObjectNode node = byMethod.get(r.method());
                 add((ArrayNode) node.get("volume"), r.volume());
                 add((ArrayNode) node.get("ringRadius"), r.ringRadius());
-                add((ArrayNode) node.get("bulge"), r.bulge());
+                add((ArrayNode) node.get("bulge"), size > 0 ? 100 * r.bulge() / size : r.bulge());
                 if (r.method() == SkinningMethod.LBS) {
                     lbsDqs = Math.max(lbsDqs, r.distanceTo().get(SkinningMethod.DQS));
                 } else if (r.method() == SkinningMethod.DQS) {
@@ -252,8 +256,8 @@ final class EvalQualitySection implements EvalSection {
                 : EvalReport.num(results, "/samplesPerSecond") + " times a second") + ", deformed by each method;"
                 + " measured as `skinlab compare` measures (docs/skinning.md): the volume over the rest volume (closed"
                 + " meshes), the joint ring's distance from the bones over its rest distance (the candy wrapper collapses"
-                + " it), the bulge (how far the joint region stands out beyond its rest distance, model"
-                + " units) and the largest distance between two methods' points, in percent of the model's size."
+                + " it), the bulge (how far the joint region stands out beyond its rest distance, in"
+                + " percent of the model's size) and the largest distance between two methods' points, in percent of the model's size."
                 + " The joint is the one with the largest joint region; its angle is the rotation from the bind pose"
                 + " between it and its parent.");
         report.header("asset", "joint", "LBS min volume", "DQS min volume", "CoR min volume", "LBS min ring",
@@ -288,7 +292,7 @@ final class EvalQualitySection implements EvalSection {
         }
         angleFigure(assets, "twist", "ringRadius", "joint ring / rest", "quality-twist-ring.png",
                 "Joint ring radius of the twist cylinders against the twist angle", Styler.LegendPosition.InsideSW, report);
-        angleFigure(assets, "bend", "bulge", "bulge (model units)", "quality-bend-bulge.png",
+        angleFigure(assets, "bend", "bulge", "bulge (% of the model's size)", "quality-bend-bulge.png",
                 "Bulge of the bend cylinder against the bend angle", Styler.LegendPosition.InsideNW, report);
     }
 
