@@ -24,7 +24,7 @@ import org.skinlab.ar.synthetic.SceneOptions;
 import org.skinlab.ar.synthetic.SyntheticCamera;
 
 /**
- * Issue 18's goal: markers far away and tilted are found (at least 95% at 1.5-2 m, tilts up to 70
+ * The goal: markers far away and tilted are found (at least 95% at 1.5-2 m, tilts up to 70
  * degrees) while clutter gives no false marker (1,000 frames), and the decision rule's trade-off.
  *
  * <p><b>The positive set</b>: 210 frames at 1.5-2 m, tilt uniform in 0-70 degrees (seven
@@ -58,7 +58,7 @@ class FarTiltedDetectionTest {
     /** Frames per tilt bin: the claimed 200 mm set, the reported 100 mm set. */
     static final int[] PER_BIN = {30, 30};
     static final int CLUTTER_FRAMES = 1000;
-    /** The tracker's cap before issue 18: BoofCV's rule (wrong bits plus half the ambiguous ones) with 2. */
+    /** BoofCV's rule (wrong bits plus half the ambiguous ones) capped at 2: the comparison the trade-off table shows. */
     static final int OLD_CAP = 2;
 
     /** The true marker's best read per positive frame (cost, uncertain; NaN: no square read as its code). */
