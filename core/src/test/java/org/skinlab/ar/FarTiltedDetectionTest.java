@@ -58,7 +58,7 @@ class FarTiltedDetectionTest {
     /** Frames per tilt bin: the claimed 200 mm set, the reported 100 mm set. */
     static final int[] PER_BIN = {30, 30};
     static final int CLUTTER_FRAMES = 1000;
-    /** BoofCV's rule (wrong bits plus half the ambiguous ones) capped at 2: the comparison the trade-off table shows. */
+    /** BoofCV's rule (wrong bits plus half the ambiguous ones) capped at 2, for the trade-off table. */
     static final int OLD_CAP = 2;
 
     /** The true marker's best read per positive frame (cost, uncertain; NaN: no square read as its code). */
