@@ -3,19 +3,11 @@ package org.skinlab.desktop.cli;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.awt.image.BufferedImage;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
-import java.util.regex.Matcher;
-import java.util.regex.Pattern;
-import java.util.stream.Collectors;
-import java.util.stream.Stream;
-
-import javax.imageio.ImageIO;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
@@ -31,10 +23,6 @@ import org.junit.jupiter.api.io.TempDir;
  * the project's 2-core machine (the quick run of both sections).
  */
 class EvalCommandTest {
-    /** A number standing alone: not part of a word, a file name or a longer number. */
-    private static final Pattern NUMBER = Pattern.compile("(?<![\\w.\\-])\\d+(?:\\.\\d+)?(?![\\w.]*\\w)");
-    private static final Pattern FIGURE = Pattern.compile("!\\[[^\\]]*\\]\\(([^)]+)\\)");
-
     @Test
     void quickRunWritesTheReportFromItsResultsWithEveryFigure(@TempDir Path dir) throws Exception {
         Cli run = Cli.run("eval", "--quick", "--only", "load,time", "--out", dir.toString());
@@ -45,11 +33,11 @@ class EvalCommandTest {
         assertEquals("skinlab eval --quick --only load,time --out " + dir, results.at("/machine/command").asText());
         assertTrue(readme.contains(results.at("/machine/cpu").asText()), "the report names the CPU");
 
-        List<String> linked = figuresAndNumbersCheck(dir, results, readme);
+        List<String> linked = EvalReportCheck.figuresAndNumbers(dir, results, readme);
         assertTrue(linked.contains("load-files.png") && linked.contains("time-cylinder-bend.png"), linked.toString());
         Set<String> values = new HashSet<>();
-        collect(results, values);
-        assertTrue(numbers(readme) > 60, "only " + numbers(readme) + " numbers in the report");
+        EvalReportCheck.collect(results, values);
+        assertTrue(EvalReportCheck.numbers(readme) > 60, "only " + EvalReportCheck.numbers(readme) + " numbers in the report");
         // The thesis' table is there, beside ours.
         assertTrue(values.contains("4.35") && values.contains("6.37"));
         assertTrue(readme.contains("| cylinderYLow | `cylinder-twist-low.dae` | 2.67 |"), readme);
@@ -68,10 +56,10 @@ class EvalCommandTest {
         JsonNode results = new ObjectMapper().readTree(dir.resolve("results.json").toFile());
         String readme = Files.readString(dir.resolve("README.md"));
         assertEquals(List.of("quality"), Cli.keys(results.get("sections")));
-        List<String> linked = figuresAndNumbersCheck(dir, results, readme);
+        List<String> linked = EvalReportCheck.figuresAndNumbers(dir, results, readme);
         assertTrue(linked.containsAll(List.of("quality-twist-ring.png", "quality-bend-bulge.png",
                 "quality-volume-cylinder-twist-high.png", "quality-volume-humanoid-walk.png")), linked.toString());
-        assertTrue(numbers(readme) > 40, "only " + numbers(readme) + " numbers in the report");
+        assertTrue(EvalReportCheck.numbers(readme) > 40, "only " + EvalReportCheck.numbers(readme) + " numbers in the report");
         JsonNode twist = asset(results, "cylinder-twist-high.dae");
         JsonNode angles = twist.get("angleDegrees");
         int last = angles.size() - 1;
@@ -104,54 +92,6 @@ class EvalCommandTest {
         throw new AssertionError("no " + file + " in " + results);
     }
 
-    /**
-     * Every figure the report links exists, decodes and is not blank; every PNG written is linked;
-     * every number of the text (outside code spans and figure links) is a value of results.json.
-     * Returns the linked figures.
-     */
-    private static List<String> figuresAndNumbersCheck(Path dir, JsonNode results, String readme) throws Exception {
-        // Every figure it links exists, decodes, and has a plot and a footer's worth of pixels.
-        List<String> linked = new ArrayList<>();
-        Matcher f = FIGURE.matcher(readme);
-        while (f.find()) {
-            linked.add(f.group(1));
-        }
-        for (String png : linked) {
-            BufferedImage image = ImageIO.read(dir.resolve(png).toFile());
-            assertTrue(image != null && image.getWidth() >= 600 && image.getHeight() >= 400, png);
-            assertTrue(colours(image) >= 8, png + " looks blank");
-        }
-        try (Stream<Path> files = Files.list(dir)) {
-            Set<String> written = files.map(p -> p.getFileName().toString()).filter(n -> n.endsWith(".png"))
-                    .collect(Collectors.toSet());
-            assertEquals(new HashSet<>(linked), written, "every PNG written is linked, and only those");
-        }
-
-        // Every number of the text (outside code spans and figure links) is a value of results.json.
-        Set<String> values = new HashSet<>();
-        collect(results, values);
-        String text = FIGURE.matcher(readme).replaceAll("").replaceAll("`[^`\n]*`", "");
-        Matcher n = NUMBER.matcher(text);
-        int found = 0;
-        while (n.find()) {
-            found++;
-            assertTrue(values.contains(n.group()), "README prints " + n.group() + " (near \""
-                    + text.substring(Math.max(0, n.start() - 40), Math.min(text.length(), n.end() + 20))
-                    + "\"), which results.json does not hold");
-        }
-        return linked;
-    }
-
-    private static int numbers(String readme) {
-        String text = FIGURE.matcher(readme).replaceAll("").replaceAll("`[^`\n]*`", "");
-        Matcher n = NUMBER.matcher(text);
-        int found = 0;
-        while (n.find()) {
-            found++;
-        }
-        return found;
-    }
-
     @Test
     void anUnknownSectionIsAUsageErrorNamingTheValidOnes(@TempDir Path dir) {
         Cli run = Cli.run("eval", "--only", "load,crowds", "--out", dir.toString());
@@ -177,22 +117,4 @@ class EvalCommandTest {
         assertEquals(0.123, EvalReport.round(0.12345));
     }
 
-    private static void collect(JsonNode node, Set<String> values) {
-        if (node.isNumber()) {
-            values.add(EvalReport.format(node));
-        }
-        for (JsonNode child : node) {
-            collect(child, values);
-        }
-    }
-
-    private static int colours(BufferedImage image) {
-        Set<Integer> seen = new HashSet<>();
-        for (int y = 0; y < image.getHeight(); y += 3) {
-            for (int x = 0; x < image.getWidth(); x += 3) {
-                seen.add(image.getRGB(x, y));
-            }
-        }
-        return seen.size();
-    }
 }
