@@ -46,7 +46,7 @@ final class EvalAdvice {
                 .append(EvalReport.num(r, c + "/scalar/corMicros")).append(" with CoR: ")
                 .append(EvalReport.num(r, c + "/scalar/lbsPerFrame")).append(", ")
                 .append(EvalReport.num(r, c + "/scalar/dqsPerFrame")).append(" and ")
-                .append(EvalReport.num(r, c + "/scalar/corPerFrame")).append(" characters per 60 Hz frame of ")
+                .append(EvalReport.num(r, c + "/scalar/corPerFrame")).append(" characters per ").append(EvalReport.num(r, "/frameRateHz")).append(" Hz frame of ")
                 .append(EvalReport.num(r, "/inputs/frameMicros")).append(" µs (with the SIMD kernels of a desktop JVM: ")
                 .append(EvalReport.num(r, c + "/fastest/lbsPerFrame")).append(", ")
                 .append(EvalReport.num(r, c + "/fastest/dqsPerFrame")).append(" and ")
@@ -157,13 +157,14 @@ final class EvalAdvice {
         }
         t.append(". ");
         if (in.has("cap")) {
-            t.append("A GPU reads 4 influences per vertex; capping `").append(in.at("/cap/file").asText())
-                    .append("` (up to ").append(EvalReport.num(r, "/inputs/cap/influences")).append(" influences) at 4 moves ")
+            t.append("A GPU reads ").append(EvalReport.num(r, "/inputs/cap/cap"))
+                    .append(" influences per vertex; capping `").append(in.at("/cap/file").asText())
+                    .append("` (up to ").append(EvalReport.num(r, "/inputs/cap/influences")).append(" influences) there moves ")
                     .append(EvalReport.num(r, "/inputs/cap/cappedPositions")).append(" positions, by at most ")
                     .append(EvalReport.num(r, "/inputs/cap/lbsPercent")).append(" % of its size with LBS and ")
                     .append(EvalReport.num(r, "/inputs/cap/dqsPercent")).append(" % with DQS.");
         } else {
-            t.append("(No file with more than 4 influences was measured, so the cost of the GPU's 4-influence cap is"
+            t.append("(No file with more influences per vertex than a GPU reads was measured, so the cost of its cap is"
                     + " not shown here.)");
         }
         report.paragraph(t.toString());

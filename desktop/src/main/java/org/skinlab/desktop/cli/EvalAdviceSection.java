@@ -29,7 +29,8 @@ final class EvalAdviceSection implements EvalSection {
     static final String CHARACTER = "humanoid-walk.dae";
     /** The share of a 60 Hz frame (µs) left to skinning: the camera, tracking and drawing need the rest. */
     static final double BUDGET_MICROS = 4000;
-    static final double FRAME_MICROS = 1e6 / 60;
+    static final int FRAME_RATE = 60;
+    static final double FRAME_MICROS = 1e6 / FRAME_RATE;
 
     @Override
     public String key() {
@@ -73,6 +74,7 @@ final class EvalAdviceSection implements EvalSection {
     /** Per method and kernel, the vertices the fitted line skins within {@link #BUDGET_MICROS}. */
     private static void budgets(ObjectNode results) {
         results.put("budgetMicros", BUDGET_MICROS);
+        results.put("frameRateHz", FRAME_RATE);
         for (JsonNode s : results.at("/vertices/series")) {
             double slope = s.get("nsPerVertex").asDouble();
             ((ObjectNode) s).put("verticesInBudget", slope <= 0 ? 0
@@ -144,12 +146,13 @@ final class EvalAdviceSection implements EvalSection {
                     ObjectNode d = in.putObject("characterQuality");
                     d.put("maxLbsDqsPercent", asset.get("maxLbsDqsPercent").asDouble());
                     d.put("maxDqsCorPercent", asset.get("maxDqsCorPercent").asDouble());
-                } else if (asset.get("influences").asInt() > 4) {
+                } else if (asset.get("influences").asInt() > InfluenceCapReport.CAP_4) {
                     ObjectNode cap = in.putObject("cap");
                     cap.put("file", file);
                     cap.put("influences", asset.get("influences").asInt());
                     for (JsonNode c : asset.get("caps")) {
-                        if (c.get("cap").asInt() == 4) {
+                        if (c.get("cap").asInt() == InfluenceCapReport.CAP_4) {
+                            cap.put("cap", InfluenceCapReport.CAP_4);
                             cap.put("cappedPositions", c.get("cappedPositions").asInt());
                             cap.put("lbsPercent", c.get("lbsPercent").asDouble());
                             cap.put("dqsPercent", c.get("dqsPercent").asDouble());
@@ -181,7 +184,7 @@ final class EvalAdviceSection implements EvalSection {
                 + " s of warm-up per point, and a least-squares line through the points: its slope is the cost of one"
                 + " more vertex, its intercept the cost of a frame without vertices. The scalar kernels are the ones a"
                 + " phone runs (Android's runtime has no Vector API). The vertices in budget are what the line fits into "
-                + EvalReport.num(results, "/budgetMicros") + " µs, the share of a 60 Hz frame this advice leaves to"
+                + EvalReport.num(results, "/budgetMicros") + " µs, the share of a " + EvalReport.num(results, "/frameRateHz") + " Hz frame this advice leaves to"
                 + " skinning (the camera image, the tracker and the drawing need the rest) on one core of this machine.");
         report.header("method", "kernels", "kernel name", "ns per vertex (slope)", "intercept µs", "r²",
                 "vertices in budget");

@@ -160,6 +160,8 @@ final class EvalTimeSection implements EvalSection {
         double seconds = quick ? 0.3 : 0.7;
         results.put("source", CPP_REFERENCE);
         results.put("compiler", compiler + " -O3 -DNDEBUG -std=c++17");
+        results.put("joints", SyntheticSkinData.JOINTS);
+        results.put("influences", SyntheticSkinData.INFLUENCES);
         results.put("rounds", rounds);
         results.put("roundSeconds", seconds);
         List<CppSkinningReference.Result> cpp;
@@ -316,7 +318,8 @@ final class EvalTimeSection implements EvalSection {
             return;
         }
         report.paragraph("The shared scalar C++ reference (`" + ref.get("source").asText() + "`, compiled here with `"
-                + ref.get("compiler").asText() + "`) on its own synthetic data (64 joints, 4 influences per vertex,"
+                + ref.get("compiler").asText() + "`) on its own synthetic data (" + EvalReport.num(results, "/reference/joints")
+                + " joints, " + EvalReport.num(results, "/reference/influences") + " influences per vertex,"
                 + " normals by the blended matrix as it computes them), then our kernels on the same data, which"
                 + " core's generator reproduces bit for bit, in the same run: its " + EvalReport.num(results,
                 "/reference/rounds") + " round(s) of " + EvalReport.num(results, "/reference/roundSeconds")
