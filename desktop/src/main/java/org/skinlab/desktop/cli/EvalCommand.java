@@ -41,7 +41,7 @@ import picocli.CommandLine.Model.CommandSpec;
 public final class EvalCommand implements Callable<Integer> {
     /** The sections in report order; a new section is one entry here. */
     static final List<EvalSection> SECTIONS = List.of(new EvalLoadSection(), new EvalTimeSection(),
-            new EvalQualitySection());
+            new EvalQualitySection(), new EvalAdviceSection());
 
     @Option(names = "--out", paramLabel = "DIR", description = "where the report goes (default: ${DEFAULT-VALUE})")
     Path out = Path.of("docs/evaluation");
@@ -82,6 +82,7 @@ public final class EvalCommand implements Callable<Integer> {
         }
         long start = System.nanoTime();
         ObjectNode bySection = results.putObject("sections");
+        context.useResults(bySection);
         try (ProgressBar bar = new ProgressBarBuilder().setTaskName("eval").setInitialMax(total(lengths))
                 .setStyle(ProgressBarStyle.ASCII).setUnit("s", 10).setUpdateIntervalMillis(500).build()) {
             context.useBar(bar);
