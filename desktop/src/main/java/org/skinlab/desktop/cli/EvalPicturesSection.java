@@ -19,6 +19,7 @@ import java.util.stream.Stream;
 import javax.imageio.ImageIO;
 
 import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
 import org.skinlab.animation.RotationInterpolation;
@@ -74,8 +75,8 @@ final class EvalPicturesSection implements EvalSection {
 
     @Override
     public double estimatedSeconds(EvalContext context) {
-        // About 2.5 s a child JVM here: 3 per asset and the control.
-        return context.quick() ? 18 : 50;
+        // About 3 s a child JVM here: 3 per asset and the control (7 quick, 19 full).
+        return context.quick() ? 18 : 60;
     }
 
     @Override
@@ -109,7 +110,8 @@ final class EvalPicturesSection implements EvalSection {
             if (cowboy != null && Files.isRegularFile(cowboy)) {
                 files.add(cowboy);
             } else {
-                cowboySkipped = "the shared corpus is absent (looked for " + context.corpusPlace().resolve(COWBOY) + ")";
+                cowboySkipped = "the shared corpus is absent (looked for " + context.corpusPlace().resolve(COWBOY)
+                        + ")";
                 context.say("pictures: " + COWBOY + " skipped: " + cowboySkipped);
             }
         }
@@ -123,7 +125,7 @@ final class EvalPicturesSection implements EvalSection {
             int steps = 3 * files.size() + 1;
             int[] done = {0};
             Runnable step = () -> context.progress((double) ++done[0] / steps);
-            var assets = results.putArray("assets");
+            ArrayNode assets = results.putArray("assets");
             for (Path file : files) {
                 asset(file, quick, width, height, work, assets.addObject(), step);
             }
@@ -255,7 +257,10 @@ final class EvalPicturesSection implements EvalSection {
         return comparisons;
     }
 
-    /** The largest LBS-DQS distance over all geometries at clip time t, over the largest geometry's size (as the viewer's probe). */
+    /**
+     * The largest LBS-DQS distance over all geometries at clip time t, over the largest geometry's
+     * size (as the viewer's probe measures it).
+     */
     private static double lbsDqs(SkinnedModel skinned, List<MethodComparison> comparisons, float t) {
         skinned.pose(t, RotationInterpolation.SLERP);
         double max = 0;
@@ -353,7 +358,8 @@ final class EvalPicturesSection implements EvalSection {
     private static String[] labels(JsonNode results) {
         String full = EvalReport.format(results.get("differenceFullPercent"));
         return new String[] {"LBS (linear blend)", "DQS (dual quaternions)", "CoR (centres of rotation)",
-            "Difference on the LBS shape: LBS to DQS distance,\nblue 0 ... red " + full + " % of the model's size or more"};
+            "Difference on the LBS shape: LBS to DQS distance,\nblue 0 ... red " + full
+                    + " % of the model's size or more"};
     }
 
     /** The panels in a row under a title, each under its label. */

@@ -15,12 +15,13 @@ import org.skinlab.desktop.SkinlabMain;
 /**
  * One picture by the viewer's own headless path, {@code skinlab view FILE --screenshot OUT.png
  * --hide-ui}, run in a child JVM: this JVM's {@code java} ({@code java.home}) and class path,
- * so the child runs the same build. A child per picture, rather than the window in this JVM,
- * because each picture then starts from a fresh GLFW and OpenGL state (a window, its context and
- * the driver's threads made and torn down many times in one process leak native state, and a
- * crash in the driver would end the whole evaluation, not one picture), a hung driver can be
- * killed by a timeout, and the picture is exactly what a user's {@code skinlab view} command
- * writes. The price is a JVM start per picture (about a second).
+ * so the child runs the same build. A child per picture rather than the window in this JVM, since
+ * the evaluation draws many pictures in one run: the window initialises and terminates GLFW, which
+ * is process-wide state (on macOS tied to the main thread), so a child leaves the evaluation's JVM
+ * (and a test's) untouched; a crash in native driver code costs one picture, not the run; a hung
+ * driver is killed after {@value #TIMEOUT_SECONDS} s; and each picture is exactly what a user's
+ * {@code skinlab view} command writes. The price is a JVM start per picture (about 2 s here,
+ * with Mesa's software renderer).
  */
 final class ViewerProcess {
     /** A picture that takes longer is given up (a software renderer draws ours in about a second). */
