@@ -310,7 +310,7 @@ final class EvalPicturesSection implements EvalSection {
             String p = "/assets/" + a;
             String file = "`" + asset.get("file").asText() + "`";
             if (asset.has("skipped")) {
-                skipped.add(file + ": " + asset.get("skipped").asText());
+                skipped.add(file + ": " + quoted(asset.get("skipped").asText()));
             }
             if (!asset.has("time")) {
                 continue;
@@ -336,7 +336,7 @@ final class EvalPicturesSection implements EvalSection {
                             "/lbsDqsPixelsPercent") + " % of the model's pixels (the model covers " + EvalReport.num(
                                     control, "/lbsCoveragePercent") + " % of the LBS panel).");
         } else {
-            report.paragraph("Control skipped: " + control.path("skipped").asText("no picture") + ".");
+            report.paragraph("Control skipped: " + quoted(control.path("skipped").asText("no picture")) + ".");
         }
         for (int a = 0; a < assets.size(); a++) {
             JsonNode asset = assets.get(a);
@@ -353,6 +353,14 @@ final class EvalPicturesSection implements EvalSection {
                             + " % of the model's size apart", panels, labels(results)));
         }
         pictures.clear();
+    }
+
+    /**
+     * A reason as a code span: a message from the viewer or the system may hold numbers (a display,
+     * a status) that are not results, and the report's numbers are results only.
+     */
+    private static String quoted(String reason) {
+        return "`" + reason.replace('`', '\'') + "`";
     }
 
     private static String[] labels(JsonNode results) {

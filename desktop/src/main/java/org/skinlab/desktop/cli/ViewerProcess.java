@@ -55,14 +55,14 @@ final class ViewerProcess {
             log = Files.createTempFile("skinlab-view", ".log");
             p = new ProcessBuilder(command).redirectErrorStream(true).redirectOutput(log.toFile()).start();
             if (!p.waitFor(TIMEOUT_SECONDS, TimeUnit.SECONDS)) {
-                return "`skinlab view` did not finish in " + TIMEOUT_SECONDS + " s";
+                return "skinlab view did not finish in " + TIMEOUT_SECONDS + " s";
             }
             if (p.exitValue() != 0 || !Files.isRegularFile(png)) {
-                return "`skinlab view` failed (status " + p.exitValue() + "): " + lastLines(log);
+                return "skinlab view failed (status " + p.exitValue() + "): " + lastLines(log);
             }
             return null;
         } catch (IOException e) {
-            return "cannot start `skinlab view`: " + e.getMessage();
+            return "cannot start skinlab view: " + e.getMessage();
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
             return "interrupted";
