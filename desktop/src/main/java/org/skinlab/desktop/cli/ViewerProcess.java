@@ -52,6 +52,8 @@ final class ViewerProcess {
         Path log = null;
         Process p = null;
         try {
+            // A picture left by an earlier call must not pass for this one's.
+            Files.deleteIfExists(png);
             log = Files.createTempFile("skinlab-view", ".log");
             p = new ProcessBuilder(command).redirectErrorStream(true).redirectOutput(log.toFile()).start();
             if (!p.waitFor(TIMEOUT_SECONDS, TimeUnit.SECONDS)) {
