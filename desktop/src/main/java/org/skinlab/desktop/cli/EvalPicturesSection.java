@@ -22,6 +22,8 @@ import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
+import org.joml.Matrix4f;
+import org.joml.Vector3f;
 import org.skinlab.animation.RotationInterpolation;
 import org.skinlab.desktop.render.DrawSettings;
 import org.skinlab.model.Model;
@@ -35,7 +37,8 @@ import org.skinlab.skinning.SkinnedModel;
  * view, as the viewer draws them. The pose is chosen from the data: the time of the first clip
  * (sampled as the quality section samples it) at which the largest distance between LBS and DQS
  * over the model's size ({@link MethodComparison}, what the viewer's difference view measures) is
- * largest. The pictures are the viewer's own headless screenshots ({@code skinlab view
+ * largest; the camera turns around the model ({@code --yaw}) until the point furthest apart moves
+ * square to its view, so the difference shows in the outline. The pictures are the viewer's own headless screenshots ({@code skinlab view
  * --screenshot}, in a child JVM each: {@link ViewerProcess} says why): LBS and DQS in one split
  * view (one frame, one camera), CoR, and the difference view (the LBS shape coloured by each
  * point's LBS-DQS distance). Measured per picture: the model's coverage and, between the LBS and
@@ -143,20 +146,22 @@ final class EvalPicturesSection implements EvalSection {
         String name = file.getFileName().toString();
         asset.put("file", name);
         Model model = ModelFiles.load(file).model;
-        double[] extreme = extremePose(model, quick);
-        asset.put("clipSeconds", EvalReport.round(extreme[2]));
-        asset.put("time", EvalReport.round(extreme[0]));
-        asset.put("maxLbsDqsPercent", EvalReport.round(100 * extreme[1]));
-        String time = ViewerProcess.seconds(EvalReport.round(extreme[0]));
+        Extreme extreme = extremePose(model, quick);
+        asset.put("clipSeconds", EvalReport.round(extreme.clipSeconds));
+        asset.put("time", EvalReport.round(extreme.elapsed));
+        asset.put("maxLbsDqsPercent", EvalReport.round(100 * extreme.relative));
+        asset.put("yawDegrees", EvalReport.round(extreme.yawDegrees));
+        List<String> pose = List.of("--time", ViewerProcess.seconds(asset.get("time").asDouble()), "--yaw",
+                ViewerProcess.seconds(asset.get("yawDegrees").asDouble()));
         long start = System.nanoTime();
-        BufferedImage[] split = render(file, List.of("--method", "lbs", "--split", "dqs", "--time", time),
-                2 * width, height, work.resolve("split.png"), asset);
+        BufferedImage[] split = render(file, with(pose, "--method", "lbs", "--split", "dqs"), 2 * width, height,
+                work.resolve("split.png"), asset);
         step.run();
-        BufferedImage[] cor = split == null ? null : render(file, List.of("--method", "cor", "--time", time), width,
-                height, work.resolve("cor.png"), asset);
+        BufferedImage[] cor = split == null ? null : render(file, with(pose, "--method", "cor"), width, height,
+                work.resolve("cor.png"), asset);
         step.run();
-        BufferedImage[] difference = cor == null ? null : render(file, List.of("--method", "lbs", "--view",
-                "difference", "--time", time), width, height, work.resolve("difference.png"), asset);
+        BufferedImage[] difference = cor == null ? null : render(file, with(pose, "--method", "lbs", "--view",
+                "difference"), width, height, work.resolve("difference.png"), asset);
         step.run();
         if (difference == null) {
             return;
@@ -174,6 +179,12 @@ final class EvalPicturesSection implements EvalSection {
         asset.put("dqsCorPixelsPercent",
                 EvalReport.round(PanelPixels.differingPercent(panels[1], models[1], panels[2], models[2])));
         pictures.put(name, panels);
+    }
+
+    private static List<String> with(List<String> pose, String... more) {
+        List<String> all = new ArrayList<>(List.of(more));
+        all.addAll(pose);
+        return all;
     }
 
     /** LBS against DQS at the bind pose (time 0), where both place every point alike. */
@@ -222,25 +233,71 @@ final class EvalPicturesSection implements EvalSection {
     }
 
     /**
-     * {elapsed seconds from the clip's start, largest LBS-DQS distance over the model's size, clip
-     * length}: the sample of the first clip where the methods lie furthest apart.
+     * The sample of the first clip where LBS and DQS lie furthest apart: its time from the clip's
+     * start, that distance over the model's size, the clip's length, and the yaw the camera looks
+     * from so that the largest displacement lies across its view (shows in the silhouette).
      */
-    private static double[] extremePose(Model model, boolean quick) {
+    private record Extreme(double elapsed, double relative, double clipSeconds, double yawDegrees) {
+    }
+
+    private static Extreme extremePose(Model model, boolean quick) {
         SkinnedModel skinned = new SkinnedModel(model, model.clips().isEmpty() ? null : model.clips().get(0),
                 NormalTransform.INVERSE_TRANSPOSE);
         float start = skinned.sampler().start();
         float end = skinned.sampler().end();
-        double bestTime = 0;
+        float bestTime = start;
         double best = -1;
         List<MethodComparison> comparisons = comparisons(skinned);
         for (float t : EvalQualitySection.times(start, end, quick)) {
             double d = lbsDqs(skinned, comparisons, t);
             if (d > best) {
                 best = d;
-                bestTime = t - start;
+                bestTime = t;
             }
         }
-        return new double[] {bestTime, Math.max(0, best), end - start};
+        lbsDqs(skinned, comparisons, bestTime);
+        return new Extreme(bestTime - start, Math.max(0, best), end - start, yawAcross(model, comparisons));
+    }
+
+    /**
+     * The camera yaw (degrees, as {@code skinlab view --yaw} takes it, within 90 of the front) whose
+     * view direction is square to the largest LBS-DQS displacement of the pose the comparisons
+     * last measured, in the scene's Y-up frame; 0 when that displacement is vertical or none.
+     */
+    private static double yawAcross(Model model, List<MethodComparison> comparisons) {
+        MethodComparison widest = null;
+        for (MethodComparison c : comparisons) {
+            if (widest == null || c.maxDistance() > widest.maxDistance()) {
+                widest = c;
+            }
+        }
+        if (widest == null || !(widest.maxDistance() > 0)) {
+            return 0;
+        }
+        float[] d = widest.distances();
+        int far = 0;
+        for (int i = 1; i < d.length; i++) {
+            if (d[i] > d[far]) {
+                far = i;
+            }
+        }
+        float[] lbs = widest.lbsPositions();
+        float[] dqs = widest.dqsPositions();
+        Vector3f v = new Vector3f(dqs[3 * far] - lbs[3 * far], dqs[3 * far + 1] - lbs[3 * far + 1],
+                dqs[3 * far + 2] - lbs[3 * far + 2]);
+        model.asset().toYUpMeters(new Matrix4f()).transformDirection(v);
+        double horizontal = Math.hypot(v.x, v.z);
+        if (horizontal < 1e-3 * v.length()) {
+            return 0;
+        }
+        // The eye sits at (sin yaw, cos yaw) around the target: square to v when sin(yaw) v.x + cos(yaw) v.z = 0.
+        double yaw = Math.toDegrees(Math.atan2(-v.z, v.x));
+        if (yaw > 90) {
+            yaw -= 180;
+        } else if (yaw <= -90) {
+            yaw += 180;
+        }
+        return yaw;
     }
 
     private static double lbsDqsAt(Model model, float elapsed) {
@@ -295,13 +352,16 @@ final class EvalPicturesSection implements EvalSection {
                         "/samplesPerClip") + " times from start to end" : EvalReport.num(results, "/samplesPerSecond")
                         + " times a second") + ", at which the largest distance between a point's LBS and DQS"
                 + " positions, over the model's size, is largest (`MethodComparison`, what the difference view"
-                + " measures). The difference view draws the LBS shape coloured by that distance per point: blue"
+                + " measures). The camera turns around the model (`--yaw`) until the point the methods move furthest"
+                + " apart moves across its view, so the difference shows in the outline. The difference view draws"
+                + " the LBS shape coloured by that distance per point: blue"
                 + " for none, through cyan, green and yellow, to red for " + EvalReport.num(results,
                         "/differenceFullPercent") + " % of the model's size or more. Measured in the pictures: the"
                 + " share of each panel the model covers, and the share of the model's pixels (in either panel)"
                 + " whose colour differs by more than " + EvalReport.num(results, "/pixelTolerance") + " levels"
                 + " between LBS and DQS, and between DQS and CoR.");
-        report.header("asset", "time (s)", "clip (s)", "max abs(LBS - DQS) %", "LBS cover %", "DQS cover %",
+        report.header("asset", "time (s)", "clip (s)", "max abs(LBS - DQS) %", "yaw (degrees)", "LBS cover %",
+                "DQS cover %",
                 "CoR cover %", "difference cover %", "LBS vs DQS pixels %", "DQS vs CoR pixels %");
         JsonNode assets = results.get("assets");
         List<String> skipped = new ArrayList<>();
@@ -316,7 +376,7 @@ final class EvalPicturesSection implements EvalSection {
                 continue;
             }
             report.row(file, EvalReport.num(results, p + "/time"), EvalReport.num(results, p + "/clipSeconds"),
-                    EvalReport.num(results, p + "/maxLbsDqsPercent"),
+                    EvalReport.num(results, p + "/maxLbsDqsPercent"), EvalReport.num(results, p + "/yawDegrees"),
                     EvalReport.numOrDash(results, p + "/coveragePercent/lbs"),
                     EvalReport.numOrDash(results, p + "/coveragePercent/dqs"),
                     EvalReport.numOrDash(results, p + "/coveragePercent/cor"),
@@ -350,7 +410,9 @@ final class EvalPicturesSection implements EvalSection {
                     sheet(file + " at " + EvalReport.format(asset.get("time")) + " s of "
                             + EvalReport.format(asset.get("clipSeconds")) + " s: LBS and DQS up to "
                             + EvalReport.format(asset.get("maxLbsDqsPercent"))
-                            + " % of the model's size apart", panels, labels(results)));
+                            + " % of the model's size apart (seen from yaw "
+                            + EvalReport.format(asset.get("yawDegrees"))
+                            + " degrees)", panels, labels(results)));
         }
         pictures.clear();
     }
