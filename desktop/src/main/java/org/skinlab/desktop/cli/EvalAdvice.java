@@ -141,6 +141,10 @@ final class EvalAdvice {
                 }
             }
         }
+        if (lbs < 0 || dqs < 0) {
+            report.paragraph(t + "Not argued here: no scalar kernels' lines were measured.");
+            return;
+        }
         t.append("In the scalar code a phone runs, the fitted lines put ")
                 .append(EvalReport.num(r, "/vertices/series/" + lbs + "/verticesInBudget")).append(" vertices (LBS) or ")
                 .append(EvalReport.num(r, "/vertices/series/" + dqs + "/verticesInBudget"))

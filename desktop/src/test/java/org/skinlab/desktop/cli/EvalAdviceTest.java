@@ -3,7 +3,6 @@ package org.skinlab.desktop.cli;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 
@@ -15,8 +14,9 @@ import org.junit.jupiter.api.io.TempDir;
 
 /**
  * {@code skinlab eval}'s advice: the fitted lines, and recommendations argued from the numbers
- * of the sections run before it (here quality only, whose numbers are deterministic; the time
- * section's are not, so no test asserts what they recommend). About 15 s.
+ * of the sections run before it (from the shared quick run, {@link EvalQuickRun}; only the quality
+ * numbers are deterministic, so no test asserts what the timings recommend), and what it says
+ * when a section it argues from was not run.
  */
 class EvalAdviceTest {
     @Test
@@ -39,13 +39,11 @@ class EvalAdviceTest {
     }
 
     @Test
-    void theAdviceArguesFromTheQualityNumbersAndSaysWhatItLacks(@TempDir Path dir) throws Exception {
-        Cli run = Cli.run("eval", "--quick", "--only", "quality,advice", "--out", dir.toString());
-        assertEquals(ExitCodes.OK, run.status, run.err);
-        JsonNode results = new ObjectMapper().readTree(dir.resolve("results.json").toFile());
-        String readme = Files.readString(dir.resolve("README.md"));
-        assertEquals(List.of("quality", "advice"), Cli.keys(results.get("sections")));
-        List<String> linked = EvalReportCheck.figuresAndNumbers(dir, results, readme);
+    void theAdviceArguesFromTheQualityNumbers() {
+        EvalQuickRun run = EvalQuickRun.get();
+        JsonNode results = run.results;
+        String readme = run.readme;
+        List<String> linked = EvalReportCheck.linked(readme);
         assertTrue(linked.containsAll(List.of("advice-vertices.png", "advice-influences.png")), linked.toString());
 
         JsonNode advice = results.at("/sections/advice");
@@ -60,8 +58,9 @@ class EvalAdviceTest {
         assertTrue(readme.contains("need DQS or CoR"), readme);
         // DQS bulges more than CoR on the bend and CoR keeps more volume than LBS: CoR for close-ups.
         assertTrue(readme.contains("Close to the camera, where a joint fills the screen, CoR"), readme);
-        // No time section in this run: the crowd advice says so instead of guessing.
-        assertTrue(readme.contains("**Crowds.** Not argued here: the section `time` was not run"), readme);
+        // The crowd advice is argued from the time section's character.
+        assertEquals(results.at("/sections/advice/inputs/character/scalar/lbsMicros").asDouble(),
+                lbsMicros(results.at("/sections/time/assets")), 0);
 
         // The budget is the fitted line's, as stored.
         for (JsonNode s : advice.at("/vertices/series")) {
@@ -77,5 +76,31 @@ class EvalAdviceTest {
         JsonNode humanoid = advice.at("/joints/files/0");
         assertEquals("humanoid-walk.dae", humanoid.get("file").asText());
         assertEquals(19, humanoid.get("joints").asInt());
+    }
+
+    @Test
+    void aUseWhoseSectionWasNotRunSaysSo(@org.junit.jupiter.api.io.TempDir Path dir) {
+        com.fasterxml.jackson.databind.node.ObjectNode results = new ObjectMapper().createObjectNode();
+        results.putObject("inputs");
+        results.putObject("vertices").putArray("series");
+        EvalReport report = new EvalReport(dir, new ObjectMapper().createObjectNode());
+        EvalAdvice.write(results, report);
+        String text = report.markdown();
+        assertTrue(text.contains("**Crowds.** Not argued here: the section `time` was not run"), text);
+        assertTrue(text.contains("**Twisting limbs.** Not argued here: the section `quality` was not run"), text);
+    }
+
+    private static double lbsMicros(JsonNode timeAssets) {
+        for (JsonNode a : timeAssets) {
+            if (a.get("file").asText().equals(EvalAdviceSection.CHARACTER)) {
+                for (JsonNode r : a.get("runs")) {
+                    if (r.get("method").asText().equals("lbs") && r.get("kernels").asText().equals("scalar")
+                            && r.get("influences").asText().equals("all")) {
+                        return r.get("medianMicros").asDouble();
+                    }
+                }
+            }
+        }
+        throw new AssertionError("no scalar LBS run of " + EvalAdviceSection.CHARACTER);
     }
 }

@@ -5,41 +5,35 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.awt.image.BufferedImage;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 
 import javax.imageio.ImageIO;
 
 import com.fasterxml.jackson.databind.JsonNode;
-import com.fasterxml.jackson.databind.ObjectMapper;
 
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
 import org.skinlab.desktop.render.GlTestDisplay;
 
 /**
- * {@code skinlab eval --quick --only pictures}: the viewer's pictures of the twist cylinder and the
+ * {@code skinlab eval --quick}'s pictures ({@link EvalQuickRun}): the viewer's pictures of the twist cylinder and the
  * walking character, checked against what the assets are known to do (assets/README.md): the
  * twist reaches 172 degrees at the clip's end (4 s), where LBS collapses the joint (the candy
  * wrapper) and DQS keeps it, so the LBS and DQS pictures differ over much of the cylinder; at the
  * bind pose every method places every point alike, so the pictures are the same; the walk's
  * joints bend little, so its LBS and DQS pictures nearly agree. Each panel shows its model, framed
- * (covering a sane share of the picture). 19 to 28 s on the project's 2-core machine (7 child
- * JVMs drawing with Mesa's software renderer).
+ * (covering a sane share of the picture).
  */
 class EvalPicturesTest {
     @Test
-    void picturesShowTheCandyWrapperWhereTheMethodsDifferAndAgreeElsewhere(@TempDir Path dir) throws Exception {
+    void picturesShowTheCandyWrapperWhereTheMethodsDifferAndAgreeElsewhere() throws Exception {
         GlTestDisplay.assume();
-        Cli run = Cli.run("eval", "--quick", "--only", "pictures", "--out", dir.toString());
-        assertEquals(ExitCodes.OK, run.status, run.err);
-        JsonNode results = new ObjectMapper().readTree(dir.resolve("results.json").toFile());
-        String readme = Files.readString(dir.resolve("README.md"));
-        assertEquals(List.of("pictures"), Cli.keys(results.get("sections")));
-        JsonNode pictures = results.at("/sections/pictures");
+        EvalQuickRun run = EvalQuickRun.get();
+        Path dir = run.dir;
+        JsonNode pictures = run.section("pictures");
         assertFalse(pictures.has("skipped"), pictures.toString());
-        List<String> linked = EvalReportCheck.figuresAndNumbers(dir, results, readme);
+        List<String> linked = EvalReportCheck.linked(run.readme).stream().filter(f -> f.startsWith("pictures-"))
+                .collect(java.util.stream.Collectors.toList());
         assertEquals(List.of("pictures-cylinder-twist-high.png", "pictures-humanoid-walk.png"), linked);
 
         // Each figure: four panels side by side, above the footer.
