@@ -21,13 +21,19 @@ import org.skinlab.skinning.SkinningMethod;
 final class CrowdBench {
     /** A frame's budget at 60 Hz, in ms: what "characters per frame" divides. */
     static final double FRAME_MILLIS = 1000.0 / 60;
+    /** Most timed frames per measurement. */
+    static final int MAX_FRAMES = 1 << 16;
+    /** Bytes a frame below which the kernels count as compiled (a frame of an uncompiled one allocates megabytes). */
+    static final int COMPILED_BYTES = 1024;
 
     /**
-     * Frames of a crowd: the median and fastest frame in ms, and the bytes the crowd's threads
-     * allocated per timed frame (0 once the JIT has compiled the kernels).
+     * Frames of a crowd: the median and fastest frame in ms, the bytes the crowd's threads
+     * allocated per timed frame (0 once the JIT has compiled the kernels), and the share of the
+     * copies the calling thread ran itself (1 on one thread; near 1 / threads when the pool's
+     * threads get cores).
      */
     record Timing(SkinningMethod method, int characters, int threads, int frames, double medianMillis,
-            double minMillis, double bytesPerFrame) {
+            double minMillis, double bytesPerFrame, double callerShare) {
     }
 
     private final SkinnedModel[] characters;
@@ -37,6 +43,8 @@ final class CrowdBench {
     private final float[][][] positions;
     private final float[][][] normals;
     private final int points;
+    /** The timed frames' times, in ms (preallocated: the timing loop allocates nothing). */
+    private final double[] millis = new double[MAX_FRAMES];
 
     // The frame being run, written before CrowdThreads.run hands the copies out.
     private SkinningMethod method;
@@ -83,38 +91,81 @@ final class CrowdBench {
 
     /**
      * {@code count} copies on {@code threads} threads: frames for {@code warmupSeconds}, then timed
-     * frames for {@code seconds} (at least 5).
+     * frames for {@code seconds} (at least 5, at most {@value #MAX_FRAMES}).
      */
     Timing measure(SkinningMethod m, int count, int threads, double warmupSeconds, double seconds) {
-        if (count < 1 || count > characters.length) {
-            throw new IllegalArgumentException("characters must be 1 to " + characters.length + ", was " + count);
-        }
+        check(count);
         method = m;
         try (CrowdThreads pool = new CrowdThreads(threads, this::character)) {
             long warmupEnd = System.nanoTime() + (long) (warmupSeconds * 1e9);
             do {
                 step(pool, count);
             } while (System.nanoTime() < warmupEnd);
-            com.sun.management.ThreadMXBean mx = (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
             long[] ids = pool.threadIds(Thread.currentThread());
-            long bytesBefore = sum(mx.getThreadAllocatedBytes(ids));
-            double[] millis = new double[256];
+            long bytesBefore = allocated(ids);
+            // What counting costs itself (its result arrays), taken off the frames' bytes.
+            long counting = allocated(ids) - bytesBefore;
+            long workerItems = pool.workerItems();
             int n = 0;
             long end = System.nanoTime() + (long) (seconds * 1e9);
-            while (n < 5 || System.nanoTime() < end) {
+            while (n < MAX_FRAMES && (n < 5 || System.nanoTime() < end)) {
                 long t0 = System.nanoTime();
                 step(pool, count);
-                long t1 = System.nanoTime();
-                if (n == millis.length) {
-                    millis = Arrays.copyOf(millis, 2 * n);
-                }
-                millis[n++] = (t1 - t0) / 1e6;
+                millis[n++] = (System.nanoTime() - t0) / 1e6;
             }
-            long bytes = sum(mx.getThreadAllocatedBytes(ids)) - bytesBefore;
+            long bytes = allocated(ids) - bytesBefore - 2 * counting;
+            double callerShare = 1 - (double) (pool.workerItems() - workerItems) / ((long) n * count);
             double[] sorted = Arrays.copyOf(millis, n);
             Arrays.sort(sorted);
-            return new Timing(m, count, threads, n, sorted[n / 2], sorted[0], (double) bytes / n);
+            return new Timing(m, count, threads, n, sorted[n / 2], sorted[0], Math.max(0, bytes) / (double) n,
+                    callerShare);
         }
+    }
+
+    /**
+     * Runs frames of {@code count} copies on {@code threads} threads for at least {@code minSeconds},
+     * then on until a tenth of a second of frames allocates under {@value #COMPILED_BYTES} bytes a
+     * frame (the JIT has compiled the kernels: before, the Vector API allocates its vectors and
+     * runs many times slower) or {@code maxSeconds} have passed. Returns the seconds it took.
+     */
+    double warmUp(SkinningMethod m, int count, int threads, double minSeconds, double maxSeconds) {
+        check(count);
+        method = m;
+        long start = System.nanoTime();
+        try (CrowdThreads pool = new CrowdThreads(threads, this::character)) {
+            long[] ids = pool.threadIds(Thread.currentThread());
+            long minEnd = start + (long) (minSeconds * 1e9);
+            long maxEnd = start + (long) (maxSeconds * 1e9);
+            while (true) {
+                long bytes = allocated(ids);
+                long windowEnd = System.nanoTime() + 100_000_000L;
+                int frames = 0;
+                do {
+                    step(pool, count);
+                    frames++;
+                } while (System.nanoTime() < windowEnd);
+                long now = System.nanoTime();
+                boolean compiled = allocated(ids) - bytes < (long) COMPILED_BYTES * frames;
+                if (now >= maxEnd || now >= minEnd && compiled) {
+                    return (now - start) / 1e9;
+                }
+            }
+        }
+    }
+
+    private void check(int count) {
+        if (count < 1 || count > characters.length) {
+            throw new IllegalArgumentException("characters must be 1 to " + characters.length + ", was " + count);
+        }
+    }
+
+    private static long allocated(long[] ids) {
+        com.sun.management.ThreadMXBean mx = (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
+        long s = 0;
+        for (long v : mx.getThreadAllocatedBytes(ids)) {
+            s += Math.max(0, v);
+        }
+        return s;
     }
 
     private void step(CrowdThreads pool, int count) {
@@ -127,11 +178,4 @@ final class CrowdBench {
         FrameBench.frame(characters[c], skinners, method, phases[c] + frame / 60.0, positions[c], normals[c]);
     }
 
-    private static long sum(long[] values) {
-        long s = 0;
-        for (long v : values) {
-            s += Math.max(0, v);
-        }
-        return s;
-    }
 }

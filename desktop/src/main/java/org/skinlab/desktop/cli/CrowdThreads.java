@@ -36,6 +36,8 @@ final class CrowdThreads implements AutoCloseable {
     private volatile int count;
     private int generation;
     private volatile boolean closed;
+    /** Items the workers have run over every frame so far (the caller's count). */
+    private long workerItems;
 
     /** {@code threads} in all, the caller's included (1: the caller runs every item). */
     CrowdThreads(int threads, IntConsumer task) {
@@ -53,6 +55,11 @@ final class CrowdThreads implements AutoCloseable {
 
     int threads() {
         return workers.length + 1;
+    }
+
+    /** Items the workers (not the caller) have run over every frame so far. */
+    long workerItems() {
+        return workerItems;
     }
 
     /** The ids of every thread that runs items (for counting their allocations). */
@@ -90,6 +97,7 @@ final class CrowdThreads implements AutoCloseable {
                 Thread.yield();
             }
         }
+        workerItems += items - mine;
         Throwable t = failure.getAndSet(null);
         if (t instanceof RuntimeException) {
             throw (RuntimeException) t;

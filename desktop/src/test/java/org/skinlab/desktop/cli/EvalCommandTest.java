@@ -94,9 +94,9 @@ class EvalCommandTest {
 
     @Test
     void anUnknownSectionIsAUsageErrorNamingTheValidOnes(@TempDir Path dir) {
-        Cli run = Cli.run("eval", "--only", "load,crowds", "--out", dir.toString());
+        Cli run = Cli.run("eval", "--only", "load,crowd", "--out", dir.toString());
         assertEquals(ExitCodes.USAGE, run.status);
-        assertTrue(run.err.contains("unknown section \"crowds\" (valid: load, time, quality)"), run.err);
+        assertTrue(run.err.contains("unknown section \"crowd\" (valid: load, time, crowds, quality)"), run.err);
     }
 
     @Test
