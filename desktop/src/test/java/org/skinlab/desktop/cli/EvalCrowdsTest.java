@@ -16,7 +16,6 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.skinlab.skinning.SkinningMethod;
-import org.skinlab.testing.TestPaths;
 
 /**
  * {@code skinlab eval --quick --only crowds}: the report and its figures from results.json, and the
@@ -46,7 +45,7 @@ class EvalCrowdsTest {
         int cores = Runtime.getRuntime().availableProcessors();
         assertEquals(cores, r.get("cores").asInt());
         assertEquals(1000.0 / 60, r.get("frameBudgetMillis").asDouble(), 1e-3);
-        boolean cowboy = Files.isRegularFile(TestPaths.shared().resolve("corpus/S01_cowboy.dae"));
+        boolean cowboy = Files.isRegularFile(Cli.shared().resolve("corpus/S01_cowboy.dae"));
         assertEquals(cowboy ? 2 : 1, r.get("models").size(), r.toString());
         assertEquals(!cowboy, r.has("cowboySkipped"));
 
