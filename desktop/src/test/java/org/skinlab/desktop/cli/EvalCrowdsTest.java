@@ -26,7 +26,7 @@ import org.skinlab.skinning.SkinningMethod;
  * point measured at 12, and the drawn part names its renderer (Xvfb's llvmpipe here, which the
  * report must call a software rasteriser) or says why it is skipped. No speed-up from a second
  * thread is asserted: on the project's busy 2-core machine the second thread often gets no core
- * (the report's caller's share shows it). About 45 s on that machine while others work (the quick
+ * (the report's caller's share shows it). 27 to 33 s on that machine while others work (the quick
  * section: warm-ups up to 3 s per method and character, and 12 drawn points of the cowboy).
  */
 class EvalCrowdsTest {
