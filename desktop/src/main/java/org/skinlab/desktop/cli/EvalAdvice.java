@@ -20,7 +20,36 @@ final class EvalAdvice {
 
     /** Copies the crowds' and the tracker's numbers the advice uses (when those sections ran). */
     static void crowdsAndTracking(EvalContext context, ObjectNode in) {
-        // Filled from the crowds and tracking sections once they report into results.json.
+        JsonNode crowds = context.measured("crowds");
+        if (crowds != null) {
+            for (JsonNode m : crowds.path("models")) {
+                if (!m.get("file").asText().equals(EvalAdviceSection.CHARACTER)) {
+                    continue;
+                }
+                ObjectNode c = in.putObject("crowds");
+                c.put("cores", crowds.get("cores").asInt());
+                c.put("crowd", crowds.get("threadCrowd").asInt());
+                for (JsonNode p : m.get("threads")) {
+                    if (p.get("threads").asInt() == crowds.get("cores").asInt()) {
+                        c.put(p.get("method").asText() + "PerFrame", Math.round(p.get("charactersPerFrame").asDouble()));
+                    }
+                }
+            }
+            JsonNode render = crowds.path("render");
+            if (render.has("renderer")) {
+                for (JsonNode row : crowds.path("atTwelve")) {
+                    if (row.get("what").asText().equals("render-gpu") && row.get("method").asText().equals("dqs")) {
+                        ObjectNode d = in.putObject("drawn");
+                        d.put("file", row.get("file").asText());
+                        d.put("renderer", render.get("renderer").asText());
+                        d.put("software", render.path("software").asBoolean(false));
+                        d.put("copies", EvalCrowdsSection.THESIS_MESHES);
+                        d.put("gpuDqsFps", row.get("fps").asDouble());
+                        d.put("thesisDqsFps", row.get("thesisFps").asDouble());
+                    }
+                }
+            }
+        }
     }
 
     static void write(JsonNode results, EvalReport report) {
@@ -66,6 +95,14 @@ final class EvalAdvice {
             }
         } else {
             t.append(missing("quality"));
+        }
+        if (in.has("crowds")) {
+            t.append(" With all ").append(EvalReport.num(r, "/inputs/crowds/cores")).append(" cores of this machine on a"
+                    + " crowd of ").append(EvalReport.num(r, "/inputs/crowds/crowd")).append(" walkers (the crowds section, the fastest kernels), ")
+                    .append(EvalReport.num(r, "/inputs/crowds/lbsPerFrame")).append(" (LBS), ")
+                    .append(EvalReport.num(r, "/inputs/crowds/dqsPerFrame")).append(" (DQS) and ")
+                    .append(EvalReport.num(r, "/inputs/crowds/corPerFrame"))
+                    .append(" (CoR) characters are skinned per frame.");
         }
         report.paragraph(t.toString());
     }
@@ -160,6 +197,15 @@ final class EvalAdvice {
             }
         }
         t.append(". ");
+        if (in.has("drawn")) {
+            t.append("Drawn with GPU skinning, ").append(EvalReport.num(r, "/inputs/drawn/copies")).append(" copies of `")
+                    .append(in.at("/drawn/file").asText()).append("` run at ")
+                    .append(EvalReport.num(r, "/inputs/drawn/gpuDqsFps")).append(" fps with DQS on `")
+                    .append(in.at("/drawn/renderer").asText()).append("`")
+                    .append(in.at("/drawn/software").asBoolean() ? ", a software rasteriser on the CPU, not a GPU" : "")
+                    .append(" (the thesis' phone: ").append(EvalReport.num(r, "/inputs/drawn/thesisDqsFps"))
+                    .append(" fps). ");
+        }
         if (in.has("cap")) {
             t.append("A GPU reads ").append(EvalReport.num(r, "/inputs/cap/cap"))
                     .append(" influences per vertex; capping `").append(in.at("/cap/file").asText())
