@@ -23,7 +23,8 @@ import java.util.concurrent.locks.LockSupport;
  * fields, published by the volatile write of a claim word that holds the frame's generation in
  * its high half and the next chunk in its low half. A worker claims chunks by compare-and-set
  * only while the generation is the one it saw, so a worker that wakes late cannot take a chunk of
- * a later frame with the arguments of an earlier one. Workers spin briefly ({@link
+ * a later frame with the arguments of an earlier one, and the caller closes each frame's claim
+ * before it writes the next frame's arguments. Workers spin briefly ({@link
  * Thread#onSpinWait()}: frames are microseconds apart while animating), then park, and are
  * unparked only if they parked. The caller waits until every chunk is done (spin, then yield).
  *
@@ -62,6 +63,9 @@ public final class ParallelSkinner implements Skinner, AutoCloseable {
     private int to;
     private int chunkSize;
     private int chunkCount;
+
+    /** The chunk index of a finished frame's claim: above every chunk count. */
+    private static final long CLOSED = Integer.MAX_VALUE;
 
     /** Generation (high 32 bits) and next unclaimed chunk (low 32 bits). */
     private final AtomicLong claim = new AtomicLong();
@@ -170,6 +174,10 @@ public final class ParallelSkinner implements Skinner, AutoCloseable {
                 Thread.yield();
             }
         }
+        // Close the frame before the next call rewrites the fields: a worker still in runChunks
+        // may read the next frame's larger chunk count against this frame's exhausted claim, and
+        // its compare-and-set must then fail, or it would run and count a chunk of the next frame.
+        claim.set(((long) generation << 32) | CLOSED);
         palette = null;
         outPositions = outNormals = outFrames = null;
         Throwable t = failure.get();
