@@ -36,12 +36,14 @@ import picocli.CommandLine.Model.CommandSpec;
                 + " DIR/results.json with every number. Sections so far: load (import time: our assets, the shared"
                 + " corpus, the conformance suite, assimp beside), time (time per deformation: LBS, DQS, CoR; SIMD and"
                 + " scalar; 4 influences and all; beside the thesis' table), quality (volume kept over each clip, joint ring against"
-                + " twist, bulge against bend, largest distance between methods, the error of capping influences).",
+                + " twist, bulge against bend, largest distance between methods, the error of capping influences),"
+                + " tracking (markers found and pose error per distance and tilt, false markers, time per frame"
+                + " beside BoofCV's detector).",
             "Run it from the repository (it reads assets/ and ../shared). The full run takes minutes; --quick under 3."})
 public final class EvalCommand implements Callable<Integer> {
     /** The sections in report order; a new section is one entry here. */
     static final List<EvalSection> SECTIONS = List.of(new EvalLoadSection(), new EvalTimeSection(),
-            new EvalQualitySection());
+            new EvalQualitySection(), new EvalTrackingSection());
 
     @Option(names = "--out", paramLabel = "DIR", description = "where the report goes (default: ${DEFAULT-VALUE})")
     Path out = Path.of("docs/evaluation");
@@ -51,7 +53,7 @@ public final class EvalCommand implements Callable<Integer> {
     boolean quick;
 
     @Option(names = "--only", paramLabel = "SECTION", split = ",",
-            description = "only these sections (comma-separated), of: load, time, quality")
+            description = "only these sections (comma-separated), of: load, time, quality, tracking")
     List<String> only = new ArrayList<>();
 
     @Spec

@@ -96,7 +96,7 @@ class EvalCommandTest {
     void anUnknownSectionIsAUsageErrorNamingTheValidOnes(@TempDir Path dir) {
         Cli run = Cli.run("eval", "--only", "load,crowds", "--out", dir.toString());
         assertEquals(ExitCodes.USAGE, run.status);
-        assertTrue(run.err.contains("unknown section \"crowds\" (valid: load, time, quality)"), run.err);
+        assertTrue(run.err.contains("unknown section \"crowds\" (valid: load, time, quality, tracking)"), run.err);
     }
 
     @Test
