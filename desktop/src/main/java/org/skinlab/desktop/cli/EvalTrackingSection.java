@@ -306,6 +306,8 @@ final class EvalTrackingSection implements EvalSection {
                 "Markers found against distance, a line per tilt band", Styler.LegendPosition.InsideSW, report);
         binFigure(results, "medianPositionMm", "median position error (mm)", "tracking-position-error.png",
                 "Median position error against distance, a line per tilt band", Styler.LegendPosition.InsideNW, report);
+        binFigure(results, "medianRotationDegrees", "median rotation error (degrees)", "tracking-rotation-error.png",
+                "Median rotation error against distance, a line per tilt band", Styler.LegendPosition.InsideNW, report);
 
         report.heading(3, "False markers");
         report.paragraph("Markers reported on frames that show none of the dictionary's (`NegativeFrames`): "
