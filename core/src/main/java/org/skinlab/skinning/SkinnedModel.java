@@ -60,6 +60,35 @@ public final class SkinnedModel {
         pose(sampler.start(), RotationInterpolation.SLERP);
     }
 
+    /**
+     * Another character of the same model playing the same clip (a crowd): it shares this one's
+     * skeleton, sampler and geometries, which are read-only, and starts with its skinners, and owns
+     * its pose and palettes, so each copy poses at its own time and on its own thread with the
+     * memory of a palette set instead of a whole model (and CoR's centres are computed once per
+     * geometry, not per copy). Call it on the thread that drives this model.
+     */
+    public SkinnedModel newCharacter() {
+        return new SkinnedModel(this);
+    }
+
+    private SkinnedModel(SkinnedModel template) {
+        this.model = template.model;
+        this.normals = template.normals;
+        this.skeleton = template.skeleton;
+        this.sampler = template.sampler;
+        this.pose = skeleton.newPose();
+        this.geometries = template.geometries;
+        int n = geometries.size();
+        palettes = new JointPalette[n];
+        dualQuaternionsReady = new boolean[n];
+        skinners = new Skinner[n][];
+        for (int g = 0; g < n; g++) {
+            palettes[g] = geometries.get(g).newPalette();
+            skinners[g] = template.skinners[g].clone();
+        }
+        pose(sampler.start(), RotationInterpolation.SLERP);
+    }
+
     /** The model with its first clip (or at rest when it has none) and exact normals. */
     public static SkinnedModel of(Model model) {
         return new SkinnedModel(model, model.clips().isEmpty() ? null : model.clips().get(0),

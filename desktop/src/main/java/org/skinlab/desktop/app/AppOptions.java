@@ -16,6 +16,8 @@ import org.skinlab.skinning.SkinningMethod;
  * @param view            shaded, weights or difference
  * @param splitMethod     a second method drawn beside the first (split view), or null
  * @param time            a playback time to show, paused; null: play from the start
+ * @param yawDegrees      the angle around the model's vertical axis the camera frames it from
+ *                        (0: from the front, +z; 90: from +x)
  * @param screenshot      render one frame, write it to this PNG and exit; null: interactive
  * @param width           window (and screenshot) width in pixels
  * @param height          window (and screenshot) height in pixels
@@ -25,8 +27,8 @@ import org.skinlab.skinning.SkinningMethod;
  * @param glDebug         a debug context; GL errors are printed and make the exit status non-zero
  */
 public record AppOptions(Path file, SkinningMethod method, RotationInterpolation interpolation, boolean gpuSkinning,
-        DrawSettings.View view, SkinningMethod splitMethod, Double time, Path screenshot, int width, int height,
-        boolean hideUi, Path script, int exitAfterFrames, boolean glDebug) {
+        DrawSettings.View view, SkinningMethod splitMethod, Double time, double yawDegrees, Path screenshot, int width,
+        int height, boolean hideUi, Path script, int exitAfterFrames, boolean glDebug) {
 
     public static final int DEFAULT_WIDTH = 1280;
     public static final int DEFAULT_HEIGHT = 800;
@@ -34,7 +36,7 @@ public record AppOptions(Path file, SkinningMethod method, RotationInterpolation
     /** The interactive window on the default character. */
     public static AppOptions defaults() {
         return new AppOptions(null, SkinningMethod.LBS, RotationInterpolation.SLERP, true, DrawSettings.View.SHADED,
-                null, null, null, DEFAULT_WIDTH, DEFAULT_HEIGHT, false, null, 0, false);
+                null, null, 0, null, DEFAULT_WIDTH, DEFAULT_HEIGHT, false, null, 0, false);
     }
 
     /** Whether this run renders one picture and exits. */

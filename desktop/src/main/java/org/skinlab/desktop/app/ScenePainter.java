@@ -25,9 +25,6 @@ import org.skinlab.skinning.SkinningMethod;
  * {@link AppFrame} the interface shows. GL thread only.
  */
 final class ScenePainter implements AutoCloseable {
-    /** The top of the difference colour map: this share of the model's size. */
-    private static final float DIFFERENCE_FULL = 0.05f;
-
     private final GlWindow window;
     private final Viewer viewer;
     private final AnimationConfig config;
@@ -139,7 +136,7 @@ final class ScenePainter implements AutoCloseable {
         }
         difference.measure(frame);
         info.maxDifference = difference.maxRelative();
-        info.differenceFull = DIFFERENCE_FULL;
+        info.differenceFull = DrawSettings.DIFFERENCE_FULL;
         info.lbsVolume = difference.lbsVolume();
         info.dqsVolume = difference.dqsVolume();
         boolean cpuFrame = frame.hasSkinnedMesh();
@@ -190,7 +187,7 @@ final class ScenePainter implements AutoCloseable {
         draw.selectedNode = viewer.selectedJointNode();
         // Distances in the shader are in the file's units, as the probe's size is.
         draw.scalarFull = draw.view == DrawSettings.View.DIFFERENCE
-                ? (float) (DIFFERENCE_FULL * difference.size()) : 1f;
+                ? (float) (DrawSettings.DIFFERENCE_FULL * difference.size()) : 1f;
         draw.instances = instances;
         draw.gridColumns = columns;
         draw.spacing = shown.framing().gridSpacing();

@@ -69,6 +69,7 @@ public final class SkinlabApp implements AutoCloseable {
             config.stopAnimation();
         }
         viewer = new Viewer(ModelLibrary.find(), config, !options.headless());
+        viewer.camera().setHomeYaw((float) Math.toRadians(options.yawDegrees()));
         viewer.settings().setView(options.view());
         viewer.settings().setSplit(options.splitMethod() != null);
         debugLog = options.glDebug() ? GlDebugLog.install(window.capabilities()) : null;

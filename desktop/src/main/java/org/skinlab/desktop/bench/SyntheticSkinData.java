@@ -14,10 +14,12 @@ import org.skinlab.skinning.SkinnedGeometry;
  */
 public final class SyntheticSkinData {
     public static final int JOINTS = 64;
+    /** Influences per point of the reference's data. */
     public static final int INFLUENCES = 4;
     public static final long SEED = 42L;
 
     private final int points;
+    private final int influences;
     /** Per joint a row-major 3x4 affine matrix (r00 r01 r02 tx, r10 ..). */
     private final float[] matrices = new float[12 * JOINTS];
     /** Per joint a unit dual quaternion, real (x y z w) then dual (x y z w). */
@@ -33,10 +35,23 @@ public final class SyntheticSkinData {
     }
 
     public SyntheticSkinData(int points, long seed) {
+        this(points, seed, INFLUENCES);
+    }
+
+    /**
+     * Data with {@code influences} distinct joints per point (1 to {@link #JOINTS}), drawn the same
+     * way; with {@link #INFLUENCES} it is the reference's, bit for bit. Other counts measure how the
+     * cost grows with influences, on the same joints and positions.
+     */
+    public SyntheticSkinData(int points, long seed, int influences) {
         if (points < 0) {
             throw new IllegalArgumentException("points must not be negative, was " + points);
         }
+        if (influences < 1 || influences > JOINTS) {
+            throw new IllegalArgumentException("influences must be 1 to " + JOINTS + ", was " + influences);
+        }
         this.points = points;
+        this.influences = influences;
         SplitMix64 r = new SplitMix64(seed);
         for (int j = 0; j < JOINTS; j++) {
             float x = r.nextSigned();
@@ -79,10 +94,10 @@ public final class SyntheticSkinData {
         }
         positions = new float[3 * points];
         normals = new float[3 * points];
-        joints = new int[INFLUENCES * points];
-        weights = new float[INFLUENCES * points];
-        int[] ids = new int[INFLUENCES];
-        float[] ws = new float[INFLUENCES];
+        joints = new int[influences * points];
+        weights = new float[influences * points];
+        int[] ids = new int[influences];
+        float[] ws = new float[influences];
         for (int i = 0; i < points; i++) {
             for (int k = 0; k < 3; k++) {
                 positions[3 * i + k] = r.nextSigned();
@@ -101,7 +116,7 @@ public final class SyntheticSkinData {
             normals[3 * i + 1] = ny / nn;
             normals[3 * i + 2] = nz / nn;
             int got = 0;
-            while (got < INFLUENCES) {
+            while (got < influences) {
                 int c = (int) (r.next() & (JOINTS - 1));
                 boolean duplicate = false;
                 for (int k = 0; k < got; k++) {
@@ -112,19 +127,23 @@ public final class SyntheticSkinData {
                 }
             }
             float sum = 0;
-            for (int k = 0; k < INFLUENCES; k++) {
+            for (int k = 0; k < influences; k++) {
                 ws[k] = 0.05f + r.nextFloat();
                 sum += ws[k];
             }
-            for (int k = 0; k < INFLUENCES; k++) {
-                joints[INFLUENCES * i + k] = ids[k];
-                weights[INFLUENCES * i + k] = ws[k] / sum;
+            for (int k = 0; k < influences; k++) {
+                joints[influences * i + k] = ids[k];
+                weights[influences * i + k] = ws[k] / sum;
             }
         }
     }
 
     public int pointCount() {
         return points;
+    }
+
+    public int influences() {
+        return influences;
     }
 
     /** The reference's joint matrices (row-major 3x4 per joint). Read-only. */
@@ -146,7 +165,7 @@ public final class SyntheticSkinData {
         for (int j = 0; j < JOINTS; j++) {
             bind[16 * j] = bind[16 * j + 5] = bind[16 * j + 10] = bind[16 * j + 15] = 1f;
         }
-        return SkinnedGeometry.fromArrays(positions, normals, INFLUENCES, joints, weights, bind);
+        return SkinnedGeometry.fromArrays(positions, normals, influences, joints, weights, bind);
     }
 
     /**

@@ -126,7 +126,7 @@ public final class ArCommand implements Callable<Integer> {
         FiducialTracker.runOnCallingThread();
         ArFeed feed = new ArFeed(frames, ArSession.of(new FiducialTracker(config, k)));
         AppOptions options = new AppOptions(file, method, RotationInterpolation.SLERP, true, DrawSettings.View.SHADED, null,
-                null, screenshot, size.width(), size.height(), hideUi, script, exitAfterFrames, false);
+                null, 0, screenshot, size.width(), size.height(), hideUi, script, exitAfterFrames, false);
         return SkinlabApp.run(options, new ArSetup(feed, k, markerSizeMm / 1000), spec.commandLine().getOut(),
                 spec.commandLine().getErr());
     }

@@ -35,15 +35,20 @@ import picocli.CommandLine.Model.CommandSpec;
         description = {"The evaluation: measures every section and writes DIR/README.md, one PNG per figure and"
                 + " DIR/results.json with every number. Sections so far: load (import time: our assets, the shared"
                 + " corpus, the conformance suite, assimp beside), time (time per deformation: LBS, DQS, CoR; SIMD and"
-                + " scalar; 4 influences and all; beside the thesis' table), quality (volume kept over each clip, joint ring against"
-                + " twist, bulge against bend, largest distance between methods, the error of capping influences),"
-                + " tracking (markers found and pose error per distance and tilt, false markers, time per frame"
-                + " beside BoofCV's detector).",
+                + " scalar; 4 influences and all; beside the thesis' table), crowds (characters per frame against threads"
+                + " and characters on the CPU, drawn fps against copies with CPU and GPU skinning), quality (volume kept"
+                + " over each clip, joint ring against twist, bulge against bend, largest distance between methods, the"
+                + " error of capping influences), pictures (the viewer's screenshots of each method at each asset's"
+                + " extreme pose, and the difference view), tracking (markers found and pose error per distance and"
+                + " tilt, false markers, time per frame beside BoofCV's detector), advice (what it means for AR on a"
+                + " phone: time against vertices, influences and joints with fitted lines; a recommendation per use"
+                + " drawn from the other sections).",
             "Run it from the repository (it reads assets/ and ../shared). The full run takes minutes; --quick under 3."})
 public final class EvalCommand implements Callable<Integer> {
     /** The sections in report order; a new section is one entry here. */
     static final List<EvalSection> SECTIONS = List.of(new EvalLoadSection(), new EvalTimeSection(),
-            new EvalQualitySection(), new EvalTrackingSection());
+            new EvalCrowdsSection(), new EvalQualitySection(), new EvalPicturesSection(), new EvalTrackingSection(),
+            new EvalAdviceSection());
 
     @Option(names = "--out", paramLabel = "DIR", description = "where the report goes (default: ${DEFAULT-VALUE})")
     Path out = Path.of("docs/evaluation");
@@ -53,7 +58,8 @@ public final class EvalCommand implements Callable<Integer> {
     boolean quick;
 
     @Option(names = "--only", paramLabel = "SECTION", split = ",",
-            description = "only these sections (comma-separated), of: load, time, quality, tracking")
+            description = "only these sections (comma-separated), of: load, time, crowds, quality, pictures, tracking,"
+                    + " advice")
     List<String> only = new ArrayList<>();
 
     @Spec
@@ -84,6 +90,7 @@ public final class EvalCommand implements Callable<Integer> {
         }
         long start = System.nanoTime();
         ObjectNode bySection = results.putObject("sections");
+        context.useResults(bySection);
         try (ProgressBar bar = new ProgressBarBuilder().setTaskName("eval").setInitialMax(total(lengths))
                 .setStyle(ProgressBarStyle.ASCII).setUnit("s", 10).setUpdateIntervalMillis(500).build()) {
             context.useBar(bar);

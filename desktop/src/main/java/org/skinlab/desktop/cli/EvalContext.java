@@ -4,6 +4,8 @@ import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 
+import com.fasterxml.jackson.databind.JsonNode;
+
 import me.tongfei.progressbar.ProgressBar;
 
 /**
@@ -21,6 +23,7 @@ final class EvalContext {
     private final Path cts;
     private final PrintWriter log;
     private ProgressBar bar;
+    private JsonNode measured;
     private long sectionStart;
     private long sectionLength;
 
@@ -65,6 +68,16 @@ final class EvalContext {
     void say(String message) {
         log.println("eval: " + message);
         log.flush();
+    }
+
+    /** The results of the sections measured so far, by key (what a later section may draw on). */
+    void useResults(JsonNode bySection) {
+        this.measured = bySection;
+    }
+
+    /** The results of section {@code key} measured earlier in this run, or null when it was not run. */
+    JsonNode measured(String key) {
+        return measured == null || !measured.has(key) ? null : measured.get(key);
     }
 
     void useBar(ProgressBar bar) {

@@ -85,7 +85,7 @@ final class EvalLoadSection implements EvalSection {
         group(groups.addObject(), "corpus", "the shared corpus", measured.subList(assets.size(), measured.size()),
                 context.corpus() == null ? "no shared corpus at " + context.corpusPlace() : null);
         List<ParseTimer.Result> suite = cts.isEmpty() ? List.of()
-                : new ParseTimer(warmup, quick ? 1 : 5, -1, true, null, "")
+                : new ParseTimer(warmup, quick ? 1 : 5, assimpFlags, true, null, "")
                         .onProgress(n -> context.progress((double) (done[0] + n) / total)).measure(cts);
         group(groups.addObject(), "cts", "the shared conformance suite", suite,
                 context.cts() == null ? "no conformance suite at " + context.ctsPlace() : null);
@@ -166,6 +166,7 @@ final class EvalLoadSection implements EvalSection {
                 f.put("assimpError", r.assimpError);
             }
         }
+        assimpSummary(g, files);
         g.put("fileCount", results.size());
         g.put("imported", imported);
         g.put("refused", results.size() - imported);
@@ -175,6 +176,34 @@ final class EvalLoadSection implements EvalSection {
         if (m.length > 0) {
             g.put("medianOfMediansMillis", EvalReport.round(m[m.length / 2]));
             g.put("sumOfMediansMillis", EvalReport.round(Arrays.stream(m).sum()));
+        }
+    }
+
+    /** How many files assimp imported and refused, and the median file's assimp / ours. */
+    private static void assimpSummary(ObjectNode g, JsonNode files) {
+        int imported = 0;
+        int refused = 0;
+        List<Double> ratios = new ArrayList<>();
+        java.util.Map<String, Integer> messages = new java.util.TreeMap<>();
+        for (JsonNode f : files) {
+            if (f.has("assimpRatio")) {
+                imported++;
+                ratios.add(f.get("assimpRatio").asDouble());
+            } else if (f.has("assimpError")) {
+                refused++;
+                messages.merge(f.get("assimpError").asText(), 1, Integer::sum);
+            }
+        }
+        if (imported + refused == 0) {
+            return;
+        }
+        g.put("assimpImported", imported);
+        g.put("assimpRefused", refused);
+        ArrayNode why = g.putArray("assimpRefusals");
+        messages.forEach((message, count) -> why.addObject().put("message", message).put("files", count));
+        if (!ratios.isEmpty()) {
+            Collections.sort(ratios);
+            g.put("medianAssimpRatio", ratios.get(ratios.size() / 2));
         }
     }
 
@@ -190,7 +219,7 @@ final class EvalLoadSection implements EvalSection {
                 + (assimp ? "assimp `" + results.get("assimpVersion").asText() + "` (LWJGL, flags `"
                         + results.get("assimpFlags").asText() + "`) imports our assets and the corpus from the same"
                         + " bytes right after ours, with the same protocol; assimp / ours above one means we are"
-                        + " faster. assimp is not run on the conformance suite yet."
+                        + " faster."
                         : "assimp is absent here (`" + results.get("assimpMissing").asText() + "`)."));
         List<String[]> bars = new ArrayList<>();
         JsonNode groups = results.get("groups");
@@ -212,6 +241,20 @@ final class EvalLoadSection implements EvalSection {
                     + (results.has("ctsEvery") && g.get("key").asText().equals("cts")
                             ? " Quick run: one file in " + EvalReport.num(results, "/ctsEvery") + " of the suite, in"
                                     + " name order." : ""));
+            if (g.has("assimpImported")) {
+                report.paragraph("assimp imports " + EvalReport.num(results, at + "/assimpImported") + " of these files"
+                        + " and refuses " + EvalReport.num(results, at + "/assimpRefused")
+                        + (g.has("medianAssimpRatio") ? "; over the files both import, the median of assimp / ours is "
+                                + EvalReport.num(results, at + "/medianAssimpRatio") : "") + ".");
+                JsonNode why = g.get("assimpRefusals");
+                for (int k = 0; k < why.size(); k++) {
+                    report.line("- assimp refuses " + EvalReport.num(results, at + "/assimpRefusals/" + k + "/files")
+                            + " file(s) with `" + why.get(k).get("message").asText().replace('`', '\'') + "`");
+                }
+                if (why.size() > 0) {
+                    report.line("");
+                }
+            }
             if (g.get("key").asText().equals("cts")) {
                 refusals(results, at, report);
                 ctsFigure(g, report);
@@ -275,28 +318,41 @@ final class EvalLoadSection implements EvalSection {
     }
 
     private static void ctsFigure(JsonNode g, EvalReport report) {
-        List<Double> medians = new ArrayList<>();
-        for (JsonNode f : g.get("files")) {
-            // A log axis has no zero: a file faster than the rounding (under 0.0005 ms) is left out.
-            if (f.has("medianMillis") && f.get("medianMillis").asDouble() > 0) {
-                medians.add(f.get("medianMillis").asDouble());
-            }
-        }
-        if (medians.isEmpty()) {
+        List<Double> ours = sortedMillis(g, "medianMillis");
+        if (ours.isEmpty()) {
             return;
         }
-        Collections.sort(medians);
-        List<Double> rank = new ArrayList<>();
-        for (int i = 0; i < medians.size(); i++) {
-            rank.add((double) (i + 1));
-        }
         XYChart chart = new XYChartBuilder().width(1000).height(500)
-                .title("Conformance suite: import time per file, sorted (the requirement is 10 000 ms)")
+                .title("Conformance suite: import time per file, each tool's sorted (the requirement is 10 000 ms)")
                 .xAxisTitle("files, fastest first").yAxisTitle("median ms (log scale)").build();
         chart.getStyler().setYAxisLogarithmic(true);
-        chart.getStyler().setLegendVisible(false);
-        chart.addSeries("skinlab", rank, medians);
+        chart.getStyler().setLegendPosition(Styler.LegendPosition.InsideNW);
+        chart.addSeries("skinlab (" + ours.size() + " files imported)", ranks(ours.size()), ours);
+        List<Double> theirs = sortedMillis(g, "assimpMedianMillis");
+        if (!theirs.isEmpty()) {
+            chart.addSeries("assimp (" + theirs.size() + " files imported)", ranks(theirs.size()), theirs);
+        }
         report.figure("load-cts.png", "Conformance suite: import time per file, sorted", chart);
+    }
+
+    /** The files' values of {@code field}, sorted; a log axis has no zero, so values under the rounding are left out. */
+    private static List<Double> sortedMillis(JsonNode g, String field) {
+        List<Double> values = new ArrayList<>();
+        for (JsonNode f : g.get("files")) {
+            if (f.has(field) && f.get(field).asDouble() > 0) {
+                values.add(f.get(field).asDouble());
+            }
+        }
+        Collections.sort(values);
+        return values;
+    }
+
+    private static List<Double> ranks(int n) {
+        List<Double> rank = new ArrayList<>();
+        for (int i = 0; i < n; i++) {
+            rank.add((double) (i + 1));
+        }
+        return rank;
     }
 
     private static String capitalised(String s) {

@@ -24,7 +24,8 @@ import org.knowm.xchart.internal.chartpart.Chart;
  * figures, and every number goes through {@link #num}, which prints a number node of the results
  * by one rule ({@link #format}), so a reader (and a test) finds each printed number in the JSON.
  * Numbers are stored rounded ({@link #round}), so the rule needs no rounding of its own. Each
- * figure is a PNG with a footer naming the machine, the JVM and the command.
+ * figure is a PNG (an XChart chart or a picture) with a footer naming the machine, the JVM and the
+ * command.
  */
 final class EvalReport {
     private static final int FOOTER_LINE = 16;
@@ -102,7 +103,14 @@ final class EvalReport {
 
     /** Writes the chart as {@code file} (PNG, with the footer) and links it with its caption. */
     EvalReport figure(String file, String caption, Chart<?, ?> chart) {
-        BufferedImage plot = BitmapEncoder.getBufferedImage(chart);
+        return image(file, caption, BitmapEncoder.getBufferedImage(chart));
+    }
+
+    /**
+     * Writes a figure that is a picture rather than a chart (e.g. the viewer's screenshots) as
+     * {@code file}, with the same footer, and links it with its caption.
+     */
+    EvalReport image(String file, String caption, BufferedImage plot) {
         BufferedImage image = new BufferedImage(plot.getWidth(), plot.getHeight() + FOOTER_LINE * footer.size() + 8,
                 BufferedImage.TYPE_INT_RGB);
         Graphics2D g = image.createGraphics();

@@ -1,5 +1,6 @@
 package org.skinlab.desktop.cli;
 
+import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -12,10 +13,16 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 import org.knowm.xchart.CategoryChart;
 import org.knowm.xchart.CategoryChartBuilder;
 import org.knowm.xchart.style.Styler;
+import org.skinlab.desktop.bench.CppSkinningReference;
+import org.skinlab.desktop.bench.SyntheticSkinData;
 import org.skinlab.model.MeshInstance;
 import org.skinlab.model.Model;
+import org.skinlab.skinning.JointPalette;
 import org.skinlab.skinning.NormalTransform;
 import org.skinlab.skinning.PositionSharing;
+import org.skinlab.skinning.SkinnedGeometry;
+import org.skinlab.skinning.Skinner;
+import org.skinlab.skinning.Skinners;
 import org.skinlab.skinning.SkinningMethod;
 
 /**
@@ -28,6 +35,8 @@ import org.skinlab.skinning.SkinningMethod;
  */
 final class EvalTimeSection implements EvalSection {
     static final int CAP = 4;
+    /** The shared scalar C++ skinning reference, from the repository root. */
+    static final String CPP_REFERENCE = "../shared/perf/skin_ref.cpp";
 
     /** One row of the thesis' table: its asset, ours, and its DQS and LBS times in ms. */
     record ThesisRow(String thesisName, String file, double dqsMillis, double lbsMillis) {
@@ -50,7 +59,7 @@ final class EvalTimeSection implements EvalSection {
 
     @Override
     public double estimatedSeconds(EvalContext context) {
-        return context.quick() ? 22 : 100;
+        return context.quick() ? 28 : 130;
     }
 
     @Override
@@ -126,6 +135,88 @@ final class EvalTimeSection implements EvalSection {
             }
         }
         thesis(results);
+        reference(context, results.putObject("reference"));
+    }
+
+    /**
+     * Our kernels against the shared scalar C++ reference on its own synthetic data (4 influences,
+     * 64 joints, normals by the blended matrix as it computes them), compiled and run here right
+     * before ours; the checksums show both skinned the same data the same way.
+     */
+    private static void reference(EvalContext context, ObjectNode results) {
+        Path source = context.root().resolve(CPP_REFERENCE).normalize();
+        String compiler = CppSkinningReference.compiler();
+        if (!Files.isRegularFile(source)) {
+            results.put("skipped", "no " + source);
+            return;
+        }
+        if (compiler == null) {
+            results.put("skipped", "no C++ compiler (g++ or c++) on the PATH");
+            return;
+        }
+        boolean quick = context.quick();
+        List<Integer> sizes = quick ? List.of(10_000) : List.of(10_000, 100_000);
+        int rounds = quick ? 1 : 3;
+        double seconds = quick ? 0.3 : 0.7;
+        results.put("source", CPP_REFERENCE);
+        results.put("compiler", compiler + " -O3 -DNDEBUG -std=c++17");
+        results.put("joints", SyntheticSkinData.JOINTS);
+        results.put("influences", SyntheticSkinData.INFLUENCES);
+        results.put("rounds", rounds);
+        results.put("roundSeconds", seconds);
+        List<CppSkinningReference.Result> cpp;
+        Path dir = null;
+        try {
+            dir = Files.createTempDirectory("skinlab-eval-cpp");
+            cpp = CppSkinningReference.compile(compiler, source, dir).run(List.of("c-lbs", "c-dqs"), rounds, seconds,
+                    sizes);
+        } catch (IOException e) {
+            results.put("skipped", e.getMessage());
+            return;
+        } finally {
+            deleteQuietly(dir);
+        }
+        double warmup = quick ? 0.3 : 1.5;
+        double oursSeconds = rounds * seconds;
+        results.put("oursWarmupSeconds", warmup);
+        results.put("oursSeconds", oursSeconds);
+        ArrayNode rows = results.putArray("rows");
+        for (CppSkinningReference.Result c : cpp) {
+            SkinningMethod method = SkinningMethod.fromKey(c.variant().substring(2));
+            SyntheticSkinData data = new SyntheticSkinData(c.vertices());
+            SkinnedGeometry geometry = data.geometry();
+            JointPalette palette = data.palette();
+            float[] positions = new float[3 * c.vertices()];
+            float[] normals = new float[3 * c.vertices()];
+            ObjectNode row = rows.addObject();
+            row.put("vertices", c.vertices());
+            row.put("method", method.key());
+            row.put("cppMedianNs", c.medianNs());
+            row.put("cppMinNs", c.minNs());
+            for (boolean scalar : new boolean[] {true, false}) {
+                Skinner kernel = scalar ? Skinners.scalar(method, geometry, NormalTransform.BLENDED_MATRIX)
+                        : Skinners.create(method, geometry, NormalTransform.BLENDED_MATRIX);
+                SkinningTiming t = SkinningTiming.measure(() -> kernel.skinAll(palette, positions, normals), positions,
+                        normals, c.vertices(), warmup, oursSeconds);
+                String k = scalar ? "scalar" : "fastest";
+                row.put(k + "Kernel", kernel.implementation());
+                row.put(k + "MedianNs", EvalReport.round(t.median()));
+                row.put(k + "Ratio", EvalReport.round(t.median() / c.medianNs()));
+                // Both sum the same outputs; float rounding differs only in the last digits.
+                row.put(k + "ChecksumAgrees", Math.abs(t.checksum - c.checksum()) <= 1e-4 * Math.abs(c.checksum()));
+            }
+        }
+    }
+
+    private static void deleteQuietly(Path dir) {
+        if (dir == null) {
+            return;
+        }
+        try (java.util.stream.Stream<Path> files = Files.walk(dir)) {
+            files.sorted(java.util.Comparator.reverseOrder()).forEach(f -> f.toFile().delete());
+        } catch (IOException e) {
+            // A temporary folder left behind is harmless.
+        }
     }
 
     /** The thesis' rows beside ours (fastest kernels, all influences): thesis / ours, how many times faster. */
@@ -175,8 +266,7 @@ final class EvalTimeSection implements EvalSection {
                 + " which ran) and with core's scalar ones; with every influence, and cut to the "
                 + EvalReport.num(results, "/cap") + " heaviest (renormalised, what a GPU's fixed slots see) where an"
                 + " asset has more (the cut geometry skins every render vertex, without sharing positions, so part of"
-                + " that difference is the sharing). The scalar C++ reference of ../shared/perf is not run here yet"
-                + " (`bench/compare-skinning.sh` compiles and runs it; docs/benchmarks.md).");
+                + " that difference is the sharing).");
         report.header("asset", "influences", "method", "kernels", "kernel name", "influences used", "median µs",
                 "min µs");
         JsonNode assets = results.get("assets");
@@ -217,6 +307,58 @@ final class EvalTimeSection implements EvalSection {
         for (int a = 0; a < assets.size(); a++) {
             assetFigure(assets.get(a), report);
         }
+        referenceReport(results, report);
+    }
+
+    private static void referenceReport(JsonNode results, EvalReport report) {
+        report.heading(3, "Against the scalar C++ reference");
+        JsonNode ref = results.path("reference");
+        if (ref.has("skipped")) {
+            report.paragraph("Not run: `" + ref.get("skipped").asText() + "`.");
+            return;
+        }
+        report.paragraph("The shared scalar C++ reference (`" + ref.get("source").asText() + "`, compiled here with `"
+                + ref.get("compiler").asText() + "`) on its own synthetic data (" + EvalReport.num(results, "/reference/joints")
+                + " joints, " + EvalReport.num(results, "/reference/influences") + " influences per vertex,"
+                + " normals by the blended matrix as it computes them), then our kernels on the same data, which"
+                + " core's generator reproduces bit for bit, in the same run: its " + EvalReport.num(results,
+                "/reference/rounds") + " round(s) of " + EvalReport.num(results, "/reference/roundSeconds")
+                + " s against ours, " + EvalReport.num(results, "/reference/oursSeconds") + " s after "
+                + EvalReport.num(results, "/reference/oursWarmupSeconds") + " s of warm-up. ns per vertex, medians;"
+                + " ours / C++ below one means we are faster; the checksums (the sum of the outputs) agree when both"
+                + " skinned the same data alike.");
+        report.header("vertices", "method", "C++ ns", "scalar Java ns", "scalar / C++", "fastest Java", "fastest ns",
+                "fastest / C++", "checksums agree");
+        JsonNode rows = ref.get("rows");
+        for (int i = 0; i < rows.size(); i++) {
+            String p = "/reference/rows/" + i;
+            JsonNode row = rows.get(i);
+            report.row(EvalReport.num(results, p + "/vertices"), row.get("method").asText().toUpperCase(java.util.Locale.ROOT),
+                    EvalReport.num(results, p + "/cppMedianNs"), EvalReport.num(results, p + "/scalarMedianNs"),
+                    EvalReport.num(results, p + "/scalarRatio"), "`" + row.get("fastestKernel").asText() + "`",
+                    EvalReport.num(results, p + "/fastestMedianNs"), EvalReport.num(results, p + "/fastestRatio"),
+                    row.get("scalarChecksumAgrees").asBoolean() && row.get("fastestChecksumAgrees").asBoolean()
+                            ? "yes" : "**no**");
+        }
+        report.line("");
+        CategoryChart chart = new CategoryChartBuilder().width(900).height(500)
+                .title("Against the scalar C++ reference (same data, same run)").xAxisTitle("method, vertices")
+                .yAxisTitle("ns per vertex (median)").build();
+        chart.getStyler().setLegendPosition(Styler.LegendPosition.InsideNW);
+        List<String> labels = new ArrayList<>();
+        List<Double> cpp = new ArrayList<>();
+        List<Double> scalar = new ArrayList<>();
+        List<Double> fastest = new ArrayList<>();
+        for (JsonNode row : rows) {
+            labels.add(row.get("method").asText().toUpperCase(java.util.Locale.ROOT) + ", " + row.get("vertices").asInt());
+            cpp.add(row.get("cppMedianNs").asDouble());
+            scalar.add(row.get("scalarMedianNs").asDouble());
+            fastest.add(row.get("fastestMedianNs").asDouble());
+        }
+        chart.addSeries("C++ scalar reference (g++ -O3)", labels, cpp);
+        chart.addSeries("Java, core's scalar kernel", labels, scalar);
+        chart.addSeries("Java, fastest kernel", labels, fastest);
+        report.figure("time-cpp-reference.png", "ns per vertex against the scalar C++ reference", chart);
     }
 
     /** One bar chart per asset: method on the axis, a bar per kernel and influence variant. */

@@ -152,7 +152,17 @@ final class FrameBench {
     }
 
     private void step(SkinningMethod method, long frame) {
-        float t = skinned.sampler().clipTime(frame / 60.0, WrapMode.LOOP);
+        frame(skinned, skinners, method, frame / 60.0, positions, normals);
+    }
+
+    /**
+     * One character's frame (what both this bench and {@link CrowdBench} time): sample its clip at
+     * {@code elapsed} seconds of playback (looping), pose, and skin each geometry {@code g} with
+     * {@code skinners[g][method.ordinal()]} into {@code positions[g]} and {@code normals[g]}.
+     */
+    static void frame(SkinnedModel skinned, Skinner[][] skinners, SkinningMethod method, double elapsed,
+            float[][] positions, float[][] normals) {
+        float t = skinned.sampler().clipTime(elapsed, WrapMode.LOOP);
         skinned.pose(t, RotationInterpolation.SLERP);
         for (int g = 0; g < positions.length; g++) {
             // DQS and CoR read the dual quaternions.

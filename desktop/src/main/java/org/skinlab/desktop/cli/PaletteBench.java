@@ -24,6 +24,46 @@ final class PaletteBench {
      */
     static int run(SkinnedModel skinned, String name, double warmupSeconds, double seconds, boolean json,
             PrintWriter out) throws JsonProcessingException {
+        Samples samples = measure(skinned, warmupSeconds, seconds);
+        int joints = samples.joints();
+        int n = samples.frames();
+        double[][] stats = {stats(samples.total(), n), stats(samples.pose(), n), stats(samples.dualQuaternions(), n)};
+        String[] parts = {"palette", "pose", "dualQuaternions"};
+        if (json) {
+            ObjectMapper mapper = new ObjectMapper();
+            ObjectNode root = mapper.createObjectNode();
+            root.put("benchmark", "frame-palette");
+            root.put("file", name);
+            root.put("joints", joints);
+            root.put("frames", n);
+            for (int p = 0; p < parts.length; p++) {
+                ObjectNode part = root.putObject(parts[p]);
+                part.put("minMicros", round(stats[p][0]));
+                part.put("medianMicros", round(stats[p][1]));
+                part.put("meanMicros", round(stats[p][2]));
+            }
+            out.println(mapper.writeValueAsString(root));
+        } else {
+            out.printf(Locale.ROOT, "palette of %s: %d joints, %d frames (slerp)%n", name, joints, n);
+            for (int p = 0; p < parts.length; p++) {
+                out.printf(Locale.ROOT, "%-16s min %.3f µs, median %.3f µs, mean %.3f µs%n", parts[p], stats[p][0],
+                        stats[p][1], stats[p][2]);
+            }
+        }
+        out.flush();
+        return ExitCodes.OK;
+    }
+
+    /** Per frame in µs: the pose (sample, evaluate, skinning matrices), the dual quaternions, both. */
+    record Samples(int joints, int frames, double[] pose, double[] dualQuaternions, double[] total) {
+        /** The median of the frames' totals. */
+        double medianTotal() {
+            return stats(total, frames)[1];
+        }
+    }
+
+    /** Warm-up, then timed frames for {@code seconds} (at least 5), the clip advancing 1/60 s each. */
+    static Samples measure(SkinnedModel skinned, double warmupSeconds, double seconds) {
         int geometries = skinned.geometries().size();
         int joints = 0;
         for (int g = 0; g < geometries; g++) {
@@ -61,31 +101,7 @@ final class PaletteBench {
         for (int i = 0; i < n; i++) {
             total[i] = pose[i] + dq[i];
         }
-        double[][] stats = {stats(total, n), stats(pose, n), stats(dq, n)};
-        String[] parts = {"palette", "pose", "dualQuaternions"};
-        if (json) {
-            ObjectMapper mapper = new ObjectMapper();
-            ObjectNode root = mapper.createObjectNode();
-            root.put("benchmark", "frame-palette");
-            root.put("file", name);
-            root.put("joints", joints);
-            root.put("frames", n);
-            for (int p = 0; p < parts.length; p++) {
-                ObjectNode part = root.putObject(parts[p]);
-                part.put("minMicros", round(stats[p][0]));
-                part.put("medianMicros", round(stats[p][1]));
-                part.put("meanMicros", round(stats[p][2]));
-            }
-            out.println(mapper.writeValueAsString(root));
-        } else {
-            out.printf(Locale.ROOT, "palette of %s: %d joints, %d frames (slerp)%n", name, joints, n);
-            for (int p = 0; p < parts.length; p++) {
-                out.printf(Locale.ROOT, "%-16s min %.3f µs, median %.3f µs, mean %.3f µs%n", parts[p], stats[p][0],
-                        stats[p][1], stats[p][2]);
-            }
-        }
-        out.flush();
-        return ExitCodes.OK;
+        return new Samples(joints, n, pose, dq, total);
     }
 
     /** Minimum, median and mean of the first n values. */

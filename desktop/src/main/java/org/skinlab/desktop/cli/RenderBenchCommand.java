@@ -1,12 +1,7 @@
 package org.skinlab.desktop.cli;
 
-import static org.lwjgl.glfw.GLFW.glfwPollEvents;
-import static org.lwjgl.glfw.GLFW.glfwSwapInterval;
-import static org.lwjgl.opengl.GL33C.*;
-
 import java.io.IOException;
 import java.io.PrintWriter;
-import java.lang.management.ManagementFactory;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -19,17 +14,9 @@ import java.util.concurrent.Callable;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.SerializationFeature;
 
-import org.skinlab.desktop.render.DrawSettings;
 import org.skinlab.desktop.render.GlWindow;
-import org.skinlab.desktop.render.ModelRenderer;
-import org.skinlab.desktop.render.SkinningShader;
 import org.skinlab.desktop.viewer.ModelLibrary;
-import org.skinlab.desktop.viewer.OrbitCamera;
 import org.skinlab.model.Model;
-import org.skinlab.scene.ModelFraming;
-import org.skinlab.simulation.AnimationConfig;
-import org.skinlab.simulation.Frame;
-import org.skinlab.simulation.SkeletalAnimatedMesh;
 import org.skinlab.skinning.SkinningMethod;
 
 import picocli.CommandLine.Command;
@@ -43,7 +30,7 @@ import picocli.CommandLine.Model.CommandSpec;
  * redone. For CPU and GPU skinning, LBS and DQS, it renders a grid of 1, 4, 8, 12, 16, ...
  * animated copies, each its own simulation stepped every frame (as the thesis' meshes were), in
  * an off-screen window without vsync, and stops a series when it falls below 30 fps. It also
- * reports the bytes the render loop allocated per frame.
+ * reports the bytes the render loop allocated per frame. The loop is {@link RenderBench}'s.
  */
 @Command(name = "bench-render", mixinStandardHelpOptions = true,
         description = {"Frames per second against the number of animated copies, CPU and GPU skinning, LBS and DQS "
@@ -72,27 +59,6 @@ public final class RenderBenchCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    /** Instance counts: the thesis' 1, 4, 8, 12, 16, then on in steps of 8, 16, 32 ... */
-    static List<Integer> steps(int max) {
-        List<Integer> n = new ArrayList<>();
-        n.add(1);
-        for (int i = 4; i <= Math.min(16, max); i += 4) {
-            n.add(i);
-        }
-        int step = 8;
-        for (int i = 24; i <= max; i += step) {
-            n.add(i);
-            if (i >= 8 * step) {
-                step *= 2;
-            }
-        }
-        return n;
-    }
-
-    record Point(String skinning, String method, int instances, double fps, double msPerFrame,
-            double bytesPerFrame) {
-    }
-
     @Override
     public Integer call() throws IOException {
         Path path = file != null ? file : ModelLibrary.find().defaultModel();
@@ -101,29 +67,23 @@ public final class RenderBenchCommand implements Callable<Integer> {
         }
         Model model = ModelFiles.load(path).model;
         PrintWriter out = spec.commandLine().getOut();
-        List<Point> points = new ArrayList<>();
-        GlWindow window;
+        List<RenderBench.Point> points = new ArrayList<>();
+        RenderBench bench;
         try {
-            window = new GlWindow("skinlab bench-render", size.width(), size.height(), false, false);
+            bench = RenderBench.open(size.width(), size.height());
         } catch (GlWindow.WindowUnavailableException e) {
             throw new CommandFailure(ExitCodes.INTERNAL, e.getMessage(), e);
         }
-        try (window; SkinningShader shader = new SkinningShader()) {
-            glfwSwapInterval(0);
+        try (bench) {
             out.printf(Locale.ROOT, "%s, %dx%d, %s %s%n", path.getFileName(), size.width(), size.height(),
-                    glGetString(GL_RENDERER), glGetString(GL_VERSION));
+                    bench.renderer(), bench.version());
             // Warm-up, discarded: the JIT compiles the kernels (the Vector API allocates until it has).
-            double measured = seconds;
-            seconds = Math.max(2.0, seconds);
-            for (SkinningMethod method : SkinningMethod.values()) {
-                measure(window, shader, model, false, method, 1);
-            }
-            seconds = measured;
+            bench.warmUp(model, Math.max(2.0, seconds));
             out.printf("%-4s %-4s %9s %9s %9s %12s%n", "skin", "meth", "instances", "fps", "ms/frame", "bytes/frame");
             for (boolean gpu : new boolean[] {false, true}) {
                 for (SkinningMethod method : SkinningMethod.values()) {
-                    for (int n : steps(maxInstances)) {
-                        Point p = measure(window, shader, model, gpu, method, n);
+                    for (int n : RenderBench.steps(maxInstances)) {
+                        RenderBench.Point p = bench.measure(model, gpu, method, n, seconds);
                         points.add(p);
                         out.printf(Locale.ROOT, "%-4s %-4s %9d %9.1f %9.2f %12.0f%n", p.skinning(), p.method(),
                                 n, p.fps(), p.msPerFrame(), p.bytesPerFrame());
@@ -146,85 +106,5 @@ public final class RenderBenchCommand implements Callable<Integer> {
                     .writeValueAsString(doc));
         }
         return ExitCodes.OK;
-    }
-
-    private Point measure(GlWindow window, SkinningShader shader, Model model, boolean gpu, SkinningMethod method,
-            int instances) {
-        AnimationConfig config = new AnimationConfig();
-        config.setMethod(method);
-        config.setCpuSkinning(!gpu);
-        List<SkeletalAnimatedMesh> meshes = new ArrayList<>();
-        try {
-            for (int i = 0; i < instances; i++) {
-                SkeletalAnimatedMesh m = new SkeletalAnimatedMesh(model, model.clips().isEmpty() ? null
-                        : model.clips().get(0), config);
-                // Copies out of step, as a crowd would be.
-                m.seek(0.37 * i);
-                meshes.add(m);
-            }
-            meshes.get(0).step(0);
-            ModelFraming framing;
-            try (Frame f = meshes.get(0).acquire()) {
-                framing = ModelFraming.of(model.asset(), meshes.get(0).geometries(), f);
-            }
-            DrawSettings draw = new DrawSettings();
-            draw.gpuSkinning = gpu;
-            draw.method = method;
-            draw.instances = 1;
-            draw.gridColumns = DrawSettings.squareColumns(instances);
-            draw.spacing = framing.gridSpacing();
-            draw.model.set(framing.upright());
-            OrbitCamera camera = new OrbitCamera();
-            camera.frame(framing, instances, draw.gridColumns);
-            camera.projection(size.width() / (float) size.height(), draw.viewProjection);
-            camera.viewTimesInto(draw.viewProjection);
-            camera.eye(draw.eye);
-            glViewport(0, 0, size.width(), size.height());
-            glEnable(GL_DEPTH_TEST);
-            try (ModelRenderer renderer = new ModelRenderer(shader, model, meshes.get(0).geometries(), img -> 0)) {
-                com.sun.management.ThreadMXBean threads =
-                        (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
-                long thread = Thread.currentThread().getId();
-                int warmup = 10;
-                long start = 0;
-                long bytesAtStart = 0;
-                int frames = 0;
-                double dt = 1.0 / 60;
-                for (int frame = 0;; frame++) {
-                    if (frame == warmup) {
-                        glFinish();
-                        start = System.nanoTime();
-                        bytesAtStart = threads.getThreadAllocatedBytes(thread);
-                    }
-                    glClearColor(0.17f, 0.18f, 0.21f, 1f);
-                    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-                    for (int i = 0; i < instances; i++) {
-                        SkeletalAnimatedMesh m = meshes.get(i);
-                        m.step(dt);
-                        try (Frame f = m.acquire()) {
-                            renderer.upload(f);
-                            draw.firstInstance = i;
-                            renderer.draw(draw);
-                        }
-                    }
-                    window.swapBuffers();
-                    glfwPollEvents();
-                    if (frame >= warmup) {
-                        frames++;
-                        long elapsed = System.nanoTime() - start;
-                        if (elapsed >= seconds * 1e9 && frames >= 5) {
-                            glFinish();
-                            elapsed = System.nanoTime() - start;
-                            long bytes = threads.getThreadAllocatedBytes(thread) - bytesAtStart;
-                            double ms = elapsed / 1e6 / frames;
-                            return new Point(gpu ? "gpu" : "cpu", method.key(), instances, 1000 / ms, ms,
-                                    (double) bytes / frames);
-                        }
-                    }
-                }
-            }
-        } finally {
-            meshes.forEach(SkeletalAnimatedMesh::close);
-        }
     }
 }

@@ -1,7 +1,6 @@
 package org.skinlab.desktop.cli;
 
 import java.io.PrintWriter;
-import java.util.Arrays;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 
@@ -70,28 +69,6 @@ public final class SkinningBenchCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    /** Times of one implementation, in ns per vertex, and its checksum. */
-    static final class Timing {
-        final double[] nsPerVertex;
-        final double checksum;
-
-        Timing(double[] nsPerVertex, double checksum) {
-            this.nsPerVertex = nsPerVertex;
-            this.checksum = checksum;
-        }
-
-        double min() {
-            return Arrays.stream(nsPerVertex).min().orElse(Double.NaN);
-        }
-
-        /** The upper median, as the reference ({@code samples[n / 2]} of the sorted samples). */
-        double median() {
-            double[] s = nsPerVertex.clone();
-            Arrays.sort(s);
-            return s[s.length / 2];
-        }
-    }
-
     @Override
     public Integer call() {
         SkinningMethod m = parseMethod();
@@ -116,13 +93,13 @@ public final class SkinningBenchCommand implements Callable<Integer> {
         PrintWriter err = spec.commandLine().getErr();
         float[] positions = new float[3 * vertices];
         float[] normalsOut = new float[3 * vertices];
-        Timing ours;
+        SkinningTiming ours;
         String name;
         try (ParallelSkinner skinner = new ParallelSkinner(kernel, threads)) {
             name = kernel.implementation();
             ours = measure(() -> skinner.skinAll(palette, positions, normalsOut), positions, normalsOut);
         }
-        Timing thesis = null;
+        SkinningTiming thesis = null;
         if (baseline != null) {
             ThesisSkinningBaseline b = new ThesisSkinningBaseline(geometry, m);
             thesis = measure(() -> b.skinAll(palette, positions, normalsOut), positions, normalsOut);
@@ -165,32 +142,11 @@ public final class SkinningBenchCommand implements Callable<Integer> {
         }
     }
 
-    /** The reference's protocol: checksum of one run on zeroed outputs, warm-up, timed runs. */
-    private Timing measure(Runnable frame, float[] positions, float[] normalsOut) {
-        Arrays.fill(positions, 0f);
-        Arrays.fill(normalsOut, 0f);
-        frame.run();
-        double checksum = SyntheticSkinData.checksum(positions, normalsOut);
-        long warmupEnd = System.nanoTime() + (long) (warmupSeconds * 1e9);
-        do {
-            frame.run();
-        } while (System.nanoTime() < warmupEnd);
-        double[] samples = new double[64];
-        int n = 0;
-        long end = System.nanoTime() + (long) (seconds * 1e9);
-        while (n < 5 || System.nanoTime() < end) {
-            long t0 = System.nanoTime();
-            frame.run();
-            long t1 = System.nanoTime();
-            if (n == samples.length) {
-                samples = Arrays.copyOf(samples, 2 * n);
-            }
-            samples[n++] = (t1 - t0) / (double) vertices;
-        }
-        return new Timing(Arrays.copyOf(samples, n), checksum);
+    private SkinningTiming measure(Runnable frame, float[] positions, float[] normalsOut) {
+        return SkinningTiming.measure(frame, positions, normalsOut, vertices, warmupSeconds, seconds);
     }
 
-    private String toJson(SkinningMethod m, String name, Timing ours, Timing thesis) {
+    private String toJson(SkinningMethod m, String name, SkinningTiming ours, SkinningTiming thesis) {
         ObjectMapper mapper = new ObjectMapper();
         ObjectNode root = mapper.createObjectNode();
         root.put("method", m.key());

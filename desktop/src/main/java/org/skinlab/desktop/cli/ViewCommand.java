@@ -56,6 +56,10 @@ public final class ViewCommand implements Callable<Integer> {
     @Option(names = "--time", paramLabel = "SECONDS", description = "show this playback time, paused")
     Double time;
 
+    @Option(names = "--yaw", paramLabel = "DEGREES",
+            description = "the camera's angle around the model: 0 from the front (+z, the default), 90 from +x")
+    double yaw;
+
     @Option(names = "--screenshot", paramLabel = "OUT.png",
             description = "render one frame off-screen, write it as PNG and exit")
     Path screenshot;
@@ -92,8 +96,11 @@ public final class ViewCommand implements Callable<Integer> {
         if (time != null && !(time >= 0 && !time.isInfinite())) {
             throw new CommandFailure(ExitCodes.USAGE, "--time needs a finite time >= 0 (seconds)", null);
         }
-        AppOptions options = new AppOptions(file, method, interpolation, !cpu, view, split, time, screenshot, size.width(),
-                size.height(), hideUi, script, exitAfterFrames, glDebug);
+        if (!Double.isFinite(yaw)) {
+            throw new CommandFailure(ExitCodes.USAGE, "--yaw needs a finite angle (degrees)", null);
+        }
+        AppOptions options = new AppOptions(file, method, interpolation, !cpu, view, split, time, yaw, screenshot,
+                size.width(), size.height(), hideUi, script, exitAfterFrames, glDebug);
         return SkinlabApp.run(options, spec.commandLine().getOut(), spec.commandLine().getErr());
     }
 

@@ -21,6 +21,9 @@ public final class DrawSettings {
         DIFFERENCE
     }
 
+    /** The top (red) of the difference view's colour map: this share of the model's size. */
+    public static final float DIFFERENCE_FULL = 0.05f;
+
     public final Matrix4f viewProjection = new Matrix4f();
     /** Upright and unit fix and placement (ModelFraming). */
     public final Matrix4f model = new Matrix4f();

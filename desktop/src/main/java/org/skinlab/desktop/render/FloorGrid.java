@@ -4,6 +4,8 @@ import static org.lwjgl.opengl.GL33C.*;
 
 import java.nio.FloatBuffer;
 
+import org.joml.Vector4f;
+import org.joml.Vector4fc;
 import org.lwjgl.system.MemoryUtil;
 
 /**
@@ -11,6 +13,11 @@ import org.lwjgl.system.MemoryUtil;
  * rim, so "upright, feet on the floor" is visible at a glance.
  */
 public final class FloorGrid implements AutoCloseable {
+    /**
+     * The lines' colour and opacity at the centre (0-1; fading to 0 at the rim), blended over the
+     * background: what tells floor pixels from the model's in a picture.
+     */
+    public static final Vector4fc COLOR = new Vector4f(0.55f, 0.58f, 0.65f, 0.45f);
     /** Lines per direction. */
     private static final int LINES = 21;
 
@@ -57,7 +64,7 @@ public final class FloorGrid implements AutoCloseable {
         glUniformMatrix4fv(viewProjection, false, s.viewProjection.get(matrix));
         glUniform1f(extent, halfExtent);
         glUniform3f(centre, x, 0f, z);
-        glUniform4f(color, 0.55f, 0.58f, 0.65f, 0.45f);
+        glUniform4f(color, COLOR.x(), COLOR.y(), COLOR.z(), COLOR.w());
         glBindVertexArray(vao);
         glDrawArrays(GL_LINES, 0, 4 * LINES);
         glBindVertexArray(0);

@@ -22,20 +22,30 @@ public final class OrbitCamera {
     private final Vector3f up = new Vector3f(0, 1, 0);
     private final Matrix4f view = new Matrix4f();
     private float yaw;
+    /** The yaw {@link #frame} looks from: 0 from the front (+z), positive towards +x. */
+    private float homeYaw;
     private float pitch = (float) Math.toRadians(12);
     private float distance = 3f;
     private float radius = 1f;
     /** Whether the distance still waits for the view's aspect (set by frame, used by projection). */
     private boolean fitPending;
 
-    /** Looks at the sphere from the front, slightly above, so that it fills the view's height. */
+    /**
+     * Looks at the sphere from the front (or the {@link #setHomeYaw home yaw}), slightly above, so
+     * that it fills the view's height.
+     */
     public void frame(Vector3f centre, float sphereRadius) {
         target.set(centre);
         radius = Math.max(ModelFraming.MIN_RADIUS, sphereRadius);
-        yaw = 0f;
+        yaw = homeYaw;
         pitch = (float) Math.toRadians(12);
         distance = radius / (float) Math.sin(FOV_Y / 2) * 1.1f;
         fitPending = true;
+    }
+
+    /** The angle (radians) around the vertical axis that framing looks from: 0 from +z, pi/2 from +x. */
+    public void setHomeYaw(float radians) {
+        homeYaw = radians;
     }
 
     public void frame(ModelFraming framing) {

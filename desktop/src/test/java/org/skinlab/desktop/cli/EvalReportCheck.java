@@ -69,6 +69,16 @@ final class EvalReportCheck {
         return linked;
     }
 
+    /** The figures the report links, in order. */
+    static List<String> linked(String readme) {
+        List<String> linked = new ArrayList<>();
+        Matcher f = FIGURE.matcher(readme);
+        while (f.find()) {
+            linked.add(f.group(1));
+        }
+        return linked;
+    }
+
     static int numbers(String readme) {
         String text = FIGURE.matcher(readme).replaceAll("").replaceAll("`[^`\n]*`", "");
         Matcher n = NUMBER.matcher(text);

@@ -3,41 +3,32 @@ package org.skinlab.desktop.cli;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.nio.file.Files;
-import java.nio.file.Path;
 import java.util.List;
 
 import com.fasterxml.jackson.databind.JsonNode;
-import com.fasterxml.jackson.databind.ObjectMapper;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
 
 /**
- * {@code skinlab eval --quick --only tracking}: the report's figures and numbers, and the measured
- * values against what the tracker's own tests establish on larger sets of the same frames
- * (TrackerEvaluationTest: at least 99% found up to 1.5 m for tilts to 60 degrees, median errors at
- * most 2 mm and 0.4 degrees at about 1 m, no false marker on other codes while BoofCV's default
- * reports 124 in 90 frames; FarTiltedDetectionTest: none in 1,000 clutter frames, BoofCV's default
- * 897). The quick run has 4 frames a bin, so the bounds here leave room for an odd frame: bins up
- * to 1.5 m and 60 degrees at least 95% found, the errors at about 1 m within 1.5 times the goals.
- * About 17 s on the shared 2-core machine at a load of 4, 25-40 s when it is busier (the section's
- * quick run is nearly all of it: rendering the frames).
+ * {@code skinlab eval --quick}'s tracking ({@link EvalQuickRun}, whose test checks the report's
+ * numbers and figures): the measured values against what the tracker's own tests establish on
+ * larger sets of the same frames (TrackerEvaluationTest: at least 99% found up to 1.5 m for tilts
+ * to 60 degrees, median errors at most 2 mm and 0.4 degrees at about 1 m, no false marker on other
+ * codes while BoofCV's default reports 124 in 90 frames; FarTiltedDetectionTest: none in 1,000
+ * clutter frames, BoofCV's default 897). The quick run has 4 frames a bin, so the bounds here leave
+ * room for an odd frame: bins up to 1.5 m and 60 degrees at least 95% found, the errors at about
+ * 1 m within 1.5 times the goals. The tracking section is about 17 s of the shared quick run on the
+ * project's 2-core machine at a load of 4, 25-40 s when it is busier (rendering the frames is
+ * nearly all of it); run alone ({@code --only tracking}) the test took 17-29 s.
  */
 class EvalTrackingTest {
     @Test
-    void quickTrackingReportsRatesErrorsFalseMarkersAndTimes(@TempDir Path dir) throws Exception {
-        Cli run = Cli.run("eval", "--quick", "--only", "tracking", "--out",
-                dir.toString());
-        assertEquals(ExitCodes.OK, run.status, run.err);
-        JsonNode results = new ObjectMapper().readTree(dir.resolve("results.json").toFile());
-        String readme = Files.readString(dir.resolve("README.md"));
-        assertEquals(List.of("tracking"), Cli.keys(results.get("sections")));
-        List<String> linked = EvalReportCheck.figuresAndNumbers(dir, results, readme);
+    void quickTrackingReportsRatesErrorsFalseMarkersAndTimes() throws Exception {
+        EvalQuickRun run = EvalQuickRun.get();
+        List<String> linked = EvalReportCheck.linked(run.readme);
         assertTrue(linked.containsAll(List.of("tracking-found.png", "tracking-position-error.png",
                 "tracking-rotation-error.png")), linked.toString());
-        assertTrue(EvalReportCheck.numbers(readme) > 100, "only " + EvalReportCheck.numbers(readme) + " numbers");
 
-        JsonNode s = results.at("/sections/tracking");
+        JsonNode s = run.section("tracking");
         int perBin = s.get("framesPerBin").asInt();
         JsonNode bins = s.get("bins");
         assertEquals(5 * 4, bins.size(), "5 distance bins by 4 tilt bands");

@@ -23,8 +23,8 @@ class RenderBenchCommandTest {
 
     @Test
     void instanceSteps() {
-        assertEquals(List.of(1, 4, 8, 12, 16, 24, 32, 40, 48, 56, 64, 80, 96), RenderBenchCommand.steps(100));
-        assertEquals(List.of(1), RenderBenchCommand.steps(3));
+        assertEquals(List.of(1, 4, 8, 12, 16, 24, 32, 40, 48, 56, 64, 80, 96), RenderBench.steps(100));
+        assertEquals(List.of(1), RenderBench.steps(3));
     }
 
     @Test

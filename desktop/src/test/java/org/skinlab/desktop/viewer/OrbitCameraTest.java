@@ -28,6 +28,18 @@ class OrbitCameraTest {
         }
     }
 
+    /** {@code skinlab view --yaw}: every framing looks from the home yaw; 90 degrees puts the eye on +x. */
+    @Test
+    void framingLooksFromTheHomeYaw() {
+        OrbitCamera c = new OrbitCamera();
+        c.setHomeYaw((float) Math.toRadians(90));
+        c.frame(new Vector3f(), 1f);
+        c.orbit(300, 0);
+        c.frame(new Vector3f(), 1f);
+        Vector3f eye = c.eye(new Vector3f());
+        assertTrue(eye.x > 1f && Math.abs(eye.z) < 1e-5f, eye.toString());
+    }
+
     @Test
     void zoomAndOrbitStayBounded() {
         OrbitCamera c = new OrbitCamera();
