@@ -203,7 +203,7 @@ final class EvalAdvice {
                     .append(EvalReport.num(r, "/inputs/drawn/gpuDqsFps")).append(" fps with DQS on `")
                     .append(in.at("/drawn/renderer").asText()).append("`")
                     .append(in.at("/drawn/software").asBoolean() ? ", a software rasteriser on the CPU, not a GPU" : "")
-                    .append(" (the thesis' phone: ").append(EvalReport.num(r, "/inputs/drawn/thesisDqsFps"))
+                    .append(" (the thesis' desktop, with CPU skinning: ").append(EvalReport.num(r, "/inputs/drawn/thesisDqsFps"))
                     .append(" fps). ");
         }
         if (in.has("cap")) {

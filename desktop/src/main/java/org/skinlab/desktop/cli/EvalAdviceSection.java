@@ -30,6 +30,9 @@ final class EvalAdviceSection implements EvalSection {
     /** The share of a 60 Hz frame (µs) left to skinning: the camera, tracking and drawing need the rest. */
     static final double BUDGET_MICROS = 4000;
     static final int FRAME_RATE = 60;
+    /** One colour per method (LBS, DQS, CoR) in the figures. */
+    private static final java.awt.Color[] COLOURS = {new java.awt.Color(0x1f77b4), new java.awt.Color(0xd62728),
+        new java.awt.Color(0x2ca02c)};
     static final double FRAME_MICROS = 1e6 / FRAME_RATE;
 
     @Override
@@ -246,19 +249,30 @@ final class EvalAdviceSection implements EvalSection {
         chart.getStyler().setYAxisLogarithmic(true);
         List<Double> x = new ArrayList<>();
         results.at("/vertices/vertices").forEach(v -> x.add(v.asDouble()));
+        // The line at 40 log-spaced points, so that it reads as the fitted curve on the log axes.
+        List<Double> dense = new ArrayList<>();
+        double lo = Math.log(x.get(0));
+        double hi = Math.log(x.get(x.size() - 1));
+        for (int i = 0; i < 40; i++) {
+            dense.add(Math.exp(lo + (hi - lo) * i / 39));
+        }
         for (JsonNode s : results.at("/vertices/series")) {
             String name = s.get("method").asText().toUpperCase(Locale.ROOT) + " " + s.get("kernels").asText();
+            java.awt.Color colour = COLOURS[SkinningMethod.fromKey(s.get("method").asText()).ordinal()];
             List<Double> y = new ArrayList<>();
             s.get("medianMicros").forEach(v -> y.add(v.asDouble()));
             XYSeries points = chart.addSeries(name, x, y);
             points.setLineStyle(SeriesLines.NONE);
+            points.setMarkerColor(colour);
+            points.setMarker(s.get("kernels").asText().equals("scalar") ? SeriesMarkers.SQUARE : SeriesMarkers.CIRCLE);
             List<Double> fit = new ArrayList<>();
-            for (double v : x) {
+            for (double v : dense) {
                 fit.add(Math.max(1e-3, s.get("interceptMicros").asDouble() + s.get("nsPerVertex").asDouble() * v / 1000));
             }
-            XYSeries line = chart.addSeries(name + ": " + EvalReport.format(s.get("nsPerVertex")) + " ns/vertex", x, fit);
+            XYSeries line = chart.addSeries(name + ": " + EvalReport.format(s.get("nsPerVertex")) + " ns/vertex", dense,
+                    fit);
             line.setMarker(SeriesMarkers.NONE);
-            line.setLineColor(points.getMarkerColor());
+            line.setLineColor(colour);
             line.setLineStyle(s.get("kernels").asText().equals("scalar") ? SeriesLines.DASH_DASH : SeriesLines.SOLID);
         }
         return chart;

@@ -291,7 +291,7 @@ final class EvalTimeSection implements EvalSection {
         report.heading(3, "Beside the thesis");
         report.paragraph("The thesis' times per deformation (its table, ms) against ours (the fastest kernels, every"
                 + " influence; µs); thesis / ours is how many times faster this frame is. The thesis measured"
-                + " other hardware (a phone of its time), so the ratio mixes the code's and the machine's progress.");
+                + " its own desktop computer, so the ratio mixes the code's and the machine's progress.");
         report.header("thesis asset", "ours", "thesis DQS ms", "ours DQS µs", "DQS thesis / ours", "thesis LBS ms",
                 "ours LBS µs", "LBS thesis / ours");
         JsonNode rows = results.get("thesis");

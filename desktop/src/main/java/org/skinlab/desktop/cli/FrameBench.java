@@ -127,13 +127,14 @@ final class FrameBench {
         return names.isEmpty() ? "none" : String.join("+", names);
     }
 
-    /** Warms up for {@code warmupSeconds}, then times frames for {@code seconds} (at least 5 frames). */
+    /**
+     * Warms up for at least {@code warmupSeconds} and until the JIT has compiled the kernels
+     * ({@link JitWarmup}), then times frames for {@code seconds} (at least 5 frames).
+     */
     Timing measure(SkinningMethod method, double warmupSeconds, double seconds) {
-        long frame = 0;
-        long warmupEnd = System.nanoTime() + (long) (warmupSeconds * 1e9);
-        do {
-            step(method, frame++);
-        } while (System.nanoTime() < warmupEnd);
+        long[] counter = {0};
+        JitWarmup.run(() -> step(method, counter[0]++), warmupSeconds);
+        long frame = counter[0];
         double[] micros = new double[1024];
         int n = 0;
         long end = System.nanoTime() + (long) (seconds * 1e9);

@@ -7,7 +7,8 @@ import org.skinlab.desktop.bench.SyntheticSkinData;
 /**
  * The timing protocol of the shared C++ skinning reference ({@code ../shared/perf/skin_ref.cpp}),
  * one home for {@code bench skinning} and {@code eval}: one untimed run on zeroed outputs for the
- * checksum, a warm-up, then timed runs of the whole mesh for a given time (at least 5), each
+ * checksum, a warm-up (at least the given time and until the JIT has compiled the kernel:
+ * {@link JitWarmup}), then timed runs of the whole mesh for a given time (at least 5), each
  * sample in ns per vertex; the minimum and the upper median, as the reference reports them.
  */
 final class SkinningTiming {
@@ -25,10 +26,7 @@ final class SkinningTiming {
         Arrays.fill(normals, 0f);
         frame.run();
         double checksum = SyntheticSkinData.checksum(positions, normals);
-        long warmupEnd = System.nanoTime() + (long) (warmupSeconds * 1e9);
-        do {
-            frame.run();
-        } while (System.nanoTime() < warmupEnd);
+        JitWarmup.run(frame, warmupSeconds);
         double[] samples = new double[64];
         int n = 0;
         long end = System.nanoTime() + (long) (seconds * 1e9);
