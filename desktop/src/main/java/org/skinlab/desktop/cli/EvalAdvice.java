@@ -50,6 +50,15 @@ final class EvalAdvice {
                 }
             }
         }
+        JsonNode tracking = context.measured("tracking");
+        if (tracking != null && tracking.has("time")) {
+            ObjectNode k = in.putObject("tracking");
+            k.put("detectMedianMs", tracking.at("/time/oursMedianMs").asDouble());
+            k.put("width", tracking.at("/camera/width").asInt());
+            k.put("height", tracking.at("/camera/height").asInt());
+            k.put("framePercent", EvalReport.round(100 * k.get("detectMedianMs").asDouble() * 1000
+                    / EvalAdviceSection.FRAME_MICROS));
+        }
     }
 
     static void write(JsonNode results, EvalReport report) {
@@ -216,6 +225,17 @@ final class EvalAdvice {
         } else {
             t.append("(No file with more influences per vertex than a GPU reads was measured, so the cost of its cap is"
                     + " not shown here.)");
+        }
+        if (in.has("tracking")) {
+            t.append(" The tracker's search of a whole ").append(EvalReport.num(r, "/inputs/tracking/width")).append("x")
+                    .append(EvalReport.num(r, "/inputs/tracking/height")).append(" frame takes ")
+                    .append(EvalReport.num(r, "/inputs/tracking/detectMedianMs")).append(" ms on one core here, ")
+                    .append(EvalReport.num(r, "/inputs/tracking/framePercent"))
+                    .append(" % of a frame at ").append(EvalReport.num(r, "/frameRateHz"))
+                    .append(" Hz; between those searches it looks only near the last markers, several times faster"
+                            + " (`skinlab bench track`), which leaves the skinning its share.");
+        } else {
+            t.append(" The tracker's time per frame: the section `tracking` was not run (`--only`).");
         }
         report.paragraph(t.toString());
     }

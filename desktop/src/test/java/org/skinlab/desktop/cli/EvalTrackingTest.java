@@ -79,5 +79,13 @@ class EvalTrackingTest {
         assertTrue(time.get("oursMedianMs").asDouble() > 0 && time.get("boofMedianMs").asDouble() > 0, time.toString());
         assertEquals(time.get("oursMedianMs").asDouble() / time.get("boofMedianMs").asDouble(),
                 time.get("ratio").asDouble(), 0.01 * time.get("ratio").asDouble() + 0.002, time.toString());
+
+        // The advice argues for low-end phones with the tracker's time: the same number, as a share of a frame.
+        JsonNode advice = run.section("advice").at("/inputs/tracking");
+        assertEquals(time.get("oursMedianMs").asDouble(), advice.get("detectMedianMs").asDouble(), 0, advice.toString());
+        assertEquals(100 * time.get("oursMedianMs").asDouble() / (1000.0 / 60), advice.get("framePercent").asDouble(),
+                1e-3, advice.toString());
+        assertTrue(run.readme.contains("The tracker's search of a whole 640x480 frame takes "
+                + EvalReport.format(advice.get("detectMedianMs")) + " ms"), "the advice prints the tracker's time");
     }
 }
