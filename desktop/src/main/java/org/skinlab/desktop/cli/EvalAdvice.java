@@ -3,6 +3,8 @@ package org.skinlab.desktop.cli;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
+import org.skinlab.ar.FiducialTracker;
+
 /**
  * The recommendations of {@code skinlab eval}'s advice section, one per use, each argued from the
  * numbers the section copied from the others into its results (so every number printed is one of
@@ -56,6 +58,7 @@ final class EvalAdvice {
             k.put("detectMedianMs", tracking.at("/time/oursMedianMs").asDouble());
             k.put("width", tracking.at("/camera/width").asInt());
             k.put("height", tracking.at("/camera/height").asInt());
+            k.put("fullFrameEvery", FiducialTracker.FULL_FRAME_EVERY);
             k.put("framePercent", EvalReport.round(100 * k.get("detectMedianMs").asDouble() * 1000
                     / EvalAdviceSection.FRAME_MICROS));
         }
@@ -232,8 +235,10 @@ final class EvalAdvice {
                     .append(EvalReport.num(r, "/inputs/tracking/detectMedianMs")).append(" ms on one core here, ")
                     .append(EvalReport.num(r, "/inputs/tracking/framePercent"))
                     .append(" % of a frame at ").append(EvalReport.num(r, "/frameRateHz"))
-                    .append(" Hz; between those searches it looks only near the last markers, several times faster"
-                            + " (`skinlab bench track`), which leaves the skinning its share.");
+                    .append(" Hz; in video it searches the whole frame only every ")
+                    .append(EvalReport.num(r, "/inputs/tracking/fullFrameEvery"))
+                    .append("th frame and when it loses a marker, and otherwise only near the last markers, several"
+                            + " times faster (`skinlab bench track`).");
         } else {
             t.append(" The tracker's time per frame: the section `tracking` was not run (`--only`).");
         }
