@@ -9,6 +9,7 @@ import java.util.Locale;
 import java.util.Random;
 
 import org.junit.jupiter.api.Test;
+import org.skinlab.ar.synthetic.DetectionTally;
 import org.skinlab.ar.synthetic.PlacedMarker;
 import org.skinlab.ar.synthetic.SceneOptions;
 import org.skinlab.ar.synthetic.SyntheticCamera;
@@ -109,65 +110,30 @@ class DistortedTrackingTest {
         return shots;
     }
 
-    /** Found count, wrong ids, the errors of the found, their corners' distances from the truth. */
-    private static final class Tally {
-        int frames;
-        int found;
-        int wrong;
-        final List<Double> position = new ArrayList<>();
-        final List<Double> rotation = new ArrayList<>();
-        final List<Double> corner = new ArrayList<>();
-        final List<Shot> missed = new ArrayList<>();
-
-        void add(Shot s, List<MarkerDetection> detections) {
-            frames++;
-            if (detections.isEmpty()) {
-                missed.add(s);
-            }
-            for (MarkerDetection d : detections) {
-                if (d.id() != s.marker().pattern().id()) {
-                    wrong++;
-                    continue;
-                }
-                found++;
-                position.add(PoseError.distance(d.translation(), s.marker().translation()));
-                rotation.add(PoseError.rotationDegrees(d.rotation(), s.marker().rotation()));
-                for (int i = 0; i < 4; i++) {
-                    corner.add(Math.hypot(d.cornerX(i) - s.corners()[2 * i], d.cornerY(i) - s.corners()[2 * i + 1]));
-                }
-            }
-        }
-
-        double rate() {
-            return (double) found / frames;
-        }
-
-        static double quantile(List<Double> values, double q) {
-            List<Double> sorted = new ArrayList<>(values);
-            sorted.sort(null);
-            return sorted.get((int) Math.min(sorted.size() - 1, Math.floor(q * sorted.size())));
-        }
-
-        String line(String name) {
-            return String.format(Locale.ROOT, "%-36s found %3d of %3d (%.1f%%), wrong ids %d, median error %.2f mm"
-                    + " %.2f deg, corners median %.3f px, 95%% %.3f px, max %.3f px", name, found, frames, 100 * rate(),
-                    wrong, 1000 * quantile(position, 0.5), quantile(rotation, 0.5), quantile(corner, 0.5),
-                    quantile(corner, 0.95), quantile(corner, 1));
-        }
+    private static String line(DetectionTally t, String name) {
+        return String.format(Locale.ROOT, "%-36s found %3d of %3d (%.1f%%), wrong ids %d, median error %.2f mm"
+                + " %.2f deg, corners median %.3f px, 95%% %.3f px, max %.3f px", name, t.found(), t.frames(),
+                100 * t.rate(), t.wrongIds(), 1000 * t.positionError(0.5), t.rotationError(0.5), t.cornerError(0.5),
+                t.cornerError(0.95), t.cornerError(1));
     }
 
-    private static Tally detectAll(List<Shot> shots, CameraIntrinsics k) {
+    /** Every shot through a tracker for camera {@code k}; the shots without a detection go to {@code missed}. */
+    private static DetectionTally detectAll(List<Shot> shots, CameraIntrinsics k, List<Shot> missed) {
         FiducialTracker tracker = new FiducialTracker(TrackerConfig.defaults(SIZE), k);
-        Tally t = new Tally();
+        DetectionTally t = new DetectionTally();
         for (Shot s : shots) {
-            t.add(s, tracker.detect(s.image()));
+            List<MarkerDetection> found = tracker.detect(s.image());
+            t.add(s.marker(), s.corners(), found);
+            if (found.isEmpty()) {
+                missed.add(s);
+            }
         }
         return t;
     }
 
     /** How the misses looked (the lens squeezes markers at the image's border). */
-    private static void printMisses(Tally t, String name) {
-        for (Shot s : t.missed) {
+    private static void printMisses(List<Shot> missed, String name) {
+        for (Shot s : missed) {
             double[] c = s.corners();
             double shortest = Double.POSITIVE_INFINITY;
             for (int i = 0; i < 4; i++) {
@@ -183,50 +149,46 @@ class DistortedTrackingTest {
     void throughAWebcamLensTheGoalsOfUndistortedFramesHoldAndIgnoringTheLensDoesNot() {
         CameraIntrinsics pinhole = WEBCAM.withDistortion(LensDistortion.NONE);
         List<Shot> all = shots(WEBCAM, 36, 11, 0.3, 1.5, false, 2);
-        Tally given = detectAll(all, WEBCAM);
-        Tally ignored = detectAll(all, pinhole);
-        System.out.println(given.line("webcam, all over, 0.3-1.5 m, lens given"));
-        System.out.println(ignored.line("webcam, all over, 0.3-1.5 m, lens ignored"));
-        printMisses(given, "webcam");
-        assertEquals(0, given.wrong, "wrong ids");
-        assertTrue(given.rate() >= 0.9, given.line("lens given"));
-        assertTrue(Tally.quantile(given.corner, 0.5) <= 0.25 && Tally.quantile(given.corner, 0.95) <= 0.6,
-                given.line("corners"));
-        assertTrue(Tally.quantile(given.position, 0.5) <= 0.002, given.line("all over"));
-        assertTrue(Tally.quantile(ignored.position, 0.5) >= 10 * Tally.quantile(given.position, 0.5),
-                ignored.line("lens ignored"));
+        List<Shot> missed = new ArrayList<>();
+        DetectionTally given = detectAll(all, WEBCAM, missed);
+        DetectionTally ignored = detectAll(all, pinhole, new ArrayList<>());
+        System.out.println(line(given, "webcam, all over, 0.3-1.5 m, lens given"));
+        System.out.println(line(ignored, "webcam, all over, 0.3-1.5 m, lens ignored"));
+        printMisses(missed, "webcam");
+        assertEquals(0, given.wrongIds(), "wrong ids");
+        assertTrue(given.rate() >= 0.9, line(given, "lens given"));
+        assertTrue(given.cornerError(0.5) <= 0.25 && given.cornerError(0.95) <= 0.6, line(given, "corners"));
+        assertTrue(given.positionError(0.5) <= 0.002, line(given, "all over"));
+        assertTrue(ignored.positionError(0.5) >= 10 * given.positionError(0.5), line(ignored, "lens ignored"));
 
         // TrackerEvaluationTest's 3x3 samples per pixel, as its accuracy goals were measured with.
         List<Shot> near1m = shots(WEBCAM, 24, 12, 0.95, 1.05, true, 3);
-        Tally at1m = detectAll(near1m, WEBCAM);
-        Tally at1mIgnored = detectAll(near1m, pinhole);
-        System.out.println(at1m.line("webcam, middle, 0.95-1.05 m, lens given"));
-        System.out.println(at1mIgnored.line("webcam, middle, 0.95-1.05 m, lens ignored"));
-        assertEquals(at1m.frames, at1m.found, at1m.line("about 1 m"));
-        assertTrue(Tally.quantile(at1m.position, 0.5) <= 0.002, at1m.line("about 1 m"));
-        assertTrue(Tally.quantile(at1m.rotation, 0.5) <= 0.4, at1m.line("about 1 m"));
+        DetectionTally at1m = detectAll(near1m, WEBCAM, new ArrayList<>());
+        DetectionTally at1mIgnored = detectAll(near1m, pinhole, new ArrayList<>());
+        System.out.println(line(at1m, "webcam, middle, 0.95-1.05 m, lens given"));
+        System.out.println(line(at1mIgnored, "webcam, middle, 0.95-1.05 m, lens ignored"));
+        assertEquals(at1m.frames(), at1m.found(), line(at1m, "about 1 m"));
+        assertTrue(at1m.positionError(0.5) <= 0.002, line(at1m, "about 1 m"));
+        assertTrue(at1m.rotationError(0.5) <= 0.4, line(at1m, "about 1 m"));
         // Ignoring the lens, the detector finds nearly the same corners (they are pixels either
         // way); the pose read from them is what goes wrong.
-        assertTrue(Tally.quantile(at1mIgnored.position, 0.5) >= 5 * Tally.quantile(at1m.position, 0.5),
-                at1mIgnored.line("lens ignored"));
-        assertTrue(Tally.quantile(at1mIgnored.rotation, 0.5) >= 2 * Tally.quantile(at1m.rotation, 0.5),
-                at1mIgnored.line("lens ignored"));
+        assertTrue(at1mIgnored.positionError(0.5) >= 5 * at1m.positionError(0.5), line(at1mIgnored, "lens ignored"));
+        assertTrue(at1mIgnored.rotationError(0.5) >= 2 * at1m.rotationError(0.5), line(at1mIgnored, "lens ignored"));
     }
 
     @Test
     void throughAPhoneLensToo() {
         List<Shot> all = shots(PHONE, 20, 21, 0.3, 1.5, false, 2);
-        Tally given = detectAll(all, PHONE);
-        Tally ignored = detectAll(all, PHONE.withDistortion(LensDistortion.NONE));
-        System.out.println(given.line("phone, all over, 0.3-1.5 m, lens given"));
-        System.out.println(ignored.line("phone, all over, 0.3-1.5 m, lens ignored"));
-        printMisses(given, "phone");
-        assertEquals(0, given.wrong, "wrong ids");
-        assertTrue(given.rate() >= 0.9, given.line("lens given"));
-        assertTrue(Tally.quantile(given.corner, 0.5) <= 0.25 && Tally.quantile(given.corner, 0.95) <= 0.6,
-                given.line("corners"));
-        assertTrue(Tally.quantile(ignored.position, 0.5) >= 2 * Tally.quantile(given.position, 0.5),
-                ignored.line("lens ignored"));
+        List<Shot> missed = new ArrayList<>();
+        DetectionTally given = detectAll(all, PHONE, missed);
+        DetectionTally ignored = detectAll(all, PHONE.withDistortion(LensDistortion.NONE), new ArrayList<>());
+        System.out.println(line(given, "phone, all over, 0.3-1.5 m, lens given"));
+        System.out.println(line(ignored, "phone, all over, 0.3-1.5 m, lens ignored"));
+        printMisses(missed, "phone");
+        assertEquals(0, given.wrongIds(), "wrong ids");
+        assertTrue(given.rate() >= 0.9, line(given, "lens given"));
+        assertTrue(given.cornerError(0.5) <= 0.25 && given.cornerError(0.95) <= 0.6, line(given, "corners"));
+        assertTrue(ignored.positionError(0.5) >= 2 * given.positionError(0.5), line(ignored, "lens ignored"));
     }
 
     /**

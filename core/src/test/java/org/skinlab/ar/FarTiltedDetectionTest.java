@@ -8,20 +8,18 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Random;
 
-import boofcv.abst.fiducial.FiducialDetector;
 import boofcv.alg.fiducial.square.DetectFiducialSquareHamming;
 import boofcv.factory.fiducial.ConfigFiducialHammingDetector;
 import boofcv.factory.fiducial.ConfigHammingMarker;
-import boofcv.factory.fiducial.FactoryFiducial;
 import boofcv.factory.filter.binary.FactoryThresholdBinary;
 import boofcv.factory.shape.FactoryShapeDetector;
 import boofcv.struct.image.GrayF32;
 import boofcv.struct.image.GrayU8;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
-import org.skinlab.ar.synthetic.PlacedMarker;
-import org.skinlab.ar.synthetic.SceneOptions;
-import org.skinlab.ar.synthetic.SyntheticCamera;
+import org.skinlab.ar.synthetic.MarkerShot;
+import org.skinlab.ar.synthetic.MarkerShots;
+import org.skinlab.ar.synthetic.NegativeFrames;
 
 /**
  * The goal: markers far away and tilted are found (at least 95% at 1.5-2 m, tilts up to 70
@@ -31,19 +29,20 @@ import org.skinlab.ar.synthetic.SyntheticCamera;
  * 10-degree bins of 30) about a random axis in the marker's plane, turned at random about its
  * normal, anywhere in the image with its paper in view; blur sigma 0.5-1.2 px, noise sigma 2-5
  * levels, up to 50% light falloff, every fifth with a disc over the code (radius 0.08 of the
- * marker's width, about 1.3 cells across). Rendered with 2x2 rays per pixel. The camera is the
- * app's tracking stream, 640x480 at 60 degrees (fx = 554 px), with a 150 mm marker (the app offers
- * 50-200 mm): 42-55 px wide face-on, 14-19 px across at 70 degrees. The goal is about the marker's
- * size in pixels: a 100 mm marker at 2 m is 28 px face-on and 9-10 px across at 70 degrees, 1.2 px a
- * cell under 0.5-1.2 px of blur, which BoofCV's polygon stage does not outline (it refuses sides
- * under 10 px); the same poses with the 100 mm marker are printed, not claimed (docs/ar.md).
+ * marker's width, about 1.3 cells across). Rendered with 2x2 rays per pixel
+ * ({@link MarkerShots#inView}). The camera is the app's tracking stream, 640x480 at 60 degrees
+ * (fx = 554 px), with a 150 mm marker (the app offers 50-200 mm): 42-55 px wide face-on, 14-19 px
+ * across at 70 degrees. The goal is about the marker's size in pixels: a 100 mm marker at 2 m is
+ * 28 px face-on and 9-10 px across at 70 degrees, 1.2 px a cell under 0.5-1.2 px of blur, which
+ * BoofCV's polygon stage does not outline (it refuses sides under 10 px); the same poses with the
+ * 100 mm marker are printed, not claimed (docs/ar.md).
  *
  * <p><b>Clutter</b>: 1,000 frames of 320x240 (the detector's decision is per square; small frames
  * render fast), each with 12 clutter items (the synthetic Background's: dark boxes, squares of
  * random bits, AprilTag 36h11, ArUco 6x6 and MIP_25h7 codes, checkerboards, text, binary textures,
  * our codes with 3-6 bits flipped, pictures in a black frame; 12-120 px, turned and sheared), blur
- * 0.3-1.2 px and noise 2-5 levels. No marker may be reported with our rule; BoofCV's default cap
- * reports some.
+ * 0.3-1.2 px and noise 2-5 levels ({@link NegativeFrames#clutter}). No marker may be reported with
+ * our rule; BoofCV's default cap reports some.
  *
  * <p><b>Trade-off</b>: each candidate square's read (CodeReader: its best code, the sum of its
  * wrong bits' confidences, its uncertain bits) is recorded once, and the detection rate and false
@@ -104,35 +103,9 @@ class FarTiltedDetectionTest {
         return g;
     }
 
-    static FiducialDetector<GrayU8> boof(int cap) {
-        ConfigHammingMarker code = MarkerDictionary.DEFAULT.config();
-        code.minimumHamming = cap;
-        return FactoryFiducial.squareHamming(code, new ConfigFiducialHammingDetector(), GrayU8.class);
-    }
-
     /** One positive frame: 1.5-2 m, tilt in bin b, the degradations of the class comment. */
-    static PlacedMarker marker(Random random, int bin, double size, CameraIntrinsics k) {
-        double d = 1.5 + 0.5 * random.nextDouble();
-        double tilt = 10 * bin + 10 * random.nextDouble();
-        double axis = random.nextDouble() * 2 * Math.PI;
-        double[] r = PlacedMarker.facingCamera(tilt * Math.cos(axis), tilt * Math.sin(axis), random.nextDouble() * 360);
-        // Anywhere with the paper (0.8 of the marker's width beyond its centre) inside 90% of the image.
-        double hw = 0.9 * k.width() / 2 / k.fx() * d - 0.8 * size;
-        double hh = 0.9 * k.height() / 2 / k.fy() * d - 0.8 * size;
-        double x = (2 * random.nextDouble() - 1) * hw;
-        double y = (2 * random.nextDouble() - 1) * hh;
-        PlacedMarker m = PlacedMarker.of(MarkerPattern.of(MarkerDictionary.DEFAULT, random.nextInt(250)), size, r,
-                new double[] {x, y, d});
-        if (random.nextInt(5) == 0) {
-            m = m.occludedBy((random.nextDouble() - 0.5) * 0.5 * size, (random.nextDouble() - 0.5) * 0.5 * size,
-                    0.08 * size);
-        }
-        return m;
-    }
-
-    static SceneOptions degradation(Random random) {
-        return new SceneOptions(0.5 + 0.7 * random.nextDouble(), 2 + 3 * random.nextDouble(), 0.5 * random.nextDouble(),
-                0, 2, random.nextLong());
+    static MarkerShot shot(MarkerShots shots, Random random, int bin) {
+        return shots.shot(random, 1.5, 2.0, 10 * bin, 10 * bin + 10);
     }
 
     @BeforeAll
@@ -143,24 +116,20 @@ class FarTiltedDetectionTest {
         System.out.println(table(0, "150 mm marker, 640x480, 1.5-2 m"));
         System.out.println(table(1, "100 mm marker, 640x480, 1.5-2 m (reported, not claimed)"));
         long positives = System.nanoTime();
-        SyntheticCamera camera = new SyntheticCamera(CLUTTER_K);
+        NegativeFrames negatives = new NegativeFrames(CLUTTER_K);
         FiducialTracker tracker = new FiducialTracker(TrackerConfig.defaults(0.1), CLUTTER_K);
-        FiducialDetector<GrayU8> boofDefault = boof(MarkerDictionary.DEFAULT.minimumHamming());
-        FiducialDetector<GrayU8> oldCap = boof(OLD_CAP);
+        BoofSquareHamming boofDefault = BoofSquareHamming.capped(MarkerDictionary.DEFAULT,
+                MarkerDictionary.DEFAULT.minimumHamming());
+        BoofSquareHamming oldCap = BoofSquareHamming.capped(MarkerDictionary.DEFAULT, OLD_CAP);
         Recorder recorder = new Recorder();
         Random random = new Random(1803);
         for (int i = 0; i < CLUTTER_FRAMES; i++) {
-            SceneOptions options = new SceneOptions(0.3 + 0.9 * random.nextDouble(), 2 + 3 * random.nextDouble(),
-                    0.5 * random.nextDouble(), 12, 2, random.nextLong());
-            GrayImage image = camera.render(List.of(), options);
+            GrayImage image = negatives.clutter(random);
             falseOurs += tracker.detect(image).size();
-            GrayU8 g = gray(image);
-            boofDefault.detect(g);
-            falseBoofDefault += boofDefault.totalFound();
-            oldCap.detect(g);
-            falseOldCap += oldCap.totalFound();
+            falseBoofDefault += boofDefault.detect(image);
+            falseOldCap += oldCap.detect(image);
             recorder.reads.clear();
-            recorder.process(g);
+            recorder.process(gray(image));
             for (double[] read : recorder.reads) {
                 clutterReads.add(new double[] {read[1], read[2]});
             }
@@ -170,19 +139,20 @@ class FarTiltedDetectionTest {
     }
 
     private static double[][] positives(int set, double size, long seed) {
-        SyntheticCamera camera = new SyntheticCamera(K);
+        MarkerShots shots = MarkerShots.inView(K, size);
         FiducialTracker tracker = new FiducialTracker(TrackerConfig.defaults(size), K);
-        FiducialDetector<GrayU8> boofDefault = boof(MarkerDictionary.DEFAULT.minimumHamming());
-        FiducialDetector<GrayU8> oldCap = boof(OLD_CAP);
+        BoofSquareHamming boofDefault = BoofSquareHamming.capped(MarkerDictionary.DEFAULT,
+                MarkerDictionary.DEFAULT.minimumHamming());
+        BoofSquareHamming oldCap = BoofSquareHamming.capped(MarkerDictionary.DEFAULT, OLD_CAP);
         Recorder recorder = new Recorder();
         Random random = new Random(seed);
         int per = PER_BIN[set];
         double[][] reads = new double[BINS * per][];
         for (int bin = 0; bin < BINS; bin++) {
             for (int i = 0; i < per; i++) {
-                PlacedMarker m = marker(random, bin, size, K);
-                GrayImage image = camera.render(List.of(m), degradation(random));
-                int id = m.pattern().id();
+                MarkerShot shot = shot(shots, random, bin);
+                GrayImage image = shot.image();
+                int id = shot.marker().pattern().id();
                 for (MarkerDetection d : tracker.detect(image)) {
                     if (d.id() == id) {
                         found[set][bin]++;
@@ -190,17 +160,16 @@ class FarTiltedDetectionTest {
                         wrongIds++;
                     }
                 }
-                GrayU8 g = gray(image);
-                boofDefault.detect(g);
-                for (int k = 0; k < boofDefault.totalFound(); k++) {
-                    boofFound[set][bin] += boofDefault.getId(k) == id ? 1 : 0;
+                int n = boofDefault.detect(image);
+                for (int k = 0; k < n; k++) {
+                    boofFound[set][bin] += boofDefault.id(k) == id ? 1 : 0;
                 }
-                oldCap.detect(g);
-                for (int k = 0; k < oldCap.totalFound(); k++) {
-                    oldFound[set][bin] += oldCap.getId(k) == id ? 1 : 0;
+                n = oldCap.detect(image);
+                for (int k = 0; k < n; k++) {
+                    oldFound[set][bin] += oldCap.id(k) == id ? 1 : 0;
                 }
                 recorder.reads.clear();
-                recorder.process(g);
+                recorder.process(gray(image));
                 double[] best = {Double.NaN, Double.NaN};
                 for (double[] read : recorder.reads) {
                     if (read[0] == id && !(read[1] >= best[0])) {

@@ -3,12 +3,11 @@ package org.skinlab.ar;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.util.List;
 import java.util.Random;
 
 import org.junit.jupiter.api.Test;
-import org.skinlab.ar.synthetic.PlacedMarker;
-import org.skinlab.ar.synthetic.SyntheticCamera;
+import org.skinlab.ar.synthetic.MarkerShot;
+import org.skinlab.ar.synthetic.MarkerShots;
 
 /** FarTiltedDetectionTest's positive frames (150 mm, 1.5-2 m, tilt 0-70) through a lens. */
 class FarTiltedLensTest {
@@ -29,15 +28,15 @@ class FarTiltedLensTest {
     private static final int FRAMES = 28;
 
     private static int count(CameraIntrinsics k) {
-        SyntheticCamera camera = new SyntheticCamera(k);
+        // The lens changes neither the pinhole's focal lengths nor so the markers' placement.
+        MarkerShots shots = MarkerShots.inView(k, FarTiltedDetectionTest.SIZE);
         FiducialTracker tracker = new FiducialTracker(TrackerConfig.defaults(FarTiltedDetectionTest.SIZE), k);
         Random random = new Random(1804);
         int hits = 0;
         for (int i = 0; i < FRAMES; i++) {
-            PlacedMarker m = FarTiltedDetectionTest.marker(random, i % FarTiltedDetectionTest.BINS,
-                    FarTiltedDetectionTest.SIZE, FarTiltedDetectionTest.K);
-            for (MarkerDetection d : tracker.detect(camera.render(List.of(m), FarTiltedDetectionTest.degradation(random)))) {
-                assertEquals(m.pattern().id(), d.id(), "frame " + i);
+            MarkerShot shot = FarTiltedDetectionTest.shot(shots, random, i % FarTiltedDetectionTest.BINS);
+            for (MarkerDetection d : tracker.detect(shot.image())) {
+                assertEquals(shot.marker().pattern().id(), d.id(), "frame " + i);
                 hits++;
             }
         }

@@ -10,7 +10,6 @@ final class PoseError {
     }
 
     static double distance(double[] a, double[] b) {
-        double dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2];
-        return Math.sqrt(dx * dx + dy * dy + dz * dz);
+        return PoseMath.distance(a, b);
     }
 }

@@ -3,18 +3,15 @@ package org.skinlab.ar;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Random;
 
-import boofcv.abst.fiducial.FiducialDetector;
-import boofcv.factory.fiducial.ConfigFiducialHammingDetector;
-import boofcv.factory.fiducial.ConfigHammingMarker;
-import boofcv.factory.fiducial.FactoryFiducial;
-import boofcv.factory.fiducial.HammingDictionary;
-import boofcv.struct.image.GrayU8;
 import org.junit.jupiter.api.Test;
+import org.skinlab.ar.synthetic.DetectionTally;
+import org.skinlab.ar.synthetic.MarkerShot;
+import org.skinlab.ar.synthetic.MarkerShots;
+import org.skinlab.ar.synthetic.NegativeFrames;
 import org.skinlab.ar.synthetic.PlacedMarker;
 import org.skinlab.ar.synthetic.SceneOptions;
 import org.skinlab.ar.synthetic.SyntheticCamera;
@@ -25,8 +22,8 @@ import org.skinlab.ar.synthetic.SyntheticCamera;
  * a phone's main camera at VGA), anywhere in the image, turned about its normal at random, tilted
  * about a random axis in its plane; every frame blurred (sigma 0.5-1.2 px), noisy (sigma 2-5 gray
  * levels), lit unevenly (up to 50% falloff), every fifth with an occluder (a disc of 1.6 cm, about
- * 1.3 code cells) over the code. Frames and their degradations come from one seed: the counts below
- * are deterministic.
+ * 1.3 code cells) over the code ({@link MarkerShots#central}). Frames and their degradations come
+ * from one seed: the counts below are deterministic.
  *
  * <p><b>Rates</b> (issue 10's goals): at least 99% found up to 1.5 m and 85% at 1.5-2 m, for tilts
  * up to 60 degrees. Between 60 and 70 degrees of tilt BoofCV's square detector itself loses markers
@@ -45,7 +42,8 @@ import org.skinlab.ar.synthetic.SyntheticCamera;
  *
  * <p><b>Negative frames</b>: clutter (the synthetic Background's: dark boxes, squares of random
  * bits, other codes, checkerboards, text, ...) and codes of other dictionaries (AprilTag 36h11,
- * ArUco 6x6 and MIP_25h7, which our 36h12 dictionary must not read), 0.3-1 m away: no detection at
+ * ArUco 6x6 and MIP_25h7, which our 36h12 dictionary must not read), 0.3-1 m away
+ * ({@link NegativeFrames#mixed}): no detection at
  * all with our rule (FiducialTracker's "False markers"); BoofCV's default cap
  * (minimumHamming, 12 of 36 bits) on the same frames reports markers that are not there, which this
  * test shows.
@@ -54,144 +52,71 @@ class TrackerEvaluationTest {
     static final CameraIntrinsics K = CameraIntrinsics.fromHorizontalFov(640, 480, 60);
     static final double SIZE = 0.10;
 
-    /** One rendered frame with its truth. */
-    private record Shot(GrayImage image, PlacedMarker marker, double distance, double tilt) {
+    private static String line(DetectionTally t, String name) {
+        return String.format(Locale.ROOT, "%-34s found %3d of %3d (%.1f%%), wrong ids %d, median error %.2f mm %.2f deg",
+                name, t.found(), t.frames(), 100 * t.rate(), t.wrongIds(), 1000 * t.positionError(0.5),
+                t.rotationError(0.5));
     }
 
-    private static Shot shot(SyntheticCamera camera, Random random, MarkerDictionary dictionary, double distance,
-            double tilt) {
-        int id = random.nextInt(dictionary.codeCount());
-        double axis = random.nextDouble() * 2 * Math.PI;
-        double[] r = PlacedMarker.facingCamera(tilt * Math.cos(axis), tilt * Math.sin(axis), random.nextDouble() * 360);
-        // Anywhere the whole sheet stays in view: within about 40% of the half-width and 30% of the half-height.
-        double x = (random.nextDouble() - 0.5) * 0.45 * distance;
-        double y = (random.nextDouble() - 0.5) * 0.3 * distance;
-        PlacedMarker m = PlacedMarker.of(MarkerPattern.of(dictionary, id), SIZE, r, new double[] {x, y, distance});
-        if (random.nextInt(5) == 0) {
-            m = m.occludedBy((random.nextDouble() - 0.5) * 0.05, (random.nextDouble() - 0.5) * 0.05, 0.008);
-        }
-        SceneOptions options = new SceneOptions(0.5 + 0.7 * random.nextDouble(), 2 + 3 * random.nextDouble(),
-                0.5 * random.nextDouble(), 0, 3, random.nextLong());
-        return new Shot(camera.render(List.of(m), options), m, distance, tilt);
-    }
-
-    /** Found count, wrong ids, and the errors of the found. */
-    private static final class Tally {
-        int frames;
-        int found;
-        int wrong;
-        final List<Double> position = new ArrayList<>();
-        final List<Double> rotation = new ArrayList<>();
-
-        void add(Shot s, List<MarkerDetection> detections) {
-            frames++;
-            for (MarkerDetection d : detections) {
-                if (d.id() != s.marker().pattern().id()) {
-                    wrong++;
-                    continue;
-                }
-                found++;
-                position.add(PoseError.distance(d.translation(), s.marker().translation()));
-                rotation.add(PoseError.rotationDegrees(d.rotation(), s.marker().rotation()));
-            }
-        }
-
-        double rate() {
-            return (double) found / frames;
-        }
-
-        static double median(List<Double> values) {
-            List<Double> sorted = new ArrayList<>(values);
-            sorted.sort(null);
-            return sorted.get(sorted.size() / 2);
-        }
-
-        String line(String name) {
-            return String.format(Locale.ROOT, "%-34s found %3d of %3d (%.1f%%), wrong ids %d, median error %.2f mm %.2f deg",
-                    name, found, frames, 100 * rate(), wrong, 1000 * median(position), median(rotation));
-        }
-    }
-
-    private static Tally run(int frames, long seed, double minDistance, double maxDistance, double minTilt,
+    private static DetectionTally run(int frames, long seed, double minDistance, double maxDistance, double minTilt,
             double maxTilt) {
-        SyntheticCamera camera = new SyntheticCamera(K);
+        MarkerShots shots = MarkerShots.central(K, MarkerDictionary.DEFAULT, SIZE);
         FiducialTracker tracker = new FiducialTracker(TrackerConfig.defaults(SIZE), K);
         Random random = new Random(seed);
-        Tally tally = new Tally();
+        DetectionTally tally = new DetectionTally();
         for (int i = 0; i < frames; i++) {
-            double d = minDistance + (maxDistance - minDistance) * random.nextDouble();
-            double tilt = minTilt + (maxTilt - minTilt) * random.nextDouble();
-            Shot s = shot(camera, random, MarkerDictionary.DEFAULT, d, tilt);
-            tally.add(s, tracker.detect(s.image()));
+            MarkerShot s = shots.shot(random, minDistance, maxDistance, minTilt, maxTilt);
+            tally.add(s.marker(), tracker.detect(s.image()));
         }
         return tally;
     }
 
     @Test
     void upTo1_5MetresNearlyEveryMarkerIsFound() {
-        Tally t = run(300, 101, 0.3, 1.5, 0, 60);
-        System.out.println(t.line("0.3-1.5 m, tilt 0-60"));
-        assertEquals(0, t.wrong, "wrong ids");
-        assertTrue(t.rate() >= 0.99, t.line("0.3-1.5 m"));
+        DetectionTally t = run(300, 101, 0.3, 1.5, 0, 60);
+        System.out.println(line(t, "0.3-1.5 m, tilt 0-60"));
+        assertEquals(0, t.wrongIds(), "wrong ids");
+        assertTrue(t.rate() >= 0.99, line(t, "0.3-1.5 m"));
     }
 
     @Test
     void from1_5To2MetresMostMarkersAreFound() {
-        Tally t = run(120, 202, 1.5, 2.0, 0, 60);
-        System.out.println(t.line("1.5-2 m, tilt 0-60"));
-        assertEquals(0, t.wrong, "wrong ids");
-        assertTrue(t.rate() >= 0.85, t.line("1.5-2 m"));
+        DetectionTally t = run(120, 202, 1.5, 2.0, 0, 60);
+        System.out.println(line(t, "1.5-2 m, tilt 0-60"));
+        assertEquals(0, t.wrongIds(), "wrong ids");
+        assertTrue(t.rate() >= 0.85, line(t, "1.5-2 m"));
     }
 
     @Test
     void steepTiltsUpTo1Metre() {
-        Tally t = run(80, 303, 0.3, 1.0, 60, 70);
-        System.out.println(t.line("0.3-1 m, tilt 60-70"));
-        assertEquals(0, t.wrong, "wrong ids");
-        assertTrue(t.rate() >= 0.85, t.line("0.3-1 m, steep"));
+        DetectionTally t = run(80, 303, 0.3, 1.0, 60, 70);
+        System.out.println(line(t, "0.3-1 m, tilt 60-70"));
+        assertEquals(0, t.wrongIds(), "wrong ids");
+        assertTrue(t.rate() >= 0.85, line(t, "0.3-1 m, steep"));
     }
 
     @Test
     void atAboutOneMetreTheErrorsAreWithinTheirBounds() {
-        Tally t = run(80, 404, 0.95, 1.05, 0, 60);
-        System.out.println(t.line("0.95-1.05 m, tilt 0-60"));
-        assertTrue(Tally.median(t.position) <= 0.002, t.line("about 1 m"));
-        assertTrue(Tally.median(t.rotation) <= 0.4, t.line("about 1 m"));
+        DetectionTally t = run(80, 404, 0.95, 1.05, 0, 60);
+        System.out.println(line(t, "0.95-1.05 m, tilt 0-60"));
+        assertTrue(t.positionError(0.5) <= 0.002, line(t, "about 1 m"));
+        assertTrue(t.rotationError(0.5) <= 0.4, line(t, "about 1 m"));
     }
 
     @Test
     void negativeFramesReportNothingWhileBoofCvsDefaultCapReportsMarkersThatAreNotThere() {
-        SyntheticCamera camera = new SyntheticCamera(K);
+        NegativeFrames negatives = new NegativeFrames(K);
         FiducialTracker tracker = new FiducialTracker(TrackerConfig.defaults(SIZE), K);
-        ConfigHammingMarker code = ConfigHammingMarker.loadDictionary(HammingDictionary.ARUCO_MIP_36h12);
-        FiducialDetector<GrayU8> boofDefault = FactoryFiducial.squareHamming(code, new ConfigFiducialHammingDetector(),
-                GrayU8.class);
-        MarkerDictionary[] others = {MarkerDictionary.APRILTAG_36H11, MarkerDictionary.ARUCO_6X6_1000,
-            MarkerDictionary.ARUCO_MIP_25H7};
+        BoofSquareHamming boofDefault = BoofSquareHamming.capped(MarkerDictionary.DEFAULT,
+                MarkerDictionary.DEFAULT.minimumHamming());
         Random random = new Random(505);
         int ours = 0;
         int theirs = 0;
         int frames = 90;
         for (int i = 0; i < frames; i++) {
-            GrayImage image;
-            if (i % 3 == 0) {
-                image = camera.render(List.of(), SceneOptions.camera(random.nextLong()).withClutter(14));
-            } else {
-                List<PlacedMarker> markers = new ArrayList<>();
-                for (int k = 0; k < 2; k++) {
-                    Shot s = shot(camera, random, others[random.nextInt(others.length)], 0.3 + 0.7 * random.nextDouble(),
-                            50 * random.nextDouble());
-                    double[] t = s.marker().translation();
-                    t[0] += k == 0 ? -0.12 * t[2] : 0.12 * t[2];
-                    markers.add(PlacedMarker.of(s.marker().pattern(), SIZE, s.marker().rotation(), t));
-                }
-                image = camera.render(markers, SceneOptions.camera(random.nextLong()).withClutter(6));
-            }
+            GrayImage image = negatives.mixed(random, i);
             ours += tracker.detect(image).size();
-            GrayU8 gray = new GrayU8(image.width(), image.height());
-            gray.data = image.pixels();
-            boofDefault.detect(gray);
-            theirs += boofDefault.totalFound();
+            theirs += boofDefault.detect(image);
         }
         System.out.println("negative frames: " + frames + ", false markers: ours " + ours + ", BoofCV's default cap "
                 + theirs);

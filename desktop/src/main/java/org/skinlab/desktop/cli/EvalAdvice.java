@@ -3,6 +3,8 @@ package org.skinlab.desktop.cli;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
+import org.skinlab.ar.FiducialTracker;
+
 /**
  * The recommendations of {@code skinlab eval}'s advice section, one per use, each argued from the
  * numbers the section copied from the others into its results (so every number printed is one of
@@ -49,6 +51,16 @@ final class EvalAdvice {
                     }
                 }
             }
+        }
+        JsonNode tracking = context.measured("tracking");
+        if (tracking != null && tracking.has("time")) {
+            ObjectNode k = in.putObject("tracking");
+            k.put("detectMedianMs", tracking.at("/time/oursMedianMs").asDouble());
+            k.put("width", tracking.at("/camera/width").asInt());
+            k.put("height", tracking.at("/camera/height").asInt());
+            k.put("fullFrameEvery", FiducialTracker.FULL_FRAME_EVERY);
+            k.put("framePercent", EvalReport.round(100 * k.get("detectMedianMs").asDouble() * 1000
+                    / EvalAdviceSection.FRAME_MICROS));
         }
     }
 
@@ -216,6 +228,19 @@ final class EvalAdvice {
         } else {
             t.append("(No file with more influences per vertex than a GPU reads was measured, so the cost of its cap is"
                     + " not shown here.)");
+        }
+        if (in.has("tracking")) {
+            t.append(" The tracker's search of a whole ").append(EvalReport.num(r, "/inputs/tracking/width")).append("x")
+                    .append(EvalReport.num(r, "/inputs/tracking/height")).append(" frame takes ")
+                    .append(EvalReport.num(r, "/inputs/tracking/detectMedianMs")).append(" ms on one core here, ")
+                    .append(EvalReport.num(r, "/inputs/tracking/framePercent"))
+                    .append(" % of a frame at ").append(EvalReport.num(r, "/frameRateHz"))
+                    .append(" Hz; in video it searches the whole frame only every ")
+                    .append(EvalReport.num(r, "/inputs/tracking/fullFrameEvery"))
+                    .append("th frame and when it loses a marker, and otherwise only near the last markers, several"
+                            + " times faster (`skinlab bench track`).");
+        } else {
+            t.append(" The tracker's time per frame: the section `tracking` was not run (`--only`).");
         }
         report.paragraph(t.toString());
     }

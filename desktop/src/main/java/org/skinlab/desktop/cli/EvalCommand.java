@@ -39,14 +39,16 @@ import picocli.CommandLine.Model.CommandSpec;
                 + " and characters on the CPU, drawn fps against copies with CPU and GPU skinning), quality (volume kept"
                 + " over each clip, joint ring against twist, bulge against bend, largest distance between methods, the"
                 + " error of capping influences), pictures (the viewer's screenshots of each method at each asset's"
-                + " extreme pose, and the difference view), advice (what it means for AR on a phone: time against"
-                + " vertices, influences and joints with fitted lines; a recommendation per use drawn from the other"
-                + " sections).",
+                + " extreme pose, and the difference view), tracking (markers found and pose error per distance and"
+                + " tilt, false markers, time per frame beside BoofCV's detector), advice (what it means for AR on a"
+                + " phone: time against vertices, influences and joints with fitted lines; a recommendation per use"
+                + " drawn from the other sections).",
             "Run it from the repository (it reads assets/ and ../shared). The full run takes minutes; --quick under 3."})
 public final class EvalCommand implements Callable<Integer> {
     /** The sections in report order; a new section is one entry here. */
     static final List<EvalSection> SECTIONS = List.of(new EvalLoadSection(), new EvalTimeSection(),
-            new EvalCrowdsSection(), new EvalQualitySection(), new EvalPicturesSection(), new EvalAdviceSection());
+            new EvalCrowdsSection(), new EvalQualitySection(), new EvalPicturesSection(), new EvalTrackingSection(),
+            new EvalAdviceSection());
 
     @Option(names = "--out", paramLabel = "DIR", description = "where the report goes (default: ${DEFAULT-VALUE})")
     Path out = Path.of("docs/evaluation");
@@ -56,7 +58,8 @@ public final class EvalCommand implements Callable<Integer> {
     boolean quick;
 
     @Option(names = "--only", paramLabel = "SECTION", split = ",",
-            description = "only these sections (comma-separated), of: load, time, crowds, quality, pictures, advice")
+            description = "only these sections (comma-separated), of: load, time, crowds, quality, pictures, tracking,"
+                    + " advice")
     List<String> only = new ArrayList<>();
 
     @Spec

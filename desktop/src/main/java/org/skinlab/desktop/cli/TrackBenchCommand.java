@@ -18,16 +18,10 @@ import java.util.stream.Stream;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
-import boofcv.abst.fiducial.FiducialDetector;
 import boofcv.concurrency.BoofConcurrency;
-import boofcv.factory.distort.LensDistortionFactory;
-import boofcv.factory.fiducial.ConfigFiducialHammingDetector;
-import boofcv.factory.fiducial.ConfigHammingMarker;
-import boofcv.factory.fiducial.FactoryFiducial;
-import boofcv.struct.image.GrayU8;
 import georegression.struct.se.Se3_F64;
 
-import org.skinlab.ar.BoofCameras;
+import org.skinlab.ar.BoofSquareHamming;
 import org.skinlab.ar.CameraIntrinsics;
 import org.skinlab.ar.FiducialTracker;
 import org.skinlab.ar.GrayImage;
@@ -43,8 +37,8 @@ import picocli.CommandLine.Spec;
 /**
  * {@code skinlab bench track}: milliseconds per frame of a video (the synthetic one of
  * {@link TrackBenchVideo#synthetic}, or a folder of a real video's frames) for BoofCV's
- * squareHamming detector with its default settings (detection and each marker's pose), our
- * {@link FiducialTracker#detect} (whole frame), our {@link FiducialTracker#track} (the frames in
+ * squareHamming detector with its default settings ({@link BoofSquareHamming}: detection and each
+ * marker's pose), our {@link FiducialTracker#detect} (whole frame), our {@link FiducialTracker#track} (the frames in
  * order, near the last markers first) and OpenCV's ArUco detector with each marker's pose
  * ({@link OpenCvAruco}, when python3 has cv2). Each round runs every contender once over all
  * frames, one after the other, so that they share the machine's state; per contender the report
@@ -142,12 +136,7 @@ public final class TrackBenchCommand implements Callable<Integer> {
         CameraIntrinsics k = video.camera();
         TrackerConfig config = TrackerConfig.of(dict, markerSizeMm / 1000);
         FiducialTracker ours = new FiducialTracker(config, k);
-        ConfigHammingMarker code = ConfigHammingMarker.loadDictionary(dict.boofcvDictionary());
-        code.targetWidth = markerSizeMm / 1000;
-        FiducialDetector<GrayU8> boof = FactoryFiducial.squareHamming(code, new ConfigFiducialHammingDetector(),
-                GrayU8.class);
-        boof.setLensDistortion(LensDistortionFactory.narrow(BoofCameras.toBoof(k)), k.width(), k.height());
-        GrayU8 gray = new GrayU8(k.width(), k.height());
+        BoofSquareHamming boof = BoofSquareHamming.defaults(dict, markerSizeMm / 1000, k);
         Se3_F64 pose = new Se3_F64();
         int[] inRegion = new int[1];
         OpenCvAruco.Failure why = new OpenCvAruco.Failure();
@@ -159,16 +148,15 @@ public final class TrackBenchCommand implements Callable<Integer> {
                 (ms, ids) -> {
                     for (int i = 0; i < n; i++) {
                         long start = now();
-                        gray.data = list.get(i).pixels();
-                        boof.detect(gray);
-                        for (int m = 0; m < boof.totalFound(); m++) {
-                            boof.getFiducialToCamera(m, pose);
+                        int found = boof.detect(list.get(i));
+                        for (int m = 0; m < found; m++) {
+                            boof.pose(m, pose);
                         }
                         ms[i] = (now() - start) * 1e-6;
                         if (ids != null) {
                             TreeSet<Integer> s = new TreeSet<>();
-                            for (int m = 0; m < boof.totalFound(); m++) {
-                                s.add((int) boof.getId(m));
+                            for (int m = 0; m < found; m++) {
+                                s.add(boof.id(m));
                             }
                             ids.add(new ArrayList<>(s));
                         }
