@@ -74,7 +74,7 @@ class ParallelSkinnerTest {
     }
 
     /** A kernel that records the ranges it is given. */
-    private static final class Recorder implements Skinner {
+    private static class Recorder implements Skinner {
         final List<int[]> ranges = Collections.synchronizedList(new ArrayList<>());
         final List<int[]> frameRanges = Collections.synchronizedList(new ArrayList<>());
         final SkinnedGeometry geometry;
@@ -210,41 +210,14 @@ class ParallelSkinnerTest {
     }
 
     /** Writes the call's stamp (its normals array's first value) to every position of its range. */
-    private static final class Stamper implements Skinner {
-        final SkinnedGeometry geometry;
-
+    private static final class Stamper extends Recorder {
         Stamper(SkinnedGeometry geometry) {
-            this.geometry = geometry;
-        }
-
-        @Override
-        public SkinningMethod method() {
-            return SkinningMethod.LBS;
-        }
-
-        @Override
-        public NormalTransform normalTransform() {
-            return NormalTransform.BLENDED_MATRIX;
-        }
-
-        @Override
-        public SkinnedGeometry geometry() {
-            return geometry;
+            super(geometry, 1);
         }
 
         @Override
         public void skin(JointPalette palette, float[] outPositions, float[] stamp, int from, int to) {
             Arrays.fill(outPositions, from, to, stamp[0]);
-        }
-
-        @Override
-        public void skinFrames(JointPalette palette, float[] outFrames, int from, int to) {
-            throw new UnsupportedOperationException();
-        }
-
-        @Override
-        public String implementation() {
-            return "stamper";
         }
     }
 
