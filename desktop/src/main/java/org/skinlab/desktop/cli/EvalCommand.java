@@ -33,7 +33,7 @@ import picocli.CommandLine.Model.CommandSpec;
  */
 @Command(name = "eval", mixinStandardHelpOptions = true,
         description = {"The evaluation: measures every section and writes DIR/README.md, one PNG per figure and"
-                + " DIR/results.json with every number. Sections so far: load (import time: our assets, the shared"
+                + " DIR/results.json with every number. Sections: load (import time: our assets, the shared"
                 + " corpus, the conformance suite, assimp beside), time (time per deformation: LBS, DQS, CoR; SIMD and"
                 + " scalar; 4 influences and all; beside the thesis' table), crowds (characters per frame against threads"
                 + " and characters on the CPU, drawn fps against copies with CPU and GPU skinning), quality (volume kept"
@@ -43,7 +43,8 @@ import picocli.CommandLine.Model.CommandSpec;
                 + " tilt, false markers, time per frame beside BoofCV's detector), advice (what it means for AR on a"
                 + " phone: time against vertices, influences and joints with fitted lines; a recommendation per use"
                 + " drawn from the other sections).",
-            "Run it from the repository (it reads assets/ and ../shared). The full run takes minutes; --quick under 3."})
+            "Run it from the repository (it reads assets/ and ../shared), under xvfb-run -a without a display (the pictures"
+                + " and the drawn crowds need one). The full run takes about 10 minutes on 2 cores; --quick under 3."})
 public final class EvalCommand implements Callable<Integer> {
     /** The sections in report order; a new section is one entry here. */
     static final List<EvalSection> SECTIONS = List.of(new EvalLoadSection(), new EvalTimeSection(),
