@@ -20,6 +20,7 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 
 import me.tongfei.progressbar.ProgressBar;
 import me.tongfei.progressbar.ProgressBarBuilder;
+import me.tongfei.progressbar.ProgressBarConsumer;
 import me.tongfei.progressbar.ProgressBarStyle;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -92,8 +93,13 @@ public final class EvalCommand implements Callable<Integer> {
         long start = System.nanoTime();
         ObjectNode bySection = results.putObject("sections");
         context.useResults(bySection);
-        try (ProgressBar bar = new ProgressBarBuilder().setTaskName("eval").setInitialMax(total(lengths))
-                .setStyle(ProgressBarStyle.ASCII).setUnit("s", 10).setUpdateIntervalMillis(500).build()) {
+        ProgressBarBuilder builder = new ProgressBarBuilder().setTaskName("eval").setInitialMax(total(lengths))
+                .setStyle(ProgressBarStyle.ASCII).setUnit("s", 10).setUpdateIntervalMillis(500);
+        if (System.console() == null) {
+            // A log or a pipe, not a terminal: a line every 10 s, on the command's error stream.
+            builder.setConsumer(new LineConsumer(err)).setUpdateIntervalMillis(10_000);
+        }
+        try (ProgressBar bar = builder.build()) {
             context.useBar(bar);
             for (int i = 0; i < sections.size(); i++) {
                 EvalSection s = sections.get(i);
@@ -133,6 +139,31 @@ public final class EvalCommand implements Callable<Integer> {
         report.line("");
         report.paragraph("Sections: " + sections.stream().map(EvalSection::title).collect(Collectors.joining(", "))
                 + ".");
+    }
+
+    /** The bar as whole lines on a writer, for logs. */
+    private static final class LineConsumer implements ProgressBarConsumer {
+        private final PrintWriter out;
+
+        LineConsumer(PrintWriter out) {
+            this.out = out;
+        }
+
+        @Override
+        public int getMaxRenderedLength() {
+            return 100;
+        }
+
+        @Override
+        public void accept(String rendered) {
+            out.println(rendered.trim());
+            out.flush();
+        }
+
+        @Override
+        public void close() {
+            out.flush();
+        }
     }
 
     private static long total(long[] lengths) {
