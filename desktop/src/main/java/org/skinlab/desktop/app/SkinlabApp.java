@@ -11,6 +11,7 @@ import java.time.LocalDateTime;
 import java.time.format.DateTimeFormatter;
 
 import org.lwjgl.system.MemoryUtil;
+import org.skinlab.desktop.ExitCodes;
 import org.skinlab.desktop.render.GlDebugLog;
 import org.skinlab.desktop.render.GlWindow;
 import org.skinlab.desktop.render.Screenshot;
@@ -31,11 +32,6 @@ import org.skinlab.simulation.Frame;
  * always show the same time step.
  */
 public final class SkinlabApp implements AutoCloseable {
-    /** Exit statuses (the command line's: 0 fine, 1 failure, 3 a file that cannot be read). */
-    public static final int OK = 0;
-    public static final int FAILED = 1;
-    public static final int INVALID_FILE = 3;
-
     private static final float[] BACKGROUND = {0.17f, 0.18f, 0.21f};
 
     private final GlWindow window;
@@ -108,10 +104,10 @@ public final class SkinlabApp implements AutoCloseable {
                 script = UiScript.read(options.script());
             } catch (IOException e) {
                 err.println("skinlab: cannot read the script " + options.script() + ": " + e.getMessage());
-                return FAILED;
+                return ExitCodes.INTERNAL;
             } catch (IllegalArgumentException e) {
                 err.println("skinlab: " + e.getMessage());
-                return FAILED;
+                return ExitCodes.INTERNAL;
             }
         }
         GlWindow window;
@@ -122,14 +118,14 @@ public final class SkinlabApp implements AutoCloseable {
             if (ar != null) {
                 ar.feed().close();
             }
-            return FAILED;
+            return ExitCodes.UNAVAILABLE;
         }
         try (window; SkinlabApp app = new SkinlabApp(window, options, ar, out, err)) {
             if (script != null) {
                 app.player = new ScriptPlayer(script, window, app, app.viewer, app.ui);
             }
             int status = options.headless() ? app.screenshotOnce() : app.loop();
-            return app.reportGlErrors() ? FAILED : status;
+            return app.reportGlErrors() ? ExitCodes.INTERNAL : status;
         }
     }
 
@@ -140,13 +136,13 @@ public final class SkinlabApp implements AutoCloseable {
         String error = viewer.openAndWait(file);
         if (error != null) {
             err.println("skinlab: " + error);
-            return INVALID_FILE;
+            return ExitCodes.INVALID_FILE;
         }
         LoadedModel model = viewer.current();
         String noFrame = ar == null ? null : ar.awaitCameraFrame();
         if (noFrame != null) {
             err.println("skinlab: " + noFrame);
-            return FAILED;
+            return ExitCodes.INTERNAL;
         }
         // A still picture of a time at or past the clip's end shows the end, not the loop's start.
         config.setWrapMode(WrapMode.CLAMP);
@@ -157,7 +153,7 @@ public final class SkinlabApp implements AutoCloseable {
         for (int i = 0; i < frames; i++) {
             renderFrame(i == frames - 1);
         }
-        return OK;
+        return ExitCodes.OK;
     }
 
     // ---------------------------------------------------------------------------- interactive
@@ -166,7 +162,7 @@ public final class SkinlabApp implements AutoCloseable {
         // Stand-in until the interface exists: the scene alone.
         viewer.open(options.file() != null ? options.file() : viewer.library().defaultModel());
         lastNanos = System.nanoTime();
-        int status = OK;
+        int status = ExitCodes.OK;
         AllocationMeter allocations = new AllocationMeter();
         while (!window.shouldClose() && !viewer.quitRequested()) {
             // The second half of a bounded run: the window, the model and the JIT have settled.
@@ -178,7 +174,7 @@ public final class SkinlabApp implements AutoCloseable {
                 player.beforeFrame();
                 if (player.failure() != null) {
                     err.println("skinlab: script failed: " + player.failure());
-                    status = FAILED;
+                    status = ExitCodes.INTERNAL;
                     break;
                 }
             }
@@ -187,7 +183,7 @@ public final class SkinlabApp implements AutoCloseable {
             if (last) {
                 if (!drew || !sceneHasPixels()) {
                     err.println("skinlab: nothing was drawn in " + options.exitAfterFrames() + " frames");
-                    status = FAILED;
+                    status = ExitCodes.INTERNAL;
                 }
                 break;
             }

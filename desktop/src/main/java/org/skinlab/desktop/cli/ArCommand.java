@@ -10,6 +10,7 @@ import org.skinlab.ar.CameraIntrinsics;
 import org.skinlab.ar.FiducialTracker;
 import org.skinlab.ar.MarkerDictionary;
 import org.skinlab.ar.TrackerConfig;
+import org.skinlab.desktop.ExitCodes;
 import org.skinlab.desktop.app.AppOptions;
 import org.skinlab.desktop.app.ArSetup;
 import org.skinlab.desktop.app.SkinlabApp;
@@ -107,7 +108,7 @@ public final class ArCommand implements Callable<Integer> {
             frames = source.webcam ? new WebcamSource() : source.video != null ? new VideoFileSource(source.video, fps)
                     : new ImageFolderSource(source.images, fps);
         } catch (IllegalStateException e) {
-            throw new CommandFailure(ExitCodes.INTERNAL, e.getMessage(), e);
+            throw new CommandFailure(ExitCodes.UNAVAILABLE, e.getMessage(), e);
         } catch (IllegalArgumentException | IOException e) {
             throw new CommandFailure(ExitCodes.INVALID_FILE, e.getMessage(), e);
         }

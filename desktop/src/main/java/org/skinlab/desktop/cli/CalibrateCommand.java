@@ -14,6 +14,7 @@ import org.skinlab.ar.CalibrationTarget;
 import org.skinlab.ar.CameraIntrinsics;
 import org.skinlab.ar.GrayImage;
 import org.skinlab.ar.LensDistortion;
+import org.skinlab.desktop.ExitCodes;
 import org.skinlab.desktop.ar.CameraCalibration;
 import org.skinlab.desktop.ar.GrayImages;
 import org.skinlab.desktop.ar.IntrinsicsFile;
@@ -90,7 +91,7 @@ public final class CalibrateCommand implements Callable<Integer> {
         try {
             IntrinsicsFile.write(result.intrinsics(), out);
         } catch (IOException e) {
-            throw new CommandFailure(ExitCodes.INTERNAL, "cannot write " + out + ": " + e.getMessage(), e);
+            throw new CommandFailure(ExitCodes.USAGE, "cannot write " + out + ": " + e.getMessage(), e);
         }
         o.println("wrote " + out + " (use it as: skinlab ar --intrinsics " + out + " ...)");
         o.flush();
@@ -157,7 +158,7 @@ public final class CalibrateCommand implements Callable<Integer> {
             camera = new WebcamSource();
         } catch (IllegalStateException e) {
             // The same status as skinlab ar without a webcam; this command has no --video.
-            throw new CommandFailure(ExitCodes.INTERNAL, e.getMessage().replace(" or --video FILE", ""), e);
+            throw new CommandFailure(ExitCodes.UNAVAILABLE, e.getMessage().replace(" or --video FILE", ""), e);
         }
         Views v = new Views();
         v.what = "the webcam " + camera.name();
@@ -189,7 +190,7 @@ public final class CalibrateCommand implements Callable<Integer> {
                 o.flush();
             }
         } catch (IllegalStateException e) {
-            throw new CommandFailure(ExitCodes.INTERNAL, e.getMessage(), e);
+            throw new CommandFailure(ExitCodes.UNAVAILABLE, e.getMessage(), e);
         } finally {
             camera.close();
         }

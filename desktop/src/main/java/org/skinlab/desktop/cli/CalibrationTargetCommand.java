@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.util.concurrent.Callable;
 
 import org.skinlab.ar.CalibrationTarget;
+import org.skinlab.desktop.ExitCodes;
 import org.skinlab.desktop.ar.CalibrationSheet;
 
 import picocli.CommandLine.Command;
@@ -42,7 +43,7 @@ public final class CalibrationTargetCommand implements Callable<Integer> {
         } catch (IllegalArgumentException e) {
             throw new CommandFailure(ExitCodes.USAGE, e.getMessage(), e);
         } catch (IOException e) {
-            throw new CommandFailure(ExitCodes.INTERNAL, "cannot write the calibration target: " + e.getMessage(), e);
+            throw new CommandFailure(ExitCodes.USAGE, "cannot write the calibration target: " + e.getMessage(), e);
         }
         spec.commandLine().getOut().flush();
         return ExitCodes.OK;

@@ -7,6 +7,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 
+import org.skinlab.desktop.ExitCodes;
 import org.skinlab.desktop.render.GlWindow;
 import org.skinlab.desktop.render.ModelRenderer;
 import org.skinlab.desktop.render.SkinningShader;
@@ -67,7 +68,7 @@ public final class CheckGpuCommand implements Callable<Integer> {
         try {
             window = new GlWindow("skinlab check-gpu", 64, 64, false, false);
         } catch (GlWindow.WindowUnavailableException e) {
-            throw new CommandFailure(ExitCodes.INTERNAL, e.getMessage(), e);
+            throw new CommandFailure(ExitCodes.UNAVAILABLE, e.getMessage(), e);
         }
         try (window; SkinningShader shader = new SkinningShader()) {
             for (Path file : files) {

@@ -15,6 +15,7 @@ import java.util.Comparator;
 import java.util.Deque;
 import java.util.List;
 import java.util.Locale;
+import org.skinlab.desktop.ExitCodes;
 
 /**
  * Turns the FILE arguments of a batch command into the files to read, before anything is read:

@@ -10,6 +10,7 @@ import java.util.Map;
 import java.util.concurrent.Callable;
 
 import org.skinlab.animation.RotationInterpolation;
+import org.skinlab.desktop.ExitCodes;
 import org.skinlab.model.Model;
 import org.skinlab.model.Node;
 import org.skinlab.skinning.JointArtifacts;

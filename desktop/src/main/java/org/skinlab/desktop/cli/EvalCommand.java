@@ -26,6 +26,7 @@ import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
+import org.skinlab.desktop.ExitCodes;
 
 /**
  * {@code skinlab eval}: the thesis' evaluation redone on this machine, one report. Each

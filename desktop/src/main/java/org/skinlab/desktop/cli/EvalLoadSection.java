@@ -22,6 +22,7 @@ import org.knowm.xchart.CategoryChartBuilder;
 import org.knowm.xchart.XYChart;
 import org.knowm.xchart.XYChartBuilder;
 import org.knowm.xchart.style.Styler;
+import org.skinlab.desktop.ExitCodes;
 import org.skinlab.desktop.bench.AssimpBaseline;
 
 /**

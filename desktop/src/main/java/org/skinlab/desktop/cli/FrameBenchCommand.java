@@ -15,6 +15,7 @@ import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
+import org.skinlab.desktop.ExitCodes;
 import org.skinlab.model.MeshInstance;
 import org.skinlab.model.Model;
 import org.skinlab.skinning.NormalTransform;

@@ -15,6 +15,7 @@ import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
 import org.skinlab.collada.ColladaImporter;
+import org.skinlab.desktop.ExitCodes;
 import org.skinlab.model.AnimationClip;
 import org.skinlab.model.ImportWarning;
 import org.skinlab.model.Material;

@@ -5,6 +5,7 @@ import java.util.concurrent.Callable;
 
 import org.skinlab.ar.MarkerDictionary;
 import org.skinlab.ar.MarkerPattern;
+import org.skinlab.desktop.ExitCodes;
 import org.skinlab.desktop.ar.MarkerSheet;
 
 import picocli.CommandLine.Command;
@@ -49,7 +50,7 @@ public final class MarkerCommand implements Callable<Integer> {
         } catch (IllegalArgumentException e) {
             throw new CommandFailure(ExitCodes.USAGE, e.getMessage(), e);
         } catch (IOException e) {
-            throw new CommandFailure(ExitCodes.INTERNAL, "cannot write the marker: " + e.getMessage(), e);
+            throw new CommandFailure(ExitCodes.USAGE, "cannot write the marker: " + e.getMessage(), e);
         }
         spec.commandLine().getOut().flush();
         return ExitCodes.OK;

@@ -7,6 +7,7 @@ import java.nio.file.Path;
 
 import org.skinlab.collada.ColladaException;
 import org.skinlab.collada.ColladaImporter;
+import org.skinlab.desktop.ExitCodes;
 import org.skinlab.model.Model;
 
 /** Loads the file a command names, turning failures into {@link CommandFailure}s. */

@@ -10,6 +10,7 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 
 import org.skinlab.animation.RotationInterpolation;
 import org.skinlab.animation.WrapMode;
+import org.skinlab.desktop.ExitCodes;
 import org.skinlab.skinning.SkinnedModel;
 
 /** {@code skinlab bench frame --palette-only}: the joint palette of a frame alone, no skinning. */

@@ -15,6 +15,7 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
+import org.skinlab.desktop.ExitCodes;
 import org.skinlab.desktop.bench.AssimpBaseline;
 import org.skinlab.desktop.bench.SyntheticCollada;
 
@@ -113,7 +114,7 @@ public final class ParseBenchCommand implements Callable<Integer> {
                 try {
                     assimpVersion = AssimpBaseline.loadAndVersion();
                 } catch (IllegalStateException e) {
-                    throw new CommandFailure(ExitCodes.INTERNAL, "bench parse --compare-assimp: " + e.getMessage(), e);
+                    throw new CommandFailure(ExitCodes.UNAVAILABLE, "bench parse --compare-assimp: " + e.getMessage(), e);
                 }
                 err.printf(Locale.ROOT, "bench parse: comparing with assimp %s, flags %s%n", assimpVersion,
                         AssimpBaseline.describe(assimpFlags));

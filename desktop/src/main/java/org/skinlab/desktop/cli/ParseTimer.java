@@ -12,6 +12,7 @@ import java.util.function.IntConsumer;
 
 import org.skinlab.collada.ColladaException;
 import org.skinlab.collada.ColladaImporter;
+import org.skinlab.desktop.ExitCodes;
 import org.skinlab.desktop.bench.AssimpBaseline;
 import org.skinlab.model.Mesh;
 import org.skinlab.model.Model;

@@ -17,6 +17,7 @@ import com.fasterxml.jackson.core.JsonFactory;
 import com.fasterxml.jackson.core.JsonGenerator;
 
 import org.skinlab.animation.RotationInterpolation;
+import org.skinlab.desktop.ExitCodes;
 import org.skinlab.model.AnimationClip;
 import org.skinlab.model.Mesh;
 import org.skinlab.model.Model;

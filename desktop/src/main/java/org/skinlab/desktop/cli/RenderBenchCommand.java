@@ -14,6 +14,7 @@ import java.util.concurrent.Callable;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.SerializationFeature;
 
+import org.skinlab.desktop.ExitCodes;
 import org.skinlab.desktop.render.GlWindow;
 import org.skinlab.desktop.viewer.ModelLibrary;
 import org.skinlab.model.Model;
@@ -72,7 +73,7 @@ public final class RenderBenchCommand implements Callable<Integer> {
         try {
             bench = RenderBench.open(size.width(), size.height());
         } catch (GlWindow.WindowUnavailableException e) {
-            throw new CommandFailure(ExitCodes.INTERNAL, e.getMessage(), e);
+            throw new CommandFailure(ExitCodes.UNAVAILABLE, e.getMessage(), e);
         }
         try (bench) {
             out.printf(Locale.ROOT, "%s, %dx%d, %s %s%n", path.getFileName(), size.width(), size.height(),

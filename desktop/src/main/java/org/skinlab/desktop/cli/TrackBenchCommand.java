@@ -28,6 +28,7 @@ import org.skinlab.ar.GrayImage;
 import org.skinlab.ar.MarkerDetection;
 import org.skinlab.ar.MarkerDictionary;
 import org.skinlab.ar.TrackerConfig;
+import org.skinlab.desktop.ExitCodes;
 
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;

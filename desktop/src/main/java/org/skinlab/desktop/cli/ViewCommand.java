@@ -5,6 +5,7 @@ import java.util.Locale;
 import java.util.concurrent.Callable;
 
 import org.skinlab.animation.RotationInterpolation;
+import org.skinlab.desktop.ExitCodes;
 import org.skinlab.desktop.app.AppOptions;
 import org.skinlab.desktop.app.SkinlabApp;
 import org.skinlab.desktop.render.DrawSettings;

@@ -11,6 +11,7 @@ import java.util.List;
 import java.util.concurrent.TimeUnit;
 
 import org.junit.jupiter.api.Test;
+import org.skinlab.desktop.ExitCodes;
 
 /**
  * Without a display (or without OpenGL 3.3) the viewer says so in one line and exits with status
@@ -29,7 +30,7 @@ class NoDisplayTest {
         Process p = pb.start();
         assertTrue(p.waitFor(60, TimeUnit.SECONDS), "the viewer did not give up within a minute");
         String output = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
-        assertEquals(1, p.exitValue(), output);
+        assertEquals(ExitCodes.UNAVAILABLE, p.exitValue(), output);
         List<String> lines = output.lines().filter(l -> l.startsWith("skinlab:")).toList();
         assertEquals(1, lines.size(), output);
         assertTrue(lines.get(0).contains("no DISPLAY is set"), output);

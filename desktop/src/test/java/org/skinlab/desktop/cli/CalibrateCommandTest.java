@@ -15,6 +15,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.skinlab.ar.CameraIntrinsics;
 import org.skinlab.ar.GrayImage;
+import org.skinlab.desktop.ExitCodes;
 import org.skinlab.desktop.ar.CalibrationPhotos;
 import org.skinlab.desktop.ar.GrayImages;
 
@@ -130,7 +131,7 @@ class CalibrateCommandTest {
     void withoutAWebcamSaysSoInOneLine(@TempDir Path dir) {
         Cli cli = Cli.run("calibrate", "--webcam", "--out", dir.resolve("k.json").toString());
         org.junit.jupiter.api.Assumptions.assumeTrue(cli.status != 0, "a webcam is attached here");
-        assertEquals(ExitCodes.INTERNAL, cli.status, cli.toString());
+        assertEquals(ExitCodes.UNAVAILABLE, cli.status, cli.toString());
         assertEquals(1, cli.errLines().length, cli.err);
         assertTrue(cli.err.startsWith("skinlab: no webcam found") && !cli.err.contains("--video"), cli.err);
     }

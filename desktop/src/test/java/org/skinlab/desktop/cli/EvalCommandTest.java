@@ -16,6 +16,7 @@ import com.fasterxml.jackson.databind.node.IntNode;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.skinlab.desktop.ExitCodes;
 
 /**
  * {@code skinlab eval --quick}: the report, results.json and every figure are written, and every

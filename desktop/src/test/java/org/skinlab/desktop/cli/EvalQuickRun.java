@@ -11,6 +11,7 @@ import java.util.stream.Stream;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
+import org.skinlab.desktop.ExitCodes;
 
 /**
  * One {@code skinlab eval --quick} of every section, run once per test JVM and shared by the

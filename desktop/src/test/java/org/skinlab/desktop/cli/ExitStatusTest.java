@@ -9,6 +9,7 @@ import java.nio.file.Path;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.skinlab.desktop.ExitCodes;
 
 /**
  * The exit statuses are a contract (see {@link ExitCodes}): 0 success, 2 usage error (including a

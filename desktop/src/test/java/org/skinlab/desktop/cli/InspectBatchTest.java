@@ -26,6 +26,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 import org.skinlab.collada.ColladaImporter;
+import org.skinlab.desktop.ExitCodes;
 
 /**
  * {@code skinlab inspect FILE...} over several files and folders. Stdout in JSON mode is JSON

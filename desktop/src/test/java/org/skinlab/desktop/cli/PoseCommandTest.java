@@ -14,6 +14,7 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.skinlab.desktop.ExitCodes;
 
 /**
  * {@code skinlab pose}: the JSON contract (keys, order, clamped times, one array of POSITION-order
