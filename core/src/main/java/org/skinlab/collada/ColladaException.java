@@ -1,5 +1,7 @@
 package org.skinlab.collada;
 
+import java.util.Locale;
+
 /**
  * The one exception type for a COLLADA file that cannot be imported: malformed XML, a refused
  * DOCTYPE or entity, a missing or dangling reference, counts that disagree with the data, an
@@ -18,15 +20,45 @@ public final class ColladaException extends Exception {
     private final String problem;
 
     public ColladaException(String file, String element, String problem) {
-        super(file + ": " + element + ": " + problem);
+        super(file + ": " + oneLine(element) + ": " + oneLine(problem));
         this.file = file;
-        this.element = element;
-        this.problem = problem;
+        this.element = oneLine(element);
+        this.problem = oneLine(problem);
     }
 
     public ColladaException(String file, String element, String problem, Throwable cause) {
         this(file, element, problem);
         initCause(cause);
+    }
+
+    /**
+     * The text with line breaks and other control characters written as Java escapes (a backslash
+     * and n, r, t, or u and four hex digits): problems may quote the file (the XML parser's
+     * messages do), and a quoted line break would break the one-line message.
+     */
+    private static String oneLine(String text) {
+        StringBuilder sb = null;
+        for (int i = 0; i < text.length(); i++) {
+            char c = text.charAt(i);
+            boolean control = c < 0x20 || c == 0x7f || c == 0x2028 || c == 0x2029;
+            if (control && sb == null) {
+                sb = new StringBuilder(text.length() + 16).append(text, 0, i);
+            }
+            if (!control) {
+                if (sb != null) {
+                    sb.append(c);
+                }
+            } else if (c == '\n') {
+                sb.append("\\n");
+            } else if (c == '\r') {
+                sb.append("\\r");
+            } else if (c == '\t') {
+                sb.append("\\t");
+            } else {
+                sb.append(String.format(Locale.ROOT, "\\u%04x", (int) c));
+            }
+        }
+        return sb == null ? text : sb.toString();
     }
 
     /** The file (or stream name) being imported. */

@@ -121,6 +121,14 @@ class BadInputTest {
     }
 
     @Test
+    void aParserMessageQuotingALineBreakStaysOneLine() {
+        // Found by ColladaImporterFuzzTest: the parser quotes the bad version, line break and all.
+        ColladaException e = refused("version.dae", "<?xml version=\"1.\n0\"?><COLLADA/>", "XML at line 2",
+                "XML version \"1.\\n0\" is not supported");
+        assertEquals(-1, e.problem().indexOf('\n'), e.problem());
+    }
+
+    @Test
     void wrongRootElementIsRefused() {
         refused("html.dae", "<html><body>not a model</body></html>", "<html> at line 1",
                 "the root element is <html>, not <COLLADA>");
