@@ -16,6 +16,7 @@ import org.jcodec.common.model.ColorSpace;
 import org.jcodec.common.model.Picture;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.skinlab.desktop.ExitCodes;
 import org.skinlab.ar.CameraIntrinsics;
 import org.skinlab.ar.GrayImage;
 import org.skinlab.desktop.cli.SkinlabCommand;
@@ -147,14 +148,14 @@ class FrameSourceTest {
     }
 
     @Test
-    void withoutAWebcamArSaysSoInOneLineAndExits1() {
+    void withoutAWebcamArSaysSoInOneLineAndExitsUnavailable() {
         StringWriter out = new StringWriter();
         StringWriter err = new StringWriter();
         int status = SkinlabCommand.run(new PrintWriter(out, true), new PrintWriter(err, true), "ar", "--webcam",
                 "--exit-after-frames", "1");
         // This machine has no camera; on one that has, the window would open instead.
         org.junit.jupiter.api.Assumptions.assumeTrue(status != 0, "a webcam is attached here");
-        assertEquals(1, status, err.toString());
+        assertEquals(ExitCodes.UNAVAILABLE, status, err.toString());
         String[] lines = err.toString().strip().split("\n");
         assertEquals(1, lines.length, err.toString());
         assertTrue(lines[0].startsWith("skinlab: ") && lines[0].contains("webcam"), lines[0]);
