@@ -89,25 +89,7 @@ class ArLensWindowTest {
         assertTrue(rawBow[0] >= 1, "the frame's edges bow: " + rawBow[0] + " px");
 
         BufferedImage a = ImageIO.read(with.toFile());
-        double[] centre = project(m, 0, 0, 0);
-        double[] box = boxBounds(m);
-        int changed = 0;
-        int outside = 0;
-        double nearest = Double.POSITIVE_INFINITY;
-        for (int y = 0; y < a.getHeight(); y++) {
-            for (int x = 0; x < a.getWidth(); x++) {
-                if (differs(a.getRGB(x, y), shown.getRGB(x, y))) {
-                    changed++;
-                    if (x < box[0] - 4 || x > box[2] + 4 || y < box[1] - 4 || y > box[3] + 4) {
-                        outside++;
-                    }
-                    nearest = Math.min(nearest, Math.hypot(x - centre[0], y - centre[1]));
-                }
-            }
-        }
-        assertTrue(changed > 200, "the model is drawn: " + changed + " pixels");
-        assertEquals(0, outside, "model pixels outside the box over the marker " + java.util.Arrays.toString(box));
-        assertTrue(nearest < 12, "the feet at the marker's centre " + java.util.Arrays.toString(centre) + ": " + nearest);
+        ArWindowTest.assertModelOverMarker(a, shown, K, m);
     }
 
     /**
@@ -166,40 +148,5 @@ class ArLensWindowTest {
         x = Math.max(0, Math.min(image.getWidth() - 1, x));
         y = Math.max(0, Math.min(image.getHeight() - 1, y));
         return image.getRGB(x, y) >> 16 & 0xFF;
-    }
-
-    private static boolean differs(int p, int q) {
-        int d = Math.abs((p >> 16 & 0xFF) - (q >> 16 & 0xFF)) + Math.abs((p >> 8 & 0xFF) - (q >> 8 & 0xFF))
-                + Math.abs((p & 0xFF) - (q & 0xFF));
-        return d > 24;
-    }
-
-    /** The pinhole projection of the marker-frame point (x, y, z). */
-    private static double[] project(PlacedMarker m, double x, double y, double z) {
-        double[] r = m.rotation();
-        double[] t = m.translation();
-        double cx = r[0] * x + r[1] * y + r[2] * z + t[0];
-        double cy = r[3] * x + r[4] * y + r[5] * z + t[1];
-        double cz = r[6] * x + r[7] * y + r[8] * z + t[2];
-        double[] out = new double[2];
-        PINHOLE.toPixel(cx, cy, cz, out);
-        return out;
-    }
-
-    /** The screen bounds (x0, y0, x1, y1) of the box |x|, |y| <= 0.1 m, 0 <= z <= 0.155 m over the marker. */
-    private static double[] boxBounds(PlacedMarker m) {
-        double[] b = {Double.MAX_VALUE, Double.MAX_VALUE, -Double.MAX_VALUE, -Double.MAX_VALUE};
-        for (double x : new double[] {-0.1, 0.1}) {
-            for (double y : new double[] {-0.1, 0.1}) {
-                for (double z : new double[] {0, 0.155}) {
-                    double[] p = project(m, x, y, z);
-                    b[0] = Math.min(b[0], p[0]);
-                    b[1] = Math.min(b[1], p[1]);
-                    b[2] = Math.max(b[2], p[0]);
-                    b[3] = Math.max(b[3], p[1]);
-                }
-            }
-        }
-        return b;
     }
 }
