@@ -8,6 +8,7 @@ import org.joml.Quaternionf;
 import org.joml.Quaternionfc;
 import org.joml.Vector3f;
 import org.joml.Vector3fc;
+import org.skinlab.model.TransformElement;
 
 /**
  * Conversions between matrices, quaternions and dual quaternions, and rotation interpolation
@@ -214,18 +215,7 @@ public final class AnimationHelper {
 
     /** The rotation matrix of {@code q} in homogeneous form: {@code |q|^2} times that of q/|q|. */
     public static Matrix4f rotationMatrix(Quaternionfc q, Matrix4f dest) {
-        float x = q.x();
-        float y = q.y();
-        float z = q.z();
-        float w = q.w();
-        float ww = w * w;
-        float xx = x * x;
-        float yy = y * y;
-        float zz = z * z;
-        return dest.set(ww + xx - yy - zz, 2 * (x * y + w * z), 2 * (x * z - w * y), 0f,
-                2 * (x * y - w * z), ww - xx + yy - zz, 2 * (y * z + w * x), 0f,
-                2 * (x * z + w * y), 2 * (y * z - w * x), ww - xx - yy + zz, 0f,
-                0f, 0f, 0f, 1f);
+        return TransformElement.quaternionMatrix(q.x(), q.y(), q.z(), q.w(), dest);
     }
 
     /**

@@ -27,6 +27,11 @@ import org.skinlab.model.TransformElement;
  *     linearly and rotation by the caller's {@link RotationInterpolation}, along the shortest
  *     arc; the result is recomposed. On a key time, and for STEP keys, the key's own matrix is
  *     written unchanged (shear included), so sampling at a key reproduces the file exactly.</li>
+ * <li><b>Rotation quaternions</b> (a channel that drives all 4 values of a
+ *     {@link TransformElement.Kind#QUATERNION}, glTF's rotation): LINEAR keys are blended by the
+ *     caller's {@link RotationInterpolation} along the shortest arc (the glTF specification's
+ *     slerp when it is SLERP); BEZIER keys (glTF's CUBICSPLINE, see below) per value, then
+ *     renormalised as the specification says; STEP holds.</li>
  * <li><b>Everything else</b> (a single value or a partial matrix, a {@code <rotate>} angle, a
  *     {@code <translate>} vector), and BEZIER/HERMITE matrices: each value on its own, by the key's
  *     interpolation: STEP holds, LINEAR blends, BEZIER and HERMITE follow the cubic Bezier through
@@ -50,9 +55,12 @@ public final class AnimationSampler {
         for (int i = 0; i < channels.length; i++) {
             AnimationChannel c = list.get(i);
             int slot = skeleton.valueOffset(c.node(), c.transformIndex()) + c.valueOffset();
-            boolean matrix = skeleton.kind(c.node(), c.transformIndex()) == TransformElement.Kind.MATRIX
-                    && c.valueOffset() == 0 && c.valueCount() == 16;
-            channels[i] = new Channel(slot, c.track(), sharedTimes(c.track().times(), timelines), matrix);
+            TransformElement.Kind kind = skeleton.kind(c.node(), c.transformIndex());
+            boolean matrix = kind == TransformElement.Kind.MATRIX && c.valueOffset() == 0 && c.valueCount() == 16;
+            boolean quaternion = kind == TransformElement.Kind.QUATERNION && c.valueOffset() == 0
+                    && c.valueCount() == 4;
+            channels[i] = new Channel(slot, c.track(), sharedTimes(c.track().times(), timelines), matrix,
+                    quaternion);
         }
     }
 
@@ -191,8 +199,10 @@ public final class AnimationSampler {
          */
         private final double[] slerpAngles;
         private final double[] slerpSines;
+        /** Whether the channel drives a whole rotation quaternion (x y z w). */
+        private final boolean quaternion;
 
-        Channel(int slot, KeyframeTrack track, float[] times, boolean matrix) {
+        Channel(int slot, KeyframeTrack track, float[] times, boolean matrix, boolean quaternion) {
             this.slot = slot;
             this.width = track.width();
             this.times = times;
@@ -204,6 +214,7 @@ public final class AnimationSampler {
             }
             this.in = track.inTangents();
             this.out = track.outTangents();
+            this.quaternion = quaternion;
             this.trs = matrix ? decomposeKeys(values, keys) : null;
             this.slerpAngles = matrix ? new double[keys] : null;
             this.slerpSines = matrix ? new double[keys] : null;
@@ -266,6 +277,15 @@ public final class AnimationSampler {
                 float u = t1 > t0 ? (time - t0) / (t1 - t0) : 1f;
                 if (trs != null) {
                     blendMatrix(k, u, rotations, dest, pose);
+                } else if (quaternion) {
+                    int a = 4 * k;
+                    Quaternionf q = AnimationHelper.interpolate(rotations,
+                            pose.q1.set(values[a], values[a + 1], values[a + 2], values[a + 3]),
+                            pose.q2.set(values[a + 4], values[a + 5], values[a + 6], values[a + 7]), u, pose.q1);
+                    dest[slot] = q.x;
+                    dest[slot + 1] = q.y;
+                    dest[slot + 2] = q.z;
+                    dest[slot + 3] = q.w;
                 } else {
                     int a = k * width;
                     int b = a + width;
@@ -282,6 +302,19 @@ public final class AnimationSampler {
                 int ob = 2 * ((k + 1) * width + c);
                 dest[slot + c] = (float) bezier(time, t0, values[k * width + c], out[oa], out[oa + 1], in[ob],
                         in[ob + 1], t1, values[(k + 1) * width + c]);
+            }
+            if (quaternion) {
+                normalize(dest, slot);
+            }
+        }
+
+        private static void normalize(float[] q, int o) {
+            double len = Math.sqrt((double) q[o] * q[o] + (double) q[o + 1] * q[o + 1]
+                    + (double) q[o + 2] * q[o + 2] + (double) q[o + 3] * q[o + 3]);
+            if (len > 0) {
+                for (int c = 0; c < 4; c++) {
+                    q[o + c] = (float) (q[o + c] / len);
+                }
             }
         }
 

@@ -4,8 +4,8 @@ import org.joml.Matrix4f;
 
 /**
  * One entry of a node's ordered transform stack: {@code <matrix>}, {@code <translate>},
- * {@code <rotate>}, {@code <scale>}, {@code <lookat>} or {@code <skew>}, with its values exactly
- * as written in the file. A node's local matrix is the product of its stack in document order
+ * {@code <rotate>}, {@code <scale>}, {@code <lookat>} or {@code <skew>} from COLLADA, or glTF's
+ * rotation quaternion, with its values exactly as written in the file. A node's local matrix is the product of its stack in document order
  * (COLLADA 1.4.1, "Transformation elements": each element post-multiplies the previous ones).
  *
  * <p>Value layouts (the same layout animation channels address, see
@@ -15,6 +15,9 @@ import org.joml.Matrix4f;
  *     is treated as (0 0 0 1) whatever it holds; the importer warns when it is not.</li>
  * <li>TRANSLATE, SCALE: x y z.</li>
  * <li>ROTATE: axis x y z, then the angle in degrees.</li>
+ * <li>QUATERNION: x y z w (glTF's {@code rotation}), in homogeneous form: a quaternion of length
+ *     l rotates and scales by l^2, so the shrinking of a linearly blended quaternion stays
+ *     visible (see {@code RotationInterpolation.LERP}); a unit quaternion is a pure rotation.</li>
  * <li>LOOKAT: eye, interest point, up vector (9 values); it places the node at the eye looking
  *     at the interest point, i.e. the inverse of a view matrix. Without a view direction (the eye
  *     on the interest point, or the up vector along the view) it places the node at the eye
@@ -27,7 +30,7 @@ import org.joml.Matrix4f;
 public final class TransformElement {
     /** The kinds of transform element and how many values each holds. */
     public enum Kind {
-        MATRIX(16), TRANSLATE(3), ROTATE(4), SCALE(3), LOOKAT(9), SKEW(7);
+        MATRIX(16), TRANSLATE(3), ROTATE(4), SCALE(3), LOOKAT(9), SKEW(7), QUATERNION(4);
 
         private final int size;
 
@@ -90,7 +93,7 @@ public final class TransformElement {
     /**
      * Post-multiplies {@code dest} by the transform of the given kind whose values start at
      * {@code v[offset]}: {@code dest = dest * T}. Allocation-free; {@code scratch} is overwritten.
-     * The one place where COLLADA transform elements become matrices.
+     * The one place where transform elements become matrices.
      */
     public static Matrix4f multiply(Kind kind, float[] v, int o, Matrix4f dest, Matrix4f scratch) {
         switch (kind) {
@@ -115,6 +118,8 @@ public final class TransformElement {
             }
             case SCALE:
                 return dest.scale(v[o], v[o + 1], v[o + 2]);
+            case QUATERNION:
+                return dest.mul(quaternionMatrix(v[o], v[o + 1], v[o + 2], v[o + 3], scratch));
             case LOOKAT:
                 scratch.setLookAt(v[o], v[o + 1], v[o + 2], v[o + 3], v[o + 4], v[o + 5],
                         v[o + 6], v[o + 7], v[o + 8]).invertAffine();
@@ -150,8 +155,27 @@ public final class TransformElement {
         }
     }
 
+    /**
+     * The rotation matrix of the quaternion (x, y, z, w) in homogeneous form: {@code |q|^2} times
+     * that of q/|q|, so no division and no special case for a zero quaternion (which gives the
+     * zero matrix, as the blend of two opposite keys would).
+     */
+    public static Matrix4f quaternionMatrix(float x, float y, float z, float w, Matrix4f dest) {
+        float ww = w * w;
+        float xx = x * x;
+        float yy = y * y;
+        float zz = z * z;
+        return dest.set(ww + xx - yy - zz, 2 * (x * y + w * z), 2 * (x * z - w * y), 0f,
+                2 * (x * y - w * z), ww - xx + yy - zz, 2 * (y * z + w * x), 0f,
+                2 * (x * z + w * y), 2 * (y * z - w * x), ww - xx - yy + zz, 0f,
+                0f, 0f, 0f, 1f);
+    }
+
     @Override
     public String toString() {
+        if (kind == Kind.QUATERNION) {
+            return "rotation" + (sid == null ? "" : " " + sid);
+        }
         return "<" + kind.elementName() + (sid == null ? "" : " sid=\"" + sid + "\"") + ">";
     }
 }
