@@ -520,7 +520,7 @@ def check_file(path, rel, ref_dir):
 
     glb = os.path.splitext(path)[0] + ".glb"
     if check(os.path.exists(glb), "%s: no .glb beside it" % rel):
-        dae = dict(points=g["points"], joint_names=skin["joints"], times=base_times)
+        dae = dict(points=g["points"], triangles=g["triangles"], joint_names=skin["joints"], times=base_times)
         check_glb.check_glb(glb, os.path.splitext(rel)[0] + ".glb", dae, ref, check)
 
 

@@ -100,7 +100,7 @@ def transform(m, p):
 
 
 def check_glb(path, rel, dae, ref, check):
-    """dae: facts from the .dae (points, joint_names, times); ref: the reference JSON or None;
+    """dae: facts from the .dae (points, triangles as position indices, joint_names, times); ref: the reference JSON or None;
     check(cond, message) records a failure."""
     doc, binary = read_glb(path)
     print("  glb: %s, generator %s" % (rel, doc["asset"].get("generator")))
@@ -141,6 +141,18 @@ def check_glb(path, rel, dae, ref, check):
         source.append(near[0] if near else None)
     unmatched = sum(1 for s in source if s is None)
     check(unmatched == 0, "%s: %d glTF vertices are at no .dae position" % (rel, unmatched))
+    triangles = []
+    base = 0
+    for p in prims:
+        count = doc["accessors"][p["attributes"]["POSITION"]]["count"]
+        idx = [i[0] for i in accessor(doc, binary, p["indices"])]
+        triangles += [tuple(sorted(source[base + v] for v in idx[t:t + 3])) for t in range(0, len(idx), 3)]
+        base += count
+    dae_triangles = set(tuple(sorted(t)) for t in dae["triangles"])
+    same = sum(1 for t in triangles if t in dae_triangles)
+    check(same == len(triangles) == len(dae_triangles),
+          "%s: %d of its %d triangles are among the .dae's %d (CoR integrates over the triangles: they must be the same)"
+          % (rel, same, len(triangles), len(dae_triangles)))
     print("  glb: %d vertices in %d primitive(s) (%d distinct .dae positions), %d joints, max %d influences"
           % (len(points), len(prims), len(set(s for s in source if s is not None)), len(joints), most))
 

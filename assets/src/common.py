@@ -319,6 +319,22 @@ def export_dae(path, sampling_rate):
     print("wrote %s (%d bytes)" % (path, os.path.getsize(path)))
 
 
+def triangulate_like_collada(mesh_obj):
+    """Split the mesh's quads and n-gons into the triangles the COLLADA exporter wrote: its
+    triangulate option runs BM_mesh_triangulate with the shortest-edge diagonal for quads and the
+    'beauty' fill for n-gons (io/collada/collada_utils.cpp, bc_triangulate_mesh). The glTF exporter
+    would otherwise choose its own diagonals (half the humanoid's quads differ), and CoR's centres,
+    integrated over the triangles, would differ by millimetres between the two files."""
+    import bmesh
+    me = mesh_obj.data
+    bm = bmesh.new()
+    bm.from_mesh(me)
+    bmesh.ops.triangulate(bm, faces=bm.faces[:], quad_method='SHORT_EDGE', ngon_method='BEAUTY')
+    bm.to_mesh(me)
+    bm.free()
+    me.update()
+
+
 def export_glb(dae_path, frame_step):
     """Export the same scene as a .glb beside the .dae (same name, .glb), sampling every
     frame_step frames (= the key spacing) with GLTF_EXPORT_OPTIONS. The exporter writes no date,
@@ -327,6 +343,7 @@ def export_glb(dae_path, frame_step):
     bpy.context.scene.frame_set(0)
     kinds = sorted(o.type for o in bpy.context.scene.objects)
     assert kinds == ['ARMATURE', 'MESH'], kinds
+    triangulate_like_collada(next(o for o in bpy.context.scene.objects if o.type == 'MESH'))
     result = bpy.ops.export_scene.gltf(filepath=path, export_frame_step=frame_step, **GLTF_EXPORT_OPTIONS)
     if result != {'FINISHED'}:
         raise RuntimeError("gltf export failed: %r" % (result,))
