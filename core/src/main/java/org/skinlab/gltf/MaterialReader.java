@@ -72,7 +72,15 @@ final class MaterialReader {
             if (mimeType == null) {
                 throw image.error("an image in a buffer view needs a mimeType");
             }
-            return new Image(id, name, null, null, checked(mimeType, image), buffers.copy(view));
+            byte[] bytes;
+            try {
+                bytes = buffers.copy(view);
+            } catch (GltfException e) {
+                // A picture is not needed to pose the model: drawn untextured, as a missing file is.
+                ctx.warn(image.path(), "its buffer view's data cannot be had (" + e.getMessage() + ")");
+                bytes = null;
+            }
+            return new Image(id, name, null, null, checked(mimeType, image), bytes);
         }
         if (image.has("bufferView")) {
             throw image.error("an image has either a uri or a bufferView, not both");
