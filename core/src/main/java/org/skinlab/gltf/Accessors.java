@@ -217,7 +217,7 @@ final class Accessors {
                     + componentSize);
         }
         long end = offset + (long) stride * (count - 1) + elementSize;
-        int viewLength = buffers.view(view).capacity();
+        int viewLength = buffers.viewLength(view);
         if (end > viewLength) {
             throw a.get("count").error(count + " elements of " + elementSize + " bytes (stride " + stride + ") from offset "
                     + offset + " need " + end + " bytes but buffer view " + view + " has " + viewLength);

@@ -96,6 +96,15 @@ class GltfAnimationTest {
     }
 
     @Test
+    void repeatedTimesAreJumpsWithAWarning() throws Exception {
+        Model model = oneChannel("translation", "LINEAR", "VEC3", new double[] {0, 1, 1, 2}, 0, 0, 0, 1, 0, 0, 5, 0, 0,
+                6, 0, 0);
+        assertEquals(0.5f, translationAt(model, 0.5f).x, EPS);
+        assertEquals(5.5f, translationAt(model, 1.5f).x, EPS);
+        assertEquals("/animations/0/samplers/0/input", model.warnings().get(0).element());
+    }
+
+    @Test
     void decreasingTimesAreRefused() {
         GltfException e = assertThrows(GltfException.class,
                 () -> oneChannel("translation", "LINEAR", "VEC3", new double[] {1, 0}, 0, 0, 0, 1, 1, 1));
