@@ -102,6 +102,9 @@ final class MeshReader {
             }
         }
         List<Block> blockList = new ArrayList<>(blocks.values());
+        // Positions, normals, colours, two texture coordinate sets, the position map and the
+        // mesh's own copies of them; further sets and morph targets are charged as they come.
+        ctx.charge(2L * (3 + 1 + 3 + 4 + 2 * 2 + 2) * positions, meshNode.path());
         Vertices v = new Vertices(positions);
         for (Block b : blockList) {
             v.read(b);
@@ -131,6 +134,7 @@ final class MeshReader {
         float[][] targetPositions = new float[Math.max(0, targetCount)][];
         float[][] targetNormals = new float[targetPositions.length][];
         for (int t = 0; t < targetPositions.length; t++) {
+            ctx.charge(6L * positions, primitives.path());
             targetPositions[t] = new float[3 * positions];
             for (Block b : blockList) {
                 readTarget(b, t, targetPositions, targetNormals, positions);
@@ -227,10 +231,13 @@ final class MeshReader {
             }
         }
 
-        private float[] texCoordSet(int number) {
+        private float[] texCoordSet(int number) throws GltfException {
             int i = texCoordNumbers == null ? -1 : Arrays.binarySearch(texCoordNumbers, number);
             if (i >= 0) {
                 return texCoords.get(i);
+            }
+            if (texCoords.size() >= 2) {
+                ctx.charge(4L * total, "/meshes");
             }
             int at = texCoordNumbers == null ? 0 : -i - 1;
             int[] numbers = new int[texCoords.size() + 1];
@@ -341,6 +348,7 @@ final class MeshReader {
         if (out.size() / 3 + (long) triangles > GltfLimits.MAX_TRIANGLES) {
             throw primitive.error("more than " + GltfLimits.MAX_TRIANGLES + " triangles in the mesh");
         }
+        ctx.charge(2L * 3 * triangles, primitive.path()); // the list and the mesh's copy
         for (int i = 0; i < triangles; i++) {
             int a;
             int b;
