@@ -87,7 +87,10 @@ final class Accessors {
         return cached;
     }
 
-    /** The accessor's integer values (indices, joints), which must be unsigned and not normalized. */
+    /**
+     * The accessor's integer values (indices, joints), which must be unsigned and not normalized;
+     * unsigned ints of 2^31 - 1 and more read as {@code Integer.MAX_VALUE} (beyond any count).
+     */
     int[] ints(int accessor) throws GltfException {
         int[] cached = ints.get(accessor);
         if (cached == null) {
@@ -171,6 +174,11 @@ final class Accessors {
             default:
                 return b.getFloat(at);
         }
+    }
+
+    /** The largest value of an unsigned index type: the primitive restart value glTF forbids in indices. */
+    static long restartValue(int componentType) {
+        return componentType == UNSIGNED_BYTE ? 0xffL : componentType == UNSIGNED_SHORT ? 0xffffL : 0xffffffffL;
     }
 
     private static long integer(ByteBuffer b, int at, int type) {

@@ -333,10 +333,15 @@ final class MeshReader {
             int acc = accessors.resolve(indicesNode);
             accessors.expect(acc, indicesNode.path(), "SCALAR", "5121", "5123", "5125");
             indices = accessors.ints(acc);
+            long restart = Accessors.restartValue(accessors.node(acc).get("componentType").integer(0, Integer.MAX_VALUE));
             for (int i = 0; i < indices.length; i++) {
+                if (indices[i] == restart) { // (unsigned int indices that large fail the range check below)
+                    throw indicesNode.error("index " + i + " is the primitive restart value " + restart
+                            + ", which glTF does not allow");
+                }
                 if (indices[i] >= block.count) {
-                    throw indicesNode.error("index " + i + " is " + Integer.toUnsignedString(indices[i])
-                            + " but the primitive has " + block.count + " vertices");
+                    throw indicesNode.error("index " + i + " is " + (indices[i] == Integer.MAX_VALUE ? "2147483647 or more"
+                            : Integer.toString(indices[i])) + " but the primitive has " + block.count + " vertices");
                 }
             }
         }
