@@ -10,7 +10,8 @@ import java.util.Map;
  * integers by the specification's formulas (signed: {@code max(c / (2^(n-1) - 1), -1)}, unsigned:
  * {@code c / (2^n - 1)}), interleaved views ({@code byteStride}), matrix columns padded to 4
  * bytes, and sparse substitution. Declared sizes are checked against the view and against
- * {@link GltfLimits#MAX_ACCESSOR_VALUES} before the result is allocated; min/max are not trusted
+ * {@link GltfLimits#MAX_ACCESSOR_VALUES} before the result is allocated (for every accessor when
+ * the document is opened, used or not); min/max are not trusted
  * (not read). Float components must be finite. Results are cached: primitives share accessors.
  */
 final class Accessors {
@@ -31,6 +32,9 @@ final class Accessors {
         this.ctx = ctx;
         this.accessors = root.get("accessors").arrayOrMissing();
         this.buffers = buffers;
+        for (int i = 0; i < accessors.size(); i++) {
+            layout(i); // every accessor's declared layout, used or not, checked once (nothing allocated)
+        }
     }
 
     int count() throws GltfException {

@@ -42,6 +42,17 @@ final class MaterialReader {
             images.add(image(imageList.get(i), i));
         }
         this.textures = root.get("textures").arrayOrMissing();
+        int samplers = root.get("samplers").arrayOrMissing().size();
+        for (int t = 0; t < textures.size(); t++) {
+            JsonNode sampler = textures.get(t).get("sampler");
+            if (!sampler.isMissing()) {
+                sampler.index(samplers, "samplers");
+            }
+            JsonNode source = textures.get(t).get("source");
+            if (!source.isMissing()) {
+                source.index(images.size(), "images");
+            }
+        }
         JsonNode list = root.get("materials").arrayOrMissing();
         for (int m = 0; m < list.size(); m++) {
             materials.add(material(list.get(m), m));
@@ -118,6 +129,13 @@ final class MaterialReader {
         JsonNode emissiveTexture = material.get("emissiveTexture");
         if (!emissiveTexture.isMissing()) {
             b.emissionTexture(texture(emissiveTexture));
+        }
+        // Textures the viewer does not show must still name a texture.
+        for (JsonNode info : new JsonNode[] {pbr.get("metallicRoughnessTexture"), material.get("normalTexture"),
+                material.get("occlusionTexture")}) {
+            if (!info.isMissing()) {
+                info.get("index").index(textures.size(), "textures");
+            }
         }
         JsonNode alphaNode = material.get("alphaMode");
         Material.AlphaMode alphaMode;

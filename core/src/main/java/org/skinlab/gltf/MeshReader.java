@@ -76,6 +76,7 @@ final class MeshReader {
                 ctx.warn(primitive.path(), "mode " + mode + " (" + TRIANGLE_MODES[mode] + ") is not drawn; skipped");
                 continue;
             }
+            checkAttributeNames(attributes);
             if (!attributes.has("POSITION")) {
                 ctx.warn(attributes.path(), "no POSITION attribute; the primitive is skipped");
                 continue;
@@ -152,6 +153,16 @@ final class MeshReader {
         return new MeshData(index, mesh, targetPositions, targetNormals, weights, partMaterials, influences.start(),
                 influences.joints(), influences.weights(), influences.maxJoint, influences.maxJointPath,
                 influences.withoutJoints);
+    }
+
+    /** Attribute names are the specification's semantics or application-specific ones starting with "_". */
+    private static void checkAttributeNames(JsonNode attributes) throws GltfException {
+        for (String name : attributes.keys()) {
+            if (!name.startsWith("_") && !name.matches("POSITION|NORMAL|TANGENT|(TEXCOORD|COLOR|JOINTS|WEIGHTS)_(0|[1-9][0-9]*)")) {
+                throw attributes.get(name).error("\"" + name + "\" is no attribute semantic (nor an application's,"
+                        + " which would start with _)");
+            }
+        }
     }
 
     private static String attributeKey(JsonNode attributes) throws GltfException {

@@ -109,6 +109,17 @@ class GltfMeshTest {
     }
 
     @Test
+    void anUnknownAttributeIsRefusedButAnApplicationsIsNot() throws Exception {
+        GltfFixture f = new GltfFixture();
+        f.floats("VEC3", 0, 0, 0, 1, 0, 0, 0, 1, 0);
+        assertEquals(3, GltfFixture.read(f.singleMesh("{\"attributes\":{\"POSITION\":0,\"_TEMPERATURE\":0}}"))
+                .meshes().get(0).positionCount());
+        GltfException e = assertThrows(GltfException.class, () -> GltfFixture.read(
+                f.singleMesh("{\"attributes\":{\"POSITION\":0,\"TEXCOORD_01\":0}}")));
+        assertEquals("/meshes/0/primitives/0/attributes/TEXCOORD_01", e.path());
+    }
+
+    @Test
     void thePrimitiveRestartValueIsRefused() throws Exception {
         GltfFixture f = new GltfFixture();
         f.floats("VEC3", 0, 0, 0, 1, 0, 0, 0, 1, 0);
