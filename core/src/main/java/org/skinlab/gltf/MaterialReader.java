@@ -14,6 +14,7 @@ import org.skinlab.model.TextureTransform;
  * becomes a LAMBERT material: diffuse = {@code baseColorFactor}, diffuse texture =
  * {@code baseColorTexture}, emission = {@code emissiveFactor} and {@code emissiveTexture};
  * metallic, roughness, normal and occlusion maps are not read (the viewer shades diffuse only).
+ * {@code KHR_materials_unlit} makes it CONSTANT, its emission the base colour and texture.
  * Opacity is the base colour's alpha for {@code alphaMode} BLEND, else 1. A texture's
  * {@link Texture#texcoord()} is {@code TEXCOORD_n} for its {@code texCoord} n.
  *
@@ -152,6 +153,10 @@ final class MaterialReader {
         b.alphaCutoff((float) cutoff);
         b.doubleSided(material.get("doubleSided").bool(false));
         b.opacity(alphaMode == Material.AlphaMode.BLEND ? Math.max(0f, Math.min(1f, baseColor[3])) : 1f);
+        if (material.get("extensions").objectOrMissing().has(Extensions.MATERIALS_UNLIT)) {
+            // Unlit: the base colour is what is seen, as COLLADA's constant shading shows its emission.
+            b.shading(Material.Shading.CONSTANT).emission(baseColor).emissionTexture(base);
+        }
         return b.build();
     }
 

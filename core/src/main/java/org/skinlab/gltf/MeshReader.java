@@ -146,7 +146,7 @@ final class MeshReader {
             throw weightsNode.error(weightsNode.size() + " weights for " + targetPositions.length + " morph targets");
         }
         float[] weights = weightsNode.isMissing() ? new float[targetPositions.length] : weightsNode.floats();
-        Influences influences = new Influences(ctx, accessors, positions);
+        Influences influences = new Influences(accessors, positions);
         for (Block b : blockList) {
             influences.read(b.attributes, b.start, b.count);
         }
