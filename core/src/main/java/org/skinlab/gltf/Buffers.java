@@ -65,6 +65,7 @@ final class Buffers {
             data = ByteBuffer.wrap(uris.decodeData(uri, uriNode.path(), GltfLimits.MAX_FILE_BYTES));
         } else {
             data = ByteBuffer.wrap(uris.readFile(uri, uriNode.path(), GltfLimits.MAX_FILE_BYTES));
+            ctx.addDocumentBytes(data.capacity());
         }
         if (data.remaining() < length) {
             throw ctx.error(lengthNode.path(), "byteLength " + length + " but the data has " + data.remaining()

@@ -76,6 +76,7 @@ final class MeshReader {
                 ctx.warn(primitive.path(), "mode " + mode + " (" + TRIANGLE_MODES[mode] + ") is not drawn; skipped");
                 continue;
             }
+            checkAttributeNames(attributes);
             if (!attributes.has("POSITION")) {
                 ctx.warn(attributes.path(), "no POSITION attribute; the primitive is skipped");
                 continue;
@@ -102,6 +103,9 @@ final class MeshReader {
             }
         }
         List<Block> blockList = new ArrayList<>(blocks.values());
+        // Positions, normals, colours, two texture coordinate sets, the position map and the
+        // mesh's own copies of them; further sets and morph targets are charged as they come.
+        ctx.charge(2L * (3 + 1 + 3 + 4 + 2 * 2 + 2) * positions, meshNode.path());
         Vertices v = new Vertices(positions);
         for (Block b : blockList) {
             v.read(b);
@@ -131,6 +135,7 @@ final class MeshReader {
         float[][] targetPositions = new float[Math.max(0, targetCount)][];
         float[][] targetNormals = new float[targetPositions.length][];
         for (int t = 0; t < targetPositions.length; t++) {
+            ctx.charge(6L * positions, primitives.path());
             targetPositions[t] = new float[3 * positions];
             for (Block b : blockList) {
                 readTarget(b, t, targetPositions, targetNormals, positions);
@@ -141,13 +146,23 @@ final class MeshReader {
             throw weightsNode.error(weightsNode.size() + " weights for " + targetPositions.length + " morph targets");
         }
         float[] weights = weightsNode.isMissing() ? new float[targetPositions.length] : weightsNode.floats();
-        Influences influences = new Influences(ctx, accessors, positions);
+        Influences influences = new Influences(accessors, positions);
         for (Block b : blockList) {
             influences.read(b.attributes, b.start, b.count);
         }
         return new MeshData(index, mesh, targetPositions, targetNormals, weights, partMaterials, influences.start(),
                 influences.joints(), influences.weights(), influences.maxJoint, influences.maxJointPath,
                 influences.withoutJoints);
+    }
+
+    /** Attribute names are the specification's semantics or application-specific ones starting with "_". */
+    private static void checkAttributeNames(JsonNode attributes) throws GltfException {
+        for (String name : attributes.keys()) {
+            if (!name.startsWith("_") && !name.matches("POSITION|NORMAL|TANGENT|(TEXCOORD|COLOR|JOINTS|WEIGHTS)_(0|[1-9][0-9]*)")) {
+                throw attributes.get(name).error("\"" + name + "\" is no attribute semantic (nor an application's,"
+                        + " which would start with _)");
+            }
+        }
     }
 
     private static String attributeKey(JsonNode attributes) throws GltfException {
@@ -227,10 +242,13 @@ final class MeshReader {
             }
         }
 
-        private float[] texCoordSet(int number) {
+        private float[] texCoordSet(int number) throws GltfException {
             int i = texCoordNumbers == null ? -1 : Arrays.binarySearch(texCoordNumbers, number);
             if (i >= 0) {
                 return texCoords.get(i);
+            }
+            if (texCoords.size() >= 2) {
+                ctx.charge(4L * total, "/meshes");
             }
             int at = texCoordNumbers == null ? 0 : -i - 1;
             int[] numbers = new int[texCoords.size() + 1];
@@ -326,10 +344,15 @@ final class MeshReader {
             int acc = accessors.resolve(indicesNode);
             accessors.expect(acc, indicesNode.path(), "SCALAR", "5121", "5123", "5125");
             indices = accessors.ints(acc);
+            long restart = Accessors.restartValue(accessors.node(acc).get("componentType").integer(0, Integer.MAX_VALUE));
             for (int i = 0; i < indices.length; i++) {
+                if (indices[i] == restart) { // (unsigned int indices that large fail the range check below)
+                    throw indicesNode.error("index " + i + " is the primitive restart value " + restart
+                            + ", which glTF does not allow");
+                }
                 if (indices[i] >= block.count) {
-                    throw indicesNode.error("index " + i + " is " + Integer.toUnsignedString(indices[i])
-                            + " but the primitive has " + block.count + " vertices");
+                    throw indicesNode.error("index " + i + " is " + (indices[i] == Integer.MAX_VALUE ? "2147483647 or more"
+                            : Integer.toString(indices[i])) + " but the primitive has " + block.count + " vertices");
                 }
             }
         }
@@ -341,6 +364,7 @@ final class MeshReader {
         if (out.size() / 3 + (long) triangles > GltfLimits.MAX_TRIANGLES) {
             throw primitive.error("more than " + GltfLimits.MAX_TRIANGLES + " triangles in the mesh");
         }
+        ctx.charge(2L * 3 * triangles, primitive.path()); // the list and the mesh's copy
         for (int i = 0; i < triangles; i++) {
             int a;
             int b;
