@@ -75,6 +75,9 @@ final class AnimationReader {
             int width = width(path, target.get("path"), gltfNode);
             KeyframeTrack track = track(samplers.get(sampler), path, width);
             if (path.equals("weights")) {
+                // Skipped, but the clip lasts as long as the file says (the track was checked, so times exist).
+                float[] times = accessors.floats(accessors.resolve(samplers.get(sampler).get("input")));
+                end = Math.max(end, times[times.length - 1]);
                 ctx.warn(channel.path(), "animated morph weights are not supported yet; the channel is skipped");
                 continue;
             }

@@ -139,6 +139,24 @@ class GltfContainerTest {
     }
 
     @Test
+    void aLinkInsideTheFolderThatLeadsOutIsRefused(@TempDir Path dir) throws Exception {
+        String embedded = triangle().gltf(TRIANGLE_MESH);
+        Path outside = Files.createDirectories(dir.resolve("outside"));
+        Files.write(outside.resolve("secret.bin"), new byte[64]);
+        Path sub = Files.createDirectories(dir.resolve("sub"));
+        try {
+            Files.createSymbolicLink(sub.resolve("link.bin"), outside.resolve("secret.bin"));
+        } catch (UnsupportedOperationException | java.io.IOException e) {
+            org.junit.jupiter.api.Assumptions.assumeTrue(false, "symbolic links cannot be made here: " + e);
+        }
+        Path gltf = sub.resolve("doc.gltf");
+        Files.write(gltf, embedded.replaceAll("data:[^\"]*", "link.bin").getBytes(StandardCharsets.UTF_8));
+        GltfException e = assertThrows(GltfException.class, () -> GltfImporter.read(gltf));
+        assertEquals("doc.gltf: /buffers/0/uri: \"link.bin\" is a link that leads out of the file's folder",
+                e.getMessage());
+    }
+
+    @Test
     void fileUriWithoutALocationIsRefused() {
         String json = triangle().gltf(TRIANGLE_MESH).replaceAll("data:[^\"]*", "tri.bin");
         GltfException e = assertThrows(GltfException.class, () -> GltfImporter.read(
