@@ -20,6 +20,10 @@
 //    script blends all eight with three's bone matrices (bones[j].matrixWorld * boneInverses[j],
 //    as SkinnedMesh.applyBoneTransform does), from the accessors as stored (GLTFLoader has
 //    renormalized the first four weights in place), and the JSON says so ("influences": 8).
+//  - Rotations are made unit quaternions first (node rotations, LINEAR and STEP keys), as the
+//    specification defines them and our importer reads them; three.js would otherwise scale a
+//    mesh by |q|^2 where a file's keys are a little off unit length (SimpleSkin's 0.707,
+//    normalized-integer keys).
 //  - Textures and images are removed before parsing (Node has no image decoder); geometry and
 //    animation are untouched. All buffers (data URIs, files beside a .gltf, a GLB's chunk) are
 //    joined into one GLB in memory, which GLTFLoader parses from an ArrayBuffer without fetching.
@@ -162,25 +166,89 @@ function meshesOf(gltf) {
     return found;
 }
 
-/** Per mesh, the raw accessors for primitives with a second joint set (null otherwise). */
-async function eightInfluenceData(gltf, json, meshes) {
-    const data = [];
-    for (const m of meshes) {
-        const attributes = json.meshes[m.mesh].primitives[m.primitive].attributes;
+/**
+ * Per mesh, for primitives with a second joint set, every JOINTS_n/WEIGHTS_n set read from the
+ * file (not through GLTFLoader, whose cached WEIGHTS_0 attribute it has renormalized in place);
+ * null for the others.
+ */
+function eightInfluenceData(doc, meshes) {
+    return meshes.map((m) => {
+        const attributes = doc.json.meshes[m.mesh].primitives[m.primitive].attributes;
         if (attributes.JOINTS_1 === undefined || !m.object.isSkinnedMesh) {
-            data.push(null);
-            continue;
+            return null;
         }
         const sets = [];
         for (let s = 0; attributes[`JOINTS_${s}`] !== undefined; s++) {
-            sets.push({
-                joints: await gltf.parser.getDependency('accessor', attributes[`JOINTS_${s}`]),
-                weights: await gltf.parser.getDependency('accessor', attributes[`WEIGHTS_${s}`]),
-            });
+            sets.push({ joints: readAccessor(doc, attributes[`JOINTS_${s}`]),
+                weights: readAccessor(doc, attributes[`WEIGHTS_${s}`]) });
         }
-        data.push(sets);
+        return sets;
+    });
+}
+
+const COMPONENTS = {
+    5120: ['getInt8', 1, 127], 5121: ['getUint8', 1, 255], 5122: ['getInt16', 2, 32767],
+    5123: ['getUint16', 2, 65535], 5125: ['getUint32', 4, 0], 5126: ['getFloat32', 4, 0],
+};
+
+/** A VEC4 accessor's values as { getComponent(i, c) } (normalized integers as reals; sparse applied). */
+function readAccessor(doc, index) {
+    const a = doc.json.accessors[index];
+    const [getter, size, max] = COMPONENTS[a.componentType];
+    const data = new DataView(doc.bin.buffer, doc.bin.byteOffset, doc.bin.length);
+    const values = new Float64Array(4 * a.count);
+    const read = (offset) => {
+        const raw = data[getter](offset, true);
+        return a.normalized ? Math.max(raw / max, -1) : raw;
+    };
+    if (a.bufferView !== undefined) {
+        const view = doc.json.bufferViews[a.bufferView];
+        const stride = view.byteStride ?? 4 * size;
+        const start = view.byteOffset + (a.byteOffset ?? 0);
+        for (let i = 0; i < a.count; i++) {
+            for (let c = 0; c < 4; c++) {
+                values[4 * i + c] = read(start + i * stride + c * size);
+            }
+        }
     }
-    return data;
+    if (a.sparse !== undefined) {
+        const iv = doc.json.bufferViews[a.sparse.indices.bufferView];
+        const vv = doc.json.bufferViews[a.sparse.values.bufferView];
+        const [indexGetter, indexSize] = COMPONENTS[a.sparse.indices.componentType];
+        for (let k = 0; k < a.sparse.count; k++) {
+            const i = data[indexGetter](iv.byteOffset + (a.sparse.indices.byteOffset ?? 0) + k * indexSize, true);
+            for (let c = 0; c < 4; c++) {
+                values[4 * i + c] = read(vv.byteOffset + (a.sparse.values.byteOffset ?? 0) + (4 * k + c) * size);
+            }
+        }
+    }
+    return { getComponent: (i, c) => values[4 * i + c] };
+}
+
+/**
+ * Rotations as unit quaternions, as the specification defines them: node rotations and the keys
+ * of LINEAR and STEP rotation tracks (three.js uses stored keys as they are, so keys a little off
+ * unit length, such as rounded decimals or normalized-integer keys, would scale the mesh by
+ * |q|^2). CUBICSPLINE tracks hold tangents too and three.js normalizes their results already.
+ */
+function normalizeRotations(gltf) {
+    gltf.scene.traverse((object) => object.quaternion.normalize());
+    for (const clip of gltf.animations) {
+        for (const track of clip.tracks) {
+            if (track.ValueTypeName !== 'quaternion' || track.values.length !== 4 * track.times.length) {
+                continue;
+            }
+            const v = track.values;
+            for (let i = 0; i < v.length; i += 4) {
+                const n = Math.hypot(v[i], v[i + 1], v[i + 2], v[i + 3]);
+                v[i] /= n;
+                v[i + 1] /= n;
+                v[i + 2] /= n;
+                v[i + 3] /= n;
+            }
+        }
+    }
+    return gltf;
 }
 
 const _v = new THREE.Vector3();
@@ -285,18 +353,18 @@ function sizeOf(rest) {
 async function reference(file, maxKeys) {
     const doc = prepare(file);
     const json = doc.json;
-    const first = await load(doc);
+    const first = normalizeRotations(await load(doc));
     first.scene.updateMatrixWorld(true);
     const firstMeshes = meshesOf(first);
-    const firstSets = await eightInfluenceData(first, json, firstMeshes);
+    const firstSets = eightInfluenceData(doc, firstMeshes);
     const rest = firstMeshes.map((m, k) => ({ ...describe(m, firstSets[k], json),
         positions: worldPositions(m, firstSets[k]) }));
     const clips = [];
     for (let c = 0; c < first.animations.length; c++) {
-        const gltf = await load(doc); // a fresh scene: no pose left over from another clip
+        const gltf = normalizeRotations(await load(doc)); // a fresh scene: no pose left over from another clip
         const clip = gltf.animations[c];
         const meshes = meshesOf(gltf);
-        const sets = await eightInfluenceData(gltf, json, meshes);
+        const sets = eightInfluenceData(doc, meshes);
         const mixer = new THREE.AnimationMixer(gltf.scene);
         const action = mixer.clipAction(clip);
         action.setLoop(THREE.LoopOnce, 1);
@@ -311,6 +379,7 @@ async function reference(file, maxKeys) {
         }
         clips.push({
             index: c, name: clip.name, duration: round(clip.duration), times: times.map(round),
+            morphWeights: clip.tracks.some((track) => track.name.endsWith('.morphTargetInfluences')),
             meshes: meshes.map((m, k) => ({ ...describe(m, sets[k], json), positions: positions[k] })),
         });
     }

@@ -18,8 +18,9 @@ that exercises what a skinned character can use, one group of features per file:
                               morph target with no bufferView (zeros + sparse, u16 indices), an
                               animation output (sparse, u32 indices)
   skin-quantized.glb          KHR_mesh_quantization: POSITION i16, NORMAL normalized i8,
-                              TEXCOORD_0 normalized u16, morph target POSITION normalized i8; the
-                              dequantization lives in the inverse bind matrices
+                              TEXCOORD_0 normalized u16, morph target POSITION i16 (its weight
+                              animated in a second clip); the dequantization lives in the inverse
+                              bind matrices
   skin-strip-fan.gltf         TRIANGLE_STRIP (indexed), TRIANGLE_FAN (not indexed), TRIANGLES (not
                               indexed)
   skin-eight-influences.gltf  JOINTS_0/JOINTS_1 and WEIGHTS_0/WEIGHTS_1: eight joints per vertex
@@ -498,9 +499,9 @@ def skin_quantized():
              "JOINTS_0": doc.accessor(jts, UBYTE, "VEC4", target=ARRAY_BUFFER),
              "WEIGHTS_0": doc.accessor(quantized_weights(wts, UBYTE), UBYTE, "VEC4", normalized=True,
                                        target=ARRAY_BUFFER)}
-    # A morph target in quantized units too: normalized i8 offsets (in i16 units, so tiny).
-    bulge = [(p[0] * 0.5, 0.0, p[2] * 0.5) if 0.4 < p[1] < 1.6 else (0.0, 0.0, 0.0) for p in pos]
-    target = doc.accessor(bulge, BYTE, "VEC3", normalized=True, minmax=True, target=ARRAY_BUFFER)
+    # A morph target in quantized units too: i16 offsets (12.5 cm), dequantized with the positions.
+    bulge = [(round(p[0] * 0.5 * q), 0, round(p[2] * 0.5 * q)) if 0.4 < p[1] < 1.6 else (0, 0, 0) for p in pos]
+    target = doc.accessor(bulge, SHORT, "VEC3", minmax=True, target=ARRAY_BUFFER)
     prim = {"attributes": attrs, "indices": doc.accessor(tris, USHORT, "SCALAR", target=ELEMENT_ARRAY_BUFFER),
             "targets": [{"POSITION": target}]}
     mesh = mesh_of(doc, [prim], weights=[0.0], name="quantized column")
@@ -510,7 +511,9 @@ def skin_quantized():
     skin(doc, joints, extra=dequantize)
     a = animation(doc, "bend")
     channel(doc, a, joints[1], "rotation", [0.0, 1.0, 2.0], bend([0, 60, 0]))
-    channel(doc, a, body, "weights", [0.0, 1.0, 2.0], [0.0, 1.0, 0.5])
+    b = animation(doc, "bulge")
+    channel(doc, b, joints[1], "rotation", [0.0, 2.0], bend([0, -30]))
+    channel(doc, b, body, "weights", [0.0, 1.0, 2.0], [0.0, 1.0, 0.5])
     return write(doc, glb=True)
 
 
