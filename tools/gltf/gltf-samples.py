@@ -17,8 +17,8 @@ is missing. Layout: DIR/<Name>/<file>, as below.
 Sources:
   - assimp/assimp, test/models/glTF2/ (commit 21bea12f1278090c09a94c39ca090d9fb458ccd9): its copies
     of Khronos samples and its own simple_skin; byte-identical copies.
-  - KhronosGroup/glTF-Sample-Models (2.0/<Name>/glTF-Embedded/<Name>.gltf, one text file with data
-    URIs): the file's text. The copies here were taken as text, so their line endings may be LF
+  - KhronosGroup/glTF-Sample-Models (2.0/<Name>/glTF-Embedded/<Name>.gltf) and glTF-Sample-Assets
+    (Models/<Name>/glTF-Embedded/<Name>.gltf), one text file with data URIs each: the file's text. The copies here were taken as text, so their line endings may be LF
     where the original has CRLF (SimpleSkin): the JSON is the same, the checksum below is of the
     copy. They were checked to parse, their data URIs to decode to the declared byteLength, and
     glTF-Validator to report no error (it checks accessor min/max against the data).
@@ -26,7 +26,8 @@ Sources:
 Samples wanted but not here, and why (see docs/references.md): CesiumMan (615 kB as embedded
 text), Fox (241 kB, most of it its texture), RecursiveSkeletons (940 kB), BrainStem (4 MB),
 InterpolationTest (binary buffers only): the only way to fetch them in the session that made this
-list was as text pages, too slow for their size. Any copy with the same layout works: add it to
+list was as text pages, too slow for their size; RiggedFigure: the stored copy is a pre-release
+glTF 2.0 export (node "jointName", one animation per joint), not the current sample. Any copy with the same layout works: add it to
 MANIFEST with its source and checksum.
 """
 
@@ -64,6 +65,9 @@ MANIFEST = [
     ("SimpleSkin/SimpleSkin.gltf", "84fb708ab3967238154752fcc819f07656a163f55b39d0ae96b3f65adc22ea82",
      "KhronosGroup/glTF-Sample-Models@3f6a8bc303a621eb0232dd0f8bc638e3ad0f84a1:2.0/SimpleSkin/glTF-Embedded/SimpleSkin.gltf"
      " (text, LF line endings)"),
+    ("AnimatedTriangle/AnimatedTriangle.gltf", "7add176d00a1275208a383fbaed6fbdd6e486f6ad8f6580ec7f0bc5b20c48a17",
+     "KhronosGroup/glTF-Sample-Assets@5bad5aaa0bbb5d0f9cdc934e626f27d0df1e79b8:"
+     "Models/AnimatedTriangle/glTF-Embedded/AnimatedTriangle.gltf"),
     ("RiggedSimple/RiggedSimple.gltf", "cdf2182ac7887e4c19062dca669191e56f05b6c3d919f199ac0448b22c1dbcf3",
      "KhronosGroup/glTF-Sample-Models@2e6fed56b2c776e01d52412e1695541e05a94dd7:2.0/RiggedSimple/glTF-Embedded/RiggedSimple.gltf"),
 ]
