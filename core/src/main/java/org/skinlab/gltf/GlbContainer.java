@@ -65,12 +65,15 @@ final class GlbContainer {
 
     private static GlbContainer glb(GltfContext ctx, byte[] bytes) throws GltfException {
         ByteBuffer b = ByteBuffer.wrap(bytes).order(ByteOrder.LITTLE_ENDIAN);
-        if (bytes.length < 20) {
-            throw ctx.error(HEADER, "the GLB file has " + bytes.length + " bytes, fewer than a header and a chunk header");
+        if (bytes.length < 12) {
+            throw ctx.error(HEADER, "the GLB file has " + bytes.length + " bytes, fewer than its 12-byte header");
         }
         int version = b.getInt(4);
         if (version != 2) {
             throw ctx.error(HEADER, "GLB version " + Integer.toUnsignedString(version) + " is not 2");
+        }
+        if (bytes.length < 20) {
+            throw ctx.error(HEADER, "the GLB file has " + bytes.length + " bytes, fewer than a header and a chunk header");
         }
         long length = Integer.toUnsignedLong(b.getInt(8));
         if (length != bytes.length) {
