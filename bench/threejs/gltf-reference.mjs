@@ -6,18 +6,19 @@
 //   node gltf-reference.mjs --max-keys N ...      at most N key times per clip (default 40)
 //
 // Per file: the rest pose (the scene as loaded) and, per animation (clip), the union of its
-// channels' key times (evenly thinned to --max-keys when there are more) and the midpoints
-// between consecutive ones. At each time the scene is reloaded once per clip, the clip alone is
-// played by an AnimationMixer (LoopOnce, clamped at its end, so the last key is held rather than
-// wrapped to the first), matrices are updated, and each triangle mesh's vertices are taken with
-// three's own Mesh/SkinnedMesh.getVertexPosition (morph targets, then the bone transform) and
-// moved to world space by the mesh's matrixWorld. For a SkinnedMesh GLTFLoader binds with the
-// identity bind matrix in attached mode, so this is sum(w * jointWorld * inverseBind * p): the
+// channels' key times (evenly thinned to --max-keys when there are more), the midpoints between
+// consecutive ones, and time 0 when the first key comes later. The scene is loaded afresh for
+// each clip, the clip alone is played by an AnimationMixer (LoopOnce, clamped at its end, so the
+// last key is held rather than wrapped to the first), and at each time matrices are updated and
+// each triangle mesh's vertices are taken with three's own Mesh/SkinnedMesh.getVertexPosition
+// (morph targets, then the bone transform) and moved to world space by the mesh's matrixWorld.
+// For a SkinnedMesh GLTFLoader binds with the identity bind matrix in attached mode, so this is
+// sum(w * jointWorld * inverseBind * p): the
 // specification's skinning, with the skinned node's own transform ignored.
 //
 // What three.js does not do and this script does on its behalf:
 //  - JOINTS_1/WEIGHTS_1 (more than four influences): three skins four. For such a primitive the
-//    script blends all eight with three's bone matrices (bones[j].matrixWorld * boneInverses[j],
+//    script blends every set with three's bone matrices (bones[j].matrixWorld * boneInverses[j],
 //    as SkinnedMesh.applyBoneTransform does), from the accessors as stored (GLTFLoader has
 //    renormalized the first four weights in place), and the JSON says so ("influences": 8).
 //  - Rotations are made unit quaternions first (node rotations, LINEAR and STEP keys), as the
@@ -299,7 +300,7 @@ function round(x) {
     return x === 0 ? 0 : Number(x.toPrecision(7));
 }
 
-/** Key times of a clip (thinned to maxKeys) and the midpoints between consecutive ones. */
+/** Key times of a clip (thinned to maxKeys), the midpoints between consecutive ones, and 0. */
 function timesOf(clip, maxKeys) {
     const keys = new Set();
     for (const track of clip.tracks) {
@@ -315,7 +316,8 @@ function timesOf(clip, maxKeys) {
         }
         sorted = [...new Set(thinned)];
     }
-    const times = [];
+    // Before a clip's first key every channel holds its first value: time 0 checks that too.
+    const times = sorted[0] > 0 ? [0] : [];
     sorted.forEach((t, k) => {
         if (k > 0) {
             times.push((sorted[k - 1] + t) / 2);
