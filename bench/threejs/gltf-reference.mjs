@@ -13,8 +13,8 @@
 // each triangle mesh's vertices are taken with three's own Mesh/SkinnedMesh.getVertexPosition
 // (morph targets, then the bone transform) and moved to world space by the mesh's matrixWorld.
 // For a SkinnedMesh GLTFLoader binds with the identity bind matrix in attached mode, so this is
-// sum(w * jointWorld * inverseBind * p): the
-// specification's skinning, with the skinned node's own transform ignored.
+// sum(w * jointWorld * inverseBind * p): the specification's skinning, with the skinned node's own
+// transform ignored.
 //
 // What three.js does not do and this script does on its behalf:
 //  - JOINTS_1/WEIGHTS_1 (more than four influences): three skins four. For such a primitive the

@@ -37,6 +37,7 @@ Run from the repository root (Python 3 standard library; the validation needs No
 
     python3 tools/gltf/make-fixtures.py                 # write and validate
     python3 tools/gltf/make-fixtures.py --no-validate   # write only
+    python3 tools/gltf/make-fixtures.py --check         # are the committed files what it writes? (CI)
 
 The output is deterministic: two runs write identical bytes. The validator (npm gltf-validator,
 pinned in bench/threejs/package.json) must report zero errors for every file, or the script fails.
@@ -49,6 +50,7 @@ import os
 import struct
 import subprocess
 import sys
+import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 OUT = os.path.join(ROOT, "core", "src", "test", "resources", "gltf")
@@ -717,7 +719,25 @@ FIXTURES = [skin_component_types, skin_interleaved, skin_sparse, skin_quantized,
             skin_eight_influences, skin_no_ibm, anim_interpolation, morph_skin]
 
 
+def check():
+    """Regenerates into a temporary folder and compares with the committed files (CI)."""
+    global OUT
+    committed = OUT
+    with tempfile.TemporaryDirectory() as tmp:
+        OUT = tmp
+        names = [os.path.basename(make()) for make in FIXTURES]
+        stale = [n for n in names if not os.path.isfile(os.path.join(committed, n))
+                 or open(os.path.join(tmp, n), "rb").read() != open(os.path.join(committed, n), "rb").read()]
+    OUT = committed
+    for n in stale:
+        print("%s differs from what tools/gltf/make-fixtures.py writes: run it" % n, file=sys.stderr)
+    print("glTF fixtures: %d of %d as the generator writes them" % (len(names) - len(stale), len(names)))
+    return 1 if stale else 0
+
+
 def main(argv):
+    if "--check" in argv:
+        return check()
     os.makedirs(OUT, exist_ok=True)
     paths = [make() for make in FIXTURES]
     for p in paths:
