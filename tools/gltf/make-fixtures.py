@@ -11,6 +11,7 @@ that exercises what a skinned character can use, one group of features per file:
                               one mesh)
   skin-interleaved.glb        GLB; one interleaved bufferView (byteStride 52) for POSITION, NORMAL,
                               TEXCOORD_0, JOINTS_0, WEIGHTS_0; TEXCOORD_1 and COLOR_0 (float RGB);
+                              two primitives (materials) sharing those attributes;
                               the skinned node has its own TRS and a transformed parent (both
                               ignored, as the specification says), the joints lie outside the
                               skinned node's subtree, skin.skeleton set
@@ -442,8 +443,14 @@ def skin_interleaved():
     assert all(acc[i]["bufferView"] == view for i in attrs.values())
     attrs["TEXCOORD_1"] = doc.accessor([(p[0] + 0.5, p[2] + 0.5) for p in pos], FLOAT, "VEC2", target=ARRAY_BUFFER)
     attrs["COLOR_0"] = doc.accessor([(0.2, p[1] / 2, 0.8) for p in pos], FLOAT, "VEC3", target=ARRAY_BUFFER)
-    prim = {"attributes": attrs, "indices": doc.accessor(tris, USHORT, "SCALAR", target=ELEMENT_ARRAY_BUFFER)}
-    mesh = mesh_of(doc, [prim], name="interleaved column")
+    # Two primitives on the same attributes (a two-material split): they share their vertices.
+    half = len(tris) // 2 // 3 * 3
+    prims = [{"attributes": attrs, "material": m,
+              "indices": doc.accessor(part, USHORT, "SCALAR", target=ELEMENT_ARRAY_BUFFER)}
+             for m, part in enumerate([tris[:half], tris[half:]])]
+    doc.json["materials"] = [{"name": "lower", "pbrMetallicRoughness": {"baseColorFactor": [0.8, 0.3, 0.2, 1.0]}},
+                             {"name": "upper", "pbrMetallicRoughness": {"baseColorFactor": [0.2, 0.4, 0.8, 1.0]}}]
+    mesh = mesh_of(doc, prims, name="interleaved column")
     # The skinned node sits under a transformed parent and has its own TRS: both are ignored.
     holder = doc.node(name="holder", translation=[3.0, 2.0, 1.0], scale=[2.0, 2.0, 2.0])
     body = doc.node(name="body", mesh=mesh, skin=0, translation=[-1.0, 0.0, 4.0],
