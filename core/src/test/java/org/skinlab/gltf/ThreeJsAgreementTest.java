@@ -57,7 +57,10 @@ class ThreeJsAgreementTest {
         }
     }
 
-    /** The assets' references (the .glb files they were made from may come later; see below). */
+    /**
+     * The assets' references: a reference whose .glb is missing skips, saying so;
+     * {@link #everyAssetGlbHasAReference} fails for a .glb without one.
+     */
     static Stream<String> assets() throws IOException {
         return referenceNames(assetReferences());
     }
@@ -72,7 +75,6 @@ class ThreeJsAgreementTest {
                     .map(n -> n.substring(0, n.lastIndexOf(".json"))).sorted().toList().stream();
         }
     }
-
 
     @ParameterizedTest(name = "{0}")
     @MethodSource("fixtures")
