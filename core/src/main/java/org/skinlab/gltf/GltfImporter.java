@@ -75,7 +75,7 @@ public final class GltfImporter {
         UriResolver uris = new UriResolver(ctx, location);
         Buffers buffers = new Buffers(ctx, root, container, uris);
         Accessors accessors = new Accessors(ctx, root, buffers);
-        MaterialReader materials = new MaterialReader(ctx, uris, root);
+        MaterialReader materials = new MaterialReader(ctx, uris, buffers, root);
 
         JsonNode meshList = root.get("meshes").arrayOrMissing();
         MeshReader meshReader = new MeshReader(ctx, accessors, quantized, materials.materials().size());

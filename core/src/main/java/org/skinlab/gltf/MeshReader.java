@@ -21,7 +21,8 @@ import org.skinlab.model.MeshPart;
  * the specification orders them); points and lines are skipped with a warning, as is a primitive
  * without POSITION. A primitive without NORMAL gets no normals when no primitive of the mesh has
  * them (renderers then use face normals, as for COLLADA), else zeros with a warning; missing
- * TEXCOORD sets are zeros and a missing COLOR_0 is white, with a warning.
+ * TEXCOORD sets are zeros and a missing COLOR_0 is white, with a warning. Texture coordinates are
+ * turned into the model's convention, v up from the image's bottom: v = 1 - v_glTF.
  */
 final class MeshReader {
     private static final String[] TRIANGLE_MODES = {"points", "lines", "line_loop", "line_strip", "triangles",
@@ -200,7 +201,12 @@ final class MeshReader {
                 }
             }
             for (int set : sets) {
-                copy(a.get("TEXCOORD_" + set), "VEC2", b, texCoordSet(set), 2, texCoordFormats());
+                float[] uv = texCoordSet(set);
+                copy(a.get("TEXCOORD_" + set), "VEC2", b, uv, 2, texCoordFormats());
+                // glTF's v runs down from the image's top; the model's (COLLADA's) runs up from its bottom.
+                for (int i = 2 * b.start + 1; i < 2 * (b.start + b.count); i += 2) {
+                    uv[i] = 1f - uv[i];
+                }
             }
         }
 
