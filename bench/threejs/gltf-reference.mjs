@@ -32,7 +32,8 @@
 //    animation are untouched. All buffers (data URIs, files beside a .gltf, a GLB's chunk) are
 //    joined into one GLB in memory, which GLTFLoader parses from an ArrayBuffer without fetching.
 //
-// Numbers are rounded to 7 significant digits (float32 holds about 7).
+// Positions are rounded to 7 significant digits (float32 holds about 7), times to 9 (so that a
+// float32 key time reads back as the same float).
 import { readFileSync, writeFileSync, mkdirSync } from 'node:fs';
 import path from 'node:path';
 import { gzipSync } from 'node:zlib';
@@ -387,7 +388,9 @@ async function reference(file, opts) {
             meshes.forEach((m, k) => positions[k].push(worldPositions(m, sets[k])));
         }
         clips.push({
-            index: c, name: clip.name, duration: round(clip.duration), times: times.map(round),
+            // times with 9 digits, which float32 key times survive exactly (a STEP key sampled at
+            // a time a rounding below it would give the previous key)
+            index: c, name: clip.name, duration: round(clip.duration), times: times.map((t) => Number(t.toPrecision(9))),
             morphWeights: clip.tracks.some((track) => track.name.endsWith('.morphTargetInfluences')),
             meshes: meshes.map((m, k) => ({ ...describe(m, sets[k], json), positions: positions[k] })),
         });
