@@ -76,8 +76,13 @@ final class GlbContainer {
             throw ctx.error(HEADER, "the GLB file has " + bytes.length + " bytes, fewer than a header and a chunk header");
         }
         long length = Integer.toUnsignedLong(b.getInt(8));
-        if (length != bytes.length) {
+        if (length > bytes.length || length < 20) {
             throw ctx.error(HEADER, "the header says " + length + " bytes but the file has " + bytes.length);
+        }
+        if (length < bytes.length) {
+            ctx.warn(HEADER, (bytes.length - length) + " bytes after the " + length + " the header declares; ignored");
+            bytes = Arrays.copyOf(bytes, (int) length);
+            b = ByteBuffer.wrap(bytes).order(ByteOrder.LITTLE_ENDIAN);
         }
         long jsonLength = Integer.toUnsignedLong(b.getInt(12));
         if (b.getInt(16) != CHUNK_JSON) {

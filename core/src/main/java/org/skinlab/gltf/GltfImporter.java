@@ -54,6 +54,7 @@ public final class GltfImporter {
     public static Model read(InputStream in, String name, Path location) throws IOException, GltfException {
         GltfContext ctx = new GltfContext(name);
         GlbContainer container = GlbContainer.read(ctx, in);
+        ctx.addDocumentBytes(container.bytes.length);
         try {
             return build(ctx, container, location);
         } catch (RuntimeException | StackOverflowError e) {

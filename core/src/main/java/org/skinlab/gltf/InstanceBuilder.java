@@ -26,7 +26,9 @@ import org.skinlab.model.Skin;
  * The model's skinning path does the same (a skinned instance is placed by
  * {@code world(joint) * inverseBind * bindShape} only, never by its node), so the skin's bind
  * shape matrix is the identity and the node is recorded only as where the instance is.
- * Without {@code inverseBindMatrices} every inverse bind matrix is the identity.
+ * Without {@code inverseBindMatrices} every inverse bind matrix is the identity; with them each
+ * must be affine. A node with a skin or weights but no mesh is refused (the specification requires
+ * the mesh).
  */
 final class InstanceBuilder {
     /** Weight sums further than this from 1 are reported (8-bit normalised weights round by 1/255 each). */
@@ -73,13 +75,16 @@ final class InstanceBuilder {
     }
 
     void build() throws GltfException {
+        checkSkins();
         for (int i = 0; i < scene.result.size(); i++) {
             int g = scene.gltfIndex.get(i);
             JsonNode node = nodes.get(g);
             JsonNode meshRef = node.get("mesh");
             if (meshRef.isMissing()) {
-                if (node.has("skin")) {
-                    ctx.warn(node.get("skin").path(), "a skin on a node without a mesh; ignored");
+                for (String needsMesh : new String[] {"skin", "weights"}) {
+                    if (node.has(needsMesh)) {
+                        throw node.get(needsMesh).error("a node with " + needsMesh + " must have a mesh");
+                    }
                 }
                 continue;
             }
@@ -103,6 +108,20 @@ final class InstanceBuilder {
                 }
             }
             instances.add(new MeshInstance(i, drawn, skin, jointNodes, skeleton, bindings(data, drawn)));
+        }
+    }
+
+    /** Every skin's references, used by a node or not: skeleton, joints and inverse bind matrices. */
+    private void checkSkins() throws GltfException {
+        for (int s = 0; s < skins.size(); s++) {
+            JsonNode skeleton = skins.get(s).get("skeleton");
+            if (!skeleton.isMissing()) {
+                skeleton.index(nodes.size(), "nodes");
+            }
+            JsonNode ibm = skins.get(s).get("inverseBindMatrices");
+            if (!ibm.isMissing()) {
+                accessors.resolve(ibm);
+            }
         }
     }
 
@@ -135,6 +154,12 @@ final class InstanceBuilder {
         String key = data.index + Arrays.toString(weights);
         Morph morph = morphs.get(key);
         if (morph == null) {
+            Mesh base = data.mesh;
+            long meshValues = 6L * base.positionCount() + 3L * base.triangleCount()
+                    + (base.hasNormals() ? 3L : 0) * base.vertexCount() + (base.hasColors() ? 4L : 0) * base.vertexCount()
+                    + 2L * base.texCoordSetCount() * base.vertexCount();
+            // Each target is a mesh (the base's arrays copied) and the morph keeps its positions.
+            ctx.charge((data.targetCount() + 1) * (meshValues + 3L * base.positionCount()), node.path());
             String id = weights == data.weights ? data.mesh.id() + "/weights" : node.path() + "/weights";
             List<Mesh> targets = new ArrayList<>();
             for (int t = 0; t < data.targetCount(); t++) {
@@ -180,17 +205,17 @@ final class InstanceBuilder {
     private int[] jointNodes(int s) throws GltfException {
         JsonNode joints = skins.get(s).get("joints");
         int[] result = new int[joints.size()];
+        boolean[] listed = new boolean[nodes.size()];
         for (int j = 0; j < result.length; j++) {
             int g = joints.get(j).index(nodes.size(), "nodes");
             result[j] = scene.modelIndex[g];
             if (result[j] < 0) {
                 throw joints.get(j).error("joint node " + g + " is not in the scene");
             }
-            for (int k = 0; k < j; k++) {
-                if (result[k] == result[j]) {
-                    throw joints.get(j).error("node " + g + " is listed twice");
-                }
+            if (listed[g]) {
+                throw joints.get(j).error("node " + g + " is listed twice");
             }
+            listed[g] = true;
         }
         return result;
     }
@@ -215,6 +240,12 @@ final class InstanceBuilder {
             }
             // glTF's column-major matrices are what the model stores (JOML order): copied as they are.
             System.arraycopy(accessors.floats(acc), 0, result, 0, result.length);
+            for (int j = 0; j < jointCount; j++) {
+                int o = 16 * j;
+                if (result[o + 3] != 0f || result[o + 7] != 0f || result[o + 11] != 0f || result[o + 15] != 1f) {
+                    throw ref.error("inverse bind matrix " + j + " is not affine (its last row is not 0 0 0 1)");
+                }
+            }
         }
         inverseBinds.put(s, result);
         return result;
@@ -239,11 +270,12 @@ final class InstanceBuilder {
 
     private List<MaterialBinding> bindings(MeshData data, Mesh drawn) {
         List<MaterialBinding> result = new ArrayList<>();
+        java.util.Set<Integer> bound = new java.util.HashSet<>();
         for (int m : data.partMaterials) {
-            String symbol = m < 0 ? null : GltfImporter.materialSymbol(m);
-            if (m < 0 || result.stream().anyMatch(b -> b.symbol().equals(symbol))) {
+            if (m < 0 || !bound.add(m)) {
                 continue;
             }
+            String symbol = GltfImporter.materialSymbol(m);
             Material material = materials.materials().get(m);
             int texCoord = materials.baseTexCoord(m);
             int set = material.baseTexture() == null || texCoord < 0 ? -1 : drawn.texCoordSetIndex(texCoord);

@@ -16,7 +16,9 @@ import org.skinlab.model.TransformElement;
  *
  * <p>A node's transform is its {@code matrix} as one MATRIX element (glTF writes it column-major,
  * the model row-major), else the stack [TRANSLATE "translation", QUATERNION "rotation", SCALE
- * "scale"], always all three (defaults where absent) so animation channels find them by sid.
+ * "scale"], always all three (defaults where absent) so animation channels find them by sid; a
+ * rotation that is not a unit quaternion is normalised with a warning (the model's quaternion
+ * element would scale by its squared length).
  * The node graph must be a forest: a node with two parents, a cycle, or a scene node that is some
  * node's child is refused with the path.
  */
@@ -24,6 +26,8 @@ final class SceneReader {
     static final String TRANSLATION = "translation";
     static final String ROTATION = "rotation";
     static final String SCALE = "scale";
+    /** How far from 1 a rotation's length may be before it is normalised (and reported). */
+    static final double UNIT_TOLERANCE = 1e-3;
 
     private final GltfContext ctx;
     private final JsonNode nodes;
@@ -71,7 +75,7 @@ final class SceneReader {
                 childIndices[c] = modelIndex[kids.get(c).index(nodes.size(), "nodes")];
             }
             result.add(new Node(i, children.get(i)[0], childIndices, null, null, node.get("name").string(null),
-                    joints[g], false, transforms(node)));
+                    joints[g], false, transforms(ctx, node)));
         }
         int left = nodes.size() - result.size();
         if (left > 0) {
@@ -97,13 +101,20 @@ final class SceneReader {
                 parent[child] = n;
             }
         }
+        // With one parent each, a cycle is a path upwards that comes back to itself: walk up from
+        // each node until a root or a node already known to reach one (each node is walked once).
+        byte[] state = new byte[parent.length]; // 0 unknown, 1 on the current walk, 2 reaches a root
         for (int n = 0; n < parent.length; n++) {
-            // With one parent each, a path upwards that is longer than the node count is a cycle.
-            int steps = 0;
-            for (int p = parent[n]; p >= 0; p = parent[p]) {
-                if (++steps > parent.length || p == n) {
-                    throw nodes.get(n).get("children").error("node " + n + " is its own ancestor (a cycle)");
-                }
+            int p = n;
+            while (p >= 0 && state[p] == 0) {
+                state[p] = 1;
+                p = parent[p];
+            }
+            if (p >= 0 && state[p] == 1) {
+                throw nodes.get(p).get("children").error("node " + p + " is its own ancestor (a cycle)");
+            }
+            for (int q = n; q >= 0 && state[q] == 1; q = parent[q]) {
+                state[q] = 2;
             }
         }
         return parent;
@@ -130,22 +141,22 @@ final class SceneReader {
         int s = sceneNode.isMissing() ? 0 : sceneNode.index(scenes.size(), "scenes");
         JsonNode list = scenes.get(s).get("nodes").arrayOrMissing();
         int[] roots = new int[list.size()];
+        boolean[] listed = new boolean[parent.length];
         for (int i = 0; i < roots.length; i++) {
             roots[i] = list.get(i).index(parent.length, "nodes");
             if (parent[roots[i]] >= 0) {
                 throw list.get(i).error("node " + roots[i] + " is a child of node " + parent[roots[i]]
                         + "; a scene lists root nodes only");
             }
-            for (int k = 0; k < i; k++) {
-                if (roots[k] == roots[i]) {
-                    throw list.get(i).error("node " + roots[i] + " is listed twice");
-                }
+            if (listed[roots[i]]) {
+                throw list.get(i).error("node " + roots[i] + " is listed twice");
             }
+            listed[roots[i]] = true;
         }
         return roots;
     }
 
-    private static List<TransformElement> transforms(JsonNode node) throws GltfException {
+    private static List<TransformElement> transforms(GltfContext ctx, JsonNode node) throws GltfException {
         JsonNode matrix = node.get("matrix");
         if (!matrix.isMissing()) {
             for (String trs : new String[] {TRANSLATION, ROTATION, SCALE}) {
@@ -153,14 +164,28 @@ final class SceneReader {
                     throw node.get(trs).error("a node has either a matrix or " + trs + ", not both");
                 }
             }
-            return List.of(new TransformElement(TransformElement.Kind.MATRIX, "matrix",
-                    rowMajor(matrix.floats(16, null))));
+            float[] m = matrix.floats(16, null);
+            if (m[3] != 0f || m[7] != 0f || m[11] != 0f || m[15] != 1f) {
+                ctx.warn(matrix.path(), "the last row is not (0 0 0 1); read as if it were");
+            }
+            return List.of(new TransformElement(TransformElement.Kind.MATRIX, "matrix", rowMajor(m)));
+        }
+        float[] q = node.get(ROTATION).floats(4, new float[] {0, 0, 0, 1});
+        double length = Math.sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+        if (Math.abs(length - 1) > UNIT_TOLERANCE) {
+            // The model's quaternion element is homogeneous (|q|^2 scales); glTF's rotations are unit.
+            if (length == 0) {
+                throw node.get(ROTATION).error("the zero quaternion is no rotation");
+            }
+            ctx.warn(node.get(ROTATION).path(), "not a unit quaternion (length " + (float) length + "); normalised");
+            for (int c = 0; c < 4; c++) {
+                q[c] = (float) (q[c] / length);
+            }
         }
         return List.of(
                 new TransformElement(TransformElement.Kind.TRANSLATE, TRANSLATION,
                         node.get(TRANSLATION).floats(3, new float[3])),
-                new TransformElement(TransformElement.Kind.QUATERNION, ROTATION,
-                        node.get(ROTATION).floats(4, new float[] {0, 0, 0, 1})),
+                new TransformElement(TransformElement.Kind.QUATERNION, ROTATION, q),
                 new TransformElement(TransformElement.Kind.SCALE, SCALE,
                         node.get(SCALE).floats(3, new float[] {1, 1, 1})));
     }

@@ -64,6 +64,37 @@ class GltfContainerTest {
     }
 
     @Test
+    void glbWithBytesAfterItsDeclaredLengthLoadsWithAWarning() throws Exception {
+        byte[] glb = triangle().glb(TRIANGLE_MESH);
+        byte[] longer = java.util.Arrays.copyOf(glb, glb.length + 3);
+        Model model = GltfFixture.read(longer, "x.glb");
+        assertEquals(3, model.meshes().get(0).positionCount());
+        assertEquals("(GLB header)", model.warnings().get(0).element());
+    }
+
+    @Test
+    void unusedBufferWithoutDataIsNoProblemButAUsedOneIsRefused() throws Exception {
+        String json = triangle().gltf(TRIANGLE_MESH).replace("\"buffers\":[{", "\"buffers\":[{\"byteLength\":4},{")
+                .replace("\"buffer\":0", "\"buffer\":1");
+        assertEquals(3, GltfFixture.read(json).meshes().get(0).positionCount());
+        String used = triangle().gltf(TRIANGLE_MESH).replaceAll("\"uri\":\"[^\"]*\",", "");
+        GltfException e = assertThrows(GltfException.class, () -> GltfFixture.read(used));
+        assertEquals("/buffers/0", e.path());
+    }
+
+    @Test
+    void percentEncodedDataUriIsRead() throws Exception {
+        GltfFixture f = new GltfFixture();
+        f.accessor(Accessors.UNSIGNED_BYTE, "SCALAR", false, 0, 1, 2, 65);
+        String json = f.gltf("").replaceAll("data:[^\"]*", "data:application/gltf-buffer,%00%01%02A");
+        byte[] bytes = json.getBytes(StandardCharsets.UTF_8);
+        GltfContext ctx = new GltfContext("t.gltf");
+        JsonNode root = JsonTree.parse(ctx, bytes, 0, bytes.length);
+        Accessors a = new Accessors(ctx, root, new Buffers(ctx, root, null, new UriResolver(ctx, null)));
+        assertArrayEquals(new int[] {0, 1, 2, 65}, a.ints(0));
+    }
+
+    @Test
     void bufferShorterThanItsByteLengthIsRefused() {
         // 36 bytes of positions and 6 of indices, padded to 44.
         String json = triangle().gltf(TRIANGLE_MESH).replace("\"byteLength\":44}]", "\"byteLength\":48}]");
@@ -105,6 +136,24 @@ class GltfContainerTest {
             assertEquals("/buffers/0/uri", e.path(), c[0]);
             assertTrue(e.problem().contains(c[1]), e.getMessage());
         }
+    }
+
+    @Test
+    void aLinkInsideTheFolderThatLeadsOutIsRefused(@TempDir Path dir) throws Exception {
+        String embedded = triangle().gltf(TRIANGLE_MESH);
+        Path outside = Files.createDirectories(dir.resolve("outside"));
+        Files.write(outside.resolve("secret.bin"), new byte[64]);
+        Path sub = Files.createDirectories(dir.resolve("sub"));
+        try {
+            Files.createSymbolicLink(sub.resolve("link.bin"), outside.resolve("secret.bin"));
+        } catch (UnsupportedOperationException | java.io.IOException e) {
+            org.junit.jupiter.api.Assumptions.assumeTrue(false, "symbolic links cannot be made here: " + e);
+        }
+        Path gltf = sub.resolve("doc.gltf");
+        Files.write(gltf, embedded.replaceAll("data:[^\"]*", "link.bin").getBytes(StandardCharsets.UTF_8));
+        GltfException e = assertThrows(GltfException.class, () -> GltfImporter.read(gltf));
+        assertEquals("doc.gltf: /buffers/0/uri: \"link.bin\" is a link that leads out of the file's folder",
+                e.getMessage());
     }
 
     @Test
