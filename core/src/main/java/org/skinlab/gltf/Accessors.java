@@ -137,7 +137,12 @@ final class Accessors {
         Layout layout = layout(accessor);
         ctx.charge(layout.values(), a.path());
         float[] out = new float[layout.values()];
-        if (layout.view >= 0) {
+        if (layout.view >= 0 && type == FLOAT && layout.isPacked()) {
+            // Tightly packed floats (most files' positions, normals, texture coordinates): one bulk copy.
+            ByteBuffer b = buffers.view(layout.view);
+            b.position(layout.offset);
+            b.asFloatBuffer().get(out);
+        } else if (layout.view >= 0) {
             ByteBuffer b = buffers.view(layout.view);
             for (int e = 0; e < layout.count; e++) {
                 for (int c = 0; c < layout.components; c++) {
@@ -357,6 +362,12 @@ final class Accessors {
 
         int values() {
             return count * components;
+        }
+
+        /** True when the components follow one another without gaps (no stride padding, no column padding). */
+        boolean isPacked() {
+            return rows == components ? stride == components * componentSize
+                    : columnStride == rows * componentSize && stride == components * componentSize;
         }
 
         /** Byte of component {@code c} (column-major for matrices) of element {@code e}. */
