@@ -33,7 +33,17 @@ final class Accessors {
         this.accessors = root.get("accessors").arrayOrMissing();
         this.buffers = buffers;
         for (int i = 0; i < accessors.size(); i++) {
-            layout(i); // every accessor's declared layout, used or not, checked once (nothing allocated)
+            // Every accessor's declared layout, used or not, checked once (nothing allocated). One
+            // of a type the specification does not list can only be refused where it is used.
+            JsonNode a = accessors.get(i);
+            if (a.get("type").string("").matches("SCALAR|VEC[234]|MAT[234]")
+                    && a.get("componentType").integer(0, Integer.MAX_VALUE, 0) >= BYTE
+                    && a.get("componentType").integer(0, Integer.MAX_VALUE, 0) <= FLOAT
+                    && a.get("componentType").integer(0, Integer.MAX_VALUE, 0) != 5124) {
+                layout(i);
+            } else {
+                ctx.warn(a.path(), "unknown type or component type; refused if anything uses it");
+            }
         }
     }
 
@@ -235,7 +245,8 @@ final class Accessors {
             throw a.get("byteOffset").error("byteOffset " + offset + " is not a multiple of the component size "
                     + componentSize);
         }
-        long end = offset + (long) stride * (count - 1) + elementSize;
+        // The last element needs no padding after its last column.
+        long end = offset + (long) stride * (count - 1) + elementSize - columnStride + (long) rows * componentSize;
         int viewLength = buffers.viewLength(view);
         if (end > viewLength) {
             throw a.get("count").error(count + " elements of " + elementSize + " bytes (stride " + stride + ") from offset "
