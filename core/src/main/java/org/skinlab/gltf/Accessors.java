@@ -47,10 +47,6 @@ final class Accessors {
         }
     }
 
-    int count() throws GltfException {
-        return accessors.size();
-    }
-
     /** The accessor an index property (e.g. {@code attributes/POSITION}) names. */
     int resolve(JsonNode reference) throws GltfException {
         return reference.index(accessors.size(), "accessors");

@@ -57,10 +57,6 @@ final class PositionWelder {
         firstVertex = Arrays.copyOf(first, positions);
     }
 
-    int positionCount() {
-        return firstVertex.length;
-    }
-
     /** Per-vertex values ({@code width} per vertex) reduced to one per position (its first vertex's). */
     float[] perPosition(float[] perVertex, int width) {
         float[] out = new float[width * firstVertex.length];
