@@ -13,9 +13,8 @@ import org.skinlab.model.MeshPart;
 /**
  * Reads {@code /meshes} into {@link MeshData}. A mesh's primitives become one {@link Mesh}:
  * primitives with the same attributes (and targets) share one block of vertices, each other
- * primitive adds its own. glTF has no separate position index space; vertices that agree in
- * position, skin influences and morph offsets share one model position ({@link PositionWelder}),
- * which skin influences and morph offsets are stored per.
+ * primitive adds its own; every vertex is its own position (glTF has no separate position index
+ * space), so skin influences and morph offsets are per vertex as in the file.
  *
  * <p>TRIANGLES, TRIANGLE_STRIP and TRIANGLE_FAN become triangles (strip triangle i is
  * {@code (v_i, v_(i+1+i%2), v_(i+2-i%2))} and fan triangle i {@code (v_(i+1), v_(i+2), v_0)}, as
@@ -95,6 +94,12 @@ final class MeshReader {
                     partMaterials[i] < 0 ? null : GltfImporter.materialSymbol(partMaterials[i]), first,
                     triangles.size() / 3 - first));
         }
+        int[] vertexPositions = new int[positions];
+        for (int i = 0; i < positions; i++) {
+            vertexPositions[i] = i;
+        }
+        Mesh mesh = new Mesh("/meshes/" + index, meshNode.get("name").string(null), v.positions, vertexPositions,
+                v.normals, v.texCoords, v.texCoordNumbers, v.colors, triangles.toArray(), parts);
         float[][] targetPositions = new float[layout.targetCount][];
         float[][] targetNormals = new float[layout.targetCount][];
         for (int t = 0; t < targetPositions.length; t++) {
@@ -108,18 +113,8 @@ final class MeshReader {
         for (Block b : blocks) {
             influences.read(b.attributes, b.start, b.count);
         }
-        ctx.charge(6L * positions, meshNode.path()); // the welder's table and maps
-        int[] vertexStart = influences.start();
-        PositionWelder weld = new PositionWelder(v.positions, vertexStart, influences.joints(), influences.weights(),
-                targetPositions);
-        for (int t = 0; t < targetPositions.length; t++) {
-            targetPositions[t] = weld.perPosition(targetPositions[t], 3);
-        }
-        int[] start = weld.influenceStart();
-        Mesh mesh = new Mesh("/meshes/" + index, meshNode.get("name").string(null), weld.perPosition(v.positions, 3),
-                weld.positionOfVertex, v.normals, v.texCoords, v.texCoordNumbers, v.colors, triangles.toArray(), parts);
         return new MeshData(index, mesh, targetPositions, targetNormals, defaultWeights(meshNode, layout.targetCount),
-                partMaterials, start, weld.influenceJoints(start), weld.influenceWeights(start), influences.maxJoint,
+                partMaterials, influences.start(), influences.joints(), influences.weights(), influences.maxJoint,
                 influences.maxJointPath, influences.withoutJoints);
     }
 
