@@ -40,12 +40,18 @@ final class GlbContainer {
         if (bytes.length >= 4 && ByteBuffer.wrap(bytes).order(ByteOrder.LITTLE_ENDIAN).getInt(0) == MAGIC) {
             return glb(ctx, bytes);
         }
-        int start = bytes.length >= 3 && (bytes[0] & 0xff) == 0xEF && (bytes[1] & 0xff) == 0xBB
-                && (bytes[2] & 0xff) == 0xBF ? 3 : 0; // a UTF-8 byte order mark, which JSON forbids but editors write
-        if (start > 0) {
+        int start = bomLength(ctx, bytes, 0, bytes.length);
+        return new GlbContainer(false, bytes, start, bytes.length - start, -1, 0);
+    }
+
+    /** 3 when the JSON at {@code offset} starts with a UTF-8 byte order mark (glTF forbids it; editors write it), warned. */
+    private static int bomLength(GltfContext ctx, byte[] bytes, int offset, long length) {
+        boolean bom = length >= 3 && (bytes[offset] & 0xff) == 0xEF && (bytes[offset + 1] & 0xff) == 0xBB
+                && (bytes[offset + 2] & 0xff) == 0xBF;
+        if (bom) {
             ctx.warn("", "the JSON starts with a UTF-8 byte order mark; skipped");
         }
-        return new GlbContainer(false, bytes, start, bytes.length - start, -1, 0);
+        return bom ? 3 : 0;
     }
 
     private static byte[] readAll(GltfContext ctx, InputStream in) throws IOException, GltfException {
@@ -118,6 +124,7 @@ final class GlbContainer {
             }
             at += 8 + chunkLength;
         }
-        return new GlbContainer(true, bytes, 20, (int) jsonLength, binOffset, binLength);
+        int bom = bomLength(ctx, bytes, 20, jsonLength);
+        return new GlbContainer(true, bytes, 20 + bom, (int) jsonLength - bom, binOffset, binLength);
     }
 }

@@ -190,6 +190,25 @@ class GltfContainerTest {
     }
 
     @Test
+    void aByteOrderMarkIsSkippedWithAWarning() throws Exception {
+        byte[] json = triangle().gltf(TRIANGLE_MESH).getBytes(StandardCharsets.UTF_8);
+        byte[] withBom = new byte[json.length + 3];
+        withBom[0] = (byte) 0xEF;
+        withBom[1] = (byte) 0xBB;
+        withBom[2] = (byte) 0xBF;
+        System.arraycopy(json, 0, withBom, 3, json.length);
+        Model model = GltfFixture.read(withBom, "bom.gltf");
+        assertEquals(3, model.meshes().get(0).positionCount());
+        assertEquals("/", model.warnings().get(0).element());
+    }
+
+    @Test
+    void aDocumentThatIsNoObjectIsRefused() {
+        GltfException e = assertThrows(GltfException.class, () -> GltfFixture.read("[1, 2]"));
+        assertEquals("test.gltf: /: the JSON document is not an object", e.getMessage());
+    }
+
+    @Test
     void malformedJsonNamesWhereItBroke() {
         GltfException e = assertThrows(GltfException.class, () -> GltfFixture.read(
                 "{\"asset\":{\"version\":\"2.0\"},\"nodes\":[{\"name\":\"a\",}]}"));
