@@ -1,0 +1,382 @@
+package org.skinlab.gltf;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.TreeSet;
+
+import org.skinlab.model.Mesh;
+import org.skinlab.model.MeshPart;
+
+/**
+ * Reads {@code /meshes} into {@link MeshData}. A mesh's primitives become one {@link Mesh}:
+ * primitives with the same attributes (and targets) share one block of vertices, each other
+ * primitive adds its own; every vertex is its own position (glTF has no separate position index
+ * space), so skin influences and morph offsets are per vertex as in the file.
+ *
+ * <p>TRIANGLES, TRIANGLE_STRIP and TRIANGLE_FAN become triangles (strip triangle i is
+ * {@code (v_i, v_(i+1+i%2), v_(i+2-i%2))} and fan triangle i {@code (v_(i+1), v_(i+2), v_0)}, as
+ * the specification orders them); points and lines are skipped with a warning, as is a primitive
+ * without POSITION. A primitive without NORMAL gets no normals when no primitive of the mesh has
+ * them (renderers then use face normals, as for COLLADA), else zeros with a warning; missing
+ * TEXCOORD sets are zeros and a missing COLOR_0 is white, with a warning.
+ */
+final class MeshReader {
+    private static final String[] TRIANGLE_MODES = {"points", "lines", "line_loop", "line_strip", "triangles",
+            "triangle_strip", "triangle_fan"};
+
+    private final GltfContext ctx;
+    private final Accessors accessors;
+    private final boolean quantized;
+    private final int materialCount;
+
+    MeshReader(GltfContext ctx, Accessors accessors, boolean quantized, int materialCount) {
+        this.ctx = ctx;
+        this.accessors = accessors;
+        this.quantized = quantized;
+        this.materialCount = materialCount;
+    }
+
+    /** A block of vertices: the attributes (and targets) of one or more primitives. */
+    private static final class Block {
+        final JsonNode primitive;
+        final JsonNode attributes;
+        final int count;
+        int start;
+
+        Block(JsonNode primitive, int count) throws GltfException {
+            this.primitive = primitive;
+            this.attributes = primitive.get("attributes");
+            this.count = count;
+        }
+    }
+
+    MeshData read(JsonNode meshNode, int index) throws GltfException {
+        JsonNode primitives = meshNode.get("primitives");
+        if (primitives.size() == 0) {
+            throw primitives.error("a mesh needs at least one primitive");
+        }
+        Map<String, Block> blocks = new LinkedHashMap<>();
+        List<Block> blockOfPart = new ArrayList<>();
+        List<JsonNode> partPrimitives = new ArrayList<>();
+        int targetCount = -1;
+        for (int p = 0; p < primitives.size(); p++) {
+            JsonNode primitive = primitives.get(p);
+            int mode = primitive.get("mode").integer(0, 6, 4);
+            JsonNode targets = primitive.get("targets").arrayOrMissing();
+            if (targetCount >= 0 && targets.size() != targetCount) {
+                throw targets.error(targets.size() + " morph targets, but the mesh's first primitive has " + targetCount);
+            }
+            targetCount = targets.size();
+            JsonNode attributes = primitive.get("attributes").objectOrMissing();
+            if (mode < 4) {
+                ctx.warn(primitive.path(), "mode " + mode + " (" + TRIANGLE_MODES[mode] + ") is not drawn; skipped");
+                continue;
+            }
+            if (!attributes.has("POSITION")) {
+                ctx.warn(attributes.path(), "no POSITION attribute; the primitive is skipped");
+                continue;
+            }
+            String key = attributeKey(attributes) + "|" + targetKey(targets);
+            Block block = blocks.get(key);
+            if (block == null) {
+                int position = accessors.resolve(attributes.get("POSITION"));
+                block = new Block(primitive, accessors.elementCount(position));
+                blocks.put(key, block);
+            }
+            blockOfPart.add(block);
+            partPrimitives.add(primitive);
+        }
+        if (partPrimitives.isEmpty()) {
+            return null;
+        }
+        int positions = 0;
+        for (Block b : blocks.values()) {
+            b.start = positions;
+            positions += b.count;
+            if (positions > GltfLimits.MAX_ACCESSOR_VALUES) {
+                throw meshNode.error("more than " + GltfLimits.MAX_ACCESSOR_VALUES + " vertices");
+            }
+        }
+        List<Block> blockList = new ArrayList<>(blocks.values());
+        Vertices v = new Vertices(positions);
+        for (Block b : blockList) {
+            v.read(b);
+        }
+        for (Block b : blockList) {
+            v.warnGaps(b);
+        }
+        TriangleList triangles = new TriangleList();
+        List<MeshPart> parts = new ArrayList<>();
+        int[] partMaterials = new int[partPrimitives.size()];
+        for (int i = 0; i < partPrimitives.size(); i++) {
+            JsonNode primitive = partPrimitives.get(i);
+            int first = triangles.size() / 3;
+            triangles(primitive, blockOfPart.get(i), triangles);
+            JsonNode material = primitive.get("material");
+            partMaterials[i] = material.isMissing() ? -1 : material.index(materialCount, "materials");
+            parts.add(new MeshPart(TRIANGLE_MODES[primitive.get("mode").integer(0, 6, 4)],
+                    partMaterials[i] < 0 ? null : GltfImporter.materialSymbol(partMaterials[i]), first,
+                    triangles.size() / 3 - first));
+        }
+        int[] vertexPositions = new int[positions];
+        for (int i = 0; i < positions; i++) {
+            vertexPositions[i] = i;
+        }
+        Mesh mesh = new Mesh("/meshes/" + index, meshNode.get("name").string(null), v.positions, vertexPositions,
+                v.normals, v.texCoords, v.texCoordNumbers, v.colors, triangles.toArray(), parts);
+        float[][] targetPositions = new float[Math.max(0, targetCount)][];
+        float[][] targetNormals = new float[targetPositions.length][];
+        for (int t = 0; t < targetPositions.length; t++) {
+            targetPositions[t] = new float[3 * positions];
+            for (Block b : blockList) {
+                readTarget(b, t, targetPositions, targetNormals, positions);
+            }
+        }
+        JsonNode weightsNode = meshNode.get("weights");
+        if (!weightsNode.isMissing() && weightsNode.size() != targetPositions.length) {
+            throw weightsNode.error(weightsNode.size() + " weights for " + targetPositions.length + " morph targets");
+        }
+        float[] weights = weightsNode.isMissing() ? new float[targetPositions.length] : weightsNode.floats();
+        Influences influences = new Influences(ctx, accessors, positions);
+        for (Block b : blockList) {
+            influences.read(b.attributes, b.start, b.count);
+        }
+        return new MeshData(index, mesh, targetPositions, targetNormals, weights, partMaterials, influences.start(),
+                influences.joints(), influences.weights(), influences.maxJoint, influences.maxJointPath,
+                influences.withoutJoints);
+    }
+
+    private static String attributeKey(JsonNode attributes) throws GltfException {
+        StringBuilder sb = new StringBuilder();
+        for (String k : attributes.keys()) {
+            sb.append(k).append('=').append(attributes.get(k).number()).append(',');
+        }
+        return sb.toString();
+    }
+
+    private static String targetKey(JsonNode targets) throws GltfException {
+        StringBuilder sb = new StringBuilder();
+        for (int t = 0; t < targets.size(); t++) {
+            sb.append(attributeKey(targets.get(t).objectOrMissing())).append(';');
+        }
+        return sb.toString();
+    }
+
+    /** The vertex attributes of all blocks, concatenated. */
+    private final class Vertices {
+        final int total;
+        final float[] positions;
+        float[] normals;
+        float[] colors;
+        final List<float[]> texCoords = new ArrayList<>();
+        int[] texCoordNumbers;
+
+        Vertices(int total) {
+            this.total = total;
+            this.positions = new float[3 * total];
+        }
+
+        void read(Block b) throws GltfException {
+            JsonNode a = b.attributes;
+            copy(a.get("POSITION"), "VEC3", b, positions, 3, positionFormats());
+            if (a.has("NORMAL")) {
+                normals = normals == null ? new float[3 * total] : normals;
+                copy(a.get("NORMAL"), "VEC3", b, normals, 3, normalFormats());
+            }
+            if (a.has("COLOR_0")) {
+                if (colors == null) {
+                    colors = new float[4 * total];
+                    Arrays.fill(colors, 1f);
+                }
+                readColors(a.get("COLOR_0"), b);
+            }
+            TreeSet<Integer> sets = new TreeSet<>();
+            for (String key : a.keys()) {
+                if (key.startsWith("TEXCOORD_")) {
+                    sets.add(setNumber(a.get(key), key));
+                }
+            }
+            for (int set : sets) {
+                copy(a.get("TEXCOORD_" + set), "VEC2", b, texCoordSet(set), 2, texCoordFormats());
+            }
+        }
+
+        /** After all blocks are read: says where a block lacks what others have. */
+        void warnGaps(Block b) throws GltfException {
+            JsonNode a = b.attributes;
+            if (normals != null && !a.has("NORMAL")) {
+                ctx.warn(a.path(), "no NORMAL while other primitives of the mesh have one; its normals are zero");
+            }
+            if (colors != null && !a.has("COLOR_0")) {
+                ctx.warn(a.path(), "no COLOR_0 while other primitives of the mesh have one; its colour is white");
+            }
+            for (int i = 0; texCoordNumbers != null && i < texCoordNumbers.length; i++) {
+                if (!a.has("TEXCOORD_" + texCoordNumbers[i])) {
+                    ctx.warn(a.path(), "no TEXCOORD_" + texCoordNumbers[i]
+                            + " while other primitives of the mesh have it; its texture coordinates there are zero");
+                }
+            }
+        }
+
+        private float[] texCoordSet(int number) {
+            int i = texCoordNumbers == null ? -1 : Arrays.binarySearch(texCoordNumbers, number);
+            if (i >= 0) {
+                return texCoords.get(i);
+            }
+            int at = texCoordNumbers == null ? 0 : -i - 1;
+            int[] numbers = new int[texCoords.size() + 1];
+            for (int k = 0, j = 0; k < numbers.length; k++) {
+                numbers[k] = k == at ? number : texCoordNumbers[j++];
+            }
+            texCoordNumbers = numbers;
+            float[] set = new float[2 * total];
+            texCoords.add(at, set);
+            return set;
+        }
+
+        private void readColors(JsonNode ref, Block b) throws GltfException {
+            int acc = accessors.resolve(ref);
+            String type = accessors.components(acc) == 3 ? "VEC3" : "VEC4";
+            accessors.expect(acc, ref.path(), type, "5126", "5121n", "5123n");
+            checkCount(acc, ref, b);
+            float[] data = accessors.floats(acc);
+            int width = type.equals("VEC3") ? 3 : 4;
+            for (int i = 0; i < b.count; i++) {
+                System.arraycopy(data, width * i, colors, 4 * (b.start + i), width);
+            }
+        }
+
+        private void copy(JsonNode ref, String type, Block b, float[] dest, int width, String[] formats)
+                throws GltfException {
+            int acc = accessors.resolve(ref);
+            accessors.expect(acc, ref.path(), type, formats);
+            checkCount(acc, ref, b);
+            System.arraycopy(accessors.floats(acc), 0, dest, width * b.start, width * b.count);
+        }
+    }
+
+    private void checkCount(int acc, JsonNode ref, Block b) throws GltfException {
+        if (accessors.elementCount(acc) != b.count) {
+            throw ref.error("accessor " + acc + " has " + accessors.elementCount(acc) + " elements but POSITION has "
+                    + b.count);
+        }
+    }
+
+    private static int setNumber(JsonNode ref, String key) throws GltfException {
+        try {
+            int n = Integer.parseInt(key.substring("TEXCOORD_".length()));
+            if (n < 0 || n > 31) {
+                throw ref.error("texture coordinate set " + n + " is out of range");
+            }
+            return n;
+        } catch (NumberFormatException e) {
+            throw ref.error("\"" + key + "\" is not TEXCOORD_ and a set number");
+        }
+    }
+
+    private void readTarget(Block b, int t, float[][] positions, float[][] normals, int total) throws GltfException {
+        JsonNode target = b.primitive.get("targets").get(t).objectOrMissing();
+        if (target.has("POSITION")) {
+            int acc = accessors.resolve(target.get("POSITION"));
+            accessors.expect(acc, target.get("POSITION").path(), "VEC3", quantized
+                    ? new String[] {"5126", "5120", "5120n", "5122", "5122n"} : new String[] {"5126"});
+            checkCount(acc, target.get("POSITION"), b);
+            System.arraycopy(accessors.floats(acc), 0, positions[t], 3 * b.start, 3 * b.count);
+        }
+        if (target.has("NORMAL")) {
+            int acc = accessors.resolve(target.get("NORMAL"));
+            accessors.expect(acc, target.get("NORMAL").path(), "VEC3", normalFormats());
+            checkCount(acc, target.get("NORMAL"), b);
+            normals[t] = normals[t] == null ? new float[3 * total] : normals[t];
+            System.arraycopy(accessors.floats(acc), 0, normals[t], 3 * b.start, 3 * b.count);
+        }
+    }
+
+    private String[] positionFormats() {
+        return quantized ? new String[] {"5126", "5120", "5120n", "5121", "5121n", "5122", "5122n", "5123", "5123n"}
+                : new String[] {"5126"};
+    }
+
+    private String[] normalFormats() {
+        return quantized ? new String[] {"5126", "5120n", "5122n"} : new String[] {"5126"};
+    }
+
+    private String[] texCoordFormats() {
+        return quantized ? new String[] {"5126", "5120", "5120n", "5121", "5121n", "5122", "5122n", "5123", "5123n"}
+                : new String[] {"5126", "5121n", "5123n"};
+    }
+
+    /** Appends a primitive's triangles (block-relative indices made mesh-wide). */
+    private void triangles(JsonNode primitive, Block block, TriangleList out) throws GltfException {
+        int mode = primitive.get("mode").integer(0, 6, 4);
+        JsonNode indicesNode = primitive.get("indices");
+        int[] indices;
+        if (indicesNode.isMissing()) {
+            indices = null;
+        } else {
+            int acc = accessors.resolve(indicesNode);
+            accessors.expect(acc, indicesNode.path(), "SCALAR", "5121", "5123", "5125");
+            indices = accessors.ints(acc);
+            for (int i = 0; i < indices.length; i++) {
+                if (indices[i] >= block.count) {
+                    throw indicesNode.error("index " + i + " is " + Integer.toUnsignedString(indices[i])
+                            + " but the primitive has " + block.count + " vertices");
+                }
+            }
+        }
+        int n = indices == null ? block.count : indices.length;
+        int triangles = mode == 4 ? n / 3 : Math.max(0, n - 2);
+        if (mode == 4 && n % 3 != 0) {
+            ctx.warn(primitive.path(), n + " vertices are not whole triangles; the last " + n % 3 + " are ignored");
+        }
+        if (out.size() / 3 + (long) triangles > GltfLimits.MAX_TRIANGLES) {
+            throw primitive.error("more than " + GltfLimits.MAX_TRIANGLES + " triangles in the mesh");
+        }
+        for (int i = 0; i < triangles; i++) {
+            int a;
+            int b;
+            int c;
+            if (mode == 4) {
+                a = 3 * i;
+                b = 3 * i + 1;
+                c = 3 * i + 2;
+            } else if (mode == 5) {
+                a = i;
+                b = i + 1 + i % 2;
+                c = i + 2 - i % 2;
+            } else {
+                a = i + 1;
+                b = i + 2;
+                c = 0;
+            }
+            out.add(block.start + (indices == null ? a : indices[a]), block.start + (indices == null ? b : indices[b]),
+                    block.start + (indices == null ? c : indices[c]));
+        }
+    }
+
+    /** A growable list of triangle corners. */
+    private static final class TriangleList {
+        private int[] data = new int[96];
+        private int size;
+
+        void add(int a, int b, int c) {
+            if (size + 3 > data.length) {
+                data = Arrays.copyOf(data, data.length * 2);
+            }
+            data[size++] = a;
+            data[size++] = b;
+            data[size++] = c;
+        }
+
+        int size() {
+            return size;
+        }
+
+        int[] toArray() {
+            return Arrays.copyOf(data, size);
+        }
+    }
+}

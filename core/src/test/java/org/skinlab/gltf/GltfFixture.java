@@ -1,0 +1,151 @@
+package org.skinlab.gltf;
+
+import java.io.ByteArrayInputStream;
+import java.io.ByteArrayOutputStream;
+import java.nio.ByteBuffer;
+import java.nio.ByteOrder;
+import java.nio.charset.StandardCharsets;
+import java.util.ArrayList;
+import java.util.Base64;
+import java.util.List;
+import java.util.Locale;
+
+import org.skinlab.model.Model;
+
+/**
+ * Writes small glTF documents for tests: binary data goes into one buffer (a base64 data URI in
+ * .gltf, the BIN chunk in .glb), views and accessors are listed as they are added, and the test
+ * writes the rest of the JSON (meshes, nodes, ...) by hand.
+ */
+final class GltfFixture {
+    private final ByteArrayOutputStream bin = new ByteArrayOutputStream();
+    private final List<String> views = new ArrayList<>();
+    private final List<String> accessors = new ArrayList<>();
+
+    /** A view over the given bytes (4-byte aligned), with a byteStride when stride > 0. */
+    int view(byte[] data, int stride) {
+        while (bin.size() % 4 != 0) {
+            bin.write(0);
+        }
+        views.add("{\"buffer\":0,\"byteOffset\":" + bin.size() + ",\"byteLength\":" + data.length
+                + (stride > 0 ? ",\"byteStride\":" + stride : "") + "}");
+        bin.write(data, 0, data.length);
+        return views.size() - 1;
+    }
+
+    /** An accessor written as given (JSON object text). */
+    int accessor(String json) {
+        accessors.add(json);
+        return accessors.size() - 1;
+    }
+
+    /** Values encoded in a component type, in their own view, and an accessor over them. */
+    int accessor(int componentType, String type, boolean normalized, double... values) {
+        int view = view(encode(componentType, values), 0);
+        int components = components(type);
+        return accessor("{\"bufferView\":" + view + ",\"componentType\":" + componentType + ",\"type\":\"" + type
+                + "\",\"count\":" + values.length / components + (normalized ? ",\"normalized\":true" : "") + "}");
+    }
+
+    int floats(String type, double... values) {
+        return accessor(Accessors.FLOAT, type, false, values);
+    }
+
+    static byte[] encode(int componentType, double... values) {
+        int size = componentType == Accessors.FLOAT || componentType == Accessors.UNSIGNED_INT ? 4
+                : componentType == Accessors.SHORT || componentType == Accessors.UNSIGNED_SHORT ? 2 : 1;
+        ByteBuffer b = ByteBuffer.allocate(values.length * size).order(ByteOrder.LITTLE_ENDIAN);
+        for (double v : values) {
+            switch (componentType) {
+                case Accessors.FLOAT:
+                    b.putFloat((float) v);
+                    break;
+                case Accessors.UNSIGNED_INT:
+                    b.putInt((int) (long) v);
+                    break;
+                case Accessors.SHORT:
+                case Accessors.UNSIGNED_SHORT:
+                    b.putShort((short) (long) v);
+                    break;
+                default:
+                    b.put((byte) (long) v);
+            }
+        }
+        return b.array();
+    }
+
+    static int components(String type) {
+        switch (type) {
+            case "SCALAR":
+                return 1;
+            case "VEC2":
+                return 2;
+            case "VEC3":
+                return 3;
+            case "MAT3":
+                return 9;
+            case "MAT4":
+                return 16;
+            default:
+                return 4;
+        }
+    }
+
+    /** The whole .gltf text: asset, buffer (data URI), views, accessors, then {@code rest}. */
+    String gltf(String rest) {
+        return document(rest, "\"uri\":\"data:application/octet-stream;base64,"
+                + Base64.getEncoder().encodeToString(paddedBin()) + "\",");
+    }
+
+    private String document(String rest, String uri) {
+        StringBuilder sb = new StringBuilder("{\"asset\":{\"version\":\"2.0\",\"generator\":\"GltfFixture\"}");
+        if (bin.size() > 0) {
+            sb.append(",\"buffers\":[{").append(uri).append("\"byteLength\":").append(paddedBin().length).append("}]");
+            sb.append(",\"bufferViews\":[").append(String.join(",", views)).append(']');
+        }
+        if (!accessors.isEmpty()) {
+            sb.append(",\"accessors\":[").append(String.join(",", accessors)).append(']');
+        }
+        if (!rest.isEmpty()) {
+            sb.append(',').append(rest);
+        }
+        return sb.append('}').toString();
+    }
+
+    private byte[] paddedBin() {
+        byte[] data = bin.toByteArray();
+        return java.util.Arrays.copyOf(data, (data.length + 3) / 4 * 4);
+    }
+
+    /** The same content as a .glb: the JSON chunk (space-padded) and the BIN chunk. */
+    byte[] glb(String rest) {
+        byte[] json = document(rest, "").getBytes(StandardCharsets.UTF_8);
+        int jsonLength = (json.length + 3) / 4 * 4;
+        byte[] data = paddedBin();
+        int total = 12 + 8 + jsonLength + (data.length > 0 ? 8 + data.length : 0);
+        ByteBuffer b = ByteBuffer.allocate(total).order(ByteOrder.LITTLE_ENDIAN);
+        b.putInt(0x46546C67).putInt(2).putInt(total);
+        b.putInt(jsonLength).putInt(0x4E4F534A).put(json);
+        for (int i = json.length; i < jsonLength; i++) {
+            b.put((byte) ' ');
+        }
+        if (data.length > 0) {
+            b.putInt(data.length).putInt(0x004E4942).put(data);
+        }
+        return b.array();
+    }
+
+    static Model read(String json) throws Exception {
+        return GltfImporter.read(new ByteArrayInputStream(json.getBytes(StandardCharsets.UTF_8)), "test.gltf", null);
+    }
+
+    static Model read(byte[] bytes, String name) throws Exception {
+        return GltfImporter.read(new ByteArrayInputStream(bytes), name, null);
+    }
+
+    /** A one-mesh document: the mesh's primitives JSON, one node drawing it, one scene. */
+    String singleMesh(String primitives) {
+        return gltf(String.format(Locale.ROOT, "\"meshes\":[{\"primitives\":[%s]}],\"nodes\":[{\"mesh\":0}],"
+                + "\"scenes\":[{\"nodes\":[0]}],\"scene\":0", primitives));
+    }
+}
