@@ -232,21 +232,22 @@ final class GltfDocumentChecks {
         int componentType = oneOf(accessor.get("componentType"), 0, BYTE, UNSIGNED_BYTE, SHORT, UNSIGNED_SHORT,
                 UNSIGNED_INT, FLOAT);
         long count = accessor.get("count").integer(1, Integer.MAX_VALUE);
+        if (accessor.get("normalized").bool(false) && (componentType == FLOAT || componentType == UNSIGNED_INT)) {
+            throw accessor.get("normalized").error("only byte and short components can be normalized");
+        }
+        // The checks that follow the accessor's references rely on these indices.
+        int view = ref(accessor, "bufferView", doc.bufferViews, "bufferViews");
+        JsonNode byteOffset = accessor.get("byteOffset");
+        long offset = byteOffset.integer(0, Integer.MAX_VALUE, 0);
+        if (view < 0 && !byteOffset.isMissing()) {
+            throw byteOffset.error("byteOffset needs a bufferView");
+        }
         String type = accessor.get("type").string();
         if (!Arrays.asList(TYPES).contains(type)) {
             // The schema leaves the list open (a later glTF may add types): an accessor of a type
             // we do not know is refused only by whatever uses it.
             doc.ctx.warn(accessor.get("type").path(), "unknown accessor type \"" + type + "\"; the accessor cannot be read");
             return;
-        }
-        if (accessor.get("normalized").bool(false) && (componentType == FLOAT || componentType == UNSIGNED_INT)) {
-            throw accessor.get("normalized").error("only byte and short components can be normalized");
-        }
-        int view = ref(accessor, "bufferView", doc.bufferViews, "bufferViews");
-        JsonNode byteOffset = accessor.get("byteOffset");
-        long offset = byteOffset.integer(0, Integer.MAX_VALUE, 0);
-        if (view < 0 && !byteOffset.isMissing()) {
-            throw byteOffset.error("byteOffset needs a bufferView");
         }
         for (String bound : new String[] {"min", "max"}) {
             JsonNode values = accessor.get(bound);
