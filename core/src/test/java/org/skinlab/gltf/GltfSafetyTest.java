@@ -247,6 +247,17 @@ class GltfSafetyTest {
     }
 
     @Test
+    void aLinkLeadingOutOfTheFolderIsRefused() throws Exception {
+        Path inner = Files.createDirectories(dir.resolve("inner"));
+        Files.write(dir.resolve("secret.bin"), new byte[16]);
+        Files.createSymbolicLink(inner.resolve("link.bin"), dir.resolve("secret.bin"));
+        String json = doc("{\"byteLength\":16,\"uri\":\"link.bin\"}", "");
+        GltfException e = assertThrows(GltfException.class, () -> GltfImporter.read(
+                new ByteArrayInputStream(json.getBytes(StandardCharsets.UTF_8)), "doc.gltf", inner.resolve("doc.gltf")));
+        assertEquals("/buffers/0/uri", e.location(), e::getMessage);
+    }
+
+    @Test
     void withoutALocationNoFileIsRead() {
         String json = doc("{\"byteLength\":16,\"uri\":\"x.bin\"}", "");
         GltfException e = assertThrows(GltfException.class, () -> GltfImporter.read(
