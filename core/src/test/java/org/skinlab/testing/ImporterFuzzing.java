@@ -74,9 +74,10 @@ public final class ImporterFuzzing {
             if (!refusal.isInstance(e)) {
                 throw e;
             }
-            if (e.getCause() instanceof RuntimeException) {
-                // The importer's safety net caught a crash: report the crash itself, so Jazzer
-                // tells different bugs apart by their stack traces.
+            if (e.getCause() instanceof RuntimeException || e.getCause() instanceof Error) {
+                // The importer's safety net caught a crash (the glTF importer's also catches
+                // StackOverflowError): report the crash itself, so Jazzer tells different bugs
+                // apart by their stack traces.
                 throw e.getCause();
             }
             String message = e.getMessage();
