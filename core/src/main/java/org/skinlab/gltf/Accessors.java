@@ -97,6 +97,7 @@ final class Accessors {
                 throw a.get("componentType").error("integer data must be unsigned byte, short or int, not normalized");
             }
             Layout layout = layout(accessor);
+            ctx.charge(layout.values(), a.path());
             cached = new int[layout.values()];
             if (layout.view >= 0) {
                 ByteBuffer b = buffers.view(layout.view);
@@ -127,6 +128,7 @@ final class Accessors {
             throw a.get("normalized").error("only byte and short components can be normalized");
         }
         Layout layout = layout(accessor);
+        ctx.charge(layout.values(), a.path());
         float[] out = new float[layout.values()];
         if (layout.view >= 0) {
             ByteBuffer b = buffers.view(layout.view);
@@ -217,7 +219,7 @@ final class Accessors {
                     + componentSize);
         }
         long end = offset + (long) stride * (count - 1) + elementSize;
-        int viewLength = buffers.view(view).capacity();
+        int viewLength = buffers.viewLength(view);
         if (end > viewLength) {
             throw a.get("count").error(count + " elements of " + elementSize + " bytes (stride " + stride + ") from offset "
                     + offset + " need " + end + " bytes but buffer view " + view + " has " + viewLength);

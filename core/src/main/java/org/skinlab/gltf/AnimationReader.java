@@ -111,11 +111,17 @@ final class AnimationReader {
         int input = accessors.resolve(inputRef);
         accessors.expect(input, inputRef.path(), "SCALAR", "5126");
         float[] times = accessors.floats(input);
+        int repeated = 0;
         for (int k = 0; k < times.length; k++) {
-            if (times[k] < 0f || k > 0 && times[k] <= times[k - 1]) {
+            if (times[k] < 0f || k > 0 && times[k] < times[k - 1]) {
                 throw accessors.node(input).error("key time " + k + " is " + times[k]
                         + ": times must be non-negative and increase");
             }
+            repeated += k > 0 && times[k] == times[k - 1] ? 1 : 0;
+        }
+        if (repeated > 0) {
+            // The model reads a repeated time as a jump; glTF asks for strictly increasing times.
+            ctx.warn(inputRef.path(), repeated + " key times repeat the one before; read as jumps");
         }
         JsonNode outputRef = sampler.get("output");
         int output = accessors.resolve(outputRef);

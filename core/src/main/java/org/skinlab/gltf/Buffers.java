@@ -8,26 +8,40 @@ import java.nio.ByteOrder;
  * once: a buffer's data (GLB BIN chunk, data URI or file) must hold its declared
  * {@code byteLength}, at most {@link GltfLimits#MAX_FILE_BYTES}; a view's range must lie inside
  * its buffer. Views are little-endian {@link ByteBuffer}s over the shared bytes (no copies).
+ *
+ * <p>A buffer whose data cannot be had (no uri outside a .glb's first buffer, a refused or
+ * missing URI) refuses the file only when something reads it: an unused placeholder buffer is
+ * valid glTF. Nothing is ever fetched from outside the document's folder either way.
  */
 final class Buffers {
     private final GltfContext ctx;
     private final JsonNode views;
     private final ByteBuffer[] buffers;
+    private final GltfException[] bufferErrors;
     private final int[] viewStrides;
     private final ByteBuffer[] viewData;
+    private final GltfException[] viewErrors;
 
     Buffers(GltfContext ctx, JsonNode root, GlbContainer container, UriResolver uris) throws GltfException {
         this.ctx = ctx;
         JsonNode list = root.get("buffers").arrayOrMissing();
         buffers = new ByteBuffer[list.size()];
+        bufferErrors = new GltfException[buffers.length];
+        int[] declared = new int[buffers.length];
         for (int i = 0; i < buffers.length; i++) {
-            buffers[i] = load(list.get(i), i, container, uris);
+            declared[i] = list.get(i).get("byteLength").integer(1, GltfLimits.MAX_FILE_BYTES);
+            try {
+                buffers[i] = load(list.get(i), i, container, uris);
+            } catch (GltfException e) {
+                bufferErrors[i] = e;
+            }
         }
         views = root.get("bufferViews").arrayOrMissing();
         viewStrides = new int[views.size()];
         viewData = new ByteBuffer[views.size()];
+        viewErrors = new GltfException[views.size()];
         for (int i = 0; i < viewData.length; i++) {
-            viewData[i] = view(views.get(i), i);
+            viewData[i] = view(views.get(i), i, declared);
         }
     }
 
@@ -51,6 +65,7 @@ final class Buffers {
             data = ByteBuffer.wrap(uris.decodeData(uri, uriNode.path(), GltfLimits.MAX_FILE_BYTES));
         } else {
             data = ByteBuffer.wrap(uris.readFile(uri, uriNode.path(), GltfLimits.MAX_FILE_BYTES));
+            ctx.addDocumentBytes(data.capacity());
         }
         if (data.remaining() < length) {
             throw ctx.error(lengthNode.path(), "byteLength " + length + " but the data has " + data.remaining()
@@ -60,7 +75,7 @@ final class Buffers {
         return data.slice().order(ByteOrder.LITTLE_ENDIAN);
     }
 
-    private ByteBuffer view(JsonNode view, int index) throws GltfException {
+    private ByteBuffer view(JsonNode view, int index, int[] declared) throws GltfException {
         int buffer = view.get("buffer").index(buffers.length, "buffers");
         long offset = view.get("byteOffset").integer(0, Integer.MAX_VALUE, 0);
         long length = view.get("byteLength").integer(1, Integer.MAX_VALUE);
@@ -69,10 +84,14 @@ final class Buffers {
         if (viewStrides[index] % 4 != 0) {
             throw stride.error("byteStride " + viewStrides[index] + " is not a multiple of 4");
         }
-        int bufferLength = buffers[buffer].capacity();
+        int bufferLength = declared[buffer];
         if (offset + length > bufferLength) {
             throw view.error("bytes [" + offset + ", " + (offset + length) + ") lie outside buffer " + buffer + " of "
                     + bufferLength + " bytes");
+        }
+        if (buffers[buffer] == null) {
+            viewErrors[index] = bufferErrors[buffer];
+            return null;
         }
         ByteBuffer b = buffers[buffer].duplicate();
         b.position((int) offset).limit((int) (offset + length));
@@ -83,9 +102,17 @@ final class Buffers {
         return viewData.length;
     }
 
-    /** A view's bytes (a read-only duplicate; absolute gets only). */
-    ByteBuffer view(int index) {
+    /** A view's bytes (a duplicate; absolute gets only); refused when its buffer's data could not be had. */
+    ByteBuffer view(int index) throws GltfException {
+        if (viewErrors[index] != null) {
+            throw viewErrors[index];
+        }
         return viewData[index].duplicate().order(ByteOrder.LITTLE_ENDIAN);
+    }
+
+    /** A view's declared byteLength. */
+    int viewLength(int index) throws GltfException {
+        return views.get(index).get("byteLength").integer(1, Integer.MAX_VALUE);
     }
 
     /** The view's byteStride, or 0 when it declares none. */
@@ -99,7 +126,7 @@ final class Buffers {
     }
 
     /** A copy of a view's bytes (embedded images). */
-    byte[] copy(int index) {
+    byte[] copy(int index) throws GltfException {
         ByteBuffer b = view(index);
         byte[] out = new byte[b.remaining()];
         b.get(out);

@@ -74,16 +74,24 @@ final class GlbContainer {
 
     private static GlbContainer glb(GltfContext ctx, byte[] bytes) throws GltfException {
         ByteBuffer b = ByteBuffer.wrap(bytes).order(ByteOrder.LITTLE_ENDIAN);
-        if (bytes.length < 20) {
-            throw ctx.error(HEADER, "the GLB file has " + bytes.length + " bytes, fewer than a header and a chunk header");
+        if (bytes.length < 12) {
+            throw ctx.error(HEADER, "the GLB file has " + bytes.length + " bytes, fewer than its 12-byte header");
         }
         int version = b.getInt(4);
         if (version != 2) {
             throw ctx.error(HEADER, "GLB version " + Integer.toUnsignedString(version) + " is not 2");
         }
+        if (bytes.length < 20) {
+            throw ctx.error(HEADER, "the GLB file has " + bytes.length + " bytes, fewer than a header and a chunk header");
+        }
         long length = Integer.toUnsignedLong(b.getInt(8));
-        if (length != bytes.length) {
+        if (length > bytes.length || length < 20) {
             throw ctx.error(HEADER, "the header says " + length + " bytes but the file has " + bytes.length);
+        }
+        if (length < bytes.length) {
+            ctx.warn(HEADER, (bytes.length - length) + " bytes after the " + length + " the header declares; ignored");
+            bytes = Arrays.copyOf(bytes, (int) length);
+            b = ByteBuffer.wrap(bytes).order(ByteOrder.LITTLE_ENDIAN);
         }
         long jsonLength = Integer.toUnsignedLong(b.getInt(12));
         if (b.getInt(16) != CHUNK_JSON) {

@@ -54,6 +54,7 @@ public final class GltfImporter {
     public static Model read(InputStream in, String name, Path location) throws IOException, GltfException {
         GltfContext ctx = new GltfContext(name);
         GlbContainer container = GlbContainer.read(ctx, in);
+        ctx.addDocumentBytes(container.bytes.length);
         try {
             return build(ctx, container, location);
         } catch (RuntimeException | StackOverflowError e) {
@@ -77,7 +78,7 @@ public final class GltfImporter {
         Buffers buffers = new Buffers(ctx, root, container, uris);
         Accessors accessors = new Accessors(ctx, root, buffers);
         GltfDataChecks.check(ctx, root, accessors);
-        MaterialReader materials = new MaterialReader(ctx, uris, root);
+        MaterialReader materials = new MaterialReader(ctx, uris, buffers, root);
 
         JsonNode meshList = root.get("meshes").arrayOrMissing();
         MeshReader meshReader = new MeshReader(ctx, accessors, quantized, materials.materials().size());

@@ -12,6 +12,16 @@ final class GltfLimits {
     /** Most triangles one mesh may have (strips and fans of huge non-indexed primitives). */
     static final long MAX_TRIANGLES = 1L << 25;
 
+    /** Values (4 bytes each) the readers may allocate per byte of document and buffer data... */
+    static final long BUDGET_PER_BYTE = 16;
+    /** ... plus this many, so that small documents with sparse data still load. */
+    static final long BUDGET_BASE = 1L << 24;
+
+    /** The allocation budget, in 4-byte values, for a document of {@code bytes} bytes of data. */
+    static long budget(long bytes) {
+        return BUDGET_BASE + BUDGET_PER_BYTE * bytes;
+    }
+
     private GltfLimits() {
     }
 }

@@ -135,6 +135,12 @@ final class InstanceBuilder {
         String key = data.index + Arrays.toString(weights);
         Morph morph = morphs.get(key);
         if (morph == null) {
+            Mesh base = data.mesh;
+            long meshValues = 6L * base.positionCount() + 3L * base.triangleCount()
+                    + (base.hasNormals() ? 3L : 0) * base.vertexCount() + (base.hasColors() ? 4L : 0) * base.vertexCount()
+                    + 2L * base.texCoordSetCount() * base.vertexCount();
+            // Each target is a mesh (the base's arrays copied) and the morph keeps its positions.
+            ctx.charge((data.targetCount() + 1) * (meshValues + 3L * base.positionCount()), node.path());
             String id = weights == data.weights ? data.mesh.id() + "/weights" : node.path() + "/weights";
             List<Mesh> targets = new ArrayList<>();
             for (int t = 0; t < data.targetCount(); t++) {
@@ -180,17 +186,17 @@ final class InstanceBuilder {
     private int[] jointNodes(int s) throws GltfException {
         JsonNode joints = skins.get(s).get("joints");
         int[] result = new int[joints.size()];
+        boolean[] listed = new boolean[nodes.size()];
         for (int j = 0; j < result.length; j++) {
             int g = joints.get(j).index(nodes.size(), "nodes");
             result[j] = scene.modelIndex[g];
             if (result[j] < 0) {
                 throw joints.get(j).error("joint node " + g + " is not in the scene");
             }
-            for (int k = 0; k < j; k++) {
-                if (result[k] == result[j]) {
-                    throw joints.get(j).error("node " + g + " is listed twice");
-                }
+            if (listed[g]) {
+                throw joints.get(j).error("node " + g + " is listed twice");
             }
+            listed[g] = true;
         }
         return result;
     }
@@ -239,11 +245,12 @@ final class InstanceBuilder {
 
     private List<MaterialBinding> bindings(MeshData data, Mesh drawn) {
         List<MaterialBinding> result = new ArrayList<>();
+        java.util.Set<Integer> bound = new java.util.HashSet<>();
         for (int m : data.partMaterials) {
-            String symbol = m < 0 ? null : GltfImporter.materialSymbol(m);
-            if (m < 0 || result.stream().anyMatch(b -> b.symbol().equals(symbol))) {
+            if (m < 0 || !bound.add(m)) {
                 continue;
             }
+            String symbol = GltfImporter.materialSymbol(m);
             Material material = materials.materials().get(m);
             int texCoord = materials.baseTexCoord(m);
             int set = material.baseTexture() == null || texCoord < 0 ? -1 : drawn.texCoordSetIndex(texCoord);

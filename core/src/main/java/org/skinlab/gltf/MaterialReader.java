@@ -7,6 +7,7 @@ import java.util.List;
 import org.skinlab.model.Image;
 import org.skinlab.model.Material;
 import org.skinlab.model.Texture;
+import org.skinlab.model.TextureTransform;
 
 /**
  * Reads {@code /materials}, {@code /textures} and {@code /images}. A metallic-roughness material
@@ -16,21 +17,26 @@ import org.skinlab.model.Texture;
  * Opacity is the base colour's alpha for {@code alphaMode} BLEND, else 1. A texture's
  * {@link Texture#texcoord()} is {@code TEXCOORD_n} for its {@code texCoord} n.
  *
- * <p>Images are never decoded here: a file image becomes its path inside the document's folder
- * (checked like buffer URIs).
+ * <p>{@code alphaMode}, {@code alphaCutoff} and {@code doubleSided} are carried as they are;
+ * {@code KHR_texture_transform} on a texture becomes its {@link TextureTransform} (its
+ * {@code texCoord} replaces the texture's). Images are never decoded here: a data URI or buffer
+ * view image keeps its encoded bytes and media type, a file image becomes its path inside the
+ * document's folder (checked like buffer URIs, not read).
  */
 final class MaterialReader {
     private final GltfContext ctx;
     private final UriResolver uris;
+    private final Buffers buffers;
     private final List<Image> images = new ArrayList<>();
     private final JsonNode textures;
     private final List<Material> materials = new ArrayList<>();
     /** Per material, the texCoord number its base colour texture uses, or -1 without one. */
     private final List<Integer> baseTexCoords = new ArrayList<>();
 
-    MaterialReader(GltfContext ctx, UriResolver uris, JsonNode root) throws GltfException {
+    MaterialReader(GltfContext ctx, UriResolver uris, Buffers buffers, JsonNode root) throws GltfException {
         this.ctx = ctx;
         this.uris = uris;
+        this.buffers = buffers;
         JsonNode imageList = root.get("images").arrayOrMissing();
         for (int i = 0; i < imageList.size(); i++) {
             images.add(image(imageList.get(i), i));
@@ -57,17 +63,43 @@ final class MaterialReader {
 
     private Image image(JsonNode image, int index) throws GltfException {
         String name = image.get("name").string(null);
-        String uri = image.get("uri").string(null);
+        JsonNode uriNode = image.get("uri");
+        String uri = uriNode.string(null);
+        String mimeType = image.get("mimeType").string(null);
         String id = "/images/" + index;
         if (uri == null) {
-            image.get("bufferView").integer(0, Integer.MAX_VALUE);
-            return new Image(id, name, null, null);
+            int view = image.get("bufferView").index(buffers.viewCount(), "bufferViews");
+            if (mimeType == null) {
+                throw image.error("an image in a buffer view needs a mimeType");
+            }
+            byte[] bytes;
+            try {
+                bytes = buffers.copy(view);
+            } catch (GltfException e) {
+                // A picture is not needed to pose the model: drawn untextured, as a missing file is.
+                ctx.warn(image.path(), "its buffer view's data cannot be had (" + e.getMessage() + ")");
+                bytes = null;
+            }
+            return new Image(id, name, null, null, checked(mimeType, image), bytes);
+        }
+        if (image.has("bufferView")) {
+            throw image.error("an image has either a uri or a bufferView, not both");
         }
         if (UriResolver.isDataUri(uri)) {
-            return new Image(id, name, null, null);
+            String type = mimeType != null ? mimeType : UriResolver.dataMediaType(uri);
+            return new Image(id, name, null, null, checked(type, image),
+                    uris.decodeData(uri, uriNode.path(), GltfLimits.MAX_FILE_BYTES));
         }
-        Path file = uris.file(uri, image.get("uri").path());
-        return new Image(id, name, uri, file);
+        Path file = uris.file(uri, uriNode.path());
+        return new Image(id, name, uri, file, mimeType, null);
+    }
+
+    /** The media type; one that is neither PNG nor JPEG is kept with a warning (renderers say they cannot show it). */
+    private String checked(String mimeType, JsonNode image) {
+        if (!mimeType.equals("image/png") && !mimeType.equals("image/jpeg")) {
+            ctx.warn(image.path(), "image type \"" + mimeType + "\" is neither PNG nor JPEG");
+        }
+        return mimeType;
     }
 
     private Material material(JsonNode material, int index) throws GltfException {
@@ -75,37 +107,59 @@ final class MaterialReader {
         Material.Builder b = new Material.Builder(GltfImporter.materialSymbol(index), name != null ? name
                 : GltfImporter.materialSymbol(index)).shading(Material.Shading.LAMBERT);
         JsonNode pbr = material.get("pbrMetallicRoughness").objectOrMissing();
-        float[] base = pbr.get("baseColorFactor").floats(4, new float[] {1, 1, 1, 1});
-        b.diffuse(base);
+        float[] baseColor = pbr.get("baseColorFactor").floats(4, new float[] {1, 1, 1, 1});
+        b.diffuse(baseColor);
         JsonNode baseTexture = pbr.get("baseColorTexture");
-        int texCoord = -1;
-        if (!baseTexture.isMissing()) {
-            texCoord = baseTexture.get("texCoord").integer(0, 31, 0);
-            b.diffuseTexture(texture(baseTexture, texCoord));
-        }
-        baseTexCoords.add(texCoord);
+        Texture base = baseTexture.isMissing() ? null : texture(baseTexture);
+        b.diffuseTexture(base);
+        baseTexCoords.add(base == null ? -1 : texCoordNumber(base));
         float[] emissive = material.get("emissiveFactor").floats(3, new float[3]);
         b.emission(new float[] {emissive[0], emissive[1], emissive[2], 1f});
         JsonNode emissiveTexture = material.get("emissiveTexture");
         if (!emissiveTexture.isMissing()) {
-            b.emissionTexture(texture(emissiveTexture, emissiveTexture.get("texCoord").integer(0, 31, 0)));
+            b.emissionTexture(texture(emissiveTexture));
         }
-        String alphaMode = material.get("alphaMode").string("OPAQUE");
-        if (!alphaMode.equals("OPAQUE") && !alphaMode.equals("MASK") && !alphaMode.equals("BLEND")) {
-            throw material.get("alphaMode").error("unknown alphaMode \"" + alphaMode + "\"");
+        JsonNode alphaNode = material.get("alphaMode");
+        Material.AlphaMode alphaMode;
+        try {
+            alphaMode = Material.AlphaMode.valueOf(alphaNode.string("OPAQUE"));
+        } catch (IllegalArgumentException e) {
+            throw alphaNode.error("unknown alphaMode \"" + alphaNode.string() + "\"");
         }
-        b.opacity(alphaMode.equals("BLEND") ? Math.max(0f, Math.min(1f, base[3])) : 1f);
+        b.alphaMode(alphaMode);
+        double cutoff = material.get("alphaCutoff").number(0.5);
+        if (cutoff < 0) {
+            throw material.get("alphaCutoff").error("alphaCutoff must not be negative");
+        }
+        b.alphaCutoff((float) cutoff);
+        b.doubleSided(material.get("doubleSided").bool(false));
+        b.opacity(alphaMode == Material.AlphaMode.BLEND ? Math.max(0f, Math.min(1f, baseColor[3])) : 1f);
         return b.build();
     }
 
-    private Texture texture(JsonNode info, int texCoord) throws GltfException {
+    private static int texCoordNumber(Texture t) {
+        return Integer.parseInt(t.texcoord().substring("TEXCOORD_".length()));
+    }
+
+    /** A textureInfo: its texture's image, texCoord set and KHR_texture_transform. */
+    private Texture texture(JsonNode info) throws GltfException {
         int t = info.get("index").index(textures.size(), "textures");
+        int texCoord = info.get("texCoord").integer(0, 31, 0);
         JsonNode source = textures.get(t).get("source");
         if (source.isMissing()) {
             ctx.warn(textures.get(t).path(), "no source image (an extension's image format?); drawn untextured");
             return null;
         }
         Image image = images.get(source.index(images.size(), "images"));
-        return new Texture(image, "TEXCOORD_" + texCoord);
+        JsonNode transform = info.get("extensions").objectOrMissing().get(Extensions.TEXTURE_TRANSFORM);
+        if (transform.isMissing()) {
+            return new Texture(image, "TEXCOORD_" + texCoord);
+        }
+        float[] offset = transform.get("offset").floats(2, new float[] {0, 0});
+        float[] scale = transform.get("scale").floats(2, new float[] {1, 1});
+        float rotation = (float) transform.get("rotation").number(0);
+        texCoord = transform.get("texCoord").integer(0, 31, texCoord);
+        return new Texture(image, "TEXCOORD_" + texCoord,
+                TextureTransform.fromGltf(offset[0], offset[1], rotation, scale[0], scale[1]));
     }
 }

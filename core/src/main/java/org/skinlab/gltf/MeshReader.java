@@ -21,7 +21,8 @@ import org.skinlab.model.MeshPart;
  * the specification orders them); points and lines are skipped with a warning, as is a primitive
  * without POSITION. A primitive without NORMAL gets no normals when no primitive of the mesh has
  * them (renderers then use face normals, as for COLLADA), else zeros with a warning; missing
- * TEXCOORD sets are zeros and a missing COLOR_0 is white, with a warning.
+ * TEXCOORD sets are zeros and a missing COLOR_0 is white, with a warning. Texture coordinates are
+ * turned into the model's convention, v up from the image's bottom: v = 1 - v_glTF.
  */
 final class MeshReader {
     private static final String[] TRIANGLE_MODES = {"points", "lines", "line_loop", "line_strip", "triangles",
@@ -101,6 +102,9 @@ final class MeshReader {
             }
         }
         List<Block> blockList = new ArrayList<>(blocks.values());
+        // Positions, normals, colours, two texture coordinate sets, the position map and the
+        // mesh's own copies of them; further sets and morph targets are charged as they come.
+        ctx.charge(2L * (3 + 1 + 3 + 4 + 2 * 2 + 2) * positions, meshNode.path());
         Vertices v = new Vertices(positions);
         for (Block b : blockList) {
             v.read(b);
@@ -130,6 +134,7 @@ final class MeshReader {
         float[][] targetPositions = new float[Math.max(0, targetCount)][];
         float[][] targetNormals = new float[targetPositions.length][];
         for (int t = 0; t < targetPositions.length; t++) {
+            ctx.charge(6L * positions, primitives.path());
             targetPositions[t] = new float[3 * positions];
             for (Block b : blockList) {
                 readTarget(b, t, targetPositions, targetNormals, positions);
@@ -200,7 +205,12 @@ final class MeshReader {
                 }
             }
             for (int set : sets) {
-                copy(a.get("TEXCOORD_" + set), "VEC2", b, texCoordSet(set), 2, texCoordFormats());
+                float[] uv = texCoordSet(set);
+                copy(a.get("TEXCOORD_" + set), "VEC2", b, uv, 2, texCoordFormats());
+                // glTF's v runs down from the image's top; the model's (COLLADA's) runs up from its bottom.
+                for (int i = 2 * b.start + 1; i < 2 * (b.start + b.count); i += 2) {
+                    uv[i] = 1f - uv[i];
+                }
             }
         }
 
@@ -221,10 +231,13 @@ final class MeshReader {
             }
         }
 
-        private float[] texCoordSet(int number) {
+        private float[] texCoordSet(int number) throws GltfException {
             int i = texCoordNumbers == null ? -1 : Arrays.binarySearch(texCoordNumbers, number);
             if (i >= 0) {
                 return texCoords.get(i);
+            }
+            if (texCoords.size() >= 2) {
+                ctx.charge(4L * total, "/meshes");
             }
             int at = texCoordNumbers == null ? 0 : -i - 1;
             int[] numbers = new int[texCoords.size() + 1];
@@ -335,6 +348,7 @@ final class MeshReader {
         if (out.size() / 3 + (long) triangles > GltfLimits.MAX_TRIANGLES) {
             throw primitive.error("more than " + GltfLimits.MAX_TRIANGLES + " triangles in the mesh");
         }
+        ctx.charge(2L * 3 * triangles, primitive.path()); // the list and the mesh's copy
         for (int i = 0; i < triangles; i++) {
             int a;
             int b;

@@ -97,13 +97,20 @@ final class SceneReader {
                 parent[child] = n;
             }
         }
+        // With one parent each, a cycle is a path upwards that comes back to itself: walk up from
+        // each node until a root or a node already known to reach one (each node is walked once).
+        byte[] state = new byte[parent.length]; // 0 unknown, 1 on the current walk, 2 reaches a root
         for (int n = 0; n < parent.length; n++) {
-            // With one parent each, a path upwards that is longer than the node count is a cycle.
-            int steps = 0;
-            for (int p = parent[n]; p >= 0; p = parent[p]) {
-                if (++steps > parent.length || p == n) {
-                    throw nodes.get(n).get("children").error("node " + n + " is its own ancestor (a cycle)");
-                }
+            int p = n;
+            while (p >= 0 && state[p] == 0) {
+                state[p] = 1;
+                p = parent[p];
+            }
+            if (p >= 0 && state[p] == 1) {
+                throw nodes.get(p).get("children").error("node " + p + " is its own ancestor (a cycle)");
+            }
+            for (int q = n; q >= 0 && state[q] == 1; q = parent[q]) {
+                state[q] = 2;
             }
         }
         return parent;
@@ -130,17 +137,17 @@ final class SceneReader {
         int s = sceneNode.isMissing() ? 0 : sceneNode.index(scenes.size(), "scenes");
         JsonNode list = scenes.get(s).get("nodes").arrayOrMissing();
         int[] roots = new int[list.size()];
+        boolean[] listed = new boolean[parent.length];
         for (int i = 0; i < roots.length; i++) {
             roots[i] = list.get(i).index(parent.length, "nodes");
             if (parent[roots[i]] >= 0) {
                 throw list.get(i).error("node " + roots[i] + " is a child of node " + parent[roots[i]]
                         + "; a scene lists root nodes only");
             }
-            for (int k = 0; k < i; k++) {
-                if (roots[k] == roots[i]) {
-                    throw list.get(i).error("node " + roots[i] + " is listed twice");
-                }
+            if (listed[roots[i]]) {
+                throw list.get(i).error("node " + roots[i] + " is listed twice");
             }
+            listed[roots[i]] = true;
         }
         return roots;
     }

@@ -9,7 +9,7 @@ import java.util.Base64;
 import java.util.Locale;
 
 /**
- * What a glTF {@code uri} may name: a base64 {@code data:} URI, or a file in the document's own
+ * What a glTF {@code uri} may name: a {@code data:} URI (base64 or percent-encoded), or a file in the document's own
  * folder (or below it), given relative to the document. Everything else is refused with the
  * URI's JSON path: other schemes ({@code http:}, {@code file:}), absolute paths, drive letters,
  * and {@code ..} segments that climb out of the folder. Without a location (a stream read without
@@ -41,8 +41,15 @@ final class UriResolver {
     /** The bytes of a base64 data URI, refused when larger than {@code maxBytes}. */
     byte[] decodeData(String uri, String path, long maxBytes) throws GltfException {
         int comma = uri.indexOf(',');
-        if (comma < 0 || !uri.substring(0, comma).toLowerCase(Locale.ROOT).endsWith(";base64")) {
-            throw ctx.error(path, "a data URI that is not base64 (\"" + abbreviate(uri) + "\")");
+        if (comma < 0) {
+            throw ctx.error(path, "a data URI without a comma (\"" + abbreviate(uri) + "\")");
+        }
+        if (!uri.substring(0, comma).toLowerCase(Locale.ROOT).endsWith(";base64")) {
+            // RFC 2397's other form: the data percent-encoded (never longer than the text).
+            if (uri.length() - comma - 1 > maxBytes) {
+                throw ctx.error(path, "the data URI holds more than " + maxBytes + " bytes");
+            }
+            return percentDecodeBytes(uri.substring(comma + 1), uri, path);
         }
         long decoded = (uri.length() - comma - 1) / 4L * 3;
         if (decoded > maxBytes + 3) {
@@ -120,6 +127,15 @@ final class UriResolver {
         if (s.indexOf('%') < 0) {
             return s;
         }
+        String decoded = new String(percentDecodeBytes(s, uri, path), StandardCharsets.UTF_8);
+        if (decoded.indexOf('\0') >= 0) {
+            throw ctx.error(path, "the URI \"" + abbreviate(uri) + "\" decodes to a NUL character");
+        }
+        return decoded;
+    }
+
+    /** The bytes of text with %XX escapes (other characters as UTF-8). */
+    private byte[] percentDecodeBytes(String s, String uri, String path) throws GltfException {
         ByteArrayOutputStream out = new ByteArrayOutputStream(s.length());
         for (int i = 0; i < s.length(); i++) {
             char c = s.charAt(i);
@@ -136,11 +152,7 @@ final class UriResolver {
                 out.write(b, 0, b.length);
             }
         }
-        String decoded = new String(out.toByteArray(), StandardCharsets.UTF_8);
-        if (decoded.indexOf('\0') >= 0) {
-            throw ctx.error(path, "the URI \"" + abbreviate(uri) + "\" decodes to a NUL character");
-        }
-        return decoded;
+        return out.toByteArray();
     }
 
     private static int indexOfAny(String s, String chars) {

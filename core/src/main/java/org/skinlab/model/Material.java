@@ -12,6 +12,15 @@ package org.skinlab.model;
  * 1 when the effect gives neither.
  */
 public final class Material {
+    /**
+     * How a renderer treats the base colour's alpha (glTF's {@code alphaMode}): OPAQUE ignores it,
+     * MASK draws a fragment only where alpha reaches {@link #alphaCutoff()}, BLEND blends with
+     * {@link #opacity()}. COLLADA materials are BLEND (their opacity is blended as before).
+     */
+    public enum AlphaMode {
+        OPAQUE, MASK, BLEND
+    }
+
     /** The {@code profile_COMMON} shading models. */
     public enum Shading {
         /** Unlit: the emission colour only. */
@@ -36,6 +45,9 @@ public final class Material {
     private final float[] specular;
     private final float shininess;
     private final float opacity;
+    private final AlphaMode alphaMode;
+    private final float alphaCutoff;
+    private final boolean doubleSided;
 
     private Material(Builder b) {
         this.id = b.id;
@@ -49,6 +61,9 @@ public final class Material {
         this.specular = copy(b.specular);
         this.shininess = b.shininess;
         this.opacity = b.opacity;
+        this.alphaMode = b.alphaMode;
+        this.alphaCutoff = b.alphaCutoff;
+        this.doubleSided = b.doubleSided;
     }
 
     private static float[] copy(float[] rgba) {
@@ -120,6 +135,24 @@ public final class Material {
         return opacity;
     }
 
+    /** How the base colour's alpha is used (BLEND unless the file says otherwise). */
+    public AlphaMode alphaMode() {
+        return alphaMode;
+    }
+
+    /** The alpha below which {@link AlphaMode#MASK} drops a fragment (0.5 unless the file says otherwise). */
+    public float alphaCutoff() {
+        return alphaCutoff;
+    }
+
+    /**
+     * True when both faces are drawn lit (COLLADA has no such flag: true, as renderers drew it so
+     * far); false when back faces are to be culled (glTF's default).
+     */
+    public boolean doubleSided() {
+        return doubleSided;
+    }
+
     @Override
     public String toString() {
         return "Material[" + name + ", " + shading + (diffuseTexture != null ? ", texture " + diffuseTexture.image().id()
@@ -139,6 +172,9 @@ public final class Material {
         private float[] specular;
         private float shininess;
         private float opacity = 1f;
+        private AlphaMode alphaMode = AlphaMode.BLEND;
+        private float alphaCutoff = 0.5f;
+        private boolean doubleSided = true;
 
         public Builder(String id, String name) {
             this.id = id;
@@ -190,6 +226,27 @@ public final class Material {
                 throw new IllegalArgumentException("opacity " + o + " is not in [0, 1]");
             }
             this.opacity = o;
+            return this;
+        }
+
+        public Builder alphaMode(AlphaMode mode) {
+            if (mode == null) {
+                throw new IllegalArgumentException("alpha mode is null");
+            }
+            this.alphaMode = mode;
+            return this;
+        }
+
+        public Builder alphaCutoff(float cutoff) {
+            if (!(cutoff >= 0f) || Float.isInfinite(cutoff)) {
+                throw new IllegalArgumentException("alpha cutoff " + cutoff + " is not a finite number >= 0");
+            }
+            this.alphaCutoff = cutoff;
+            return this;
+        }
+
+        public Builder doubleSided(boolean both) {
+            this.doubleSided = both;
             return this;
         }
 

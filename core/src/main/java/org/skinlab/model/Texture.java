@@ -1,12 +1,25 @@
 package org.skinlab.model;
 
 /**
- * A texture an effect samples: the image, and the name the effect gives the texture coordinates
- * it uses ({@code <texture texcoord="UVSET0">}), which a {@link MaterialBinding} maps to one of
- * the mesh's texture coordinate sets.
+ * A texture an effect samples: the image, the name the effect gives the texture coordinates it
+ * uses ({@code <texture texcoord="UVSET0">}; glTF: {@code TEXCOORD_n}), which a
+ * {@link MaterialBinding} maps to one of the mesh's texture coordinate sets, and the transform
+ * applied to those coordinates ({@link TextureTransform#IDENTITY} unless glTF's
+ * KHR_texture_transform gives one).
  *
- * @param image    the image
- * @param texcoord the effect's texture coordinate name, or null
+ * @param image     the image
+ * @param texcoord  the effect's texture coordinate name, or null
+ * @param transform the texture coordinate transform, never null
  */
-public record Texture(Image image, String texcoord) {
+public record Texture(Image image, String texcoord, TextureTransform transform) {
+    public Texture {
+        if (transform == null) {
+            throw new IllegalArgumentException("a texture's transform is never null (use IDENTITY)");
+        }
+    }
+
+    /** A texture without a coordinate transform. */
+    public Texture(Image image, String texcoord) {
+        this(image, texcoord, TextureTransform.IDENTITY);
+    }
 }

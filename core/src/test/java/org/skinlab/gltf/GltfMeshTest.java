@@ -79,7 +79,8 @@ class GltfMeshTest {
         assertArrayEquals(new float[] {1, 0, 0, 1, 0, 1, 0, 1, 0, 0, 0.2f, 1}, mesh.colors(), 1e-7f);
         assertEquals(2, mesh.texCoordSetCount());
         assertEquals(1, mesh.texCoordSetNumber(1));
-        assertArrayEquals(new float[] {0, 1, 1, 1, 0, 0}, mesh.texCoords(1));
+        // (0,1) (1,1) (0,0) in glTF's v-down convention are (0,0) (1,0) (0,1) in the model's v-up one.
+        assertArrayEquals(new float[] {0, 0, 1, 0, 0, 1}, mesh.texCoords(1));
     }
 
     @Test

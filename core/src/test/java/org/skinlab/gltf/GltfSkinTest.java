@@ -60,6 +60,42 @@ class GltfSkinTest {
     }
 
     @Test
+    void theSkinnedNodesTransformIsIgnoredButAStaticNodesIsNot() throws Exception {
+        String json = twoBoneSkin(new GltfFixture(), ",\"inverseBindMatrices\":3", "")
+                .replace("{\"name\":\"body\"", "{\"name\":\"static\",\"mesh\":0,\"translation\":[100,0,0]},"
+                        + "{\"name\":\"body\"")
+                .replace("\"scenes\":[{\"nodes\":[2,0]}]", "\"scenes\":[{\"nodes\":[3,2,0]}]");
+        Model model = GltfFixture.read(json);
+        SkinnedModel skinned = SkinnedModel.of(model);
+        skinned.pose(0f, RotationInterpolation.SLERP);
+        float[] out = new float[9];
+        skinned.skin(0, SkinningMethod.LBS, out, new float[9]);
+        assertArrayEquals(new float[] {0, 0, 0, -1, 1, 0, 0.5f, 1.5f, 0}, out, EPS, "body, skinned: not moved");
+        skinned.skin(1, SkinningMethod.LBS, out, new float[9]);
+        assertArrayEquals(new float[] {100, 0, 0, 100, 2, 0, 101, 1, 0}, out, EPS, "the same mesh static: moved");
+    }
+
+    @Test
+    void everyJointsAndWeightsSetIsRead() throws Exception {
+        GltfFixture f = new GltfFixture();
+        f.floats("VEC3", 0, 0, 0, 0, 2, 0, 1, 1, 0);
+        f.accessor(Accessors.UNSIGNED_SHORT, "VEC4", false, 0, 1, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0); // 1 JOINTS_0
+        f.accessor(Accessors.UNSIGNED_BYTE, "VEC4", true, 51, 51, 0, 0, 255, 0, 0, 0, 128, 127, 0, 0); // 2 WEIGHTS_0
+        f.accessor(Accessors.UNSIGNED_BYTE, "VEC4", false, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0); // 3 JOINTS_1
+        f.accessor(Accessors.UNSIGNED_BYTE, "VEC4", true, 153, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0); // 4 WEIGHTS_1
+        Model model = GltfFixture.read(f.gltf("\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0,"
+                + "\"JOINTS_0\":1,\"WEIGHTS_0\":2,\"JOINTS_1\":3,\"WEIGHTS_1\":4}}]}],\"skins\":[{\"joints\":[1,2]}],"
+                + "\"nodes\":[{\"mesh\":0,\"skin\":0},{},{}],\"scenes\":[{\"nodes\":[0,1,2]}]"));
+        Skin skin = model.skins().get(0);
+        assertEquals(3, skin.influenceCount(0), "0.2 + 0.2 from set 0, 0.6 from set 1");
+        assertEquals(0.6f, skin.influenceWeight(skin.influenceStart(0) + 2), 1e-7f);
+        assertEquals(1, skin.influenceJoint(skin.influenceStart(0) + 2));
+        assertEquals(1, skin.influenceCount(1));
+        assertEquals(128 / 255f, skin.influenceWeight(skin.influenceStart(2)), 1e-7f);
+        assertTrue(model.warnings().isEmpty(), "sums within 1/255 of 1: " + model.warnings());
+    }
+
+    @Test
     void zeroWeightsAreDroppedAndWeightsKeptAsWritten() throws Exception {
         Skin skin = GltfFixture.read(twoBoneSkin(new GltfFixture(), ",\"inverseBindMatrices\":3", ""))
                 .skins().get(0);

@@ -17,8 +17,9 @@ import org.lwjgl.system.MemoryUtil;
 import org.skinlab.model.Image;
 
 /**
- * The GL textures of a model's images, each loaded once with stb_image. An image that cannot be
- * loaded (no file, unreadable, not a picture, too large) gets texture 0 (the material's colour is
+ * The GL textures of a model's images, each loaded once with stb_image from the bytes the document
+ * embeds or else from the image's file. An image that cannot be loaded (no data, unreadable, not a
+ * picture, too large) gets texture 0 (the material's colour is
  * drawn) and one warning line. Window thread only.
  */
 public final class TextureCache implements AutoCloseable {
@@ -45,13 +46,13 @@ public final class TextureCache implements AutoCloseable {
 
     private int load(Image image) {
         String name = image.file() != null ? String.valueOf(image.file().getFileName()) : image.id();
-        if (image.file() == null) {
+        byte[] bytes = image.bytes(); // embedded in the document (glTF), else read from the file
+        if (bytes == null && image.file() == null) {
             warnings.add("texture " + name + ": not a local file (" + image.uri() + ")");
             return 0;
         }
-        byte[] bytes;
         try {
-            bytes = Files.readAllBytes(image.file());
+            bytes = bytes != null ? bytes : Files.readAllBytes(image.file());
         } catch (IOException e) {
             warnings.add("texture " + name + ": " + (Files.exists(image.file()) ? "cannot be read" : "file not found"));
             return 0;
@@ -71,7 +72,8 @@ public final class TextureCache implements AutoCloseable {
                         + MAX_SIDE + " per side");
                 return 0;
             }
-            // COLLADA's (0, 0) is the image's bottom left, OpenGL's first row is its bottom. The
+            // The model's (0, 0) is the image's bottom left (COLLADA's; the glTF importer flips v to
+            // match), OpenGL's first row is its bottom. The
             // flag is stb's global state: set for this call only.
             STBImage.stbi_set_flip_vertically_on_load(true);
             ByteBuffer pixels = STBImage.stbi_load_from_memory(encoded, w, h, channels, 4);

@@ -128,6 +128,19 @@ class TextureCacheTest {
     }
 
     @Test
+    void embeddedBytesAreLoadedWithoutAFile() throws Exception {
+        byte[] png = java.nio.file.Files.readAllBytes(picture("embedded.png"));
+        try (TextureCache cache = new TextureCache()) {
+            int id = cache.texture(new Image("/images/0", null, null, null, "image/png", png));
+            assertNotEquals(0, id, cache.warnings().toString());
+            glBindTexture(GL_TEXTURE_2D, id);
+            assertEquals(8, glGetTexLevelParameteri(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH));
+            glBindTexture(GL_TEXTURE_2D, 0);
+            assertEquals(List.of(), cache.warnings());
+        }
+    }
+
+    @Test
     void aMissingFileGivesZeroAndOneWarning() {
         try (TextureCache cache = new TextureCache()) {
             Image missing = image("m", dir.resolve("body.png"));

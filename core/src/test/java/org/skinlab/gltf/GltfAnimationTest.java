@@ -1,0 +1,114 @@
+package org.skinlab.gltf;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import org.joml.Matrix4f;
+import org.joml.Vector3f;
+import org.junit.jupiter.api.Test;
+import org.skinlab.animation.RotationInterpolation;
+import org.skinlab.model.AnimationClip;
+import org.skinlab.model.Interpolation;
+import org.skinlab.model.Model;
+import org.skinlab.skinning.SkinnedModel;
+
+/**
+ * Animations through the model's own sampler, against the specification's formulas evaluated
+ * here (glTF 2.0, Appendix C "Interpolation"): LINEAR, STEP, and CUBICSPLINE's Hermite spline
+ * {@code p(s) = (2s^3 - 3s^2 + 1) v_k + td (s^3 - 2s^2 + s) b_k + (-2s^3 + 3s^2) v_k+1
+ * + td (s^3 - s^2) a_k+1}.
+ */
+class GltfAnimationTest {
+    private static final float EPS = 1e-5f;
+
+    private static Model oneChannel(String path, String interpolation, String outputType, double[] times,
+            double... output) throws Exception {
+        GltfFixture f = new GltfFixture();
+        f.floats("SCALAR", times);
+        f.floats(outputType, output);
+        return GltfFixture.read(f.gltf("\"nodes\":[{\"name\":\"n\"}],\"scenes\":[{\"nodes\":[0]}],"
+                + "\"animations\":[{\"name\":\"walk\",\"channels\":[{\"sampler\":0,\"target\":{\"node\":0,"
+                + "\"path\":\"" + path + "\"}}],\"samplers\":[{\"input\":0,\"output\":1,\"interpolation\":\""
+                + interpolation + "\"}]}]"));
+    }
+
+    private static Vector3f translationAt(Model model, float t) {
+        SkinnedModel skinned = SkinnedModel.of(model);
+        skinned.pose(t, RotationInterpolation.SLERP);
+        return skinned.pose().world(0, new Matrix4f()).getTranslation(new Vector3f());
+    }
+
+    @Test
+    void cubicSplineFollowsTheHermiteFormula() throws Exception {
+        double[] times = {0, 2, 3};
+        // Per key: in-tangent a, value v, out-tangent b (VEC3; only x varies).
+        double[][] abv = {{0, 1, 4}, {-2, 3, 1}, {5, 0, 0}}; // (a, v, b) per key
+        double[] out = new double[27];
+        for (int k = 0; k < 3; k++) {
+            for (int e = 0; e < 3; e++) {
+                out[9 * k + 3 * e] = abv[k][e];
+                out[9 * k + 3 * e + 1] = 0.5 * abv[k][e];
+            }
+        }
+        Model model = oneChannel("translation", "CUBICSPLINE", "VEC3", times, out);
+        assertEquals(Interpolation.BEZIER, model.clips().get(0).channels().get(0).track().interpolation(0));
+        for (float t : new float[] {0f, 0.3f, 1f, 1.7f, 2f, 2.25f, 2.5f, 2.9f, 3f}) {
+            int k = t < 2f ? 0 : 1;
+            double td = times[k + 1] - times[k];
+            double s = (t - times[k]) / td;
+            double expected = (2 * s * s * s - 3 * s * s + 1) * abv[k][1] + td * (s * s * s - 2 * s * s + s) * abv[k][2]
+                    + (-2 * s * s * s + 3 * s * s) * abv[k + 1][1] + td * (s * s * s - s * s) * abv[k + 1][0];
+            Vector3f p = translationAt(model, t);
+            assertEquals(expected, p.x, EPS, "x at t=" + t);
+            assertEquals(0.5 * expected, p.y, EPS, "y at t=" + t);
+        }
+    }
+
+    @Test
+    void linearAndStep() throws Exception {
+        double[] times = {0, 1};
+        Model linear = oneChannel("translation", "LINEAR", "VEC3", times, 0, 0, 0, 4, 2, 0);
+        Model step = oneChannel("translation", "STEP", "VEC3", times, 0, 0, 0, 4, 2, 0);
+        assertEquals(1f, translationAt(linear, 0.25f).x, EPS);
+        assertEquals(0f, translationAt(step, 0.99f).x, EPS);
+        assertEquals(4f, translationAt(step, 1f).x, EPS);
+        AnimationClip clip = linear.clips().get(0);
+        assertEquals("walk", clip.name());
+        assertEquals(0f, clip.start());
+        assertEquals(1f, clip.end());
+    }
+
+    @Test
+    void rotationKeysAreNormalisedWithAWarning() throws Exception {
+        Model model = oneChannel("rotation", "LINEAR", "VEC4", new double[] {0, 1}, 0, 0, 0, 2, 0, 0, 1, 1);
+        float[] values = model.clips().get(0).channels().get(0).track().values();
+        assertEquals(1f, values[3], EPS);
+        assertEquals((float) Math.sqrt(0.5), values[7], EPS);
+        assertEquals("/animations/0/samplers/0/output", model.warnings().get(0).element());
+    }
+
+    @Test
+    void weightsChannelsAreDecodedThenSkippedWithAWarning() throws Exception {
+        Model model = oneChannel("weights", "LINEAR", "SCALAR", new double[] {0, 1}, 0, 1);
+        assertTrue(model.clips().get(0).channels().isEmpty());
+        assertEquals("/animations/0/channels/0", model.warnings().get(0).element());
+    }
+
+    @Test
+    void repeatedTimesAreJumpsWithAWarning() throws Exception {
+        Model model = oneChannel("translation", "LINEAR", "VEC3", new double[] {0, 1, 1, 2}, 0, 0, 0, 1, 0, 0, 5, 0, 0,
+                6, 0, 0);
+        assertEquals(0.5f, translationAt(model, 0.5f).x, EPS);
+        assertEquals(5.5f, translationAt(model, 1.5f).x, EPS);
+        assertEquals("/animations/0/samplers/0/input", model.warnings().get(0).element());
+    }
+
+    @Test
+    void decreasingTimesAreRefused() {
+        GltfException e = assertThrows(GltfException.class,
+                () -> oneChannel("translation", "LINEAR", "VEC3", new double[] {1, 0}, 0, 0, 0, 1, 1, 1));
+        assertEquals("test.gltf: /accessors/0: key time 1 is 0.0: times must be non-negative and increase",
+                e.getMessage());
+    }
+}
