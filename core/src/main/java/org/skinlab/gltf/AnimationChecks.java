@@ -58,7 +58,11 @@ final class AnimationChecks {
                 throw animation.get("channels").get(first).get("target").error("node " + node + "'s " + path
                         + " is animated again by channel " + c);
             }
-            checkTarget(target, doc.node(node), path);
+            if (path.equals("weights") && !morphed(doc.node(node))) {
+                // Nothing to animate: the importer skips the channel with a warning.
+                continue;
+            }
+            checkTarget(target, doc.node(node));
             checkOutput(channel.get("sampler"), animation.get("samplers").get(sampler), doc.node(node), path);
         }
         doc.extensions(animation, "animation");
@@ -87,12 +91,14 @@ final class AnimationChecks {
         }
     }
 
-    private static void checkTarget(JsonNode target, JsonNode node, String path) throws GltfException {
+    private boolean morphed(JsonNode node) throws GltfException {
+        return node.has("mesh") && doc.mesh((int) node.get("mesh").number()).get("primitives").get(0)
+                .get("targets").size() > 0;
+    }
+
+    private static void checkTarget(JsonNode target, JsonNode node) throws GltfException {
         if (node.has("matrix")) {
             throw target.error("the node has a matrix; only translation, rotation and scale can be animated");
-        }
-        if (path.equals("weights") && (!node.has("mesh"))) {
-            throw target.error("morph weights of a node without a mesh");
         }
     }
 
@@ -113,9 +119,6 @@ final class AnimationChecks {
             case "weights":
                 ok = type.equals("SCALAR") && (component == FLOAT || ints);
                 width = doc.mesh((int) node.get("mesh").number()).get("primitives").get(0).get("targets").size();
-                if (width == 0) {
-                    throw where.error("morph weights of a mesh without morph targets");
-                }
                 break;
             default:
                 ok = type.equals("VEC3") && (component == FLOAT || doc.used.contains("KHR_mesh_quantization"));

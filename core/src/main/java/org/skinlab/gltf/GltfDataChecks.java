@@ -3,40 +3,38 @@ package org.skinlab.gltf;
 import java.util.Locale;
 
 /**
- * The checks of {@link GltfDocumentChecks} that need the buffers' values: accessor bounds
- * ({@code min}/{@code max} must be the data's), indices inside the vertex range and never the
- * primitive-restart value, joints inside their skin, weights not negative, affine inverse bind
- * matrices, key times from 0 on and increasing, colours in [0, 1]. As the validator does, every
- * accessor with bounds is checked, used or not.
- *
- * <p>Tolerated with a warning (the validator calls them errors, but real exporters write them and
- * the skinning and sampling do what the file means): weights whose sum is off by more than
- * {@value #WEIGHT_SUM_TOLERANCE}, non-unit normals, non-unit rotation keys (the sampler
- * renormalises).
+ * The checks of {@link GltfDocumentChecks} that need the buffers' values and that reading the
+ * model does not make itself: accessor bounds ({@code min}/{@code max} must be the data's, and
+ * float data finite), for every accessor that stores values, used or not, as the validator does;
+ * indices that are never the primitive-restart value; affine inverse bind matrices; float colours
+ * in [0, 1]. Non-unit normals are tolerated with a warning (the validator calls them an error, but
+ * exporters write them and they are renormalised when drawn). Indices, joints, weights and key
+ * times are checked where the importer reads them ({@link MeshReader}, {@link Influences},
+ * {@link AnimationReader}).
  */
 final class GltfDataChecks {
-    static final double WEIGHT_SUM_TOLERANCE = 2e-3;
     private static final double UNIT_TOLERANCE = 1e-3;
     /** An affine matrix's last row (0 0 0 1) within float noise. */
     private static final double AFFINE_TOLERANCE = 1e-5;
 
     private final GltfContext ctx;
     private final JsonNode root;
+    private final Buffers buffers;
     private final Accessors accessors;
 
-    private GltfDataChecks(GltfContext ctx, JsonNode root, Accessors accessors) {
+    private GltfDataChecks(GltfContext ctx, JsonNode root, Buffers buffers, Accessors accessors) {
         this.ctx = ctx;
         this.root = root;
+        this.buffers = buffers;
         this.accessors = accessors;
     }
 
     /** Refuses values the specification forbids; warns about the tolerated ones (class comment). */
-    static void check(GltfContext ctx, JsonNode root, Accessors accessors) throws GltfException {
-        GltfDataChecks checks = new GltfDataChecks(ctx, root, accessors);
+    static void check(GltfContext ctx, JsonNode root, Buffers buffers, Accessors accessors) throws GltfException {
+        GltfDataChecks checks = new GltfDataChecks(ctx, root, buffers, accessors);
         checks.checkBounds();
         checks.checkMeshes();
-        checks.checkSkins();
-        checks.checkAnimations();
+        checks.checkInverseBindMatrices();
     }
 
     private void checkBounds() throws GltfException {
@@ -68,11 +66,21 @@ final class GltfDataChecks {
 
     /**
      * Whether the accessor stores values: one without a buffer view or sparse values is zeros by
-     * definition, which the validator does not hold against its bounds (its files use such
-     * accessors to describe structure), nor do we.
+     * definition, and one in a placeholder buffer has none; the validator does not hold either
+     * against its bounds (its files use them to describe structure), nor do we. Reading the
+     * latter refuses the file where it is used.
      */
-    private static boolean hasData(JsonNode a) throws GltfException {
-        return a.has("bufferView") || a.has("sparse");
+    private boolean hasData(JsonNode a) throws GltfException {
+        if (a.has("sparse")) {
+            JsonNode sparse = a.get("sparse");
+            return inBufferWithData(sparse.get("indices")) && inBufferWithData(sparse.get("values"))
+                    && (!a.has("bufferView") || inBufferWithData(a));
+        }
+        return a.has("bufferView") && inBufferWithData(a);
+    }
+
+    private boolean inBufferWithData(JsonNode part) throws GltfException {
+        return buffers.hasData((int) part.get("bufferView").number());
     }
 
     private static boolean knownType(JsonNode a) throws GltfException {
@@ -124,9 +132,8 @@ final class GltfDataChecks {
                 for (String name : attributes.keys()) {
                     checkAttribute(attributes.get(name), name);
                 }
-                if (primitive.has("indices") && attributes.has("POSITION")) {
-                    checkIndices(primitive.get("indices"), accessors.elementCount(
-                            accessors.resolve(attributes.get("POSITION"))));
+                if (primitive.has("indices")) {
+                    checkIndices(primitive.get("indices"));
                 }
             }
         }
@@ -153,17 +160,14 @@ final class GltfDataChecks {
         }
     }
 
-    private void checkIndices(JsonNode indices, int vertices) throws GltfException {
+    private void checkIndices(JsonNode indices) throws GltfException {
         int accessor = accessors.resolve(indices);
         long restart = restartValue((int) accessors.node(accessor).get("componentType").number());
         int[] values = accessors.ints(accessor);
         for (int i = 0; i < values.length; i++) {
-            long v = Integer.toUnsignedLong(values[i]);
-            if (v == restart) {
-                throw indices.error("index " + i + " is " + v + ", the primitive-restart value, which glTF forbids");
-            }
-            if (v >= vertices) {
-                throw indices.error("index " + i + " is " + v + " but the primitive has " + vertices + " vertices");
+            if (Integer.toUnsignedLong(values[i]) == restart) {
+                throw indices.error("index " + i + " is " + restart + ", the primitive-restart value, which glTF"
+                        + " forbids");
             }
         }
     }
@@ -173,20 +177,8 @@ final class GltfDataChecks {
                 ? 0xffffL : 0xffffffffL;
     }
 
-    /** Joints of each skinned node's mesh inside the node's skin; weights not negative. */
-    private void checkSkins() throws GltfException {
-        JsonNode nodes = root.get("nodes");
-        for (int n = 0; n < nodes.size(); n++) {
-            JsonNode node = nodes.get(n);
-            if (!node.has("skin") || !node.has("mesh")) {
-                continue;
-            }
-            int joints = root.get("skins").get((int) node.get("skin").number()).get("joints").size();
-            JsonNode primitives = root.get("meshes").get((int) node.get("mesh").number()).get("primitives");
-            for (int p = 0; p < primitives.size(); p++) {
-                checkInfluences(primitives.get(p).get("attributes"), joints);
-            }
-        }
+    /** Skinning needs affine transforms: each inverse bind matrix's last row is (0 0 0 1). */
+    private void checkInverseBindMatrices() throws GltfException {
         JsonNode skins = root.get("skins");
         for (int s = 0; s < skins.size(); s++) {
             JsonNode ibm = skins.get(s).get("inverseBindMatrices");
@@ -198,83 +190,6 @@ final class GltfDataChecks {
                 if (Math.abs(m[k + 3]) > AFFINE_TOLERANCE || Math.abs(m[k + 7]) > AFFINE_TOLERANCE
                         || Math.abs(m[k + 11]) > AFFINE_TOLERANCE || Math.abs(m[k + 15] - 1) > AFFINE_TOLERANCE) {
                     throw ibm.error("inverse bind matrix " + k / 16 + " is not affine (its last row is not 0 0 0 1)");
-                }
-            }
-        }
-    }
-
-    private void checkInfluences(JsonNode attributes, int joints) throws GltfException {
-        float[] sums = null;
-        for (int set = 0; attributes.has("JOINTS_" + set) && attributes.has("WEIGHTS_" + set); set++) {
-            JsonNode jointsAttribute = attributes.get("JOINTS_" + set);
-            for (int j : accessors.ints(accessors.resolve(jointsAttribute))) {
-                if (j >= joints) {
-                    throw jointsAttribute.error("joint " + j + " but the skin has " + joints + " joints");
-                }
-            }
-            JsonNode weightsAttribute = attributes.get("WEIGHTS_" + set);
-            float[] w = accessors.floats(accessors.resolve(weightsAttribute));
-            sums = sums == null ? new float[w.length / 4] : sums;
-            for (int i = 0; i < w.length; i++) {
-                if (w[i] < 0) {
-                    throw weightsAttribute.error("weight " + i % 4 + " of vertex " + i / 4 + " is negative (" + w[i] + ")");
-                }
-                if (i / 4 < sums.length) {
-                    sums[i / 4] += w[i];
-                }
-            }
-        }
-        for (int v = 0; sums != null && v < sums.length; v++) {
-            if (Math.abs(sums[v] - 1) > WEIGHT_SUM_TOLERANCE) {
-                ctx.warn(attributes.path(), "the weights of vertex " + v + " sum to " + sums[v]
-                        + " (and maybe others'); they are kept as written");
-                break;
-            }
-        }
-    }
-
-    private void checkAnimations() throws GltfException {
-        JsonNode animations = root.get("animations");
-        for (int a = 0; a < animations.size(); a++) {
-            JsonNode samplers = animations.get(a).get("samplers");
-            for (int s = 0; s < samplers.size(); s++) {
-                JsonNode input = samplers.get(s).get("input");
-                if (!hasData(accessors.node(accessors.resolve(input)))) {
-                    continue;
-                }
-                float[] t = accessors.floats(accessors.resolve(input));
-                if (t.length > 0 && t[0] < 0) {
-                    throw input.error("the first key time is negative (" + t[0] + ")");
-                }
-                for (int k = 1; k < t.length; k++) {
-                    if (!(t[k] > t[k - 1])) {
-                        throw input.error("key times must increase: key " + k + " is " + t[k] + " after " + t[k - 1]);
-                    }
-                }
-            }
-            checkRotationKeys(animations.get(a));
-        }
-    }
-
-    private void checkRotationKeys(JsonNode animation) throws GltfException {
-        JsonNode channels = animation.get("channels");
-        for (int c = 0; c < channels.size(); c++) {
-            JsonNode channel = channels.get(c);
-            if (!"rotation".equals(channel.get("target").get("path").string(""))) {
-                continue;
-            }
-            JsonNode sampler = animation.get("samplers").get((int) channel.get("sampler").number());
-            boolean cubic = sampler.get("interpolation").string("LINEAR").equals("CUBICSPLINE");
-            float[] q = accessors.floats(accessors.resolve(sampler.get("output")));
-            for (int i = 0; i + 3 < q.length; i += 4) {
-                if (cubic && i / 4 % 3 != 1) {
-                    continue; // tangents need not be unit
-                }
-                double length = Math.sqrt(q[i] * q[i] + q[i + 1] * q[i + 1] + q[i + 2] * q[i + 2] + q[i + 3] * q[i + 3]);
-                if (Math.abs(length - 1) > UNIT_TOLERANCE) {
-                    ctx.warn(channel.get("sampler").path(), "rotation key " + i / 4 + " has length " + (float) length
-                            + " (and maybe others); rotations are renormalised when sampled");
-                    break;
                 }
             }
         }

@@ -84,25 +84,8 @@ final class GltfDocumentChecks {
 
     private void checkRoot() throws GltfException {
         JsonNode root = doc.root;
-        required(root, "asset");
-        JsonNode asset = root.get("asset");
-        if (!asset.isObject()) {
-            throw asset.error("expected a JSON object");
-        }
-        required(asset, "version");
-        int major = version(asset.get("version"));
-        if (major != 2) {
-            throw asset.get("version").error("glTF " + asset.get("version").string()
-                    + " is not glTF 2 (this importer reads glTF 2.x)");
-        }
-        if (asset.has("minVersion")) {
-            String min = asset.get("minVersion").string();
-            String version = asset.get("version").string();
-            version(asset.get("minVersion"));
-            if (compareVersions(min, version) > 0) {
-                throw asset.get("minVersion").error("minVersion " + min + " is greater than version " + version);
-            }
-        }
+        // The asset (its presence and version) is the importer's first reading.
+        JsonNode asset = root.get("asset").objectOrMissing();
         asset.get("copyright").string("");
         asset.get("generator").string("");
         Set<String> requiredExtensions = CheckedDocument.stringSet(root.get("extensionsRequired"));
@@ -123,27 +106,7 @@ final class GltfDocumentChecks {
         doc.extensions(root, "root");
     }
 
-    /** The major number of a {@code major.minor} version string. */
-    private static int version(JsonNode n) throws GltfException {
-        String v = n.string();
-        if (!v.matches("[0-9]+\\.[0-9]+")) {
-            throw n.error("\"" + v + "\" is not a version of the form major.minor");
-        }
-        String major = v.substring(0, v.indexOf('.'));
-        return major.length() > 3 ? Integer.MAX_VALUE : Integer.parseInt(major);
-    }
 
-    private static int compareVersions(String a, String b) {
-        String[] x = a.split("\\.");
-        String[] y = b.split("\\.");
-        for (int i = 0; i < 2; i++) {
-            int c = new java.math.BigInteger(x[i]).compareTo(new java.math.BigInteger(y[i]));
-            if (c != 0) {
-                return c;
-            }
-        }
-        return 0;
-    }
 
     private void checkBuffer(JsonNode buffer) throws GltfException {
         required(buffer, "byteLength");

@@ -49,17 +49,11 @@ final class GltfSceneChecks {
         for (int i = 0; i < doc.nodes; i++) {
             checkNode(doc.node(i), i);
         }
-        checkNoCycle();
         for (int i = 0; i < doc.scenes; i++) {
             JsonNode scene = doc.root.get("scenes").get(i);
             JsonNode nodes = scene.get("nodes");
-            int[] roots = CheckedDocument.indices(nodes, doc.nodes, "nodes");
-            for (int k = 0; k < roots.length; k++) {
-                if (parent[roots[k]] >= 0) {
-                    throw nodes.get(k).error("node " + roots[k] + " is a child of node " + parent[roots[k]]
-                            + ", not a root");
-                }
-            }
+            // That they are roots is the scene's reading's check (SceneReader).
+            CheckedDocument.indices(nodes, doc.nodes, "nodes");
             doc.extensions(scene, "scene");
         }
         for (int i = 0; i < doc.skins; i++) {
@@ -295,13 +289,12 @@ final class GltfSceneChecks {
 
     private void checkNode(JsonNode node, int index) throws GltfException {
         ref(node, "camera", doc.cameras, "cameras");
-        int[] children = CheckedDocument.indices(node.get("children"), doc.nodes, "nodes");
-        for (int k = 0; k < children.length; k++) {
-            int child = children[k];
-            if (parent[child] >= 0 || child == index) {
-                throw node.get("children").get(k).error("node " + child + " already has a parent");
+        // A second parent or a cycle is refused by the scene's reading (SceneReader); here the
+        // first parent counts, and every walk upwards is bounded.
+        for (int child : CheckedDocument.indices(node.get("children"), doc.nodes, "nodes")) {
+            if (parent[child] < 0 && child != index) {
+                parent[child] = index;
             }
-            parent[child] = index;
         }
         int mesh = ref(node, "mesh", doc.meshes, "meshes");
         int skin = ref(node, "skin", doc.skins, "skins");
@@ -334,9 +327,7 @@ final class GltfSceneChecks {
     private static void checkTransform(JsonNode node) throws GltfException {
         JsonNode matrix = node.get("matrix");
         if (!matrix.isMissing()) {
-            if (node.has("translation") || node.has("rotation") || node.has("scale")) {
-                throw matrix.error("a node has a matrix or translation, rotation and scale, not both");
-            }
+            // A matrix beside translation, rotation or scale is refused by the scene's reading.
             float[] m = matrix.floats(16, null);
             if (m[3] != 0 || m[7] != 0 || m[11] != 0 || m[15] != 1) {
                 throw matrix.error("not an affine transform (its last row is not 0 0 0 1)");
@@ -359,22 +350,11 @@ final class GltfSceneChecks {
         }
     }
 
-    /** Refuses a cycle of children: a node that is its own ancestor never reaches a root. */
-    private void checkNoCycle() throws GltfException {
-        for (int i = 0; i < parent.length; i++) {
-            int steps = 0;
-            for (int p = parent[i]; p >= 0; p = parent[p]) {
-                if (++steps > parent.length) {
-                    throw doc.node(i).error("node " + i + " is its own ancestor");
-                }
-            }
-        }
-    }
 
-    /** The root of node {@code i}'s tree. */
+    /** The root of node {@code i}'s tree (where a cycle, refused later, closes: any of its nodes). */
     private int rootOf(int i) {
         int r = i;
-        while (parent[r] >= 0) {
+        for (int steps = 0; parent[r] >= 0 && steps < parent.length; steps++) {
             r = parent[r];
         }
         return r;
@@ -419,7 +399,7 @@ final class GltfSceneChecks {
     }
 
     private boolean isAncestorOrSelf(int ancestor, int node) {
-        for (int n = node; n >= 0; n = parent[n]) {
+        for (int n = node, steps = 0; n >= 0 && steps <= parent.length; n = parent[n], steps++) {
             if (n == ancestor) {
                 return true;
             }
