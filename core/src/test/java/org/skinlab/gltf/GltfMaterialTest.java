@@ -27,7 +27,10 @@ class GltfMaterialTest {
         f.floats("VEC2", 0, 0, 1, 0, 0, 1); // 1
         f.floats("VEC2", 0.5, 0.5, 0.5, 0.5, 0.5, 0.5); // 2
         f.view(PNG_SIGNATURE, 0); // view 3
-        return GltfFixture.read(f.gltf("\"materials\":[" + materials + "]," + list("images", images)
+        // Valid glTF declares the extensions it uses.
+        String used = materials.contains("KHR_texture_transform") ? "\"extensionsUsed\":[\"KHR_texture_transform\"],"
+                : "";
+        return GltfFixture.read(f.gltf(used + "\"materials\":[" + materials + "]," + list("images", images)
                 + list("textures", textures) + "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0"
                 + texCoords + "},\"material\":0}]}],\"nodes\":[{\"mesh\":0}],\"scenes\":[{\"nodes\":[0]}]"));
     }
