@@ -13,6 +13,8 @@ deformed vertices at each key), it also skins the mesh itself with linear blend 
   v' = sum_i w_i * JointWorld_i(t) * INV_BIND_MATRIX_i * BIND_SHAPE_MATRIX * v,
 from the file alone and asserts that the result matches Blender's. It also prints the enclosed
 volume of that LBS result at each key (the volume loss the project measures later).
+Each .dae must have its .glb beside it, holding the same scene (check_glb.py: same joints and key
+times, every vertex at a .dae position, its own LBS against the same reference).
 Exit status 1 if any check fails.
 """
 import json
@@ -20,6 +22,8 @@ import math
 import os
 import sys
 import xml.etree.ElementTree as ET
+
+import check_glb
 
 NS = "{http://www.collada.org/2005/11/COLLADASchema}"
 MAX_BYTES = 2 * 1024 * 1024
@@ -513,6 +517,11 @@ def check_file(path, rel, ref_dir):
         check(worst < 1e-4, "%s: LBS from the file deviates %.2e m from Blender's deformation" % (rel, worst))
     else:
         print("  (no reference %s: LBS comparison skipped)" % ref_path)
+
+    glb = os.path.splitext(path)[0] + ".glb"
+    if check(os.path.exists(glb), "%s: no .glb beside it" % rel):
+        dae = dict(points=g["points"], triangles=g["triangles"], joint_names=skin["joints"], times=base_times)
+        check_glb.check_glb(glb, os.path.splitext(rel)[0] + ".glb", dae, ref, check)
 
 
 def main():

@@ -49,6 +49,42 @@ EXPORT_OPTIONS = dict(
 
 FIXED_TIMESTAMP = "2024-01-01T00:00:00"
 
+# glTF export options shared by all assets (see README.md, "glTF export settings"). The .glb holds
+# the same scene as the .dae: same mesh, weights, rest pose and key poses.
+GLTF_EXPORT_OPTIONS = dict(
+    check_existing=False,
+    export_format='GLB',
+    export_yup=True,                # glTF is Y-up: Blender rotates the data, (x, y, z) -> (x, z, -y)
+    export_apply=False,             # all non-armature modifiers are applied by the scripts beforehand
+    export_texcoords=True,
+    export_normals=True,
+    export_tangents=False,
+    export_colors=False,
+    export_attributes=False,
+    export_materials='EXPORT',
+    export_cameras=False,
+    export_lights=False,
+    export_extras=False,
+    use_selection=False,
+    use_visible=False,
+    export_draco_mesh_compression_enable=False,  # plain accessors, nothing a reader must decompress
+    export_skins=True,
+    export_all_influences=True,     # every weight (the default keeps 4); ours have at most 4 anyway
+    export_def_bones=True,          # deforming bones only, as the .dae (every bone of ours deforms)
+    export_morph=False,
+    export_animations=True,
+    export_frame_range=True,        # scene frames 0 .. frame_end
+    # Blender 3.4 exports bone animation as sampled TRS; with the step equal to the key spacing the
+    # samples fall exactly on the keys, as in the .dae, and nothing else is written.
+    export_force_sampling=True,
+    export_optimize_animation_size=False,  # keep every key, even of joints that never move
+    export_nla_strips=True,
+    export_anim_single_armature=True,
+    export_reset_pose_bones=True,
+    export_current_frame=False,
+    export_copyright="",
+)
+
 
 def script_args():
     """Arguments after the '--' separator of the blender command line."""
@@ -280,6 +316,37 @@ def export_dae(path, sampling_rate):
     text = re.sub(r"<modified>[^<]*</modified>", "<modified>%s</modified>" % FIXED_TIMESTAMP, text)
     with open(path, "w", encoding="utf-8", newline="\n") as f:
         f.write(text)
+    print("wrote %s (%d bytes)" % (path, os.path.getsize(path)))
+
+
+def triangulate_like_collada(mesh_obj):
+    """Split the mesh's quads and n-gons into the triangles the COLLADA exporter wrote: its
+    triangulate option runs BM_mesh_triangulate with the shortest-edge diagonal for quads and the
+    'beauty' fill for n-gons (io/collada/collada_utils.cpp, bc_triangulate_mesh). The glTF exporter
+    would otherwise choose its own diagonals (half the humanoid's quads differ), and CoR's centres,
+    integrated over the triangles, would differ by millimetres between the two files."""
+    import bmesh
+    me = mesh_obj.data
+    bm = bmesh.new()
+    bm.from_mesh(me)
+    bmesh.ops.triangulate(bm, faces=bm.faces[:], quad_method='SHORT_EDGE', ngon_method='BEAUTY')
+    bm.to_mesh(me)
+    bm.free()
+    me.update()
+
+
+def export_glb(dae_path, frame_step):
+    """Export the same scene as a .glb beside the .dae (same name, .glb), sampling every
+    frame_step frames (= the key spacing) with GLTF_EXPORT_OPTIONS. The exporter writes no date,
+    so a rebuild gives a byte-identical file."""
+    path = os.path.splitext(os.path.abspath(dae_path))[0] + ".glb"
+    bpy.context.scene.frame_set(0)
+    kinds = sorted(o.type for o in bpy.context.scene.objects)
+    assert kinds == ['ARMATURE', 'MESH'], kinds
+    triangulate_like_collada(next(o for o in bpy.context.scene.objects if o.type == 'MESH'))
+    result = bpy.ops.export_scene.gltf(filepath=path, export_frame_step=frame_step, **GLTF_EXPORT_OPTIONS)
+    if result != {'FINISHED'}:
+        raise RuntimeError("gltf export failed: %r" % (result,))
     print("wrote %s (%d bytes)" % (path, os.path.getsize(path)))
 
 

@@ -124,6 +124,7 @@ def main():
         variant, len(heights), len(mesh.vertices), tris, " ".join("%.3f" % z for z in heights)))
     common.write_reference(mesh_obj, [k[0] for k in keys], reference)
     common.export_dae(out, sampling_rate=24)
+    common.export_glb(out, frame_step=24)
 
 
 main()

@@ -264,6 +264,7 @@ def main():
         len(me.vertices), len(me.polygons), tris, len(arm_obj.data.bones)))
     common.write_reference(mesh_obj, frames, reference)
     common.export_dae(out, sampling_rate=step)
+    common.export_glb(out, frame_step=step)
 
 
 main()

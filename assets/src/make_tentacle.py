@@ -136,6 +136,7 @@ def main():
     print("tentacle: %d vertices, %d triangles, %d bones" % (len(me.vertices), tris, len(arm_obj.data.bones)))
     common.write_reference(mesh_obj, frames, reference)
     common.export_dae(out, sampling_rate=STEP)
+    common.export_glb(out, frame_step=STEP)
 
 
 main()

@@ -4,9 +4,13 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 
+import org.skinlab.importer.ModelImporter;
 import org.skinlab.scene.DefaultAsset;
 
-/** The models bundled in the APK, the default character first, then the rest by name; cycles on "next". */
+/**
+ * The models bundled in the APK ({@code .dae}, {@code .gltf}, {@code .glb}), the default character
+ * first, then the rest by name; cycles on "next".
+ */
 public final class ModelCatalog {
     private final List<String> names;
     private int current;
@@ -14,7 +18,7 @@ public final class ModelCatalog {
     public ModelCatalog(String[] fileNames) {
         List<String> list = new ArrayList<>();
         for (String n : fileNames) {
-            if (n.toLowerCase(java.util.Locale.ROOT).endsWith(".dae")) {
+            if (ModelImporter.isModelFile(n)) {
                 list.add(n);
             }
         }
@@ -23,7 +27,7 @@ public final class ModelCatalog {
             list.add(0, DefaultAsset.fileName());
         }
         if (list.isEmpty()) {
-            throw new IllegalArgumentException("no .dae model among " + Arrays.toString(fileNames));
+            throw new IllegalArgumentException("no model file (.dae, .gltf, .glb) among " + Arrays.toString(fileNames));
         }
         this.names = List.copyOf(list);
     }

@@ -7,13 +7,14 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.Consumer;
 
-import org.skinlab.collada.ColladaImporter;
+import org.skinlab.importer.ModelImporter;
 import org.skinlab.simulation.AnimationConfig;
 import org.skinlab.simulation.SkeletalAnimatedMesh;
 import org.skinlab.skinning.SkinnedGeometry;
 
 /**
- * The app's models, loaded one at a time on their own thread ({@value #THREAD}): imported, made a
+ * The app's models (COLLADA or glTF: {@link ModelImporter} tells them apart; a {@code .gltf}
+ * must be self-contained, as an asset has no folder to look for its buffers in), loaded one at a time on their own thread ({@value #THREAD}): imported, made a
  * {@link SkeletalAnimatedMesh} (not started) and their CoR centres computed there, not on the GL
  * thread when a model is first drawn. Each loaded mesh goes to the listener on the loader thread;
  * the app swaps it in on its UI thread. A model the user skipped past before its turn is not loaded.
@@ -61,7 +62,7 @@ public final class ModelLoader implements AutoCloseable {
     private void loadNow(String name) {
         SkeletalAnimatedMesh mesh;
         try (InputStream in = source.open(name)) {
-            mesh = SkeletalAnimatedMesh.of(ColladaImporter.read(in, name), config);
+            mesh = SkeletalAnimatedMesh.of(ModelImporter.read(in, name, null), config);
             for (SkinnedGeometry g : mesh.geometries()) {
                 if (g.isSkinned()) {
                     g.centersOfRotation();

@@ -1,5 +1,6 @@
 package org.skinlab.android.logic;
 
+import java.io.InputStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
@@ -16,7 +17,7 @@ import org.skinlab.ar.TrackerConfig;
 import org.skinlab.ar.synthetic.PlacedMarker;
 import org.skinlab.ar.synthetic.SceneOptions;
 import org.skinlab.ar.synthetic.SyntheticCamera;
-import org.skinlab.collada.ColladaImporter;
+import org.skinlab.importer.ModelImporter;
 import org.skinlab.simulation.AnimationConfig;
 import org.skinlab.simulation.Frame;
 import org.skinlab.simulation.SkeletalAnimatedMesh;
@@ -33,12 +34,26 @@ public final class ShrinkProbe {
     private ShrinkProbe() {
     }
 
+    /** {@code ShrinkProbe MODEL...}: every model (a .dae, a .glb) through the app's paths, then the tracker. */
     public static void main(String[] args) throws Exception {
-        Path model = Path.of(args[0]);
+        for (String model : args) {
+            probeModel(Path.of(model));
+        }
+        // The skinning shader as the renderer builds it: core's formulas, a resource beside the classes.
+        if (!GlesShaders.skinnedVertex().contains("void cor(")) {
+            throw new IllegalStateException("the shrunk app's skinning shader lacks the shared formulas");
+        }
+        probeTracker();
+        System.out.println("shrunk app paths work");
+    }
+
+    /** Import, simulation, the GPU palette and CoR's centres with their cache, as the app runs them. */
+    private static void probeModel(Path model) throws Exception {
         Path cache = Files.createTempDirectory("skinlab-centres");
         CentersOfRotation.setCacheDirectory(cache);
-        try (SkeletalAnimatedMesh mesh = SkeletalAnimatedMesh.of(ColladaImporter.read(Files.newInputStream(model),
-                model.getFileName().toString()), new AnimationConfig(AnimationConfig.Settings.DEFAULT
+        try (InputStream in = Files.newInputStream(model);
+                SkeletalAnimatedMesh mesh = SkeletalAnimatedMesh.of(ModelImporter.read(in,
+                        model.getFileName().toString(), null), new AnimationConfig(AnimationConfig.Settings.DEFAULT
                         .withCpuSkinning(false)))) {
             mesh.step(0.1);
             try (Frame f = mesh.acquire()) {
@@ -48,19 +63,18 @@ public final class ShrinkProbe {
             // CoR's centres as the Activity's loader prepares them, kept in the app's cache folder.
             mesh.geometries().get(0).centersOfRotation();
         }
-        // The skinning shader as the renderer builds it: core's formulas, a resource beside the classes.
-        if (!GlesShaders.skinnedVertex().contains("void cor(")) {
-            throw new IllegalStateException("the shrunk app's skinning shader lacks the shared formulas");
-        }
         try (Stream<Path> cached = Files.list(cache)) {
             List<Path> files = cached.collect(Collectors.toList());
             if (files.size() != 1) {
-                throw new IllegalStateException("the shrunk centres' cache holds " + files);
+                throw new IllegalStateException(model.getFileName() + ": the shrunk centres' cache holds " + files);
             }
             Files.delete(files.get(0));
         }
         Files.delete(cache);
-        // A calibrated camera with a lens: the tracker's lens path as it ships.
+    }
+
+    /** A calibrated camera with a lens: the tracker's lens path as it ships. */
+    private static void probeTracker() {
         int[] array = {0, 0, 4000, 3000};
         CameraReport camera = new CameraReport(28, array, array, new float[] {3200, 3200, 2000, 1500, 0},
                 new float[] {-0.05f, 0.01f, 0, 0, 0}, null, null, Double.NaN, Double.NaN);
@@ -74,6 +88,5 @@ public final class ShrinkProbe {
         if (!session.onCameraFrame(image, 1).visible()) {
             throw new IllegalStateException("the shrunk tracker did not find the marker");
         }
-        System.out.println("shrunk app paths work");
     }
 }

@@ -22,6 +22,50 @@ import org.skinlab.simulation.SkeletalAnimatedMesh;
 /** The app's model loader: loads in order on its thread, skips what the user skipped, reports failures. */
 class ModelLoaderTest {
     private static final Path MODELS = Path.of(System.getProperty("skinlab.root", "."), "assets", "characters");
+    /** The APK's models/ folder as the appAssets task lays it out (gradle makes it before these tests). */
+    private static final Path BUNDLED = Path.of(System.getProperty("skinlab.root", "."), "android", "build", "apk",
+            "assets", "models");
+
+    /**
+     * The humanoid's .glb as the APK bundles it, listed by the app's catalog and loaded by its
+     * loader from a source that opens "models/NAME" as the Activity's does: the walk animates.
+     */
+    @Test
+    void loadsTheBundledGlbLikeAnyModel() throws Exception {
+        String[] bundled = BUNDLED.toFile().list();
+        assertTrue(bundled != null, "no " + BUNDLED + ": run through gradle, whose appAssets task makes it");
+        ModelCatalog catalog = new ModelCatalog(bundled);
+        assertTrue(catalog.names().contains("humanoid-walk.dae"), catalog.names()::toString);
+        assertTrue(catalog.select("humanoid-walk.glb"), "the APK bundles the .glb: " + catalog.names());
+        List<SkeletalAnimatedMesh> loaded = new CopyOnWriteArrayList<>();
+        ModelLoader.Source source = name -> Files.newInputStream(BUNDLED.resolve(name));
+        try (ModelLoader loader = new ModelLoader(source, new AnimationConfig(), loaded::add)) {
+            loader.load(catalog.current());
+            assertEquals("", awaitIdle(loader).problem());
+        }
+        assertEquals(1, loaded.size());
+        try (SkeletalAnimatedMesh mesh = loaded.get(0)) {
+            assertEquals(1, mesh.geometries().size());
+            assertTrue(mesh.geometries().get(0).isSkinned());
+            assertEquals(19, mesh.geometries().get(0).jointCount(), "the humanoid's joints");
+            assertEquals(1.0, mesh.clip().duration(), 1e-6, "the walk cycle");
+            float[] atStart = skinningAt(mesh, 0.0);
+            float[] passing = skinningAt(mesh, 0.25);
+            double moved = 0;
+            for (int i = 0; i < atStart.length; i++) {
+                moved = Math.max(moved, Math.abs(atStart[i] - passing[i]));
+            }
+            assertTrue(moved > 0.05, "the joints move between 0 s and 0.25 s: " + moved);
+        }
+    }
+
+    private static float[] skinningAt(SkeletalAnimatedMesh mesh, double seconds) {
+        mesh.seek(seconds);
+        mesh.step(0.0);
+        try (org.skinlab.simulation.Frame f = mesh.acquire()) {
+            return f.skinningMatrices(0).clone();
+        }
+    }
 
     @Test
     void loadsOneModelAfterAnotherSkippingTheOnesNoLongerWanted() throws Exception {

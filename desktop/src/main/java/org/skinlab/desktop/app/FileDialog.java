@@ -11,13 +11,19 @@ final class FileDialog {
     private FileDialog() {
     }
 
-    /** Asks for a COLLADA file; null when cancelled. Blocks the window's thread while open. */
-    static Path chooseCollada() {
+    /** The file names the dialog offers, in both cases (the patterns are case-sensitive on Linux). */
+    private static final String[] PATTERNS = {"*.dae", "*.gltf", "*.glb", "*.DAE", "*.GLTF", "*.GLB"};
+
+    /** Asks for a model file (COLLADA or glTF); null when cancelled. Blocks the window's thread while open. */
+    static Path chooseModel() {
         try (MemoryStack stack = MemoryStack.stackPush()) {
-            PointerBuffer patterns = stack.mallocPointer(2);
-            patterns.put(stack.UTF8("*.dae")).put(stack.UTF8("*.DAE")).flip();
-            String chosen = TinyFileDialogs.tinyfd_openFileDialog("Open a COLLADA file", "", patterns,
-                    "COLLADA files (*.dae)", false);
+            PointerBuffer patterns = stack.mallocPointer(PATTERNS.length);
+            for (String pattern : PATTERNS) {
+                patterns.put(stack.UTF8(pattern));
+            }
+            patterns.flip();
+            String chosen = TinyFileDialogs.tinyfd_openFileDialog("Open a model file", "", patterns,
+                    "Models (*.dae, *.gltf, *.glb)", false);
             return chosen == null || chosen.isEmpty() ? null : Path.of(chosen);
         }
     }

@@ -295,7 +295,7 @@ public final class SkinlabApp implements AutoCloseable {
                         "yyyyMMdd-HHmmss")) + ".png"));
                 break;
             case OPEN_FILE:
-                Path chosen = FileDialog.chooseCollada();
+                Path chosen = FileDialog.chooseModel();
                 if (chosen != null) {
                     viewer.open(chosen);
                 }

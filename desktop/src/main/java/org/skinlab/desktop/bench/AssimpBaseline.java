@@ -31,11 +31,18 @@ public final class AssimpBaseline implements AutoCloseable {
     public static final int FAIR_FLAGS = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices;
 
     private final ByteBuffer data;
+    private final String formatHint;
 
-    /** Copies the file's bytes once into native memory (assimp reads from there every run). */
-    public AssimpBaseline(byte[] bytes) {
+    /**
+     * Copies the file's bytes once into native memory (assimp reads from there every run);
+     * {@code fileName}'s extension is assimp's format hint ("dae", "glb", "gltf"), as a file name
+     * would give.
+     */
+    public AssimpBaseline(byte[] bytes, String fileName) {
         data = MemoryUtil.memAlloc(Math.max(1, bytes.length));
         data.put(bytes).flip();
+        int dot = fileName.lastIndexOf('.');
+        formatHint = dot >= 0 ? fileName.substring(dot + 1).toLowerCase(java.util.Locale.ROOT) : "dae";
     }
 
     /** The file's size in bytes. */
@@ -116,8 +123,7 @@ public final class AssimpBaseline implements AutoCloseable {
     }
 
     private AIScene importScene(int flags) {
-        // "dae" as the format hint, as a file name would give.
-        AIScene scene = aiImportFileFromMemory(data, flags, "dae");
+        AIScene scene = aiImportFileFromMemory(data, flags, formatHint);
         if (scene == null) {
             String why = aiGetErrorString();
             throw new IllegalArgumentException(why == null || why.isBlank() ? "assimp returned no scene"

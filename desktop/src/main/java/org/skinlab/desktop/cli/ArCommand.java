@@ -57,7 +57,8 @@ public final class ArCommand implements Callable<Integer> {
     @ArgGroup(exclusive = true, multiplicity = "1")
     Source source;
 
-    @Parameters(index = "0", arity = "0..1", paramLabel = "FILE", description = "a .dae model (default: the bundled character)")
+    @Parameters(index = "0", arity = "0..1", paramLabel = "FILE",
+            description = "a model file: .dae, .gltf or .glb (default: the bundled character)")
     Path file;
 
     @Option(names = "--marker-size", paramLabel = "MM", description = "the printed black square's width (default: ${DEFAULT-VALUE})")

@@ -49,12 +49,12 @@ final class BenchCorpus {
     }
 
     /** Our characters: the {@code .dae} files of the repository's assets/characters. */
-    static List<ColladaFileSearch.Entry> characters(Path root) {
-        return ColladaFileSearch.expand(List.of(root.resolve(CHARACTERS)));
+    static List<ModelFileSearch.Entry> characters(Path root) {
+        return ModelFileSearch.expand(List.of(root.resolve(CHARACTERS)), ModelFileSearch.COLLADA);
     }
 
-    /** Every {@code .dae} below the corpus folder, in {@link ColladaFileSearch}'s order. */
-    static List<ColladaFileSearch.Entry> corpusFiles(Path corpus) {
-        return ColladaFileSearch.expand(List.of(corpus));
+    /** Every {@code .dae} below the corpus folder, in {@link ModelFileSearch}'s order. */
+    static List<ModelFileSearch.Entry> corpusFiles(Path corpus) {
+        return ModelFileSearch.expand(List.of(corpus), ModelFileSearch.COLLADA);
     }
 }

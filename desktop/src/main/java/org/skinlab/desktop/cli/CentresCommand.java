@@ -57,7 +57,7 @@ import picocli.CommandLine.Model.CommandSpec;
         description = {"CoR skinning's centres of rotation: the precomputation timed per skinned mesh, and exported "
                 + "as JSON for other tools (--json)."})
 public final class CentresCommand implements Callable<Integer> {
-    @Parameters(arity = "1..*", paramLabel = "FILE", description = ".dae files")
+    @Parameters(arity = "1..*", paramLabel = "FILE", description = "model files (.dae, .gltf, .glb)")
     List<Path> files = new ArrayList<>();
 
     @Option(names = "--sigma", paramLabel = "S", description = "width of the weight-similarity kernel (default: "

@@ -35,7 +35,7 @@ import picocli.CommandLine.Model.CommandSpec;
         description = {"Compare GPU skinning (the viewer's shader, read back with transform feedback) with the CPU "
                 + "kernels on the same frames.", "Exit status 1 when they differ by more than the tolerance."})
 public final class CheckGpuCommand implements Callable<Integer> {
-    @Parameters(arity = "1..*", paramLabel = "FILE", description = ".dae files")
+    @Parameters(arity = "1..*", paramLabel = "FILE", description = "model files (.dae, .gltf, .glb)")
     List<Path> files;
 
     @Option(names = "--method", paramLabel = "lbs|dqs|cor|all", description = "methods to check (default: all)")

@@ -34,7 +34,7 @@ import picocli.CommandLine.Model.CommandSpec;
         description = {"LBS, DQS and CoR at one joint: volume kept, joint ring, bulge, distance between the methods "
                 + "(a markdown table per time)."})
 public final class CompareCommand implements Callable<Integer> {
-    @Parameters(index = "0", paramLabel = "FILE", description = "a .dae file")
+    @Parameters(index = "0", paramLabel = "FILE", description = "a model file (.dae, .gltf, .glb)")
     Path file;
 
     @Option(names = "--joint", required = true, paramLabel = "NAME",

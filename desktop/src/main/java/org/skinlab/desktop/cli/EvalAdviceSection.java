@@ -62,7 +62,8 @@ final class EvalAdviceSection implements EvalSection {
         EvalScaling.influences(quick ? 8_000 : 32_000, List.of(1, 2, 4, 8), warmup, seconds,
                 results.putObject("influences"), f -> context.progress(0.6 + 0.25 * f));
         List<Path> files = new ArrayList<>();
-        for (ColladaFileSearch.Entry e : ColladaFileSearch.expand(List.of(context.root().resolve("assets")))) {
+        Path assetsFolder = context.root().resolve("assets");
+        for (ModelFileSearch.Entry e : ModelFileSearch.expand(List.of(assetsFolder), ModelFileSearch.COLLADA)) {
             files.add(e.path());
         }
         Path cowboy = context.corpus() == null ? null : context.corpus().resolve(EvalTimeSection.THESIS.get(0).file());

@@ -69,7 +69,7 @@ final class EvalLoadSection implements EvalSection {
             results.put("assimpMissing", e.getMessage());
             context.say("no assimp: " + e.getMessage());
         }
-        List<ParseTimer.Input> assets = files(ColladaFileSearch.expand(List.of(context.root().resolve("assets"))));
+        List<ParseTimer.Input> assets = files(ModelFileSearch.expand(List.of(context.root().resolve("assets"))));
         List<ParseTimer.Input> corpus = context.corpus() == null ? List.of()
                 : files(BenchCorpus.corpusFiles(context.corpus()));
         List<ParseTimer.Input> cts = context.cts() == null ? List.of() : ctsFiles(context.cts(), quick ? 8 : 1);
@@ -95,9 +95,9 @@ final class EvalLoadSection implements EvalSection {
         }
     }
 
-    private static List<ParseTimer.Input> files(List<ColladaFileSearch.Entry> entries) {
+    private static List<ParseTimer.Input> files(List<ModelFileSearch.Entry> entries) {
         List<ParseTimer.Input> inputs = new ArrayList<>();
-        for (ColladaFileSearch.Entry e : entries) {
+        for (ModelFileSearch.Entry e : entries) {
             try {
                 inputs.add(new ParseTimer.Input(e.path().getFileName().toString(), Files.readAllBytes(e.path()),
                         e.path()));

@@ -69,7 +69,8 @@ final class EvalQualitySection implements EvalSection {
         results.put("cap8", InfluenceCapReport.CAP_8);
         List<Path> files = new ArrayList<>();
         for (String folder : FOLDERS) {
-            for (ColladaFileSearch.Entry e : ColladaFileSearch.expand(List.of(context.root().resolve(folder)))) {
+            Path dir = context.root().resolve(folder);
+            for (ModelFileSearch.Entry e : ModelFileSearch.expand(List.of(dir), ModelFileSearch.COLLADA)) {
                 files.add(e.path());
             }
         }

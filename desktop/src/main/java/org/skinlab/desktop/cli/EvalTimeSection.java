@@ -73,7 +73,8 @@ final class EvalTimeSection implements EvalSection {
         results.put("seconds", seconds);
         results.put("cap", CAP);
         List<Path> files = new ArrayList<>();
-        for (ColladaFileSearch.Entry e : ColladaFileSearch.expand(List.of(context.root().resolve("assets")))) {
+        Path assetsFolder = context.root().resolve("assets");
+        for (ModelFileSearch.Entry e : ModelFileSearch.expand(List.of(assetsFolder), ModelFileSearch.COLLADA)) {
             files.add(e.path());
         }
         Path cowboy = context.corpus() == null ? null : context.corpus().resolve(THESIS.get(0).file());

@@ -50,7 +50,8 @@ public final class FrameBenchCommand implements Callable<Integer> {
     private static final double FIRST_WARMUP = 2.0;
 
     @Parameters(arity = "0..*", paramLabel = "FILE",
-            description = ".dae files or folders (default without --all-corpus: assets/characters/humanoid-walk.dae)")
+            description = "model files (.dae, .gltf, .glb) or folders (default without --all-corpus: "
+                    + "assets/characters/humanoid-walk.dae)")
     List<Path> files = new ArrayList<>();
 
     @Option(names = "--all-corpus",
@@ -179,7 +180,7 @@ public final class FrameBenchCommand implements Callable<Integer> {
     private List<Input> inputs() {
         List<Input> inputs = new ArrayList<>();
         List<Path> given = files.isEmpty() && !allCorpus ? List.of(DEFAULT_FILE) : files;
-        for (ColladaFileSearch.Entry e : ColladaFileSearch.expand(given)) {
+        for (ModelFileSearch.Entry e : ModelFileSearch.expand(given)) {
             inputs.add(new Input(e.path(), false));
         }
         if (allCorpus) {
@@ -198,10 +199,10 @@ public final class FrameBenchCommand implements Callable<Integer> {
             if (!Files.isDirectory(shared)) {
                 throw usage("--corpus: not a folder: " + shared);
             }
-            for (ColladaFileSearch.Entry e : BenchCorpus.characters(root)) {
+            for (ModelFileSearch.Entry e : BenchCorpus.characters(root)) {
                 inputs.add(new Input(e.path(), false));
             }
-            for (ColladaFileSearch.Entry e : BenchCorpus.corpusFiles(shared)) {
+            for (ModelFileSearch.Entry e : BenchCorpus.corpusFiles(shared)) {
                 inputs.add(new Input(e.path(), true));
             }
         }

@@ -10,9 +10,9 @@ import java.util.Map;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
-import org.skinlab.collada.ColladaException;
 import org.skinlab.desktop.ExitCodes;
 import org.skinlab.model.Mesh;
+import org.skinlab.model.ImportException;
 import org.skinlab.model.Model;
 
 /**
@@ -23,7 +23,7 @@ import org.skinlab.model.Model;
 final class InspectBatch {
     /** Reads one file: the importer, or in tests something that fails on purpose. */
     interface Reader {
-        Model read(Path file) throws IOException, ColladaException;
+        Model read(Path file) throws IOException, ImportException;
     }
 
     static final String OUT_OF_MEMORY = "out of memory; give Java more with SKINLAB_OPTS=-Xmx4g (or JAVA_OPTS)";
@@ -52,8 +52,8 @@ final class InspectBatch {
      * Inspects every entry in order and returns the exit status: 1 if any internal error, else 3
      * if any file was refused or could not be read or any folder could not be listed, else 0.
      */
-    int run(List<ColladaFileSearch.Entry> entries) {
-        for (ColladaFileSearch.Entry entry : entries) {
+    int run(List<ModelFileSearch.Entry> entries) {
+        for (ModelFileSearch.Entry entry : entries) {
             inspect(entry);
         }
         if (!json) {
@@ -66,7 +66,7 @@ final class InspectBatch {
         return internal > 0 ? ExitCodes.INTERNAL : refused + unlisted > 0 ? ExitCodes.INVALID_FILE : ExitCodes.OK;
     }
 
-    private void inspect(ColladaFileSearch.Entry entry) {
+    private void inspect(ModelFileSearch.Entry entry) {
         Path path = entry.path();
         String name = path.getFileName() == null ? path.toString() : path.getFileName().toString();
         try {
@@ -87,12 +87,13 @@ final class InspectBatch {
             try {
                 model = reader.read(path);
                 millis = (System.nanoTime() - start) / 1e6;
-            } catch (ColladaException e) {
-                // The message is "name: element: problem"; on stderr the path the user gave replaces the name.
-                refuse(entry, SkinlabCommand.oneLine(e.getMessage()), SkinlabCommand.oneLine(e.element() + ": " + e.problem()));
+            } catch (ImportException e) {
+                // The message is "name: location: problem"; on stderr the path the user gave replaces the name.
+                refuse(entry, SkinlabCommand.oneLine(e.getMessage()),
+                        SkinlabCommand.oneLine(e.location() + ": " + e.problem()));
                 return;
             } catch (IOException e) {
-                String why = "cannot be read: " + SkinlabCommand.oneLine(ColladaFileSearch.reason(e));
+                String why = "cannot be read: " + SkinlabCommand.oneLine(ModelFileSearch.reason(e));
                 refuse(entry, name + ": " + why, why);
                 return;
             }
@@ -128,18 +129,18 @@ final class InspectBatch {
         return null;
     }
 
-    private void refuse(ColladaFileSearch.Entry entry, String message, String detail) {
+    private void refuse(ModelFileSearch.Entry entry, String message, String detail) {
         refused++;
         report(entry, message, detail);
     }
 
-    private void fail(ColladaFileSearch.Entry entry, String name, String detail) {
+    private void fail(ModelFileSearch.Entry entry, String name, String detail) {
         internal++;
         report(entry, name + ": " + detail, detail);
     }
 
     /** JSON: an error object on stdout, in the file's place. Text: one line on stderr naming the file. */
-    private void report(ColladaFileSearch.Entry entry, String message, String detail) {
+    private void report(ModelFileSearch.Entry entry, String message, String detail) {
         if (json) {
             ObjectNode error = mapper.createObjectNode();
             error.put("file", entry.shown());

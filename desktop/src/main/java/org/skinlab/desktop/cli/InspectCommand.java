@@ -14,8 +14,8 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
-import org.skinlab.collada.ColladaImporter;
 import org.skinlab.desktop.ExitCodes;
+import org.skinlab.importer.ModelImporter;
 import org.skinlab.model.AnimationClip;
 import org.skinlab.model.ImportWarning;
 import org.skinlab.model.Material;
@@ -76,15 +76,16 @@ import picocli.CommandLine.Model.CommandSpec;
  * cannot be imported is one line on stderr and status 3, a missing file status 2.
  *
  * <p><b>Several FILEs, or a folder</b> (a batch): each argument in the order given; a folder is
- * searched recursively for {@code *.dae} (any case), its files sorted by their path inside it
- * name by name, links to folders inside it not followed (see {@link ColladaFileSearch}). A file
+ * searched recursively for model files ({@code *.dae}, {@code *.gltf}, {@code *.glb}, any case),
+ * its files sorted by their path inside it
+ * name by name, links to folders inside it not followed (see {@link ModelFileSearch}). A file
  * named as an argument is read whatever its extension. Files are read one after another, never
  * all held at once. The {@code "file"} value, loaded or not, is the argument as given joined with
  * the path inside a folder argument ({@code models/a/walk.dae} for {@code inspect models/}).
  * <ul>
  * <li>{@code --json}: JSON Lines on stdout, one line per file in order: the object above for a
  * loaded file, and {@code {"file":PATH, "error":MESSAGE}} (exactly these two keys) for a file
- * that is refused (the {@code ColladaException} message, one line), cannot be read, is not a
+ * that is refused (the {@code ImportException} message, one line), cannot be read, is not a
  * regular file (a pipe or a broken link is never opened), for a folder that cannot be listed, or
  * for a file that hit a bug or the memory limit. Nothing on stderr.</li>
  * <li>text: the summaries one after another on stdout; each problem one line on stderr,
@@ -93,16 +94,16 @@ import picocli.CommandLine.Model.CommandSpec;
  * any).</li>
  * </ul>
  * Before anything is read, an argument that names nothing to inspect (a path that does not exist,
- * or a folder with no {@code .dae} file below it) is a usage error: one line on stderr naming every
+ * or a folder with no model file below it) is a usage error: one line on stderr naming every
  * such argument, nothing on stdout, status 2. Otherwise the status is 1 if any file hit a bug or
  * the memory limit (it wins: a bug must not hide behind a refusal), else 3 if any file was refused
  * or unreadable or any folder could not be listed, else 0.
  */
 @Command(name = "inspect", mixinStandardHelpOptions = true,
-        description = "Import COLLADA files and summarise their meshes, skins, clips and warnings.")
+        description = "Import model files (COLLADA, glTF) and summarise their meshes, skins, clips and warnings.")
 public final class InspectCommand implements Callable<Integer> {
     @Parameters(arity = "1..*", paramLabel = "FILE",
-            description = "COLLADA files, or folders searched recursively for .dae files")
+            description = "model files (.dae, .gltf, .glb), or folders searched recursively for them")
     List<Path> files;
 
     @Option(names = "--json", description = "print each summary as one line of JSON (JSON Lines for several files)")
@@ -120,9 +121,9 @@ public final class InspectCommand implements Callable<Integer> {
         if (files.size() == 1 && !Files.isDirectory(files.get(0))) {
             return single(files.get(0));
         }
-        List<ColladaFileSearch.Entry> entries = ColladaFileSearch.expand(files);
+        List<ModelFileSearch.Entry> entries = ModelFileSearch.expand(files);
         CommandLine cl = spec.commandLine();
-        return new InspectBatch(json, !noInfluenceCaps, cl.getOut(), cl.getErr(), ColladaImporter::read).run(entries);
+        return new InspectBatch(json, !noInfluenceCaps, cl.getOut(), cl.getErr(), ModelImporter::read).run(entries);
     }
 
     /** One file, as before batches existed: a refused file is a {@link CommandFailure} (one line on stderr). */

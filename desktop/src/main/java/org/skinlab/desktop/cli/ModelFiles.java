@@ -5,9 +5,9 @@ import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 
-import org.skinlab.collada.ColladaException;
-import org.skinlab.collada.ColladaImporter;
 import org.skinlab.desktop.ExitCodes;
+import org.skinlab.importer.ModelImporter;
+import org.skinlab.model.ImportException;
 import org.skinlab.model.Model;
 
 /** Loads the file a command names, turning failures into {@link CommandFailure}s. */
@@ -31,13 +31,13 @@ final class ModelFiles {
             throw new CommandFailure(ExitCodes.USAGE, "file not found: " + file, null);
         }
         if (Files.isDirectory(file)) {
-            throw new CommandFailure(ExitCodes.USAGE, file + " is a directory, not a COLLADA file", null);
+            throw new CommandFailure(ExitCodes.USAGE, file + " is a directory, not a model file", null);
         }
         long start = System.nanoTime();
         try {
-            Model model = ColladaImporter.read(file);
+            Model model = ModelImporter.read(file);
             return new Loaded(model, (System.nanoTime() - start) / 1e6);
-        } catch (ColladaException e) {
+        } catch (ImportException e) {
             throw new CommandFailure(ExitCodes.INVALID_FILE, e.getMessage(), e);
         } catch (NoSuchFileException e) {
             throw new CommandFailure(ExitCodes.USAGE, "file not found: " + file, e);

@@ -18,6 +18,8 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 import org.skinlab.desktop.ExitCodes;
 import org.skinlab.desktop.bench.AssimpBaseline;
 import org.skinlab.desktop.bench.SyntheticCollada;
+import org.skinlab.desktop.bench.SyntheticGltf;
+import org.skinlab.importer.ModelImporter;
 
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -35,12 +37,18 @@ import picocli.CommandLine.Model.CommandSpec;
  * bytes in memory, after its own warm-up of the same length, with the same number of runs, right
  * after ours on each file) and reports assimp's times and the ratio assimp median / our median.
  * A file assimp refuses is reported as failed, with assimp's message, and measured for us alone.
+ *
+ * <p>Without FILEs it also generates one character twice, as a {@code .glb} ({@link SyntheticGltf})
+ * and as a {@code .dae} ({@link SyntheticCollada}), both about 10 MB by default, and reports how
+ * much faster our glTF import is than our COLLADA import of the same character (COLLADA median /
+ * glTF median), beside assimp's ratio on each.
  */
 @Command(name = "parse", mixinStandardHelpOptions = true,
         description = "Import speed on our assets, the shared corpus and a generated large file.")
 public final class ParseBenchCommand implements Callable<Integer> {
     @Parameters(arity = "0..*", paramLabel = "FILE",
-            description = "files to measure (default: assets/**/*.dae, the shared corpus and a generated file)")
+            description = "files to measure (default: our assets' .dae and .glb files, the shared corpus, a generated "
+                    + ".dae and a character generated as .glb and .dae)")
     List<Path> files = new ArrayList<>();
 
     @Option(names = "--assets", paramLabel = "DIR", description = "our assets (default: ${DEFAULT-VALUE})")
@@ -49,6 +57,11 @@ public final class ParseBenchCommand implements Callable<Integer> {
     @Option(names = "--corpus", paramLabel = "DIR",
             description = "third-party corpus, skipped when absent (default: ${DEFAULT-VALUE})")
     Path corpus = Path.of("../shared/corpus");
+
+    @Option(names = "--twin-triangles", paramLabel = "N",
+            description = "triangles of the character generated as both .glb and .dae (about 10 MB each at the "
+                    + "default); 0 for none (default: ${DEFAULT-VALUE})")
+    long twinTriangles = 90_000;
 
     @Option(names = "--generated-triangles", paramLabel = "N",
             description = "triangles of the generated file; 0 for none (default: ${DEFAULT-VALUE})")
@@ -78,6 +91,9 @@ public final class ParseBenchCommand implements Callable<Integer> {
 
     /** The triangles the generated file has (its name in the report). */
     private long generatedActual;
+    /** The names of the generated .glb and .dae of the same character in the report, or null. */
+    private String twinGltf;
+    private String twinCollada;
 
     @Override
     public Integer call() throws IOException {
@@ -85,15 +101,20 @@ public final class ParseBenchCommand implements Callable<Integer> {
         PrintWriter err = spec.commandLine().getErr();
         List<Path> inputs = new ArrayList<>(files);
         if (inputs.isEmpty()) {
-            inputs.addAll(daeFiles(assets));
+            inputs.addAll(modelFiles(assets));
             if (Files.isDirectory(corpus)) {
-                inputs.addAll(daeFiles(corpus));
+                inputs.addAll(modelFiles(corpus));
             } else {
                 err.println("bench parse: no corpus at " + corpus + "; measuring our assets only");
             }
         }
         Path generated = null;
+        Path twinFolder = null;
         try {
+            if (twinTriangles > 0 && files.isEmpty()) {
+                twinFolder = Files.createTempDirectory("skinlab-twin-");
+                inputs.addAll(writeTwins(twinFolder, err));
+            }
             if (generatedTriangles > 0 && files.isEmpty()) {
                 generated = Files.createTempFile("skinlab-generated-", ".dae");
                 long t = SyntheticCollada.write(generated, generatedTriangles);
@@ -124,6 +145,7 @@ public final class ParseBenchCommand implements Callable<Integer> {
                 out.println(new ObjectMapper().writeValueAsString(toJson(results, assimpVersion)));
             } else {
                 out.print(table(results, compareAssimp));
+                out.print(twinLine(results));
             }
             out.flush();
             return ExitCodes.OK;
@@ -131,7 +153,58 @@ public final class ParseBenchCommand implements Callable<Integer> {
             if (generated != null) {
                 Files.deleteIfExists(generated);
             }
+            if (twinFolder != null) {
+                try (Stream<Path> s = Files.list(twinFolder)) {
+                    for (Path p : s.collect(Collectors.toList())) {
+                        Files.deleteIfExists(p);
+                    }
+                }
+                Files.deleteIfExists(twinFolder);
+            }
         }
+    }
+
+    /** The same character as a .glb and as a .dae, in {@code folder}; their names go into the report. */
+    private List<Path> writeTwins(Path folder, PrintWriter err) throws IOException {
+        twinGltf = "twin-" + twinTriangles + "-triangles.glb";
+        twinCollada = "twin-" + twinTriangles + "-triangles.dae";
+        Path glb = folder.resolve(twinGltf);
+        Path dae = folder.resolve(twinCollada);
+        long t = SyntheticGltf.write(glb, twinTriangles);
+        SyntheticCollada.write(dae, twinTriangles);
+        err.printf(Locale.ROOT, "bench parse: generated one character (%d triangles) as %s (%.1f MB) and %s (%.1f MB)%n",
+                t, twinGltf, Files.size(glb) / 1e6, twinCollada, Files.size(dae) / 1e6);
+        return List.of(glb, dae);
+    }
+
+    /** The generated .glb's and .dae's results (same character), or null when not generated. */
+    private ParseTimer.Result[] twins(List<ParseTimer.Result> results) {
+        ParseTimer.Result gltf = null;
+        ParseTimer.Result collada = null;
+        for (ParseTimer.Result r : results) {
+            if (r.name.equals(twinGltf)) {
+                gltf = r;
+            } else if (r.name.equals(twinCollada)) {
+                collada = r;
+            }
+        }
+        return gltf == null || collada == null ? null : new ParseTimer.Result[] {gltf, collada};
+    }
+
+    private String twinLine(List<ParseTimer.Result> results) {
+        ParseTimer.Result[] t = twins(results);
+        if (t == null) {
+            return "";
+        }
+        String line = String.format(Locale.ROOT, "same character: .glb %.2f ms, .dae %.2f ms: our glTF import is "
+                + "%.2fx our COLLADA import", t[0].median(), t[1].median(), t[1].median() / t[0].median());
+        if (t[0].assimpMillis != null) {
+            line += String.format(Locale.ROOT, "; assimp/ours %.2f on the .glb", t[0].assimpRatio());
+        }
+        if (t[1].assimpMillis != null) {
+            line += String.format(Locale.ROOT, ", %.2f on the .dae", t[1].assimpRatio());
+        }
+        return line + System.lineSeparator();
     }
 
     private List<ParseTimer.Result> measure(List<Path> inputs, List<byte[]> data, Path generated, PrintWriter err) {
@@ -145,12 +218,12 @@ public final class ParseBenchCommand implements Callable<Integer> {
         return new ParseTimer(warmupSeconds, runs, compareAssimp ? assimpFlags : -1, false, err, "bench parse: ").measure(timed);
     }
 
-    private static List<Path> daeFiles(Path dir) throws IOException {
+    private static List<Path> modelFiles(Path dir) throws IOException {
         if (!Files.isDirectory(dir)) {
             return List.of();
         }
         try (Stream<Path> s = Files.walk(dir)) {
-            return s.filter(p -> p.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".dae"))
+            return s.filter(p -> ModelImporter.isModelFile(p.getFileName().toString()))
                     .sorted().collect(Collectors.toList());
         }
     }
@@ -189,6 +262,13 @@ public final class ParseBenchCommand implements Callable<Integer> {
                     f.put("assimpError", r.assimpError);
                 }
             }
+        }
+        ParseTimer.Result[] t = twins(results);
+        if (t != null) {
+            ObjectNode same = root.putObject("sameCharacter");
+            same.put("gltf", t[0].name);
+            same.put("collada", t[1].name);
+            same.put("colladaOverGltf", round(t[1].median() / t[0].median()));
         }
         return root;
     }

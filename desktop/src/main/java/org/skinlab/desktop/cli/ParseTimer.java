@@ -10,10 +10,10 @@ import java.util.List;
 import java.util.Locale;
 import java.util.function.IntConsumer;
 
-import org.skinlab.collada.ColladaException;
-import org.skinlab.collada.ColladaImporter;
 import org.skinlab.desktop.ExitCodes;
 import org.skinlab.desktop.bench.AssimpBaseline;
+import org.skinlab.importer.ModelImporter;
+import org.skinlab.model.ImportException;
 import org.skinlab.model.Mesh;
 import org.skinlab.model.Model;
 
@@ -94,8 +94,8 @@ final class ParseTimer {
         long triangles;
         String failure;
 
-        AssimpFile(byte[] bytes) {
-            assimp = new AssimpBaseline(bytes);
+        AssimpFile(byte[] bytes, String name) {
+            assimp = new AssimpBaseline(bytes, name);
         }
     }
 
@@ -144,7 +144,7 @@ final class ParseTimer {
         try {
             if (assimpFlags >= 0) {
                 for (Input in : inputs) {
-                    assimp.add(new AssimpFile(in.bytes()));
+                    assimp.add(new AssimpFile(in.bytes(), in.name()));
                 }
                 assimpWarmup(assimp);
             }
@@ -262,9 +262,8 @@ final class ParseTimer {
 
     private static Model importOnce(Input in) {
         try {
-            return in.location() == null ? ColladaImporter.read(new ByteArrayInputStream(in.bytes()), in.name())
-                    : ColladaImporter.read(new ByteArrayInputStream(in.bytes()), in.name(), in.location());
-        } catch (ColladaException e) {
+            return ModelImporter.read(new ByteArrayInputStream(in.bytes()), in.name(), in.location());
+        } catch (ImportException e) {
             throw new CommandFailure(ExitCodes.INVALID_FILE, e.getMessage(), e);
         } catch (IOException e) {
             throw new CommandFailure(ExitCodes.INVALID_FILE, in.name() + ": " + e.getMessage(), e);

@@ -60,8 +60,8 @@ import picocli.CommandLine.Model.CommandSpec;
  * {@link Float#toString(float)}).
  */
 @Command(name = "pose", mixinStandardHelpOptions = true, sortOptions = false,
-        description = {"Deform every placed mesh of a COLLADA file at given clip times (LBS, DQS or CoR) and write the "
-                + "world positions.",
+        description = {"Deform every placed mesh of a model file (COLLADA or glTF) at given clip times (LBS, DQS or "
+                + "CoR) and write the world positions.",
                 "",
                 "JSON (--json OUT, '-' for stdout): {\"file\", \"clip\", \"method\", \"times\", \"meshes\":[{\"geometry\", "
                         + "\"name\", \"poses\":[[x,y,z, ...] per time]}]}. One mesh entry per placed mesh in scene order "
@@ -72,7 +72,7 @@ import picocli.CommandLine.Model.CommandSpec;
                         + "when the geometry has none. Floats print so that they read back exactly.",
                 "Without --json: a short summary (bounding box per mesh and time)."})
 public final class PoseCommand implements Callable<Integer> {
-    @Parameters(index = "0", paramLabel = "FILE", description = "the .dae file")
+    @Parameters(index = "0", paramLabel = "FILE", description = "the model file (.dae, .gltf, .glb)")
     Path file;
 
     @Option(names = "--time", required = true, split = ",", paramLabel = "T", converter = TimeConverter.class,

@@ -37,8 +37,8 @@ import picocli.CommandLine.Model.CommandSpec;
         description = {"Frames per second against the number of animated copies, CPU and GPU skinning, LBS and DQS "
                 + "(the thesis' figure).", "Each series stops below 30 fps (or at --max-instances)."})
 public final class RenderBenchCommand implements Callable<Integer> {
-    @Parameters(index = "0", arity = "0..1", paramLabel = "FILE", description = "a .dae file (default: the bundled "
-            + "walking character)")
+    @Parameters(index = "0", arity = "0..1", paramLabel = "FILE",
+            description = "a model file, .dae/.gltf/.glb (default: the bundled walking character)")
     Path file;
 
     @Option(names = "--size", paramLabel = "WxH", converter = ViewCommand.SizeConverter.class,

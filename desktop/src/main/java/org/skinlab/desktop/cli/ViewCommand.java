@@ -23,13 +23,14 @@ import picocli.CommandLine.Model.CommandSpec;
  * given); with {@code --screenshot OUT.png} one frame rendered off-screen and written, then exit.
  */
 @Command(name = "view", mixinStandardHelpOptions = true,
-        description = {"Open the viewer window on a COLLADA file (default: the bundled walking character).",
+        description = {"Open the viewer window on a model file, COLLADA or glTF (default: the bundled walking "
+                + "character).",
                 "With --screenshot, render one frame to a PNG and exit (no window is shown)."})
 public final class ViewCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    @Parameters(index = "0", arity = "0..1", paramLabel = "FILE", description = "a .dae file")
+    @Parameters(index = "0", arity = "0..1", paramLabel = "FILE", description = "a model file (.dae, .gltf, .glb)")
     Path file;
 
     @Option(names = "--method", paramLabel = "lbs|dqs|cor", converter = PoseCommand.MethodConverter.class,

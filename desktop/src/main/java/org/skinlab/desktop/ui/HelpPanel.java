@@ -16,7 +16,8 @@ final class HelpPanel {
         ImGui.setNextWindowPos(f.width() - 8f, f.height() - 8f, ImGuiCond.Always, 1f, 1f);
         ImGui.setNextWindowBgAlpha(0.85f);
         ImGui.begin("Keys", ImGuiWindowFlags.AlwaysAutoResize | ImGuiWindowFlags.NoMove | ImGuiWindowFlags.NoCollapse);
-        Widgets.dim("Mouse: left drag orbits, right or middle drag pans, wheel zooms; drop a .dae to open it");
+        Widgets.dim("Mouse: left drag orbits, right or middle drag pans, wheel zooms; drop a .dae, .gltf or .glb "
+                + "to open it");
         if (ImGui.beginTable("keys", 4, ImGuiTableFlags.SizingFixedFit)) {
             ViewerAction[] all = ALL;
             int half = (all.length + 1) / 2;

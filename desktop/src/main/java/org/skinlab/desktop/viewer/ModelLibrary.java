@@ -10,9 +10,13 @@ import java.util.Collections;
 import java.util.List;
 import java.util.stream.Stream;
 
+import org.skinlab.importer.ModelImporter;
+
 /**
- * The models "previous/next mesh" cycle through: every bundled {@code .dae} under the assets
- * folder (the default character first, the rest by path), then the files the user opened.
+ * The models "previous/next mesh" cycle through: every bundled model file under the assets
+ * folder ({@code .dae}, {@code .gltf}, {@code .glb}: our assets' {@code .glb} twins come right
+ * after their {@code .dae}; the default character first, the rest by path), then the files the
+ * user opened.
  */
 public final class ModelLibrary {
     /** The model the viewer opens when given none, relative to the assets folder. */
@@ -27,7 +31,7 @@ public final class ModelLibrary {
         if (this.assets != null) {
             List<Path> found = new ArrayList<>();
             try (Stream<Path> files = Files.walk(this.assets)) {
-                files.filter(p -> p.getFileName().toString().toLowerCase(java.util.Locale.ROOT).endsWith(".dae"))
+                files.filter(p -> ModelImporter.isModelFile(p.getFileName().toString()))
                         .filter(Files::isRegularFile).forEach(p -> found.add(p.toAbsolutePath().normalize()));
             } catch (IOException e) {
                 throw new UncheckedIOException("cannot list the assets in " + this.assets, e);

@@ -11,9 +11,9 @@ import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicReference;
 
-import org.skinlab.collada.ColladaException;
-import org.skinlab.collada.ColladaImporter;
 import org.skinlab.desktop.render.DrawSettings;
+import org.skinlab.importer.ModelImporter;
+import org.skinlab.model.ImportException;
 import org.skinlab.model.Model;
 import org.skinlab.scene.ModelFraming;
 import org.skinlab.simulation.AnimationConfig;
@@ -125,7 +125,7 @@ public final class Viewer implements AutoCloseable {
 
     private void load(Path file, Model already, int clip, double time) {
         if (file == null) {
-            status = "no model to open (no assets folder found; open a .dae file)";
+            status = "no model to open (no assets folder found; open a .dae, .gltf or .glb file)";
             return;
         }
         Path path = file.toAbsolutePath().normalize();
@@ -182,7 +182,7 @@ public final class Viewer implements AutoCloseable {
             }
             return new LoadedModel(path, name, model, clipIndex, mesh, framing, comparisons,
                     (System.nanoTime() - t0) / 1e6);
-        } catch (ColladaException e) {
+        } catch (ImportException e) {
             close(mesh);
             return oneLine(e.getMessage());
         } catch (IOException e) {
@@ -200,14 +200,14 @@ public final class Viewer implements AutoCloseable {
         }
     }
 
-    private static Model read(Path path) throws IOException, ColladaException {
+    private static Model read(Path path) throws IOException, ImportException {
         if (!Files.exists(path)) {
             throw new IOException("file not found");
         }
         if (Files.isDirectory(path)) {
-            throw new IOException("a directory, not a COLLADA file");
+            throw new IOException("a directory, not a model file");
         }
-        return ColladaImporter.read(path);
+        return ModelImporter.read(path);
     }
 
     private static void close(SkeletalAnimatedMesh mesh) {

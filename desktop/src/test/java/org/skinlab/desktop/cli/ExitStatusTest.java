@@ -121,7 +121,7 @@ class ExitStatusTest {
     void directoryIsAUsageErrorForPose() {
         Cli r = Cli.run("pose", dir.toString(), "--time", "0", "--method", "lbs");
         assertEquals(2, r.status, r::toString);
-        assertEquals("skinlab: " + dir + " is a directory, not a COLLADA file", r.errLines()[0]);
+        assertEquals("skinlab: " + dir + " is a directory, not a model file", r.errLines()[0]);
     }
 
     /** {@code inspect} searches a folder (InspectBatchTest); one without a .dae file names nothing to inspect. */
@@ -131,7 +131,7 @@ class ExitStatusTest {
         assertEquals(2, r.status, r::toString);
         assertEquals("", r.out, r::toString);
         assertEquals(1, r.errLines().length, r::toString);
-        assertEquals("skinlab: no .dae file in folder " + dir, r.errLines()[0]);
+        assertEquals("skinlab: no model file (.dae, .gltf, .glb) in folder " + dir, r.errLines()[0]);
     }
 
     @Test

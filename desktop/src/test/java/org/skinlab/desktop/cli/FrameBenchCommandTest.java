@@ -219,7 +219,7 @@ class FrameBenchCommandTest {
     void allCorpusFindsTheSharedCorpusBesideTheRepository() throws Exception {
         Path corpus = Cli.corpusOrSkip();
         List<String> expected = new ArrayList<>(List.of("humanoid-walk.dae"));
-        for (ColladaFileSearch.Entry e : ColladaFileSearch.expand(List.of(corpus))) {
+        for (ModelFileSearch.Entry e : ModelFileSearch.expand(List.of(corpus))) {
             if (ColladaImporter.read(e.path()).instances().stream().anyMatch(MeshInstance::isSkinned)) {
                 expected.add(e.path().getFileName().toString());
             }

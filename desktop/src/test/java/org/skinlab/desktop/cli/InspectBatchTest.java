@@ -209,13 +209,14 @@ class InspectBatchTest {
             Cli r = Cli.run(args);
             assertEquals(ExitCodes.USAGE, r.status, r::toString);
             assertEquals("", r.out, r::toString);
-            assertEquals(List.of("skinlab: no .dae file in folder " + empty), List.of(r.errLines()));
+            assertEquals(List.of("skinlab: no model file (.dae, .gltf, .glb) in folder " + empty),
+                    List.of(r.errLines()));
         }
         // Even beside a good file: an argument that names nothing is a mistake worth stopping for.
         Cli r = Cli.run("inspect", "--json", walk.toString(), other.toString());
         assertEquals(ExitCodes.USAGE, r.status, r::toString);
         assertEquals("", r.out, r::toString);
-        assertEquals(List.of("skinlab: no .dae file in folder " + other), List.of(r.errLines()));
+        assertEquals(List.of("skinlab: no model file (.dae, .gltf, .glb) in folder " + other), List.of(r.errLines()));
     }
 
     @Test
@@ -326,8 +327,8 @@ class InspectBatchTest {
     void folderThatCouldNotBeListedIsReportedInItsPlaceAndNotCountedAsAFile() throws Exception {
         Path ok = copy("cylinders/cylinder-bend.dae", "models/a.dae");
         Path locked = Files.createDirectories(dir.resolve("models/locked"));
-        List<ColladaFileSearch.Entry> entries = List.of(new ColladaFileSearch.Entry(ok, ok.toString(), null),
-                new ColladaFileSearch.Entry(locked, locked.toString(), "cannot list folder: permission denied"));
+        List<ModelFileSearch.Entry> entries = List.of(new ModelFileSearch.Entry(ok, ok.toString(), null),
+                new ModelFileSearch.Entry(locked, locked.toString(), "cannot list folder: permission denied"));
         StringWriter out = new StringWriter();
         StringWriter err = new StringWriter();
         int status = new InspectBatch(true, true, new PrintWriter(out), new PrintWriter(err), ColladaImporter::read).run(entries);
@@ -371,7 +372,7 @@ class InspectBatchTest {
                     return ColladaImporter.read(file);
             }
         };
-        List<ColladaFileSearch.Entry> entries = ColladaFileSearch.expand(List.of(models));
+        List<ModelFileSearch.Entry> entries = ModelFileSearch.expand(List.of(models));
 
         StringWriter out = new StringWriter();
         StringWriter err = new StringWriter();
@@ -418,7 +419,7 @@ class InspectBatchTest {
             expected = walk.filter(Files::isRegularFile)
                     .filter(p -> p.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".dae"))
                     .map(p -> corpus.relativize(p))
-                    .sorted(ColladaFileSearch.BY_PATH)
+                    .sorted(ModelFileSearch.BY_PATH)
                     .map(p -> corpus.resolve(p).toString())
                     .collect(Collectors.toList());
         }

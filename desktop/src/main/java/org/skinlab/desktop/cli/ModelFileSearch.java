@@ -15,12 +15,17 @@ import java.util.Comparator;
 import java.util.Deque;
 import java.util.List;
 import java.util.Locale;
+import java.util.function.Predicate;
+
 import org.skinlab.desktop.ExitCodes;
+import org.skinlab.importer.ModelImporter;
 
 /**
  * Turns the FILE arguments of a batch command into the files to read, before anything is read:
  * a file argument is taken as it is (whatever its extension), a folder argument is searched
- * recursively for {@code *.dae} (any case).
+ * recursively for model files ({@code *.dae}, {@code *.gltf}, {@code *.glb}, any case:
+ * {@link ModelImporter#isModelFile}), or for COLLADA files only ({@link #COLLADA}) where a
+ * report is about our COLLADA assets and their {@code .glb} twins would only repeat them.
  *
  * <p>Arguments keep the order they were given in; the files found in one folder are sorted by
  * their path inside it, name by name (so a folder's files stay together, and the order does not
@@ -31,8 +36,13 @@ import org.skinlab.desktop.ExitCodes;
  *
  * <p>Only paths are kept, never file contents: a batch of any size reads one file at a time.
  */
-final class ColladaFileSearch {
-    private ColladaFileSearch() {
+final class ModelFileSearch {
+    /** Every file {@link ModelImporter} reads. */
+    static final Predicate<String> MODELS = ModelImporter::isModelFile;
+    /** COLLADA files only. */
+    static final Predicate<String> COLLADA = name -> name.toLowerCase(Locale.ROOT).endsWith(".dae");
+
+    private ModelFileSearch() {
     }
 
     /**
@@ -58,23 +68,30 @@ final class ColladaFileSearch {
         return Integer.compare(a.getNameCount(), b.getNameCount());
     };
 
+    /** The files the arguments name, in order, folders searched for every model file. */
+    static List<Entry> expand(List<Path> arguments) {
+        return expand(arguments, MODELS);
+    }
+
     /**
-     * The files the arguments name, in order.
+     * The files the arguments name, in order, folders searched for the file names {@code wanted}
+     * accepts.
      *
      * @throws CommandFailure (status {@link ExitCodes#USAGE}) naming every argument that names
-     *     nothing to inspect: a path that does not exist, or a folder with no {@code .dae} file
+     *     nothing to inspect: a path that does not exist, or a folder with no wanted file
      *     anywhere below it
      */
-    static List<Entry> expand(List<Path> arguments) {
+    static List<Entry> expand(List<Path> arguments, Predicate<String> wanted) {
         List<Entry> entries = new ArrayList<>();
         List<String> usageProblems = new ArrayList<>();
         for (Path argument : arguments) {
             if (!Files.exists(argument)) {
                 usageProblems.add("file not found: " + argument);
             } else if (Files.isDirectory(argument)) {
-                List<Entry> found = search(argument);
+                List<Entry> found = search(argument, wanted);
                 if (found.isEmpty()) {
-                    usageProblems.add("no .dae file in folder " + argument);
+                    usageProblems.add((wanted == COLLADA ? "no .dae file" : "no model file (.dae, .gltf, .glb)")
+                            + " in folder " + argument);
                 }
                 entries.addAll(found);
             } else {
@@ -87,8 +104,8 @@ final class ColladaFileSearch {
         return entries;
     }
 
-    /** Every {@code .dae} below one folder argument (links to folders not followed), sorted. */
-    private static List<Entry> search(Path folder) {
+    /** Every wanted file below one folder argument (links to folders not followed), sorted. */
+    private static List<Entry> search(Path folder, Predicate<String> wanted) {
         // Each found file (or unlisted folder) under its path relative to the argument.
         record Found(Path relative, Path path, String problem) {
         }
@@ -101,7 +118,7 @@ final class ColladaFileSearch {
                 for (Path child : children) {
                     if (Files.isDirectory(child, LinkOption.NOFOLLOW_LINKS)) {
                         pending.push(child);
-                    } else if (isDae(child) && !Files.isDirectory(child)) {
+                    } else if (wanted.test(child.getFileName().toString()) && !Files.isDirectory(child)) {
                         // Links to files are read; a broken link or a device is kept and reported when read.
                         found.add(new Found(folder.relativize(child), child, null));
                     }
@@ -120,10 +137,6 @@ final class ColladaFileSearch {
             entries.add(new Entry(f.path(), shown, f.problem()));
         }
         return entries;
-    }
-
-    private static boolean isDae(Path file) {
-        return file.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".dae");
     }
 
     /** A short, human reason for a failed file operation ({@code AccessDeniedException} has only the path). */
