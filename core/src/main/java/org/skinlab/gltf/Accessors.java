@@ -10,7 +10,8 @@ import java.util.Map;
  * integers by the specification's formulas (signed: {@code max(c / (2^(n-1) - 1), -1)}, unsigned:
  * {@code c / (2^n - 1)}), interleaved views ({@code byteStride}), matrix columns padded to 4
  * bytes, and sparse substitution. Declared sizes are checked against the view and against
- * {@link GltfLimits#MAX_ACCESSOR_VALUES} before the result is allocated; min/max are not trusted
+ * {@link GltfLimits#MAX_ACCESSOR_VALUES} before the result is allocated (for every accessor when
+ * the document is opened, used or not); min/max are not trusted
  * (not read). Float components must be finite. Results are cached: primitives share accessors.
  */
 final class Accessors {
@@ -31,6 +32,9 @@ final class Accessors {
         this.ctx = ctx;
         this.accessors = root.get("accessors").arrayOrMissing();
         this.buffers = buffers;
+        for (int i = 0; i < accessors.size(); i++) {
+            layout(i); // every accessor's declared layout, used or not, checked once (nothing allocated)
+        }
     }
 
     int count() throws GltfException {
@@ -87,7 +91,10 @@ final class Accessors {
         return cached;
     }
 
-    /** The accessor's integer values (indices, joints), which must be unsigned and not normalized. */
+    /**
+     * The accessor's integer values (indices, joints), which must be unsigned and not normalized;
+     * unsigned ints of 2^31 - 1 and more read as {@code Integer.MAX_VALUE} (beyond any count).
+     */
     int[] ints(int accessor) throws GltfException {
         int[] cached = ints.get(accessor);
         if (cached == null) {
@@ -171,6 +178,11 @@ final class Accessors {
             default:
                 return b.getFloat(at);
         }
+    }
+
+    /** The largest value of an unsigned index type: the primitive restart value glTF forbids in indices. */
+    static long restartValue(int componentType) {
+        return componentType == UNSIGNED_BYTE ? 0xffL : componentType == UNSIGNED_SHORT ? 0xffffL : 0xffffffffL;
     }
 
     private static long integer(ByteBuffer b, int at, int type) {

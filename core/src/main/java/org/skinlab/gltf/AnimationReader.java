@@ -18,8 +18,10 @@ import org.skinlab.model.Node;
  * {@code (t[k] + td/3, v[k] + b[k] td/3)} and key k+1's in-tangent {@code (t[k+1] - td/3,
  * v[k+1] - a[k+1] td/3)}, which is the specification's Hermite spline exactly. Rotation keys that
  * are not unit length are normalised (their tangents scaled alike) with a warning. Channels on
- * morph {@code weights} are decoded and checked, then skipped with a warning (the model has no
- * animated weights yet); channels on nodes outside the scene are skipped with a warning.
+ * morph {@code weights} are decoded and checked (one weight per morph target of the node's mesh
+ * per key), then skipped with a warning (the model has no animated weights yet); channels on nodes
+ * outside the scene are skipped with a warning. Two channels on the same node and path in one
+ * animation are refused.
  */
 final class AnimationReader {
     private static final float UNIT_TOLERANCE = 1e-3f;
@@ -28,12 +30,14 @@ final class AnimationReader {
     private final Accessors accessors;
     private final SceneReader scene;
     private final JsonNode nodes;
+    private final JsonNode meshes;
 
     AnimationReader(GltfContext ctx, Accessors accessors, SceneReader scene, JsonNode root) throws GltfException {
         this.ctx = ctx;
         this.accessors = accessors;
         this.scene = scene;
         this.nodes = root.get("nodes");
+        this.meshes = root.get("meshes");
     }
 
     List<AnimationClip> read(JsonNode root) throws GltfException {
@@ -52,6 +56,7 @@ final class AnimationReader {
             throw animation.error("an animation needs channels and samplers");
         }
         List<AnimationChannel> result = new ArrayList<>();
+        java.util.Set<String> targets = new java.util.HashSet<>();
         float end = 0f;
         for (int c = 0; c < channels.size(); c++) {
             JsonNode channel = channels.get(c);
@@ -64,9 +69,15 @@ final class AnimationReader {
                 continue;
             }
             int gltfNode = nodeRef.index(nodes.size(), "nodes");
+            if (!targets.add(gltfNode + "/" + path)) {
+                throw target.error("a second channel on the " + path + " of node " + gltfNode + " in this animation");
+            }
             int width = width(path, target.get("path"), gltfNode);
             KeyframeTrack track = track(samplers.get(sampler), path, width);
             if (path.equals("weights")) {
+                // Skipped, but the clip lasts as long as the file says (the track was checked, so times exist).
+                float[] times = accessors.floats(accessors.resolve(samplers.get(sampler).get("input")));
+                end = Math.max(end, times[times.length - 1]);
                 ctx.warn(channel.path(), "animated morph weights are not supported yet; the channel is skipped");
                 continue;
             }
@@ -94,13 +105,21 @@ final class AnimationReader {
                 return 3;
             case SceneReader.ROTATION:
                 return 4;
-            case "weights":
-                return -1;
+            case "weights": {
+                JsonNode mesh = nodes.get(gltfNode).get("mesh");
+                int targetCount = mesh.isMissing() ? 0
+                        : meshes.get(mesh.index(meshes.size(), "meshes")).get("primitives").get(0).get("targets").size();
+                if (targetCount == 0) {
+                    throw pathNode.error("node " + gltfNode + " has no mesh with morph targets to weigh");
+                }
+                return -targetCount;
+            }
             default:
                 throw pathNode.error("unknown animation path \"" + path + "\"");
         }
     }
 
+    /** The sampler's track; for morph weights ({@code width} = -targets) only checked, null. */
     private KeyframeTrack track(JsonNode sampler, String path, int width) throws GltfException {
         String interpolation = sampler.get("interpolation").string("LINEAR");
         boolean cubic = interpolation.equals("CUBICSPLINE");
@@ -126,11 +145,12 @@ final class AnimationReader {
         JsonNode outputRef = sampler.get("output");
         int output = accessors.resolve(outputRef);
         int keys = times.length;
-        if (width < 0) { // morph weights: as many per key as the output holds
+        if (width < 0) { // morph weights: one per target per key (three with CUBICSPLINE)
             accessors.expect(output, outputRef.path(), "SCALAR", "5126", "5120n", "5121n", "5122n", "5123n");
-            int per = accessors.elementCount(output) / ((cubic ? 3 : 1) * keys);
-            if (per * (cubic ? 3 : 1) * keys != accessors.elementCount(output) || per == 0) {
-                throw outputRef.error(accessors.elementCount(output) + " weights do not divide into " + keys + " keys");
+            long expected = (long) -width * (cubic ? 3 : 1) * keys;
+            if (accessors.elementCount(output) != expected) {
+                throw outputRef.error("accessor " + output + " has " + accessors.elementCount(output) + " weights but "
+                        + keys + " keys of " + -width + " targets need " + expected);
             }
             accessors.floats(output);
             return null;

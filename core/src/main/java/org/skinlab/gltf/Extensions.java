@@ -12,7 +12,9 @@ import java.util.Set;
 final class Extensions {
     static final String MESH_QUANTIZATION = "KHR_mesh_quantization";
     static final String TEXTURE_TRANSFORM = "KHR_texture_transform";
-    private static final Set<String> SUPPORTED = new HashSet<>(Arrays.asList(MESH_QUANTIZATION, TEXTURE_TRANSFORM));
+    static final String MATERIALS_UNLIT = "KHR_materials_unlit";
+    private static final Set<String> SUPPORTED = new HashSet<>(Arrays.asList(MESH_QUANTIZATION, TEXTURE_TRANSFORM,
+            MATERIALS_UNLIT));
 
     private Extensions() {
     }

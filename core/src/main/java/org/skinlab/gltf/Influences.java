@@ -11,7 +11,6 @@ import java.util.Arrays;
  * already 1 changes nothing).
  */
 final class Influences {
-    private final GltfContext ctx;
     private final Accessors accessors;
     private final int[] count;
     private int[] joints;
@@ -25,8 +24,7 @@ final class Influences {
     String maxJointPath;
     String withoutJoints;
 
-    Influences(GltfContext ctx, Accessors accessors, int positions) {
-        this.ctx = ctx;
+    Influences(Accessors accessors, int positions) {
         this.accessors = accessors;
         this.count = new int[positions];
         this.blockJoints = new int[64][];

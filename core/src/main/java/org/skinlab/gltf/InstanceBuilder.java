@@ -26,7 +26,9 @@ import org.skinlab.model.Skin;
  * The model's skinning path does the same (a skinned instance is placed by
  * {@code world(joint) * inverseBind * bindShape} only, never by its node), so the skin's bind
  * shape matrix is the identity and the node is recorded only as where the instance is.
- * Without {@code inverseBindMatrices} every inverse bind matrix is the identity.
+ * Without {@code inverseBindMatrices} every inverse bind matrix is the identity; with them each
+ * must be affine. A node with a skin or weights but no mesh is refused (the specification requires
+ * the mesh).
  */
 final class InstanceBuilder {
     /** Weight sums further than this from 1 are reported (8-bit normalised weights round by 1/255 each). */
@@ -73,13 +75,16 @@ final class InstanceBuilder {
     }
 
     void build() throws GltfException {
+        checkSkins();
         for (int i = 0; i < scene.result.size(); i++) {
             int g = scene.gltfIndex.get(i);
             JsonNode node = nodes.get(g);
             JsonNode meshRef = node.get("mesh");
             if (meshRef.isMissing()) {
-                if (node.has("skin")) {
-                    ctx.warn(node.get("skin").path(), "a skin on a node without a mesh; ignored");
+                for (String needsMesh : new String[] {"skin", "weights"}) {
+                    if (node.has(needsMesh)) {
+                        throw node.get(needsMesh).error("a node with " + needsMesh + " must have a mesh");
+                    }
                 }
                 continue;
             }
@@ -103,6 +108,20 @@ final class InstanceBuilder {
                 }
             }
             instances.add(new MeshInstance(i, drawn, skin, jointNodes, skeleton, bindings(data, drawn)));
+        }
+    }
+
+    /** Every skin's references, used by a node or not: skeleton, joints and inverse bind matrices. */
+    private void checkSkins() throws GltfException {
+        for (int s = 0; s < skins.size(); s++) {
+            JsonNode skeleton = skins.get(s).get("skeleton");
+            if (!skeleton.isMissing()) {
+                skeleton.index(nodes.size(), "nodes");
+            }
+            JsonNode ibm = skins.get(s).get("inverseBindMatrices");
+            if (!ibm.isMissing()) {
+                accessors.resolve(ibm);
+            }
         }
     }
 
@@ -221,6 +240,12 @@ final class InstanceBuilder {
             }
             // glTF's column-major matrices are what the model stores (JOML order): copied as they are.
             System.arraycopy(accessors.floats(acc), 0, result, 0, result.length);
+            for (int j = 0; j < jointCount; j++) {
+                int o = 16 * j;
+                if (result[o + 3] != 0f || result[o + 7] != 0f || result[o + 11] != 0f || result[o + 15] != 1f) {
+                    throw ref.error("inverse bind matrix " + j + " is not affine (its last row is not 0 0 0 1)");
+                }
+            }
         }
         inverseBinds.put(s, result);
         return result;

@@ -14,6 +14,7 @@ import org.skinlab.model.TextureTransform;
  * becomes a LAMBERT material: diffuse = {@code baseColorFactor}, diffuse texture =
  * {@code baseColorTexture}, emission = {@code emissiveFactor} and {@code emissiveTexture};
  * metallic, roughness, normal and occlusion maps are not read (the viewer shades diffuse only).
+ * {@code KHR_materials_unlit} makes it CONSTANT, its emission the base colour and texture.
  * Opacity is the base colour's alpha for {@code alphaMode} BLEND, else 1. A texture's
  * {@link Texture#texcoord()} is {@code TEXCOORD_n} for its {@code texCoord} n.
  *
@@ -42,6 +43,17 @@ final class MaterialReader {
             images.add(image(imageList.get(i), i));
         }
         this.textures = root.get("textures").arrayOrMissing();
+        int samplers = root.get("samplers").arrayOrMissing().size();
+        for (int t = 0; t < textures.size(); t++) {
+            JsonNode sampler = textures.get(t).get("sampler");
+            if (!sampler.isMissing()) {
+                sampler.index(samplers, "samplers");
+            }
+            JsonNode source = textures.get(t).get("source");
+            if (!source.isMissing()) {
+                source.index(images.size(), "images");
+            }
+        }
         JsonNode list = root.get("materials").arrayOrMissing();
         for (int m = 0; m < list.size(); m++) {
             materials.add(material(list.get(m), m));
@@ -119,6 +131,13 @@ final class MaterialReader {
         if (!emissiveTexture.isMissing()) {
             b.emissionTexture(texture(emissiveTexture));
         }
+        // Textures the viewer does not show must still name a texture.
+        for (JsonNode info : new JsonNode[] {pbr.get("metallicRoughnessTexture"), material.get("normalTexture"),
+                material.get("occlusionTexture")}) {
+            if (!info.isMissing()) {
+                info.get("index").index(textures.size(), "textures");
+            }
+        }
         JsonNode alphaNode = material.get("alphaMode");
         Material.AlphaMode alphaMode;
         try {
@@ -134,6 +153,10 @@ final class MaterialReader {
         b.alphaCutoff((float) cutoff);
         b.doubleSided(material.get("doubleSided").bool(false));
         b.opacity(alphaMode == Material.AlphaMode.BLEND ? Math.max(0f, Math.min(1f, baseColor[3])) : 1f);
+        if (material.get("extensions").objectOrMissing().has(Extensions.MATERIALS_UNLIT)) {
+            // Unlit: the base colour is what is seen, as COLLADA's constant shading shows its emission.
+            b.shading(Material.Shading.CONSTANT).emission(baseColor).emissionTexture(base);
+        }
         return b.build();
     }
 

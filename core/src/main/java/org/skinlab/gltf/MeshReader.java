@@ -76,6 +76,7 @@ final class MeshReader {
                 ctx.warn(primitive.path(), "mode " + mode + " (" + TRIANGLE_MODES[mode] + ") is not drawn; skipped");
                 continue;
             }
+            checkAttributeNames(attributes);
             if (!attributes.has("POSITION")) {
                 ctx.warn(attributes.path(), "no POSITION attribute; the primitive is skipped");
                 continue;
@@ -145,13 +146,23 @@ final class MeshReader {
             throw weightsNode.error(weightsNode.size() + " weights for " + targetPositions.length + " morph targets");
         }
         float[] weights = weightsNode.isMissing() ? new float[targetPositions.length] : weightsNode.floats();
-        Influences influences = new Influences(ctx, accessors, positions);
+        Influences influences = new Influences(accessors, positions);
         for (Block b : blockList) {
             influences.read(b.attributes, b.start, b.count);
         }
         return new MeshData(index, mesh, targetPositions, targetNormals, weights, partMaterials, influences.start(),
                 influences.joints(), influences.weights(), influences.maxJoint, influences.maxJointPath,
                 influences.withoutJoints);
+    }
+
+    /** Attribute names are the specification's semantics or application-specific ones starting with "_". */
+    private static void checkAttributeNames(JsonNode attributes) throws GltfException {
+        for (String name : attributes.keys()) {
+            if (!name.startsWith("_") && !name.matches("POSITION|NORMAL|TANGENT|(TEXCOORD|COLOR|JOINTS|WEIGHTS)_(0|[1-9][0-9]*)")) {
+                throw attributes.get(name).error("\"" + name + "\" is no attribute semantic (nor an application's,"
+                        + " which would start with _)");
+            }
+        }
     }
 
     private static String attributeKey(JsonNode attributes) throws GltfException {
@@ -333,10 +344,15 @@ final class MeshReader {
             int acc = accessors.resolve(indicesNode);
             accessors.expect(acc, indicesNode.path(), "SCALAR", "5121", "5123", "5125");
             indices = accessors.ints(acc);
+            long restart = Accessors.restartValue(accessors.node(acc).get("componentType").integer(0, Integer.MAX_VALUE));
             for (int i = 0; i < indices.length; i++) {
+                if (indices[i] == restart) { // (unsigned int indices that large fail the range check below)
+                    throw indicesNode.error("index " + i + " is the primitive restart value " + restart
+                            + ", which glTF does not allow");
+                }
                 if (indices[i] >= block.count) {
-                    throw indicesNode.error("index " + i + " is " + Integer.toUnsignedString(indices[i])
-                            + " but the primitive has " + block.count + " vertices");
+                    throw indicesNode.error("index " + i + " is " + (indices[i] == Integer.MAX_VALUE ? "2147483647 or more"
+                            : Integer.toString(indices[i])) + " but the primitive has " + block.count + " vertices");
                 }
             }
         }

@@ -16,7 +16,9 @@ import org.skinlab.model.TransformElement;
  *
  * <p>A node's transform is its {@code matrix} as one MATRIX element (glTF writes it column-major,
  * the model row-major), else the stack [TRANSLATE "translation", QUATERNION "rotation", SCALE
- * "scale"], always all three (defaults where absent) so animation channels find them by sid.
+ * "scale"], always all three (defaults where absent) so animation channels find them by sid; a
+ * rotation that is not a unit quaternion is normalised with a warning (the model's quaternion
+ * element would scale by its squared length).
  * The node graph must be a forest: a node with two parents, a cycle, or a scene node that is some
  * node's child is refused with the path.
  */
@@ -24,6 +26,8 @@ final class SceneReader {
     static final String TRANSLATION = "translation";
     static final String ROTATION = "rotation";
     static final String SCALE = "scale";
+    /** How far from 1 a rotation's length may be before it is normalised (and reported). */
+    static final double UNIT_TOLERANCE = 1e-3;
 
     private final GltfContext ctx;
     private final JsonNode nodes;
@@ -71,7 +75,7 @@ final class SceneReader {
                 childIndices[c] = modelIndex[kids.get(c).index(nodes.size(), "nodes")];
             }
             result.add(new Node(i, children.get(i)[0], childIndices, null, null, node.get("name").string(null),
-                    joints[g], false, transforms(node)));
+                    joints[g], false, transforms(ctx, node)));
         }
         int left = nodes.size() - result.size();
         if (left > 0) {
@@ -152,7 +156,7 @@ final class SceneReader {
         return roots;
     }
 
-    private static List<TransformElement> transforms(JsonNode node) throws GltfException {
+    private static List<TransformElement> transforms(GltfContext ctx, JsonNode node) throws GltfException {
         JsonNode matrix = node.get("matrix");
         if (!matrix.isMissing()) {
             for (String trs : new String[] {TRANSLATION, ROTATION, SCALE}) {
@@ -160,14 +164,28 @@ final class SceneReader {
                     throw node.get(trs).error("a node has either a matrix or " + trs + ", not both");
                 }
             }
-            return List.of(new TransformElement(TransformElement.Kind.MATRIX, "matrix",
-                    rowMajor(matrix.floats(16, null))));
+            float[] m = matrix.floats(16, null);
+            if (m[3] != 0f || m[7] != 0f || m[11] != 0f || m[15] != 1f) {
+                ctx.warn(matrix.path(), "the last row is not (0 0 0 1); read as if it were");
+            }
+            return List.of(new TransformElement(TransformElement.Kind.MATRIX, "matrix", rowMajor(m)));
+        }
+        float[] q = node.get(ROTATION).floats(4, new float[] {0, 0, 0, 1});
+        double length = Math.sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+        if (Math.abs(length - 1) > UNIT_TOLERANCE) {
+            // The model's quaternion element is homogeneous (|q|^2 scales); glTF's rotations are unit.
+            if (length == 0) {
+                throw node.get(ROTATION).error("the zero quaternion is no rotation");
+            }
+            ctx.warn(node.get(ROTATION).path(), "not a unit quaternion (length " + (float) length + "); normalised");
+            for (int c = 0; c < 4; c++) {
+                q[c] = (float) (q[c] / length);
+            }
         }
         return List.of(
                 new TransformElement(TransformElement.Kind.TRANSLATE, TRANSLATION,
                         node.get(TRANSLATION).floats(3, new float[3])),
-                new TransformElement(TransformElement.Kind.QUATERNION, ROTATION,
-                        node.get(ROTATION).floats(4, new float[] {0, 0, 0, 1})),
+                new TransformElement(TransformElement.Kind.QUATERNION, ROTATION, q),
                 new TransformElement(TransformElement.Kind.SCALE, SCALE,
                         node.get(SCALE).floats(3, new float[] {1, 1, 1})));
     }

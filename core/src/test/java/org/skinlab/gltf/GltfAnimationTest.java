@@ -88,11 +88,46 @@ class GltfAnimationTest {
         assertEquals("/animations/0/samplers/0/output", model.warnings().get(0).element());
     }
 
+    private static String morphWeights(double... weights) {
+        GltfFixture f = new GltfFixture();
+        f.floats("VEC3", 0, 0, 0, 1, 0, 0, 0, 1, 0); // 0
+        f.floats("VEC3", 0, 0, 1, 0, 0, 1, 0, 0, 1); // 1
+        f.floats("SCALAR", 0, 1); // 2
+        f.floats("SCALAR", weights); // 3
+        return f.gltf("\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0},\"targets\":[{\"POSITION\":1},"
+                + "{\"POSITION\":1}]}]}],\"nodes\":[{\"mesh\":0}],\"scenes\":[{\"nodes\":[0]}],\"animations\":[{"
+                + "\"channels\":[{\"sampler\":0,\"target\":{\"node\":0,\"path\":\"weights\"}}],"
+                + "\"samplers\":[{\"input\":2,\"output\":3}]}]");
+    }
+
     @Test
-    void weightsChannelsAreDecodedThenSkippedWithAWarning() throws Exception {
-        Model model = oneChannel("weights", "LINEAR", "SCALAR", new double[] {0, 1}, 0, 1);
+    void weightsChannelsAreCheckedThenSkippedWithAWarning() throws Exception {
+        Model model = GltfFixture.read(morphWeights(0, 0, 1, 0.5));
         assertTrue(model.clips().get(0).channels().isEmpty());
+        assertEquals(1f, model.clips().get(0).end(), "the clip still lasts as long as its keys");
         assertEquals("/animations/0/channels/0", model.warnings().get(0).element());
+        GltfException e = assertThrows(GltfException.class, () -> GltfFixture.read(morphWeights(0, 1, 0.5)));
+        assertEquals("test.gltf: /animations/0/samplers/0/output: accessor 3 has 3 weights but 2 keys of 2 targets"
+                + " need 4", e.getMessage());
+    }
+
+    @Test
+    void weightsOnANodeWithoutMorphTargetsAreRefused() {
+        GltfException e = assertThrows(GltfException.class,
+                () -> oneChannel("weights", "LINEAR", "SCALAR", new double[] {0, 1}, 0, 1));
+        assertEquals("/animations/0/channels/0/target/path", e.path());
+    }
+
+    @Test
+    void twoChannelsOnOneTargetAreRefused() throws Exception {
+        GltfFixture f = new GltfFixture();
+        f.floats("SCALAR", 0, 1);
+        f.floats("VEC3", 0, 0, 0, 1, 1, 1);
+        String channel = "{\"sampler\":0,\"target\":{\"node\":0,\"path\":\"scale\"}}";
+        GltfException e = assertThrows(GltfException.class, () -> GltfFixture.read(f.gltf("\"nodes\":[{}],"
+                + "\"scenes\":[{\"nodes\":[0]}],\"animations\":[{\"channels\":[" + channel + "," + channel
+                + "],\"samplers\":[{\"input\":0,\"output\":1}]}]")));
+        assertEquals("/animations/0/channels/1/target", e.path());
     }
 
     @Test

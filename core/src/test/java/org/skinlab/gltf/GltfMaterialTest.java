@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -64,6 +65,17 @@ class GltfMaterialTest {
         Material plain = model("{}", "", "", "").materials().get(0);
         assertEquals(Material.AlphaMode.OPAQUE, plain.alphaMode());
         assertArrayEquals(new float[] {1, 1, 1, 1}, plain.diffuse());
+    }
+
+    @Test
+    void unlitMaterialsAreConstantShadedWithTheBaseColour() throws Exception {
+        Model model = model("{\"pbrMetallicRoughness\":{\"baseColorFactor\":[1,0,0,1],\"baseColorTexture\":{\"index\":0}},"
+                + "\"extensions\":{\"KHR_materials_unlit\":{}}}", "{\"bufferView\":3,\"mimeType\":\"image/png\"}",
+                "{\"source\":0}", ",\"TEXCOORD_0\":1");
+        Material m = model.materials().get(0);
+        assertEquals(Material.Shading.CONSTANT, m.shading());
+        assertArrayEquals(new float[] {1, 0, 0, 1}, m.emission());
+        assertSame(m.diffuseTexture(), m.baseTexture());
     }
 
     @Test

@@ -109,6 +109,28 @@ class GltfMeshTest {
     }
 
     @Test
+    void anUnknownAttributeIsRefusedButAnApplicationsIsNot() throws Exception {
+        GltfFixture f = new GltfFixture();
+        f.floats("VEC3", 0, 0, 0, 1, 0, 0, 0, 1, 0);
+        assertEquals(3, GltfFixture.read(f.singleMesh("{\"attributes\":{\"POSITION\":0,\"_TEMPERATURE\":0}}"))
+                .meshes().get(0).positionCount());
+        GltfException e = assertThrows(GltfException.class, () -> GltfFixture.read(
+                f.singleMesh("{\"attributes\":{\"POSITION\":0,\"TEXCOORD_01\":0}}")));
+        assertEquals("/meshes/0/primitives/0/attributes/TEXCOORD_01", e.path());
+    }
+
+    @Test
+    void thePrimitiveRestartValueIsRefused() throws Exception {
+        GltfFixture f = new GltfFixture();
+        f.floats("VEC3", 0, 0, 0, 1, 0, 0, 0, 1, 0);
+        f.accessor(Accessors.UNSIGNED_BYTE, "SCALAR", false, 0, 1, 255);
+        GltfException e = assertThrows(GltfException.class, () -> GltfFixture.read(
+                f.singleMesh("{\"attributes\":{\"POSITION\":0},\"indices\":1}")));
+        assertEquals("test.gltf: /meshes/0/primitives/0/indices: index 2 is the primitive restart value 255, which glTF"
+                + " does not allow", e.getMessage());
+    }
+
+    @Test
     void attributeOfTheWrongFormatIsRefused() throws Exception {
         GltfFixture f = new GltfFixture();
         f.accessor(Accessors.SHORT, "VEC3", false, 0, 0, 0, 1, 0, 0, 0, 1, 0);

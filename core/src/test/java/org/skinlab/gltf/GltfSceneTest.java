@@ -34,6 +34,14 @@ class GltfSceneTest {
     }
 
     @Test
+    void aRotationThatIsNotUnitIsNormalisedWithAWarning() throws Exception {
+        Model model = read("\"nodes\":[{\"rotation\":[0,0,0,2]}],\"scenes\":[{\"nodes\":[0]}]");
+        assertArrayEquals(new float[] {0, 0, 0, 1}, model.node(0).transforms().get(1).values());
+        assertTrue(model.node(0).localMatrix().equals(new Matrix4f(), 0f), "no scaling by |q|^2");
+        assertEquals("/nodes/0/rotation", model.warnings().get(0).element());
+    }
+
+    @Test
     void columnMajorMatrixIsStoredRowMajor() throws Exception {
         // Column-major: the translation (5, 6, 7) is in elements 12..14.
         Node n = read("\"nodes\":[{\"matrix\":[1,0,0,0, 0,1,0,0, 0,0,1,0, 5,6,7,1]}],\"scenes\":[{\"nodes\":[0]}]")

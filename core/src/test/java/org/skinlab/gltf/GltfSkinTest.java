@@ -22,12 +22,19 @@ import org.skinlab.skinning.SkinningMethod;
 class GltfSkinTest {
     private static final float EPS = 1e-6f;
 
+    /** The joints' inverse bind matrices, column-major: the identity, and a translation by (0, -1, 0). */
+    private static final double[] INVERSE_BINDS = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1,
+            1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, -1, 0, 1};
+
     private static String twoBoneSkin(GltfFixture f, String skinExtra, String meshNodeExtra) {
+        return twoBoneSkin(f, skinExtra, meshNodeExtra, INVERSE_BINDS);
+    }
+
+    private static String twoBoneSkin(GltfFixture f, String skinExtra, String meshNodeExtra, double[] inverseBinds) {
         f.floats("VEC3", 0, 0, 0, 0, 2, 0, 1, 1, 0); // 0 positions
         f.accessor(Accessors.UNSIGNED_BYTE, "VEC4", false, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0); // 1 joints
         f.floats("VEC4", 1, 0, 0, 0, 1, 0, 0, 0, 0.5, 0.5, 0, 0); // 2 weights
-        f.floats("MAT4", 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1,
-                1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, -1, 0, 1); // 3 inverse binds (column-major)
+        f.floats("MAT4", inverseBinds); // 3
         f.floats("SCALAR", 0); // 4 time
         double h = Math.sqrt(0.5);
         f.floats("VEC4", 0, 0, h, h); // 5 rotation
@@ -117,6 +124,24 @@ class GltfSkinTest {
     void skeletonPropertyBecomesTheInstancesSkeletonRoot() throws Exception {
         Model model = GltfFixture.read(twoBoneSkin(new GltfFixture(), ",\"inverseBindMatrices\":3,\"skeleton\":0", ""));
         assertArrayEquals(new int[] {1}, model.instances().get(0).skeletonRoots());
+    }
+
+    @Test
+    void aNonAffineInverseBindMatrixIsRefused() {
+        double[] ibm = INVERSE_BINDS.clone();
+        ibm[3] = 1; // column 0, row 3: the first matrix's last row is no longer 0 0 0 1
+        String json = twoBoneSkin(new GltfFixture(), ",\"inverseBindMatrices\":3", "", ibm);
+        GltfException e = assertThrows(GltfException.class, () -> GltfFixture.read(json));
+        assertEquals("test.gltf: /skins/0/inverseBindMatrices: inverse bind matrix 0 is not affine (its last row is"
+                + " not 0 0 0 1)", e.getMessage());
+    }
+
+    @Test
+    void aSkinOnANodeWithoutAMeshIsRefused() {
+        String json = twoBoneSkin(new GltfFixture(), "", "").replace("{\"name\":\"root\",", "{\"name\":\"root\","
+                + "\"skin\":0,");
+        GltfException e = assertThrows(GltfException.class, () -> GltfFixture.read(json));
+        assertEquals("/nodes/0/skin", e.path());
     }
 
     @Test
