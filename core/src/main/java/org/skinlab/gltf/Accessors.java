@@ -230,7 +230,8 @@ final class Accessors {
             throw a.get("byteOffset").error("byteOffset " + offset + " is not a multiple of the component size "
                     + componentSize);
         }
-        long end = offset + (long) stride * (count - 1) + elementSize;
+        // The last column's padding need not be there: it is never read (as the validator reads it).
+        long end = offset + (long) stride * (count - 1) + elementSize - (columnStride - rows * componentSize);
         int viewLength = buffers.viewLength(view);
         if (end > viewLength) {
             throw a.get("count").error(count + " elements of " + elementSize + " bytes (stride " + stride + ") from offset "
