@@ -260,7 +260,7 @@ final class CheckedDocument {
             if (!used.contains(name)) {
                 throw ext.error("the extension " + name + " is not declared in extensionsUsed");
             }
-            if (GltfDocumentChecks.READ_EXTENSIONS.contains(name) && !placedIn(name).contains(kind)) {
+            if (Extensions.isSupported(name) && !placedIn(name).contains(kind)) {
                 throw ext.error("the extension " + name + " does not belong on a " + kind);
             }
         }

@@ -6,8 +6,6 @@ import static org.skinlab.gltf.CheckedDocument.ref;
 import static org.skinlab.gltf.CheckedDocument.required;
 
 import java.util.Arrays;
-import java.util.Collections;
-import java.util.HashSet;
 import java.util.Set;
 
 /**
@@ -23,10 +21,6 @@ import java.util.Set;
  * we do not read is not judged (the importer warns that it is ignored).
  */
 final class GltfDocumentChecks {
-    /** The extensions whose data we read, and therefore check. */
-    static final Set<String> READ_EXTENSIONS = Collections.unmodifiableSet(new HashSet<>(Arrays.asList(
-            Extensions.MESH_QUANTIZATION, Extensions.TEXTURE_TRANSFORM)));
-
     static final int BYTE = 5120;
     static final int UNSIGNED_BYTE = 5121;
     static final int SHORT = 5122;
