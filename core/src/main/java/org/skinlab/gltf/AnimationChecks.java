@@ -10,14 +10,13 @@ import static org.skinlab.gltf.GltfDocumentChecks.UNSIGNED_BYTE;
 import static org.skinlab.gltf.GltfDocumentChecks.UNSIGNED_SHORT;
 
 import java.util.Arrays;
-import java.util.HashMap;
 import java.util.List;
-import java.util.Map;
 
 /**
  * The part of {@link GltfDocumentChecks} about one animation: its samplers' accessors (key times
  * are float scalars with bounds, outputs have the target's format and the count the interpolation
- * needs) and its channels (a node's property animated once, never a node given by a matrix).
+ * needs) and its channels (never a node given by a matrix). Morph weight channels and a target
+ * animated twice are {@link AnimationReader}'s checks.
  */
 final class AnimationChecks {
     private static final List<String> PATHS = Arrays.asList("translation", "rotation", "scale", "weights");
@@ -35,7 +34,6 @@ final class AnimationChecks {
             checkSampler(animation.get("samplers").get(s));
         }
         int channels = CheckedDocument.objects(animation, "channels");
-        Map<String, Integer> targets = new HashMap<>();
         for (int c = 0; c < channels; c++) {
             JsonNode channel = animation.get("channels").get(c);
             required(channel, "sampler", "target");
@@ -53,13 +51,9 @@ final class AnimationChecks {
                 // An open list in the schema: the importer skips the channel with a warning.
                 continue;
             }
-            Integer first = targets.putIfAbsent(node + "/" + path, c);
-            if (first != null) {
-                throw animation.get("channels").get(first).get("target").error("node " + node + "'s " + path
-                        + " is animated again by channel " + c);
-            }
-            if (path.equals("weights") && !morphed(doc.node(node))) {
-                // Nothing to animate: the importer skips the channel with a warning.
+            if (path.equals("weights")) {
+                // Morph weight channels, and two channels on one target, are the reading's
+                // checks (AnimationReader).
                 continue;
             }
             checkTarget(target, doc.node(node));
@@ -91,10 +85,6 @@ final class AnimationChecks {
         }
     }
 
-    private boolean morphed(JsonNode node) throws GltfException {
-        return node.has("mesh") && doc.mesh((int) node.get("mesh").number()).get("primitives").get(0)
-                .get("targets").size() > 0;
-    }
 
     private static void checkTarget(JsonNode target, JsonNode node) throws GltfException {
         if (node.has("matrix")) {

@@ -6,16 +6,13 @@ import java.util.Locale;
  * The checks of {@link GltfDocumentChecks} that need the buffers' values and that reading the
  * model does not make itself: accessor bounds ({@code min}/{@code max} must be the data's, and
  * float data finite), for every accessor that stores values, used or not, as the validator does;
- * indices that are never the primitive-restart value; affine inverse bind matrices; float colours
- * in [0, 1]. Non-unit normals are tolerated with a warning (the validator calls them an error, but
- * exporters write them and they are renormalised when drawn). Indices, joints, weights and key
- * times are checked where the importer reads them ({@link MeshReader}, {@link Influences},
- * {@link AnimationReader}).
+ * float colours in [0, 1]. Non-unit normals are tolerated with a warning (the validator calls them
+ * an error, but exporters write them and they are renormalised when drawn). Indices, joints,
+ * weights, inverse bind matrices and key times are checked where the importer reads them
+ * ({@link MeshReader}, {@link Influences}, {@link InstanceBuilder}, {@link AnimationReader}).
  */
 final class GltfDataChecks {
     private static final double UNIT_TOLERANCE = 1e-3;
-    /** An affine matrix's last row (0 0 0 1) within float noise. */
-    private static final double AFFINE_TOLERANCE = 1e-5;
 
     private final GltfContext ctx;
     private final JsonNode root;
@@ -34,7 +31,6 @@ final class GltfDataChecks {
         GltfDataChecks checks = new GltfDataChecks(ctx, root, buffers, accessors);
         checks.checkBounds();
         checks.checkMeshes();
-        checks.checkInverseBindMatrices();
     }
 
     private void checkBounds() throws GltfException {
@@ -132,9 +128,6 @@ final class GltfDataChecks {
                 for (String name : attributes.keys()) {
                     checkAttribute(attributes.get(name), name);
                 }
-                if (primitive.has("indices")) {
-                    checkIndices(primitive.get("indices"));
-                }
             }
         }
     }
@@ -160,38 +153,4 @@ final class GltfDataChecks {
         }
     }
 
-    private void checkIndices(JsonNode indices) throws GltfException {
-        int accessor = accessors.resolve(indices);
-        long restart = restartValue((int) accessors.node(accessor).get("componentType").number());
-        int[] values = accessors.ints(accessor);
-        for (int i = 0; i < values.length; i++) {
-            if (Integer.toUnsignedLong(values[i]) == restart) {
-                throw indices.error("index " + i + " is " + restart + ", the primitive-restart value, which glTF"
-                        + " forbids");
-            }
-        }
-    }
-
-    private static long restartValue(int componentType) {
-        return componentType == Accessors.UNSIGNED_BYTE ? 0xffL : componentType == Accessors.UNSIGNED_SHORT
-                ? 0xffffL : 0xffffffffL;
-    }
-
-    /** Skinning needs affine transforms: each inverse bind matrix's last row is (0 0 0 1). */
-    private void checkInverseBindMatrices() throws GltfException {
-        JsonNode skins = root.get("skins");
-        for (int s = 0; s < skins.size(); s++) {
-            JsonNode ibm = skins.get(s).get("inverseBindMatrices");
-            if (ibm.isMissing() || !hasData(accessors.node(accessors.resolve(ibm)))) {
-                continue;
-            }
-            float[] m = accessors.floats(accessors.resolve(ibm));
-            for (int k = 0; k + 15 < m.length; k += 16) {
-                if (Math.abs(m[k + 3]) > AFFINE_TOLERANCE || Math.abs(m[k + 7]) > AFFINE_TOLERANCE
-                        || Math.abs(m[k + 11]) > AFFINE_TOLERANCE || Math.abs(m[k + 15] - 1) > AFFINE_TOLERANCE) {
-                    throw ibm.error("inverse bind matrix " + k / 16 + " is not affine (its last row is not 0 0 0 1)");
-                }
-            }
-        }
-    }
 }

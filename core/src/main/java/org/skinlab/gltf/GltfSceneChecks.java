@@ -144,7 +144,7 @@ final class GltfSceneChecks {
         }
         Matcher m = INDEXED.matcher(name);
         if (!m.matches()) {
-            throw a.error("\"" + name + "\" is not a glTF attribute (nor an application's, which starts with _)");
+            return; // refused by the reading (MeshReader), which names the semantics
         }
         int set = Integer.parseInt(m.group(2).length() > 6 ? "999999" : m.group(2));
         sets.merge(m.group(1), set + 1, Math::max);
@@ -297,18 +297,13 @@ final class GltfSceneChecks {
             }
         }
         int mesh = ref(node, "mesh", doc.meshes, "meshes");
+        // A skin or weights without a mesh is refused by the reading (InstanceBuilder).
         int skin = ref(node, "skin", doc.skins, "skins");
-        if (skin >= 0 && mesh < 0) {
-            throw node.get("skin").error("a skin without a mesh");
-        }
-        if (skin >= 0 && !skinned(doc.mesh(mesh))) {
+        if (skin >= 0 && mesh >= 0 && !skinned(doc.mesh(mesh))) {
             throw node.error("a skin on mesh " + mesh + ", which has no JOINTS_0 and WEIGHTS_0");
         }
         JsonNode weights = node.get("weights").arrayOrMissing();
-        if (!weights.isMissing()) {
-            if (mesh < 0) {
-                throw weights.error("morph weights without a mesh");
-            }
+        if (!weights.isMissing() && mesh >= 0) {
             int targets = doc.mesh(mesh).get("primitives").get(0).get("targets").size();
             if (weights.size() != targets) {
                 throw weights.error(weights.size() + " weights for the mesh's " + targets + " morph targets");
@@ -340,14 +335,8 @@ final class GltfSceneChecks {
         }
         node.get("translation").floats(3, null);
         node.get("scale").floats(3, null);
-        float[] q = node.get("rotation").floats(4, null);
-        if (q != null) {
-            CheckedDocument.numbers(node.get("rotation"), 4, -1, 1);
-            double length = Math.sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-            if (Math.abs(length - 1) > 5e-4) {
-                throw node.get("rotation").error("not a unit quaternion (length " + length + ")");
-            }
-        }
+        // A rotation that is not a unit quaternion is normalised by the reading (SceneReader).
+        node.get("rotation").floats(4, null);
     }
 
 
