@@ -47,6 +47,8 @@ grep -q 'boofcv/factory/fiducial/aruco_mip_36h12.txt' <<<"$listing" || fail "Boo
 grep -q ' org/skinlab/skinning/skinning.glsl$' <<<"$listing" || fail "the skinning shader's formulas (core's skinning.glsl) missing"
 grep -q ' org/skinlab/ar/lens.glsl$' <<<"$listing" || fail "the background shader's lens formulas (core's lens.glsl) missing"
 grep -q 'assets/models/humanoid-walk.dae' <<<"$listing" || fail "the default model is not bundled"
+grep -q 'assets/models/humanoid-walk.glb' <<<"$listing" || fail "the default model's .glb twin is not bundled"
+grep -q '^Lorg/skinlab/gltf/' <<<"$classes" || fail "dex lacks core's glTF importer (org.skinlab.gltf)"
 size=$(stat -c %s "$apk")
 echo "check-apk: size $size bytes ($(( size / 1024 )) KiB; budget $(( budget / 1024 )) KiB)"
 [ "$size" -le "$budget" ] || fail "APK over the 2 MB budget"

@@ -124,7 +124,7 @@ class ExitStatusTest {
         assertEquals("skinlab: " + dir + " is a directory, not a model file", r.errLines()[0]);
     }
 
-    /** {@code inspect} searches a folder (InspectBatchTest); one without a .dae file names nothing to inspect. */
+    /** {@code inspect} searches a folder (InspectBatchTest); one without a model file names nothing to inspect. */
     @Test
     void folderWithoutDaeFilesIsAUsageErrorForInspect() {
         Cli r = Cli.run("inspect", dir.toString());
