@@ -33,12 +33,18 @@ final class Accessors {
         this.accessors = root.get("accessors").arrayOrMissing();
         this.buffers = buffers;
         for (int i = 0; i < accessors.size(); i++) {
-            layout(i); // every accessor's declared layout, used or not, checked once (nothing allocated)
+            // Every accessor's declared layout, used or not, checked once (nothing allocated). One
+            // of a type the specification does not list can only be refused where it is used.
+            JsonNode a = accessors.get(i);
+            if (a.get("type").string("").matches("SCALAR|VEC[234]|MAT[234]")
+                    && a.get("componentType").integer(0, Integer.MAX_VALUE, 0) >= BYTE
+                    && a.get("componentType").integer(0, Integer.MAX_VALUE, 0) <= FLOAT
+                    && a.get("componentType").integer(0, Integer.MAX_VALUE, 0) != 5124) {
+                layout(i);
+            } else {
+                ctx.warn(a.path(), "unknown type or component type; refused if anything uses it");
+            }
         }
-    }
-
-    int count() throws GltfException {
-        return accessors.size();
     }
 
     /** The accessor an index property (e.g. {@code attributes/POSITION}) names. */
@@ -137,7 +143,12 @@ final class Accessors {
         Layout layout = layout(accessor);
         ctx.charge(layout.values(), a.path());
         float[] out = new float[layout.values()];
-        if (layout.view >= 0) {
+        if (layout.view >= 0 && type == FLOAT && layout.isPacked()) {
+            // Tightly packed floats (most files' positions, normals, texture coordinates): one bulk copy.
+            ByteBuffer b = buffers.view(layout.view);
+            b.position(layout.offset);
+            b.asFloatBuffer().get(out);
+        } else if (layout.view >= 0) {
             ByteBuffer b = buffers.view(layout.view);
             for (int e = 0; e < layout.count; e++) {
                 for (int c = 0; c < layout.components; c++) {
@@ -230,8 +241,8 @@ final class Accessors {
             throw a.get("byteOffset").error("byteOffset " + offset + " is not a multiple of the component size "
                     + componentSize);
         }
-        // The last column's padding need not be there: it is never read (as the validator reads it).
-        long end = offset + (long) stride * (count - 1) + elementSize - (columnStride - rows * componentSize);
+        // The last element needs no padding after its last column.
+        long end = offset + (long) stride * (count - 1) + elementSize - columnStride + (long) rows * componentSize;
         int viewLength = buffers.viewLength(view);
         if (end > viewLength) {
             throw a.get("count").error(count + " elements of " + elementSize + " bytes (stride " + stride + ") from offset "
@@ -358,6 +369,12 @@ final class Accessors {
 
         int values() {
             return count * components;
+        }
+
+        /** True when the components follow one another without gaps (no stride padding, no column padding). */
+        boolean isPacked() {
+            return rows == components ? stride == components * componentSize
+                    : columnStride == rows * componentSize && stride == components * componentSize;
         }
 
         /** Byte of component {@code c} (column-major for matrices) of element {@code e}. */

@@ -18,13 +18,14 @@ import org.skinlab.model.Node;
  * {@code (t[k] + td/3, v[k] + b[k] td/3)} and key k+1's in-tangent {@code (t[k+1] - td/3,
  * v[k+1] - a[k+1] td/3)}, which is the specification's Hermite spline exactly. Rotation keys that
  * are not unit length are normalised (their tangents scaled alike) with a warning. Channels on
- * morph {@code weights} are decoded and checked (one weight per morph target of the node's mesh
- * per key), then skipped with a warning (the model has no animated weights yet); channels on nodes
+ * morph {@code weights} are decoded into tracks like the others (one value per morph target of the
+ * node's mesh per key), then skipped with a warning (the model has no animated weights yet); channels on nodes
  * outside the scene are skipped with a warning. Two channels on the same node and path in one
  * animation are refused.
  */
 final class AnimationReader {
     private static final float UNIT_TOLERANCE = 1e-3f;
+    static final String WEIGHTS = "weights";
 
     private final GltfContext ctx;
     private final Accessors accessors;
@@ -74,10 +75,10 @@ final class AnimationReader {
             }
             int width = width(path, target.get("path"), gltfNode);
             KeyframeTrack track = track(samplers.get(sampler), path, width);
-            if (path.equals("weights")) {
-                // Skipped, but the clip lasts as long as the file says (the track was checked, so times exist).
-                float[] times = accessors.floats(accessors.resolve(samplers.get(sampler).get("input")));
-                end = Math.max(end, times[times.length - 1]);
+            if (path.equals(WEIGHTS)) {
+                // Decoded (a track of one weight per target), but the model cannot animate weights
+                // yet; the clip still lasts as long as the file says.
+                end = Math.max(end, track.endTime());
                 ctx.warn(channel.path(), "animated morph weights are not supported yet; the channel is skipped");
                 continue;
             }
@@ -105,21 +106,21 @@ final class AnimationReader {
                 return 3;
             case SceneReader.ROTATION:
                 return 4;
-            case "weights": {
+            case WEIGHTS: {
                 JsonNode mesh = nodes.get(gltfNode).get("mesh");
                 int targetCount = mesh.isMissing() ? 0
                         : meshes.get(mesh.index(meshes.size(), "meshes")).get("primitives").get(0).get("targets").size();
                 if (targetCount == 0) {
                     throw pathNode.error("node " + gltfNode + " has no mesh with morph targets to weigh");
                 }
-                return -targetCount;
+                return targetCount;
             }
             default:
                 throw pathNode.error("unknown animation path \"" + path + "\"");
         }
     }
 
-    /** The sampler's track; for morph weights ({@code width} = -targets) only checked, null. */
+    /** The sampler's track: {@code width} values per key (for morph weights, one per target). */
     private KeyframeTrack track(JsonNode sampler, String path, int width) throws GltfException {
         String interpolation = sampler.get("interpolation").string("LINEAR");
         boolean cubic = interpolation.equals("CUBICSPLINE");
@@ -145,21 +146,14 @@ final class AnimationReader {
         JsonNode outputRef = sampler.get("output");
         int output = accessors.resolve(outputRef);
         int keys = times.length;
-        if (width < 0) { // morph weights: one per target per key (three with CUBICSPLINE)
-            accessors.expect(output, outputRef.path(), "SCALAR", "5126", "5120n", "5121n", "5122n", "5123n");
-            long expected = (long) -width * (cubic ? 3 : 1) * keys;
-            if (accessors.elementCount(output) != expected) {
-                throw outputRef.error("accessor " + output + " has " + accessors.elementCount(output) + " weights but "
-                        + keys + " keys of " + -width + " targets need " + expected);
-            }
-            accessors.floats(output);
-            return null;
-        }
-        accessors.expect(output, outputRef.path(), width == 4 ? "VEC4" : "VEC3", outputFormats(path));
-        int expected = (cubic ? 3 : 1) * keys;
+        boolean weights = path.equals(WEIGHTS);
+        // Morph weights are scalars, one per target per key; TRS values one VEC3/VEC4 per key.
+        accessors.expect(output, outputRef.path(), weights ? "SCALAR" : width == 4 ? "VEC4" : "VEC3",
+                outputFormats(path));
+        long expected = (long) (weights ? width : 1) * (cubic ? 3 : 1) * keys;
         if (accessors.elementCount(output) != expected) {
             throw outputRef.error("accessor " + output + " has " + accessors.elementCount(output) + " elements but "
-                    + keys + " keys need " + expected);
+                    + keys + " keys " + (weights ? "of " + width + " targets " : "") + "need " + expected);
         }
         float[] out = accessors.floats(output);
         return cubic ? cubic(times, out, width, path, outputRef) : linear(times, out, width, path, outputRef,
@@ -167,7 +161,7 @@ final class AnimationReader {
     }
 
     private static String[] outputFormats(String path) {
-        if (path.equals(SceneReader.ROTATION)) {
+        if (path.equals(SceneReader.ROTATION) || path.equals(WEIGHTS)) {
             return new String[] {"5126", "5120n", "5121n", "5122n", "5123n"};
         }
         // KHR_mesh_quantization widens translation and scale outputs to every integer type.

@@ -40,21 +40,18 @@ final class GlbContainer {
         if (bytes.length >= 4 && ByteBuffer.wrap(bytes).order(ByteOrder.LITTLE_ENDIAN).getInt(0) == MAGIC) {
             return glb(ctx, bytes);
         }
-        int start = byteOrderMark(ctx, bytes, 0, bytes.length);
+        int start = bomLength(ctx, bytes, 0, bytes.length);
         return new GlbContainer(false, bytes, start, bytes.length - start, -1, 0);
     }
 
-    /**
-     * 3 when the JSON at {@code offset} starts with a UTF-8 byte order mark, which JSON forbids but
-     * editors write (skipped with a warning), else 0.
-     */
-    private static int byteOrderMark(GltfContext ctx, byte[] bytes, int offset, long length) {
-        if (length >= 3 && (bytes[offset] & 0xff) == 0xEF && (bytes[offset + 1] & 0xff) == 0xBB
-                && (bytes[offset + 2] & 0xff) == 0xBF) {
+    /** 3 when the JSON at {@code offset} starts with a UTF-8 byte order mark (glTF forbids it; editors write it), warned. */
+    private static int bomLength(GltfContext ctx, byte[] bytes, int offset, long length) {
+        boolean bom = length >= 3 && (bytes[offset] & 0xff) == 0xEF && (bytes[offset + 1] & 0xff) == 0xBB
+                && (bytes[offset + 2] & 0xff) == 0xBF;
+        if (bom) {
             ctx.warn("", "the JSON starts with a UTF-8 byte order mark; skipped");
-            return 3;
         }
-        return 0;
+        return bom ? 3 : 0;
     }
 
     private static byte[] readAll(GltfContext ctx, InputStream in) throws IOException, GltfException {
@@ -129,8 +126,8 @@ final class GlbContainer {
             }
             at += 8 + chunkLength;
         }
-        int start = byteOrderMark(ctx, bytes, 20, jsonLength);
-        return new GlbContainer(true, bytes, 20 + start, (int) jsonLength - start, binOffset, binLength);
+        int bom = bomLength(ctx, bytes, 20, jsonLength);
+        return new GlbContainer(true, bytes, 20 + bom, (int) jsonLength - bom, binOffset, binLength);
     }
 
     /** The specification pads every chunk to 4 bytes; readers cope without, so only a warning. */

@@ -15,8 +15,12 @@ import org.skinlab.model.ImportWarning;
  * {@link GltfLimits#budget(long)} of the document's bytes.
  */
 final class GltfContext {
+    /** Warnings kept; a hostile file could otherwise fill the heap with them (as for COLLADA). */
+    static final int MAX_WARNINGS = 200;
+
     private final String file;
     private final List<ImportWarning> warnings = new ArrayList<>();
+    private int droppedWarnings;
     private long budget = GltfLimits.budget(0);
 
     GltfContext(String file) {
@@ -47,10 +51,20 @@ final class GltfContext {
     }
 
     void warn(String path, String message) {
-        warnings.add(new ImportWarning(path.isEmpty() ? "/" : path, message));
+        if (warnings.size() < MAX_WARNINGS) {
+            warnings.add(new ImportWarning(path.isEmpty() ? "/" : path, message));
+        } else {
+            droppedWarnings++;
+        }
     }
 
+    /** The warnings, and one line for those beyond {@link #MAX_WARNINGS}. */
     List<ImportWarning> warnings() {
-        return warnings;
+        if (droppedWarnings == 0) {
+            return warnings;
+        }
+        List<ImportWarning> result = new ArrayList<>(warnings);
+        result.add(new ImportWarning("/", droppedWarnings + " more warnings not shown"));
+        return result;
     }
 }

@@ -35,14 +35,6 @@ final class JsonNode {
         return value == null;
     }
 
-    boolean isObject() {
-        return value instanceof Map;
-    }
-
-    boolean isArray() {
-        return value instanceof List;
-    }
-
     GltfException error(String problem) {
         return ctx.error(path, problem);
     }

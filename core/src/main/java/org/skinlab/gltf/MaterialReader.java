@@ -102,7 +102,7 @@ final class MaterialReader {
             return new Image(id, name, null, null, checked(type, image),
                     uris.decodeData(uri, uriNode.path(), GltfLimits.MAX_FILE_BYTES));
         }
-        Path file = uris.file(uri, uriNode.path());
+        Path file = uris.linkCheckedFile(uri, uriNode.path());
         return new Image(id, name, uri, file, mimeType, null);
     }
 

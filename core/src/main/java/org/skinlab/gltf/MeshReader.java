@@ -54,72 +54,40 @@ final class MeshReader {
         }
     }
 
+    /** The primitives that are drawn, each with its block of vertices (blocks in first-use order). */
+    private static final class Layout {
+        final Map<String, Block> blocks = new LinkedHashMap<>();
+        final List<Block> blockOfPart = new ArrayList<>();
+        final List<JsonNode> partPrimitives = new ArrayList<>();
+        int targetCount;
+        int positions;
+    }
+
+    /** The mesh, or null when none of its primitives is drawn (warned). */
     MeshData read(JsonNode meshNode, int index) throws GltfException {
-        JsonNode primitives = meshNode.get("primitives");
-        if (primitives.size() == 0) {
-            throw primitives.error("a mesh needs at least one primitive");
-        }
-        Map<String, Block> blocks = new LinkedHashMap<>();
-        List<Block> blockOfPart = new ArrayList<>();
-        List<JsonNode> partPrimitives = new ArrayList<>();
-        int targetCount = -1;
-        for (int p = 0; p < primitives.size(); p++) {
-            JsonNode primitive = primitives.get(p);
-            int mode = primitive.get("mode").integer(0, 6, 4);
-            JsonNode targets = primitive.get("targets").arrayOrMissing();
-            if (targetCount >= 0 && targets.size() != targetCount) {
-                throw targets.error(targets.size() + " morph targets, but the mesh's first primitive has " + targetCount);
-            }
-            targetCount = targets.size();
-            JsonNode attributes = primitive.get("attributes").objectOrMissing();
-            if (mode < 4) {
-                ctx.warn(primitive.path(), "mode " + mode + " (" + TRIANGLE_MODES[mode] + ") is not drawn; skipped");
-                continue;
-            }
-            checkAttributeNames(attributes);
-            if (!attributes.has("POSITION")) {
-                ctx.warn(attributes.path(), "no POSITION attribute; the primitive is skipped");
-                continue;
-            }
-            String key = attributeKey(attributes) + "|" + targetKey(targets);
-            Block block = blocks.get(key);
-            if (block == null) {
-                int position = accessors.resolve(attributes.get("POSITION"));
-                block = new Block(primitive, accessors.elementCount(position));
-                blocks.put(key, block);
-            }
-            blockOfPart.add(block);
-            partPrimitives.add(primitive);
-        }
-        if (partPrimitives.isEmpty()) {
+        Layout layout = layout(meshNode);
+        if (layout.partPrimitives.isEmpty()) {
             return null;
         }
-        int positions = 0;
-        for (Block b : blocks.values()) {
-            b.start = positions;
-            positions += b.count;
-            if (positions > GltfLimits.MAX_ACCESSOR_VALUES) {
-                throw meshNode.error("more than " + GltfLimits.MAX_ACCESSOR_VALUES + " vertices");
-            }
-        }
-        List<Block> blockList = new ArrayList<>(blocks.values());
+        List<Block> blocks = new ArrayList<>(layout.blocks.values());
+        int positions = layout.positions;
         // Positions, normals, colours, two texture coordinate sets, the position map and the
         // mesh's own copies of them; further sets and morph targets are charged as they come.
         ctx.charge(2L * (3 + 1 + 3 + 4 + 2 * 2 + 2) * positions, meshNode.path());
         Vertices v = new Vertices(positions);
-        for (Block b : blockList) {
+        for (Block b : blocks) {
             v.read(b);
         }
-        for (Block b : blockList) {
+        for (Block b : blocks) {
             v.warnGaps(b);
         }
         TriangleList triangles = new TriangleList();
         List<MeshPart> parts = new ArrayList<>();
-        int[] partMaterials = new int[partPrimitives.size()];
-        for (int i = 0; i < partPrimitives.size(); i++) {
-            JsonNode primitive = partPrimitives.get(i);
+        int[] partMaterials = new int[layout.partPrimitives.size()];
+        for (int i = 0; i < partMaterials.length; i++) {
+            JsonNode primitive = layout.partPrimitives.get(i);
             int first = triangles.size() / 3;
-            triangles(primitive, blockOfPart.get(i), triangles);
+            triangles(primitive, layout.blockOfPart.get(i), triangles);
             JsonNode material = primitive.get("material");
             partMaterials[i] = material.isMissing() ? -1 : material.index(materialCount, "materials");
             parts.add(new MeshPart(TRIANGLE_MODES[primitive.get("mode").integer(0, 6, 4)],
@@ -132,27 +100,77 @@ final class MeshReader {
         }
         Mesh mesh = new Mesh("/meshes/" + index, meshNode.get("name").string(null), v.positions, vertexPositions,
                 v.normals, v.texCoords, v.texCoordNumbers, v.colors, triangles.toArray(), parts);
-        float[][] targetPositions = new float[Math.max(0, targetCount)][];
-        float[][] targetNormals = new float[targetPositions.length][];
+        float[][] targetPositions = new float[layout.targetCount][];
+        float[][] targetNormals = new float[layout.targetCount][];
         for (int t = 0; t < targetPositions.length; t++) {
-            ctx.charge(6L * positions, primitives.path());
+            ctx.charge(6L * positions, meshNode.get("primitives").path());
             targetPositions[t] = new float[3 * positions];
-            for (Block b : blockList) {
+            for (Block b : blocks) {
                 readTarget(b, t, targetPositions, targetNormals, positions);
             }
         }
-        JsonNode weightsNode = meshNode.get("weights");
-        if (!weightsNode.isMissing() && weightsNode.size() != targetPositions.length) {
-            throw weightsNode.error(weightsNode.size() + " weights for " + targetPositions.length + " morph targets");
-        }
-        float[] weights = weightsNode.isMissing() ? new float[targetPositions.length] : weightsNode.floats();
         Influences influences = new Influences(accessors, positions);
-        for (Block b : blockList) {
+        for (Block b : blocks) {
             influences.read(b.attributes, b.start, b.count);
         }
-        return new MeshData(index, mesh, targetPositions, targetNormals, weights, partMaterials, influences.start(),
-                influences.joints(), influences.weights(), influences.maxJoint, influences.maxJointPath,
-                influences.withoutJoints);
+        return new MeshData(index, mesh, targetPositions, targetNormals, defaultWeights(meshNode, layout.targetCount),
+                partMaterials, influences.start(), influences.joints(), influences.weights(), influences.maxJoint,
+                influences.maxJointPath, influences.withoutJoints);
+    }
+
+    /** Which primitives are drawn and which vertex block each uses; morph target counts checked. */
+    private Layout layout(JsonNode meshNode) throws GltfException {
+        JsonNode primitives = meshNode.get("primitives");
+        if (primitives.size() == 0) {
+            throw primitives.error("a mesh needs at least one primitive");
+        }
+        Layout layout = new Layout();
+        for (int p = 0; p < primitives.size(); p++) {
+            JsonNode primitive = primitives.get(p);
+            int mode = primitive.get("mode").integer(0, 6, 4);
+            JsonNode targets = primitive.get("targets").arrayOrMissing();
+            if (p > 0 && targets.size() != layout.targetCount) {
+                throw targets.error(targets.size() + " morph targets, but the mesh's first primitive has "
+                        + layout.targetCount);
+            }
+            layout.targetCount = targets.size();
+            JsonNode attributes = primitive.get("attributes").objectOrMissing();
+            if (mode < 4) {
+                ctx.warn(primitive.path(), "mode " + mode + " (" + TRIANGLE_MODES[mode] + ") is not drawn; skipped");
+                continue;
+            }
+            checkAttributeNames(attributes);
+            if (!attributes.has("POSITION")) {
+                ctx.warn(attributes.path(), "no POSITION attribute; the primitive is skipped");
+                continue;
+            }
+            String key = attributeKey(attributes) + "|" + targetKey(targets);
+            Block block = layout.blocks.get(key);
+            if (block == null) {
+                block = new Block(primitive, accessors.elementCount(accessors.resolve(attributes.get("POSITION"))));
+                block.start = layout.positions;
+                layout.positions += block.count;
+                if (layout.positions > GltfLimits.MAX_ACCESSOR_VALUES) {
+                    throw meshNode.error("more than " + GltfLimits.MAX_ACCESSOR_VALUES + " vertices");
+                }
+                layout.blocks.put(key, block);
+            }
+            layout.blockOfPart.add(block);
+            layout.partPrimitives.add(primitive);
+        }
+        return layout;
+    }
+
+    /** {@code mesh.weights}, one per morph target, zeros when absent. */
+    private static float[] defaultWeights(JsonNode meshNode, int targetCount) throws GltfException {
+        JsonNode weights = meshNode.get("weights");
+        if (weights.isMissing()) {
+            return new float[targetCount];
+        }
+        if (weights.size() != targetCount) {
+            throw weights.error(weights.size() + " weights for " + targetCount + " morph targets");
+        }
+        return weights.floats();
     }
 
     /** Attribute names are the specification's semantics or application-specific ones starting with "_". */

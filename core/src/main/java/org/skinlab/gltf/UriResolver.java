@@ -101,15 +101,28 @@ final class UriResolver {
         return result;
     }
 
+    /**
+     * The file a relative URI names inside the document's folder, refused when it exists but is
+     * a link leading out of the folder (a renderer will open it); not opened here.
+     */
+    Path linkCheckedFile(String uri, String path) throws GltfException {
+        Path file = file(uri, path);
+        try {
+            if (Files.exists(file) && !file.toRealPath().startsWith(folder.toRealPath())) {
+                throw ctx.error(path, "\"" + abbreviate(uri) + "\" is a link that leads out of the file's folder");
+            }
+        } catch (IOException e) {
+            throw new GltfException(ctx.file(), path, "cannot check \"" + abbreviate(uri) + "\": " + e, e);
+        }
+        return file;
+    }
+
     /** The bytes of the file a URI names, refused when larger than {@code maxBytes}. */
     byte[] readFile(String uri, String path, long maxBytes) throws GltfException {
-        Path file = file(uri, path);
+        Path file = linkCheckedFile(uri, path);
         try {
             if (!Files.isRegularFile(file)) {
                 throw ctx.error(path, "\"" + abbreviate(uri) + "\": no such file next to the document");
-            }
-            if (!file.toRealPath().startsWith(folder.toRealPath())) {
-                throw ctx.error(path, "\"" + abbreviate(uri) + "\" is a link that leads out of the file's folder");
             }
             long size = Files.size(file);
             if (size > maxBytes) {

@@ -42,14 +42,16 @@ public final class ModelImporter {
      * Imports from a stream (the caller closes it).
      *
      * @param name     the name used in messages and {@link Model#source()}
-     * @param location the document's path for relative URIs, or null
+     * @param location the document's path for relative URIs, or null: then a glTF URI naming a
+     *                 file is refused, and COLLADA takes the name as its location, as
+     *                 {@link ColladaImporter#read(InputStream, String)} does (it never opens files)
      */
     public static Model read(InputStream in, String name, Path location) throws IOException, ImportException {
         InputStream buffered = in.markSupported() ? in : new BufferedInputStream(in, 1 << 16);
         if (isGltf(buffered, name)) {
             return GltfImporter.read(buffered, name, location);
         }
-        return ColladaImporter.read(buffered, name, location);
+        return location == null ? ColladaImporter.read(buffered, name) : ColladaImporter.read(buffered, name, location);
     }
 
     private static boolean isGltf(InputStream in, String name) throws IOException {

@@ -6,6 +6,11 @@ import java.util.List;
  * A mesh placed in the scene: an {@code <instance_geometry>} (static, {@link #skin()} null) or an
  * {@code <instance_controller>} (skinned), with the skin's joints resolved to scene nodes.
  *
+ * <p>A static instance is placed by its node's world matrix. A skinned one is placed by its
+ * joints alone ({@code world(joint) * inverse bind * bind shape}, see {@code SkinnedGeometry}):
+ * its node's transform does not move it, as glTF 2.0 requires ("the transform of the node that
+ * holds a skinned mesh is ignored") and COLLADA's skinning equation has it.
+ *
  * <p>Joint resolution (COLLADA 1.4.1, skin and instance_controller): with {@code <skeleton>}
  * roots, a Name_array joint is the node whose sid matches under those roots (first root first,
  * depth-first); without roots, or when no sid matches, the node whose id and then whose name

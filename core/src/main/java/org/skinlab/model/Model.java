@@ -22,6 +22,8 @@ import java.util.Set;
  * <li>{@link #clips()}: animation clips whose channels target scene nodes;</li>
  * <li>{@link #warnings()}: everything the importer tolerated rather than refused.</li>
  * </ul>
+ * The list above speaks COLLADA; how glTF 2.0's meshes, skins, morphs and scenes map onto the
+ * same lists is in docs/importer.md ("glTF 2.0", "Mapping").
  */
 public final class Model {
     private final String source;

@@ -110,6 +110,22 @@ class GltfAccessorTest {
     }
 
     @Test
+    void theLastMatrixNeedsNoPaddingAfterItsLastColumn() throws Exception {
+        GltfFixture f = new GltfFixture();
+        // Two MAT3 of unsigned bytes: 12 bytes each with column padding, the last one 11 (23 in all).
+        byte[] data = new byte[23];
+        for (int e = 0; e < 2; e++) {
+            for (int c = 0; c < 9; c++) {
+                data[12 * e + 4 * (c / 3) + c % 3] = (byte) (10 * e + c);
+            }
+        }
+        int view = f.view(data, 0);
+        int acc = f.accessor("{\"bufferView\":" + view + ",\"componentType\":5121,\"type\":\"MAT3\",\"count\":2}");
+        assertArrayEquals(new float[] {0, 1, 2, 3, 4, 5, 6, 7, 8, 10, 11, 12, 13, 14, 15, 16, 17, 18},
+                accessors(f).floats(acc));
+    }
+
+    @Test
     void countBeyondTheViewIsRefusedBeforeReading() throws Exception {
         GltfFixture f = new GltfFixture();
         f.floats("VEC3", 0, 0, 0, 1, 1, 1);

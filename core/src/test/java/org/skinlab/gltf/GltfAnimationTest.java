@@ -107,7 +107,7 @@ class GltfAnimationTest {
         assertEquals(1f, model.clips().get(0).end(), "the clip still lasts as long as its keys");
         assertEquals("/animations/0/channels/0", model.warnings().get(0).element());
         GltfException e = assertThrows(GltfException.class, () -> GltfFixture.read(morphWeights(0, 1, 0.5)));
-        assertEquals("test.gltf: /animations/0/samplers/0/output: accessor 3 has 3 weights but 2 keys of 2 targets"
+        assertEquals("test.gltf: /animations/0/samplers/0/output: accessor 3 has 3 elements but 2 keys of 2 targets"
                 + " need 4", e.getMessage());
     }
 

@@ -139,6 +139,24 @@ class GltfContainerTest {
     }
 
     @Test
+    void aLinkInsideTheFolderThatLeadsOutIsRefused(@TempDir Path dir) throws Exception {
+        String embedded = triangle().gltf(TRIANGLE_MESH);
+        Path outside = Files.createDirectories(dir.resolve("outside"));
+        Files.write(outside.resolve("secret.bin"), new byte[64]);
+        Path sub = Files.createDirectories(dir.resolve("sub"));
+        try {
+            Files.createSymbolicLink(sub.resolve("link.bin"), outside.resolve("secret.bin"));
+        } catch (UnsupportedOperationException | java.io.IOException e) {
+            org.junit.jupiter.api.Assumptions.assumeTrue(false, "symbolic links cannot be made here: " + e);
+        }
+        Path gltf = sub.resolve("doc.gltf");
+        Files.write(gltf, embedded.replaceAll("data:[^\"]*", "link.bin").getBytes(StandardCharsets.UTF_8));
+        GltfException e = assertThrows(GltfException.class, () -> GltfImporter.read(gltf));
+        assertEquals("doc.gltf: /buffers/0/uri: \"link.bin\" is a link that leads out of the file's folder",
+                e.getMessage());
+    }
+
+    @Test
     void fileUriWithoutALocationIsRefused() {
         String json = triangle().gltf(TRIANGLE_MESH).replaceAll("data:[^\"]*", "tri.bin");
         GltfException e = assertThrows(GltfException.class, () -> GltfImporter.read(
@@ -169,6 +187,25 @@ class GltfContainerTest {
         String json = triangle().gltf(TRIANGLE_MESH).replace("\"version\":\"2.0\"", "\"version\":\"1.0\"");
         GltfException e = assertThrows(GltfException.class, () -> GltfFixture.read(json));
         assertEquals("test.gltf: /asset/version: version \"1.0\" is not glTF 2.x", e.getMessage());
+    }
+
+    @Test
+    void aByteOrderMarkIsSkippedWithAWarning() throws Exception {
+        byte[] json = triangle().gltf(TRIANGLE_MESH).getBytes(StandardCharsets.UTF_8);
+        byte[] withBom = new byte[json.length + 3];
+        withBom[0] = (byte) 0xEF;
+        withBom[1] = (byte) 0xBB;
+        withBom[2] = (byte) 0xBF;
+        System.arraycopy(json, 0, withBom, 3, json.length);
+        Model model = GltfFixture.read(withBom, "bom.gltf");
+        assertEquals(3, model.meshes().get(0).positionCount());
+        assertEquals("/", model.warnings().get(0).element());
+    }
+
+    @Test
+    void aDocumentThatIsNoObjectIsRefused() {
+        GltfException e = assertThrows(GltfException.class, () -> GltfFixture.read("[1, 2]"));
+        assertEquals("test.gltf: /: the JSON document is not an object", e.getMessage());
     }
 
     @Test

@@ -47,6 +47,19 @@ class GltfHostileSizeTest {
     }
 
     @Test
+    void warningsAreCapped() throws Exception {
+        GltfFixture f = new GltfFixture();
+        f.floats("VEC3", 0, 0, 0, 1, 0, 0, 0, 1, 0);
+        StringBuilder primitives = new StringBuilder("{\"attributes\":{\"POSITION\":0}}");
+        for (int i = 0; i < 1000; i++) {
+            primitives.append(",{\"attributes\":{\"POSITION\":0},\"mode\":0}");
+        }
+        Model model = GltfFixture.read(f.singleMesh(primitives.toString()));
+        assertEquals(GltfContext.MAX_WARNINGS + 1, model.warnings().size());
+        assertEquals("800 more warnings not shown", model.warnings().get(GltfContext.MAX_WARNINGS).message());
+    }
+
+    @Test
     void aLongChainOfNodesIsCheckedInLinearTime() throws Exception {
         int n = 100_000;
         StringBuilder nodes = new StringBuilder();

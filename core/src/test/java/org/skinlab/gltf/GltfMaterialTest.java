@@ -133,6 +133,20 @@ class GltfMaterialTest {
     }
 
     @Test
+    void imageFileIsItsPathInTheFolderNotOpened(@org.junit.jupiter.api.io.TempDir java.nio.file.Path dir)
+            throws Exception {
+        GltfFixture f = new GltfFixture();
+        f.floats("VEC3", 0, 0, 0, 1, 0, 0, 0, 1, 0);
+        java.nio.file.Path gltf = dir.resolve("doc.gltf");
+        java.nio.file.Files.write(gltf, f.gltf("\"images\":[{\"uri\":\"tex/skin%20tone.png\"}]").getBytes(
+                java.nio.charset.StandardCharsets.UTF_8));
+        Image image = GltfImporter.read(gltf).images().get(0);
+        assertEquals(dir.toAbsolutePath().resolve("tex").resolve("skin tone.png"), image.file());
+        assertEquals("tex/skin%20tone.png", image.uri());
+        assertNull(image.bytes(), "the file does not exist: the importer never opened it");
+    }
+
+    @Test
     void imageFileOutsideTheFolderIsRefused() {
         GltfException e = assertThrows(GltfException.class, () -> model("{}", "{\"uri\":\"../x.png\"}", "", ""));
         assertEquals("/images/0/uri", e.path());
