@@ -4,10 +4,13 @@
 //
 //   node gltf-reference.mjs --out DIR FILE...     writes DIR/<file name>.json (.json.gz when large)
 //   node gltf-reference.mjs --max-keys N ...      at most N key times per clip (default 40)
+//   node gltf-reference.mjs --budget N ...        and at most about N vertex-times per clip (default
+//                                                 30000), so that large characters stay small
 //
 // Per file: the rest pose (the scene as loaded) and, per animation (clip), the union of its
-// channels' key times (evenly thinned to --max-keys when there are more), the midpoints between
-// consecutive ones, and time 0 when the first key comes later. The scene is loaded afresh for
+// channels' key times (evenly thinned to --max-keys, or fewer for large meshes: --budget), the
+// midpoints between consecutive ones, and time 0 when the first key comes later. The scene is
+// loaded afresh for
 // each clip, the clip alone is played by an AnimationMixer (LoopOnce, clamped at its end, so the
 // last key is held rather than wrapped to the first), and at each time matrices are updated and
 // each triangle mesh's vertices are taken with three's own Mesh/SkinnedMesh.getVertexPosition
@@ -29,7 +32,8 @@
 //    animation are untouched. All buffers (data URIs, files beside a .gltf, a GLB's chunk) are
 //    joined into one GLB in memory, which GLTFLoader parses from an ArrayBuffer without fetching.
 //
-// Numbers are rounded to 7 significant digits (float32 holds about 7).
+// Positions are rounded to 7 significant digits (float32 holds about 7), times to 9 (so that a
+// float32 key time reads back as the same float).
 import { readFileSync, writeFileSync, mkdirSync } from 'node:fs';
 import path from 'node:path';
 import { gzipSync } from 'node:zlib';
@@ -39,18 +43,20 @@ import { GLTFLoader } from 'three/examples/jsm/loaders/GLTFLoader.js';
 const GZIP_ABOVE = 64 * 1024;
 
 function parseArgs(argv) {
-    const opts = { out: null, maxKeys: 40, files: [] };
+    const opts = { out: null, maxKeys: 40, budget: 30000, files: [] };
     for (let i = 0; i < argv.length; i++) {
         if (argv[i] === '--out') {
             opts.out = argv[++i];
         } else if (argv[i] === '--max-keys') {
             opts.maxKeys = Number(argv[++i]);
+        } else if (argv[i] === '--budget') {
+            opts.budget = Number(argv[++i]);
         } else {
             opts.files.push(argv[i]);
         }
     }
     if (!opts.out || opts.files.length === 0 || !(opts.maxKeys >= 2)) {
-        console.error('usage: node gltf-reference.mjs --out DIR [--max-keys N] FILE...');
+        console.error('usage: node gltf-reference.mjs --out DIR [--max-keys N] [--budget N] FILE...');
         process.exit(2);
     }
     return opts;
@@ -352,7 +358,7 @@ function sizeOf(rest) {
     return round(Math.hypot(max[0] - min[0], max[1] - min[1], max[2] - min[2]));
 }
 
-async function reference(file, maxKeys) {
+async function reference(file, opts) {
     const doc = prepare(file);
     const json = doc.json;
     const first = normalizeRotations(await load(doc));
@@ -372,7 +378,9 @@ async function reference(file, maxKeys) {
         action.setLoop(THREE.LoopOnce, 1);
         action.clampWhenFinished = true;
         action.play();
-        const times = timesOf(clip, maxKeys);
+        const vertices = meshes.reduce((n, m) => n + m.object.geometry.getAttribute('position').count, 0);
+        const keys = Math.max(2, Math.min(opts.maxKeys, Math.floor(opts.budget / Math.max(1, 2 * vertices))));
+        const times = timesOf(clip, keys);
         const positions = meshes.map(() => []);
         for (const t of times) {
             mixer.setTime(t);
@@ -380,7 +388,9 @@ async function reference(file, maxKeys) {
             meshes.forEach((m, k) => positions[k].push(worldPositions(m, sets[k])));
         }
         clips.push({
-            index: c, name: clip.name, duration: round(clip.duration), times: times.map(round),
+            // times with 9 digits, which float32 key times survive exactly (a STEP key sampled at
+            // a time a rounding below it would give the previous key)
+            index: c, name: clip.name, duration: round(clip.duration), times: times.map((t) => Number(t.toPrecision(9))),
             morphWeights: clip.tracks.some((track) => track.name.endsWith('.morphTargetInfluences')),
             meshes: meshes.map((m, k) => ({ ...describe(m, sets[k], json), positions: positions[k] })),
         });
@@ -415,7 +425,7 @@ console.warn = () => {}; // GLTFLoader's notes (unknown extensions, skinning dis
 let failed = 0;
 for (const file of opts.files) {
     try {
-        const ref = await reference(file, opts.maxKeys);
+        const ref = await reference(file, opts);
         const target = write(opts.out, ref);
         const vertices = ref.rest.reduce((n, m) => n + m.vertices, 0);
         const times = ref.clips.reduce((n, c) => n + c.times.length, 0);

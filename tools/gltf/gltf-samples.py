@@ -23,8 +23,14 @@ Sources:
     copy. They were checked to parse, their data URIs to decode to the declared byteLength, and
     glTF-Validator to report no error (it checks accessor min/max against the data).
 
+Fox is the text of its glTF-Embedded file without the texture, which was not copied (a PNG data
+URI); its buffer was checked against the file's own numbers (positions min/max, 2520 unit
+rotation keys, increasing key times, weights summing to one, joints below 24). This version of
+Fox declares byteStride on its animation and inverse-bind-matrix views, which glTF-Validator
+reports as errors (fixed in later versions of the sample); the content is unaffected.
+
 Samples wanted but not here, and why (see docs/references.md): CesiumMan (615 kB as embedded
-text), Fox (241 kB, most of it its texture), RecursiveSkeletons (940 kB), BrainStem (4 MB),
+text), RecursiveSkeletons (940 kB), BrainStem (4 MB),
 InterpolationTest (binary buffers only): the only way to fetch them in the session that made this
 list was as text pages, too slow for their size; RiggedFigure: the stored copy is a pre-release
 glTF 2.0 export (node "jointName", one animation per joint), not the current sample. Any copy with the same layout works: add it to
@@ -68,6 +74,11 @@ MANIFEST = [
     ("AnimatedTriangle/AnimatedTriangle.gltf", "7add176d00a1275208a383fbaed6fbdd6e486f6ad8f6580ec7f0bc5b20c48a17",
      "KhronosGroup/glTF-Sample-Assets@5bad5aaa0bbb5d0f9cdc934e626f27d0df1e79b8:"
      "Models/AnimatedTriangle/glTF-Embedded/AnimatedTriangle.gltf"),
+    ("Fox/Fox-notexture.gltf", "2d079dd51d9a4693b0231062ae393a8a4b80774434d71bbba8db065004170187",
+     "KhronosGroup/glTF-Sample-Models@115ce5cd952fad2df5c3a2b1a82d169fd6f20936:2.0/Fox/glTF-Embedded/Fox.gltf"
+     " with its embedded texture left out (images, textures, samplers and the material's"
+     " baseColorTexture removed; written by json.dump with indent 4); geometry, skin and the three"
+     " clips as in the file"),
     ("RiggedSimple/RiggedSimple.gltf", "cdf2182ac7887e4c19062dca669191e56f05b6c3d919f199ac0448b22c1dbcf3",
      "KhronosGroup/glTF-Sample-Models@2e6fed56b2c776e01d52412e1695541e05a94dd7:2.0/RiggedSimple/glTF-Embedded/RiggedSimple.gltf"),
 ]
