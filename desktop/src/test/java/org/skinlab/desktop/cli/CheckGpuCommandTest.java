@@ -42,6 +42,7 @@ class CheckGpuCommandTest {
         }
         args.add(Cli.root().resolve("assets/characters/humanoid-walk.dae").toString());
         args.add(Cli.root().resolve("assets/creatures/tentacle-wave.dae").toString());
+        args.add(Cli.root().resolve("assets/characters/humanoid-walk.glb").toString());
         assertAllOk(Cli.run(args.toArray(String[]::new)), 3 * (args.size() - 3));
     }
 
