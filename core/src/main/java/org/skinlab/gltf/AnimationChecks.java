@@ -80,7 +80,7 @@ final class AnimationChecks {
             JsonNode accessor = doc.accessor((int) sampler.get(key).number());
             if (accessor.has("bufferView")
                     && doc.bufferView((int) accessor.get("bufferView").number()).has("byteStride")) {
-                throw sampler.get(key).error("an animation sampler's accessor lies in a view with a byteStride");
+                doc.strideNotAllowed(sampler.get(key), "the sampler's " + key + " values");
             }
         }
     }

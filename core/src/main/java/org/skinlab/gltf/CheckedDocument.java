@@ -100,10 +100,7 @@ final class CheckedDocument {
     static int objects(JsonNode parent, String key) throws GltfException {
         JsonNode array = parent.get(key).arrayOrMissing();
         for (int i = 0; i < array.size(); i++) {
-            array.get(i).objectOrMissing();
-            if (!array.get(i).isObject()) {
-                throw array.get(i).error("expected a JSON object");
-            }
+            array.get(i).objectOrMissing(); // an element is present: it must be an object
         }
         return array.size();
     }
@@ -201,6 +198,16 @@ final class CheckedDocument {
     }
 
     /**
+     * Warns about a byteStride where glTF allows none (index, inverse bind matrix, animation and
+     * image data). Exporters write them (the Khronos Fox sample does, on its inverse bind matrices
+     * and key frames), and the data read with the stride are what the file means.
+     */
+    void strideNotAllowed(JsonNode where, String what) {
+        ctx.warn(where.path(), what + " lie in a buffer view with a byteStride, which glTF does not allow there;"
+                + " read with the stride");
+    }
+
+    /**
      * Checks a {@code data:} URI's syntax (RFC 2397) without decoding it: a media type, one of
      * {@code types} (or, when {@code declared} is not empty, that one), parameters that are not
      * empty, and for base64 data a payload of whole base64 quads.
@@ -253,10 +260,7 @@ final class CheckedDocument {
     void extensions(JsonNode object, String kind) throws GltfException {
         JsonNode extensions = object.get("extensions").objectOrMissing();
         for (String name : extensions.keys()) {
-            JsonNode ext = extensions.get(name);
-            if (!ext.isObject()) {
-                throw ext.error("an extension must be a JSON object");
-            }
+            JsonNode ext = extensions.get(name).objectOrMissing(); // present: it must be an object
             if (!used.contains(name)) {
                 throw ext.error("the extension " + name + " is not declared in extensionsUsed");
             }

@@ -34,7 +34,7 @@ final class GltfDataChecks {
     }
 
     private void checkBounds() throws GltfException {
-        for (int i = 0; i < accessors.count(); i++) {
+        for (int i = 0; i < root.get("accessors").size(); i++) {
             JsonNode a = accessors.node(i);
             if (!knownType(a) || !hasData(a)) {
                 continue;

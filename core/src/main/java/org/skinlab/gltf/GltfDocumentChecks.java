@@ -136,7 +136,7 @@ final class GltfDocumentChecks {
         }
         int target = oneOf(view.get("target"), 0, ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER);
         if (target == ELEMENT_ARRAY_BUFFER && !stride.isMissing()) {
-            throw stride.error("an index buffer view (target 34963) has no byteStride");
+            doc.strideNotAllowed(stride, "indices (target 34963)");
         }
         doc.extensions(view, "bufferView");
     }
@@ -345,7 +345,7 @@ final class GltfDocumentChecks {
                 throw image.get("bufferView").error("an image in a buffer view needs a mimeType");
             }
             if (doc.bufferView(view).has("byteStride")) {
-                throw image.get("bufferView").error("an image's buffer view has no byteStride");
+                doc.strideNotAllowed(image.get("bufferView"), "an image's bytes");
             }
         } else {
             if (UriResolver.isDataUri(image.get("uri").string())) {

@@ -91,10 +91,7 @@ final class GltfSceneChecks {
     /** Checks a primitive; returns its number of morph targets. */
     private int checkPrimitive(JsonNode primitive) throws GltfException {
         required(primitive, "attributes");
-        JsonNode attributes = primitive.get("attributes").objectOrMissing();
-        if (!attributes.isObject()) {
-            throw attributes.error("expected a JSON object");
-        }
+        JsonNode attributes = primitive.get("attributes").objectOrMissing(); // required, so an object
         long count = -1;
         Map<String, Integer> sets = new HashMap<>();
         for (String name : attributes.keys()) {
@@ -237,7 +234,7 @@ final class GltfSceneChecks {
         if (accessor.has("bufferView")) {
             JsonNode view = doc.bufferView((int) accessor.get("bufferView").number());
             if (view.has("byteStride")) {
-                throw primitive.get("indices").error("the indices' buffer view has a byteStride");
+                doc.strideNotAllowed(primitive.get("indices"), "the indices");
             }
             if ((int) view.get("target").number(ELEMENT_ARRAY_BUFFER) != ELEMENT_ARRAY_BUFFER
                     || "vertex".equals(viewUse.put((int) accessor.get("bufferView").number(), "index"))) {
@@ -381,7 +378,7 @@ final class GltfSceneChecks {
             }
             if (accessor.has("bufferView") && doc.bufferView((int) accessor.get("bufferView").number())
                     .has("byteStride")) {
-                throw where.error("the inverse bind matrices' buffer view has a byteStride");
+                doc.strideNotAllowed(where, "the inverse bind matrices");
             }
         }
         doc.extensions(skin, "skin");
