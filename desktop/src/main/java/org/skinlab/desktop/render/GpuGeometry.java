@@ -18,7 +18,7 @@ import org.skinlab.skinning.SkinnedGeometry;
 
 /**
  * One {@link SkinnedGeometry} on the GPU: its render vertices in bind space with normals, texture
- * coordinates and the 4- or 8-influence view (for skinning in the vertex shader), a second pair of
+ * coordinates, vertex colours (when the mesh has them) and the 4- or 8-influence view (for skinning in the vertex shader), a second pair of
  * position and normal buffers the CPU-skinned frames are streamed into, the triangles, and the
  * palette. Two vertex arrays share everything but positions and normals: one reads the bind pose
  * (GPU skinning), one the streamed pose (CPU skinning).
@@ -34,7 +34,7 @@ final class GpuGeometry implements AutoCloseable {
     private final int cappedPoints;
     private final int gpuVao;
     private final int cpuVao;
-    private final int[] buffers = new int[8];
+    private final int[] buffers = new int[9];
     /** CoR's centres, uploaded on first use (0 until then). */
     private int centreBuffer;
     private final PaletteBuffers palette;
@@ -65,6 +65,11 @@ final class GpuGeometry implements AutoCloseable {
         int joints = buffers[5];
         int weights = buffers[6];
         int elements = buffers[7];
+        int colors = buffers[8];
+        float[] vertexColors = mesh != null && mesh.hasColors() ? mesh.colors() : null;
+        if (vertexColors != null) {
+            upload(colors, vertexColors, 4 * vertexCount, GL_STATIC_DRAW);
+        }
 
         upload(bindPositions, geometry.positionArray(), 3 * vertexCount, GL_STATIC_DRAW);
         upload(bindNormals, geometry.normalArray(), 3 * vertexCount, GL_STATIC_DRAW);
@@ -126,6 +131,14 @@ final class GpuGeometry implements AutoCloseable {
             // No centres until CoR is drawn: the shader reads (0, 0, 0) and only CoR uses them.
             glDisableVertexAttribArray(7);
             glVertexAttrib3f(7, 0f, 0f, 0f);
+            if (vertexColors != null) {
+                attribute(8, colors, 4);
+            } else {
+                // White: the material's colour as it is (a current attribute value is context state; every
+                // geometry without colours wants the same white).
+                glDisableVertexAttribArray(8);
+                glVertexAttrib4f(8, 1f, 1f, 1f, 1f);
+            }
         }
         IntBuffer indexData = MemoryUtil.memAllocInt(Math.max(1, triangles.length));
         try {
