@@ -2,6 +2,7 @@ package org.skinlab.scene;
 
 import org.skinlab.model.Material;
 import org.skinlab.model.MaterialBinding;
+import org.skinlab.model.Mesh;
 import org.skinlab.model.MeshInstance;
 import org.skinlab.model.MeshPart;
 import org.skinlab.model.Texture;
@@ -115,6 +116,27 @@ public final class PartMaterial {
         }
         float[] m = texture.transform().values(); // m00 m01 m02 m10 m11 m12, row-major
         return new float[] {m[0], m[3], 0, m[1], m[4], 0, m[2], m[5], 1};
+    }
+
+    /**
+     * The texture coordinates a renderer feeds {@code mesh}'s vertices with: the set the
+     * instance's first textured binding names, else the mesh's first set; null when it has none.
+     * One set per mesh: parts whose textures name different sets all read this one.
+     */
+    public static float[] texCoords(Mesh mesh, MeshInstance instance) {
+        if (mesh == null || mesh.texCoordSetCount() == 0) {
+            return null;
+        }
+        int set = 0;
+        if (instance != null) {
+            for (MaterialBinding b : instance.materials()) {
+                if (b.texCoordSet() >= 0) {
+                    set = b.texCoordSet();
+                    break;
+                }
+            }
+        }
+        return mesh.texCoords(set);
     }
 
     @Override

@@ -8,10 +8,10 @@ import java.nio.ShortBuffer;
 import java.util.List;
 
 import org.lwjgl.system.MemoryUtil;
-import org.skinlab.model.MaterialBinding;
 import org.skinlab.model.Mesh;
 import org.skinlab.model.MeshInstance;
 import org.skinlab.model.MeshPart;
+import org.skinlab.scene.PartMaterial;
 import org.skinlab.simulation.Frame;
 import org.skinlab.skinning.InfluenceView;
 import org.skinlab.skinning.SkinnedGeometry;
@@ -53,7 +53,7 @@ final class GpuGeometry implements AutoCloseable {
         this.influences = geometry.influencesPerPoint() <= 4 ? 4 : MAX_SHADER_INFLUENCES;
         InfluenceView view = InfluenceView.of(geometry, influences);
         this.cappedPoints = view.cappedPointCount();
-        float[] uv = uvSet(mesh, instance);
+        float[] uv = PartMaterial.texCoords(mesh, instance);
         this.hasUv = uv != null;
 
         glGenBuffers(buffers);
@@ -150,23 +150,6 @@ final class GpuGeometry implements AutoCloseable {
         glBindVertexArray(0);
         glBindBuffer(GL_ARRAY_BUFFER, 0);
         palette = new PaletteBuffers(geometry.jointCount());
-    }
-
-    /** The texture coordinates the instance's materials use, or the mesh's first set, or null. */
-    private static float[] uvSet(Mesh mesh, MeshInstance instance) {
-        if (mesh == null || mesh.texCoordSetCount() == 0) {
-            return null;
-        }
-        int set = 0;
-        if (instance != null) {
-            for (MaterialBinding b : instance.materials()) {
-                if (b.texCoordSet() >= 0) {
-                    set = b.texCoordSet();
-                    break;
-                }
-            }
-        }
-        return mesh.texCoords(set);
     }
 
     private static void upload(int buffer, float[] data, int floats, int usage) {

@@ -13,6 +13,7 @@ import org.skinlab.model.Image;
 import org.skinlab.model.MeshPart;
 import org.skinlab.model.Model;
 import org.skinlab.model.Texture;
+import org.skinlab.scene.BlendOrder;
 import org.skinlab.scene.MaterialGlsl;
 import org.skinlab.scene.PartCentres;
 import org.skinlab.scene.PartMaterial;
@@ -43,10 +44,7 @@ public final class ModelRenderer implements AutoCloseable {
     private final float[][] posedCentres;
     /** Per geometry, whether the frame last uploaded reverses its triangles' winding. */
     private final boolean[] mirrored;
-    /** The blended parts of a draw, farthest first: geometry and part index, and depth. */
-    private final int[] blendGeometry;
-    private final int[] blendPart;
-    private final float[] blendDepth;
+    private final BlendOrder blendOrder;
     /** 16 floats off the heap for matrix uniforms: nothing is allocated per draw, JIT or not. */
     private final FloatBuffer matrix = MemoryUtil.memAllocFloat(16);
     private final Matrix4f clip = new Matrix4f();
@@ -76,9 +74,7 @@ public final class ModelRenderer implements AutoCloseable {
                 blended += p.material().blended() ? 1 : 0;
             }
         }
-        blendGeometry = new int[blended];
-        blendPart = new int[blended];
-        blendDepth = new float[blended];
+        blendOrder = new BlendOrder(blended);
     }
 
     private static PartDraw[] resolveParts(GpuGeometry gpu, ToIntFunction<Image> textures) {
@@ -175,42 +171,26 @@ public final class ModelRenderer implements AutoCloseable {
         glBindVertexArray(0);
     }
 
-    /** The blended parts of every geometry, sorted farthest first by their posed centres. */
+    /** The blended parts of every geometry, farthest first by their posed centres. */
     private void drawBlended(DrawSettings s, boolean weights, boolean modelMirrors) {
         clip.set(s.viewProjection).mul(s.model);
-        int n = 0;
+        blendOrder.clear();
         for (int g = 0; g < geometries.size(); g++) {
             for (int i = 0; i < parts[g].length; i++) {
                 if (parts[g][i].material().blended()) {
-                    float depth = i < centres[g].partCount() ? clipW(posedCentres[g], i) : 0f;
-                    int at = n++;
-                    // Insertion sort: a handful of parts, and nothing allocated.
-                    while (at > 0 && blendDepth[at - 1] < depth) {
-                        blendGeometry[at] = blendGeometry[at - 1];
-                        blendPart[at] = blendPart[at - 1];
-                        blendDepth[at] = blendDepth[at - 1];
-                        at--;
-                    }
-                    blendGeometry[at] = g;
-                    blendPart[at] = i;
-                    blendDepth[at] = depth;
+                    blendOrder.add(g, i, i < centres[g].partCount() ? BlendOrder.distance(clip, posedCentres[g], i) : 0f);
                 }
             }
         }
         int bound = -1;
-        for (int k = 0; k < n; k++) {
-            int g = blendGeometry[k];
+        for (int k = 0; k < blendOrder.size(); k++) {
+            int g = blendOrder.geometry(k);
             if (g != bound) {
                 bindGeometry(s, g, weights);
                 bound = g;
             }
-            drawPart(s, parts[g][blendPart[k]], mirrored[g] ^ modelMirrors);
+            drawPart(s, parts[g][blendOrder.part(k)], mirrored[g] ^ modelMirrors);
         }
-    }
-
-    /** The clip-space w (the distance along the view direction) of posed centre {@code i}. */
-    private float clipW(float[] posed, int i) {
-        return clip.m03() * posed[3 * i] + clip.m13() * posed[3 * i + 1] + clip.m23() * posed[3 * i + 2] + clip.m33();
     }
 
     /** Binds geometry {@code g} with its palette and the uniforms that are per geometry. */
