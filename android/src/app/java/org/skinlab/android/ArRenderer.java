@@ -266,7 +266,8 @@ final class ArRenderer implements GLSurfaceView.Renderer {
                 if (!parts[i].material().blended()) {
                     model.draw(parts[i], materials, viewMirrors);
                 } else {
-                    blendOrder.add(g, i, i < model.centredParts() ? BlendOrder.distance(clip, model.posedCentres(), i) : 0f);
+                    float distance = i < model.centredParts() ? BlendOrder.distance(clip, model.posedCentres(), i) : 0f;
+                    blendOrder.add(g, i, distance);
                 }
             }
         }

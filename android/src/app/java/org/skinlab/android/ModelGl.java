@@ -90,7 +90,8 @@ final class ModelGl {
             // every geometry without colours wants the same).
             glVertexAttrib4f(GlesShaders.COLOR, 1f, 1f, 1f, 1f);
         }
-        IntBuffer idx = ByteBuffer.allocateDirect(Math.max(4, 4 * triangles.length)).order(ByteOrder.nativeOrder()).asIntBuffer();
+        IntBuffer idx = ByteBuffer.allocateDirect(Math.max(4, 4 * triangles.length)).order(ByteOrder.nativeOrder())
+                .asIntBuffer();
         idx.put(triangles).flip();
         glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffers[5]);
         glBufferData(GL_ELEMENT_ARRAY_BUFFER, 4 * triangles.length, idx, GL_STATIC_DRAW);

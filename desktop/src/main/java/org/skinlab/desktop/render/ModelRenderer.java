@@ -178,7 +178,8 @@ public final class ModelRenderer implements AutoCloseable {
         for (int g = 0; g < geometries.size(); g++) {
             for (int i = 0; i < parts[g].length; i++) {
                 if (parts[g][i].material().blended()) {
-                    blendOrder.add(g, i, i < centres[g].partCount() ? BlendOrder.distance(clip, posedCentres[g], i) : 0f);
+                    float distance = i < centres[g].partCount() ? BlendOrder.distance(clip, posedCentres[g], i) : 0f;
+                    blendOrder.add(g, i, distance);
                 }
             }
         }
