@@ -38,6 +38,10 @@ that exercises what a skinned character can use, one group of features per file:
                               cutout, a BLEND quad in front of an opaque one (listed first), an
                               emissive quad, KHR_materials_unlit, single- and double-sided quads
                               facing -Z, vertex colours
+  skin-textured.glb           a skinned, textured strip (the four-colour picture of materials.glb,
+                              embedded): 1 x 2 facing +Z, its upper half on a joint at y = 1 whose
+                              clip moves it 0.5 along +X by t = 1 (the phone's and the viewer's
+                              textured-and-skinned check)
 
 Run from the repository root (Python 3 standard library; the validation needs Node and
 `npm ci` in bench/threejs):
@@ -798,8 +802,42 @@ def materials():
     return write(doc, glb=True)
 
 
+def skin_textured():
+    doc = Doc("skin-textured.glb")
+    j = doc.json
+    four = png(8, 8, lambda x, y: QUADRANTS[y // 4][x // 4])
+    j["images"] = [{"bufferView": doc.view(four), "mimeType": "image/png", "name": "quadrants"}]
+    j["textures"] = [{"source": 0}]
+    j["materials"] = [{"name": "quadrants", "pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}]
+    xs, ys = [-0.5, 0.0, 0.5], [0.0, 0.5, 1.0, 1.5, 2.0]
+    pos = [(x, y, 0.0) for y in ys for x in xs]
+    uv = [((x + 0.5), 1 - y / 2) for y in ys for x in xs]
+    tris = []
+    for r in range(len(ys) - 1):
+        for c in range(len(xs) - 1):
+            a = r * len(xs) + c
+            tris += [a, a + 1, a + 1 + len(xs), a, a + 1 + len(xs), a + len(xs)]
+    joints = chain(doc, [0.0, 1.0])
+    jts, wts = blend_weights(pos, [0.0, 1.0])
+    prim = {"attributes": {"POSITION": doc.accessor(pos, FLOAT, "VEC3", target=ARRAY_BUFFER, minmax=True),
+                           "NORMAL": doc.accessor([(0, 0, 1)] * len(pos), FLOAT, "VEC3", target=ARRAY_BUFFER),
+                           "TEXCOORD_0": doc.accessor(uv, FLOAT, "VEC2", target=ARRAY_BUFFER),
+                           "JOINTS_0": doc.accessor(jts, UBYTE, "VEC4", target=ARRAY_BUFFER),
+                           "WEIGHTS_0": doc.accessor(wts, FLOAT, "VEC4", target=ARRAY_BUFFER)},
+            "indices": doc.accessor(tris, USHORT, "SCALAR", target=ELEMENT_ARRAY_BUFFER, vertex=False),
+            "material": 0}
+    mesh = mesh_of(doc, [prim], name="strip")
+    body = doc.node(name="strip", mesh=mesh, skin=0)
+    j["scenes"][0]["nodes"] = [joints[0], body]
+    skin(doc, joints)
+    a = animation(doc, "slide")
+    channel(doc, a, joints[1], "translation", [0.0, 1.0], [(0, 1, 0), (0.5, 1, 0)])
+    return write(doc, glb=True)
+
+
 FIXTURES = [skin_component_types, skin_interleaved, skin_sparse, skin_quantized, skin_strip_fan,
-            skin_eight_influences, skin_no_ibm, anim_interpolation, morph_skin, materials]
+            skin_eight_influences, skin_no_ibm, anim_interpolation, morph_skin, materials,
+            skin_textured]
 
 
 def check():

@@ -43,6 +43,8 @@ import org.skinlab.skinning.SkinningMethod;
  * x in [-2, 2] and y in [-0.75, 3.25]: a quad's centre (X, Y) lands on pixel
  * (50 (X + 2), 200 - 50 (Y + 0.75)), a quarter of a quad is 12.5 pixels.
  *
+ * And {@code gltf/skin-textured.glb}, skinned and textured, at rest and with its upper half slid.
+ *
  * <p>Lit colours are the base colour times 0.35 + 0.65 n.l = 0.72 here (the app's light, quads
  * facing the camera): checks ask for a dominant channel above 150 and the others below 60.
  */
@@ -67,6 +69,23 @@ class GlesMaterialsTest {
             glDeleteProgram(program);
             context.close();
         }
+    }
+
+    @Test
+    void aSkinnedTexturedGlbIsDrawnTexturedWhereItsJointsPutIt() throws Exception {
+        // skin-textured.glb: a 1 x 2 strip with the four-colour picture; its upper half follows a
+        // joint that slides 0.5 along +X by t = 1 (0.45 at t = 0.9: the clip loops at its end).
+        // (0.25, 1.5) shows green at rest, then the red that was at (-0.2, 1.5); (-0.25, 1.5) is
+        // then empty; the lower left stays blue.
+        Matrix4f view = new Matrix4f().translate(0, 0, -5);
+        int[][] rest = render("skin-textured.glb", view, 0.0, 1);
+        expect(rest, 112, 88, "upper right at rest", 0, 1, 0);
+        expect(rest, 88, 88, "upper left at rest", 1, 0, 0);
+        expect(rest, 88, 150, "lower left at rest", 0, 0, 1);
+        int[][] slid = render("skin-textured.glb", view, 0.9, 1);
+        expect(slid, 112, 88, "upper half slid right: its red", 1, 0, 0);
+        expectClear(slid, 88, 88, "where the upper left was");
+        expect(slid, 88, 150, "lower left", 0, 0, 1);
     }
 
     @Test
@@ -127,10 +146,15 @@ class GlesMaterialsTest {
      * facing test needs) and the orthographic camera; RGB per pixel, row 0 at the top.
      */
     private static int[][] render(Matrix4f view) throws Exception {
-        Path glb = Path.of(System.getProperty("skinlab.root", ".."), "core/src/test/resources/gltf/materials.glb");
+        return render("materials.glb", view, 0.0, 2);
+    }
+
+    /** As {@link #render(Matrix4f)} for core's fixture {@code file} at clip time {@code seconds}. */
+    private static int[][] render(String file, Matrix4f view, double seconds, int pictureCount) throws Exception {
+        Path glb = Path.of(System.getProperty("skinlab.root", ".."), "core/src/test/resources/gltf", file);
         Model model = ModelImporter.read(glb);
         ModelTextures pictures = ModelTextures.decode(model, new ImageIoDecoder());
-        assertEquals(2, pictures.count(), "both pictures decode: " + pictures.problems());
+        assertEquals(pictureCount, pictures.count(), "every picture decodes: " + pictures.problems());
         AnimationConfig config = new AnimationConfig(AnimationConfig.Settings.DEFAULT.withCpuSkinning(false));
         Matrix4f projection = new Matrix4f().ortho(-2f, 2f, -0.75f, 3.25f, -10f, 10f);
         int target = glGenTextures();
@@ -147,10 +171,14 @@ class GlesMaterialsTest {
         glViewport(0, 0, SIZE, SIZE);
         glClearColor(0f, 0f, 0f, 1f);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        try (SkeletalAnimatedMesh mesh = SkeletalAnimatedMesh.of(model, config); Frame frame = mesh.acquire()) {
-            AppDraw draw = new AppDraw(mesh, pictures);
-            draw.draw(frame, view, projection);
-            draw.close();
+        try (SkeletalAnimatedMesh mesh = SkeletalAnimatedMesh.of(model, config)) {
+            mesh.seek(seconds);
+            mesh.step(0.0);
+            try (Frame frame = mesh.acquire()) {
+                AppDraw draw = new AppDraw(mesh, pictures);
+                draw.draw(frame, view, projection);
+                draw.close();
+            }
         }
         ByteBuffer read = ByteBuffer.allocateDirect(4 * SIZE * SIZE).order(ByteOrder.nativeOrder());
         glReadPixels(0, 0, SIZE, SIZE, GL_RGBA, GL_UNSIGNED_BYTE, read);

@@ -19,7 +19,8 @@ import org.skinlab.desktop.app.ViewerWindowTestAccess;
  * glTF materials reach the screen: {@code skinlab view --screenshot} of core's
  * {@code gltf/materials.glb} (tools/gltf/make-fixtures.py: unit quads in a 3 x 3 grid, one
  * material feature each), from the front and from behind, with colours checked at the quads'
- * quarter points. The pictures stay in {@code desktop/build/materials-shots} to be looked at.
+ * quarter points; and {@code gltf/skin-textured.glb}, skinned and textured, at rest and slid, with
+ * every method. The pictures stay in {@code desktop/build/materials-shots} to be looked at.
  *
  * <p>Lit colours are the base colour times about 0.8 to 1 (the viewer's key light, fill and
  * ambient on a quad facing the camera), so the checks ask for a dominant channel above 150 and
@@ -43,7 +44,11 @@ class MaterialsScreenshotTest {
     }
 
     private static Picture shoot(String name, String... options) throws Exception {
-        Path glb = root().resolve("core/src/test/resources/gltf/materials.glb");
+        return shootFile("materials.glb", name, options);
+    }
+
+    private static Picture shootFile(String file, String name, String... options) throws Exception {
+        Path glb = root().resolve("core/src/test/resources/gltf/" + file);
         Path shot = root().resolve("desktop/build/materials-shots/" + name + ".png");
         Files.createDirectories(shot.getParent());
         String[] args = {"view", glb.toString(), "--hide-ui", "--size", SIZE + "x" + SIZE, "--screenshot",
@@ -121,6 +126,31 @@ class MaterialsScreenshotTest {
         p.expectBackground(115, 280, "single-sided quad seen from behind");
     }
 
+    /**
+     * skin-textured.glb: a 1 x 2 strip with the four-colour picture whose upper half follows a
+     * joint sliding 0.5 along +X by t = 1 (0.45 at t = 0.9; the clip loops at its end), skinned on
+     * the GPU with each method and on the CPU. At rest the upper quarters are red and green, the
+     * lower left blue; slid, the red and green move one quarter right (the viewer frames the rest
+     * pose: upper quarters at x = 160 and 235, y = 120; the next quarter to the right at 310).
+     */
+    @Test
+    void aSkinnedTexturedStripIsTexturedWhereItsJointsPutIt() throws Exception {
+        String[][] runs = {{"lbs", "--gpu"}, {"dqs", "--gpu"}, {"cor", "--gpu"}, {"lbs", "--cpu"}};
+        for (String[] run : runs) {
+            String label = run[0] + run[1];
+            Picture rest = shootFile("skin-textured.glb", "strip-rest-" + run[0] + run[1], "--yaw", "0", "--time", "0",
+                    "--method", run[0], run[1]);
+            rest.expect(160, 120, label + " upper left at rest", RED);
+            rest.expect(235, 120, label + " upper right at rest", GREEN);
+            rest.expect(160, 270, label + " lower left at rest", BLUE);
+            Picture slid = shootFile("skin-textured.glb", "strip-slid-" + run[0] + run[1], "--yaw", "0", "--time", "0.9",
+                    "--method", run[0], run[1]);
+            slid.expectBackground(160, 120, label + " where the upper left was");
+            slid.expect(235, 120, label + " upper left slid right", RED);
+            slid.expect(310, 120, label + " upper right slid right", GREEN);
+        }
+    }
+
     private static final int[] RED = {1, 0, 0};
     private static final int[] GREEN = {0, 1, 0};
     private static final int[] BLUE = {0, 0, 1};
@@ -179,17 +209,6 @@ class MaterialsScreenshotTest {
         void expectBackground(int x, int y, String what) {
             int[] c = at(x, y);
             assertTrue(isBackground(c), what + " at (" + x + ", " + y + ") shows the background: " + Arrays.toString(c));
-        }
-
-        void print() {
-            for (int y = 0; y < height; y += 20) {
-                StringBuilder b = new StringBuilder();
-                for (int x = 0; x < width; x += 20) {
-                    int[] c = at(x, y);
-                    b.append(String.format("%02x%02x%02x ", c[0] >> 4, c[1] >> 4, c[2] >> 4));
-                }
-                System.out.println(y + ": " + b);
-            }
         }
     }
 }
