@@ -32,6 +32,16 @@ that exercises what a skinned character can use, one group of features per file:
   morph-skin.gltf             morph targets (POSITION and NORMAL) on a skinned mesh with default
                               mesh weights, a node that overrides them, and a clip that animates
                               the weights (LINEAR) beside the joints
+  materials.glb               GLB with PNG images in buffer views: unit quads facing +Z in a grid,
+                              one material feature each (the viewer's pixel tests look at them):
+                              a four-colour texture, the same with KHR_texture_transform, a MASK
+                              cutout, a BLEND quad in front of an opaque one (listed first), an
+                              emissive quad, KHR_materials_unlit, single- and double-sided quads
+                              facing -Z, vertex colours
+  skin-textured.glb           a skinned, textured strip (the four-colour picture of materials.glb,
+                              embedded): 1 x 2 facing +Z, its upper half on a joint at y = 1 whose
+                              clip moves it 0.5 along +X by t = 1 (the phone's and the viewer's
+                              textured-and-skinned check)
 
 Run from the repository root (Python 3 standard library; the validation needs Node and
 `npm ci` in bench/threejs):
@@ -52,6 +62,7 @@ import struct
 import subprocess
 import sys
 import tempfile
+import zlib
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 OUT = os.path.join(ROOT, "core", "src", "test", "resources", "gltf")
@@ -722,8 +733,111 @@ def morph_skin():
     return write(doc)
 
 
+def png(width, height, pixel):
+    """An RGBA PNG (no filter, zlib level 9: deterministic); pixel(x, y) -> (r, g, b, a), row 0 the top."""
+    raw = b"".join(b"\0" + bytes(c for x in range(width) for c in pixel(x, y)) for y in range(height))
+
+    def chunk(kind, data):
+        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
+    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 6, 0, 0, 0))
+            + chunk(b"IDAT", zlib.compress(raw, 9)) + chunk(b"IEND", b""))
+
+
+# The four-colour picture: red top left, green top right, blue bottom left, yellow bottom right.
+QUADRANTS = [[(255, 0, 0, 255), (0, 255, 0, 255)], [(0, 0, 255, 255), (255, 255, 0, 255)]]
+
+
+def quad(doc, facing_back=False, color=None):
+    """A unit quad around the origin in the XY plane facing +Z (or -Z: reversed winding and normal),
+    glTF texture coordinates with (0, 0) at the image's top left."""
+    pos = [(-0.5, -0.5, 0), (0.5, -0.5, 0), (0.5, 0.5, 0), (-0.5, 0.5, 0)]
+    uv = [(0, 1), (1, 1), (1, 0), (0, 0)]
+    nz = -1 if facing_back else 1
+    attributes = {"POSITION": doc.accessor(pos, FLOAT, "VEC3", target=ARRAY_BUFFER, minmax=True),
+                  "NORMAL": doc.accessor([(0, 0, nz)] * 4, FLOAT, "VEC3", target=ARRAY_BUFFER),
+                  "TEXCOORD_0": doc.accessor(uv, FLOAT, "VEC2", target=ARRAY_BUFFER)}
+    if color:
+        attributes["COLOR_0"] = doc.accessor([color] * 4, FLOAT, "VEC4", target=ARRAY_BUFFER)
+    tris = [0, 2, 1, 0, 3, 2] if facing_back else [0, 1, 2, 0, 2, 3]
+    return attributes, doc.accessor(tris, USHORT, "SCALAR", target=ELEMENT_ARRAY_BUFFER, vertex=False)
+
+
+def materials():
+    doc = Doc("materials.glb")
+    j = doc.json
+    four = png(8, 8, lambda x, y: QUADRANTS[y // 4][x // 4])
+    cutout = png(8, 8, lambda x, y: (255, 255, 255, 51 if x < 4 else 230))
+    j["images"] = [{"bufferView": doc.view(four), "mimeType": "image/png", "name": "quadrants"},
+                   {"bufferView": doc.view(cutout), "mimeType": "image/png", "name": "cutout"}]
+    j["textures"] = [{"source": 0}, {"source": 1}]
+    # A quarter turn and an offset (glTF's convention): uv' = (v, 1 - u), so the picture turns.
+    turned = {"KHR_texture_transform": {"offset": [0, 1], "rotation": math.pi / 2}}
+    j["materials"] = [
+        {"name": "quadrants", "pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}},
+        {"name": "turned", "pbrMetallicRoughness": {"baseColorTexture": {"index": 0, "extensions": turned}}},
+        {"name": "cutout", "alphaMode": "MASK", "alphaCutoff": 0.5,
+         "pbrMetallicRoughness": {"baseColorFactor": [0, 1, 0, 1], "baseColorTexture": {"index": 1}}},
+        {"name": "glass", "alphaMode": "BLEND", "pbrMetallicRoughness": {"baseColorFactor": [0, 0, 1, 0.5]}},
+        {"name": "red", "pbrMetallicRoughness": {"baseColorFactor": [1, 0, 0, 1]}},
+        {"name": "glow", "emissiveFactor": [0, 1, 0], "pbrMetallicRoughness": {"baseColorFactor": [0, 0, 0, 1]}},
+        {"name": "unlit", "extensions": {"KHR_materials_unlit": {}},
+         "pbrMetallicRoughness": {"baseColorFactor": [1, 0.5, 0, 1]}},
+        {"name": "single-sided", "pbrMetallicRoughness": {"baseColorFactor": [0, 1, 1, 1]}},
+        {"name": "double-sided", "doubleSided": True, "pbrMetallicRoughness": {"baseColorFactor": [1, 1, 0, 1]}},
+        {"name": "white", "pbrMetallicRoughness": {"baseColorFactor": [1, 1, 1, 1]}},
+    ]
+    j["extensionsUsed"] = ["KHR_materials_unlit", "KHR_texture_transform"]
+    # (column, row, z, material, facing back, vertex colour); rows from the top, 1.25 apart.
+    layout = [(0, 0, 0, 0, False, None), (1, 0, 0, 1, False, None), (2, 0, 0, 2, False, None),
+              (0, 1, 0.3, 3, False, None), (0, 1, 0, 4, False, None), (1, 1, 0, 5, False, None),
+              (2, 1, 0, 6, False, None), (0, 2, 0, 7, True, None), (1, 2, 0, 8, True, None),
+              (2, 2, 0, 9, False, (1, 0, 1, 1))]
+    for column, row, z, material, back, color in layout:
+        attributes, indices = quad(doc, back, color)
+        j["meshes"].append({"name": j["materials"][material]["name"],
+                            "primitives": [{"attributes": attributes, "indices": indices, "material": material}]})
+        n = doc.node(name=j["materials"][material]["name"], mesh=len(j["meshes"]) - 1,
+                     translation=[(column - 1) * 1.25, (2 - row) * 1.25, z])
+        j["scenes"][0]["nodes"].append(n)
+    return write(doc, glb=True)
+
+
+def skin_textured():
+    doc = Doc("skin-textured.glb")
+    j = doc.json
+    four = png(8, 8, lambda x, y: QUADRANTS[y // 4][x // 4])
+    j["images"] = [{"bufferView": doc.view(four), "mimeType": "image/png", "name": "quadrants"}]
+    j["textures"] = [{"source": 0}]
+    j["materials"] = [{"name": "quadrants", "pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}]
+    xs, ys = [-0.5, 0.0, 0.5], [0.0, 0.5, 1.0, 1.5, 2.0]
+    pos = [(x, y, 0.0) for y in ys for x in xs]
+    uv = [((x + 0.5), 1 - y / 2) for y in ys for x in xs]
+    tris = []
+    for r in range(len(ys) - 1):
+        for c in range(len(xs) - 1):
+            a = r * len(xs) + c
+            tris += [a, a + 1, a + 1 + len(xs), a, a + 1 + len(xs), a + len(xs)]
+    joints = chain(doc, [0.0, 1.0])
+    jts, wts = blend_weights(pos, [0.0, 1.0])
+    prim = {"attributes": {"POSITION": doc.accessor(pos, FLOAT, "VEC3", target=ARRAY_BUFFER, minmax=True),
+                           "NORMAL": doc.accessor([(0, 0, 1)] * len(pos), FLOAT, "VEC3", target=ARRAY_BUFFER),
+                           "TEXCOORD_0": doc.accessor(uv, FLOAT, "VEC2", target=ARRAY_BUFFER),
+                           "JOINTS_0": doc.accessor(jts, UBYTE, "VEC4", target=ARRAY_BUFFER),
+                           "WEIGHTS_0": doc.accessor(wts, FLOAT, "VEC4", target=ARRAY_BUFFER)},
+            "indices": doc.accessor(tris, USHORT, "SCALAR", target=ELEMENT_ARRAY_BUFFER, vertex=False),
+            "material": 0}
+    mesh = mesh_of(doc, [prim], name="strip")
+    body = doc.node(name="strip", mesh=mesh, skin=0)
+    j["scenes"][0]["nodes"] = [joints[0], body]
+    skin(doc, joints)
+    a = animation(doc, "slide")
+    channel(doc, a, joints[1], "translation", [0.0, 1.0], [(0, 1, 0), (0.5, 1, 0)])
+    return write(doc, glb=True)
+
+
 FIXTURES = [skin_component_types, skin_interleaved, skin_sparse, skin_quantized, skin_strip_fan,
-            skin_eight_influences, skin_no_ibm, anim_interpolation, morph_skin]
+            skin_eight_influences, skin_no_ibm, anim_interpolation, morph_skin, materials,
+            skin_textured]
 
 
 def check():

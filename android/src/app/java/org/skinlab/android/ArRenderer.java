@@ -19,6 +19,8 @@ import android.opengl.GLSurfaceView;
 import org.joml.Matrix4f;
 import org.skinlab.android.logic.FpsCounter;
 import org.skinlab.android.logic.GlesShaders;
+import org.skinlab.android.logic.ModelLoader;
+import org.skinlab.android.logic.ModelTextures;
 import org.skinlab.android.logic.PreviewOrientation;
 import org.skinlab.ar.ArCamera;
 import org.skinlab.ar.ArPose;
@@ -27,6 +29,7 @@ import org.skinlab.ar.CameraFollow;
 import org.skinlab.ar.CameraIntrinsics;
 import org.skinlab.ar.LensGlsl;
 import org.skinlab.ar.MarkerScene;
+import org.skinlab.scene.BlendOrder;
 import org.skinlab.scene.ModelFraming;
 import org.skinlab.simulation.AnimationConfig;
 import org.skinlab.simulation.Frame;
@@ -60,10 +63,15 @@ final class ArRenderer implements GLSurfaceView.Renderer {
     private volatile int sensorOrientation = 90;
     /** Why nothing can be drawn (the driver refused our shaders), or null. */
     private volatile String glProblem;
-    private volatile SkeletalAnimatedMesh mesh;
+    /** The model to draw: its simulation and decoded pictures, swapped as one. */
+    private volatile ModelLoader.Loaded loaded;
     private volatile MarkerScene scene = new MarkerScene(0.1);
     private SkeletalAnimatedMesh meshOnGpu;
     private List<ModelGl> models = new ArrayList<>();
+    private TexturesGl textures = new TexturesGl(ModelTextures.NONE);
+    private MaterialUniforms materials;
+    private BlendOrder blendOrder = new BlendOrder(0);
+    private final Matrix4f clip = new Matrix4f();
     private ModelFraming framing;
     private SurfaceTexture preview;
     private int previewTexture;
@@ -100,8 +108,8 @@ final class ArRenderer implements GLSurfaceView.Renderer {
         this.scene = scene;
     }
 
-    void setMesh(SkeletalAnimatedMesh mesh) {
-        this.mesh = mesh;
+    void setModel(ModelLoader.Loaded model) {
+        this.loaded = model;
     }
 
     double fps() {
@@ -117,7 +125,10 @@ final class ArRenderer implements GLSurfaceView.Renderer {
     public void onSurfaceCreated(GL10 unused, EGLConfig eglConfig) {
         try {
             background = GlProgram.link(GlesShaders.BACKGROUND_VERTEX, GlesShaders.backgroundFragment());
-            skinned = GlProgram.link(GlesShaders.skinnedVertex(), GlesShaders.SKINNED_FRAGMENT);
+            skinned = GlProgram.link(GlesShaders.skinnedVertex(), GlesShaders.skinnedFragment());
+            glUseProgram(skinned);
+            materials = new MaterialUniforms(skinned);
+            glUseProgram(0);
             glProblem = null;
         } catch (IllegalStateException e) {
             // A driver that refuses our GLSL ES: say why in the status line instead of crashing.
@@ -145,6 +156,7 @@ final class ArRenderer implements GLSurfaceView.Renderer {
         glBindVertexArray(0);
         // The EGL context is new: whatever was on the GPU is gone.
         models = new ArrayList<>();
+        textures = new TexturesGl(ModelTextures.NONE);
         meshOnGpu = null;
     }
 
@@ -190,42 +202,94 @@ final class ArRenderer implements GLSurfaceView.Renderer {
         glBindVertexArray(0);
 
         ArPose pose = s.current();
-        SkeletalAnimatedMesh m = mesh;
+        ModelLoader.Loaded shown = loaded;
+        SkeletalAnimatedMesh m = shown == null ? null : shown.mesh();
         if (!pose.visible() || m == null || m.isClosed()) {
             return;
         }
         try (Frame frame = m.acquire()) {
             if (m != meshOnGpu) {
-                for (ModelGl g : models) {
-                    g.release();
-                }
-                models = new ArrayList<>();
-                for (int g = 0; g < m.geometries().size(); g++) {
-                    models.add(new ModelGl(m.geometries().get(g)));
-                }
-                framing = ModelFraming.of(m.model().asset(), m.geometries(), frame);
-                meshOnGpu = m;
-                follow.reset();
+                upload(shown, frame);
             }
             scene.place(pose, follow, config.isFollowCamera(), framing, markerView, model);
             markerView.mul(model, modelView);
             ArCamera.projection(k, 0.01f, 20f, width, height, imageRotation, false, projection);
-            glEnable(GL_DEPTH_TEST);
-            glUseProgram(skinned);
-            glUniformMatrix4fv(glGetUniformLocation(skinned, "uProjection"), 1, false, projection.get(matrix), 0);
-            glUniformMatrix4fv(glGetUniformLocation(skinned, "uModelView"), 1, false, modelView.get(matrix), 0);
-            glUniform1i(glGetUniformLocation(skinned, "uMethod"), SkinningGlsl.methodCode(frame.method()));
-            glUniform1i(glGetUniformLocation(skinned, "uPalette"), 1);
-            for (int g = 0; g < models.size(); g++) {
-                ModelGl model = models.get(g);
-                model.palette(frame, g);
-                glUniform1i(glGetUniformLocation(skinned, "uHasScale"), frame.hasScale(g) ? 1 : 0);
-                glUniform1i(glGetUniformLocation(skinned, "uMatricesMirror"), frame.mirrorsMatrices(g) ? 1 : 0);
-                glUniform1i(glGetUniformLocation(skinned, "uScalesMirror"), frame.mirrorsScales(g) ? 1 : 0);
-                glUniform4fv(glGetUniformLocation(skinned, "uColor"), 1, model.color, 0);
-                model.draw();
+            drawModel(frame);
+        }
+    }
+
+    /** Replaces what is on the GPU with {@code shown}'s geometries and textures (GL thread). */
+    private void upload(ModelLoader.Loaded shown, Frame frame) {
+        SkeletalAnimatedMesh m = shown.mesh();
+        for (ModelGl g : models) {
+            g.release();
+        }
+        textures.release();
+        textures = new TexturesGl(shown.textures());
+        models = new ArrayList<>();
+        int blended = 0;
+        for (int g = 0; g < m.geometries().size(); g++) {
+            ModelGl gl = new ModelGl(m.geometries().get(g), textures::texture);
+            models.add(gl);
+            for (ModelGl.Part p : gl.parts()) {
+                blended += p.material().blended() ? 1 : 0;
             }
         }
+        blendOrder = new BlendOrder(blended);
+        framing = ModelFraming.of(m.model().asset(), m.geometries(), frame);
+        meshOnGpu = m;
+        follow.reset();
+    }
+
+    /**
+     * The model of {@code frame}: opaque and masked parts, then blended parts farthest first (as
+     * the desktop viewer draws them); depth writes stay on.
+     */
+    private void drawModel(Frame frame) {
+        glEnable(GL_DEPTH_TEST);
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        glUseProgram(skinned);
+        glUniformMatrix4fv(glGetUniformLocation(skinned, "uProjection"), 1, false, projection.get(matrix), 0);
+        glUniformMatrix4fv(glGetUniformLocation(skinned, "uModelView"), 1, false, modelView.get(matrix), 0);
+        glUniform1i(glGetUniformLocation(skinned, "uMethod"), SkinningGlsl.methodCode(frame.method()));
+        glUniform1i(glGetUniformLocation(skinned, "uPalette"), GlesShaders.PALETTE_UNIT);
+        glVertexAttrib4f(GlesShaders.COLOR, 1f, 1f, 1f, 1f); // geometries without vertex colours
+        boolean viewMirrors = modelView.determinant3x3() < 0f;
+        projection.mul(modelView, clip);
+        blendOrder.clear();
+        for (int g = 0; g < models.size(); g++) {
+            ModelGl model = models.get(g);
+            paletteOf(frame, g);
+            ModelGl.Part[] parts = model.parts();
+            for (int i = 0; i < parts.length; i++) {
+                if (!parts[i].material().blended()) {
+                    model.draw(parts[i], materials, viewMirrors);
+                } else {
+                    float distance = i < model.centredParts() ? BlendOrder.distance(clip, model.posedCentres(), i) : 0f;
+                    blendOrder.add(g, i, distance);
+                }
+            }
+        }
+        int bound = -1;
+        for (int k = 0; k < blendOrder.size(); k++) {
+            int g = blendOrder.geometry(k);
+            if (g != bound) {
+                paletteOf(frame, g);
+                bound = g;
+            }
+            models.get(g).draw(models.get(g).parts()[blendOrder.part(k)], materials, viewMirrors);
+        }
+        glDisable(GL_CULL_FACE);
+        glDisable(GL_BLEND);
+    }
+
+    /** Geometry {@code g}'s palette and its per-geometry uniforms. */
+    private void paletteOf(Frame frame, int g) {
+        models.get(g).palette(frame, g);
+        glUniform1i(glGetUniformLocation(skinned, "uHasScale"), frame.hasScale(g) ? 1 : 0);
+        glUniform1i(glGetUniformLocation(skinned, "uMatricesMirror"), frame.mirrorsMatrices(g) ? 1 : 0);
+        glUniform1i(glGetUniformLocation(skinned, "uScalesMirror"), frame.mirrorsScales(g) ? 1 : 0);
     }
 
 }

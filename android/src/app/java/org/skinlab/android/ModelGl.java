@@ -7,10 +7,17 @@ import java.nio.ByteOrder;
 import java.nio.FloatBuffer;
 import java.nio.IntBuffer;
 import java.nio.ShortBuffer;
+import java.util.List;
+import java.util.function.ToIntFunction;
 
 import org.skinlab.android.logic.GlesShaders;
 import org.skinlab.android.logic.PaletteTexture;
-import org.skinlab.model.MaterialBinding;
+import org.skinlab.model.Image;
+import org.skinlab.model.Mesh;
+import org.skinlab.model.MeshPart;
+import org.skinlab.model.Texture;
+import org.skinlab.scene.PartCentres;
+import org.skinlab.scene.PartMaterial;
 import org.skinlab.simulation.Frame;
 import org.skinlab.skinning.InfluenceView;
 import org.skinlab.skinning.SkinnedGeometry;
@@ -18,26 +25,40 @@ import org.skinlab.skinning.SkinnedGeometry;
 /**
  * One skinned geometry on the GPU (GL thread only), at the attribute locations of
  * {@link GlesShaders#skinnedVertex()}: bind-pose positions and normals, 4 influences per vertex
- * ({@link InfluenceView}), CoR's centres, the triangles, and the palette texture
- * refilled from each frame ({@link PaletteTexture}).
+ * ({@link InfluenceView}), CoR's centres, texture coordinates and vertex colours, the triangles
+ * with each part's material ({@link PartMaterial}), and the palette texture refilled from each
+ * frame ({@link PaletteTexture}).
  */
 final class ModelGl {
+    /** One run of triangles with its material and GL textures, resolved once. */
+    record Part(int byteOffset, int indexCount, PartMaterial material, float[] baseColor, float[] emission,
+            int baseTexture, float[] baseTransform, int emissionTexture, float[] emissionTransform) {
+    }
+
+    private final SkinnedGeometry geometry;
     private final int vao;
-    private final int[] buffers = new int[6];
+    private final int[] buffers = new int[8];
     private final int palette;
-    private final int indexCount;
     private final int joints;
     private final float[] paletteData;
     private final FloatBuffer paletteBuffer;
-    final float[] color;
+    private final Part[] parts;
+    private final PartCentres centres;
+    private final float[] posedCentres;
+    private boolean mirrored;
 
-    ModelGl(SkinnedGeometry g) {
+    /** @param textures the GL texture of an image, 0 when it has none */
+    ModelGl(SkinnedGeometry g, ToIntFunction<Image> textures) {
+        geometry = g;
         int n = g.vertexCount();
         InfluenceView view = InfluenceView.of(g, GlesShaders.INFLUENCES);
-        int[] triangles = g.mesh() == null ? new int[0] : g.mesh().triangles();
-        indexCount = triangles.length;
+        Mesh mesh = g.mesh();
+        int[] triangles = mesh == null ? new int[0] : mesh.triangles();
+        float[] uv = PartMaterial.texCoords(mesh, g.instance());
+        parts = parts(g, triangles.length, uv != null ? textures : image -> 0);
+        centres = PartCentres.of(g);
+        posedCentres = new float[3 * centres.partCount()];
         joints = g.jointCount();
-        color = colorOf(g);
         glGenBuffers(buffers.length, buffers, 0);
         vao = genVertexArray();
         glBindVertexArray(vao);
@@ -59,10 +80,21 @@ final class ModelGl {
         glEnableVertexAttribArray(GlesShaders.WEIGHTS);
         glVertexAttribPointer(GlesShaders.WEIGHTS, k, GL_FLOAT, false, 4 * k, 0);
         floats(buffers[4], g.centersOfRotation(), 3 * n, GlesShaders.CENTRE, 3);
-        IntBuffer idx = ByteBuffer.allocateDirect(Math.max(4, 4 * indexCount)).order(ByteOrder.nativeOrder()).asIntBuffer();
+        if (uv != null) {
+            floats(buffers[6], uv, 2 * n, GlesShaders.UV, 2);
+        }
+        if (mesh != null && mesh.hasColors()) {
+            floats(buffers[7], mesh.colors(), 4 * n, GlesShaders.COLOR, 4);
+        } else {
+            // White: the material's colour as it is (a current attribute value is context state;
+            // every geometry without colours wants the same).
+            glVertexAttrib4f(GlesShaders.COLOR, 1f, 1f, 1f, 1f);
+        }
+        IntBuffer idx = ByteBuffer.allocateDirect(Math.max(4, 4 * triangles.length)).order(ByteOrder.nativeOrder())
+                .asIntBuffer();
         idx.put(triangles).flip();
         glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffers[5]);
-        glBufferData(GL_ELEMENT_ARRAY_BUFFER, 4 * indexCount, idx, GL_STATIC_DRAW);
+        glBufferData(GL_ELEMENT_ARRAY_BUFFER, 4 * triangles.length, idx, GL_STATIC_DRAW);
         glBindVertexArray(0);
 
         paletteData = new float[PaletteTexture.floats(joints)];
@@ -77,20 +109,79 @@ final class ModelGl {
                 GL_FLOAT, null);
     }
 
-    /** Uploads geometry {@code g}'s palette of {@code frame} and binds it to texture unit 1. */
+    private static Part[] parts(SkinnedGeometry g, int indices, ToIntFunction<Image> textures) {
+        List<MeshPart> meshParts = g.mesh() == null ? List.of() : g.mesh().parts();
+        if (meshParts.isEmpty()) {
+            return new Part[] {part(0, indices, PartMaterial.DEFAULT, textures)};
+        }
+        Part[] result = new Part[meshParts.size()];
+        for (int i = 0; i < result.length; i++) {
+            MeshPart p = meshParts.get(i);
+            result[i] = part(12 * p.firstTriangle(), 3 * p.triangleCount(), PartMaterial.of(g.instance(), p),
+                    textures);
+        }
+        return result;
+    }
+
+    private static Part part(int byteOffset, int indexCount, PartMaterial m, ToIntFunction<Image> textures) {
+        return new Part(byteOffset, indexCount, m, m.baseColor(), m.emission(), textureOf(m.baseTexture(), textures),
+                PartMaterial.uvMatrix(m.baseTexture()), textureOf(m.emissionTexture(), textures),
+                PartMaterial.uvMatrix(m.emissionTexture()));
+    }
+
+    private static int textureOf(Texture t, ToIntFunction<Image> textures) {
+        return t == null ? 0 : textures.applyAsInt(t.image());
+    }
+
+    /**
+     * Uploads geometry {@code g}'s palette of {@code frame}, binds it to the palette's texture
+     * unit and places the parts' centres (for ordering blended parts).
+     */
     void palette(Frame frame, int g) {
         PaletteTexture.pack(frame, g, paletteData);
         paletteBuffer.clear();
         paletteBuffer.put(paletteData).flip();
-        glActiveTexture(GL_TEXTURE1);
+        glActiveTexture(GL_TEXTURE0 + GlesShaders.PALETTE_UNIT);
         glBindTexture(GL_TEXTURE_2D, palette);
         glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, PaletteTexture.TEXELS_PER_JOINT, joints, GL_RGBA, GL_FLOAT,
                 paletteBuffer);
+        glActiveTexture(GL_TEXTURE0);
+        float[] m = frame.skinningMatrices(g);
+        mirrored = geometry.windingMirrored() ^ PartCentres.firstJointMirrors(m);
+        for (int i = 0; i < centres.partCount(); i++) {
+            centres.posed(i, m, posedCentres);
+        }
     }
 
-    void draw() {
+    Part[] parts() {
+        return parts;
+    }
+
+    /** Part {@code i}'s centre as the last palette placed it (3 floats at {@code 3i}), for BlendOrder. */
+    float[] posedCentres() {
+        return posedCentres;
+    }
+
+    /** Parts with a placed centre (all but the one part of a geometry without mesh parts). */
+    int centredParts() {
+        return centres.partCount();
+    }
+
+    /**
+     * Draws part {@code p} with {@code uniforms}' program in use: back faces culled unless the
+     * material is double-sided ({@code viewMirrors}: the model-view matrix reverses the winding).
+     */
+    void draw(Part p, MaterialUniforms uniforms, boolean viewMirrors) {
+        if (p.material().doubleSided()) {
+            glDisable(GL_CULL_FACE);
+        } else {
+            glEnable(GL_CULL_FACE);
+            glCullFace(GL_BACK);
+            glFrontFace(mirrored ^ viewMirrors ? GL_CW : GL_CCW);
+        }
+        uniforms.set(p);
         glBindVertexArray(vao);
-        glDrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, 0);
+        glDrawElements(GL_TRIANGLES, p.indexCount(), GL_UNSIGNED_INT, p.byteOffset());
         glBindVertexArray(0);
     }
 
@@ -113,17 +204,5 @@ final class ModelGl {
         glBufferData(GL_ARRAY_BUFFER, 4 * count, fb, GL_STATIC_DRAW);
         glEnableVertexAttribArray(attribute);
         glVertexAttribPointer(attribute, size, GL_FLOAT, false, 4 * size, 0);
-    }
-
-    /** The diffuse colour of the geometry's first bound material, else a neutral clay. */
-    private static float[] colorOf(SkinnedGeometry g) {
-        if (g.instance() != null) {
-            for (MaterialBinding b : g.instance().materials()) {
-                if (b.material() != null && b.material().diffuse() != null) {
-                    return b.material().diffuse().clone();
-                }
-            }
-        }
-        return new float[] {0.8f, 0.72f, 0.62f, 1f};
     }
 }

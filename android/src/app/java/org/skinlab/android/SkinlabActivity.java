@@ -64,7 +64,7 @@ public final class SkinlabActivity extends Activity {
     private final AnimationConfig config = new AnimationConfig(AnimationConfig.Settings.DEFAULT.withCpuSkinning(false));
     private final Handler ui = new Handler(Looper.getMainLooper());
     private final ModelLoader models = new ModelLoader(name -> getAssets().open("models/" + name), config,
-            mesh -> ui.post(() -> swapIn(mesh)));
+            new BitmapDecoder(), model -> ui.post(() -> swapIn(model)));
     private final List<Button> buttons = new ArrayList<>();
     /** The printed marker's size (docs/marker's 100 mm unless the user taps another). */
     private final MarkerSize markerSize = new MarkerSize(metres -> ui.post(this::onMarkerSize));
@@ -440,14 +440,15 @@ public final class SkinlabActivity extends Activity {
      * On the UI thread, where onPause and onResume run: a loaded model replaces the shown one, so
      * that its simulation runs only while the Activity is resumed.
      */
-    private void swapIn(SkeletalAnimatedMesh next) {
+    private void swapIn(ModelLoader.Loaded model) {
+        SkeletalAnimatedMesh next = model.mesh();
         if (isDestroyed()) {
             next.close();
             return;
         }
         SkeletalAnimatedMesh old = mesh;
         mesh = next;
-        renderer.setMesh(next);
+        renderer.setModel(model);
         if (resumed) {
             next.start();
         }

@@ -1,6 +1,7 @@
 package org.skinlab.android.logic;
 
 import org.skinlab.ar.LensGlsl;
+import org.skinlab.scene.MaterialGlsl;
 import org.skinlab.skinning.SkinningGlsl;
 
 /**
@@ -21,6 +22,14 @@ public final class GlesShaders {
     public static final int WEIGHTS = 3;
     /** CoR's centre of rotation per vertex, 3 floats ({@code SkinnedGeometry.centersOfRotation()}). */
     public static final int CENTRE = 4;
+    /** The texture coordinates the materials sample by (2 floats; the model's v-up convention). */
+    public static final int UV = 5;
+    /** The vertex colour, RGBA floats (a constant white when the mesh has none). */
+    public static final int COLOR = 6;
+    /** Texture units: the palette (ModelGl), the material's base and emission textures. */
+    public static final int PALETTE_UNIT = 1;
+    public static final int BASE_TEXTURE_UNIT = 0;
+    public static final int EMISSION_TEXTURE_UNIT = 2;
     /** Influences per vertex the shader reads: the app skins an {@code InfluenceView} of this many. */
     public static final int INFLUENCES = 4;
 
@@ -98,6 +107,8 @@ public final class GlesShaders {
             + "#define JOINTS_LOCATION " + JOINTS + "\n"
             + "#define WEIGHTS_LOCATION " + WEIGHTS + "\n"
             + "#define CENTRE_LOCATION " + CENTRE + "\n"
+            + "#define UV_LOCATION " + UV + "\n"
+            + "#define COLOR_LOCATION " + COLOR + "\n"
             + "#define INFLUENCES " + INFLUENCES + "\n"
             + "#define MATRIX_TEXEL " + PaletteTexture.MATRIX_TEXEL + "\n"
             + "#define ROTATION_TEXEL " + PaletteTexture.ROTATION_TEXEL + "\n"
@@ -111,12 +122,16 @@ public final class GlesShaders {
             layout(location = JOINTS_LOCATION) in uvec4 aJoints;      // InfluenceView with INFLUENCES slots
             layout(location = WEIGHTS_LOCATION) in vec4 aWeights;
             layout(location = CENTRE_LOCATION) in vec3 aCentre;       // CoR: the point's centre of rotation
+            layout(location = UV_LOCATION) in vec2 aUv;
+            layout(location = COLOR_LOCATION) in vec4 aColor;
             uniform highp sampler2D uPalette;   // TEXELS_PER_JOINT texels per joint row (PaletteTexture)
             uniform int uMethod;                // SkinningGlsl.methodCode
             uniform mat4 uModelView;
             uniform mat4 uProjection;
             out vec3 vNormal;
             out vec3 vEye;
+            out vec2 vUv;
+            out vec4 vColor;
 
             // The palette as skinning.glsl reads it: parts are the first texel of their rows.
             const int MATRIX_ROWS = MATRIX_TEXEL;
@@ -137,23 +152,45 @@ public final class GlesShaders {
                 vec4 eye = uModelView * vec4(p, 1.0);
                 vEye = eye.xyz;
                 vNormal = mat3(uModelView) * n;
+                vUv = aUv;
+                vColor = aColor;
                 gl_Position = uProjection * eye;
             }
             """;
 
-    public static final String SKINNED_FRAGMENT = """
+    /**
+     * The skinned model's fragment shader: the part's material (core's {@code material.glsl},
+     * {@link MaterialGlsl}, shared with the desktop) lit by one light from above the camera, both
+     * faces lit alike; unlit parts as their base colour; emission added.
+     *
+     * @throws IllegalStateException when the formulas cannot be read (an APK without them)
+     */
+    public static String skinnedFragment() {
+        return MaterialGlsl.expand(SKINNED_FRAGMENT);
+    }
+
+    private static final String SKINNED_FRAGMENT = """
             #version 300 es
             precision mediump float;
-            uniform vec4 uColor;
             in vec3 vNormal;
             in vec3 vEye;
+            in vec2 vUv;
+            in vec4 vColor;
             out vec4 color;
+
+            #include "material.glsl"
+
             void main() {
+                vec4 base = surfaceBase(vUv, vColor);
+                if (uUnlit) {
+                    color = base;
+                    return;
+                }
                 vec3 n = normalize(vNormal);
-                if (dot(n, vEye) > 0.0) n = -n;       // two-sided
+                if (dot(n, vEye) > 0.0) n = -n;       // lit on the side the camera sees
                 vec3 l = normalize(vec3(0.3, 0.8, 0.6));
                 float diffuse = max(dot(n, l), 0.0);
-                color = vec4(uColor.rgb * (0.35 + 0.65 * diffuse), uColor.a);
+                color = vec4(base.rgb * (0.35 + 0.65 * diffuse) + surfaceEmission(vUv), base.a);
             }
             """;
 }

@@ -15,7 +15,7 @@ class GlesShadersTest {
     @Test
     void theShadersCompileAndLinkOnOpenGlEs3() {
         try (GlesContext context = GlesContext.openOrSkip()) {
-            assertEquals(0, link(GlesShaders.skinnedVertex(), GlesShaders.SKINNED_FRAGMENT).length(), "skinning program");
+            assertEquals(0, link(GlesShaders.skinnedVertex(), GlesShaders.skinnedFragment()).length(), "skinning program");
             if (context.capabilities().GL_OES_EGL_image_external_essl3) {
                 assertEquals(0, link(GlesShaders.BACKGROUND_VERTEX, GlesShaders.backgroundFragment()).length(),
                         "background program");

@@ -84,7 +84,7 @@ class GlesSkinningTest {
     @BeforeAll
     static void openContextAndLoadAssets() throws Exception {
         context = GlesContext.openOrSkip();
-        program = link(GlesShaders.skinnedVertex(), GlesShaders.SKINNED_FRAGMENT);
+        program = link(GlesShaders.skinnedVertex(), GlesShaders.skinnedFragment());
         Path root = Path.of(System.getProperty("skinlab.root", ".."));
         List<Path> files = new ArrayList<>();
         try (DirectoryStream<Path> dirs = Files.newDirectoryStream(root.resolve("assets"), Files::isDirectory)) {

@@ -39,7 +39,8 @@ class ModelLoaderTest {
         assertTrue(catalog.select("humanoid-walk.glb"), "the APK bundles the .glb: " + catalog.names());
         List<SkeletalAnimatedMesh> loaded = new CopyOnWriteArrayList<>();
         ModelLoader.Source source = name -> Files.newInputStream(BUNDLED.resolve(name));
-        try (ModelLoader loader = new ModelLoader(source, new AnimationConfig(), loaded::add)) {
+        try (ModelLoader loader = new ModelLoader(source, new AnimationConfig(), new ImageIoDecoder(),
+                l -> loaded.add(l.mesh()))) {
             loader.load(catalog.current());
             assertEquals("", awaitIdle(loader).problem());
         }
@@ -81,7 +82,8 @@ class ModelLoaderTest {
             }
             return Files.newInputStream(MODELS.resolve("humanoid-walk.dae"));
         };
-        try (ModelLoader loader = new ModelLoader(source, new AnimationConfig(), loaded::add)) {
+        try (ModelLoader loader = new ModelLoader(source, new AnimationConfig(), new ImageIoDecoder(),
+                l -> loaded.add(l.mesh()))) {
             loader.load("first.dae");
             assertTrue(firstOpened.await(30, TimeUnit.SECONDS));
             loader.load("skipped.dae");
@@ -118,7 +120,8 @@ class ModelLoaderTest {
                     return Files.newInputStream(MODELS.resolve(name));
             }
         };
-        try (ModelLoader loader = new ModelLoader(source, new AnimationConfig(), loaded::add)) {
+        try (ModelLoader loader = new ModelLoader(source, new AnimationConfig(), new ImageIoDecoder(),
+                l -> loaded.add(l.mesh()))) {
             for (String name : new String[] {"cut.dae", "huge.dae", "gone.dae"}) {
                 loader.load(name);
                 String problem = awaitIdle(loader).problem();

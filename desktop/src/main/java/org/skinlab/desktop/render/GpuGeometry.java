@@ -8,17 +8,17 @@ import java.nio.ShortBuffer;
 import java.util.List;
 
 import org.lwjgl.system.MemoryUtil;
-import org.skinlab.model.MaterialBinding;
 import org.skinlab.model.Mesh;
 import org.skinlab.model.MeshInstance;
 import org.skinlab.model.MeshPart;
+import org.skinlab.scene.PartMaterial;
 import org.skinlab.simulation.Frame;
 import org.skinlab.skinning.InfluenceView;
 import org.skinlab.skinning.SkinnedGeometry;
 
 /**
  * One {@link SkinnedGeometry} on the GPU: its render vertices in bind space with normals, texture
- * coordinates and the 4- or 8-influence view (for skinning in the vertex shader), a second pair of
+ * coordinates, vertex colours (when the mesh has them) and the 4- or 8-influence view (for skinning in the vertex shader), a second pair of
  * position and normal buffers the CPU-skinned frames are streamed into, the triangles, and the
  * palette. Two vertex arrays share everything but positions and normals: one reads the bind pose
  * (GPU skinning), one the streamed pose (CPU skinning).
@@ -34,7 +34,7 @@ final class GpuGeometry implements AutoCloseable {
     private final int cappedPoints;
     private final int gpuVao;
     private final int cpuVao;
-    private final int[] buffers = new int[8];
+    private final int[] buffers = new int[9];
     /** CoR's centres, uploaded on first use (0 until then). */
     private int centreBuffer;
     private final PaletteBuffers palette;
@@ -53,7 +53,7 @@ final class GpuGeometry implements AutoCloseable {
         this.influences = geometry.influencesPerPoint() <= 4 ? 4 : MAX_SHADER_INFLUENCES;
         InfluenceView view = InfluenceView.of(geometry, influences);
         this.cappedPoints = view.cappedPointCount();
-        float[] uv = uvSet(mesh, instance);
+        float[] uv = PartMaterial.texCoords(mesh, instance);
         this.hasUv = uv != null;
 
         glGenBuffers(buffers);
@@ -65,6 +65,11 @@ final class GpuGeometry implements AutoCloseable {
         int joints = buffers[5];
         int weights = buffers[6];
         int elements = buffers[7];
+        int colors = buffers[8];
+        float[] vertexColors = mesh != null && mesh.hasColors() ? mesh.colors() : null;
+        if (vertexColors != null) {
+            upload(colors, vertexColors, 4 * vertexCount, GL_STATIC_DRAW);
+        }
 
         upload(bindPositions, geometry.positionArray(), 3 * vertexCount, GL_STATIC_DRAW);
         upload(bindNormals, geometry.normalArray(), 3 * vertexCount, GL_STATIC_DRAW);
@@ -126,6 +131,14 @@ final class GpuGeometry implements AutoCloseable {
             // No centres until CoR is drawn: the shader reads (0, 0, 0) and only CoR uses them.
             glDisableVertexAttribArray(7);
             glVertexAttrib3f(7, 0f, 0f, 0f);
+            if (vertexColors != null) {
+                attribute(8, colors, 4);
+            } else {
+                // White: the material's colour as it is (a current attribute value is context state; every
+                // geometry without colours wants the same white).
+                glDisableVertexAttribArray(8);
+                glVertexAttrib4f(8, 1f, 1f, 1f, 1f);
+            }
         }
         IntBuffer indexData = MemoryUtil.memAllocInt(Math.max(1, triangles.length));
         try {
@@ -137,23 +150,6 @@ final class GpuGeometry implements AutoCloseable {
         glBindVertexArray(0);
         glBindBuffer(GL_ARRAY_BUFFER, 0);
         palette = new PaletteBuffers(geometry.jointCount());
-    }
-
-    /** The texture coordinates the instance's materials use, or the mesh's first set, or null. */
-    private static float[] uvSet(Mesh mesh, MeshInstance instance) {
-        if (mesh == null || mesh.texCoordSetCount() == 0) {
-            return null;
-        }
-        int set = 0;
-        if (instance != null) {
-            for (MaterialBinding b : instance.materials()) {
-                if (b.texCoordSet() >= 0) {
-                    set = b.texCoordSet();
-                    break;
-                }
-            }
-        }
-        return mesh.texCoords(set);
     }
 
     private static void upload(int buffer, float[] data, int floats, int usage) {

@@ -7,14 +7,16 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.function.ToIntFunction;
 
+import org.joml.Matrix4f;
 import org.lwjgl.system.MemoryUtil;
 import org.skinlab.model.Image;
-import org.skinlab.model.Material;
-import org.skinlab.model.MaterialBinding;
-import org.skinlab.model.MeshInstance;
 import org.skinlab.model.MeshPart;
 import org.skinlab.model.Model;
 import org.skinlab.model.Texture;
+import org.skinlab.scene.BlendOrder;
+import org.skinlab.scene.MaterialGlsl;
+import org.skinlab.scene.PartCentres;
+import org.skinlab.scene.PartMaterial;
 import org.skinlab.simulation.Frame;
 import org.skinlab.skinning.SkinnedGeometry;
 import org.skinlab.skinning.SkinningGlsl;
@@ -27,8 +29,9 @@ import org.skinlab.skinning.SkinningMethod;
  * simulation steps.
  */
 public final class ModelRenderer implements AutoCloseable {
-    /** One run of triangles with its material, resolved once. */
-    private record PartDraw(long byteOffset, int indexCount, float[] diffuse, int texture) {
+    /** One run of triangles with its material and GL textures, resolved once. */
+    private record PartDraw(long byteOffset, int indexCount, PartMaterial material, float[] baseColor,
+            float[] emission, int baseTexture, float[] baseTransform, int emissionTexture, float[] emissionTransform) {
     }
 
     private final SkinningShader shader;
@@ -36,8 +39,15 @@ public final class ModelRenderer implements AutoCloseable {
     private SkeletonOverlay skeleton;
     private final List<GpuGeometry> geometries = new ArrayList<>();
     private final PartDraw[][] parts;
+    private final PartCentres[] centres;
+    /** Per geometry, the centres of its parts placed by the frame last uploaded (3 floats each). */
+    private final float[][] posedCentres;
+    /** Per geometry, whether the frame last uploaded reverses its triangles' winding. */
+    private final boolean[] mirrored;
+    private final BlendOrder blendOrder;
     /** 16 floats off the heap for matrix uniforms: nothing is allocated per draw, JIT or not. */
     private final FloatBuffer matrix = MemoryUtil.memAllocFloat(16);
+    private final Matrix4f clip = new Matrix4f();
     private long uploadedSequence = Long.MIN_VALUE;
     private Frame uploadedFrame;
 
@@ -50,37 +60,48 @@ public final class ModelRenderer implements AutoCloseable {
         this.shader = shader;
         this.scene = scene;
         parts = new PartDraw[geometries.size()][];
+        centres = new PartCentres[geometries.size()];
+        posedCentres = new float[geometries.size()][];
+        mirrored = new boolean[geometries.size()];
+        int blended = 0;
         for (int g = 0; g < geometries.size(); g++) {
             GpuGeometry gpu = new GpuGeometry(geometries.get(g));
             this.geometries.add(gpu);
             parts[g] = resolveParts(gpu, textures);
+            centres[g] = PartCentres.of(geometries.get(g));
+            posedCentres[g] = new float[3 * centres[g].partCount()];
+            for (PartDraw p : parts[g]) {
+                blended += p.material().blended() ? 1 : 0;
+            }
         }
+        blendOrder = new BlendOrder(blended);
     }
 
     private static PartDraw[] resolveParts(GpuGeometry gpu, ToIntFunction<Image> textures) {
         List<MeshPart> meshParts = gpu.parts();
-        MeshInstance instance = gpu.instance();
         if (meshParts.isEmpty()) {
-            return new PartDraw[] {new PartDraw(0, gpu.indexCount(), Material.DEFAULT.diffuse().clone(), 0)};
+            return new PartDraw[] {partDraw(0, gpu.indexCount(), PartMaterial.DEFAULT, gpu, textures)};
         }
         PartDraw[] result = new PartDraw[meshParts.size()];
         for (int i = 0; i < result.length; i++) {
             MeshPart part = meshParts.get(i);
-            MaterialBinding binding = instance == null || part.material() == null ? null
-                    : instance.material(part.material());
-            Material material = binding == null ? Material.DEFAULT : binding.material();
-            // A material may have no diffuse colour (a texture, or only emission): white then.
-            float[] diffuse = material.diffuse() != null ? material.diffuse().clone() : new float[] {1f, 1f, 1f, 1f};
-            diffuse[3] = Math.min(diffuse[3], material.opacity());
-            Texture texture = material.baseTexture();
-            int id = texture != null && gpu.hasUv() ? textures.applyAsInt(texture.image()) : 0;
-            if (id != 0) {
-                // A texture modulates white: the file's diffuse colour is then usually a placeholder.
-                diffuse[0] = diffuse[1] = diffuse[2] = 1f;
-            }
-            result[i] = new PartDraw(12L * part.firstTriangle(), 3 * part.triangleCount(), diffuse, id);
+            result[i] = partDraw(12L * part.firstTriangle(), 3 * part.triangleCount(),
+                    PartMaterial.of(gpu.instance(), part), gpu, textures);
         }
         return result;
+    }
+
+    private static PartDraw partDraw(long byteOffset, int indexCount, PartMaterial m, GpuGeometry gpu,
+            ToIntFunction<Image> textures) {
+        int base = textureOf(m.baseTexture(), gpu, textures);
+        int emission = textureOf(m.emissionTexture(), gpu, textures);
+        return new PartDraw(byteOffset, indexCount, m, m.baseColor(), m.emission(), base,
+                PartMaterial.uvMatrix(m.baseTexture()), emission, PartMaterial.uvMatrix(m.emissionTexture()));
+    }
+
+    /** The GL texture of {@code t}, or 0 without one or without texture coordinates to sample it by. */
+    private static int textureOf(Texture t, GpuGeometry gpu, ToIntFunction<Image> textures) {
+        return t != null && gpu.hasUv() ? textures.applyAsInt(t.image()) : 0;
     }
 
     /** Uploads {@code frame} unless it is the one uploaded last. */
@@ -90,13 +111,20 @@ public final class ModelRenderer implements AutoCloseable {
         }
         for (int g = 0; g < geometries.size(); g++) {
             geometries.get(g).upload(frame, g);
+            float[] m = frame.skinningMatrices(g);
+            mirrored[g] = geometries.get(g).geometry().windingMirrored() ^ PartCentres.firstJointMirrors(m);
+            for (int i = 0; i < centres[g].partCount(); i++) {
+                centres[g].posed(i, m, posedCentres[g]);
+            }
         }
         uploadedFrame = frame;
         uploadedSequence = frame.sequence();
     }
 
     /**
-     * Draws the frame last {@link #upload uploaded}. With {@code s.gpuSkinning} false, the
+     * Draws the frame last {@link #upload uploaded}: opaque and masked parts, then blended parts
+     * back to front (each part by its centre; depth writes stay on, as three.js draws transparent
+     * objects). Single-sided parts cull back faces. With {@code s.gpuSkinning} false, the
      * CPU-skinned positions of that frame are drawn (the caller checks the frame has them).
      */
     public void draw(DrawSettings s) {
@@ -110,49 +138,109 @@ public final class ModelRenderer implements AutoCloseable {
         glUniform1i(shader.viewMode, s.view.ordinal());
         glUniform1f(shader.scalarFull, s.scalarFull);
         glUniform1i(shader.columns, s.columns());
-        glUniform1f(shader.spacing, s.spacing);
         glUniform1i(shader.firstInstance, s.firstInstance);
+        glUniform1f(shader.spacing, s.spacing);
         glUniform1i(shader.flat, 0);
-        drawAll(s, false, weights);
+        boolean modelMirrors = s.model.determinant3x3() < 0f;
+        for (int g = 0; g < geometries.size(); g++) {
+            bindGeometry(s, g, weights);
+            for (PartDraw part : parts[g]) {
+                if (!part.material().blended()) {
+                    drawPart(s, part, mirrored[g] ^ modelMirrors);
+                }
+            }
+        }
+        drawBlended(s, weights, modelMirrors);
+        glDisable(GL_CULL_FACE);
         if (s.wireframe) {
             glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
             glEnable(GL_POLYGON_OFFSET_LINE);
             glPolygonOffset(-1f, -1f);
             glUniform1i(shader.flat, 1);
             glUniform4f(shader.flatColor, 0.05f, 0.05f, 0.08f, 0.6f);
-            drawAll(s, true, false);
+            for (int g = 0; g < geometries.size(); g++) {
+                bindGeometry(s, g, false);
+                for (PartDraw part : parts[g]) {
+                    drawTriangles(s, part);
+                }
+            }
             glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
             glDisable(GL_POLYGON_OFFSET_LINE);
         }
+        glFrontFace(GL_CCW);
         glBindVertexArray(0);
     }
 
-
-    private void drawAll(DrawSettings s, boolean flat, boolean weights) {
+    /** The blended parts of every geometry, farthest first by their posed centres. */
+    private void drawBlended(DrawSettings s, boolean weights, boolean modelMirrors) {
+        clip.set(s.viewProjection).mul(s.model);
+        blendOrder.clear();
         for (int g = 0; g < geometries.size(); g++) {
-            GpuGeometry gpu = geometries.get(g);
-            if (s.gpuSkinning && s.method == SkinningMethod.COR) {
-                gpu.ensureCentres();
-            }
-            // No joint (-1) colours by nothing; a joint outside this palette shows weight 0 (blue).
-            glUniform1i(shader.selectedJoint, !weights ? -1 : gpu.paletteIndexOfNode(s.selectedNode));
-            gpu.bind(s.gpuSkinning);
-            PaletteBuffers p = gpu.palette();
-            glUniform1i(shader.influences, gpu.influences());
-            glUniform1i(shader.hasScale, p.hasScale() ? 1 : 0);
-            glUniform1i(shader.matricesMirror, p.matricesMirror() ? 1 : 0);
-            glUniform1i(shader.scalesMirror, p.scalesMirror() ? 1 : 0);
-            for (PartDraw part : parts[g]) {
-                if (!flat) {
-                    float[] c = part.diffuse();
-                    glUniform4f(shader.diffuse, c[0], c[1], c[2], c[3]);
-                    glUniform1i(shader.hasTexture, part.texture() != 0 ? 1 : 0);
-                    glBindTexture(GL_TEXTURE_2D, part.texture());
+            for (int i = 0; i < parts[g].length; i++) {
+                if (parts[g][i].material().blended()) {
+                    float distance = i < centres[g].partCount() ? BlendOrder.distance(clip, posedCentres[g], i) : 0f;
+                    blendOrder.add(g, i, distance);
                 }
-                glDrawElementsInstanced(GL_TRIANGLES, part.indexCount(), GL_UNSIGNED_INT, part.byteOffset(),
-                        Math.max(1, s.instances));
             }
         }
+        int bound = -1;
+        for (int k = 0; k < blendOrder.size(); k++) {
+            int g = blendOrder.geometry(k);
+            if (g != bound) {
+                bindGeometry(s, g, weights);
+                bound = g;
+            }
+            drawPart(s, parts[g][blendOrder.part(k)], mirrored[g] ^ modelMirrors);
+        }
+    }
+
+    /** Binds geometry {@code g} with its palette and the uniforms that are per geometry. */
+    private void bindGeometry(DrawSettings s, int g, boolean weights) {
+        GpuGeometry gpu = geometries.get(g);
+        if (s.gpuSkinning && s.method == SkinningMethod.COR) {
+            gpu.ensureCentres();
+        }
+        // No joint (-1) colours by nothing; a joint outside this palette shows weight 0 (blue).
+        glUniform1i(shader.selectedJoint, !weights ? -1 : gpu.paletteIndexOfNode(s.selectedNode));
+        gpu.bind(s.gpuSkinning);
+        PaletteBuffers p = gpu.palette();
+        glUniform1i(shader.influences, gpu.influences());
+        glUniform1i(shader.hasScale, p.hasScale() ? 1 : 0);
+        glUniform1i(shader.matricesMirror, p.matricesMirror() ? 1 : 0);
+        glUniform1i(shader.scalesMirror, p.scalesMirror() ? 1 : 0);
+    }
+
+    /** One part with its material: culling, colours, textures and their transforms. */
+    private void drawPart(DrawSettings s, PartDraw part, boolean mirrored) {
+        PartMaterial m = part.material();
+        if (m.doubleSided()) {
+            glDisable(GL_CULL_FACE);
+        } else {
+            glEnable(GL_CULL_FACE);
+            glCullFace(GL_BACK);
+            glFrontFace(mirrored ? GL_CW : GL_CCW);
+        }
+        float[] c = part.baseColor();
+        glUniform4f(shader.baseColor, c[0], c[1], c[2], c[3]);
+        float[] e = part.emission();
+        glUniform3f(shader.emission, e[0], e[1], e[2]);
+        glUniform1i(shader.alphaMode, MaterialGlsl.alphaMode(m));
+        glUniform1f(shader.alphaCutoff, m.alphaCutoff());
+        glUniform1i(shader.unlit, m.unlit() ? 1 : 0);
+        glUniform1i(shader.hasBaseTexture, part.baseTexture() != 0 ? 1 : 0);
+        glUniformMatrix3fv(shader.baseTransform, false, part.baseTransform());
+        glUniform1i(shader.hasEmissionTexture, part.emissionTexture() != 0 ? 1 : 0);
+        glUniformMatrix3fv(shader.emissionTransform, false, part.emissionTransform());
+        glActiveTexture(GL_TEXTURE0 + SkinningShader.EMISSION_TEXTURE_UNIT);
+        glBindTexture(GL_TEXTURE_2D, part.emissionTexture());
+        glActiveTexture(GL_TEXTURE0 + SkinningShader.BASE_TEXTURE_UNIT);
+        glBindTexture(GL_TEXTURE_2D, part.baseTexture());
+        drawTriangles(s, part);
+    }
+
+    private static void drawTriangles(DrawSettings s, PartDraw part) {
+        glDrawElementsInstanced(GL_TRIANGLES, part.indexCount(), GL_UNSIGNED_INT, part.byteOffset(),
+                Math.max(1, s.instances));
     }
 
     /**

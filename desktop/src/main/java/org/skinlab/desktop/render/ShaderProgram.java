@@ -8,13 +8,15 @@ import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
 
 import org.skinlab.ar.LensGlsl;
+import org.skinlab.scene.MaterialGlsl;
 import org.skinlab.skinning.SkinningGlsl;
 
 /**
  * A linked GLSL program built from shader resources next to this class
  * ({@code shaders/NAME.vert}, {@code shaders/NAME.frag}), the skinning formulas put in for a line
- * {@code #include "skinning.glsl"} ({@link SkinningGlsl}) and the lens' for
- * {@code #include "lens.glsl"} ({@link LensGlsl}). Compile and link failures throw with
+ * {@code #include "skinning.glsl"} ({@link SkinningGlsl}), the lens' for
+ * {@code #include "lens.glsl"} ({@link LensGlsl}) and the materials' for
+ * {@code #include "material.glsl"} ({@link MaterialGlsl}). Compile and link failures throw with
  * the resource name and the driver's log, so a broken shader says where it broke.
  */
 public final class ShaderProgram implements AutoCloseable {
@@ -59,7 +61,7 @@ public final class ShaderProgram implements AutoCloseable {
     }
 
     private static int compile(int type, String resource) {
-        String source = LensGlsl.expand(SkinningGlsl.expand(read("shaders/" + resource)));
+        String source = MaterialGlsl.expand(LensGlsl.expand(SkinningGlsl.expand(read("shaders/" + resource))));
         int shader = glCreateShader(type);
         glShaderSource(shader, source);
         glCompileShader(shader);

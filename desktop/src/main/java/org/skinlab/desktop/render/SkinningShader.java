@@ -11,6 +11,10 @@ public final class SkinningShader implements AutoCloseable {
     /** The transform feedback varying: 3 floats per vertex, the skinned position. */
     public static final String POSED_VARYING = "vPosed";
 
+    /** Texture units of the material's textures (the palette takes PaletteBuffers' units). */
+    static final int BASE_TEXTURE_UNIT = 0;
+    static final int EMISSION_TEXTURE_UNIT = 4;
+
     private final ShaderProgram program;
     final int viewProjection;
     final int model;
@@ -29,8 +33,15 @@ public final class SkinningShader implements AutoCloseable {
     final int firstInstance;
     final int flat;
     final int flatColor;
-    final int diffuse;
-    final int hasTexture;
+    final int baseColor;
+    final int hasBaseTexture;
+    final int baseTransform;
+    final int emission;
+    final int hasEmissionTexture;
+    final int emissionTransform;
+    final int alphaMode;
+    final int alphaCutoff;
+    final int unlit;
 
     public SkinningShader() {
         program = ShaderProgram.load("skinned", "skinned", POSED_VARYING);
@@ -51,10 +62,18 @@ public final class SkinningShader implements AutoCloseable {
         firstInstance = program.uniform("uFirstInstance");
         flat = program.uniform("uFlat");
         flatColor = program.uniform("uFlatColor");
-        diffuse = program.uniform("uDiffuse");
-        hasTexture = program.uniform("uHasTexture");
+        baseColor = program.uniform("uBaseColor");
+        hasBaseTexture = program.uniform("uHasBaseTexture");
+        baseTransform = program.uniform("uBaseTransform");
+        emission = program.uniform("uEmission");
+        hasEmissionTexture = program.uniform("uHasEmissionTexture");
+        emissionTransform = program.uniform("uEmissionTransform");
+        alphaMode = program.uniform("uAlphaMode");
+        alphaCutoff = program.uniform("uAlphaCutoff");
+        unlit = program.uniform("uUnlit");
         program.use();
-        glUniform1i(program.uniform("uTexture"), 0);
+        glUniform1i(program.uniform("uBaseTexture"), BASE_TEXTURE_UNIT);
+        glUniform1i(program.uniform("uEmissionTexture"), EMISSION_TEXTURE_UNIT);
         glUniform1i(program.uniform("uMatrices"), PaletteBuffers.MATRIX_UNIT);
         glUniform1i(program.uniform("uDualQuaternions"), PaletteBuffers.DUAL_QUATERNION_UNIT);
         glUniform1i(program.uniform("uScales"), PaletteBuffers.SCALE_UNIT);

@@ -1,16 +1,15 @@
 #version 330 core
-// Lambert with a camera-side key light, a fill from below and a little specular; or a colour
-// map for the weight and difference views; or one flat colour (wireframe overlay).
+// The material's surface (core's material.glsl) lit by Lambert with a camera-side key light, a
+// fill from below and a little specular, plus its emission; or a colour map for the weight and
+// difference views; or one flat colour (wireframe overlay).
 
 in vec3 vWorld;
 in vec3 vNormal;
 in vec2 vUv;
+in vec4 vColor;
 in float vScalar;
 
 uniform int uViewMode;        // 0 shaded, 1 weights, 2 difference
-uniform vec4 uDiffuse;
-uniform bool uHasTexture;
-uniform sampler2D uTexture;
 uniform vec3 uEye;
 uniform float uScalarFull;    // the scalar shown as the top of the colour map
 uniform bool uFlat;
@@ -33,6 +32,8 @@ vec3 ramp(float x) {
     return mix(c3, c4, s - 3.0);
 }
 
+#include "material.glsl"
+
 void main() {
     if (uFlat) {
         fragColor = uFlatColor;
@@ -49,24 +50,19 @@ void main() {
     if (dot(n, v) < 0.0) {
         n = -n;
     }
-    vec3 base;
-    float alpha = uDiffuse.a;
-    if (uViewMode == 1 || uViewMode == 2) {
-        base = ramp(vScalar / uScalarFull);
-        alpha = 1.0;
-    } else {
-        vec4 c = uDiffuse;
-        if (uHasTexture) {
-            c *= texture(uTexture, vUv);
-        }
-        base = c.rgb;
-        alpha = c.a;
+    bool colourMap = uViewMode == 1 || uViewMode == 2;
+    vec4 c = colourMap ? vec4(ramp(vScalar / uScalarFull), 1.0) : surfaceBase(vUv, vColor);
+    if (!colourMap && uUnlit) {
+        fragColor = c;
+        return;
     }
+    vec3 base = c.rgb;
     vec3 key = normalize(v + vec3(0.3, 0.6, 0.2));
     vec3 fill = normalize(vec3(-0.4, -0.5, -0.3));
     float diffuse = max(dot(n, key), 0.0) * 0.75 + max(dot(n, fill), 0.0) * 0.15;
     float ambient = 0.25 + 0.1 * n.y;
     vec3 h = normalize(key + v);
     float specular = uViewMode == 0 ? pow(max(dot(n, h), 0.0), 32.0) * 0.15 : 0.0;
-    fragColor = vec4(base * (ambient + diffuse) + vec3(specular), alpha);
+    vec3 emission = colourMap ? vec3(0.0) : surfaceEmission(vUv);
+    fragColor = vec4(base * (ambient + diffuse) + vec3(specular) + emission, c.a);
 }

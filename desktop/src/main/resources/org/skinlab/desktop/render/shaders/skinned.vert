@@ -11,6 +11,7 @@ layout(location = 4) in vec4 aWeights0;
 layout(location = 5) in uvec4 aJoints1;   // influences 5-8 (zero weights with a 4-influence view)
 layout(location = 6) in vec4 aWeights1;
 layout(location = 7) in vec3 aCentre;     // CoR skinning: the point's centre of rotation (bind space)
+layout(location = 8) in vec4 aColor;      // the vertex colour (white when the mesh has none)
 
 uniform samplerBuffer uMatrices;      // 3 texels per joint: the rows of a 3x4 affine matrix
 uniform samplerBuffer uDualQuaternions; // 2 texels per joint: rotation (x y z w), dual part
@@ -30,6 +31,7 @@ uniform int uFirstInstance;   // grid cell of instance 0 (one draw per copy when
 out vec3 vWorld;
 out vec3 vNormal;
 out vec2 vUv;
+out vec4 vColor;
 out float vScalar;            // weight view: weight; difference view: |LBS - DQS|
 out vec3 vPosed;              // for transform feedback: the skinned position before uModel
 
@@ -92,5 +94,6 @@ void main() {
     vWorld = world.xyz;
     vNormal = mat3(uModel) * normal;
     vUv = aUv;
+    vColor = aColor;
     gl_Position = uViewProjection * world;
 }
