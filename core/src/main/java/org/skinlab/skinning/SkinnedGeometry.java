@@ -270,11 +270,8 @@ public final class SkinnedGeometry {
         // DQS can only take through its scale phase. The common mirror F = diag(-1 1 1) moves
         // into the points instead (p -> F p, n -> F n, INV_BIND -> INV_BIND F; F F = I, so LBS is
         // unchanged): the skinning matrices become rigid again and DQS blends rigid motions.
-        boolean mirrorBindFrames = skinJoints > 0;
+        boolean mirrorBindFrames = mirrorsBindFrames(skin);
         Matrix4f m = new Matrix4f();
-        for (int j = 0; j < skinJoints && mirrorBindFrames; j++) {
-            mirrorBindFrames = skin.inverseBindMatrix(j, m).determinant3x3() < 0f;
-        }
         if (mirrorBindFrames) {
             for (int i = 0; i < positions.length; i += 3) {
                 positions[i] = -positions[i];
@@ -300,6 +297,34 @@ public final class SkinnedGeometry {
         }
         return new SkinnedGeometry(instance, vertices, positions, normals, width, joints, weights, jointNodes, bind,
                 pointOfPosition, null, null, mirrored);
+    }
+
+    /** Whether every bind frame of the skin mirrors (then the common mirror moves into the points). */
+    private static boolean mirrorsBindFrames(Skin skin) {
+        Matrix4f m = new Matrix4f();
+        boolean all = skin.jointCount() > 0;
+        for (int j = 0; j < skin.jointCount() && all; j++) {
+            all = skin.inverseBindMatrix(j, m).determinant3x3() < 0f;
+        }
+        return all;
+    }
+
+    /**
+     * What takes a mesh position to its point's position in {@link #positionArray()}: the bind
+     * shape matrix, then the common mirror of the bind frames when there is one (see
+     * {@code skinned}); the identity for a static mesh. A per-frame morph
+     * ({@link MorphedRestShape}) moves its morphed positions by it.
+     */
+    static Matrix4f pointTransform(MeshInstance instance) {
+        Matrix4f m = new Matrix4f();
+        Skin skin = instance.skin();
+        if (skin == null) {
+            return m;
+        }
+        if (mirrorsBindFrames(skin)) {
+            m.scale(-1f, 1f, 1f);
+        }
+        return m.mul(skin.bindShapeMatrix());
     }
 
     /**
@@ -407,7 +432,8 @@ public final class SkinnedGeometry {
     }
 
     // The arrays below are handed out without copying: they are read by every kernel every
-    // frame. Callers must not modify them.
+    // frame. Callers must not modify them (only MorphedRestShape rewrites the positions of the
+    // geometry it owns, between frames).
 
     /** Positions in bind space (after the bind shape matrix), 3 per point. Read-only. */
     public float[] positionArray() {
@@ -479,6 +505,11 @@ public final class SkinnedGeometry {
             }
         }
         return c;
+    }
+
+    /** Takes the centres of rotation of {@code restShape}, the same mesh unmorphed (MorphedRestShape). */
+    void useCentresOf(SkinnedGeometry restShape) {
+        centersOfRotation = restShape.centersOfRotation();
     }
 
     /**

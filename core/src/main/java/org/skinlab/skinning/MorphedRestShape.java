@@ -1,0 +1,90 @@
+package org.skinlab.skinning;
+
+import org.joml.Matrix4f;
+import org.skinlab.model.MeshInstance;
+import org.skinlab.model.Morph;
+
+/**
+ * The rest shape of a placed mesh whose morph weights animate: its own {@link SkinnedGeometry}
+ * (not shared with other characters) whose rest positions are rewritten from the morph before each
+ * frame is skinned, so that every kernel that reads positions from the geometry's arrays skins
+ * {@code P = B + sum w_i T_i} (COLLADA's NORMALIZED form likewise, {@link Morph#apply}). Normals stay
+ * the base's (see {@link Morph}); CoR keeps the centres of rotation of the rest shape (see
+ * docs/skinning.md, "Morphs"). Allocation-free per frame.
+ */
+final class MorphedRestShape {
+    private final Morph morph;
+    private final SkinnedGeometry geometry;
+    /** The same mesh with the file's weights, never rewritten (shared by the characters of a model). */
+    private final SkinnedGeometry rest;
+    private final float[] meshPositions;
+    /** Per point of {@link #geometry}, its mesh position. */
+    private final int[] positionOfPoint;
+    /** {@link SkinnedGeometry#pointTransform}, column-major. */
+    private final float[] transform = new float[16];
+
+    /** @param rest {@code SkinnedGeometry.of(instance)}, kept unmorphed */
+    MorphedRestShape(MeshInstance instance, Morph morph, SkinnedGeometry rest) {
+        this.morph = morph;
+        this.rest = rest;
+        this.geometry = SkinnedGeometry.of(instance);
+        this.meshPositions = new float[3 * morph.base().positionCount()];
+        int vertices = geometry.vertexCount();
+        positionOfPoint = new int[geometry.pointCount()];
+        for (int v = 0; v < vertices; v++) {
+            positionOfPoint[v] = instance.mesh().vertexPosition(v);
+        }
+        for (int p = 0; p < geometry.positionCount(); p++) {
+            int point = geometry.pointOfPosition(p);
+            if (point >= vertices) {
+                positionOfPoint[point] = p;
+            }
+        }
+        Matrix4f m = SkinnedGeometry.pointTransform(instance);
+        m.get(transform);
+    }
+
+    /** The geometry this shape rewrites (its own). */
+    SkinnedGeometry geometry() {
+        return geometry;
+    }
+
+    /** The geometry with the file's weights, which no frame rewrites. */
+    SkinnedGeometry rest() {
+        return rest;
+    }
+
+    /**
+     * Gives the morphing geometry the centres of rotation of the rest shape (computed once there),
+     * before a CoR skinner is made: the centres are not recomputed per frame (docs/skinning.md).
+     */
+    void useRestCentres() {
+        geometry.useCentresOf(rest);
+    }
+
+    /** Rewrites the geometry's rest positions (and those of its shared positions) for these weights. */
+    void apply(float[] weights) {
+        morph.apply(weights, meshPositions);
+        float[] points = geometry.positionArray();
+        for (int i = 0; i < positionOfPoint.length; i++) {
+            place(3 * positionOfPoint[i], points, 3 * i);
+        }
+        SkinnedGeometry shared = geometry.sharedPositions();
+        if (shared != null) {
+            float[] positions = shared.positionArray();
+            for (int p = 0, n = positions.length; p < n; p += 3) {
+                place(p, positions, p);
+            }
+        }
+    }
+
+    private void place(int from, float[] dest, int to) {
+        float[] m = transform;
+        float x = meshPositions[from];
+        float y = meshPositions[from + 1];
+        float z = meshPositions[from + 2];
+        dest[to] = m[0] * x + m[4] * y + m[8] * z + m[12];
+        dest[to + 1] = m[1] * x + m[5] * y + m[9] * z + m[13];
+        dest[to + 2] = m[2] * x + m[6] * y + m[10] * z + m[14];
+    }
+}
