@@ -4,6 +4,8 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.util.List;
+
 import org.joml.Matrix4f;
 import org.joml.Vector3f;
 import org.junit.jupiter.api.Test;
@@ -11,7 +13,10 @@ import org.skinlab.animation.RotationInterpolation;
 import org.skinlab.model.AnimationClip;
 import org.skinlab.model.Interpolation;
 import org.skinlab.model.Model;
+import org.skinlab.model.MorphWeightChannel;
+import org.skinlab.skinning.NormalTransform;
 import org.skinlab.skinning.SkinnedModel;
+import org.skinlab.skinning.SkinningMethod;
 
 /**
  * Animations through the model's own sampler, against the specification's formulas evaluated
@@ -101,14 +106,53 @@ class GltfAnimationTest {
     }
 
     @Test
-    void weightsChannelsAreCheckedThenSkippedWithAWarning() throws Exception {
+    void weightsChannelsAnimateTheNodesMorphWeights() throws Exception {
         Model model = GltfFixture.read(morphWeights(0, 0, 1, 0.5));
-        assertTrue(model.clips().get(0).channels().isEmpty());
-        assertEquals(1f, model.clips().get(0).end(), "the clip still lasts as long as its keys");
-        assertEquals("/animations/0/channels/0", model.warnings().get(0).element());
+        AnimationClip clip = model.clips().get(0);
+        assertTrue(clip.channels().isEmpty());
+        assertEquals(1f, clip.end());
+        assertEquals(List.of(), model.warnings());
+        MorphWeightChannel c = clip.morphWeights().get(0);
+        assertEquals(0, c.instance());
+        assertEquals(0, c.weightOffset());
+        assertEquals(2, c.weightCount());
+        assertEquals("/animations/0/channels/0", c.target());
+        // Both targets move every vertex by +1 in z: at t = 0.5 the weights are (0.5, 0.25), z = 0.75.
+        SkinnedModel skinned = new SkinnedModel(model, clip, NormalTransform.INVERSE_TRANSPOSE);
+        skinned.pose(0.5f, RotationInterpolation.SLERP);
+        float[] points = new float[9];
+        skinned.skin(0, SkinningMethod.LBS, points, new float[9]);
+        assertEquals(0.75f, points[2], EPS);
+        assertEquals(0.75f, points[5], EPS);
         GltfException e = assertThrows(GltfException.class, () -> GltfFixture.read(morphWeights(0, 1, 0.5)));
         assertEquals("test.gltf: /animations/0/samplers/0/output: accessor 3 has 3 elements but 2 keys of 2 targets"
                 + " need 4", e.getMessage());
+    }
+
+    /**
+     * CUBICSPLINE weights, by the specification's Hermite spline: keys at 0 and 1 s with values 0
+     * and 1, out-tangent 2 at the first key, in-tangent 0 at the second; at s = 0.5,
+     * p = (s^3 - 2s^2 + s) 2 + (-2s^3 + 3s^2) 1 = 0.25 + 0.5 = 0.75, the target's offset (z + 1)
+     * times 0.75.
+     */
+    @Test
+    void cubicSplineWeightsFollowTheHermiteSpline() throws Exception {
+        GltfFixture f = new GltfFixture();
+        f.floats("VEC3", 0, 0, 0, 1, 0, 0, 0, 1, 0); // 0
+        f.floats("VEC3", 0, 0, 1, 0, 0, 1, 0, 0, 1); // 1
+        f.floats("SCALAR", 0, 1); // 2
+        f.floats("SCALAR", 0, 0, 2, 0, 1, 0); // 3: (in, value, out) per key
+        Model model = GltfFixture.read(f.gltf("\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0},"
+                + "\"targets\":[{\"POSITION\":1}]}]}],\"nodes\":[{\"mesh\":0}],\"scenes\":[{\"nodes\":[0]}],"
+                + "\"animations\":[{\"channels\":[{\"sampler\":0,\"target\":{\"node\":0,\"path\":\"weights\"}}],"
+                + "\"samplers\":[{\"input\":2,\"output\":3,\"interpolation\":\"CUBICSPLINE\"}]}]"));
+        SkinnedModel skinned = new SkinnedModel(model, model.clips().get(0), NormalTransform.INVERSE_TRANSPOSE);
+        float[] points = new float[9];
+        for (SkinningMethod method : SkinningMethod.values()) {
+            skinned.pose(0.5f, RotationInterpolation.SLERP);
+            skinned.skin(0, method, points, new float[9]);
+            assertEquals(0.75f, points[8], EPS, method.toString());
+        }
     }
 
     @Test
