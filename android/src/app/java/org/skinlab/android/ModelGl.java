@@ -29,10 +29,14 @@ final class ModelGl {
     private final int joints;
     private final float[] paletteData;
     private final FloatBuffer paletteBuffer;
+    private final int vertexCount;
+    /** Staging for a morphing rest shape's positions (3 per vertex), allocated on first use. */
+    private FloatBuffer restStaging;
     final float[] color;
 
     ModelGl(SkinnedGeometry g) {
         int n = g.vertexCount();
+        vertexCount = n;
         InfluenceView view = InfluenceView.of(g, GlesShaders.INFLUENCES);
         int[] triangles = g.mesh() == null ? new int[0] : g.mesh().triangles();
         indexCount = triangles.length;
@@ -75,6 +79,27 @@ final class ModelGl {
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
         glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, PaletteTexture.TEXELS_PER_JOINT, Math.max(1, joints), 0, GL_RGBA,
                 GL_FLOAT, null);
+    }
+
+    /**
+     * Uploads geometry {@code g}'s morphed rest positions of {@code frame} in place of its bind
+     * positions when its morph weights animate (as the desktop viewer does: docs/skinning.md,
+     * "Morphs"); nothing otherwise.
+     */
+    void restPositions(Frame frame, int g) {
+        float[] rest = frame.restPositions(g);
+        if (rest == null) {
+            return;
+        }
+        if (restStaging == null) {
+            restStaging = ByteBuffer.allocateDirect(Math.max(4, 12 * vertexCount)).order(ByteOrder.nativeOrder())
+                    .asFloatBuffer();
+        }
+        restStaging.clear();
+        restStaging.put(rest, 0, 3 * vertexCount).flip();
+        glBindBuffer(GL_ARRAY_BUFFER, buffers[0]);
+        glBufferSubData(GL_ARRAY_BUFFER, 0, 12 * vertexCount, restStaging);
+        glBindBuffer(GL_ARRAY_BUFFER, 0);
     }
 
     /** Uploads geometry {@code g}'s palette of {@code frame} and binds it to texture unit 1. */

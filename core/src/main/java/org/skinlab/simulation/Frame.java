@@ -78,6 +78,8 @@ public final class Frame implements AutoCloseable {
     private final boolean[] scaled;
     private final boolean[] matricesMirror;
     private final boolean[] scalesMirror;
+    /** Per geometry, the morphed rest positions of this step, or null where the rest shape does not morph. */
+    private final float[][] restPositions;
     /** Readers holding this buffer; the simulation writes only into buffers with none. */
     final AtomicInteger leases = new AtomicInteger();
 
@@ -92,12 +94,15 @@ public final class Frame implements AutoCloseable {
     /**
      * @param pointCounts points per geometry
      * @param jointCounts palette joints per geometry
+     * @param morphing    per geometry, whether its rest shape morphs (animated morph weights)
      */
-    Frame(int[] pointCounts, int[] jointCounts) {
+    Frame(int[] pointCounts, int[] jointCounts, boolean[] morphing) {
         int n = pointCounts.length;
-        if (jointCounts.length != n) {
-            throw new IllegalArgumentException(n + " point counts but " + jointCounts.length + " joint counts");
+        if (jointCounts.length != n || morphing.length != n) {
+            throw new IllegalArgumentException(n + " point counts but " + jointCounts.length + " joint counts and "
+                    + morphing.length + " morph flags");
         }
+        restPositions = new float[n][];
         positions = new float[n][];
         normals = new float[n][];
         matrices = new float[n][];
@@ -112,6 +117,7 @@ public final class Frame implements AutoCloseable {
             matrices[g] = new float[12 * jointCounts[g]];
             dualQuaternions[g] = new float[8 * jointCounts[g]];
             scales[g] = new float[12 * jointCounts[g]];
+            restPositions[g] = morphing[g] ? new float[3 * pointCounts[g]] : null;
         }
     }
 
@@ -135,6 +141,22 @@ public final class Frame implements AutoCloseable {
         scaled[g] = palette.hasScale();
         matricesMirror[g] = palette.mirrorsMatrices();
         scalesMirror[g] = palette.mirrorsScales();
+    }
+
+    /** Copies geometry {@code g}'s morphed rest positions of this step (simulation side only). */
+    void copyRestPositions(int g, float[] positions) {
+        System.arraycopy(positions, 0, restPositions[g], 0, restPositions[g].length);
+    }
+
+    /**
+     * The rest positions geometry {@code g}'s palette applies to in this step, 3 floats per point
+     * in bind space, when its morph weights animate: the base morphed with this step's weights,
+     * which a GPU skinner uploads in place of the bind positions. Null for a geometry whose rest
+     * shape does not morph (its {@link org.skinlab.skinning.SkinnedGeometry#positionArray()}
+     * never changes). Read-only.
+     */
+    public float[] restPositions(int g) {
+        return restPositions[g];
     }
 
     void describe(long sequence, double playbackTime, float clipTime, SkinningMethod method,

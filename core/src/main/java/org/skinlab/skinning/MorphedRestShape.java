@@ -40,6 +40,9 @@ final class MorphedRestShape {
                 positionOfPoint[point] = p;
             }
         }
+        // CoR's centres stay those of the rest shape (computed once there, whoever asks first:
+        // a CoR skinner, or a GPU renderer uploading them), not recomputed per frame (docs/skinning.md).
+        geometry.takeCentresFrom(rest);
         Matrix4f m = SkinnedGeometry.pointTransform(instance);
         m.get(transform);
     }
@@ -52,14 +55,6 @@ final class MorphedRestShape {
     /** The geometry with the file's weights, which no frame rewrites. */
     SkinnedGeometry rest() {
         return rest;
-    }
-
-    /**
-     * Gives the morphing geometry the centres of rotation of the rest shape (computed once there),
-     * before a CoR skinner is made: the centres are not recomputed per frame (docs/skinning.md).
-     */
-    void useRestCentres() {
-        geometry.useCentresOf(rest);
     }
 
     /** Rewrites the geometry's rest positions (and those of its shared positions) for these weights. */

@@ -72,6 +72,8 @@ public final class SkinnedGeometry {
      * field, so visible wherever it is).
      */
     private SkinnedGeometry positionsOf;
+    /** For a geometry whose rest shape morphs per frame, the unmorphed one that owns its centres. */
+    private volatile SkinnedGeometry centresOfRestShape;
 
     private SkinnedGeometry(MeshInstance instance, int vertexCount, float[] positions, float[] normals,
             int influences, int[] joints, float[] weights, int[] jointNodes, float[] bindMatrices,
@@ -497,7 +499,9 @@ public final class SkinnedGeometry {
             synchronized (this) {
                 c = centersOfRotation;
                 if (c == null) {
-                    c = positionsOf != null ? positionsOf.centresOfSharedPositions()
+                    SkinnedGeometry rest = centresOfRestShape;
+                    c = rest != null ? rest.centersOfRotation()
+                            : positionsOf != null ? positionsOf.centresOfSharedPositions()
                             : CentersOfRotation.computeOrLoad(this, CentersOfRotation.Parameters.DEFAULT,
                                     CentersOfRotation.Progress.NONE);
                     centersOfRotation = c;
@@ -507,9 +511,13 @@ public final class SkinnedGeometry {
         return c;
     }
 
-    /** Takes the centres of rotation of {@code restShape}, the same mesh unmorphed (MorphedRestShape). */
-    void useCentresOf(SkinnedGeometry restShape) {
-        centersOfRotation = restShape.centersOfRotation();
+    /**
+     * Makes this geometry's centres of rotation those of {@code restShape}, the same mesh with the
+     * file's morph weights, computed there when first asked for: a geometry whose positions a
+     * morph rewrites per frame ({@link MorphedRestShape}) keeps the centres of its rest shape.
+     */
+    void takeCentresFrom(SkinnedGeometry restShape) {
+        centresOfRestShape = restShape;
     }
 
     /**

@@ -111,7 +111,8 @@ public final class SkinnedModel {
             }
             palettes[g] = list.get(g).newPalette();
         }
-        this.geometries = List.copyOf(list);
+        // The same list when nothing morphs: a crowd shares its geometries.
+        this.geometries = morphSampler.animatesAny() ? List.copyOf(list) : template.geometries;
         pose(sampler.start(), RotationInterpolation.SLERP);
     }
 
@@ -124,9 +125,6 @@ public final class SkinnedModel {
         SkinnedGeometry geometry = geometries.get(g);
         if (morphed[g] == null) {
             return Skinners.create(method, geometry, normals);
-        }
-        if (method == SkinningMethod.COR) {
-            morphed[g].useRestCentres();
         }
         return Skinners.scalar(method, geometry, normals);
     }
