@@ -218,7 +218,7 @@ final class ArRenderer implements GLSurfaceView.Renderer {
             glUniform1i(glGetUniformLocation(skinned, "uPalette"), 1);
             for (int g = 0; g < models.size(); g++) {
                 ModelGl model = models.get(g);
-                model.restPositions(frame, g);
+                model.restShape(frame, g);
                 model.palette(frame, g);
                 glUniform1i(glGetUniformLocation(skinned, "uHasScale"), frame.hasScale(g) ? 1 : 0);
                 glUniform1i(glGetUniformLocation(skinned, "uMatricesMirror"), frame.mirrorsMatrices(g) ? 1 : 0);

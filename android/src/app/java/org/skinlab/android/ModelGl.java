@@ -82,24 +82,28 @@ final class ModelGl {
     }
 
     /**
-     * Uploads geometry {@code g}'s morphed rest positions of {@code frame} in place of its bind
-     * positions when its morph weights animate (as the desktop viewer does: docs/skinning.md,
+     * Uploads geometry {@code g}'s morphed rest positions and normals of {@code frame} in place of
+     * its bind-pose ones when its morph weights animate (as the desktop viewer does: docs/skinning.md,
      * "Morphs"); nothing otherwise.
      */
-    void restPositions(Frame frame, int g) {
-        float[] rest = frame.restPositions(g);
-        if (rest == null) {
+    void restShape(Frame frame, int g) {
+        if (frame.restPositions(g) == null) {
             return;
         }
         if (restStaging == null) {
             restStaging = ByteBuffer.allocateDirect(Math.max(4, 12 * vertexCount)).order(ByteOrder.nativeOrder())
                     .asFloatBuffer();
         }
-        restStaging.clear();
-        restStaging.put(rest, 0, 3 * vertexCount).flip();
-        glBindBuffer(GL_ARRAY_BUFFER, buffers[0]);
-        glBufferSubData(GL_ARRAY_BUFFER, 0, 12 * vertexCount, restStaging);
+        uploadRest(buffers[0], frame.restPositions(g));
+        uploadRest(buffers[1], frame.restNormals(g));
         glBindBuffer(GL_ARRAY_BUFFER, 0);
+    }
+
+    private void uploadRest(int buffer, float[] data) {
+        restStaging.clear();
+        restStaging.put(data, 0, 3 * vertexCount).flip();
+        glBindBuffer(GL_ARRAY_BUFFER, buffer);
+        glBufferSubData(GL_ARRAY_BUFFER, 0, 12 * vertexCount, restStaging);
     }
 
     /** Uploads geometry {@code g}'s palette of {@code frame} and binds it to texture unit 1. */

@@ -80,6 +80,8 @@ public final class Frame implements AutoCloseable {
     private final boolean[] scalesMirror;
     /** Per geometry, the morphed rest positions of this step, or null where the rest shape does not morph. */
     private final float[][] restPositions;
+    /** Per geometry, the rest normals that go with them, or null likewise. */
+    private final float[][] restNormals;
     /** Readers holding this buffer; the simulation writes only into buffers with none. */
     final AtomicInteger leases = new AtomicInteger();
 
@@ -103,6 +105,7 @@ public final class Frame implements AutoCloseable {
                     + morphing.length + " morph flags");
         }
         restPositions = new float[n][];
+        restNormals = new float[n][];
         positions = new float[n][];
         normals = new float[n][];
         matrices = new float[n][];
@@ -118,6 +121,7 @@ public final class Frame implements AutoCloseable {
             dualQuaternions[g] = new float[8 * jointCounts[g]];
             scales[g] = new float[12 * jointCounts[g]];
             restPositions[g] = morphing[g] ? new float[3 * pointCounts[g]] : null;
+            restNormals[g] = morphing[g] ? new float[3 * pointCounts[g]] : null;
         }
     }
 
@@ -143,9 +147,10 @@ public final class Frame implements AutoCloseable {
         scalesMirror[g] = palette.mirrorsScales();
     }
 
-    /** Copies geometry {@code g}'s morphed rest positions of this step (simulation side only). */
-    void copyRestPositions(int g, float[] positions) {
+    /** Copies geometry {@code g}'s morphed rest positions and normals of this step (simulation side only). */
+    void copyRestShape(int g, float[] positions, float[] normals) {
         System.arraycopy(positions, 0, restPositions[g], 0, restPositions[g].length);
+        System.arraycopy(normals, 0, restNormals[g], 0, restNormals[g].length);
     }
 
     /**
@@ -157,6 +162,15 @@ public final class Frame implements AutoCloseable {
      */
     public float[] restPositions(int g) {
         return restPositions[g];
+    }
+
+    /**
+     * The rest normals that go with {@link #restPositions(int)} (morphed too when the morph morphs
+     * normals, else the geometry's), 3 floats per point; null where the rest shape does not morph.
+     * Read-only.
+     */
+    public float[] restNormals(int g) {
+        return restNormals[g];
     }
 
     void describe(long sequence, double playbackTime, float clipTime, SkinningMethod method,

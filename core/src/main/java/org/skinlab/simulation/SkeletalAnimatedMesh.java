@@ -449,7 +449,8 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
             // Dual quaternions whatever the method: a split view may draw LBS and DQS from one frame.
             f.copyPalette(g, skinned.preparePalette(g));
             if (f.restPositions(g) != null) {
-                f.copyRestPositions(g, skinned.geometries().get(g).positionArray());
+                SkinnedGeometry geometry = skinned.geometries().get(g);
+                f.copyRestShape(g, geometry.positionArray(), geometry.normalArray());
             }
             if (s.cpuSkinning()) {
                 skinned.skin(g, s.method(), f.positionsForWriting(g), f.normalsForWriting(g));

@@ -1,5 +1,6 @@
 package org.skinlab.skinning;
 
+import org.joml.Matrix3f;
 import org.joml.Matrix4f;
 import org.skinlab.model.MeshInstance;
 import org.skinlab.model.Morph;
@@ -8,9 +9,9 @@ import org.skinlab.model.Morph;
  * The rest shape of a placed mesh whose morph weights animate: its own {@link SkinnedGeometry}
  * (not shared with other characters) whose rest positions are rewritten from the morph before each
  * frame is skinned, so that every kernel that reads positions from the geometry's arrays skins
- * {@code P = B + sum w_i T_i} (COLLADA's NORMALIZED form likewise, {@link Morph#apply}). Normals stay
- * the base's (see {@link Morph}); CoR keeps the centres of rotation of the rest shape (see
- * docs/skinning.md, "Morphs"). Allocation-free per frame.
+ * {@code P = B + sum w_i T_i} (COLLADA's NORMALIZED form likewise, {@link Morph#apply}), and its rest
+ * normals too when the morph morphs them ({@link Morph#applyNormals}). CoR keeps the centres of
+ * rotation of the rest shape (see docs/skinning.md, "Morphs"). Allocation-free per frame.
  */
 final class MorphedRestShape {
     private final Morph morph;
@@ -22,6 +23,10 @@ final class MorphedRestShape {
     private final int[] positionOfPoint;
     /** {@link SkinnedGeometry#pointTransform}, column-major. */
     private final float[] transform = new float[16];
+    /** Its normal matrix (cofactor times the sign of the determinant), column-major; for morphed normals. */
+    private final float[] normalTransform = new float[9];
+    /** The morphed normals of the mesh's vertices, or null when the morph keeps the base's. */
+    private final float[] meshNormals;
 
     /** @param rest {@code SkinnedGeometry.of(instance)}, kept unmorphed */
     MorphedRestShape(MeshInstance instance, Morph morph, SkinnedGeometry rest) {
@@ -45,11 +50,22 @@ final class MorphedRestShape {
         geometry.takeCentresFrom(rest);
         Matrix4f m = SkinnedGeometry.pointTransform(instance);
         m.get(transform);
+        Matrix3f n = m.get3x3(new Matrix3f()).cofactor();
+        if (m.determinant3x3() < 0f) {
+            n.scale(-1f);
+        }
+        n.get(normalTransform);
+        meshNormals = morph.morphsNormals() ? new float[3 * morph.base().vertexCount()] : null;
     }
 
     /** The geometry this shape rewrites (its own). */
     SkinnedGeometry geometry() {
         return geometry;
+    }
+
+    /** Whether the rest normals morph too (then skinners must read them from the geometry per frame). */
+    boolean morphsNormals() {
+        return meshNormals != null;
     }
 
     /** The geometry with the file's weights, which no frame rewrites. */
@@ -64,6 +80,13 @@ final class MorphedRestShape {
         for (int i = 0; i < positionOfPoint.length; i++) {
             place(3 * positionOfPoint[i], points, 3 * i);
         }
+        if (meshNormals != null) {
+            morph.applyNormals(weights, meshNormals);
+            float[] normals = geometry.normalArray();
+            for (int i = 0, n = meshNormals.length; i < n; i += 3) {
+                turn(i, normals);
+            }
+        }
         SkinnedGeometry shared = geometry.sharedPositions();
         if (shared != null) {
             float[] positions = shared.positionArray();
@@ -71,6 +94,22 @@ final class MorphedRestShape {
                 place(p, positions, p);
             }
         }
+    }
+
+    /** Normal {@code i} (of vertex, and point, i / 3) by the normal matrix, renormalised. */
+    private void turn(int i, float[] dest) {
+        float[] m = normalTransform;
+        float x = meshNormals[i];
+        float y = meshNormals[i + 1];
+        float z = meshNormals[i + 2];
+        float nx = m[0] * x + m[3] * y + m[6] * z;
+        float ny = m[1] * x + m[4] * y + m[7] * z;
+        float nz = m[2] * x + m[5] * y + m[8] * z;
+        float len2 = nx * nx + ny * ny + nz * nz;
+        float inv = len2 > 0f ? (float) (1.0 / Math.sqrt(len2)) : 0f;
+        dest[i] = nx * inv;
+        dest[i + 1] = ny * inv;
+        dest[i + 2] = nz * inv;
     }
 
     private void place(int from, float[] dest, int to) {

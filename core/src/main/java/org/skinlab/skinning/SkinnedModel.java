@@ -126,7 +126,9 @@ public final class SkinnedModel {
         if (morphed[g] == null) {
             return Skinners.create(method, geometry, normals);
         }
-        return Skinners.scalar(method, geometry, normals);
+        // Skinning each shared position once would read the rest normals through a copy made once.
+        return Skinners.scalar(method, geometry, normals,
+                morphed[g].morphsNormals() ? PositionSharing.NEVER : PositionSharing.AUTO);
     }
 
     /** The model with its first clip (or at rest when it has none) and exact normals. */

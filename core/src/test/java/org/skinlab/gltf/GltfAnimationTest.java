@@ -155,6 +155,48 @@ class GltfAnimationTest {
         }
     }
 
+    /**
+     * Morph normals by hand: base normal (0, 0, 1) at every vertex, one target with NORMAL offset
+     * (1, 0, -1) and no position offset; weight 0 -> 1 over [0, 1] s (LINEAR). At t = 0.5,
+     * n = (0, 0, 1) + 0.5 (1, 0, -1) = (0.5, 0, 0.5), renormalised (0.7071, 0, 0.7071); at t = 1,
+     * (1, 0, 0). The static node is the identity, so every method gives the morphed normal.
+     */
+    @Test
+    void targetNormalsMorphTheNormals() throws Exception {
+        GltfFixture f = new GltfFixture();
+        f.floats("VEC3", 0, 0, 0, 1, 0, 0, 0, 1, 0); // 0 positions
+        f.floats("VEC3", 0, 0, 1, 0, 0, 1, 0, 0, 1); // 1 normals
+        f.floats("VEC3", 0, 0, 0, 0, 0, 0, 0, 0, 0); // 2 position offsets
+        f.floats("VEC3", 1, 0, -1, 1, 0, -1, 1, 0, -1); // 3 normal offsets
+        f.floats("SCALAR", 0, 1); // 4
+        f.floats("SCALAR", 0, 1); // 5
+        Model model = GltfFixture.read(f.gltf("\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0,"
+                + "\"NORMAL\":1},\"targets\":[{\"POSITION\":2,\"NORMAL\":3}]}],\"weights\":[1]}],"
+                + "\"nodes\":[{\"mesh\":0}],\"scenes\":[{\"nodes\":[0]}],"
+                + "\"animations\":[{\"channels\":[{\"sampler\":0,\"target\":{\"node\":0,\"path\":\"weights\"}}],"
+                + "\"samplers\":[{\"input\":4,\"output\":5}]}]"));
+        assertEquals(List.of(), model.warnings());
+        assertTrue(model.morphs().get(0).morphsNormals());
+        float[] still = model.morphs().get(0).result().normals();
+        assertEquals(1f, still[0], EPS, "the mesh's weight 1 gives (1, 0, 0)");
+        assertEquals(0f, still[2], EPS);
+        SkinnedModel skinned = new SkinnedModel(model, model.clips().get(0), NormalTransform.INVERSE_TRANSPOSE);
+        float half = (float) Math.sqrt(0.5);
+        for (SkinningMethod method : SkinningMethod.values()) {
+            float[] normals = new float[9];
+            skinned.pose(0.5f, RotationInterpolation.SLERP);
+            skinned.skin(0, method, new float[9], normals);
+            for (int v = 0; v < 3; v++) {
+                assertEquals(half, normals[3 * v], EPS, method + " vertex " + v);
+                assertEquals(0f, normals[3 * v + 1], EPS);
+                assertEquals(half, normals[3 * v + 2], EPS);
+            }
+            skinned.pose(0f, RotationInterpolation.SLERP);
+            skinned.skin(0, method, new float[9], normals);
+            assertEquals(1f, normals[2], EPS, method + " at t = 0: the base normal");
+        }
+    }
+
     @Test
     void weightsOnANodeWithoutMorphTargetsAreRefused() {
         GltfException e = assertThrows(GltfException.class,

@@ -177,22 +177,19 @@ final class GpuGeometry implements AutoCloseable {
 
     /**
      * Uploads what the frame holds for this geometry: always the palette, the morphed rest
-     * positions when its morph weights animate (the vertex shader skins them: uploading them costs
+     * positions and normals when its morph weights animate (the vertex shader skins them: uploading them costs
      * 12 bytes per vertex of the morphing meshes only, and keeps the GPU on exactly the positions
      * the CPU skins; docs/skinning.md, "Morphs"), and the CPU-skinned positions and normals when
      * the frame has them.
      */
     void upload(Frame frame, int g) {
         palette.upload(frame, g);
-        float[] rest = frame.restPositions(g);
-        if (rest != null) {
+        if (frame.restPositions(g) != null) {
             if (restStaging == null) {
                 restStaging = MemoryUtil.memAllocFloat(Math.max(1, 3 * vertexCount));
             }
-            restStaging.clear();
-            restStaging.put(rest, 0, 3 * vertexCount).flip();
-            glBindBuffer(GL_ARRAY_BUFFER, buffers[0]);
-            glBufferSubData(GL_ARRAY_BUFFER, 0, restStaging);
+            uploadRest(buffers[0], frame.restPositions(g));
+            uploadRest(buffers[1], frame.restNormals(g));
         }
         if (frame.hasSkinnedMesh()) {
             glBindBuffer(GL_ARRAY_BUFFER, buffers[2]);
@@ -201,6 +198,14 @@ final class GpuGeometry implements AutoCloseable {
             glBufferSubData(GL_ARRAY_BUFFER, 0, frame.normals(g));
             glBindBuffer(GL_ARRAY_BUFFER, 0);
         }
+    }
+
+    /** Replaces the render vertices' part of a bind-pose buffer (positions or normals). */
+    private void uploadRest(int buffer, float[] data) {
+        restStaging.clear();
+        restStaging.put(data, 0, 3 * vertexCount).flip();
+        glBindBuffer(GL_ARRAY_BUFFER, buffer);
+        glBufferSubData(GL_ARRAY_BUFFER, 0, restStaging);
     }
 
     /**
