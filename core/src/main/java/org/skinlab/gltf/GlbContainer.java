@@ -99,6 +99,7 @@ final class GlbContainer {
             throw ctx.error("(GLB chunk 0)", "the JSON chunk claims " + jsonLength + " bytes but "
                     + (bytes.length - 20) + " follow");
         }
+        warnIfUnaligned(ctx, "(GLB chunk 0)", jsonLength);
         int binOffset = -1;
         int binLength = 0;
         long at = 20 + jsonLength;
@@ -113,6 +114,7 @@ final class GlbContainer {
                 throw ctx.error(where, "the chunk claims " + chunkLength + " bytes but " + (bytes.length - at - 8)
                         + " follow");
             }
+            warnIfUnaligned(ctx, where, chunkLength);
             if (type == CHUNK_BIN && chunk == 1) {
                 binOffset = (int) at + 8;
                 binLength = (int) chunkLength;
@@ -126,5 +128,12 @@ final class GlbContainer {
         }
         int bom = bomLength(ctx, bytes, 20, jsonLength);
         return new GlbContainer(true, bytes, 20 + bom, (int) jsonLength - bom, binOffset, binLength);
+    }
+
+    /** The specification pads every chunk to 4 bytes; readers cope without, so only a warning. */
+    private static void warnIfUnaligned(GltfContext ctx, String where, long chunkLength) {
+        if (chunkLength % 4 != 0) {
+            ctx.warn(where, "the chunk's length " + chunkLength + " is not a multiple of 4 (chunks are padded)");
+        }
     }
 }
