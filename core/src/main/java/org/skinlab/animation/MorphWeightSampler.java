@@ -1,6 +1,7 @@
 package org.skinlab.animation;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 
 import org.skinlab.model.AnimationClip;
@@ -38,7 +39,7 @@ public final class MorphWeightSampler {
             float[] times = c.track().times();
             float[] shared = times;
             for (float[] t : timelines) {
-                if (java.util.Arrays.equals(t, times)) {
+                if (Arrays.equals(t, times)) {
                     shared = t;
                 }
             }

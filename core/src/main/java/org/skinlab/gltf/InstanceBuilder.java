@@ -163,7 +163,7 @@ final class InstanceBuilder {
             String id = weights == data.weights ? data.mesh.id() + "/weights" : node.path() + "/weights";
             // Targets are offsets (RELATIVE): positions, and normals when some target has NORMAL
             // (zero for the others); without any, targets have no normals and the base's stay.
-            boolean normals = data.mesh.hasNormals() && java.util.Arrays.stream(data.targetNormals).anyMatch(n -> n != null);
+            boolean normals = data.mesh.hasNormals() && Arrays.stream(data.targetNormals).anyMatch(n -> n != null);
             List<Mesh> targets = new ArrayList<>();
             for (int t = 0; t < data.targetCount(); t++) {
                 float[] n = !normals ? null : data.targetNormals[t] != null ? data.targetNormals[t]

@@ -302,31 +302,13 @@ public final class SkinnedGeometry {
     }
 
     /** Whether every bind frame of the skin mirrors (then the common mirror moves into the points). */
-    private static boolean mirrorsBindFrames(Skin skin) {
+    static boolean mirrorsBindFrames(Skin skin) {
         Matrix4f m = new Matrix4f();
         boolean all = skin.jointCount() > 0;
         for (int j = 0; j < skin.jointCount() && all; j++) {
             all = skin.inverseBindMatrix(j, m).determinant3x3() < 0f;
         }
         return all;
-    }
-
-    /**
-     * What takes a mesh position to its point's position in {@link #positionArray()}: the bind
-     * shape matrix, then the common mirror of the bind frames when there is one (see
-     * {@code skinned}); the identity for a static mesh. A per-frame morph
-     * ({@link MorphedRestShape}) moves its morphed positions by it.
-     */
-    static Matrix4f pointTransform(MeshInstance instance) {
-        Matrix4f m = new Matrix4f();
-        Skin skin = instance.skin();
-        if (skin == null) {
-            return m;
-        }
-        if (mirrorsBindFrames(skin)) {
-            m.scale(-1f, 1f, 1f);
-        }
-        return m.mul(skin.bindShapeMatrix());
     }
 
     /**

@@ -39,7 +39,11 @@ class MorphWeightAnimationTest {
                 + "<p>0 1 2</p></triangles>\n</mesh></geometry>\n";
     }
 
-    private static final String LIBRARIES = "<library_geometries>" + geometry("base", "0 0 0 0 1 0 2 0 0")
+    private static final String LIBRARIES = libraries(
+            Snippets.skin("face-skin", "smile", "Name_array", "jaw", "1", "1 1 1", "0 0 0 0 0 0"));
+
+    private static String libraries(String skin) {
+        return "<library_geometries>" + geometry("base", "0 0 0 0 1 0 2 0 0")
             + geometry("up", "0 0 1 0 1 1 2 0 1") + geometry("right", "1 0 0 1 1 0 3 0 0") + "</library_geometries>\n"
             + """
             <library_controllers>
@@ -50,8 +54,8 @@ class MorphWeightAnimationTest {
                   <technique_common><accessor source="#smile-weights-array" count="2"><param name="MORPH_WEIGHT" type="float"/></accessor></technique_common></source>
                 <targets><input semantic="MORPH_TARGET" source="#smile-targets"/><input semantic="MORPH_WEIGHT" source="#smile-weights"/></targets>
               </morph></controller>
-            """ + Snippets.skin("face-skin", "smile", "Name_array", "jaw", "1", "1 1 1", "0 0 0 0 0 0")
-            + "</library_controllers>\n";
+            """ + skin + "</library_controllers>\n";
+    }
 
     private static final String SCENE = """
                   <node id="jaw" sid="jaw" type="JOINT"/>
@@ -61,6 +65,28 @@ class MorphWeightAnimationTest {
 
     private static Model model(String animations) {
         return Fixtures.read("morph-weights.dae", AnimationXml.document(LIBRARIES, SCENE, animations, null));
+    }
+
+    /**
+     * A skin on the morph whose bind shape mirrors, scales by 2 and moves x by 1, and whose inverse
+     * bind matrix mirrors back (so the skinning path moves the common mirror into the points): the
+     * morphed positions must go through both as the rest shape did. At t = 1 (w = (0.5, 0.5))
+     * P = B + (0.5, 0, 0.5); the joint is at the origin, so the result is IBM BSM P with
+     * IBM BSM = [2 0 0 -1; 0 2 0 0; 0 0 2 0]: (0, 0, 1), (0, 2, 1), (4, 0, 1).
+     */
+    @Test
+    void aMirroringScalingBindShapeAppliesToTheMorphedPositions() {
+        String skin = Snippets.skin("face-skin", "smile", "-2 0 0 1 0 2 0 0 0 0 2 0 0 0 0 1", "Name_array", "jaw",
+                "-1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1", "1", "1 1 1", "0 0 0 0 0 0");
+        Model m = Fixtures.read("morph-weights-bsm.dae", AnimationXml.document(libraries(skin), SCENE, PER_WEIGHT, null));
+        SkinnedModel skinned = new SkinnedModel(m, m.clips().get(0), NormalTransform.INVERSE_TRANSPOSE);
+        skinned.pose(1f, RotationInterpolation.SLERP);
+        for (SkinningMethod method : SkinningMethod.values()) {
+            float[] points = new float[3 * skinned.geometries().get(0).pointCount()];
+            skinned.skin(0, method, points, new float[points.length]);
+            assertArrayEquals(new float[] {0, 0, 1, 0, 2, 1, 4, 0, 1},
+                    skinned.geometries().get(0).positionsInSourceOrder(points, new float[9]), 1e-5f, method.toString());
+        }
     }
 
     private static final String PER_WEIGHT = AnimationXml.animation("w0", "smile-weights(0)", "0 2", "0 1", 1)
