@@ -68,7 +68,7 @@ public final class AnimationSampler {
      * One array per distinct list of key times: exporters key every channel of a clip at the same
      * times, and channels that share the array share one key search per sample.
      */
-    private static float[] sharedTimes(float[] times, List<float[]> timelines) {
+    static float[] sharedTimes(float[] times, List<float[]> timelines) {
         for (float[] t : timelines) {
             if (Arrays.equals(t, times)) {
                 return t;

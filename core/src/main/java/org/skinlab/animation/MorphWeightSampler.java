@@ -1,7 +1,6 @@
 package org.skinlab.animation;
 
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.List;
 
 import org.skinlab.model.AnimationClip;
@@ -36,17 +35,8 @@ public final class MorphWeightSampler {
             instanceOfChannel[i] = c.instance();
             morphs[c.instance()] = model.morphOf(model.instances().get(c.instance())).orElseThrow(
                     () -> new IllegalArgumentException(c.target() + ": the instance draws no morph"));
-            float[] times = c.track().times();
-            float[] shared = times;
-            for (float[] t : timelines) {
-                if (Arrays.equals(t, times)) {
-                    shared = t;
-                }
-            }
-            if (shared == times) {
-                timelines.add(times);
-            }
-            channels[i] = new AnimationSampler.Channel(c.weightOffset(), c.track(), shared, false, false);
+            channels[i] = new AnimationSampler.Channel(c.weightOffset(), c.track(),
+                    AnimationSampler.sharedTimes(c.track().times(), timelines), false, false);
         }
     }
 
