@@ -19,9 +19,9 @@ import org.skinlab.model.Model;
  * neither allocates.
  *
  * <p>A placed mesh whose morph weights the clip animates gets its own geometry
- * ({@link MorphedRestShape}) whose rest positions {@link #pose} rewrites before skinning, and the
- * portable scalar skinners, which read rest positions from the geometry's arrays every frame (the
- * SIMD kernels copy them into their own layout once). Other meshes are untouched.
+ * ({@link MorphedRestShape}) whose rest positions (and normals) {@link #pose} rewrites before
+ * skinning, then tells its skinners ({@link Skinner#restShapeChanged}: the SIMD kernels re-pack
+ * their copies). Other meshes are untouched.
  *
  * <p>Not thread-safe: one instance per thread that drives it (the simulation thread, a command).
  */
@@ -127,7 +127,7 @@ public final class SkinnedModel {
             return Skinners.create(method, geometry, normals);
         }
         // Skinning each shared position once would read the rest normals through a copy made once.
-        return Skinners.scalar(method, geometry, normals,
+        return Skinners.create(method, geometry, normals,
                 morphed[g].morphsNormals() ? PositionSharing.NEVER : PositionSharing.AUTO);
     }
 
@@ -208,6 +208,11 @@ public final class SkinnedModel {
             for (int g = 0; g < morphed.length; g++) {
                 if (morphed[g] != null) {
                     morphed[g].apply(morphWeights[g]);
+                    for (Skinner s : skinners[g]) {
+                        if (s != null) {
+                            s.restShapeChanged();
+                        }
+                    }
                 }
             }
         }
