@@ -69,10 +69,16 @@ final class MorphWeightTargets {
             ctx.warn(channel, "target=\"" + target + "\" skipped: its sampler has no keys");
             return true;
         }
+        int before = out.size();
         for (int i = 0; i < instances.size(); i++) {
             if (instances.get(i).mesh() == morph.result()) {
                 out.add(new MorphWeightChannel(i, first, track, target));
             }
+        }
+        if (out.size() == before) {
+            // A morph only used as another morph's base (or not instanced) has no instance of its own.
+            ctx.warn(channel, "target=\"" + target + "\" skipped: no instance draws this morph itself"
+                    + " (animated weights of a morph under another morph are not supported)");
         }
         return true;
     }

@@ -146,6 +146,28 @@ class MorphWeightAnimationTest {
                 skinned.geometries().get(1).positionsInSourceOrder(points, new float[9]), EPS);
     }
 
+    /** The morph "smile" only as the base of another morph ("grin"), which the scene draws. */
+    @Test
+    void weightsOfAMorphUnderAnotherMorphAreSkippedWithAWarning() {
+        String grin = """
+                  <controller id="grin"><morph source="#smile" method="RELATIVE">
+                    <source id="grin-targets"><IDREF_array id="grin-targets-array" count="1">up</IDREF_array>
+                      <technique_common><accessor source="#grin-targets-array" count="1"><param name="IDREF" type="IDREF"/></accessor></technique_common></source>
+                    <source id="grin-weights"><float_array id="grin-weights-array" count="1">0</float_array>
+                      <technique_common><accessor source="#grin-weights-array" count="1"><param name="MORPH_WEIGHT" type="float"/></accessor></technique_common></source>
+                    <targets><input semantic="MORPH_TARGET" source="#grin-targets"/><input semantic="MORPH_WEIGHT" source="#grin-weights"/></targets>
+                  </morph></controller>
+                """;
+        Model m = Fixtures.read("morph-on-morph.dae", AnimationXml.document(libraries(grin),
+                "      <node id=\"plain\"><instance_controller url=\"#grin\"/></node>\n",
+                AnimationXml.animation("w", "smile-weights(0)", "0 1", "0 1", 1)
+                        + AnimationXml.animation("g", "grin-weights(0)", "0 1", "0 1", 1), null));
+        assertEquals(1, m.clips().get(0).morphWeights().size(), "grin's channel");
+        assertEquals("grin-weights(0)", m.clips().get(0).morphWeights().get(0).target());
+        assertTrue(m.warnings().stream().anyMatch(w -> w.toString().contains("smile-weights(0)")
+                && w.toString().contains("no instance draws this morph")), m.warnings()::toString);
+    }
+
     @Test
     void aWeightOutsideTheArrayIsSkippedWithAWarning() {
         Model m = model(AnimationXml.animation("w", "smile-weights(2)", "0 1", "0 1", 1));
