@@ -31,7 +31,8 @@ that exercises what a skinned character can use, one group of features per file:
                               (clips) with different permutations
   morph-skin.gltf             morph targets (POSITION and NORMAL) on a skinned mesh with default
                               mesh weights, a node that overrides them, and a clip that animates
-                              the weights (LINEAR) beside the joints
+                              the weights (LINEAR) beside the joints, and one with CUBICSPLINE
+                              and STEP weights
   materials.glb               GLB with PNG images in buffer views: unit quads facing +Z in a grid,
                               one material feature each (the viewer's pixel tests look at them):
                               a four-colour texture, the same with KHR_texture_transform, a MASK
@@ -730,6 +731,15 @@ def morph_skin():
     b = animation(doc, "breathe")
     channel(doc, b, joints[1], "rotation", [0.0, 1.0], bend([0, -20]))
     channel(doc, b, body, "weights", [0.0, 0.5, 1.0], [0.5, 0.25, 1.0, 0.0, 0.0, 1.0])
+    # Weights by CUBICSPLINE (body; per key in-tangents, values, out-tangents, one per target) and
+    # STEP (body2), keyed at other times than the rotation.
+    c = animation(doc, "pulse")
+    channel(doc, c, joints[1], "rotation", [0.0, 1.2], bend([0, 15]))
+    channel(doc, c, body, "weights", [0.0, 0.6, 1.2],
+            [0.0, 0.0, 0.2, 0.1, 1.5, -0.8,
+             -1.0, 0.4, 0.9, 0.6, 0.3, 1.2,
+             0.5, -0.5, 0.1, 0.0, 0.0, 0.0], interpolation="CUBICSPLINE")
+    channel(doc, c, body2, "weights", [0.1, 0.7], [1.0, 0.0, 0.3, 0.7], interpolation="STEP")
     return write(doc)
 
 

@@ -284,8 +284,9 @@ final class ArRenderer implements GLSurfaceView.Renderer {
         glDisable(GL_BLEND);
     }
 
-    /** Geometry {@code g}'s palette and its per-geometry uniforms. */
+    /** Geometry {@code g}'s morphed rest shape (when its weights animate), palette and per-geometry uniforms. */
     private void paletteOf(Frame frame, int g) {
+        models.get(g).restShape(frame, g);
         models.get(g).palette(frame, g);
         glUniform1i(glGetUniformLocation(skinned, "uHasScale"), frame.hasScale(g) ? 1 : 0);
         glUniform1i(glGetUniformLocation(skinned, "uMatricesMirror"), frame.mirrorsMatrices(g) ? 1 : 0);

@@ -46,11 +46,15 @@ final class ModelGl {
     private final PartCentres centres;
     private final float[] posedCentres;
     private boolean mirrored;
+    private final int vertexCount;
+    /** Staging for a morphing rest shape's positions (3 per vertex), allocated on first use. */
+    private FloatBuffer restStaging;
 
     /** @param textures the GL texture of an image, 0 when it has none */
     ModelGl(SkinnedGeometry g, ToIntFunction<Image> textures) {
         geometry = g;
         int n = g.vertexCount();
+        vertexCount = n;
         InfluenceView view = InfluenceView.of(g, GlesShaders.INFLUENCES);
         Mesh mesh = g.mesh();
         int[] triangles = mesh == null ? new int[0] : mesh.triangles();
@@ -131,6 +135,31 @@ final class ModelGl {
 
     private static int textureOf(Texture t, ToIntFunction<Image> textures) {
         return t == null ? 0 : textures.applyAsInt(t.image());
+    }
+
+    /**
+     * Uploads geometry {@code g}'s morphed rest positions and normals of {@code frame} in place of
+     * its bind-pose ones when its morph weights animate (as the desktop viewer does: docs/skinning.md,
+     * "Morphs"); nothing otherwise.
+     */
+    void restShape(Frame frame, int g) {
+        if (frame.restPositions(g) == null) {
+            return;
+        }
+        if (restStaging == null) {
+            restStaging = ByteBuffer.allocateDirect(Math.max(4, 12 * vertexCount)).order(ByteOrder.nativeOrder())
+                    .asFloatBuffer();
+        }
+        uploadRest(buffers[0], frame.restPositions(g));
+        uploadRest(buffers[1], frame.restNormals(g));
+        glBindBuffer(GL_ARRAY_BUFFER, 0);
+    }
+
+    private void uploadRest(int buffer, float[] data) {
+        restStaging.clear();
+        restStaging.put(data, 0, 3 * vertexCount).flip();
+        glBindBuffer(GL_ARRAY_BUFFER, buffer);
+        glBufferSubData(GL_ARRAY_BUFFER, 0, 12 * vertexCount, restStaging);
     }
 
     /**

@@ -68,7 +68,7 @@ public final class AnimationSampler {
      * One array per distinct list of key times: exporters key every channel of a clip at the same
      * times, and channels that share the array share one key search per sample.
      */
-    private static float[] sharedTimes(float[] times, List<float[]> timelines) {
+    static float[] sharedTimes(float[] times, List<float[]> timelines) {
         for (float[] t : timelines) {
             if (Arrays.equals(t, times)) {
                 return t;
@@ -157,7 +157,7 @@ public final class AnimationSampler {
      * The segment [k, k+1] of the keys that holds {@code time}: the last key at or before it, 0
      * before the first key (and for no keys), the last key from it on.
      */
-    private static int segment(float[] times, float time) {
+    static int segment(float[] times, float time) {
         int last = times.length - 1;
         if (last <= 0 || time <= times[0]) {
             return 0;
@@ -178,8 +178,11 @@ public final class AnimationSampler {
         return lo;
     }
 
-    /** One channel as flat arrays, with whole-matrix keys pre-decomposed. */
-    private static final class Channel {
+    /**
+     * One channel as flat arrays, with whole-matrix keys pre-decomposed; also what
+     * {@link MorphWeightSampler} samples weights with (neither matrix nor quaternion, so no pose).
+     */
+    static final class Channel {
         private final int slot;
         private final int width;
         /** Key times, the same array for every channel with the same times (see sharedTimes). */
@@ -261,6 +264,7 @@ public final class AnimationSampler {
 
         /** Writes this channel's value at {@code time}, which lies in segment {@code k} of its keys. */
         void sample(int k, float time, RotationInterpolation rotations, float[] dest, Pose pose) {
+            // pose: scratch for matrices and quaternions only (null for morph weights)
             int keys = times.length;
             if (keys == 0) {
                 return;

@@ -12,6 +12,8 @@ import java.util.Set;
 import org.skinlab.model.AnimationChannel;
 import org.skinlab.model.AnimationClip;
 import org.skinlab.model.KeyframeTrack;
+import org.skinlab.model.Morph;
+import org.skinlab.model.MorphWeightChannel;
 import org.skinlab.model.Node;
 import org.skinlab.model.TransformElement;
 
@@ -25,6 +27,9 @@ import org.skinlab.model.TransformElement;
  * column i of row j (the reading of three.js and assimp; the value index in the row-major element
  * is {@code 4 * j + i}).
  *
+ * <p>A target that names a morph controller's MORPH_WEIGHT source ({@code smile-weights(1)}, no
+ * slash) animates morph weights instead ({@link MorphWeightTargets}).
+ *
  * <p>Lenient (with a warning): channels whose target is not a transform of a scene node (a
  * material, a node outside the visual scene, an unknown sid or member) and channels whose sampler
  * has no keys are skipped. Refused: dangling sampler or clip references.
@@ -37,31 +42,73 @@ final class AnimationLoader {
     private final ImportContext ctx;
     private final List<Node> nodes;
     private final Map<String, IntList> nodesById;
-    private final Map<XmlElement, List<AnimationChannel>> channelsByAnimation = new IdentityHashMap<>();
+    private final Map<XmlElement, Channels> channelsByAnimation = new IdentityHashMap<>();
     private final CurveTangents tangents;
     private final SamplerReader samplers;
+    private final MorphWeightTargets weightTargets;
+
+    /** One animation's channels: on node transforms and on morph weights. */
+    private static final class Channels {
+        final List<AnimationChannel> nodes = new ArrayList<>();
+        final List<MorphWeightChannel> weights = new ArrayList<>();
+
+        void addAll(Channels other) {
+            nodes.addAll(other.nodes);
+            weights.addAll(other.weights);
+        }
+
+        float start() {
+            float start = Float.POSITIVE_INFINITY;
+            for (AnimationChannel c : nodes) {
+                start = Math.min(start, c.track().startTime());
+            }
+            for (MorphWeightChannel c : weights) {
+                start = Math.min(start, c.track().startTime());
+            }
+            return start;
+        }
+
+        float end() {
+            float end = Float.NEGATIVE_INFINITY;
+            for (AnimationChannel c : nodes) {
+                end = Math.max(end, c.track().endTime());
+            }
+            for (MorphWeightChannel c : weights) {
+                end = Math.max(end, c.track().endTime());
+            }
+            return end;
+        }
+
+        boolean isEmpty() {
+            return nodes.isEmpty() && weights.isEmpty();
+        }
+    }
 
     /**
      * @param authoringTool the document's authoring tool as {@code ColladaImporter} read it from
      *                      {@code <asset>} ({@code AssetInfo.authoringTool()}), or null
+     * @param morphs        the morphs and their loader, for channels on morph weights
+     * @param scene         the visual scene: its nodes and the instances that draw morphs
      */
-    AnimationLoader(ImportContext ctx, List<Node> nodes, Map<String, IntList> nodesById, String authoringTool) {
+    AnimationLoader(ImportContext ctx, SceneLoader.Result scene, Map<XmlElement, Morph> morphsByController,
+            MorphLoader morphs, String authoringTool) {
         this.ctx = ctx;
-        this.nodes = nodes;
-        this.nodesById = nodesById;
+        this.nodes = scene.nodes;
+        this.nodesById = scene.nodesById;
         this.tangents = new CurveTangents(ctx, authoringTool);
         this.samplers = new SamplerReader(ctx, tangents);
+        this.weightTargets = new MorphWeightTargets(ctx, morphsByController, morphs, scene.instances, samplers);
     }
 
     List<AnimationClip> load(XmlElement collada) throws ColladaException {
         List<XmlElement> topLevel = new ArrayList<>();
-        List<AnimationChannel> all = new ArrayList<>();
+        Channels all = new Channels();
         for (XmlElement library : collada.children("library_animations")) {
             topLevel.addAll(library.children("animation"));
         }
         for (XmlElement animation : topLevel) {
             for (XmlElement a : withNested(animation)) {
-                List<AnimationChannel> own = new ArrayList<>();
+                Channels own = new Channels();
                 for (XmlElement channel : a.children("channel")) {
                     readChannel(channel, own);
                 }
@@ -80,13 +127,8 @@ final class AnimationLoader {
             clips.add(readClip(clipElements.get(i), i));
         }
         if (clipElements.isEmpty() && !all.isEmpty()) {
-            float start = Float.POSITIVE_INFINITY;
-            float end = Float.NEGATIVE_INFINITY;
-            for (AnimationChannel c : all) {
-                start = Math.min(start, c.track().startTime());
-                end = Math.max(end, c.track().endTime());
-            }
-            clips.add(new AnimationClip(null, AnimationClip.DEFAULT_NAME, start, end, all));
+            clips.add(new AnimationClip(null, AnimationClip.DEFAULT_NAME, all.start(), all.end(), all.nodes,
+                    all.weights));
         }
         return clips;
     }
@@ -108,7 +150,7 @@ final class AnimationLoader {
     }
 
     private AnimationClip readClip(XmlElement clip, int ordinal) throws ColladaException {
-        List<AnimationChannel> channels = new ArrayList<>();
+        Channels channels = new Channels();
         // A clip may instance an animation and also one nested in it (or the same one twice);
         // each animation's channels go in once, or the clip would drive the same values twice.
         Set<XmlElement> included = Collections.newSetFromMap(new IdentityHashMap<>());
@@ -118,7 +160,7 @@ final class AnimationLoader {
                 if (!included.add(a)) {
                     continue;
                 }
-                List<AnimationChannel> own = channelsByAnimation.get(a);
+                Channels own = channelsByAnimation.get(a);
                 if (own == null) {
                     throw ctx.error(instance, "url=\"" + instance.attr("url")
                             + "\" refers to an <animation> outside <library_animations>");
@@ -131,10 +173,7 @@ final class AnimationLoader {
         if (clip.attr("end") != null) {
             end = clipTime(clip, "end");
         } else {
-            end = start;
-            for (AnimationChannel c : channels) {
-                end = Math.max(end, c.track().endTime());
-            }
+            end = Math.max(start, channels.end());
             ctx.warn(clip, "no end attribute; the clip ends at its last key (" + end + " s)");
         }
         if (end < start) {
@@ -142,7 +181,7 @@ final class AnimationLoader {
         }
         String name = clip.attr("name") != null ? clip.attr("name")
                 : clip.id() != null ? clip.id() : "clip-" + (ordinal + 1);
-        return new AnimationClip(clip.id(), name, start, end, channels);
+        return new AnimationClip(clip.id(), name, start, end, channels.nodes, channels.weights);
     }
 
     /**
@@ -159,10 +198,14 @@ final class AnimationLoader {
 
     // ------------------------------------------------------------------------------- channels
 
-    private void readChannel(XmlElement channel, List<AnimationChannel> out) throws ColladaException {
+    private void readChannel(XmlElement channel, Channels channels) throws ColladaException {
+        List<AnimationChannel> out = channels.nodes;
         XmlElement sampler = ctx.resolve(channel, "source", "sampler");
         String target = ctx.attr(channel, "target");
         int slash = target.indexOf('/');
+        if (slash < 0 && weightTargets.read(channel, target, sampler, channels.weights)) {
+            return;
+        }
         if (slash <= 0 || slash == target.length() - 1) {
             ctx.warn(channel, "target=\"" + target + "\" is not of the form node/sid; skipped");
             return;

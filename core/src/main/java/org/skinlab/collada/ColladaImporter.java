@@ -106,7 +106,8 @@ public final class ColladaImporter {
             }
         }
 
-        Map<XmlElement, Morph> morphsByController = new MorphLoader(ctx, meshesByGeometry).loadAll(root);
+        MorphLoader morphLoader = new MorphLoader(ctx, meshesByGeometry);
+        Map<XmlElement, Morph> morphsByController = morphLoader.loadAll(root);
         for (Morph m : morphsByController.values()) {
             meshes.add(m.result());
         }
@@ -130,8 +131,8 @@ public final class ColladaImporter {
 
         SceneLoader.Result scene = new SceneLoader(ctx, meshesByGeometry, morphsByController, skinsByController,
                 materials, asset.authoringTool()).load(root);
-        List<AnimationClip> clips = new AnimationLoader(ctx, scene.nodes, scene.nodesById, asset.authoringTool())
-                .load(root);
+        List<AnimationClip> clips = new AnimationLoader(ctx, scene, morphsByController, morphLoader,
+                asset.authoringTool()).load(root);
         return new Model(name, asset, meshes, skins, new ArrayList<>(morphsByController.values()),
                 new ArrayList<>(materials.values()), materialLoader.images(), scene.nodes, scene.instances, clips,
                 ctx.warnings());

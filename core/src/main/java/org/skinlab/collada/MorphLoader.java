@@ -26,6 +26,8 @@ final class MorphLoader {
     private final Map<XmlElement, Mesh> meshes;
     private final Map<XmlElement, Morph> morphs = new IdentityHashMap<>();
     private final Map<XmlElement, Boolean> loading = new IdentityHashMap<>();
+    /** Per morph controller, per weight of the file, its index among the morph's targets or -1 (left out). */
+    private final Map<XmlElement, int[]> weightSlots = new IdentityHashMap<>();
 
     MorphLoader(ImportContext ctx, Map<XmlElement, Mesh> meshesByGeometry) {
         this.ctx = ctx;
@@ -44,6 +46,15 @@ final class MorphLoader {
             }
         }
         return inOrder;
+    }
+
+    /**
+     * Per weight of the controller's MORPH_WEIGHT source, the index of its target in the
+     * {@link Morph} ({@link Morph#targets()}), or -1 for a target left out; null when the
+     * controller has no morph.
+     */
+    int[] weightSlots(XmlElement controller) {
+        return weightSlots.get(controller);
     }
 
     /** The controller's morph, or null when its base is a skin or a geometry without a mesh. */
@@ -110,6 +121,9 @@ final class MorphLoader {
         }
         List<Mesh> used = new ArrayList<>();
         float[] usedWeights = new float[weights.length];
+        int[] slots = new int[weights.length];
+        java.util.Arrays.fill(slots, -1);
+        weightSlots.put(controller, slots);
         for (int i = 0; i < targetIds.length; i++) {
             XmlElement g = ctx.byId(targetIds[i]);
             Mesh target = g == null ? null : meshes.get(g);
@@ -125,6 +139,7 @@ final class MorphLoader {
                             + " positions, the base " + base.positionCount() + "; its first " + base.positionCount()
                             + " are used");
                 }
+                slots[i] = used.size();
                 usedWeights[used.size()] = weights[i];
                 used.add(target);
             }

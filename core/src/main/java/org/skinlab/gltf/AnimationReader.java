@@ -8,6 +8,8 @@ import org.skinlab.model.AnimationChannel;
 import org.skinlab.model.AnimationClip;
 import org.skinlab.model.Interpolation;
 import org.skinlab.model.KeyframeTrack;
+import org.skinlab.model.MeshInstance;
+import org.skinlab.model.MorphWeightChannel;
 import org.skinlab.model.Node;
 
 /**
@@ -18,9 +20,9 @@ import org.skinlab.model.Node;
  * {@code (t[k] + td/3, v[k] + b[k] td/3)} and key k+1's in-tangent {@code (t[k+1] - td/3,
  * v[k+1] - a[k+1] td/3)}, which is the specification's Hermite spline exactly. Rotation keys that
  * are not unit length are normalised (their tangents scaled alike) with a warning. Channels on
- * morph {@code weights} are decoded into tracks like the others (one value per morph target of the
- * node's mesh per key), then skipped with a warning (the model has no animated weights yet); channels on nodes
- * outside the scene are skipped with a warning. Two channels on the same node and path in one
+ * morph {@code weights} become {@link MorphWeightChannel}s on the node's mesh instance (one value
+ * per morph target of the node's mesh per key, CUBICSPLINE as above per weight); channels on nodes
+ * outside the scene (or whose mesh draws nothing) are skipped with a warning. Two channels on the same node and path in one
  * animation are refused.
  */
 final class AnimationReader {
@@ -32,9 +34,12 @@ final class AnimationReader {
     private final SceneReader scene;
     private final JsonNode nodes;
     private final JsonNode meshes;
+    private final List<MeshInstance> instances;
 
-    AnimationReader(GltfContext ctx, Accessors accessors, SceneReader scene, JsonNode root) throws GltfException {
+    AnimationReader(GltfContext ctx, Accessors accessors, SceneReader scene, List<MeshInstance> instances,
+            JsonNode root) throws GltfException {
         this.ctx = ctx;
+        this.instances = instances;
         this.accessors = accessors;
         this.scene = scene;
         this.nodes = root.get("nodes");
@@ -57,6 +62,7 @@ final class AnimationReader {
             throw animation.error("an animation needs channels and samplers");
         }
         List<AnimationChannel> result = new ArrayList<>();
+        List<MorphWeightChannel> weightChannels = new ArrayList<>();
         java.util.Set<String> targets = new java.util.HashSet<>();
         float end = 0f;
         for (int c = 0; c < channels.size(); c++) {
@@ -75,14 +81,18 @@ final class AnimationReader {
             }
             int width = width(path, target.get("path"), gltfNode);
             KeyframeTrack track = track(samplers.get(sampler), path, width);
+            int node = scene.modelIndex[gltfNode];
             if (path.equals(WEIGHTS)) {
-                // Decoded (a track of one weight per target), but the model cannot animate weights
-                // yet; the clip still lasts as long as the file says.
+                // The clip lasts as long as the file says, whether or not the node is drawn.
                 end = Math.max(end, track.endTime());
-                ctx.warn(channel.path(), "animated morph weights are not supported yet; the channel is skipped");
+                int instance = instanceAt(node);
+                if (instance < 0) {
+                    ctx.warn(channel.path(), "node " + gltfNode + " draws no morphed mesh in the scene; the channel is skipped");
+                } else {
+                    weightChannels.add(new MorphWeightChannel(instance, 0, track, channel.path()));
+                }
                 continue;
             }
-            int node = scene.modelIndex[gltfNode];
             if (node < 0) {
                 ctx.warn(channel.path(), "node " + gltfNode + " is not in the scene; the channel is skipped");
                 continue;
@@ -96,7 +106,17 @@ final class AnimationReader {
             result.add(new AnimationChannel(node, element, 0, track, channel.path()));
         }
         String name = animation.get("name").string(null);
-        return new AnimationClip(null, name != null ? name : "animation_" + index, 0f, end, result);
+        return new AnimationClip(null, name != null ? name : "animation_" + index, 0f, end, result, weightChannels);
+    }
+
+    /** The mesh instance of model node {@code node} (glTF: at most one per node), or -1. */
+    private int instanceAt(int node) {
+        for (int i = 0; node >= 0 && i < instances.size(); i++) {
+            if (instances.get(i).node() == node) {
+                return i;
+            }
+        }
+        return -1;
     }
 
     private int width(String path, JsonNode pathNode, int gltfNode) throws GltfException {

@@ -97,7 +97,7 @@ public final class GltfImporter {
         for (Morph morph : instances.morphs()) {
             modelMeshes.add(morph.result());
         }
-        List<AnimationClip> clips = new AnimationReader(ctx, accessors, scene, root).read(root);
+        List<AnimationClip> clips = new AnimationReader(ctx, accessors, scene, instances.instances(), root).read(root);
         return new Model(ctx.file(), asset, modelMeshes, instances.skins(), instances.morphs(),
                 materials.materials(), materials.images(), scene.result, instances.instances(), clips,
                 ctx.warnings());

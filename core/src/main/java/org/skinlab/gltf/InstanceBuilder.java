@@ -161,12 +161,15 @@ final class InstanceBuilder {
             // Each target is a mesh (the base's arrays copied) and the morph keeps its positions.
             ctx.charge((data.targetCount() + 1) * (meshValues + 3L * base.positionCount()), node.path());
             String id = weights == data.weights ? data.mesh.id() + "/weights" : node.path() + "/weights";
+            // Targets are offsets (RELATIVE): positions, and normals when some target has NORMAL
+            // (zero for the others); without any, targets have no normals and the base's stay.
+            boolean normals = data.mesh.hasNormals() && Arrays.stream(data.targetNormals).anyMatch(n -> n != null);
             List<Mesh> targets = new ArrayList<>();
             for (int t = 0; t < data.targetCount(); t++) {
-                targets.add(data.mesh.withPositions(data.mesh.id() + "/targets/" + t, null, data.targetPositions[t]));
-                if (data.targetNormals[t] != null && weights[t] != 0f && morphs.isEmpty()) {
-                    ctx.warn(data.mesh.id(), "morph target normals are read but not applied yet; normals are the base's");
-                }
+                float[] n = !normals ? null : data.targetNormals[t] != null ? data.targetNormals[t]
+                        : new float[3 * data.mesh.vertexCount()];
+                targets.add(data.mesh.withPositionsAndNormals(data.mesh.id() + "/targets/" + t, null,
+                        data.targetPositions[t], n));
             }
             morph = new Morph(id, data.mesh.name(), data.mesh, Morph.Method.RELATIVE, targets, weights);
             morphs.put(key, morph);

@@ -11,15 +11,22 @@ import java.util.List;
  * @param start clip start time (seconds)
  * @param end   clip end time (seconds), never before start
  */
-public record AnimationClip(String id, String name, float start, float end, List<AnimationChannel> channels) {
+public record AnimationClip(String id, String name, float start, float end, List<AnimationChannel> channels,
+        List<MorphWeightChannel> morphWeights) {
     /** Name of the clip made when a file has animations but no {@code <library_animation_clips>}. */
     public static final String DEFAULT_NAME = "default";
 
     public AnimationClip {
         channels = List.copyOf(channels);
+        morphWeights = List.copyOf(morphWeights);
         if (end < start) {
             throw new IllegalArgumentException("clip ends before it starts");
         }
+    }
+
+    /** A clip of node channels only. */
+    public AnimationClip(String id, String name, float start, float end, List<AnimationChannel> channels) {
+        this(id, name, start, end, channels, List.of());
     }
 
     /** end - start, in seconds. */

@@ -236,11 +236,19 @@ public final class Mesh {
      * normals, colours and texture coordinates are shared as they are. A morph's result is made so.
      */
     public Mesh withPositions(String newId, String newName, float[] newPositions) {
+        return withPositionsAndNormals(newId, newName, newPositions, normals);
+    }
+
+    /**
+     * As {@link #withPositions}, with other normals too (3 floats per vertex, or null for none): a
+     * morph target whose normals are offsets, or a morph's result with morphed normals.
+     */
+    public Mesh withPositionsAndNormals(String newId, String newName, float[] newPositions, float[] newNormals) {
         if (newPositions.length != positions.length) {
             throw new IllegalArgumentException("need " + positions.length / 3 + " positions");
         }
-        return new Mesh(newId, newName, newPositions, vertexPositions, normals, texCoordSets, texCoordSetNumbers, colors,
-                triangles, parts);
+        return new Mesh(newId, newName, newPositions, vertexPositions, newNormals, texCoordSets, texCoordSetNumbers,
+                colors, triangles, parts);
     }
 
     @Override

@@ -46,6 +46,7 @@ public final class Model {
                 throw new IllegalArgumentException("node " + i + " has index " + nodes.get(i).index());
             }
         }
+        checkMorphWeights(instances, morphs, clips);
         this.source = source;
         this.asset = asset;
         this.meshes = List.copyOf(meshes);
@@ -57,6 +58,48 @@ public final class Model {
         this.instances = List.copyOf(instances);
         this.clips = List.copyOf(clips);
         this.warnings = List.copyOf(warnings);
+    }
+
+    private static void checkMorphWeights(List<MeshInstance> instances, List<Morph> morphs,
+            List<AnimationClip> clips) {
+        for (AnimationClip clip : clips) {
+            for (MorphWeightChannel c : clip.morphWeights()) {
+                if (c.instance() >= instances.size()) {
+                    throw new IllegalArgumentException(c.target() + ": no mesh instance " + c.instance());
+                }
+                Morph morph = morphOf(instances.get(c.instance()), morphs);
+                if (morph == null) {
+                    throw new IllegalArgumentException(c.target() + ": instance " + c.instance() + " draws no morph");
+                }
+                if (c.weightOffset() + c.weightCount() > morph.targets().size()) {
+                    throw new IllegalArgumentException(c.target() + ": weights " + c.weightOffset() + ".."
+                            + (c.weightOffset() + c.weightCount() - 1) + " of a morph with " + morph.targets().size()
+                            + " targets");
+                }
+            }
+        }
+    }
+
+    private static Morph morphOf(MeshInstance instance, List<Morph> morphs) {
+        for (Morph m : morphs) {
+            if (m.result() == instance.mesh()) {
+                return m;
+            }
+        }
+        return null;
+    }
+
+    /**
+     * The morph whose result the instance draws (and its skin deforms), whose weights a
+     * {@link MorphWeightChannel} on the instance animates; empty for an unmorphed mesh.
+     */
+    public Optional<Morph> morphOf(MeshInstance instance) {
+        return Optional.ofNullable(morphOf(instance, morphs));
+    }
+
+    /** Whether some clip animates a morph's weights. */
+    public boolean hasMorphWeightAnimation() {
+        return clips.stream().anyMatch(c -> !c.morphWeights().isEmpty());
     }
 
     /** The file name (or stream name) the model was read from. */

@@ -12,9 +12,15 @@ import java.util.List;
  * <li>{@link Method#NORMALIZED}: P = (1 - &Sigma; w<sub>i</sub>) B + &Sigma; w<sub>i</sub> T<sub>i</sub>;</li>
  * <li>{@link Method#RELATIVE}: P = B + &Sigma; w<sub>i</sub> T<sub>i</sub> (targets are offsets).</li>
  * </ul>
- * Only positions are morphed; normals, colours and texture coordinates are the base's. Target
- * position {@code p} pairs with base position {@code p}; a target with more positions than the
- * base contributes its first ones (the importer says so).
+ * Target position {@code p} pairs with base position {@code p}; a target with more positions than
+ * the base contributes its first ones (the importer says so).
+ *
+ * <p><b>Normals</b> are morphed by the same formula, per vertex, then renormalised, when the base
+ * and every target have normals for the same vertices ({@link #morphsNormals()}: for RELATIVE,
+ * glTF's, the targets' normals are offsets, zero where a target moves none; for NORMALIZED,
+ * COLLADA's, each target geometry's own normals, used when its vertices pair with the base's, as
+ * the same exporter writes them); otherwise the base's normals are kept. Colours and texture
+ * coordinates are always the base's.
  */
 public final class Morph {
     /** How targets combine with the base. */
@@ -31,6 +37,9 @@ public final class Morph {
     private final Mesh result;
     private final float[] basePositions;
     private final float[][] targetPositions;
+    /** Per target its normals, or null when normals are not morphed. */
+    private final float[][] targetNormals;
+    private final float[] baseNormals;
 
     /**
      * @param base    the mesh being morphed (a geometry's, or another morph's result)
@@ -57,9 +66,35 @@ public final class Morph {
         for (int t = 0; t < targetPositions.length; t++) {
             targetPositions[t] = targets.get(t).positions();
         }
+        this.targetNormals = normalsPairUp(base, this.targets) ? new float[targetPositions.length][] : null;
+        this.baseNormals = targetNormals == null ? null : base.normals();
+        for (int t = 0; targetNormals != null && t < targetNormals.length; t++) {
+            targetNormals[t] = this.targets.get(t).normals();
+        }
         float[] positions = new float[3 * base.positionCount()];
         apply(this.weights, positions);
-        this.result = base.withPositions(controllerId, name, positions);
+        float[] normals = targetNormals == null ? base.normals() : new float[baseNormals.length];
+        if (targetNormals != null) {
+            applyNormals(this.weights, normals);
+        }
+        this.result = base.withPositionsAndNormals(controllerId, name, positions, normals);
+    }
+
+    private static boolean normalsPairUp(Mesh base, List<Mesh> targets) {
+        if (!base.hasNormals() || targets.isEmpty()) {
+            return false;
+        }
+        for (Mesh t : targets) {
+            if (!t.hasNormals() || t.vertexCount() != base.vertexCount()) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** Whether normals are morphed too (see the class comment); else they are the base's. */
+    public boolean morphsNormals() {
+        return targetNormals != null;
     }
 
     /** The controller's id: also the id of {@link #result()}. */
@@ -116,6 +151,45 @@ public final class Morph {
                 v += w[t] * (double) targetPositions[t][i];
             }
             dest[i] = (float) v;
+        }
+    }
+
+    /**
+     * Writes the base's normals morphed with the given weights (one per target) and renormalised
+     * into {@code dest} (3 floats per base vertex); a normal that morphs to zero stays zero.
+     * Allocates nothing.
+     *
+     * @throws IllegalStateException when normals are not morphed ({@link #morphsNormals()})
+     */
+    public void applyNormals(float[] w, float[] dest) {
+        if (targetNormals == null) {
+            throw new IllegalStateException(this + " does not morph normals");
+        }
+        if (w.length != targets.size() || dest.length < baseNormals.length) {
+            throw new IllegalArgumentException("need " + targets.size() + " weights and room for "
+                    + baseNormals.length / 3 + " normals");
+        }
+        double baseWeight = 1.0;
+        if (method == Method.NORMALIZED) {
+            for (float x : w) {
+                baseWeight -= x;
+            }
+        }
+        for (int i = 0, n = baseNormals.length; i < n; i += 3) {
+            double x = baseWeight * baseNormals[i];
+            double y = baseWeight * baseNormals[i + 1];
+            double z = baseWeight * baseNormals[i + 2];
+            for (int t = 0; t < w.length; t++) {
+                float[] tn = targetNormals[t];
+                x += w[t] * (double) tn[i];
+                y += w[t] * (double) tn[i + 1];
+                z += w[t] * (double) tn[i + 2];
+            }
+            double len = Math.sqrt(x * x + y * y + z * z);
+            double inv = len > 0 ? 1 / len : 0;
+            dest[i] = (float) (x * inv);
+            dest[i + 1] = (float) (y * inv);
+            dest[i + 2] = (float) (z * inv);
         }
     }
 

@@ -78,6 +78,10 @@ public final class Frame implements AutoCloseable {
     private final boolean[] scaled;
     private final boolean[] matricesMirror;
     private final boolean[] scalesMirror;
+    /** Per geometry, the morphed rest positions of this step, or null where the rest shape does not morph. */
+    private final float[][] restPositions;
+    /** Per geometry, the rest normals that go with them, or null likewise. */
+    private final float[][] restNormals;
     /** Readers holding this buffer; the simulation writes only into buffers with none. */
     final AtomicInteger leases = new AtomicInteger();
 
@@ -92,12 +96,16 @@ public final class Frame implements AutoCloseable {
     /**
      * @param pointCounts points per geometry
      * @param jointCounts palette joints per geometry
+     * @param morphing    per geometry, whether its rest shape morphs (animated morph weights)
      */
-    Frame(int[] pointCounts, int[] jointCounts) {
+    Frame(int[] pointCounts, int[] jointCounts, boolean[] morphing) {
         int n = pointCounts.length;
-        if (jointCounts.length != n) {
-            throw new IllegalArgumentException(n + " point counts but " + jointCounts.length + " joint counts");
+        if (jointCounts.length != n || morphing.length != n) {
+            throw new IllegalArgumentException(n + " point counts but " + jointCounts.length + " joint counts and "
+                    + morphing.length + " morph flags");
         }
+        restPositions = new float[n][];
+        restNormals = new float[n][];
         positions = new float[n][];
         normals = new float[n][];
         matrices = new float[n][];
@@ -112,6 +120,8 @@ public final class Frame implements AutoCloseable {
             matrices[g] = new float[12 * jointCounts[g]];
             dualQuaternions[g] = new float[8 * jointCounts[g]];
             scales[g] = new float[12 * jointCounts[g]];
+            restPositions[g] = morphing[g] ? new float[3 * pointCounts[g]] : null;
+            restNormals[g] = morphing[g] ? new float[3 * pointCounts[g]] : null;
         }
     }
 
@@ -135,6 +145,32 @@ public final class Frame implements AutoCloseable {
         scaled[g] = palette.hasScale();
         matricesMirror[g] = palette.mirrorsMatrices();
         scalesMirror[g] = palette.mirrorsScales();
+    }
+
+    /** Copies geometry {@code g}'s morphed rest positions and normals of this step (simulation side only). */
+    void copyRestShape(int g, float[] positions, float[] normals) {
+        System.arraycopy(positions, 0, restPositions[g], 0, restPositions[g].length);
+        System.arraycopy(normals, 0, restNormals[g], 0, restNormals[g].length);
+    }
+
+    /**
+     * The rest positions geometry {@code g}'s palette applies to in this step, 3 floats per point
+     * in bind space, when its morph weights animate: the base morphed with this step's weights,
+     * which a GPU skinner uploads in place of the bind positions. Null for a geometry whose rest
+     * shape does not morph (its {@link org.skinlab.skinning.SkinnedGeometry#positionArray()}
+     * never changes). Read-only.
+     */
+    public float[] restPositions(int g) {
+        return restPositions[g];
+    }
+
+    /**
+     * The rest normals that go with {@link #restPositions(int)} (morphed too when the morph morphs
+     * normals, else the geometry's), 3 floats per point; null where the rest shape does not morph.
+     * Read-only.
+     */
+    public float[] restNormals(int g) {
+        return restNormals[g];
     }
 
     void describe(long sequence, double playbackTime, float clipTime, SkinningMethod method,

@@ -29,6 +29,7 @@ final class FramePool {
 
     private final int[] pointCounts;
     private final int[] jointCounts;
+    private final boolean[] morphing;
     private final int maxBuffers;
     private final boolean inPlace;
     private final AtomicReference<Frame> latest = new AtomicReference<>();
@@ -38,17 +39,19 @@ final class FramePool {
     /**
      * @param pointCounts points per geometry
      * @param jointCounts palette joints per geometry
+     * @param morphing    per geometry, whether its rest shape morphs ({@link Frame#restPositions})
      * @param inPlace     test-only: claim always returns the first buffer, leased or latest or not, so
      *                    the writer fills the frame readers hold (what this class exists to prevent)
      */
-    FramePool(int[] pointCounts, int[] jointCounts, int maxBuffers, boolean inPlace) {
+    FramePool(int[] pointCounts, int[] jointCounts, boolean[] morphing, int maxBuffers, boolean inPlace) {
         this.pointCounts = pointCounts.clone();
         this.jointCounts = jointCounts.clone();
+        this.morphing = morphing.clone();
         this.maxBuffers = maxBuffers;
         this.inPlace = inPlace;
         buffers = new Frame[Math.min(INITIAL_BUFFERS, maxBuffers)];
         for (int i = 0; i < buffers.length; i++) {
-            buffers[i] = new Frame(this.pointCounts, this.jointCounts);
+            buffers[i] = new Frame(this.pointCounts, this.jointCounts, this.morphing);
         }
     }
 
@@ -97,7 +100,7 @@ final class FramePool {
         }
         if (buffers.length < maxBuffers) {
             buffers = Arrays.copyOf(buffers, buffers.length + 1);
-            Frame f = new Frame(pointCounts, jointCounts);
+            Frame f = new Frame(pointCounts, jointCounts, morphing);
             buffers[buffers.length - 1] = f;
             return f;
         }

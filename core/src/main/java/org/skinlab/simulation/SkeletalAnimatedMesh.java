@@ -163,11 +163,13 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
         List<SkinnedGeometry> geometries = skinned.geometries();
         pointCounts = new int[geometries.size()];
         int[] jointCounts = new int[pointCounts.length];
+        boolean[] morphing = new boolean[pointCounts.length];
         for (int g = 0; g < pointCounts.length; g++) {
             pointCounts[g] = geometries.get(g).pointCount();
             jointCounts[g] = geometries.get(g).jointCount();
+            morphing[g] = skinned.morphs(g);
         }
-        pool = new FramePool(pointCounts, jointCounts, MAX_BUFFERS, publishInPlace);
+        pool = new FramePool(pointCounts, jointCounts, morphing, MAX_BUFFERS, publishInPlace);
         // Frame 0: the clip's start, so acquire() always has something to give, whatever the
         // switches say (no listener can be set yet).
         stepLock.lock();
@@ -446,6 +448,10 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
         for (int g = 0; g < pointCounts.length; g++) {
             // Dual quaternions whatever the method: a split view may draw LBS and DQS from one frame.
             f.copyPalette(g, skinned.preparePalette(g));
+            if (f.restPositions(g) != null) {
+                SkinnedGeometry geometry = skinned.geometries().get(g);
+                f.copyRestShape(g, geometry.positionArray(), geometry.normalArray());
+            }
             if (s.cpuSkinning()) {
                 skinned.skin(g, s.method(), f.positionsForWriting(g), f.normalsForWriting(g));
             }

@@ -94,6 +94,12 @@ final class SharedPositionSkinner extends AbstractSkinner {
         return unit;
     }
 
+    /** The positions are skinned by the position kernel; the expansion's normals do not morph here. */
+    @Override
+    public void restShapeChanged() {
+        positionKernel.restShapeChanged();
+    }
+
     @Override
     public void skin(JointPalette palette, float[] outPositions, float[] outNormals, int from, int to) {
         float[] f = frames.get();

@@ -72,6 +72,8 @@ public final class SkinnedGeometry {
      * field, so visible wherever it is).
      */
     private SkinnedGeometry positionsOf;
+    /** For a geometry whose rest shape morphs per frame, the unmorphed one that owns its centres. */
+    private volatile SkinnedGeometry centresOfRestShape;
 
     private SkinnedGeometry(MeshInstance instance, int vertexCount, float[] positions, float[] normals,
             int influences, int[] joints, float[] weights, int[] jointNodes, float[] bindMatrices,
@@ -270,11 +272,8 @@ public final class SkinnedGeometry {
         // DQS can only take through its scale phase. The common mirror F = diag(-1 1 1) moves
         // into the points instead (p -> F p, n -> F n, INV_BIND -> INV_BIND F; F F = I, so LBS is
         // unchanged): the skinning matrices become rigid again and DQS blends rigid motions.
-        boolean mirrorBindFrames = skinJoints > 0;
+        boolean mirrorBindFrames = mirrorsBindFrames(skin);
         Matrix4f m = new Matrix4f();
-        for (int j = 0; j < skinJoints && mirrorBindFrames; j++) {
-            mirrorBindFrames = skin.inverseBindMatrix(j, m).determinant3x3() < 0f;
-        }
         if (mirrorBindFrames) {
             for (int i = 0; i < positions.length; i += 3) {
                 positions[i] = -positions[i];
@@ -300,6 +299,16 @@ public final class SkinnedGeometry {
         }
         return new SkinnedGeometry(instance, vertices, positions, normals, width, joints, weights, jointNodes, bind,
                 pointOfPosition, null, null, mirrored);
+    }
+
+    /** Whether every bind frame of the skin mirrors (then the common mirror moves into the points). */
+    static boolean mirrorsBindFrames(Skin skin) {
+        Matrix4f m = new Matrix4f();
+        boolean all = skin.jointCount() > 0;
+        for (int j = 0; j < skin.jointCount() && all; j++) {
+            all = skin.inverseBindMatrix(j, m).determinant3x3() < 0f;
+        }
+        return all;
     }
 
     /**
@@ -407,7 +416,8 @@ public final class SkinnedGeometry {
     }
 
     // The arrays below are handed out without copying: they are read by every kernel every
-    // frame. Callers must not modify them.
+    // frame. Callers must not modify them (only MorphedRestShape rewrites the positions of the
+    // geometry it owns, between frames).
 
     /** Positions in bind space (after the bind shape matrix), 3 per point. Read-only. */
     public float[] positionArray() {
@@ -471,7 +481,9 @@ public final class SkinnedGeometry {
             synchronized (this) {
                 c = centersOfRotation;
                 if (c == null) {
-                    c = positionsOf != null ? positionsOf.centresOfSharedPositions()
+                    SkinnedGeometry rest = centresOfRestShape;
+                    c = rest != null ? rest.centersOfRotation()
+                            : positionsOf != null ? positionsOf.centresOfSharedPositions()
                             : CentersOfRotation.computeOrLoad(this, CentersOfRotation.Parameters.DEFAULT,
                                     CentersOfRotation.Progress.NONE);
                     centersOfRotation = c;
@@ -479,6 +491,15 @@ public final class SkinnedGeometry {
             }
         }
         return c;
+    }
+
+    /**
+     * Makes this geometry's centres of rotation those of {@code restShape}, the same mesh with the
+     * file's morph weights, computed there when first asked for: a geometry whose positions a
+     * morph rewrites per frame ({@link MorphedRestShape}) keeps the centres of its rest shape.
+     */
+    void takeCentresFrom(SkinnedGeometry restShape) {
+        centresOfRestShape = restShape;
     }
 
     /**

@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 
 import org.skinlab.animation.AnimationSampler;
+import org.skinlab.animation.MorphWeightSampler;
 import org.skinlab.animation.Pose;
 import org.skinlab.animation.RotationInterpolation;
 import org.skinlab.animation.Skeleton;
@@ -17,6 +18,11 @@ import org.skinlab.model.Model;
  * path is {@link #pose} (sample, evaluate, skinning matrices) then {@link #skin} per geometry;
  * neither allocates.
  *
+ * <p>A placed mesh whose morph weights the clip animates gets its own geometry
+ * ({@link MorphedRestShape}) whose rest positions (and normals) {@link #pose} rewrites before
+ * skinning, then tells its skinners ({@link Skinner#restShapeChanged}: the SIMD kernels re-pack
+ * their copies). Other meshes are untouched.
+ *
  * <p>Not thread-safe: one instance per thread that drives it (the simulation thread, a command).
  */
 public final class SkinnedModel {
@@ -29,6 +35,11 @@ public final class SkinnedModel {
     private final boolean[] dualQuaternionsReady;
     private final Skinner[][] skinners;
     private final NormalTransform normals;
+    private final MorphWeightSampler morphSampler;
+    /** Per geometry, its morph's weights in the current pose where they animate, else null. */
+    private final float[][] morphWeights;
+    /** Per geometry, its per-frame rest shape where its weights animate, else null. */
+    private final MorphedRestShape[] morphed;
 
     /**
      * @param clip the clip to play, or null to keep the model at rest
@@ -40,9 +51,14 @@ public final class SkinnedModel {
         this.skeleton = Skeleton.of(model);
         this.sampler = clip == null ? AnimationSampler.rest(skeleton) : new AnimationSampler(skeleton, clip);
         this.pose = skeleton.newPose();
+        this.morphSampler = new MorphWeightSampler(model, clip);
+        this.morphWeights = morphSampler.newWeights();
+        this.morphed = new MorphedRestShape[model.instances().size()];
         List<SkinnedGeometry> list = new ArrayList<>();
         for (MeshInstance instance : model.instances()) {
-            list.add(SkinnedGeometry.of(instance));
+            int g = list.size();
+            list.add(morphSampler.animates(g) ? morph(g, instance, SkinnedGeometry.of(instance))
+                    : SkinnedGeometry.of(instance));
         }
         this.geometries = List.copyOf(list);
         int n = geometries.size();
@@ -54,7 +70,7 @@ public final class SkinnedModel {
             palettes[g] = geometry.newPalette();
             // LBS and DQS now; CoR's skinner on first use (its centres take a precomputation).
             for (SkinningMethod m : new SkinningMethod[] {SkinningMethod.LBS, SkinningMethod.DQS}) {
-                skinners[g][m.ordinal()] = Skinners.create(m, geometry, normals);
+                skinners[g][m.ordinal()] = newSkinner(g, m);
             }
         }
         pose(sampler.start(), RotationInterpolation.SLERP);
@@ -77,16 +93,42 @@ public final class SkinnedModel {
         this.skeleton = template.skeleton;
         this.sampler = template.sampler;
         this.pose = skeleton.newPose();
-        this.geometries = template.geometries;
-        int n = geometries.size();
+        this.morphSampler = template.morphSampler;
+        this.morphWeights = morphSampler.newWeights();
+        this.morphed = new MorphedRestShape[template.morphed.length];
+        List<SkinnedGeometry> list = new ArrayList<>(template.geometries);
+        int n = list.size();
         palettes = new JointPalette[n];
         dualQuaternionsReady = new boolean[n];
         skinners = new Skinner[n][];
         for (int g = 0; g < n; g++) {
-            palettes[g] = geometries.get(g).newPalette();
-            skinners[g] = template.skinners[g].clone();
+            if (template.morphed[g] != null) {
+                // A morphing mesh's rest shape follows this character's time: its own geometry.
+                list.set(g, morph(g, model.instances().get(g), template.morphed[g].rest()));
+                skinners[g] = new Skinner[SkinningMethod.values().length];
+            } else {
+                skinners[g] = template.skinners[g].clone();
+            }
+            palettes[g] = list.get(g).newPalette();
         }
+        // The same list when nothing morphs: a crowd shares its geometries.
+        this.geometries = morphSampler.animatesAny() ? List.copyOf(list) : template.geometries;
         pose(sampler.start(), RotationInterpolation.SLERP);
+    }
+
+    private SkinnedGeometry morph(int g, MeshInstance instance, SkinnedGeometry rest) {
+        morphed[g] = new MorphedRestShape(instance, morphSampler.morph(g), rest);
+        return morphed[g].geometry();
+    }
+
+    private Skinner newSkinner(int g, SkinningMethod method) {
+        SkinnedGeometry geometry = geometries.get(g);
+        if (morphed[g] == null) {
+            return Skinners.create(method, geometry, normals);
+        }
+        // Skinning each shared position once would read the rest normals through a copy made once.
+        return Skinners.create(method, geometry, normals,
+                morphed[g].morphsNormals() ? PositionSharing.NEVER : PositionSharing.AUTO);
     }
 
     /** The model with its first clip (or at rest when it has none) and exact normals. */
@@ -117,6 +159,15 @@ public final class SkinnedModel {
         return geometries;
     }
 
+    /**
+     * Whether geometry {@code g}'s rest positions follow animated morph weights: its
+     * {@link SkinnedGeometry#positionArray()} then changes with every {@link #pose} (a renderer
+     * that skins on the GPU uploads them per frame).
+     */
+    public boolean morphs(int g) {
+        return morphed[g] != null;
+    }
+
     /** The palette of geometry {@code g}, holding the skinning matrices of the current pose. */
     public JointPalette palette(int g) {
         return palettes[g];
@@ -138,7 +189,7 @@ public final class SkinnedModel {
     public Skinner skinner(int g, SkinningMethod method) {
         Skinner s = skinners[g][method.ordinal()];
         if (s == null) {
-            s = Skinners.create(method, geometries.get(g), normals);
+            s = newSkinner(g, method);
             skinners[g][method.ordinal()] = s;
         }
         return s;
@@ -146,11 +197,25 @@ public final class SkinnedModel {
 
     /**
      * Poses the model at clip time {@code clipTime} (seconds; clamped to the keys of each
-     * channel): samples the clip, evaluates the skeleton and fills every palette.
+     * channel): samples the clip, evaluates the skeleton and fills every palette, and morphs the
+     * rest shape of every mesh whose weights the clip animates.
      */
     public void pose(float clipTime, RotationInterpolation rotations) {
         sampler.sample(clipTime, rotations, pose);
         skeleton.evaluate(pose);
+        if (morphSampler.animatesAny()) {
+            morphSampler.sample(clipTime, morphWeights);
+            for (int g = 0; g < morphed.length; g++) {
+                if (morphed[g] != null) {
+                    morphed[g].apply(morphWeights[g]);
+                    for (Skinner s : skinners[g]) {
+                        if (s != null) {
+                            s.restShapeChanged();
+                        }
+                    }
+                }
+            }
+        }
         for (int g = 0; g < palettes.length; g++) {
             SkinnedGeometry geometry = geometries.get(g);
             skeleton.skinningMatrices(pose, geometry.jointNodeArray(), geometry.bindMatrixArray(),

@@ -44,6 +44,15 @@ public interface Skinner {
         return 1;
     }
 
+    /**
+     * Tells the skinner that its geometry's rest positions and normals have been rewritten (a
+     * morph with animated weights, {@link MorphedRestShape}, between frames): a kernel that copied
+     * them into a layout of its own re-reads them here, allocation-free; one that reads the
+     * geometry's arrays every call has nothing to do. Not concurrently with {@link #skin}.
+     */
+    default void restShapeChanged() {
+    }
+
     /** A short name of the implementation for reports, e.g. "scalar" or "vector-256". */
     String implementation();
 

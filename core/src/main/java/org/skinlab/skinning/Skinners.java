@@ -100,7 +100,13 @@ public final class Skinners {
      * positions and the scalar expansion).
      */
     public static Skinner scalar(SkinningMethod method, SkinnedGeometry geometry, NormalTransform normals) {
-        SkinnedGeometry shared = shared(method, geometry, PositionSharing.AUTO);
+        return scalar(method, geometry, normals, PositionSharing.AUTO);
+    }
+
+    /** As {@link #scalar(SkinningMethod, SkinnedGeometry, NormalTransform)} with a choice of sharing. */
+    public static Skinner scalar(SkinningMethod method, SkinnedGeometry geometry, NormalTransform normals,
+            PositionSharing sharing) {
+        SkinnedGeometry shared = shared(method, geometry, sharing);
         if (shared != null) {
             return new SharedPositionSkinner(geometry, scalar(method, shared, normals), FrameExpansion.scalar(
                     geometry.frameOfPointArray(), SharedPositionSkinner.expansionNormals(method, normals, geometry)));

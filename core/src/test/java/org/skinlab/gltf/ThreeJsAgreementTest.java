@@ -10,7 +10,6 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Optional;
 import java.util.stream.Stream;
 import java.util.zip.GZIPInputStream;
 
@@ -21,7 +20,6 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
 import org.skinlab.animation.RotationInterpolation;
 import org.skinlab.model.ImportException;
-import org.skinlab.model.ImportWarning;
 import org.skinlab.model.Model;
 import org.skinlab.skinning.NormalTransform;
 import org.skinlab.skinning.SkinnedGeometry;
@@ -141,11 +139,8 @@ class ThreeJsAgreementTest {
         }
     }
 
-    /**
-     * What one file's comparison found: the worst distance and where, and the clips left out
-     * (animated morph weights the importer skipped with a warning).
-     */
-    record Agreement(int vertices, int times, double size, double worst, String where, List<String> notCompared) {
+    /** What one file's comparison found: the worst distance and where. */
+    record Agreement(int vertices, int times, double size, double worst, String where) {
     }
 
     static Agreement agreement(Path file, JsonNode ref) throws IOException, ImportException {
@@ -158,16 +153,10 @@ class ThreeJsAgreementTest {
         c.compare(new SkinnedModel(model, null, NormalTransform.INVERSE_TRANSPOSE), rest, -1, "rest");
         int vertices = rest.stream().mapToInt(ThreeJsAgreementTest::vertexCount).sum();
         int times = 1;
-        List<String> notCompared = new ArrayList<>();
         for (JsonNode clip : ref.get("clips")) {
             int index = clip.get("index").asInt();
             assertTrue(index < model.clips().size(), () -> file + ": three.js has clip " + index + " ("
                     + clip.get("name").asText() + "), the model has " + model.clips().size() + " clips");
-            Optional<ImportWarning> skipped = skippedMorphWeights(model, clip);
-            if (skipped.isPresent()) {
-                notCompared.add("clip " + index + " (" + clip.get("name").asText() + "): " + skipped.get());
-                continue;
-            }
             SkinnedModel skinned = new SkinnedModel(model, model.clips().get(index), NormalTransform.INVERSE_TRANSPOSE);
             List<List<JsonNode>> meshes = placedMeshes(clip.get("meshes"));
             JsonNode clipTimes = clip.get("times");
@@ -178,20 +167,7 @@ class ThreeJsAgreementTest {
             }
             times += clipTimes.size();
         }
-        return new Agreement(vertices, times, size, c.worst, c.where, notCompared);
-    }
-
-    /**
-     * The importer's warning on a clip's channels when three.js animates morph weights in it and
-     * the model does not hold them (issue 20's animated morph weights): such a clip cannot agree
-     * and is reported as not compared rather than passed.
-     */
-    private static Optional<ImportWarning> skippedMorphWeights(Model model, JsonNode clip) {
-        if (!clip.path("morphWeights").asBoolean()) {
-            return Optional.empty();
-        }
-        String prefix = "/animations/" + clip.get("index").asInt() + "/";
-        return model.warnings().stream().filter(w -> w.element() != null && w.element().startsWith(prefix)).findFirst();
+        return new Agreement(vertices, times, size, c.worst, c.where);
     }
 
     /** Per placed mesh (consecutive entries of one node), its primitives with distinct vertices. */
@@ -272,12 +248,10 @@ class ThreeJsAgreementTest {
     }
 
     private static void report(String name, Agreement a) {
-        System.out.printf("three.js agreement | %s | %d | %d | %.3g | %.2e | %s | not compared: %s%n", name,
-                a.vertices(), a.times(), a.size(), a.worst() / a.size(), a.where(), a.notCompared());
+        System.out.printf("three.js agreement | %s | %d | %d | %.3g | %.2e | %s%n", name,
+                a.vertices(), a.times(), a.size(), a.worst() / a.size(), a.where());
         assertTrue(a.worst() <= TOLERANCE * a.size(), () -> String.format(
                 "%s: %.3g from three.js (%.2e of the size %.4g; allowed %.0e) at %s", name, a.worst(),
                 a.worst() / a.size(), a.size(), TOLERANCE, a.where()));
-        assumeTrue(a.notCompared().isEmpty(), () -> name + ": everything else agrees; not compared: "
-                + String.join("; ", a.notCompared()));
     }
 }

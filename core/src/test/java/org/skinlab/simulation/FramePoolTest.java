@@ -23,7 +23,7 @@ import org.junit.jupiter.api.Timeout;
 @Timeout(5)
 class FramePoolTest {
     private static FramePool pool() {
-        FramePool pool = new FramePool(new int[] {4}, new int[] {2}, SkeletalAnimatedMesh.MAX_BUFFERS, false);
+        FramePool pool = new FramePool(new int[] {4}, new int[] {2}, new boolean[1], SkeletalAnimatedMesh.MAX_BUFFERS, false);
         pool.publish(pool.claim());
         return pool;
     }

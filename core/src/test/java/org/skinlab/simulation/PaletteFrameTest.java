@@ -118,7 +118,7 @@ class PaletteFrameTest {
     void theFrameSaysWhetherItsPaletteMirrors() {
         // A shader's normals need the sign rule of the CPU kernels: the frame carries the palette's flags.
         JointPalette palette = JointPalette.withoutBindFrames(2);
-        Frame f = new Frame(new int[] {1}, new int[] {2});
+        Frame f = new Frame(new int[] {1}, new int[] {2}, new boolean[1]);
         palette.prepareDualQuaternions();
         f.copyPalette(0, palette);
         assertFalse(f.mirrorsMatrices(0));

@@ -62,13 +62,31 @@ final class VectorCorSkinner extends AbstractSkinner {
         this.scalar = new ScalarCorSkinner(geometry, normals);
         this.blend = new SignedDqBlend(geometry);
         this.jointCount = geometry.jointCount();
-        float[] positions = geometry.positionArray();
-        float[] restNormals = geometry.normalArray();
         float[] centres = geometry.centersOfRotation();
         blockCount = geometry.pointCount() / BLOCK;
         points = new float[DqsLanes.BLOCK_FLOATS * blockCount];
         centreLanes = new float[3 * BLOCK * blockCount];
-        boolean exact = normals == NormalTransform.INVERSE_TRANSPOSE;
+        for (int i = 0; i < BLOCK * blockCount; i++) {
+            for (int c = 0; c < 3; c++) {
+                centreLanes[3 * BLOCK * (i / BLOCK) + BLOCK * c + i % BLOCK] = centres[3 * i + c];
+            }
+        }
+        restShapeChanged();
+        int pairs = blend.pairPivot.length;
+        table = ThreadLocal.withInitial(() -> new float[8 * pairs]);
+        int joints = jointCount;
+        lower = ThreadLocal.withInitial(() -> new float[8 * joints]);
+    }
+
+    /**
+     * Copies the rest positions and normals (unit under the exact rule) into the blocks; the
+     * centres stay (a morphing geometry keeps its rest shape's: docs/skinning.md, "Morphs").
+     */
+    @Override
+    public void restShapeChanged() {
+        float[] positions = geometry().positionArray();
+        float[] restNormals = geometry().normalArray();
+        boolean exact = normalTransform() == NormalTransform.INVERSE_TRANSPOSE;
         for (int i = 0; i < BLOCK * blockCount; i++) {
             int o = DqsLanes.BLOCK_FLOATS * (i / BLOCK) + i % BLOCK;
             // Exact normals are unit: normalised here once, R keeps them so (the scalar kernel,
@@ -79,13 +97,8 @@ final class VectorCorSkinner extends AbstractSkinner {
             for (int c = 0; c < 3; c++) {
                 points[o + BLOCK * c] = positions[3 * i + c];
                 points[o + BLOCK * (3 + c)] = restNormals[3 * i + c] * scale;
-                centreLanes[3 * BLOCK * (i / BLOCK) + BLOCK * c + i % BLOCK] = centres[3 * i + c];
             }
         }
-        int pairs = blend.pairPivot.length;
-        table = ThreadLocal.withInitial(() -> new float[8 * pairs]);
-        int joints = jointCount;
-        lower = ThreadLocal.withInitial(() -> new float[8 * joints]);
     }
 
     @Override

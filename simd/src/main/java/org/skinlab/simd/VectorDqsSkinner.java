@@ -74,11 +74,19 @@ final class VectorDqsSkinner extends AbstractSkinner {
         this.restNormals = geometry.normalArray();
         int points = geometry.pointCount();
         blockCount = points / BLOCK;
+        this.points = new float[BLOCK_FLOATS * blockCount];
+        restShapeChanged();
+        blend = new SignedDqBlend(geometry);
+        int size = 16 * jointCount;
+        scaleColumns = ThreadLocal.withInitial(() -> new float[size]);
+    }
+
+    /** Copies the rest positions and normals (unit under the exact rule) into the blocks. */
+    @Override
+    public void restShapeChanged() {
         float[] pos = restPositions;
         float[] nrm = restNormals;
-        int n = BLOCK * blockCount;
-        this.points = new float[BLOCK_FLOATS * blockCount];
-        for (int i = 0; i < n; i++) {
+        for (int i = 0, n = BLOCK * blockCount; i < n; i++) {
             int o = BLOCK_FLOATS * (i / BLOCK) + i % BLOCK;
             // Exact normals are unit: normalised here once, a rotation keeps them so (the scalar
             // kernel, for points outside whole blocks, normalises after rotating).
@@ -86,13 +94,10 @@ final class VectorDqsSkinner extends AbstractSkinner {
             float len2 = nx * nx + ny * ny + nz * nz;
             float scale = normals == NormalTransform.INVERSE_TRANSPOSE && len2 > 0f ? 1f / (float) Math.sqrt(len2) : 1f;
             for (int c = 0; c < 3; c++) {
-                this.points[o + BLOCK * c] = pos[3 * i + c];
-                this.points[o + BLOCK * (3 + c)] = nrm[3 * i + c] * scale;
+                points[o + BLOCK * c] = pos[3 * i + c];
+                points[o + BLOCK * (3 + c)] = nrm[3 * i + c] * scale;
             }
         }
-        blend = new SignedDqBlend(geometry);
-        int size = 16 * jointCount;
-        scaleColumns = ThreadLocal.withInitial(() -> new float[size]);
     }
 
     @Override

@@ -73,8 +73,6 @@ final class VectorLbsSkinner extends AbstractSkinner {
         this.restPositions = geometry.positionArray();
         this.restNormals = geometry.normalArray();
         int n = geometry.pointCount();
-        float[] pos = restPositions;
-        float[] nrm = restNormals;
         int[] joints = geometry.jointArray();
         float[] weights = geometry.weightArray();
         this.fused = width <= INFLUENCES;
@@ -83,14 +81,9 @@ final class VectorLbsSkinner extends AbstractSkinner {
             points = new float[STRIDE * n];
             this.joints = new char[INFLUENCES * n];
             passWeights = points;
+            restShapeChanged();
             for (int i = 0; i < n; i++) {
                 int o = STRIDE * i;
-                points[o] = pos[3 * i];
-                points[o + 1] = pos[3 * i + 1];
-                points[o + 2] = pos[3 * i + 2];
-                points[o + 3] = nrm[3 * i];
-                points[o + 4] = nrm[3 * i + 1];
-                points[o + 5] = nrm[3 * i + 2];
                 for (int k = 0; k < INFLUENCES; k++) {
                     // Padding: weight 0 on the first joint adds exactly nothing.
                     points[o + 6 + k] = k < width ? weights[width * i + k] : 0f;
@@ -110,6 +103,25 @@ final class VectorLbsSkinner extends AbstractSkinner {
         }
         int size = 16 * jointCount;
         columns = ThreadLocal.withInitial(() -> new float[size]);
+    }
+
+    /** Copies the rest positions and normals into the fused layout (the unfused one reads them in place). */
+    @Override
+    public void restShapeChanged() {
+        if (!fused) {
+            return;
+        }
+        float[] pos = restPositions;
+        float[] nrm = restNormals;
+        for (int i = 0, n = pos.length / 3; i < n; i++) {
+            int o = STRIDE * i;
+            points[o] = pos[3 * i];
+            points[o + 1] = pos[3 * i + 1];
+            points[o + 2] = pos[3 * i + 2];
+            points[o + 3] = nrm[3 * i];
+            points[o + 4] = nrm[3 * i + 1];
+            points[o + 5] = nrm[3 * i + 2];
+        }
     }
 
     /** Blends points [from, to) into the scratch (16 floats per point from 0). */

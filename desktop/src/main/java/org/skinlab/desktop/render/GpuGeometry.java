@@ -41,6 +41,8 @@ final class GpuGeometry implements AutoCloseable {
     private final List<MeshPart> parts;
     private final MeshInstance instance;
     private final boolean hasUv;
+    /** Staging for a morphing rest shape's positions (3 per render vertex), allocated on first use. */
+    private FloatBuffer restStaging;
 
     GpuGeometry(SkinnedGeometry geometry) {
         this.geometry = geometry;
@@ -170,11 +172,21 @@ final class GpuGeometry implements AutoCloseable {
     }
 
     /**
-     * Uploads what the frame holds for this geometry: always the palette, and the CPU-skinned
-     * positions and normals when the frame has them.
+     * Uploads what the frame holds for this geometry: always the palette, the morphed rest
+     * positions and normals when its morph weights animate (the vertex shader skins them: uploading them costs
+     * 12 bytes per vertex of the morphing meshes only, and keeps the GPU on exactly the positions
+     * the CPU skins; docs/skinning.md, "Morphs"), and the CPU-skinned positions and normals when
+     * the frame has them.
      */
     void upload(Frame frame, int g) {
         palette.upload(frame, g);
+        if (frame.restPositions(g) != null) {
+            if (restStaging == null) {
+                restStaging = MemoryUtil.memAllocFloat(Math.max(1, 3 * vertexCount));
+            }
+            uploadRest(buffers[0], frame.restPositions(g));
+            uploadRest(buffers[1], frame.restNormals(g));
+        }
         if (frame.hasSkinnedMesh()) {
             glBindBuffer(GL_ARRAY_BUFFER, buffers[2]);
             glBufferSubData(GL_ARRAY_BUFFER, 0, frame.positions(g));
@@ -182,6 +194,14 @@ final class GpuGeometry implements AutoCloseable {
             glBufferSubData(GL_ARRAY_BUFFER, 0, frame.normals(g));
             glBindBuffer(GL_ARRAY_BUFFER, 0);
         }
+    }
+
+    /** Replaces the render vertices' part of a bind-pose buffer (positions or normals). */
+    private void uploadRest(int buffer, float[] data) {
+        restStaging.clear();
+        restStaging.put(data, 0, 3 * vertexCount).flip();
+        glBindBuffer(GL_ARRAY_BUFFER, buffer);
+        glBufferSubData(GL_ARRAY_BUFFER, 0, restStaging);
     }
 
     /**
@@ -269,5 +289,8 @@ final class GpuGeometry implements AutoCloseable {
             glDeleteBuffers(centreBuffer);
         }
         palette.close();
+        if (restStaging != null) {
+            MemoryUtil.memFree(restStaging);
+        }
     }
 }

@@ -174,6 +174,30 @@ class PoseCommandTest {
         }
     }
 
+    /**
+     * Animated morph weights: the glTF fixture's clip "pulse" (CUBICSPLINE weights on body, STEP on
+     * body2, a joint rotating) between keys, against three.js' positions in the committed reference
+     * (core/src/test/resources/gltf/threejs; ThreeJsAgreementTest), within 1e-4 of the size.
+     */
+    @Test
+    void morphWeightsAreAppliedBeforeSkinningAsThreeJsDoes() throws Exception {
+        Path gltf = Cli.root().resolve("core/src/test/resources/gltf/morph-skin.gltf");
+        JsonNode reference = MAPPER.readTree(Cli.root().resolve(
+                "core/src/test/resources/gltf/threejs/morph-skin.gltf.json").toFile());
+        JsonNode clip = reference.get("clips").get(2);
+        assertEquals("pulse", clip.get("name").textValue());
+        int k = 3; // 0.35 s: between the weights' keys 0 and 0.6
+        double t = clip.get("times").get(k).doubleValue();
+        JsonNode root = json(Cli.run("pose", gltf.toString(), "--clip", "pulse", "--time", Double.toString(t),
+                "--method", "lbs", "--json", "-"));
+        double size = reference.get("size").doubleValue();
+        for (int m = 0; m < 2; m++) {
+            double[] ours = doubles(root.get("meshes").get(m).get("poses").get(0));
+            double[] three = doubles(clip.get("meshes").get(m).get("positions").get(k));
+            assertTrue(maxDistance(ours, three) <= 1e-4 * size, "mesh " + m + ": " + maxDistance(ours, three));
+        }
+    }
+
     @Test
     void lbsAndDqsDifferWhereTheCylinderTwists() throws Exception {
         // At 4 s the upper half is twisted by 172 degrees: LBS collapses the joint region, DQS

@@ -1,0 +1,86 @@
+package org.skinlab.animation;
+
+import java.util.ArrayList;
+import java.util.List;
+
+import org.skinlab.model.AnimationClip;
+import org.skinlab.model.Model;
+import org.skinlab.model.Morph;
+import org.skinlab.model.MorphWeightChannel;
+
+/**
+ * Samples the morph weights a clip animates ({@link AnimationClip#morphWeights()}), per mesh
+ * instance, into arrays the caller owns: the sibling of {@link AnimationSampler} for weights, with
+ * the same rules per weight (STEP holds, LINEAR blends, BEZIER, i.e. glTF's CUBICSPLINE, follows
+ * the cubic through the control points; before the first key the first, after the last the last).
+ * Weights no channel drives keep the file's ({@link Morph#weights()}). Immutable and
+ * thread-safe; sampling allocates nothing.
+ */
+public final class MorphWeightSampler {
+    private final int instanceCount;
+    private final Morph[] morphs;
+    private final int[] instanceOfChannel;
+    private final AnimationSampler.Channel[] channels;
+
+    /** @param clip the clip, or null for none (nothing animated) */
+    public MorphWeightSampler(Model model, AnimationClip clip) {
+        instanceCount = model.instances().size();
+        morphs = new Morph[instanceCount];
+        List<MorphWeightChannel> list = clip == null ? List.of() : clip.morphWeights();
+        instanceOfChannel = new int[list.size()];
+        channels = new AnimationSampler.Channel[list.size()];
+        List<float[]> timelines = new ArrayList<>();
+        for (int i = 0; i < channels.length; i++) {
+            MorphWeightChannel c = list.get(i);
+            instanceOfChannel[i] = c.instance();
+            morphs[c.instance()] = model.morphOf(model.instances().get(c.instance())).orElseThrow(
+                    () -> new IllegalArgumentException(c.target() + ": the instance draws no morph"));
+            channels[i] = new AnimationSampler.Channel(c.weightOffset(), c.track(),
+                    AnimationSampler.sharedTimes(c.track().times(), timelines), false, false);
+        }
+    }
+
+    /** Whether the clip animates the weights of instance {@code instance}. */
+    public boolean animates(int instance) {
+        return morphs[instance] != null;
+    }
+
+    /** Whether the clip animates any weights. */
+    public boolean animatesAny() {
+        return channels.length > 0;
+    }
+
+    /** The morph whose weights instance {@code instance} animates, or null. */
+    public Morph morph(int instance) {
+        return morphs[instance];
+    }
+
+    /**
+     * Per instance, an array of its morph's weights (the file's) where the clip animates them, else
+     * null: the state {@link #sample} updates.
+     */
+    public float[][] newWeights() {
+        float[][] w = new float[instanceCount][];
+        for (int i = 0; i < instanceCount; i++) {
+            w[i] = morphs[i] == null ? null : morphs[i].weights();
+        }
+        return w;
+    }
+
+    /** Writes every animated weight at clip time {@code time} into {@code weights} (from {@link #newWeights}). */
+    public void sample(float time, float[][] weights) {
+        if (Float.isNaN(time)) {
+            throw new IllegalArgumentException("sample time is NaN");
+        }
+        float[] searched = null;
+        int k = 0;
+        for (int i = 0; i < channels.length; i++) {
+            AnimationSampler.Channel c = channels[i];
+            if (c.times != searched) {
+                searched = c.times;
+                k = AnimationSampler.segment(searched, time);
+            }
+            c.sample(k, time, RotationInterpolation.SLERP, weights[instanceOfChannel[i]], null);
+        }
+    }
+}
