@@ -47,6 +47,10 @@ final class Accessors {
         }
     }
 
+    int count() throws GltfException {
+        return accessors.size();
+    }
+
     /** The accessor an index property (e.g. {@code attributes/POSITION}) names. */
     int resolve(JsonNode reference) throws GltfException {
         return reference.index(accessors.size(), "accessors");
@@ -241,8 +245,8 @@ final class Accessors {
             throw a.get("byteOffset").error("byteOffset " + offset + " is not a multiple of the component size "
                     + componentSize);
         }
-        // The last element needs no padding after its last column.
-        long end = offset + (long) stride * (count - 1) + elementSize - columnStride + (long) rows * componentSize;
+        // The last column's padding need not be there: it is never read (as the validator reads it).
+        long end = offset + (long) stride * (count - 1) + elementSize - (columnStride - rows * componentSize);
         int viewLength = buffers.viewLength(view);
         if (end > viewLength) {
             throw a.get("count").error(count + " elements of " + elementSize + " bytes (stride " + stride + ") from offset "

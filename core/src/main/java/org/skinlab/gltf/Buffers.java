@@ -9,9 +9,11 @@ import java.nio.ByteOrder;
  * {@code byteLength}, at most {@link GltfLimits#MAX_FILE_BYTES}; a view's range must lie inside
  * its buffer. Views are little-endian {@link ByteBuffer}s over the shared bytes (no copies).
  *
- * <p>A buffer whose data cannot be had (no uri outside a .glb's first buffer, a refused or
- * missing URI) refuses the file only when something reads it: an unused placeholder buffer is
- * valid glTF. Nothing is ever fetched from outside the document's folder either way.
+ * <p>A placeholder buffer (no uri, and not a .glb's first buffer) refuses the file only when
+ * something reads it: an unused placeholder is valid glTF. A buffer whose uri is refused (it
+ * leaves the document's folder, has a scheme, is a broken data URI) or names no file, or whose
+ * data are shorter than its byteLength, refuses the file whether used or not, as the
+ * glTF-Validator reports it. Nothing is ever fetched from outside the document's folder.
  */
 final class Buffers {
     private final GltfContext ctx;
@@ -30,10 +32,11 @@ final class Buffers {
         int[] declared = new int[buffers.length];
         for (int i = 0; i < buffers.length; i++) {
             declared[i] = list.get(i).get("byteLength").integer(1, GltfLimits.MAX_FILE_BYTES);
-            try {
+            if (isPlaceholder(list.get(i), i, container)) {
+                bufferErrors[i] = list.get(i).error("a buffer without uri must be the first buffer of a .glb with a"
+                        + " BIN chunk");
+            } else {
                 buffers[i] = load(list.get(i), i, container, uris);
-            } catch (GltfException e) {
-                bufferErrors[i] = e;
             }
         }
         views = root.get("bufferViews").arrayOrMissing();
@@ -43,6 +46,11 @@ final class Buffers {
         for (int i = 0; i < viewData.length; i++) {
             viewData[i] = view(views.get(i), i, declared);
         }
+    }
+
+    /** A buffer without uri that is not the first of a .glb (whose data would be the BIN chunk). */
+    private static boolean isPlaceholder(JsonNode buffer, int index, GlbContainer container) throws GltfException {
+        return !buffer.has("uri") && !(container.glb && index == 0);
     }
 
     private ByteBuffer load(JsonNode buffer, int index, GlbContainer container, UriResolver uris)
@@ -100,6 +108,11 @@ final class Buffers {
 
     int viewCount() {
         return viewData.length;
+    }
+
+    /** Whether the view's buffer has data (it is not an unused placeholder's). */
+    boolean hasData(int index) {
+        return viewErrors[index] == null;
     }
 
     /** A view's bytes (a duplicate; absolute gets only); refused when its buffer's data could not be had. */

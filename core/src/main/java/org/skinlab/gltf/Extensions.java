@@ -19,6 +19,11 @@ final class Extensions {
     private Extensions() {
     }
 
+    /** Whether the importer reads the extension's data (and the checks judge them). */
+    static boolean isSupported(String name) {
+        return SUPPORTED.contains(name);
+    }
+
     /** Checks extensionsRequired and extensionsUsed; true when KHR_mesh_quantization is used. */
     static boolean check(GltfContext ctx, JsonNode root) throws GltfException {
         JsonNode required = root.get("extensionsRequired").arrayOrMissing();

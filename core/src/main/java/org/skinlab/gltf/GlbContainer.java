@@ -40,18 +40,21 @@ final class GlbContainer {
         if (bytes.length >= 4 && ByteBuffer.wrap(bytes).order(ByteOrder.LITTLE_ENDIAN).getInt(0) == MAGIC) {
             return glb(ctx, bytes);
         }
-        int start = bomLength(ctx, bytes, 0, bytes.length);
+        int start = byteOrderMark(ctx, bytes, 0, bytes.length);
         return new GlbContainer(false, bytes, start, bytes.length - start, -1, 0);
     }
 
-    /** 3 when the JSON at {@code offset} starts with a UTF-8 byte order mark (glTF forbids it; editors write it), warned. */
-    private static int bomLength(GltfContext ctx, byte[] bytes, int offset, long length) {
-        boolean bom = length >= 3 && (bytes[offset] & 0xff) == 0xEF && (bytes[offset + 1] & 0xff) == 0xBB
-                && (bytes[offset + 2] & 0xff) == 0xBF;
-        if (bom) {
+    /**
+     * 3 when the JSON at {@code offset} starts with a UTF-8 byte order mark, which JSON forbids but
+     * editors write (skipped with a warning), else 0.
+     */
+    private static int byteOrderMark(GltfContext ctx, byte[] bytes, int offset, long length) {
+        if (length >= 3 && (bytes[offset] & 0xff) == 0xEF && (bytes[offset + 1] & 0xff) == 0xBB
+                && (bytes[offset + 2] & 0xff) == 0xBF) {
             ctx.warn("", "the JSON starts with a UTF-8 byte order mark; skipped");
+            return 3;
         }
-        return bom ? 3 : 0;
+        return 0;
     }
 
     private static byte[] readAll(GltfContext ctx, InputStream in) throws IOException, GltfException {
@@ -99,6 +102,7 @@ final class GlbContainer {
             throw ctx.error("(GLB chunk 0)", "the JSON chunk claims " + jsonLength + " bytes but "
                     + (bytes.length - 20) + " follow");
         }
+        warnIfUnaligned(ctx, "(GLB chunk 0)", jsonLength);
         int binOffset = -1;
         int binLength = 0;
         long at = 20 + jsonLength;
@@ -113,6 +117,7 @@ final class GlbContainer {
                 throw ctx.error(where, "the chunk claims " + chunkLength + " bytes but " + (bytes.length - at - 8)
                         + " follow");
             }
+            warnIfUnaligned(ctx, where, chunkLength);
             if (type == CHUNK_BIN && chunk == 1) {
                 binOffset = (int) at + 8;
                 binLength = (int) chunkLength;
@@ -124,7 +129,14 @@ final class GlbContainer {
             }
             at += 8 + chunkLength;
         }
-        int bom = bomLength(ctx, bytes, 20, jsonLength);
-        return new GlbContainer(true, bytes, 20 + bom, (int) jsonLength - bom, binOffset, binLength);
+        int start = byteOrderMark(ctx, bytes, 20, jsonLength);
+        return new GlbContainer(true, bytes, 20 + start, (int) jsonLength - start, binOffset, binLength);
+    }
+
+    /** The specification pads every chunk to 4 bytes; readers cope without, so only a warning. */
+    private static void warnIfUnaligned(GltfContext ctx, String where, long chunkLength) {
+        if (chunkLength % 4 != 0) {
+            ctx.warn(where, "the chunk's length " + chunkLength + " is not a multiple of 4 (chunks are padded)");
+        }
     }
 }

@@ -72,10 +72,12 @@ public final class GltfImporter {
     private static Model build(GltfContext ctx, GlbContainer container, Path location) throws GltfException {
         JsonNode root = JsonTree.parse(ctx, container.bytes, container.jsonOffset, container.jsonLength);
         AssetInfo asset = asset(root.get("asset"));
+        GltfDocumentChecks.check(root, ctx);
         boolean quantized = Extensions.check(ctx, root);
         UriResolver uris = new UriResolver(ctx, location);
         Buffers buffers = new Buffers(ctx, root, container, uris);
         Accessors accessors = new Accessors(ctx, root, buffers);
+        GltfDataChecks.check(ctx, root, buffers, accessors);
         MaterialReader materials = new MaterialReader(ctx, uris, buffers, root);
 
         JsonNode meshList = root.get("meshes").arrayOrMissing();

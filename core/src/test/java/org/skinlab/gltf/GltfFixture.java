@@ -39,12 +39,69 @@ final class GltfFixture {
         return accessors.size() - 1;
     }
 
-    /** Values encoded in a component type, in their own view, and an accessor over them. */
+    /**
+     * Values encoded in a component type, in their own view, and an accessor over them, with the
+     * min and max of the stored values that valid glTF requires of positions and key times.
+     */
     int accessor(int componentType, String type, boolean normalized, double... values) {
-        int view = view(encode(componentType, values), 0);
+        byte[] data = encode(componentType, values);
+        int view = view(data, 0);
         int components = components(type);
         return accessor("{\"bufferView\":" + view + ",\"componentType\":" + componentType + ",\"type\":\"" + type
-                + "\",\"count\":" + values.length / components + (normalized ? ",\"normalized\":true" : "") + "}");
+                + "\",\"count\":" + values.length / components + (normalized ? ",\"normalized\":true" : "")
+                + bounds(componentType, components, data) + "}");
+    }
+
+    /** ",\"min\":[...],\"max\":[...]" of the stored values, or nothing when one is not finite. */
+    private static String bounds(int componentType, int components, byte[] data) {
+        ByteBuffer b = ByteBuffer.wrap(data).order(ByteOrder.LITTLE_ENDIAN);
+        int n = componentType == Accessors.FLOAT || componentType == Accessors.UNSIGNED_INT ? data.length / 4
+                : componentType == Accessors.SHORT || componentType == Accessors.UNSIGNED_SHORT ? data.length / 2
+                : data.length;
+        if (n == 0) {
+            return "";
+        }
+        double[] min = new double[components];
+        double[] max = new double[components];
+        java.util.Arrays.fill(min, Double.POSITIVE_INFINITY);
+        java.util.Arrays.fill(max, Double.NEGATIVE_INFINITY);
+        for (int i = 0; i < n; i++) {
+            double v;
+            switch (componentType) {
+                case Accessors.FLOAT:
+                    v = b.getFloat(4 * i);
+                    break;
+                case Accessors.UNSIGNED_INT:
+                    v = Integer.toUnsignedLong(b.getInt(4 * i));
+                    break;
+                case Accessors.SHORT:
+                    v = b.getShort(2 * i);
+                    break;
+                case Accessors.UNSIGNED_SHORT:
+                    v = b.getShort(2 * i) & 0xffff;
+                    break;
+                case Accessors.BYTE:
+                    v = b.get(i);
+                    break;
+                default:
+                    v = b.get(i) & 0xff;
+            }
+            if (!Double.isFinite(v)) {
+                return "";
+            }
+            min[i % components] = Math.min(min[i % components], v);
+            max[i % components] = Math.max(max[i % components], v);
+        }
+        return ",\"min\":" + json(min) + ",\"max\":" + json(max);
+    }
+
+    private static String json(double[] values) {
+        StringBuilder sb = new StringBuilder("[");
+        for (double v : values) {
+            sb.append(sb.length() == 1 ? "" : ",").append(v == Math.rint(v) ? Long.toString((long) v)
+                    : Float.toString((float) v));
+        }
+        return sb.append(']').toString();
     }
 
     int floats(String type, double... values) {

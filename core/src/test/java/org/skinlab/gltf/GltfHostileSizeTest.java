@@ -18,7 +18,8 @@ class GltfHostileSizeTest {
         StringBuilder accessors = new StringBuilder();
         StringBuilder attributes = new StringBuilder("\"POSITION\":0");
         for (int i = 0; i < 40; i++) {
-            accessors.append(i == 0 ? "" : ",").append("{\"componentType\":5126,\"type\":\"VEC3\",\"count\":22369621}");
+            accessors.append(i == 0 ? "{\"componentType\":5126,\"type\":\"VEC3\",\"count\":22369621,"
+                    + "\"min\":[0,0,0],\"max\":[0,0,0]}" : ",{\"componentType\":5126,\"type\":\"VEC2\",\"count\":22369621}");
             if (i > 0) {
                 attributes.append(",\"TEXCOORD_").append(i - 1).append("\":").append(i);
             }

@@ -8,7 +8,9 @@ import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.util.ArrayList;
 import java.util.Base64;
+import java.util.List;
 
 import org.junit.jupiter.api.Test;
 import org.skinlab.model.Image;
@@ -28,7 +30,15 @@ class GltfMaterialTest {
         f.floats("VEC2", 0, 0, 1, 0, 0, 1); // 1
         f.floats("VEC2", 0.5, 0.5, 0.5, 0.5, 0.5, 0.5); // 2
         f.view(PNG_SIGNATURE, 0); // view 3
-        return GltfFixture.read(f.gltf("\"materials\":[" + materials + "]," + list("images", images)
+        // Valid glTF declares the extensions it uses.
+        List<String> used = new ArrayList<>();
+        for (String extension : new String[] {"KHR_texture_transform", "KHR_materials_unlit"}) {
+            if (materials.contains(extension)) {
+                used.add("\"" + extension + "\"");
+            }
+        }
+        String declared = used.isEmpty() ? "" : "\"extensionsUsed\":[" + String.join(",", used) + "],";
+        return GltfFixture.read(f.gltf(declared + "\"materials\":[" + materials + "]," + list("images", images)
                 + list("textures", textures) + "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0"
                 + texCoords + "},\"material\":0}]}],\"nodes\":[{\"mesh\":0}],\"scenes\":[{\"nodes\":[0]}]"));
     }

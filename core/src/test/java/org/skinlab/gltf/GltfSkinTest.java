@@ -92,7 +92,7 @@ class GltfSkinTest {
         f.accessor(Accessors.UNSIGNED_BYTE, "VEC4", true, 153, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0); // 4 WEIGHTS_1
         Model model = GltfFixture.read(f.gltf("\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0,"
                 + "\"JOINTS_0\":1,\"WEIGHTS_0\":2,\"JOINTS_1\":3,\"WEIGHTS_1\":4}}]}],\"skins\":[{\"joints\":[1,2]}],"
-                + "\"nodes\":[{\"mesh\":0,\"skin\":0},{},{}],\"scenes\":[{\"nodes\":[0,1,2]}]"));
+                + "\"nodes\":[{\"mesh\":0,\"skin\":0},{\"children\":[2]},{}],\"scenes\":[{\"nodes\":[0,1]}]"));
         Skin skin = model.skins().get(0);
         assertEquals(3, skin.influenceCount(0), "0.2 + 0.2 from set 0, 0.6 from set 1");
         assertEquals(0.6f, skin.influenceWeight(skin.influenceStart(0) + 2), 1e-7f);

@@ -74,9 +74,10 @@ public final class ImporterFuzzing {
             if (!refusal.isInstance(e)) {
                 throw e;
             }
-            if (e.getCause() instanceof RuntimeException) {
-                // The importer's safety net caught a crash: report the crash itself, so Jazzer
-                // tells different bugs apart by their stack traces.
+            if (e.getCause() instanceof RuntimeException || e.getCause() instanceof Error) {
+                // The importer's safety net caught a crash (the glTF importer's also catches
+                // StackOverflowError): report the crash itself, so Jazzer tells different bugs
+                // apart by their stack traces.
                 throw e.getCause();
             }
             String message = e.getMessage();
@@ -100,9 +101,21 @@ public final class ImporterFuzzing {
      * where they are so that a new asset or fixture is a seed without a copy.
      */
     public static Stream<Arguments> seeds(String... extensions) throws IOException {
+        return seeds(List.of("assets", "core/src/test/resources/fixtures"), extensions);
+    }
+
+    /**
+     * Seeds: every file whose name ends with one of {@code extensions} in the given folders
+     * (relative to the repository root; a folder that does not exist gives none).
+     */
+    public static Stream<Arguments> seeds(List<String> folders, String... extensions) throws IOException {
         Path root = TestPaths.root();
         List<Path> files = new ArrayList<>();
-        for (Path dir : new Path[] {root.resolve("assets"), root.resolve("core/src/test/resources/fixtures")}) {
+        for (String folder : folders) {
+            Path dir = root.resolve(folder);
+            if (!Files.isDirectory(dir)) {
+                continue;
+            }
             try (Stream<Path> walk = Files.walk(dir)) {
                 files.addAll(walk.filter(Files::isRegularFile)
                         .filter(p -> Stream.of(extensions).anyMatch(x -> p.getFileName().toString().endsWith(x)))
