@@ -57,16 +57,25 @@ final class GlbContainer {
         return 0;
     }
 
+    /**
+     * The stream's bytes. The buffer starts at the size the stream says it has left (exact for
+     * in-memory and file streams), so a document is read without growing or trimming copies.
+     */
     private static byte[] readAll(GltfContext ctx, InputStream in) throws IOException, GltfException {
-        byte[] buf = new byte[1 << 16];
+        byte[] buf = new byte[Math.max(1 << 16, Math.min(in.available(), GltfLimits.MAX_FILE_BYTES))];
         int n = 0;
         for (int r; (r = in.read(buf, n, buf.length - n)) != -1;) {
             n += r;
             if (n == buf.length) {
+                int next = in.read();
+                if (next < 0) {
+                    return buf;
+                }
                 if (buf.length >= GltfLimits.MAX_FILE_BYTES) {
                     throw ctx.error("", "the file is larger than " + GltfLimits.MAX_FILE_BYTES + " bytes");
                 }
                 buf = Arrays.copyOf(buf, (int) Math.min((long) buf.length * 2, GltfLimits.MAX_FILE_BYTES));
+                buf[n++] = (byte) next;
             }
         }
         return n == buf.length ? buf : Arrays.copyOf(buf, n);
