@@ -12,7 +12,8 @@ import java.util.Map;
  * bytes, and sparse substitution. Declared sizes are checked against the view and against
  * {@link GltfLimits#MAX_ACCESSOR_VALUES} before the result is allocated (for every accessor when
  * the document is opened, used or not); min/max are not trusted
- * (not read). Float components must be finite. Results are cached: primitives share accessors.
+ * (not read). Float components must be finite. Results are cached (primitives share accessors)
+ * and shared: callers read them and never write them.
  */
 final class Accessors {
     static final int BYTE = 5120;

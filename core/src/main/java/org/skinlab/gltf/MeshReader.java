@@ -207,7 +207,8 @@ final class MeshReader {
     /** The vertex attributes of all blocks, concatenated. */
     private final class Vertices {
         final int total;
-        final float[] positions;
+        /** Null until read; the accessor's own (cached, never written) array when one block is the mesh. */
+        float[] positions;
         float[] normals;
         float[] colors;
         final List<float[]> texCoords = new ArrayList<>();
@@ -215,15 +216,13 @@ final class MeshReader {
 
         Vertices(int total) {
             this.total = total;
-            this.positions = new float[3 * total];
         }
 
         void read(Block b) throws GltfException {
             JsonNode a = b.attributes;
-            copy(a.get("POSITION"), "VEC3", b, positions, 3, positionFormats());
+            positions = attribute(a.get("POSITION"), b, positions, positionFormats());
             if (a.has("NORMAL")) {
-                normals = normals == null ? new float[3 * total] : normals;
-                copy(a.get("NORMAL"), "VEC3", b, normals, 3, normalFormats());
+                normals = attribute(a.get("NORMAL"), b, normals, normalFormats());
             }
             if (a.has("COLOR_0")) {
                 if (colors == null) {
@@ -294,6 +293,22 @@ final class MeshReader {
             for (int i = 0; i < b.count; i++) {
                 System.arraycopy(data, width * i, colors, 4 * (b.start + i), width);
             }
+        }
+
+        /**
+         * A VEC3 attribute of block {@code b} in {@code dest} (made when null): the accessor's own
+         * array when the block is all the mesh's vertices, which the mesh copies and nothing writes.
+         */
+        private float[] attribute(JsonNode ref, Block b, float[] dest, String[] formats) throws GltfException {
+            if (dest != null || b.count != total) {
+                float[] to = dest == null ? new float[3 * total] : dest;
+                copy(ref, "VEC3", b, to, 3, formats);
+                return to;
+            }
+            int acc = accessors.resolve(ref);
+            accessors.expect(acc, ref.path(), "VEC3", formats);
+            checkCount(acc, ref, b);
+            return accessors.floats(acc);
         }
 
         private void copy(JsonNode ref, String type, Block b, float[] dest, int width, String[] formats)
