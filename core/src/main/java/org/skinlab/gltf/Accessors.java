@@ -12,7 +12,8 @@ import java.util.Map;
  * bytes, and sparse substitution. Declared sizes are checked against the view and against
  * {@link GltfLimits#MAX_ACCESSOR_VALUES} before the result is allocated (for every accessor when
  * the document is opened, used or not); min/max are not trusted
- * (not read). Float components must be finite. Results are cached: primitives share accessors.
+ * (not read). Float components must be finite. Results are cached (primitives share accessors)
+ * and shared: callers read them and never write them.
  */
 final class Accessors {
     static final int BYTE = 5120;
@@ -45,6 +46,10 @@ final class Accessors {
                 ctx.warn(a.path(), "unknown type or component type; refused if anything uses it");
             }
         }
+    }
+
+    int count() throws GltfException {
+        return accessors.size();
     }
 
     /** The accessor an index property (e.g. {@code attributes/POSITION}) names. */
@@ -113,12 +118,9 @@ final class Accessors {
             ctx.charge(layout.values(), a.path());
             cached = new int[layout.values()];
             if (layout.view >= 0) {
-                ByteBuffer b = buffers.view(layout.view);
-                for (int e = 0; e < layout.count; e++) {
-                    for (int c = 0; c < layout.components; c++) {
-                        cached[e * layout.components + c] = (int) Math.min(Integer.MAX_VALUE,
-                                integer(b, layout.byteOf(e, c), type));
-                    }
+                readInts(buffers.view(layout.view), layout, type, cached);
+                for (int i = 0; type == UNSIGNED_INT && i < cached.length; i++) {
+                    cached[i] = cached[i] < 0 ? Integer.MAX_VALUE : cached[i];
                 }
             }
             Sparse sparse = sparse(accessor, layout);
@@ -148,6 +150,13 @@ final class Accessors {
             ByteBuffer b = buffers.view(layout.view);
             b.position(layout.offset);
             b.asFloatBuffer().get(out);
+        } else if (layout.view >= 0 && !normalized && type != FLOAT) {
+            // Integers (joints, indices, key frames read as numbers).
+            int[] values = new int[out.length];
+            readInts(buffers.view(layout.view), layout, type, values);
+            for (int i = 0; i < out.length; i++) {
+                out[i] = type == UNSIGNED_INT ? Integer.toUnsignedLong(values[i]) : values[i];
+            }
         } else if (layout.view >= 0) {
             ByteBuffer b = buffers.view(layout.view);
             for (int e = 0; e < layout.count; e++) {
@@ -188,6 +197,47 @@ final class Accessors {
                 return Integer.toUnsignedLong(b.getInt(at));
             default:
                 return b.getFloat(at);
+        }
+    }
+
+    /**
+     * The integers as stored: signed types sign-extended, unsigned bytes and shorts zero-extended,
+     * unsigned ints as their bits (the caller maps those of 2^31 and more).
+     */
+    private static void readInts(ByteBuffer b, Layout layout, int type, int[] out) {
+        int n = layout.components;
+        if (layout.rows != n) {
+            for (int e = 0; e < layout.count; e++) {
+                for (int c = 0; c < n; c++) {
+                    out[e * n + c] = stored(b, layout.byteOf(e, c), type);
+                }
+            }
+        } else if (type == UNSIGNED_INT && layout.stride == 4 * n) {
+            b.position(layout.offset);
+            b.asIntBuffer().get(out);
+        } else {
+            for (int e = 0, i = 0; e < layout.count; e++, i += n) {
+                int at = layout.offset + e * layout.stride;
+                for (int c = 0; c < n; c++) {
+                    out[i + c] = stored(b, at + c * layout.componentSize, type);
+                }
+            }
+        }
+    }
+
+    /** One integer component as stored (unsigned ints as their bits). */
+    private static int stored(ByteBuffer b, int at, int type) {
+        switch (type) {
+            case BYTE:
+                return b.get(at);
+            case UNSIGNED_BYTE:
+                return b.get(at) & 0xff;
+            case SHORT:
+                return b.getShort(at);
+            case UNSIGNED_SHORT:
+                return b.getShort(at) & 0xffff;
+            default:
+                return b.getInt(at);
         }
     }
 
@@ -241,8 +291,8 @@ final class Accessors {
             throw a.get("byteOffset").error("byteOffset " + offset + " is not a multiple of the component size "
                     + componentSize);
         }
-        // The last element needs no padding after its last column.
-        long end = offset + (long) stride * (count - 1) + elementSize - columnStride + (long) rows * componentSize;
+        // The last column's padding need not be there: it is never read (as the validator reads it).
+        long end = offset + (long) stride * (count - 1) + elementSize - (columnStride - rows * componentSize);
         int viewLength = buffers.viewLength(view);
         if (end > viewLength) {
             throw a.get("count").error(count + " elements of " + elementSize + " bytes (stride " + stride + ") from offset "

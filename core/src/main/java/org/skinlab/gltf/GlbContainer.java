@@ -40,30 +40,42 @@ final class GlbContainer {
         if (bytes.length >= 4 && ByteBuffer.wrap(bytes).order(ByteOrder.LITTLE_ENDIAN).getInt(0) == MAGIC) {
             return glb(ctx, bytes);
         }
-        int start = bomLength(ctx, bytes, 0, bytes.length);
+        int start = byteOrderMark(ctx, bytes, 0, bytes.length);
         return new GlbContainer(false, bytes, start, bytes.length - start, -1, 0);
     }
 
-    /** 3 when the JSON at {@code offset} starts with a UTF-8 byte order mark (glTF forbids it; editors write it), warned. */
-    private static int bomLength(GltfContext ctx, byte[] bytes, int offset, long length) {
-        boolean bom = length >= 3 && (bytes[offset] & 0xff) == 0xEF && (bytes[offset + 1] & 0xff) == 0xBB
-                && (bytes[offset + 2] & 0xff) == 0xBF;
-        if (bom) {
+    /**
+     * 3 when the JSON at {@code offset} starts with a UTF-8 byte order mark, which JSON forbids but
+     * editors write (skipped with a warning), else 0.
+     */
+    private static int byteOrderMark(GltfContext ctx, byte[] bytes, int offset, long length) {
+        if (length >= 3 && (bytes[offset] & 0xff) == 0xEF && (bytes[offset + 1] & 0xff) == 0xBB
+                && (bytes[offset + 2] & 0xff) == 0xBF) {
             ctx.warn("", "the JSON starts with a UTF-8 byte order mark; skipped");
+            return 3;
         }
-        return bom ? 3 : 0;
+        return 0;
     }
 
+    /**
+     * The stream's bytes. The buffer starts at the size the stream says it has left (exact for
+     * in-memory and file streams), so a document is read without growing or trimming copies.
+     */
     private static byte[] readAll(GltfContext ctx, InputStream in) throws IOException, GltfException {
-        byte[] buf = new byte[1 << 16];
+        byte[] buf = new byte[Math.max(1 << 16, Math.min(in.available(), GltfLimits.MAX_FILE_BYTES))];
         int n = 0;
         for (int r; (r = in.read(buf, n, buf.length - n)) != -1;) {
             n += r;
             if (n == buf.length) {
+                int next = in.read();
+                if (next < 0) {
+                    return buf;
+                }
                 if (buf.length >= GltfLimits.MAX_FILE_BYTES) {
                     throw ctx.error("", "the file is larger than " + GltfLimits.MAX_FILE_BYTES + " bytes");
                 }
                 buf = Arrays.copyOf(buf, (int) Math.min((long) buf.length * 2, GltfLimits.MAX_FILE_BYTES));
+                buf[n++] = (byte) next;
             }
         }
         return n == buf.length ? buf : Arrays.copyOf(buf, n);
@@ -126,8 +138,8 @@ final class GlbContainer {
             }
             at += 8 + chunkLength;
         }
-        int bom = bomLength(ctx, bytes, 20, jsonLength);
-        return new GlbContainer(true, bytes, 20 + bom, (int) jsonLength - bom, binOffset, binLength);
+        int start = byteOrderMark(ctx, bytes, 20, jsonLength);
+        return new GlbContainer(true, bytes, 20 + start, (int) jsonLength - start, binOffset, binLength);
     }
 
     /** The specification pads every chunk to 4 bytes; readers cope without, so only a warning. */

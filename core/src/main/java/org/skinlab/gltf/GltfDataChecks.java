@@ -47,15 +47,25 @@ final class GltfDataChecks {
             }
             float[] values = accessors.floats(i);
             int n = accessors.components(i);
+            float[] lo = new float[n];
+            float[] hi = new float[n];
+            extremes(values, n, lo, hi);
             for (int c = 0; c < n; c++) {
-                float lo = Float.POSITIVE_INFINITY;
-                float hi = Float.NEGATIVE_INFINITY;
-                for (int k = c; k < values.length; k += n) {
-                    lo = Math.min(lo, values[k]);
-                    hi = Math.max(hi, values[k]);
-                }
-                checkBound(a, "min", c, lo, -1);
-                checkBound(a, "max", c, hi, 1);
+                checkBound(a, "min", c, lo[c], -1);
+                checkBound(a, "max", c, hi[c], 1);
+            }
+        }
+    }
+
+    /** Per component, the smallest and largest value, in one pass (the values are finite). */
+    private static void extremes(float[] values, int n, float[] lo, float[] hi) {
+        java.util.Arrays.fill(lo, Float.POSITIVE_INFINITY);
+        java.util.Arrays.fill(hi, Float.NEGATIVE_INFINITY);
+        for (int k = 0; k < values.length; k += n) {
+            for (int c = 0; c < n; c++) {
+                float v = values[k + c];
+                lo[c] = v < lo[c] ? v : lo[c];
+                hi[c] = v > hi[c] ? v : hi[c];
             }
         }
     }

@@ -35,6 +35,10 @@ final class JsonNode {
         return value == null;
     }
 
+    boolean isObject() {
+        return value instanceof Map;
+    }
+
     GltfException error(String problem) {
         return ctx.error(path, problem);
     }

@@ -4,9 +4,10 @@ import org.skinlab.model.Mesh;
 
 /**
  * One glTF mesh as read by {@link MeshReader}: the model's base {@link Mesh} (its primitives'
- * vertices one after another, one position per vertex) and what a node still needs to place it:
- * the morph targets' offsets, the default weights, each part's material, and the skin influences
- * of every position (joint numbers index the joints of whichever skin the node uses).
+ * vertices one after another, welded into positions by {@link PositionWelder}) and what a node
+ * still needs to place it: the morph targets' offsets, the default weights, each part's material,
+ * and the skin influences of every position (joint numbers index the joints of whichever skin the
+ * node uses).
  */
 final class MeshData {
     final int index;

@@ -13,8 +13,9 @@ import org.skinlab.model.MeshPart;
 /**
  * Reads {@code /meshes} into {@link MeshData}. A mesh's primitives become one {@link Mesh}:
  * primitives with the same attributes (and targets) share one block of vertices, each other
- * primitive adds its own; every vertex is its own position (glTF has no separate position index
- * space), so skin influences and morph offsets are per vertex as in the file.
+ * primitive adds its own. glTF has no separate position index space; vertices that agree in
+ * position, skin influences and morph offsets share one model position ({@link PositionWelder}),
+ * which skin influences and morph offsets are stored per.
  *
  * <p>TRIANGLES, TRIANGLE_STRIP and TRIANGLE_FAN become triangles (strip triangle i is
  * {@code (v_i, v_(i+1+i%2), v_(i+2-i%2))} and fan triangle i {@code (v_(i+1), v_(i+2), v_0)}, as
@@ -94,12 +95,6 @@ final class MeshReader {
                     partMaterials[i] < 0 ? null : GltfImporter.materialSymbol(partMaterials[i]), first,
                     triangles.size() / 3 - first));
         }
-        int[] vertexPositions = new int[positions];
-        for (int i = 0; i < positions; i++) {
-            vertexPositions[i] = i;
-        }
-        Mesh mesh = new Mesh("/meshes/" + index, meshNode.get("name").string(null), v.positions, vertexPositions,
-                v.normals, v.texCoords, v.texCoordNumbers, v.colors, triangles.toArray(), parts);
         float[][] targetPositions = new float[layout.targetCount][];
         float[][] targetNormals = new float[layout.targetCount][];
         for (int t = 0; t < targetPositions.length; t++) {
@@ -113,8 +108,18 @@ final class MeshReader {
         for (Block b : blocks) {
             influences.read(b.attributes, b.start, b.count);
         }
+        ctx.charge(8L * positions, meshNode.path()); // the welder's maps and table (at most 4 slots per vertex)
+        int[] vertexStart = influences.start();
+        PositionWelder weld = new PositionWelder(v.positions, vertexStart, influences.joints(), influences.weights(),
+                targetPositions);
+        for (int t = 0; t < targetPositions.length; t++) {
+            targetPositions[t] = weld.perPosition(targetPositions[t], 3);
+        }
+        int[] start = weld.influenceStart();
+        Mesh mesh = new Mesh("/meshes/" + index, meshNode.get("name").string(null), weld.perPosition(v.positions, 3),
+                weld.positionOfVertex, v.normals, v.texCoords, v.texCoordNumbers, v.colors, triangles.toArray(), parts);
         return new MeshData(index, mesh, targetPositions, targetNormals, defaultWeights(meshNode, layout.targetCount),
-                partMaterials, influences.start(), influences.joints(), influences.weights(), influences.maxJoint,
+                partMaterials, start, weld.influenceJoints(start), weld.influenceWeights(start), influences.maxJoint,
                 influences.maxJointPath, influences.withoutJoints);
     }
 
@@ -202,7 +207,8 @@ final class MeshReader {
     /** The vertex attributes of all blocks, concatenated. */
     private final class Vertices {
         final int total;
-        final float[] positions;
+        /** Null until read; the accessor's own (cached, never written) array when one block is the mesh. */
+        float[] positions;
         float[] normals;
         float[] colors;
         final List<float[]> texCoords = new ArrayList<>();
@@ -210,15 +216,13 @@ final class MeshReader {
 
         Vertices(int total) {
             this.total = total;
-            this.positions = new float[3 * total];
         }
 
         void read(Block b) throws GltfException {
             JsonNode a = b.attributes;
-            copy(a.get("POSITION"), "VEC3", b, positions, 3, positionFormats());
+            positions = attribute(a.get("POSITION"), b, positions, positionFormats());
             if (a.has("NORMAL")) {
-                normals = normals == null ? new float[3 * total] : normals;
-                copy(a.get("NORMAL"), "VEC3", b, normals, 3, normalFormats());
+                normals = attribute(a.get("NORMAL"), b, normals, normalFormats());
             }
             if (a.has("COLOR_0")) {
                 if (colors == null) {
@@ -289,6 +293,22 @@ final class MeshReader {
             for (int i = 0; i < b.count; i++) {
                 System.arraycopy(data, width * i, colors, 4 * (b.start + i), width);
             }
+        }
+
+        /**
+         * A VEC3 attribute of block {@code b} in {@code dest} (made when null): the accessor's own
+         * array when the block is all the mesh's vertices, which the mesh copies and nothing writes.
+         */
+        private float[] attribute(JsonNode ref, Block b, float[] dest, String[] formats) throws GltfException {
+            if (dest != null || b.count != total) {
+                float[] to = dest == null ? new float[3 * total] : dest;
+                copy(ref, "VEC3", b, to, 3, formats);
+                return to;
+            }
+            int acc = accessors.resolve(ref);
+            accessors.expect(acc, ref.path(), "VEC3", formats);
+            checkCount(acc, ref, b);
+            return accessors.floats(acc);
         }
 
         private void copy(JsonNode ref, String type, Block b, float[] dest, int width, String[] formats)
@@ -383,6 +403,7 @@ final class MeshReader {
             throw primitive.error("more than " + GltfLimits.MAX_TRIANGLES + " triangles in the mesh");
         }
         ctx.charge(2L * 3 * triangles, primitive.path()); // the list and the mesh's copy
+        out.reserve(3 * triangles);
         for (int i = 0; i < triangles; i++) {
             int a;
             int b;
@@ -407,13 +428,18 @@ final class MeshReader {
 
     /** A growable list of triangle corners. */
     private static final class TriangleList {
-        private int[] data = new int[96];
+        private int[] data = new int[0];
         private int size;
 
-        void add(int a, int b, int c) {
-            if (size + 3 > data.length) {
-                data = Arrays.copyOf(data, data.length * 2);
+        /** Makes room for {@code more} corners at once (a primitive's triangles). */
+        void reserve(int more) {
+            if (size + more > data.length) {
+                data = Arrays.copyOf(data, Math.max(size + more, data.length * 2));
             }
+        }
+
+        void add(int a, int b, int c) {
+            reserve(3);
             data[size++] = a;
             data[size++] = b;
             data[size++] = c;
@@ -424,7 +450,7 @@ final class MeshReader {
         }
 
         int[] toArray() {
-            return Arrays.copyOf(data, size);
+            return size == data.length ? data : Arrays.copyOf(data, size);
         }
     }
 }

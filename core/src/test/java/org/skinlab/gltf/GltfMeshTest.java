@@ -66,6 +66,38 @@ class GltfMeshTest {
     }
 
     @Test
+    void verticesSplitAtAHardEdgeShareTheirPositions() throws Exception {
+        GltfFixture f = new GltfFixture();
+        // Two triangles folded along the edge (0,0,0)-(1,0,0); the edge's vertices are written
+        // twice, with each face's normal, as exporters do at a hard edge.
+        f.floats("VEC3", 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1);
+        f.floats("VEC3", 0, 0, 1, 0, 0, 1, 0, 0, 1, 0, -1, 0, 0, -1, 0, 0, -1, 0);
+        Mesh mesh = GltfFixture.read(f.singleMesh("{\"attributes\":{\"POSITION\":0,\"NORMAL\":1}}")).meshes().get(0);
+        assertEquals(6, mesh.vertexCount());
+        assertEquals(4, mesh.positionCount());
+        assertArrayEquals(new int[] {0, 1, 2, 0, 1, 3}, mesh.vertexPositions());
+        assertArrayEquals(new int[] {0, 3}, mesh.verticesOfPosition(0));
+        assertArrayEquals(new float[] {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1}, mesh.positions());
+        assertArrayEquals(new int[] {0, 1, 2, 3, 4, 5}, mesh.triangles(), "triangles index vertices");
+    }
+
+    @Test
+    void verticesSplitAtAUvSeamShareTheirPositionAndKeepTheirTexCoords() throws Exception {
+        GltfFixture f = new GltfFixture();
+        // A quad whose diagonal (1,0,0)-(0,1,0) is a texture seam: both triangles write the
+        // diagonal's corners with their own u.
+        f.floats("VEC3", 0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0);
+        f.floats("VEC2", 0, 0, 1, 0, 0, 1, 0.25f, 0, 0.5f, 0.5f, 0.75f, 1);
+        Mesh mesh = GltfFixture.read(f.singleMesh("{\"attributes\":{\"POSITION\":0,\"TEXCOORD_0\":1}}"))
+                .meshes().get(0);
+        assertEquals(6, mesh.vertexCount());
+        assertArrayEquals(new int[] {0, 1, 2, 1, 3, 2}, mesh.vertexPositions());
+        assertArrayEquals(new float[] {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0}, mesh.positions());
+        assertArrayEquals(new float[] {0, 1, 1, 1, 0, 0, 0.25f, 1, 0.5f, 0.5f, 0.75f, 0}, mesh.texCoords(0),
+                "per vertex, v flipped");
+    }
+
+    @Test
     void normalsColoursAndTexCoordSetsAreCarriedPerVertex() throws Exception {
         GltfFixture f = new GltfFixture();
         f.floats("VEC3", 0, 0, 0, 1, 0, 0, 0, 1, 0); // 0

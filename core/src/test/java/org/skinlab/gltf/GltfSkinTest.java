@@ -103,6 +103,31 @@ class GltfSkinTest {
     }
 
     @Test
+    void splitVerticesShareAPositionOnlyWhenTheirInfluencesAgree() throws Exception {
+        GltfFixture f = new GltfFixture();
+        // Vertices 0 and 1 are one point with one influence; vertex 2 is the same point weighted otherwise.
+        f.floats("VEC3", 0, 2, 0, 0, 2, 0, 0, 2, 0);
+        f.accessor(Accessors.UNSIGNED_BYTE, "VEC4", false, 1, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0);
+        f.floats("VEC4", 1, 0, 0, 0, 1, 0, 0, 0, 0.5, 0.5, 0, 0);
+        Model model = GltfFixture.read(f.gltf("\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0,"
+                + "\"JOINTS_0\":1,\"WEIGHTS_0\":2}}]}],\"skins\":[{\"joints\":[1,2]}],"
+                + "\"nodes\":[{\"mesh\":0,\"skin\":0},{\"children\":[2]},{\"rotation\":[0,0,1,0]}],"
+                + "\"scenes\":[{\"nodes\":[0,1]}]"));
+        Skin skin = model.skins().get(0);
+        assertEquals(2, skin.mesh().positionCount());
+        assertArrayEquals(new int[] {0, 0, 1}, skin.mesh().vertexPositions());
+        assertEquals(1, skin.influenceCount(0));
+        assertEquals(2, skin.influenceCount(1));
+        // Joint 1 (node 2) turns 180 degrees about Z: the shared point follows it to (0,-2,0) for
+        // both of its vertices; the half-weighted vertex lands halfway, at the origin.
+        SkinnedModel skinned = SkinnedModel.of(model);
+        skinned.pose(0f, RotationInterpolation.SLERP);
+        float[] out = new float[9];
+        skinned.skin(0, SkinningMethod.LBS, out, new float[9]);
+        assertArrayEquals(new float[] {0, -2, 0, 0, -2, 0, 0, 0, 0}, out, EPS);
+    }
+
+    @Test
     void zeroWeightsAreDroppedAndWeightsKeptAsWritten() throws Exception {
         Skin skin = GltfFixture.read(twoBoneSkin(new GltfFixture(), ",\"inverseBindMatrices\":3", ""))
                 .skins().get(0);
