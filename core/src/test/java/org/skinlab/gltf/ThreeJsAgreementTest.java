@@ -20,7 +20,6 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
 import org.skinlab.animation.RotationInterpolation;
 import org.skinlab.model.ImportException;
-import org.skinlab.model.ImportWarning;
 import org.skinlab.model.Mesh;
 import org.skinlab.model.Model;
 import org.skinlab.skinning.NormalTransform;
