@@ -1,5 +1,12 @@
 package org.skinlab.gltf;
 
+import static org.skinlab.gltf.AccessorFormat.BYTE;
+import static org.skinlab.gltf.AccessorFormat.FLOAT;
+import static org.skinlab.gltf.AccessorFormat.SHORT;
+import static org.skinlab.gltf.AccessorFormat.UNSIGNED_BYTE;
+import static org.skinlab.gltf.AccessorFormat.UNSIGNED_INT;
+import static org.skinlab.gltf.AccessorFormat.UNSIGNED_SHORT;
+
 import java.nio.ByteBuffer;
 import java.util.HashMap;
 import java.util.Locale;
@@ -16,12 +23,6 @@ import java.util.Map;
  * and shared: callers read them and never write them.
  */
 final class Accessors {
-    static final int BYTE = 5120;
-    static final int UNSIGNED_BYTE = 5121;
-    static final int SHORT = 5122;
-    static final int UNSIGNED_SHORT = 5123;
-    static final int UNSIGNED_INT = 5125;
-    static final int FLOAT = 5126;
 
     private final GltfContext ctx;
     private final JsonNode accessors;
@@ -269,10 +270,11 @@ final class Accessors {
                     + GltfLimits.MAX_ACCESSOR_VALUES + " values");
         }
         // Matrix columns start on 4-byte boundaries (glTF 2.0, "Data Alignment"); a vector is one column.
-        boolean matrix = a.get("type").string().startsWith("MAT");
-        int rows = matrix ? (int) Math.round(Math.sqrt(components)) : components;
-        int columnStride = matrix ? (rows * componentSize + 3) / 4 * 4 : rows * componentSize;
-        int elementSize = (components / rows) * columnStride;
+        String type = a.get("type").string();
+        int componentType = typeNode.integer(0, Integer.MAX_VALUE);
+        int rows = AccessorFormat.rows(type);
+        int columnStride = AccessorFormat.columnStride(type, componentType);
+        int elementSize = AccessorFormat.elementSize(type, componentType);
         JsonNode viewNode = a.get("bufferView");
         if (viewNode.isMissing()) {
             if (a.has("byteOffset")) {
@@ -292,7 +294,7 @@ final class Accessors {
                     + componentSize);
         }
         // The last column's padding need not be there: it is never read (as the validator reads it).
-        long end = offset + (long) stride * (count - 1) + elementSize - (columnStride - rows * componentSize);
+        long end = offset + (long) stride * (count - 1) + elementSize - AccessorFormat.trailingPadding(type, componentType);
         int viewLength = buffers.viewLength(view);
         if (end > viewLength) {
             throw a.get("count").error(count + " elements of " + elementSize + " bytes (stride " + stride + ") from offset "
@@ -343,39 +345,19 @@ final class Accessors {
     }
 
     private static int componentSize(JsonNode typeNode) throws GltfException {
-        switch (typeNode.integer(0, Integer.MAX_VALUE)) {
-            case BYTE:
-            case UNSIGNED_BYTE:
-                return 1;
-            case SHORT:
-            case UNSIGNED_SHORT:
-                return 2;
-            case UNSIGNED_INT:
-            case FLOAT:
-                return 4;
-            default:
-                throw typeNode.error("unknown component type " + typeNode.integer(0, Integer.MAX_VALUE));
+        int size = AccessorFormat.componentSize(typeNode.integer(0, Integer.MAX_VALUE));
+        if (size == 0) {
+            throw typeNode.error("unknown component type " + typeNode.integer(0, Integer.MAX_VALUE));
         }
+        return size;
     }
 
     private static int components(JsonNode typeNode) throws GltfException {
-        switch (typeNode.string()) {
-            case "SCALAR":
-                return 1;
-            case "VEC2":
-                return 2;
-            case "VEC3":
-                return 3;
-            case "VEC4":
-            case "MAT2":
-                return 4;
-            case "MAT3":
-                return 9;
-            case "MAT4":
-                return 16;
-            default:
-                throw typeNode.error("unknown accessor type \"" + typeNode.string() + "\"");
+        int components = AccessorFormat.components(typeNode.string());
+        if (components == 0) {
+            throw typeNode.error("unknown accessor type \"" + typeNode.string() + "\"");
         }
+        return components;
     }
 
     private static String describe(String format) {

@@ -3,11 +3,11 @@ package org.skinlab.gltf;
 import static org.skinlab.gltf.CheckedDocument.oneOf;
 import static org.skinlab.gltf.CheckedDocument.ref;
 import static org.skinlab.gltf.CheckedDocument.required;
-import static org.skinlab.gltf.GltfDocumentChecks.BYTE;
-import static org.skinlab.gltf.GltfDocumentChecks.FLOAT;
-import static org.skinlab.gltf.GltfDocumentChecks.SHORT;
-import static org.skinlab.gltf.GltfDocumentChecks.UNSIGNED_BYTE;
-import static org.skinlab.gltf.GltfDocumentChecks.UNSIGNED_SHORT;
+import static org.skinlab.gltf.AccessorFormat.BYTE;
+import static org.skinlab.gltf.AccessorFormat.FLOAT;
+import static org.skinlab.gltf.AccessorFormat.SHORT;
+import static org.skinlab.gltf.AccessorFormat.UNSIGNED_BYTE;
+import static org.skinlab.gltf.AccessorFormat.UNSIGNED_SHORT;
 
 import java.util.Arrays;
 import java.util.List;

@@ -40,7 +40,7 @@ final class GltfDataChecks {
                 continue;
             }
             if (!a.has("min") && !a.has("max")) {
-                if (a.get("componentType").number() == Accessors.FLOAT) {
+                if (a.get("componentType").number() == AccessorFormat.FLOAT) {
                     accessors.floats(i); // refuses NaN and infinities, in unused accessors too
                 }
                 continue;
@@ -117,11 +117,11 @@ final class GltfDataChecks {
             return declared;
         }
         switch ((int) a.get("componentType").number()) {
-            case Accessors.BYTE:
+            case AccessorFormat.BYTE:
                 return Math.max(declared / 127, -1);
-            case Accessors.UNSIGNED_BYTE:
+            case AccessorFormat.UNSIGNED_BYTE:
                 return declared / 255;
-            case Accessors.SHORT:
+            case AccessorFormat.SHORT:
                 return Math.max(declared / 32767, -1);
             default:
                 return declared / 65535;
@@ -144,7 +144,7 @@ final class GltfDataChecks {
 
     private void checkAttribute(JsonNode attribute, String name) throws GltfException {
         if (name.startsWith("COLOR_") && accessors.node(accessors.resolve(attribute)).get("componentType")
-                .number() == Accessors.FLOAT) {
+                .number() == AccessorFormat.FLOAT) {
             for (float v : accessors.floats(accessors.resolve(attribute))) {
                 if (!(v >= 0 && v <= 1)) {
                     throw attribute.error("a colour component is " + v + ", outside [0, 1]");

@@ -1,5 +1,15 @@
 package org.skinlab.gltf;
 
+import static org.skinlab.gltf.AccessorFormat.BYTE;
+import static org.skinlab.gltf.AccessorFormat.FLOAT;
+import static org.skinlab.gltf.AccessorFormat.SHORT;
+import static org.skinlab.gltf.AccessorFormat.UNSIGNED_BYTE;
+import static org.skinlab.gltf.AccessorFormat.UNSIGNED_INT;
+import static org.skinlab.gltf.AccessorFormat.UNSIGNED_SHORT;
+import static org.skinlab.gltf.AccessorFormat.componentSize;
+import static org.skinlab.gltf.AccessorFormat.components;
+import static org.skinlab.gltf.AccessorFormat.elementSize;
+import static org.skinlab.gltf.AccessorFormat.trailingPadding;
 import static org.skinlab.gltf.CheckedDocument.oneOf;
 import static org.skinlab.gltf.CheckedDocument.range;
 import static org.skinlab.gltf.CheckedDocument.ref;
@@ -21,16 +31,8 @@ import java.util.Set;
  * we do not read is not judged (the importer warns that it is ignored).
  */
 final class GltfDocumentChecks {
-    static final int BYTE = 5120;
-    static final int UNSIGNED_BYTE = 5121;
-    static final int SHORT = 5122;
-    static final int UNSIGNED_SHORT = 5123;
-    static final int UNSIGNED_INT = 5125;
-    static final int FLOAT = 5126;
     static final int ARRAY_BUFFER = 34962;
     static final int ELEMENT_ARRAY_BUFFER = 34963;
-    private static final String[] TYPES = {"SCALAR", "VEC2", "VEC3", "VEC4", "MAT2", "MAT3", "MAT4"};
-    private static final int[] COMPONENTS = {1, 2, 3, 4, 4, 9, 16};
 
     private final CheckedDocument doc;
 
@@ -141,49 +143,6 @@ final class GltfDocumentChecks {
         doc.extensions(view, "bufferView");
     }
 
-    /** The number of components of an accessor type ("VEC3": 3). */
-    static int components(String type) {
-        return COMPONENTS[Arrays.asList(TYPES).indexOf(type)];
-    }
-
-    /** Bytes per component of a component type. */
-    static int componentSize(int componentType) {
-        switch (componentType) {
-            case BYTE:
-            case UNSIGNED_BYTE:
-                return 1;
-            case SHORT:
-            case UNSIGNED_SHORT:
-                return 2;
-            default:
-                return 4;
-        }
-    }
-
-    /** Bytes of one element, with the column padding of small matrices (specification 3.6.2.4). */
-    static int elementSize(String type, int componentType) {
-        int size = componentSize(componentType);
-        if (type.equals("MAT2") && size == 1) {
-            return 8;
-        }
-        if (type.equals("MAT3") && size <= 2) {
-            return 12 * size;
-        }
-        return components(type) * size;
-    }
-
-    /** The padding after a small matrix's last column (1- and 2-byte MAT2 and MAT3). */
-    private static int trailingPadding(String type, int componentType) {
-        int size = componentSize(componentType);
-        if (type.equals("MAT2") && size == 1) {
-            return 2;
-        }
-        if (type.equals("MAT3") && size <= 2) {
-            return size;
-        }
-        return 0;
-    }
-
     private void checkAccessor(JsonNode accessor) throws GltfException {
         required(accessor, "componentType", "count", "type");
         int componentType = oneOf(accessor.get("componentType"), 0, BYTE, UNSIGNED_BYTE, SHORT, UNSIGNED_SHORT,
@@ -200,7 +159,7 @@ final class GltfDocumentChecks {
             throw byteOffset.error("byteOffset needs a bufferView");
         }
         String type = accessor.get("type").string();
-        if (!Arrays.asList(TYPES).contains(type)) {
+        if (components(type) == 0) {
             // The schema leaves the list open (a later glTF may add types): an accessor of a type
             // we do not know is refused only by whatever uses it.
             doc.ctx.warn(accessor.get("type").path(), "unknown accessor type \"" + type + "\"; the accessor cannot be read");

@@ -25,11 +25,11 @@ class GltfAccessorTest {
     @Test
     void everyComponentTypeAsIs() throws Exception {
         GltfFixture f = new GltfFixture();
-        int b = f.accessor(Accessors.BYTE, "VEC2", false, -128, 127);
-        int ub = f.accessor(Accessors.UNSIGNED_BYTE, "VEC2", false, 0, 255);
-        int s = f.accessor(Accessors.SHORT, "VEC2", false, -32768, 32767);
-        int us = f.accessor(Accessors.UNSIGNED_SHORT, "VEC2", false, 0, 65535);
-        int ui = f.accessor(Accessors.UNSIGNED_INT, "VEC2", false, 7, 4000000000.0);
+        int b = f.accessor(AccessorFormat.BYTE, "VEC2", false, -128, 127);
+        int ub = f.accessor(AccessorFormat.UNSIGNED_BYTE, "VEC2", false, 0, 255);
+        int s = f.accessor(AccessorFormat.SHORT, "VEC2", false, -32768, 32767);
+        int us = f.accessor(AccessorFormat.UNSIGNED_SHORT, "VEC2", false, 0, 65535);
+        int ui = f.accessor(AccessorFormat.UNSIGNED_INT, "VEC2", false, 7, 4000000000.0);
         int fl = f.floats("VEC2", -1.5, 2.25);
         Accessors a = accessors(f);
         assertArrayEquals(new float[] {-128, 127}, a.floats(b));
@@ -45,10 +45,10 @@ class GltfAccessorTest {
     @Test
     void normalizedIntegersFollowTheSpecificationsFormulas() throws Exception {
         GltfFixture f = new GltfFixture();
-        int b = f.accessor(Accessors.BYTE, "VEC4", true, -128, -127, 64, 127);
-        int ub = f.accessor(Accessors.UNSIGNED_BYTE, "VEC4", true, 0, 1, 128, 255);
-        int s = f.accessor(Accessors.SHORT, "VEC4", true, -32768, -32767, 16384, 32767);
-        int us = f.accessor(Accessors.UNSIGNED_SHORT, "VEC4", true, 0, 1, 32768, 65535);
+        int b = f.accessor(AccessorFormat.BYTE, "VEC4", true, -128, -127, 64, 127);
+        int ub = f.accessor(AccessorFormat.UNSIGNED_BYTE, "VEC4", true, 0, 1, 128, 255);
+        int s = f.accessor(AccessorFormat.SHORT, "VEC4", true, -32768, -32767, 16384, 32767);
+        int us = f.accessor(AccessorFormat.UNSIGNED_SHORT, "VEC4", true, 0, 1, 32768, 65535);
         Accessors a = accessors(f);
         assertArrayEquals(new float[] {-1f, -1f, 64 / 127f, 1f}, a.floats(b));
         assertArrayEquals(new float[] {0f, 1 / 255f, 128 / 255f, 1f}, a.floats(ub));
@@ -76,8 +76,8 @@ class GltfAccessorTest {
     void sparseValuesReplaceTheBaseOrZeros() throws Exception {
         GltfFixture f = new GltfFixture();
         int base = f.floats("SCALAR", 1, 2, 3, 4, 5);
-        int indices = f.view(GltfFixture.encode(Accessors.UNSIGNED_SHORT, 1, 3), 0);
-        int values = f.view(GltfFixture.encode(Accessors.FLOAT, 20, 40), 0);
+        int indices = f.view(GltfFixture.encode(AccessorFormat.UNSIGNED_SHORT, 1, 3), 0);
+        int values = f.view(GltfFixture.encode(AccessorFormat.FLOAT, 20, 40), 0);
         String sparse = ",\"sparse\":{\"count\":2,\"indices\":{\"bufferView\":" + indices
                 + ",\"componentType\":5123},\"values\":{\"bufferView\":" + values + "}}}";
         int onBase = f.accessor("{\"bufferView\":0,\"componentType\":5126,\"type\":\"SCALAR\",\"count\":5" + sparse);
@@ -91,8 +91,8 @@ class GltfAccessorTest {
     @Test
     void sparseIndicesMustIncrease() throws Exception {
         GltfFixture f = new GltfFixture();
-        int indices = f.view(GltfFixture.encode(Accessors.UNSIGNED_BYTE, 3, 1), 0);
-        int values = f.view(GltfFixture.encode(Accessors.FLOAT, 20, 40), 0);
+        int indices = f.view(GltfFixture.encode(AccessorFormat.UNSIGNED_BYTE, 3, 1), 0);
+        int values = f.view(GltfFixture.encode(AccessorFormat.FLOAT, 20, 40), 0);
         int acc = f.accessor("{\"componentType\":5126,\"type\":\"SCALAR\",\"count\":5,\"sparse\":{\"count\":2,"
                 + "\"indices\":{\"bufferView\":" + indices + ",\"componentType\":5121},\"values\":{\"bufferView\":"
                 + values + "}}}");

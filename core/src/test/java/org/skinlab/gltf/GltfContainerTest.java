@@ -22,7 +22,7 @@ class GltfContainerTest {
     private static GltfFixture triangle() {
         GltfFixture f = new GltfFixture();
         f.floats("VEC3", 0, 0, 0, 1, 0, 0, 0, 1, 0);
-        f.accessor(Accessors.UNSIGNED_SHORT, "SCALAR", false, 0, 1, 2);
+        f.accessor(AccessorFormat.UNSIGNED_SHORT, "SCALAR", false, 0, 1, 2);
         return f;
     }
 
@@ -85,7 +85,7 @@ class GltfContainerTest {
     @Test
     void percentEncodedDataUriIsRead() throws Exception {
         GltfFixture f = new GltfFixture();
-        f.accessor(Accessors.UNSIGNED_BYTE, "SCALAR", false, 0, 1, 2, 65);
+        f.accessor(AccessorFormat.UNSIGNED_BYTE, "SCALAR", false, 0, 1, 2, 65);
         String json = f.gltf("").replaceAll("data:[^\"]*", "data:application/gltf-buffer,%00%01%02A");
         byte[] bytes = json.getBytes(StandardCharsets.UTF_8);
         GltfContext ctx = new GltfContext("t.gltf");

@@ -55,8 +55,8 @@ final class GltfFixture {
     /** ",\"min\":[...],\"max\":[...]" of the stored values, or nothing when one is not finite. */
     private static String bounds(int componentType, int components, byte[] data) {
         ByteBuffer b = ByteBuffer.wrap(data).order(ByteOrder.LITTLE_ENDIAN);
-        int n = componentType == Accessors.FLOAT || componentType == Accessors.UNSIGNED_INT ? data.length / 4
-                : componentType == Accessors.SHORT || componentType == Accessors.UNSIGNED_SHORT ? data.length / 2
+        int n = componentType == AccessorFormat.FLOAT || componentType == AccessorFormat.UNSIGNED_INT ? data.length / 4
+                : componentType == AccessorFormat.SHORT || componentType == AccessorFormat.UNSIGNED_SHORT ? data.length / 2
                 : data.length;
         if (n == 0) {
             return "";
@@ -68,19 +68,19 @@ final class GltfFixture {
         for (int i = 0; i < n; i++) {
             double v;
             switch (componentType) {
-                case Accessors.FLOAT:
+                case AccessorFormat.FLOAT:
                     v = b.getFloat(4 * i);
                     break;
-                case Accessors.UNSIGNED_INT:
+                case AccessorFormat.UNSIGNED_INT:
                     v = Integer.toUnsignedLong(b.getInt(4 * i));
                     break;
-                case Accessors.SHORT:
+                case AccessorFormat.SHORT:
                     v = b.getShort(2 * i);
                     break;
-                case Accessors.UNSIGNED_SHORT:
+                case AccessorFormat.UNSIGNED_SHORT:
                     v = b.getShort(2 * i) & 0xffff;
                     break;
-                case Accessors.BYTE:
+                case AccessorFormat.BYTE:
                     v = b.get(i);
                     break;
                 default:
@@ -105,23 +105,23 @@ final class GltfFixture {
     }
 
     int floats(String type, double... values) {
-        return accessor(Accessors.FLOAT, type, false, values);
+        return accessor(AccessorFormat.FLOAT, type, false, values);
     }
 
     static byte[] encode(int componentType, double... values) {
-        int size = componentType == Accessors.FLOAT || componentType == Accessors.UNSIGNED_INT ? 4
-                : componentType == Accessors.SHORT || componentType == Accessors.UNSIGNED_SHORT ? 2 : 1;
+        int size = componentType == AccessorFormat.FLOAT || componentType == AccessorFormat.UNSIGNED_INT ? 4
+                : componentType == AccessorFormat.SHORT || componentType == AccessorFormat.UNSIGNED_SHORT ? 2 : 1;
         ByteBuffer b = ByteBuffer.allocate(values.length * size).order(ByteOrder.LITTLE_ENDIAN);
         for (double v : values) {
             switch (componentType) {
-                case Accessors.FLOAT:
+                case AccessorFormat.FLOAT:
                     b.putFloat((float) v);
                     break;
-                case Accessors.UNSIGNED_INT:
+                case AccessorFormat.UNSIGNED_INT:
                     b.putInt((int) (long) v);
                     break;
-                case Accessors.SHORT:
-                case Accessors.UNSIGNED_SHORT:
+                case AccessorFormat.SHORT:
+                case AccessorFormat.UNSIGNED_SHORT:
                     b.putShort((short) (long) v);
                     break;
                 default:

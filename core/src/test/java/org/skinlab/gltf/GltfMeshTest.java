@@ -30,7 +30,7 @@ class GltfMeshTest {
     void indexedFanTurnsAroundItsFirstVertex() throws Exception {
         GltfFixture f = new GltfFixture();
         f.floats("VEC3", FIVE_POINTS);
-        f.accessor(Accessors.UNSIGNED_BYTE, "SCALAR", false, 4, 0, 1, 3);
+        f.accessor(AccessorFormat.UNSIGNED_BYTE, "SCALAR", false, 4, 0, 1, 3);
         Mesh mesh = GltfFixture.read(f.singleMesh("{\"attributes\":{\"POSITION\":0},\"indices\":1,\"mode\":6}"))
                 .meshes().get(0);
         // Fan triangle i is (v_(i+1), v_(i+2), v_0) with v = indices.
@@ -41,8 +41,8 @@ class GltfMeshTest {
     void primitivesBecomePartsAndShareVerticesOnlyWhenTheirAttributesAreTheSame() throws Exception {
         GltfFixture f = new GltfFixture();
         f.floats("VEC3", FIVE_POINTS); // 0
-        f.accessor(Accessors.UNSIGNED_SHORT, "SCALAR", false, 0, 1, 2); // 1
-        f.accessor(Accessors.UNSIGNED_INT, "SCALAR", false, 2, 1, 3); // 2
+        f.accessor(AccessorFormat.UNSIGNED_SHORT, "SCALAR", false, 0, 1, 2); // 1
+        f.accessor(AccessorFormat.UNSIGNED_INT, "SCALAR", false, 2, 1, 3); // 2
         f.floats("VEC3", 0, 0, 5, 1, 0, 5, 0, 1, 5); // 3
         String json = f.gltf("\"materials\":[{\"name\":\"red\"},{\"name\":\"blue\"}],"
                 + "\"meshes\":[{\"name\":\"m\",\"primitives\":["
@@ -102,9 +102,9 @@ class GltfMeshTest {
         GltfFixture f = new GltfFixture();
         f.floats("VEC3", 0, 0, 0, 1, 0, 0, 0, 1, 0); // 0
         f.floats("VEC3", 0, 0, 1, 0, 0, 1, 0, 0, 1); // 1
-        f.accessor(Accessors.UNSIGNED_BYTE, "VEC3", true, 255, 0, 0, 0, 255, 0, 0, 0, 51); // 2
+        f.accessor(AccessorFormat.UNSIGNED_BYTE, "VEC3", true, 255, 0, 0, 0, 255, 0, 0, 0, 51); // 2
         f.floats("VEC2", 0, 0, 1, 0, 0, 1); // 3
-        f.accessor(Accessors.UNSIGNED_SHORT, "VEC2", true, 0, 65535, 65535, 65535, 0, 0); // 4
+        f.accessor(AccessorFormat.UNSIGNED_SHORT, "VEC2", true, 0, 65535, 65535, 65535, 0, 0); // 4
         Mesh mesh = GltfFixture.read(f.singleMesh("{\"attributes\":{\"POSITION\":0,\"NORMAL\":1,\"COLOR_0\":2,"
                 + "\"TEXCOORD_1\":4,\"TEXCOORD_0\":3}}")).meshes().get(0);
         assertArrayEquals(new float[] {0, 0, 1, 0, 0, 1, 0, 0, 1}, mesh.normals());
@@ -133,7 +133,7 @@ class GltfMeshTest {
     void indexOutOfRangeNamesTheIndicesPath() throws Exception {
         GltfFixture f = new GltfFixture();
         f.floats("VEC3", 0, 0, 0, 1, 0, 0, 0, 1, 0);
-        f.accessor(Accessors.UNSIGNED_BYTE, "SCALAR", false, 0, 1, 3);
+        f.accessor(AccessorFormat.UNSIGNED_BYTE, "SCALAR", false, 0, 1, 3);
         GltfException e = assertThrows(GltfException.class, () -> GltfFixture.read(
                 f.singleMesh("{\"attributes\":{\"POSITION\":0},\"indices\":1}")));
         assertEquals("test.gltf: /meshes/0/primitives/0/indices: index 2 is 3 but the primitive has 3 vertices",
@@ -155,7 +155,7 @@ class GltfMeshTest {
     void thePrimitiveRestartValueIsRefused() throws Exception {
         GltfFixture f = new GltfFixture();
         f.floats("VEC3", 0, 0, 0, 1, 0, 0, 0, 1, 0);
-        f.accessor(Accessors.UNSIGNED_BYTE, "SCALAR", false, 0, 1, 255);
+        f.accessor(AccessorFormat.UNSIGNED_BYTE, "SCALAR", false, 0, 1, 255);
         GltfException e = assertThrows(GltfException.class, () -> GltfFixture.read(
                 f.singleMesh("{\"attributes\":{\"POSITION\":0},\"indices\":1}")));
         assertEquals("test.gltf: /meshes/0/primitives/0/indices: index 2 is the primitive restart value 255, which glTF"
@@ -165,7 +165,7 @@ class GltfMeshTest {
     @Test
     void attributeOfTheWrongFormatIsRefused() throws Exception {
         GltfFixture f = new GltfFixture();
-        f.accessor(Accessors.SHORT, "VEC3", false, 0, 0, 0, 1, 0, 0, 0, 1, 0);
+        f.accessor(AccessorFormat.SHORT, "VEC3", false, 0, 0, 0, 1, 0, 0, 0, 1, 0);
         GltfException e = assertThrows(GltfException.class, () -> GltfFixture.read(
                 f.singleMesh("{\"attributes\":{\"POSITION\":0}}")));
         assertEquals("/meshes/0/primitives/0/attributes/POSITION", e.path());
@@ -174,7 +174,7 @@ class GltfMeshTest {
     @Test
     void quantizedPositionsAreReadWithKhrMeshQuantization() throws Exception {
         GltfFixture f = new GltfFixture();
-        f.accessor(Accessors.SHORT, "VEC3", false, 0, 0, 0, 100, 0, 0, 0, -100, 0);
+        f.accessor(AccessorFormat.SHORT, "VEC3", false, 0, 0, 0, 100, 0, 0, 0, -100, 0);
         String json = f.gltf("\"extensionsUsed\":[\"KHR_mesh_quantization\"],\"extensionsRequired\":"
                 + "[\"KHR_mesh_quantization\"],\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0}}]}],"
                 + "\"nodes\":[{\"mesh\":0}],\"scenes\":[{\"nodes\":[0]}]");

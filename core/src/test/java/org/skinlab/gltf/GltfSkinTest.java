@@ -32,7 +32,7 @@ class GltfSkinTest {
 
     private static String twoBoneSkin(GltfFixture f, String skinExtra, String meshNodeExtra, double[] inverseBinds) {
         f.floats("VEC3", 0, 0, 0, 0, 2, 0, 1, 1, 0); // 0 positions
-        f.accessor(Accessors.UNSIGNED_BYTE, "VEC4", false, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0); // 1 joints
+        f.accessor(AccessorFormat.UNSIGNED_BYTE, "VEC4", false, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0); // 1 joints
         f.floats("VEC4", 1, 0, 0, 0, 1, 0, 0, 0, 0.5, 0.5, 0, 0); // 2 weights
         f.floats("MAT4", inverseBinds); // 3
         f.floats("SCALAR", 0); // 4 time
@@ -86,10 +86,10 @@ class GltfSkinTest {
     void everyJointsAndWeightsSetIsRead() throws Exception {
         GltfFixture f = new GltfFixture();
         f.floats("VEC3", 0, 0, 0, 0, 2, 0, 1, 1, 0);
-        f.accessor(Accessors.UNSIGNED_SHORT, "VEC4", false, 0, 1, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0); // 1 JOINTS_0
-        f.accessor(Accessors.UNSIGNED_BYTE, "VEC4", true, 51, 51, 0, 0, 255, 0, 0, 0, 128, 127, 0, 0); // 2 WEIGHTS_0
-        f.accessor(Accessors.UNSIGNED_BYTE, "VEC4", false, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0); // 3 JOINTS_1
-        f.accessor(Accessors.UNSIGNED_BYTE, "VEC4", true, 153, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0); // 4 WEIGHTS_1
+        f.accessor(AccessorFormat.UNSIGNED_SHORT, "VEC4", false, 0, 1, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0); // 1 JOINTS_0
+        f.accessor(AccessorFormat.UNSIGNED_BYTE, "VEC4", true, 51, 51, 0, 0, 255, 0, 0, 0, 128, 127, 0, 0); // 2 WEIGHTS_0
+        f.accessor(AccessorFormat.UNSIGNED_BYTE, "VEC4", false, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0); // 3 JOINTS_1
+        f.accessor(AccessorFormat.UNSIGNED_BYTE, "VEC4", true, 153, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0); // 4 WEIGHTS_1
         Model model = GltfFixture.read(f.gltf("\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0,"
                 + "\"JOINTS_0\":1,\"WEIGHTS_0\":2,\"JOINTS_1\":3,\"WEIGHTS_1\":4}}]}],\"skins\":[{\"joints\":[1,2]}],"
                 + "\"nodes\":[{\"mesh\":0,\"skin\":0},{\"children\":[2]},{}],\"scenes\":[{\"nodes\":[0,1]}]"));
@@ -107,7 +107,7 @@ class GltfSkinTest {
         GltfFixture f = new GltfFixture();
         // Vertices 0 and 1 are one point with one influence; vertex 2 is the same point weighted otherwise.
         f.floats("VEC3", 0, 2, 0, 0, 2, 0, 0, 2, 0);
-        f.accessor(Accessors.UNSIGNED_BYTE, "VEC4", false, 1, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0);
+        f.accessor(AccessorFormat.UNSIGNED_BYTE, "VEC4", false, 1, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0);
         f.floats("VEC4", 1, 0, 0, 0, 1, 0, 0, 0, 0.5, 0.5, 0, 0);
         Model model = GltfFixture.read(f.gltf("\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0,"
                 + "\"JOINTS_0\":1,\"WEIGHTS_0\":2}}]}],\"skins\":[{\"joints\":[1,2]}],"
