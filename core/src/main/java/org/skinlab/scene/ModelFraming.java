@@ -57,7 +57,9 @@ public record ModelFraming(Matrix4fc upright, Vector3f centre, float radius, flo
         for (int g = 0; g < geometries.size(); g++) {
             SkinnedGeometry geometry = geometries.get(g);
             float[] m = frame.skinningMatrices(g);
-            float[] points = geometry.positionArray();
+            // A morphing geometry's own array is rewritten by the simulation thread; the frame holds
+            // the rest shape its palette goes with.
+            float[] points = frame.restPositions(g) != null ? frame.restPositions(g) : geometry.positionArray();
             int[] joints = geometry.jointArray();
             float[] weights = geometry.weightArray();
             int k = geometry.influencesPerPoint();

@@ -7,8 +7,10 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import org.joml.Vector3f;
 import org.junit.jupiter.api.Test;
 import org.skinlab.collada.ColladaImporter;
+import org.skinlab.gltf.GltfImporter;
 import org.skinlab.model.Model;
 import org.skinlab.model.UpAxis;
+import org.skinlab.simulation.AnimationConfig;
 import org.skinlab.simulation.Frame;
 import org.skinlab.simulation.SkeletalAnimatedMesh;
 import org.skinlab.testing.TestPaths;
@@ -47,4 +49,30 @@ class ModelFramingTest {
         assertEquals(0.0, f.centre().z, 1e-5);
     }
 
+    @Test
+    void aMorphingMeshIsFramedAsTheFrameHoldsIt() throws Exception {
+        // The morph's rest shape of the held frame, not the one the simulation has moved on to:
+        // the framing's bounds are those of the frame's own CPU-skinned positions (glTF: Y-up
+        // metres already), to float rounding.
+        Model model = GltfImporter.read(TestPaths.root().resolve("core/src/test/resources/gltf/morph-skin.gltf"));
+        try (SkeletalAnimatedMesh mesh = SkeletalAnimatedMesh.of(model, "pulse", new AnimationConfig())) {
+            mesh.step(0.25);
+            try (Frame held = mesh.acquire()) {
+                for (int i = 0; i < 3; i++) {
+                    mesh.step(0.3);
+                }
+                ModelFraming f = ModelFraming.of(model.asset(), mesh.geometries(), held);
+                float min = Float.POSITIVE_INFINITY;
+                float max = Float.NEGATIVE_INFINITY;
+                for (int g = 0; g < held.geometryCount(); g++) {
+                    float[] p = held.positions(g);
+                    for (int i = 1; i < p.length; i += 3) {
+                        min = Math.min(min, p[i]);
+                        max = Math.max(max, p[i]);
+                    }
+                }
+                assertEquals(max - min, f.height(), 1e-5);
+            }
+        }
+    }
 }
