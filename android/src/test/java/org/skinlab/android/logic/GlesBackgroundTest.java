@@ -48,7 +48,7 @@ class GlesBackgroundTest {
                     .replace("samplerExternalOES", "sampler2D");
             assertNotEquals(app, fragment);
             assertTrue(app.contains("lensSourceCoord("), "lens.glsl is included");
-            int program = link(GlesShaders.BACKGROUND_VERTEX, fragment);
+            int program = GlesPrograms.link(GlesShaders.BACKGROUND_VERTEX, fragment);
             byte[] image = image();
             for (CameraIntrinsics k : new CameraIntrinsics[] {WEBCAM.withDistortion(LensDistortion.NONE), WEBCAM}) {
                 int[] gpu = render(program, image, k);
@@ -175,19 +175,5 @@ class GlesBackgroundTest {
             MemoryUtil.memFree(quad);
             MemoryUtil.memFree(read);
         }
-    }
-
-    private static int link(String vertex, String fragment) {
-        int program = glCreateProgram();
-        for (Object[] s : new Object[][] {{GL_VERTEX_SHADER, vertex}, {GL_FRAGMENT_SHADER, fragment}}) {
-            int shader = glCreateShader((Integer) s[0]);
-            glShaderSource(shader, (String) s[1]);
-            glCompileShader(shader);
-            assertEquals(GL_TRUE, glGetShaderi(shader, GL_COMPILE_STATUS), () -> glGetShaderInfoLog(shader));
-            glAttachShader(program, shader);
-        }
-        glLinkProgram(program);
-        assertEquals(GL_TRUE, glGetProgrami(program, GL_LINK_STATUS), () -> glGetProgramInfoLog(program));
-        return program;
     }
 }

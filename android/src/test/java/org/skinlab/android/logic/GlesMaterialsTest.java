@@ -60,7 +60,7 @@ class GlesMaterialsTest {
     @BeforeAll
     static void open() {
         context = GlesContext.openOrSkip();
-        program = link(GlesShaders.skinnedVertex(), GlesShaders.skinnedFragment());
+        program = GlesPrograms.link(GlesShaders.skinnedVertex(), GlesShaders.skinnedFragment());
     }
 
     @AfterAll
@@ -389,28 +389,5 @@ class GlesMaterialsTest {
                 glDeleteTextures(t);
             }
         }
-    }
-
-    private static int link(String vertex, String fragment) {
-        int p = glCreateProgram();
-        int[] shaders = {compile(GL_VERTEX_SHADER, vertex), compile(GL_FRAGMENT_SHADER, fragment)};
-        for (int s : shaders) {
-            glAttachShader(p, s);
-        }
-        glLinkProgram(p);
-        for (int s : shaders) {
-            glDetachShader(p, s);
-            glDeleteShader(s);
-        }
-        assertEquals(GL_TRUE, glGetProgrami(p, GL_LINK_STATUS), () -> "link: " + glGetProgramInfoLog(p));
-        return p;
-    }
-
-    private static int compile(int type, String source) {
-        int s = glCreateShader(type);
-        glShaderSource(s, source);
-        glCompileShader(s);
-        assertEquals(GL_TRUE, glGetShaderi(s, GL_COMPILE_STATUS), () -> "compile: " + glGetShaderInfoLog(s));
-        return s;
     }
 }

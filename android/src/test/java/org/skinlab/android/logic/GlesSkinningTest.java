@@ -84,7 +84,7 @@ class GlesSkinningTest {
     @BeforeAll
     static void openContextAndLoadAssets() throws Exception {
         context = GlesContext.openOrSkip();
-        program = link(GlesShaders.skinnedVertex(), GlesShaders.skinnedFragment());
+        program = GlesPrograms.link(GlesShaders.skinnedVertex(), GlesShaders.skinnedFragment(), SkinnedVertexCapture.VARYINGS);
         Path root = Path.of(System.getProperty("skinlab.root", ".."));
         List<Path> files = new ArrayList<>();
         try (DirectoryStream<Path> dirs = Files.newDirectoryStream(root.resolve("assets"), Files::isDirectory)) {
@@ -287,31 +287,6 @@ class GlesSkinningTest {
             }
         }
         return largest;
-    }
-
-
-    private static int link(String vertex, String fragment) {
-        int p = glCreateProgram();
-        int[] shaders = {compile(GL_VERTEX_SHADER, vertex), compile(GL_FRAGMENT_SHADER, fragment)};
-        for (int s : shaders) {
-            glAttachShader(p, s);
-        }
-        glTransformFeedbackVaryings(p, SkinnedVertexCapture.VARYINGS, GL_INTERLEAVED_ATTRIBS);
-        glLinkProgram(p);
-        for (int s : shaders) {
-            glDetachShader(p, s);
-            glDeleteShader(s);
-        }
-        assertEquals(GL_TRUE, glGetProgrami(p, GL_LINK_STATUS), () -> "link: " + glGetProgramInfoLog(p));
-        return p;
-    }
-
-    private static int compile(int type, String source) {
-        int s = glCreateShader(type);
-        glShaderSource(s, source);
-        glCompileShader(s);
-        assertEquals(GL_TRUE, glGetShaderi(s, GL_COMPILE_STATUS), () -> "compile: " + glGetShaderInfoLog(s));
-        return s;
     }
 
     /** The largest errors seen. */
