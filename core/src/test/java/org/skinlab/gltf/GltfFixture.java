@@ -46,7 +46,7 @@ final class GltfFixture {
     int accessor(int componentType, String type, boolean normalized, double... values) {
         byte[] data = encode(componentType, values);
         int view = view(data, 0);
-        int components = components(type);
+        int components = AccessorFormat.components(type);
         return accessor("{\"bufferView\":" + view + ",\"componentType\":" + componentType + ",\"type\":\"" + type
                 + "\",\"count\":" + values.length / components + (normalized ? ",\"normalized\":true" : "")
                 + bounds(componentType, components, data) + "}");
@@ -109,8 +109,7 @@ final class GltfFixture {
     }
 
     static byte[] encode(int componentType, double... values) {
-        int size = componentType == AccessorFormat.FLOAT || componentType == AccessorFormat.UNSIGNED_INT ? 4
-                : componentType == AccessorFormat.SHORT || componentType == AccessorFormat.UNSIGNED_SHORT ? 2 : 1;
+        int size = AccessorFormat.componentSize(componentType);
         ByteBuffer b = ByteBuffer.allocate(values.length * size).order(ByteOrder.LITTLE_ENDIAN);
         for (double v : values) {
             switch (componentType) {
@@ -129,23 +128,6 @@ final class GltfFixture {
             }
         }
         return b.array();
-    }
-
-    static int components(String type) {
-        switch (type) {
-            case "SCALAR":
-                return 1;
-            case "VEC2":
-                return 2;
-            case "VEC3":
-                return 3;
-            case "MAT3":
-                return 9;
-            case "MAT4":
-                return 16;
-            default:
-                return 4;
-        }
     }
 
     /** The whole .gltf text: asset, buffer (data URI), views, accessors, then {@code rest}. */
