@@ -1,9 +1,12 @@
 package org.skinlab.skinning;
 
+import java.util.List;
+
 import org.joml.Matrix3f;
 import org.joml.Matrix4f;
 import org.skinlab.model.MeshInstance;
 import org.skinlab.model.Morph;
+import org.skinlab.model.Node;
 import org.skinlab.model.Skin;
 
 /**
@@ -30,10 +33,10 @@ final class MorphedRestShape {
     private final float[] meshNormals;
 
     /** @param rest {@code SkinnedGeometry.of(instance)}, kept unmorphed */
-    MorphedRestShape(MeshInstance instance, Morph morph, SkinnedGeometry rest) {
+    MorphedRestShape(MeshInstance instance, List<Node> nodes, Morph morph, SkinnedGeometry rest) {
         this.morph = morph;
         this.rest = rest;
-        this.geometry = SkinnedGeometry.of(instance);
+        this.geometry = SkinnedGeometry.of(instance, nodes);
         this.meshPositions = new float[3 * morph.base().positionCount()];
         int vertices = geometry.vertexCount();
         positionOfPoint = new int[geometry.pointCount()];

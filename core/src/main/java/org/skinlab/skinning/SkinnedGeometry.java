@@ -1,6 +1,7 @@
 package org.skinlab.skinning;
 
 import java.util.Arrays;
+import java.util.List;
 
 import org.joml.Matrix3f;
 import org.joml.Matrix4f;
@@ -8,6 +9,7 @@ import org.joml.Matrix4fc;
 import org.joml.Vector3f;
 import org.skinlab.model.Mesh;
 import org.skinlab.model.MeshInstance;
+import org.skinlab.model.Node;
 import org.skinlab.model.Skin;
 
 /**
@@ -63,6 +65,10 @@ public final class SkinnedGeometry {
     private final int[] frameOfPoint;
     private final SkinnedGeometry sharedPositions;
     private final boolean windingMirrored;
+    /** Per palette joint, the palette joint of its nearest ancestor node that is one, else -1. */
+    private final int[] jointParents;
+    /** The bone methods' segments, computed on first request ({@link Bones}). */
+    private volatile Bones bones;
     /** CoR skinning's centres, computed on first request (CentersOfRotation). */
     private volatile float[] centersOfRotation;
     /**
@@ -77,15 +83,20 @@ public final class SkinnedGeometry {
 
     private SkinnedGeometry(MeshInstance instance, int vertexCount, float[] positions, float[] normals,
             int influences, int[] joints, float[] weights, int[] jointNodes, float[] bindMatrices,
-            int[] pointOfPosition) {
+            int[] pointOfPosition, int[] jointParents) {
         this(instance, vertexCount, positions, normals, influences, joints, weights, jointNodes, bindMatrices,
-                pointOfPosition, null, null, false);
+                pointOfPosition, null, null, false, jointParents);
     }
 
     private SkinnedGeometry(MeshInstance instance, int vertexCount, float[] positions, float[] normals,
             int influences, int[] joints, float[] weights, int[] jointNodes, float[] bindMatrices,
-            int[] pointOfPosition, int[] frameOfPoint, SkinnedGeometry sharedPositions, boolean windingMirrored) {
+            int[] pointOfPosition, int[] frameOfPoint, SkinnedGeometry sharedPositions, boolean windingMirrored,
+            int[] jointParents) {
+        if (jointParents.length != jointNodes.length) {
+            throw new IllegalArgumentException("need one parent per palette joint");
+        }
         this.instance = instance;
+        this.jointParents = jointParents;
         this.vertexCount = vertexCount;
         this.pointCount = positions.length / 3;
         this.positions = positions;
@@ -104,8 +115,20 @@ public final class SkinnedGeometry {
         this.windingMirrored = windingMirrored;
     }
 
-    /** The runtime geometry of a placed mesh, skinned or static. */
+    /**
+     * The runtime geometry of a placed mesh, skinned or static, without the scene's node tree: no
+     * joint has a parent ({@link #jointParent}), so each bone of {@link #bones()} is a leaf.
+     */
     public static SkinnedGeometry of(MeshInstance instance) {
+        return of(instance, List.of());
+    }
+
+    /**
+     * The runtime geometry of a placed mesh of a model whose nodes are {@code nodes}
+     * ({@link org.skinlab.model.Model#nodes()}): each joint's parent is the palette joint of its
+     * nearest ancestor node that is one.
+     */
+    public static SkinnedGeometry of(MeshInstance instance, List<Node> nodes) {
         Mesh mesh = instance.mesh();
         int vertices = mesh.vertexCount();
         int[] pointOfPosition = new int[mesh.positionCount()];
@@ -144,10 +167,10 @@ public final class SkinnedGeometry {
             float[] weights = new float[points];
             Arrays.fill(weights, 1f);
             return new SkinnedGeometry(instance, vertices, positions, normals, 1, joints, weights,
-                    new int[] {instance.node()}, new Matrix4f().get(new float[16]), pointOfPosition);
+                    new int[] {instance.node()}, new Matrix4f().get(new float[16]), pointOfPosition, new int[] {-1});
         }
         SkinnedGeometry byPoint = skinned(instance, skin, vertices, positions, normals, positionOfPoint,
-                pointOfPosition);
+                pointOfPosition, nodes);
         if (points == pointOfPosition.length) {
             return byPoint; // one point per position: nothing to share
         }
@@ -170,9 +193,9 @@ public final class SkinnedGeometry {
             identity[p] = p;
         }
         SkinnedGeometry shared = new SkinnedGeometry(instance, 0, sourcePositions, new float[3 * positionCount], w,
-                rowJoints, rowWeights, jointNodes, bindMatrices, identity, null, null, windingMirrored);
+                rowJoints, rowWeights, jointNodes, bindMatrices, identity, null, null, windingMirrored, jointParents);
         return new SkinnedGeometry(instance, vertexCount, positions, normals, w, joints, weights, jointNodes,
-                bindMatrices, pointOfPosition, positionOfPoint, shared, windingMirrored);
+                bindMatrices, pointOfPosition, positionOfPoint, shared, windingMirrored, jointParents);
     }
 
     /**
@@ -188,6 +211,17 @@ public final class SkinnedGeometry {
      */
     public static SkinnedGeometry fromArrays(float[] positions, float[] normals, int influences, int[] joints,
             float[] weights, float[] bindMatrices) {
+        int[] roots = new int[bindMatrices.length / 16];
+        Arrays.fill(roots, -1);
+        return fromArrays(positions, normals, influences, joints, weights, bindMatrices, roots);
+    }
+
+    /**
+     * As {@link #fromArrays(float[], float[], int, int[], float[], float[])} with a joint
+     * hierarchy: {@code jointParents[j]} is joint j's parent joint, or -1 for a root.
+     */
+    public static SkinnedGeometry fromArrays(float[] positions, float[] normals, int influences, int[] joints,
+            float[] weights, float[] bindMatrices, int[] jointParents) {
         int points = positions.length / 3;
         if (positions.length != 3 * points || normals.length != 3 * points || influences < 1
                 || joints.length != influences * points || weights.length != influences * points
@@ -195,6 +229,16 @@ public final class SkinnedGeometry {
             throw new IllegalArgumentException("array sizes disagree");
         }
         int jointCount = bindMatrices.length / 16;
+        if (jointParents.length != jointCount) {
+            throw new IllegalArgumentException("need one parent per palette joint");
+        }
+        for (int j = 0; j < jointCount; j++) {
+            // Parents before children keeps the hierarchy acyclic.
+            if (jointParents[j] < -1 || jointParents[j] >= j) {
+                throw new IllegalArgumentException("joint " + j + "'s parent " + jointParents[j]
+                        + " must be -1 or an earlier joint");
+            }
+        }
         for (float w : weights) {
             if (!(w >= 0f) || Float.isInfinite(w)) {
                 throw new IllegalArgumentException("weight " + w + ": weights must be finite and not negative");
@@ -212,11 +256,11 @@ public final class SkinnedGeometry {
         int[] nodes = new int[jointCount];
         Arrays.fill(nodes, -1);
         return new SkinnedGeometry(null, points, positions, normals, influences, joints, weights, nodes,
-                bindMatrices, identity);
+                bindMatrices, identity, jointParents.clone());
     }
 
     private static SkinnedGeometry skinned(MeshInstance instance, Skin skin, int vertices, float[] positions,
-            float[] normals, int[] positionOfPoint, int[] pointOfPosition) {
+            float[] normals, int[] positionOfPoint, int[] pointOfPosition, List<Node> nodes) {
         int points = positionOfPoint.length;
         int skinJoints = skin.jointCount();
         int bindShapeJoint = skinJoints; // the pseudo-joint's palette index, used only if needed
@@ -298,7 +342,31 @@ public final class SkinnedGeometry {
             m.identity().scale(mirrorBindFrames ? -1f : 1f, 1f, 1f).get(bind, 16 * skinJoints);
         }
         return new SkinnedGeometry(instance, vertices, positions, normals, width, joints, weights, jointNodes, bind,
-                pointOfPosition, null, null, mirrored);
+                pointOfPosition, null, null, mirrored, jointParents(jointNodes, nodes));
+    }
+
+    /** Per palette joint, the palette joint of its nearest ancestor node in the palette, else -1. */
+    private static int[] jointParents(int[] jointNodes, List<Node> nodes) {
+        int[] parents = new int[jointNodes.length];
+        Arrays.fill(parents, -1);
+        if (nodes.isEmpty()) {
+            return parents;
+        }
+        int[] jointOfNode = new int[nodes.size()];
+        Arrays.fill(jointOfNode, -1);
+        for (int j = jointNodes.length - 1; j >= 0; j--) {
+            if (jointNodes[j] >= 0) {
+                jointOfNode[jointNodes[j]] = j; // a node listed twice: its first joint
+            }
+        }
+        for (int j = 0; j < jointNodes.length; j++) {
+            int node = jointNodes[j] < 0 ? -1 : nodes.get(jointNodes[j]).parent();
+            while (node >= 0 && jointOfNode[node] < 0) {
+                node = nodes.get(node).parent();
+            }
+            parents[j] = node >= 0 && jointOfNode[node] != j ? jointOfNode[node] : -1;
+        }
+        return parents;
     }
 
     /** Whether every bind frame of the skin mirrors (then the common mirror moves into the points). */
@@ -516,9 +584,34 @@ public final class SkinnedGeometry {
         return perPosition;
     }
 
-    /** A palette sized for this geometry, with its DQS pivots. */
+    /** Palette joint {@code j}'s parent joint, or -1 (a root, or no node tree known). */
+    public int jointParent(int j) {
+        return jointParents[j];
+    }
+
+    /**
+     * The bones of the palette's joints (segments in bind space) for the methods that read them
+     * ({@link SkinningMethod#usesBones()}), computed on the first call and kept; a geometry whose
+     * rest shape morphs has those of its unmorphed rest shape.
+     */
+    public Bones bones() {
+        Bones b = bones;
+        if (b == null) {
+            synchronized (this) {
+                b = bones;
+                if (b == null) {
+                    SkinnedGeometry rest = centresOfRestShape;
+                    b = rest != null ? rest.bones() : Bones.of(this);
+                    bones = b;
+                }
+            }
+        }
+        return b;
+    }
+
+    /** A palette sized for this geometry, with its DQS pivots and its bones. */
     public JointPalette newPalette() {
-        return new JointPalette(bindMatrices);
+        return new JointPalette(bindMatrices, this::bones);
     }
 
     /** Copies the deformed positions of points into position order (3 floats per POSITION entry). */

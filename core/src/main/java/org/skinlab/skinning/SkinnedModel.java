@@ -33,6 +33,7 @@ public final class SkinnedModel {
     private final List<SkinnedGeometry> geometries;
     private final JointPalette[] palettes;
     private final boolean[] dualQuaternionsReady;
+    private final boolean[] bonesReady;
     private final Skinner[][] skinners;
     private final NormalTransform normals;
     private final MorphWeightSampler morphSampler;
@@ -57,13 +58,14 @@ public final class SkinnedModel {
         List<SkinnedGeometry> list = new ArrayList<>();
         for (MeshInstance instance : model.instances()) {
             int g = list.size();
-            list.add(morphSampler.animates(g) ? morph(g, instance, SkinnedGeometry.of(instance))
-                    : SkinnedGeometry.of(instance));
+            list.add(morphSampler.animates(g) ? morph(g, instance, SkinnedGeometry.of(instance, model.nodes()))
+                    : SkinnedGeometry.of(instance, model.nodes()));
         }
         this.geometries = List.copyOf(list);
         int n = geometries.size();
         palettes = new JointPalette[n];
         dualQuaternionsReady = new boolean[n];
+        bonesReady = new boolean[n];
         skinners = new Skinner[n][SkinningMethod.values().length];
         for (int g = 0; g < n; g++) {
             SkinnedGeometry geometry = geometries.get(g);
@@ -100,6 +102,7 @@ public final class SkinnedModel {
         int n = list.size();
         palettes = new JointPalette[n];
         dualQuaternionsReady = new boolean[n];
+        bonesReady = new boolean[n];
         skinners = new Skinner[n][];
         for (int g = 0; g < n; g++) {
             if (template.morphed[g] != null) {
@@ -117,7 +120,7 @@ public final class SkinnedModel {
     }
 
     private SkinnedGeometry morph(int g, MeshInstance instance, SkinnedGeometry rest) {
-        morphed[g] = new MorphedRestShape(instance, morphSampler.morph(g), rest);
+        morphed[g] = new MorphedRestShape(instance, model.nodes(), morphSampler.morph(g), rest);
         return morphed[g].geometry();
     }
 
@@ -185,6 +188,24 @@ public final class SkinnedModel {
         return palettes[g];
     }
 
+    /**
+     * As {@link #preparePalette(int)}, and fills the palette's bone rows for the current pose
+     * ({@link JointPalette#prepareBones()}, once), for the methods that read them.
+     */
+    public JointPalette prepareBones(int g) {
+        preparePalette(g);
+        if (!bonesReady[g]) {
+            palettes[g].prepareBones();
+            bonesReady[g] = true;
+        }
+        return palettes[g];
+    }
+
+    /** The palette of geometry {@code g} prepared for a method: what {@link #skin} hands its skinner. */
+    public JointPalette preparePalette(int g, SkinningMethod method) {
+        return method.usesBones() ? prepareBones(g) : method.usesDualQuaternions() ? preparePalette(g) : palettes[g];
+    }
+
     /** The skinner geometry {@code g} uses for a method (made on first use). */
     public Skinner skinner(int g, SkinningMethod method) {
         Skinner s = skinners[g][method.ordinal()];
@@ -221,6 +242,7 @@ public final class SkinnedModel {
             skeleton.skinningMatrices(pose, geometry.jointNodeArray(), geometry.bindMatrixArray(),
                     palettes[g].matrices());
             dualQuaternionsReady[g] = false;
+            bonesReady[g] = false;
         }
     }
 
@@ -229,10 +251,6 @@ public final class SkinnedModel {
      * (size {@code 3 * pointCount()}). DQS derives the palette's dual quaternions once per pose.
      */
     public void skin(int g, SkinningMethod method, float[] outPositions, float[] outNormals) {
-        if (method != SkinningMethod.LBS) {
-            // DQS and CoR read the rotations of the dual quaternions.
-            preparePalette(g);
-        }
-        skinner(g, method).skinAll(palettes[g], outPositions, outNormals);
+        skinner(g, method).skinAll(preparePalette(g, method), outPositions, outNormals);
     }
 }

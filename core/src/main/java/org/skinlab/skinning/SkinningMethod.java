@@ -15,20 +15,59 @@ public enum SkinningMethod {
      * in DQS, the translation LBS's at a per-point centre of rotation precomputed from the weights
      * ({@link CentersOfRotation}); see {@link ScalarCorSkinner}.
      */
-    COR;
+    COR,
+    /**
+     * Bulge-free DQS (Kim and Han 2014, as the thesis' section "DQS - Wölbungen" describes it): DQS,
+     * then a point that ended up farther from its bone segment than at rest is pulled back
+     * towards it; see docs/skinning.md.
+     */
+    BFDQS,
+    /**
+     * Stretchable and twistable bones (Jacobson and Sorkine 2011) on top of LBS: each influence's
+     * transformation takes its bone's stretch and twist in proportion to the point's endpoint
+     * weight along the bone; see docs/skinning.md.
+     */
+    STBS_LBS,
+    /** Stretchable and twistable bones on top of DQS (as {@link #STBS_LBS}, blended as dual quaternions). */
+    STBS_DQS,
+    /**
+     * Spline-based skinning (Forstmann et al. 2007): the bones of a chain become a curve, each
+     * point is bound to a point of the curve and follows its frame; see docs/skinning.md.
+     */
+    SPLINE;
 
-    /** The lower-case name used on the command line and in JSON ("lbs", "dqs", "cor"). */
+    /**
+     * The lower-case name used on the command line and in JSON ("lbs", "dqs", "cor", "bfdqs",
+     * "stbs-lbs", "stbs-dqs", "spline").
+     */
     public String key() {
-        return name().toLowerCase(java.util.Locale.ROOT);
+        return name().toLowerCase(java.util.Locale.ROOT).replace('_', '-');
     }
 
-    /** The method for a command-line key, case-insensitive. */
+    /**
+     * Whether the method reads its bones ({@link JointPalette#prepareBones()}, after the dual
+     * quaternions) besides the skinning matrices.
+     */
+    public boolean usesBones() {
+        return this == BFDQS || this == STBS_LBS || this == STBS_DQS || this == SPLINE;
+    }
+
+    /** Whether the method reads the palette's dual quaternions ({@link JointPalette#prepareDualQuaternions()}). */
+    public boolean usesDualQuaternions() {
+        return this != LBS;
+    }
+
+    /** The method for a command-line key, case-insensitive ("stbs_lbs" is taken for "stbs-lbs"). */
     public static SkinningMethod fromKey(String key) {
         for (SkinningMethod m : values()) {
-            if (m.name().equalsIgnoreCase(key)) {
+            if (m.key().equalsIgnoreCase(key) || m.name().equalsIgnoreCase(key)) {
                 return m;
             }
         }
-        throw new IllegalArgumentException("unknown skinning method \"" + key + "\" (expected lbs, dqs or cor)");
+        StringBuilder keys = new StringBuilder();
+        for (SkinningMethod m : values()) {
+            keys.append(keys.length() == 0 ? "" : ", ").append(m.key());
+        }
+        throw new IllegalArgumentException("unknown skinning method \"" + key + "\" (expected one of " + keys + ")");
     }
 }
