@@ -110,7 +110,7 @@ final class EvalTimeSection implements EvalSection {
                 for (int k = 0; k < 2; k++) {
                     boolean scalar = k == 1;
                     FrameBench bench = new FrameBench(models.get(a), NormalTransform.INVERSE_TRANSPOSE,
-                            PositionSharing.AUTO, scalar, cap);
+                            PositionSharing.AUTO, scalar, cap, List.of(SkinningMethod.values()));
                     FrameBench.Shape shape = bench.shape();
                     if (cap == 0 && !scalar) {
                         asset.put("positionsSkinned", shape.positionsSkinned());

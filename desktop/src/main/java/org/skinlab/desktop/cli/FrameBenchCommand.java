@@ -152,7 +152,7 @@ public final class FrameBenchCommand implements Callable<Integer> {
                 }
                 continue;
             }
-            FrameBench bench = new FrameBench(model, rule, sharing);
+            FrameBench bench = new FrameBench(model, rule, sharing, methods);
             List<FrameBench.Timing> timings = new ArrayList<>();
             for (SkinningMethod m : methods) {
                 double w = warmupSeconds == null && warmed.add(m) ? Math.max(warmup, FIRST_WARMUP) : warmup;

@@ -37,7 +37,7 @@ class MethodKeysTest {
                 assertEquals(m, view.method);
                 assertEquals(m, view.split);
                 ArCommand ar = new ArCommand();
-                new CommandLine(ar).parseArgs("--method", key);
+                new CommandLine(ar).parseArgs("--images", "frames", "--method", key);
                 assertEquals(m, ar.method);
             }
         }
