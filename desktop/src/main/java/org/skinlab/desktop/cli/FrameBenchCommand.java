@@ -218,7 +218,11 @@ public final class FrameBenchCommand implements Callable<Integer> {
         if (method.equalsIgnoreCase("both")) {
             return List.of(SkinningMethod.LBS, SkinningMethod.DQS);
         }
-        return MethodKeys.parseOneOrAll("--method", method);
+        try {
+            return MethodKeys.parseOneOrAll(method);
+        } catch (IllegalArgumentException e) {
+            throw usage(e.getMessage() + " (or both)");
+        }
     }
 
     private NormalTransform parseNormals() {
