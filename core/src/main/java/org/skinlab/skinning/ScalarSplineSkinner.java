@@ -12,12 +12,15 @@ package org.skinlab.skinning;
  *     quaternions' real parts, the rigid parts D), then turned by the minimal rotation T that
  *     takes {@code Q f0'(x)} onto {@code f'(x)}: {@code F = T Q}, so the cross-section stays
  *     perpendicular to the curve and the twist is spread linearly in x. In the rest pose F = I;</li>
- * <li>{@code p_k = f(x) + F (p - f0(x))}, the normal turned by F.</li>
+ * <li>{@code p_k = f(x) + F (p - f0(x))}, the normal turned by F; with joint scale this frame
+ *     the offset first goes through the scale parts blended along the curve,
+ *     {@code p_k = f(x) + F S(x) (p - f0(x))}, {@code S(x) = (1 - x) S_p + x S_c} (linear parts;
+ *     see {@link JointPalette}), so cross-sections squash and stretch with their bones.</li>
  * </ol>
  * A rigid influence gives {@code p_k = M_j p}, its normal matrix M_j's (cofactor under exact
  * normals). The point is {@code sum_k w_k p_k}, its normal matrix {@code sum_k w_k N_k}. At the
  * ends of a curve F is the bone's rotation and f the bone's middle, so a point moves with its
- * bone there whichever side it is bound to (for joints without scale). The palette must have its
+ * bone there whichever side it is bound to (M = D S). The palette must have its
  * dual quaternions and bone rows prepared.
  */
 public final class ScalarSplineSkinner extends AbstractSkinner {
@@ -69,7 +72,7 @@ public final class ScalarSplineSkinner extends AbstractSkinner {
             if (c < 0) {
                 addRigid(palette.matrices(), 12 * joints[o + k], w, px, py, pz, exactNormals, mirrors, out);
             } else {
-                addCurve(palette, c, PARAMETER_OFFSET * (o + k), w, px, py, pz, out);
+                addCurve(palette, c, PARAMETER_OFFSET * (o + k), w, px, py, pz, exactNormals, out);
             }
         }
     }
@@ -110,7 +113,8 @@ public final class ScalarSplineSkinner extends AbstractSkinner {
     }
 
     /** Adds w (f(x) + F (p - f0(x))) and w F for the curve across joint c (class comment). */
-    private void addCurve(JointPalette palette, int c, int q, float w, float px, float py, float pz, float[] out) {
+    private void addCurve(JointPalette palette, int c, int q, float w, float px, float py, float pz,
+            boolean exactNormals, float[] out) {
         final float[] rows = palette.boneRows();
         final float[] dq = palette.dualQuaternions();
         int b = JointPalette.BONE_FLOATS * c;
@@ -141,10 +145,56 @@ public final class ScalarSplineSkinner extends AbstractSkinner {
         float ux = g12x * d1 + g23x * d2, uy = g12y * d1 + g23y * d2, uz = g12z * d1 + g23z * d2;
         float[] f = out;
         frame(dq, 8 * parent, 8 * c, x, ux, uy, uz, tx, ty, tz, f);
+        if (palette.hasScale()) {
+            addScaledCurve(palette.scales(), 12 * parent, 12 * c, x, w, fx, fy, fz, lx, ly, lz, exactNormals, out);
+            return;
+        }
         out[0] += w * (fx + f[12] * lx + f[13] * ly + f[14] * lz);
         out[1] += w * (fy + f[15] * lx + f[16] * ly + f[17] * lz);
         out[2] += w * (fz + f[18] * lx + f[19] * ly + f[20] * lz);
         addScaled(out, w, f[12], f[13], f[14], f[15], f[16], f[17], f[18], f[19], f[20]);
+    }
+
+    /**
+     * With joint scale: the offset goes through {@code S(x) = (1 - x) S_p + x S_c} (the linear
+     * parts of the joints' scale parts, {@link JointPalette}) before F, so the cross-section
+     * squashes and stretches with the bones and a curve's end moves exactly as its bone's matrix
+     * (M = D S); the normal matrix is F times S(x)'s cofactor (times the sign of its determinant)
+     * or S(x) itself.
+     */
+    private static void addScaledCurve(float[] sc, int p, int c, float x, float w, float fx, float fy, float fz,
+            float lx, float ly, float lz, boolean exactNormals, float[] out) {
+        float y = 1f - x;
+        float s0 = y * sc[p] + x * sc[c], s1 = y * sc[p + 1] + x * sc[c + 1], s2 = y * sc[p + 2] + x * sc[c + 2];
+        float s3 = y * sc[p + 4] + x * sc[c + 4], s4 = y * sc[p + 5] + x * sc[c + 5], s5 = y * sc[p + 6] + x * sc[c + 6];
+        float s6 = y * sc[p + 8] + x * sc[c + 8], s7 = y * sc[p + 9] + x * sc[c + 9];
+        float s8 = y * sc[p + 10] + x * sc[c + 10];
+        float mx = s0 * lx + s1 * ly + s2 * lz, my = s3 * lx + s4 * ly + s5 * lz, mz = s6 * lx + s7 * ly + s8 * lz;
+        out[0] += w * (fx + out[12] * mx + out[13] * my + out[14] * mz);
+        out[1] += w * (fy + out[15] * mx + out[16] * my + out[17] * mz);
+        out[2] += w * (fz + out[18] * mx + out[19] * my + out[20] * mz);
+        float k0 = s0, k1 = s1, k2 = s2, k3 = s3, k4 = s4, k5 = s5, k6 = s6, k7 = s7, k8 = s8;
+        if (exactNormals) {
+            k0 = s4 * s8 - s7 * s5;
+            k1 = s5 * s6 - s8 * s3;
+            k2 = s3 * s7 - s6 * s4;
+            k3 = s7 * s2 - s1 * s8;
+            k4 = s8 * s0 - s2 * s6;
+            k5 = s6 * s1 - s0 * s7;
+            k6 = s1 * s5 - s4 * s2;
+            k7 = s2 * s3 - s5 * s0;
+            k8 = s0 * s4 - s3 * s1;
+            if (s0 * k0 + s1 * k1 + s2 * k2 < 0f) {
+                w = -w;
+            }
+        }
+        // N = F K, row by row.
+        for (int r = 0; r < 3; r++) {
+            float a0 = out[12 + 3 * r], a1 = out[13 + 3 * r], a2 = out[14 + 3 * r];
+            out[3 + 3 * r] += w * (a0 * k0 + a1 * k3 + a2 * k6);
+            out[4 + 3 * r] += w * (a0 * k1 + a1 * k4 + a2 * k7);
+            out[5 + 3 * r] += w * (a0 * k2 + a1 * k5 + a2 * k8);
+        }
     }
 
     /**

@@ -14,7 +14,10 @@ package org.skinlab.skinning.reference;
  * (row-major 3x4). A joint's rotation is the rotation of its skinning matrix with the scale
  * removed the way Blender's armature does (the posed frame {@code M B} orthonormalised keeping its
  * Y axis, B the bind frame {@code inverse(bind)}), times {@code B}'s rotation transposed; for a
- * joint without scale that is M's linear part.
+ * joint without scale that is M's linear part. What the rotation leaves, {@code R^T M} (linear),
+ * is the joint's scale, interpolated linearly along a curve and applied to the point's offset
+ * from the rest curve before the frame; the reference always applies it (the identity for joints
+ * without scale), the kernel only in frames with scale.
  */
 public final class IndependentSpline {
     private final double[] rest;
@@ -197,8 +200,11 @@ public final class IndependentSpline {
                     double[] slerped = mul(rp, exp(log(mul(transpose(rp), rotations[c])), u));
                     double[] turned = apply3(slerped, curveTangent(restCurve, u));
                     double[] f = mul(minimalRotation(turned, curveTangent(posed, u)), slerped);
-                    pk = add(curvePoint(posed, u), apply3(f, sub(q, curvePoint(restCurve, u))));
-                    nk = f;
+                    // The scale left in each matrix once its rotation is taken out, R^T M, blended along the curve.
+                    double[] scale = lerp(mul(transpose(rp), linear(matrices, parents[c])),
+                            mul(transpose(rotations[c]), linear(matrices, c)), u);
+                    pk = add(curvePoint(posed, u), apply3(mul(f, scale), sub(q, curvePoint(restCurve, u))));
+                    nk = mul(f, signedCofactor(scale));
                 }
                 for (int e = 0; e < 3; e++) {
                     p[e] += w * pk[e];
@@ -319,6 +325,14 @@ public final class IndependentSpline {
             for (int j = 0; j < 3; j++) {
                 r[3 * i + j] = a[3 * i] * b[j] + a[3 * i + 1] * b[3 + j] + a[3 * i + 2] * b[6 + j];
             }
+        }
+        return r;
+    }
+
+    private static double[] lerp(double[] a, double[] b, double u) {
+        double[] r = new double[a.length];
+        for (int e = 0; e < a.length; e++) {
+            r[e] = (1 - u) * a[e] + u * b[e];
         }
         return r;
     }
