@@ -71,10 +71,35 @@ public final class ScalarSplineSkinner extends AbstractSkinner {
             int c = curves[o + k];
             if (c < 0) {
                 addRigid(palette.matrices(), 12 * joints[o + k], w, px, py, pz, exactNormals, mirrors, out);
-            } else {
-                addCurve(palette, c, PARAMETER_OFFSET * (o + k), w, px, py, pz, exactNormals, out);
+            } else if (firstOnCurve(o, k, c)) {
+                addCurve(palette, c, PARAMETER_OFFSET * (o + k), curveWeight(o, k, c), px, py, pz, exactNormals, out);
             }
         }
+    }
+
+    /**
+     * Whether slot k is the first weighted slot of its point on curve c. Slots on one curve share
+     * x (one search on one rest curve), so the curve is evaluated once with their summed weight:
+     * near a joint the parent's and the child's influences usually land on the same curve.
+     */
+    private boolean firstOnCurve(int o, int k, int c) {
+        for (int m = 0; m < k; m++) {
+            if (curves[o + m] == c && weights[o + m] != 0f) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** The weight of slot k plus that of the later slots on the same curve. */
+    private float curveWeight(int o, int k, int c) {
+        float w = weights[o + k];
+        for (int m = k + 1; m < width; m++) {
+            if (curves[o + m] == c) {
+                w += weights[o + m];
+            }
+        }
+        return w;
     }
 
     private static final int PARAMETER_OFFSET = SplineBinding.PARAMETER_FLOATS;
@@ -221,10 +246,10 @@ public final class ScalarSplineSkinner extends AbstractSkinner {
             s0 = 1f - x;
             s1 = x;
         } else {
-            double angle = Math.acos(Math.min(cos, 1f));
-            double sin = Math.sin(angle);
-            s0 = (float) (Math.sin((1 - x) * angle) / sin);
-            s1 = (float) (Math.sin(x * angle) / sin);
+            float angle = acos(cos);
+            float sin = (float) Math.sqrt(1f - cos * cos);
+            s0 = (float) Math.sin((1f - x) * angle) / sin;
+            s1 = (float) Math.sin(x * angle) / sin;
         }
         float qx = s0 * ax + s1 * bx, qy = s0 * ay + s1 * by, qz = s0 * az + s1 * bz, qw = s0 * aw + s1 * bw;
         float inv = 1f / (float) Math.sqrt(qx * qx + qy * qy + qz * qz + qw * qw);
@@ -265,6 +290,23 @@ public final class ScalarSplineSkinner extends AbstractSkinner {
         dest[18] = 2 * (qx * qz - qy * qw);
         dest[19] = 2 * (qy * qz + qx * qw);
         dest[20] = 1 - 2 * (qx * qx + qy * qy);
+    }
+
+    /**
+     * arccos of c in [0, 1], Abramowitz and Stegun 4.4.46: {@code sqrt(1 - c)} times a polynomial of
+     * degree 7, absolute error at most 2e-8 (below float precision). Math.acos is no intrinsic: a
+     * call to it costs more than the rest of a curve's evaluation.
+     */
+    private static float acos(float c) {
+        float poly = -0.0012624911f;
+        poly = poly * c + 0.0066700901f;
+        poly = poly * c - 0.0170881256f;
+        poly = poly * c + 0.0308918810f;
+        poly = poly * c - 0.0501743046f;
+        poly = poly * c + 0.0889789874f;
+        poly = poly * c - 0.2145988016f;
+        poly = poly * c + 1.5707963050f;
+        return (float) Math.sqrt(1f - c) * poly;
     }
 
     @Override
