@@ -213,6 +213,36 @@ class SplineSkinningTest {
         assertModelAgrees("creatures/tentacle-wave.dae", new float[] {0.5f, 1.25f});
     }
 
+    /**
+     * Skinning each shared position once and expanding gives the points' own results, with unit
+     * normals (a spline frame blends rotations, so the expansion must renormalise).
+     */
+    @Test
+    void sharedPositionsGiveThePointsOwnResults() throws Exception {
+        SkinnedModel skinned = SkinnedModel.of(ColladaImporter.read(TestPaths.asset("cylinders/cylinder-bend.dae")));
+        SkinnedGeometry g = skinned.geometries().get(0);
+        assertTrue(g.sharedPositions() != null, "the cylinder's cap rims share positions");
+        Skinner shared = Skinners.scalar(SkinningMethod.SPLINE, g, NormalTransform.INVERSE_TRANSPOSE,
+                PositionSharing.ALWAYS);
+        Skinner direct = Skinners.scalar(SkinningMethod.SPLINE, g, NormalTransform.INVERSE_TRANSPOSE,
+                PositionSharing.NEVER);
+        assertTrue(Skinners.sharesPositions(shared));
+        skinned.pose(3f, RotationInterpolation.SLERP);
+        JointPalette palette = skinned.prepareBones(0);
+        int n = g.pointCount();
+        float[] sp = new float[3 * n], sn = new float[3 * n], dp = new float[3 * n], dn = new float[3 * n];
+        shared.skinAll(palette, sp, sn);
+        direct.skinAll(palette, dp, dn);
+        for (int i = 0; i < n; i++) {
+            for (int e = 0; e < 3; e++) {
+                assertEquals(dp[3 * i + e], sp[3 * i + e], 1e-6f, "point " + i);
+                assertEquals(dn[3 * i + e], sn[3 * i + e], 1e-5f, "normal " + i);
+            }
+            double len = Math.sqrt(sn[3 * i] * sn[3 * i] + sn[3 * i + 1] * sn[3 * i + 1] + sn[3 * i + 2] * sn[3 * i + 2]);
+            assertEquals(1.0, len, 1e-5, "normal " + i + " is unit");
+        }
+    }
+
     private static void assertModelAgrees(String asset, float[] times) throws Exception {
         Model model = ColladaImporter.read(TestPaths.asset(asset));
         SkinnedModel skinned = SkinnedModel.of(model);
