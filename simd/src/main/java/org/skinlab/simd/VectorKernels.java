@@ -33,6 +33,8 @@ final class VectorKernels {
                 return new VectorDqsSkinner(geometry, normals);
             case COR:
                 return new VectorCorSkinner(geometry, normals);
+            case SPLINE:
+                return new VectorSplineSkinner(geometry, normals);
             default:
                 return null;
         }
