@@ -37,6 +37,8 @@ public final class SkinningGlsl {
                 return 2;
             case COR:
                 return 3;
+            case BFDQS:
+                return 4;
             default:
                 throw new IllegalArgumentException("no shader code for " + method);
         }

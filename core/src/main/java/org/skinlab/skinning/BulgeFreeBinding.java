@@ -1,0 +1,133 @@
+package org.skinlab.skinning;
+
+/**
+ * Bulge-free DQS's precomputation (Kim and Han 2014, as the thesis' section "DQS - Wölbungen"
+ * describes it): per point the bone segment it keeps its distance from, and that distance at
+ * rest. Immutable.
+ *
+ * <p><b>Which segment.</b> The candidates are the bones ({@link Bones}: head to tail in bind space,
+ * a point-like leaf being its head) of the joints that influence the point with weight above 0:
+ * a bone that does not move the point says nothing about where it should be, and the choice can
+ * then be redone on the GPU from the vertex's own influences without a new attribute. Of these,
+ * the nearest at rest (the thesis: "the nearest bone segment, usually the heaviest"); a candidate
+ * replaces an earlier (heavier) one only when it is nearer by more than {@link #TIE} of the
+ * distance, so ties (the ring at a joint, which is as far from both bones) go to the heavier
+ * influence whatever the rounding, on the CPU and in the shader alike.
+ *
+ * <p><b>Morphs.</b> The choice is made from the rest positions the geometry holds when this is
+ * built; a skinner whose geometry's rest shape morphs refreshes the distances to the same
+ * segments per frame ({@link #restDistances}), which is what the shader computes from the
+ * uploaded morphed shape.
+ */
+public final class BulgeFreeBinding {
+    /**
+     * The excess over the rest distance a pulled point keeps at most, relative to the rest
+     * distance ({@link #pulledDistance}). 0 would be the thesis' formula; 0.035 keeps a third of
+     * DQS's bulge at a 90-degree bend and a quarter at 170 while the volume stays within 1.2% and
+     * 2.2% of rest on the bend cylinder, where the thesis' formula loses 2.2% and 3.5%
+     * (BulgeFreeDqsTest). The shader has the same constant (skinning.glsl, {@code bfdqs}).
+     */
+    public static final float ALLOWANCE = 0.035f;
+
+    /** A later candidate must be nearer than {@code (1 - TIE)} times the best so far. */
+    public static final float TIE = 1e-4f;
+
+    private final int[] joints;
+    private final float[] restDistances;
+
+    private BulgeFreeBinding(int[] joints, float[] restDistances) {
+        this.joints = joints;
+        this.restDistances = restDistances;
+    }
+
+    /** The binding of every point of a geometry, from its current rest positions and its bones. */
+    public static BulgeFreeBinding of(SkinnedGeometry geometry) {
+        Bones bones = geometry.bones();
+        float[] p = geometry.positionArray();
+        int[] influenceJoints = geometry.jointArray();
+        float[] weights = geometry.weightArray();
+        int width = geometry.influencesPerPoint();
+        int points = geometry.pointCount();
+        int[] joints = new int[points];
+        float[] distances = new float[points];
+        for (int i = 0; i < points; i++) {
+            int best = influenceJoints[width * i];
+            float nearest = Float.POSITIVE_INFINITY;
+            for (int k = 0; k < width; k++) {
+                int j = influenceJoints[width * i + k];
+                if (!(weights[width * i + k] > 0f) && k > 0) {
+                    continue;
+                }
+                float d = distanceToBone(bones, j, p[3 * i], p[3 * i + 1], p[3 * i + 2]);
+                if (d < (1f - TIE) * nearest) {
+                    nearest = d;
+                    best = j;
+                }
+            }
+            joints[i] = best;
+            distances[i] = nearest;
+        }
+        return new BulgeFreeBinding(joints, distances);
+    }
+
+    /**
+     * The distance from its bone a point at distance {@code d > r} (r its reference distance) is
+     * pulled back to: {@code r + e a / sqrt(a^2 + e^2)} with e = d - r and a = ALLOWANCE r, a smooth
+     * saturation of the excess (slope 1 at e = 0, never above a); r itself when r = 0.
+     */
+    public static float pulledDistance(float d, float r) {
+        float a = ALLOWANCE * r;
+        float e = d - r;
+        return r + e * a / (float) Math.sqrt(a * a + e * e);
+    }
+
+    /** Distance of a point from joint j's rest bone (its head when the bone has no length). */
+    static float distanceToBone(Bones bones, int j, float px, float py, float pz) {
+        float hx = bones.head(j, 0), hy = bones.head(j, 1), hz = bones.head(j, 2);
+        float ex = bones.tail(j, 0) - hx, ey = bones.tail(j, 1) - hy, ez = bones.tail(j, 2) - hz;
+        float ax = px - hx, ay = py - hy, az = pz - hz;
+        float len2 = ex * ex + ey * ey + ez * ez;
+        float t = len2 > 0f ? Math.max(0f, Math.min(1f, (ax * ex + ay * ey + az * ez) / len2)) : 0f;
+        float dx = ax - t * ex, dy = ay - t * ey, dz = az - t * ez;
+        return (float) Math.sqrt(dx * dx + dy * dy + dz * dz);
+    }
+
+    public int pointCount() {
+        return joints.length;
+    }
+
+    /** The joint whose bone point i keeps its distance from. */
+    public int joint(int point) {
+        return joints[point];
+    }
+
+    /** Point i's distance from its bone at rest. */
+    public float restDistance(int point) {
+        return restDistances[point];
+    }
+
+    /** The joints of all points, copied. */
+    public int[] jointArray() {
+        return joints.clone();
+    }
+
+    /** The rest distances of all points, copied. */
+    public float[] restDistanceArray() {
+        return restDistances.clone();
+    }
+
+    /**
+     * Each point's distance from its own bone in rest positions {@code positions} (a morphed rest
+     * shape) into {@code dest}, allocation-free.
+     */
+    public void restDistances(Bones bones, float[] positions, float[] dest) {
+        for (int i = 0; i < joints.length; i++) {
+            dest[i] = distanceToBone(bones, joints[i], positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]);
+        }
+    }
+
+    @Override
+    public String toString() {
+        return "BulgeFreeBinding[" + joints.length + " points]";
+    }
+}
