@@ -116,4 +116,23 @@ class BulgeFreeDqsTest {
             assertTrue(Math.toDegrees(worst) < bounds[a], assets[a] + ": " + Math.toDegrees(worst));
         }
     }
+
+    /** Shared positions skin through frames: the frame carries the pulled position, bit for bit. */
+    @Test
+    void framesCarryThePulledPositions() throws Exception {
+        SkinnedModel skinned = SkinnedModel.of(ColladaImporter.read(TestPaths.asset("cylinders/cylinder-bend.dae")));
+        SkinnedGeometry g = skinned.geometries().get(0);
+        skinned.pose(4f, RotationInterpolation.SLERP);
+        JointPalette palette = skinned.preparePalette(0, SkinningMethod.BFDQS);
+        Skinner scalar = new ScalarBulgeFreeDqsSkinner(g, NormalTransform.INVERSE_TRANSPOSE);
+        float[] positions = new float[3 * g.pointCount()];
+        scalar.skinAll(palette, positions, new float[positions.length]);
+        float[] frames = new float[Skinner.FRAME_FLOATS * g.pointCount()];
+        scalar.skinFrames(palette, frames, 0, g.pointCount());
+        for (int i = 0; i < g.pointCount(); i++) {
+            for (int a = 0; a < 3; a++) {
+                assertEquals(positions[3 * i + a], frames[Skinner.FRAME_FLOATS * i + 8 + a], "point " + i);
+            }
+        }
+    }
 }
