@@ -69,6 +69,30 @@ class VectorBulgeFreeDqsSkinnerTest {
         }
     }
 
+    /** A rest shape that morphs per frame: both kernels refresh their rest distances. */
+    @org.junit.jupiter.api.Test
+    void followsAMorphingRestShape() throws Exception {
+        java.nio.file.Path root = java.nio.file.Path.of(System.getProperty("skinlab.root", "..")).toAbsolutePath();
+        org.skinlab.model.Model model = org.skinlab.gltf.GltfImporter.read(
+                root.resolve("core/src/test/resources/gltf/morph-skin.gltf"));
+        org.skinlab.skinning.SkinnedModel skinned = new org.skinlab.skinning.SkinnedModel(model,
+                model.clip("pulse").orElseThrow(), NormalTransform.INVERSE_TRANSPOSE);
+        assertTrue(skinned.skinner(0, SkinningMethod.BFDQS).implementation().startsWith("vector-256"));
+        SkinnedGeometry g = skinned.geometries().get(0);
+        for (float t : new float[] {0.05f, 0.35f, 0.9f, 1.1f}) {
+            skinned.pose(t, org.skinlab.animation.RotationInterpolation.SLERP);
+            float[] p = new float[3 * g.pointCount()];
+            skinned.skin(0, SkinningMethod.BFDQS, p, new float[p.length]);
+            float[] sp = new float[p.length];
+            Skinners.scalar(SkinningMethod.BFDQS, g, NormalTransform.INVERSE_TRANSPOSE,
+                    org.skinlab.skinning.PositionSharing.NEVER).skinAll(skinned.preparePalette(0, SkinningMethod.BFDQS),
+                    sp, new float[p.length]);
+            for (int i = 0; i < p.length; i++) {
+                check("morphed position at " + t + " s", i, p[i], sp[i], 0, g.pointCount());
+            }
+        }
+    }
+
     /** Both kernels on [from, to); returns how many points the pull moved away from DQS. */
     private static int assertAgrees(Skinner vector, JointPalette palette, int from, int to) {
         SkinnedGeometry g = vector.geometry();
