@@ -86,24 +86,18 @@ public final class BulgeFreeBinding {
         float hx = bones.head(j, 0), hy = bones.head(j, 1), hz = bones.head(j, 2);
         float ex = bones.tail(j, 0) - hx, ey = bones.tail(j, 1) - hy, ez = bones.tail(j, 2) - hz;
         float ax = px - hx, ay = py - hy, az = pz - hz;
-        float len2 = ex * ex + ey * ey + ez * ez;
-        float t = len2 > 0f ? Math.max(0f, Math.min(1f, (ax * ex + ay * ey + az * ez) / len2)) : 0f;
+        float t = segmentParameter(ax, ay, az, ex, ey, ez);
         float dx = ax - t * ex, dy = ay - t * ey, dz = az - t * ez;
         return (float) Math.sqrt(dx * dx + dy * dy + dz * dz);
     }
 
-    public int pointCount() {
-        return joints.length;
-    }
-
-    /** The joint whose bone point i keeps its distance from. */
-    public int joint(int point) {
-        return joints[point];
-    }
-
-    /** Point i's distance from its bone at rest. */
-    public float restDistance(int point) {
-        return restDistances[point];
+    /**
+     * Where on a segment (head + t e, t in [0, 1]) the nearest point to head + a lies: the
+     * projection's parameter clamped to the segment; 0 for a segment of no length (its head).
+     */
+    static float segmentParameter(float ax, float ay, float az, float ex, float ey, float ez) {
+        float len2 = ex * ex + ey * ey + ez * ez;
+        return len2 > 0f ? Math.max(0f, Math.min(1f, (ax * ex + ay * ey + az * ez) / len2)) : 0f;
     }
 
     /** The joints of all points, copied. */

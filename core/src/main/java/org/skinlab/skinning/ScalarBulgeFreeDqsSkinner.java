@@ -67,8 +67,9 @@ public final class ScalarBulgeFreeDqsSkinner extends AbstractSkinner {
 
     /**
      * Pulls one DQS position {@code out[o..o+3)} (rest position {@code rest[3i..3i+3)}, bone of
-     * joint k, rest distance r) back to r from k's posed bone. With {@code matrices} (a palette
-     * with scale) the reference distance is {@code |M_k (p - c_rest)|} instead of r.
+     * joint k, rest distance r) towards k's posed bone when it is farther than r from it, to
+     * {@link BulgeFreeBinding#pulledDistance}. With {@code matrices} (a palette with scale) the
+     * reference distance is {@code |M_k (p - c_rest)|} instead of r. Shared with the vector kernel.
      */
     public static void pullPoint(float[] rows, float[] matrices, float[] rest, int i, int k, float r, float[] out,
             int o) {
@@ -77,8 +78,7 @@ public final class ScalarBulgeFreeDqsSkinner extends AbstractSkinner {
         float ex = rows[b + 4] - hx, ey = rows[b + 5] - hy, ez = rows[b + 6] - hz;
         float qx = out[o], qy = out[o + 1], qz = out[o + 2];
         float ax = qx - hx, ay = qy - hy, az = qz - hz;
-        float len2 = ex * ex + ey * ey + ez * ez;
-        float t = len2 > 0f ? Math.max(0f, Math.min(1f, (ax * ex + ay * ey + az * ez) / len2)) : 0f;
+        float t = BulgeFreeBinding.segmentParameter(ax, ay, az, ex, ey, ez);
         float ux = ax - t * ex, uy = ay - t * ey, uz = az - t * ez;
         float d2 = ux * ux + uy * uy + uz * uz;
         if (matrices != null) {
@@ -99,8 +99,7 @@ public final class ScalarBulgeFreeDqsSkinner extends AbstractSkinner {
         float hx = rows[b + 16], hy = rows[b + 17], hz = rows[b + 18];
         float ex = rows[b + 20] - hx, ey = rows[b + 21] - hy, ez = rows[b + 22] - hz;
         float ax = rest[3 * i] - hx, ay = rest[3 * i + 1] - hy, az = rest[3 * i + 2] - hz;
-        float len2 = ex * ex + ey * ey + ez * ez;
-        float t = len2 > 0f ? Math.max(0f, Math.min(1f, (ax * ex + ay * ey + az * ez) / len2)) : 0f;
+        float t = BulgeFreeBinding.segmentParameter(ax, ay, az, ex, ey, ez);
         float ux = ax - t * ex, uy = ay - t * ey, uz = az - t * ez;
         int c = 12 * k;
         float vx = m[c] * ux + m[c + 1] * uy + m[c + 2] * uz;
