@@ -27,17 +27,20 @@ public final class BulgeFreeBinding {
      * 2.2% of rest on the bend cylinder, where the thesis' formula loses 2.2% and 3.5%
      * (BulgeFreeDqsTest). The shader has the same constant (skinning.glsl, {@code bfdqs}).
      */
-    public static final float ALLOWANCE = 0.035f;
+    public static final float ALLOWANCE = 0.05f;
 
     /** A later candidate must be nearer than {@code (1 - TIE)} times the best so far. */
     public static final float TIE = 1e-4f;
 
     private final int[] joints;
     private final float[] restDistances;
+    /** Per point its two heaviest influences' joints (the first twice when it has one). */
+    private final int[] pairs;
 
-    private BulgeFreeBinding(int[] joints, float[] restDistances) {
+    private BulgeFreeBinding(int[] joints, float[] restDistances, int[] pairs) {
         this.joints = joints;
         this.restDistances = restDistances;
+        this.pairs = pairs;
     }
 
     /** The binding of every point of a geometry, from its current rest positions and its bones. */
@@ -50,7 +53,11 @@ public final class BulgeFreeBinding {
         int points = geometry.pointCount();
         int[] joints = new int[points];
         float[] distances = new float[points];
+        int[] pairs = new int[2 * points];
         for (int i = 0; i < points; i++) {
+            pairs[2 * i] = influenceJoints[width * i];
+            pairs[2 * i + 1] = width > 1 && weights[width * i + 1] > 0f ? influenceJoints[width * i + 1]
+                    : influenceJoints[width * i];
             int best = influenceJoints[width * i];
             float nearest = Float.POSITIVE_INFINITY;
             for (int k = 0; k < width; k++) {
@@ -67,7 +74,7 @@ public final class BulgeFreeBinding {
             joints[i] = best;
             distances[i] = nearest;
         }
-        return new BulgeFreeBinding(joints, distances);
+        return new BulgeFreeBinding(joints, distances, pairs);
     }
 
     /**
@@ -75,10 +82,11 @@ public final class BulgeFreeBinding {
      * pulled back to: {@code r + e a / sqrt(a^2 + e^2)} with e = d - r and a = ALLOWANCE r, a smooth
      * saturation of the excess (slope 1 at e = 0, never above a); r itself when r = 0.
      */
-    public static float pulledDistance(float d, float r) {
-        float a = ALLOWANCE * r;
+    public static float pulledDistance(float d, float r, float spread) {
+        float a = ALLOWANCE * spread * r;
         float e = d - r;
-        return r + e * a / (float) Math.sqrt(a * a + e * e);
+        // At least the smallest normal float under the root: a = 0 with e rounded to 0 gives r.
+        return r + e * a / (float) Math.sqrt(Math.max(a * a + e * e, Float.MIN_NORMAL));
     }
 
     /** Distance of a point from joint j's rest bone (its head when the bone has no length). */
@@ -103,6 +111,23 @@ public final class BulgeFreeBinding {
     /** The joints of all points, copied. */
     public int[] jointArray() {
         return joints.clone();
+    }
+
+    /** Per point the joints of its two heaviest influences (the first twice when it has one), copied. */
+    public int[] pairArray() {
+        return pairs.clone();
+    }
+
+    /**
+     * sin(theta / 2) for theta the angle between the rotations of two joints whose dual
+     * quaternions (real part first, unit) sit at {@code 8 a} and {@code 8 b} in {@code dq}:
+     * {@code sqrt(1 - (q_a . q_b)^2)}, whichever sign either has.
+     */
+    public static float spread(float[] dq, int a, int b) {
+        int p = 8 * a;
+        int q = 8 * b;
+        float dot = dq[p] * dq[q] + dq[p + 1] * dq[q + 1] + dq[p + 2] * dq[q + 2] + dq[p + 3] * dq[q + 3];
+        return (float) Math.sqrt(Math.max(0f, 1f - dot * dot));
     }
 
     /** The rest distances of all points, copied. */

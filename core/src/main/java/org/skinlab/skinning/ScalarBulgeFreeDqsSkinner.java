@@ -29,6 +29,7 @@ public final class ScalarBulgeFreeDqsSkinner extends AbstractSkinner {
     private final ScalarDqsSkinner dqs;
     private final float[] restPositions;
     private final int[] boneJoints;
+    private final int[] pairs;
     private final float[] restDistances;
     private final BulgeFreeBinding binding;
 
@@ -38,6 +39,7 @@ public final class ScalarBulgeFreeDqsSkinner extends AbstractSkinner {
         this.restPositions = geometry.positionArray();
         this.binding = BulgeFreeBinding.of(geometry);
         this.boneJoints = binding.jointArray();
+        this.pairs = binding.pairArray();
         this.restDistances = binding.restDistanceArray();
     }
 
@@ -58,10 +60,11 @@ public final class ScalarBulgeFreeDqsSkinner extends AbstractSkinner {
     private void pull(JointPalette palette, float[] out, int stride, int offset, int from, int to) {
         float[] rows = palette.boneRows();
         float[] m = palette.matrices();
+        float[] dq = palette.dualQuaternions();
         boolean scaled = palette.hasScale();
         for (int i = from; i < to; i++) {
-            pullPoint(rows, scaled ? m : null, restPositions, i, boneJoints[i], restDistances[i], out,
-                    stride * i + offset);
+            pullPoint(rows, scaled ? m : null, restPositions, i, boneJoints[i], restDistances[i],
+                    BulgeFreeBinding.spread(dq, pairs[2 * i], pairs[2 * i + 1]), out, stride * i + offset);
         }
     }
 
@@ -71,8 +74,8 @@ public final class ScalarBulgeFreeDqsSkinner extends AbstractSkinner {
      * {@link BulgeFreeBinding#pulledDistance}. With {@code matrices} (a palette with scale) the
      * reference distance is {@code |M_k (p - c_rest)|} instead of r. Shared with the vector kernel.
      */
-    public static void pullPoint(float[] rows, float[] matrices, float[] rest, int i, int k, float r, float[] out,
-            int o) {
+    public static void pullPoint(float[] rows, float[] matrices, float[] rest, int i, int k, float r, float spread,
+            float[] out, int o) {
         int b = JointPalette.BONE_FLOATS * k;
         float hx = rows[b], hy = rows[b + 1], hz = rows[b + 2];
         float ex = rows[b + 4] - hx, ey = rows[b + 5] - hy, ez = rows[b + 6] - hz;
@@ -86,7 +89,7 @@ public final class ScalarBulgeFreeDqsSkinner extends AbstractSkinner {
         }
         if (d2 > r * r) {
             float d = (float) Math.sqrt(d2);
-            float f = BulgeFreeBinding.pulledDistance(d, r) / d;
+            float f = BulgeFreeBinding.pulledDistance(d, r, spread) / d;
             out[o] = hx + t * ex + ux * f;
             out[o + 1] = hy + t * ey + uy * f;
             out[o + 2] = hz + t * ez + uz * f;

@@ -144,7 +144,7 @@ void cor(vec3 p, vec3 n, vec3 c, out vec3 outP, out vec3 outN) {
 // as BulgeFreeBinding chooses it on the CPU, from the vertex's own influences and the bones' rest
 // segments (rows 4 and 5 of boneRow, which the header declares: vec4 boneRow(uint joint, int row)),
 // so no attribute is needed. ALLOWANCE and TIE are BulgeFreeBinding's constants.
-const float BFDQS_ALLOWANCE = 0.035;
+const float BFDQS_ALLOWANCE = 0.05;
 const float BFDQS_TIE = 1e-4;
 
 vec3 nearestOnSegment(vec3 p, vec3 a, vec3 b) {
@@ -184,10 +184,16 @@ void bfdqs(vec3 p, vec3 n, out vec3 outP, out vec3 outN) {
     vec3 u = outP - c;
     float d = length(u);
     if (d > r) {
-        // The excess e saturates smoothly at a = ALLOWANCE r (BulgeFreeBinding.pulledDistance).
-        float a = BFDQS_ALLOWANCE * r;
+        // The excess e saturates smoothly at a = ALLOWANCE s r (BulgeFreeBinding.pulledDistance), s the
+        // sine of half the angle between the two heaviest influences' rotations (BulgeFreeBinding.spread).
+        float s = 0.0;
+        if (influenceCount() > 1 && weightAt(1) > 0.0) {
+            float c01 = dot(paletteRotation(jointAt(0)), paletteRotation(jointAt(1)));
+            s = sqrt(max(0.0, 1.0 - c01 * c01));
+        }
+        float a = BFDQS_ALLOWANCE * s * r;
         float e = d - r;
-        outP = c + u * ((r + e * a / sqrt(a * a + e * e)) / d);
+        outP = c + u * ((r + e * a / sqrt(max(a * a + e * e, 1e-30))) / d);
     }
 }
 

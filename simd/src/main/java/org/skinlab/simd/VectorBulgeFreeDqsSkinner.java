@@ -43,6 +43,10 @@ final class VectorBulgeFreeDqsSkinner extends AbstractSkinner {
     private final int[] boneJoints;
     /** Per point, padded to whole lane groups: its bone's offset in the per-call bone table. */
     private final int[] boneOffsets;
+    /** Per point its two heaviest influences' joints, and (padded) their dual quaternions' offsets. */
+    private final int[] pairs;
+    private final int[] firstOffsets;
+    private final int[] secondOffsets;
     /** Rest distances, padded to whole lane groups. */
     private final float[] restDistances;
     private final BulgeFreeBinding binding;
@@ -56,8 +60,13 @@ final class VectorBulgeFreeDqsSkinner extends AbstractSkinner {
         this.boneJoints = binding.jointArray();
         int points = geometry.pointCount();
         this.boneOffsets = new int[points + S.length()];
+        this.pairs = binding.pairArray();
+        this.firstOffsets = new int[points + S.length()];
+        this.secondOffsets = new int[points + S.length()];
         for (int i = 0; i < points; i++) {
             boneOffsets[i] = 7 * boneJoints[i];
+            firstOffsets[i] = 8 * pairs[2 * i];
+            secondOffsets[i] = 8 * pairs[2 * i + 1];
         }
         this.restDistances = new float[points + S.length()];
         System.arraycopy(binding.restDistanceArray(), 0, restDistances, 0, points);
@@ -91,11 +100,12 @@ final class VectorBulgeFreeDqsSkinner extends AbstractSkinner {
     /** Pulls points [from, to) whose DQS positions sit at {@code stride * i + offset}. */
     private void pull(JointPalette palette, float[] out, int stride, int offset, int from, int to) {
         float[] rows = palette.boneRows();
+        float[] dq = palette.dualQuaternions();
         if (palette.hasScale()) {
             float[] m = palette.matrices();
             for (int i = from; i < to; i++) {
-                ScalarBulgeFreeDqsSkinner.pullPoint(rows, m, restPositions, i, boneJoints[i], restDistances[i], out,
-                        stride * i + offset);
+                ScalarBulgeFreeDqsSkinner.pullPoint(rows, m, restPositions, i, boneJoints[i], restDistances[i],
+                        BulgeFreeBinding.spread(dq, pairs[2 * i], pairs[2 * i + 1]), out, stride * i + offset);
             }
             return;
         }
@@ -128,17 +138,27 @@ final class VectorBulgeFreeDqsSkinner extends AbstractSkinner {
                 continue;
             }
             FloatVector d = d2.sqrt();
-            FloatVector a = r.mul(allowance);
+            FloatVector a = r.mul(allowance).mul(spread(dq, k));
             FloatVector e = d.sub(r);
-            FloatVector f = e.mul(a).div(a.fma(a, e.mul(e)).sqrt()).add(r).div(d);
+            FloatVector f = e.mul(a).div(a.fma(a, e.mul(e)).max(Float.MIN_NORMAL).sqrt()).add(r).div(d);
             ux.fma(f, cx).intoArray(out, o, lanes, 0, beyond);
             uy.fma(f, cy).intoArray(out, o + 1, lanes, 0, beyond);
             uz.fma(f, cz).intoArray(out, o + 2, lanes, 0, beyond);
         }
         for (; k < to; k++) {
-            ScalarBulgeFreeDqsSkinner.pullPoint(rows, null, restPositions, k, boneJoints[k], restDistances[k], out,
-                    stride * k + offset);
+            ScalarBulgeFreeDqsSkinner.pullPoint(rows, null, restPositions, k, boneJoints[k], restDistances[k],
+                    BulgeFreeBinding.spread(dq, pairs[2 * k], pairs[2 * k + 1]), out, stride * k + offset);
         }
+    }
+
+    /** {@link BulgeFreeBinding#spread} of points k..k+7, their two heaviest influences gathered. */
+    private FloatVector spread(float[] dq, int k) {
+        FloatVector dot = FloatVector.zero(S);
+        for (int c = 0; c < 4; c++) {
+            FloatVector first = FloatVector.fromArray(S, dq, c, firstOffsets, k);
+            dot = first.fma(FloatVector.fromArray(S, dq, c, secondOffsets, k), dot);
+        }
+        return dot.fma(dot.neg(), FloatVector.broadcast(S, 1f)).max(0f).sqrt();
     }
 
     /** Per joint: posed head, bone vector, inverse squared length (0 for a point-like bone). */

@@ -18,11 +18,12 @@ package org.skinlab.skinning.reference;
  *     distance, or, when some joint of the pose has a scale part, |M_k (p - c_rest)|.</li>
  * <li>Pull: c the nearest point to the DQS point q on the posed segment (M_k h, M_k t), d = |q - c|;
  *     when d > r, q' = c + (q - c) d'/d with d' = r + e a / sqrt(a^2 + e^2), e = d - r,
- *     a = 0.035 r.</li>
+ *     a = 0.05 s r, s = sqrt(1 - (r_0 . r_1)^2) the sine of half the angle between the rotations
+ *     (real parts) of the two heaviest influences (0 with one influence of weight > 0).</li>
  * </ol>
  */
 public final class IndependentBulgeFreeDqs {
-    private static final double ALLOWANCE = 0.035;
+    private static final double ALLOWANCE = 0.05;
     private static final double TIE = 1e-4;
 
     private IndependentBulgeFreeDqs() {
@@ -108,7 +109,10 @@ public final class IndependentBulgeFreeDqs {
             double[] c = nearestOnSegment(qd, apply(mk, head(heads, bone)), apply(mk, head(tails, bone)));
             double dist = c[3];
             if (dist > r) {
-                double a = ALLOWANCE * r;
+                double[] q0 = q[joints[width * i]];
+                double[] q1 = width > 1 && weights[width * i + 1] > 0 ? q[joints[width * i + 1]] : q0;
+                double dot = q0[0] * q1[0] + q0[1] * q1[1] + q0[2] * q1[2] + q0[3] * q1[3];
+                double a = ALLOWANCE * Math.sqrt(Math.max(0, 1 - dot * dot)) * r;
                 double e = dist - r;
                 double pulled = r + (a == 0 ? 0 : e * a / Math.sqrt(a * a + e * e));
                 for (int k = 0; k < 3; k++) {
