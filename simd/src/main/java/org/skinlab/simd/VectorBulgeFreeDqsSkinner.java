@@ -2,6 +2,10 @@ package org.skinlab.simd;
 
 import static org.skinlab.simd.Lanes.S;
 
+import java.util.Arrays;
+import java.util.HashMap;
+import java.util.Map;
+
 import jdk.incubator.vector.FloatVector;
 import jdk.incubator.vector.VectorMask;
 import jdk.incubator.vector.VectorOperators;
@@ -43,10 +47,15 @@ final class VectorBulgeFreeDqsSkinner extends AbstractSkinner {
     private final int[] boneJoints;
     /** Per point, padded to whole lane groups: its bone's offset in the per-call bone table. */
     private final int[] boneOffsets;
-    /** Per point its two heaviest influences' joints, and (padded) their dual quaternions' offsets. */
+    /** Per point its two heaviest influences' joints. */
     private final int[] pairs;
-    private final int[] firstOffsets;
-    private final int[] secondOffsets;
+    /**
+     * The distinct pairs of two heaviest influences (joints a, b per pair) and per point (padded)
+     * the index of its pair: the spread is computed once per pair and call, and gathered per lane.
+     */
+    private final int[] distinctPairs;
+    private final int[] pairOfPoint;
+    private final ThreadLocal<float[]> spreads;
     /** Rest distances, padded to whole lane groups. */
     private final float[] restDistances;
     private final BulgeFreeBinding binding;
@@ -61,17 +70,35 @@ final class VectorBulgeFreeDqsSkinner extends AbstractSkinner {
         int points = geometry.pointCount();
         this.boneOffsets = new int[points + S.length()];
         this.pairs = binding.pairArray();
-        this.firstOffsets = new int[points + S.length()];
-        this.secondOffsets = new int[points + S.length()];
+        this.pairOfPoint = new int[points + S.length()];
         for (int i = 0; i < points; i++) {
             boneOffsets[i] = 7 * boneJoints[i];
-            firstOffsets[i] = 8 * pairs[2 * i];
-            secondOffsets[i] = 8 * pairs[2 * i + 1];
         }
+        this.distinctPairs = indexPairs(pairs, pairOfPoint);
+        int pairCount = distinctPairs.length / 2;
+        this.spreads = ThreadLocal.withInitial(() -> new float[Math.max(1, pairCount)]);
         this.restDistances = new float[points + S.length()];
         System.arraycopy(binding.restDistanceArray(), 0, restDistances, 0, points);
         int size = 7 * geometry.jointCount();
         this.bones = ThreadLocal.withInitial(() -> new float[size]);
+    }
+
+    /** The distinct pairs (a, b) of {@code pairs}, each point's index among them into {@code pairOfPoint}. */
+    private static int[] indexPairs(int[] pairs, int[] pairOfPoint) {
+        Map<Long, Integer> index = new HashMap<>();
+        int[] found = new int[pairs.length];
+        for (int i = 0; i < pairs.length / 2; i++) {
+            long key = (long) pairs[2 * i] << 32 | pairs[2 * i + 1];
+            Integer known = index.get(key);
+            if (known == null) {
+                known = index.size();
+                index.put(key, known);
+                found[2 * known] = pairs[2 * i];
+                found[2 * known + 1] = pairs[2 * i + 1];
+            }
+            pairOfPoint[i] = known;
+        }
+        return Arrays.copyOf(found, 2 * index.size());
     }
 
     @Override
@@ -110,6 +137,10 @@ final class VectorBulgeFreeDqsSkinner extends AbstractSkinner {
             return;
         }
         float[] table = boneTable(rows, palette.jointCount());
+        float[] spread = spreads.get();
+        for (int p = 0; 2 * p < distinctPairs.length; p++) {
+            spread[p] = BulgeFreeBinding.spread(dq, distinctPairs[2 * p], distinctPairs[2 * p + 1]);
+        }
         int[] lanes = stride == 3 ? POSITION_LANES : FRAME_LANES;
         FloatVector zero = FloatVector.zero(S);
         FloatVector one = FloatVector.broadcast(S, 1f);
@@ -138,7 +169,7 @@ final class VectorBulgeFreeDqsSkinner extends AbstractSkinner {
                 continue;
             }
             FloatVector d = d2.sqrt();
-            FloatVector a = r.mul(allowance).mul(spread(dq, k));
+            FloatVector a = r.mul(allowance).mul(FloatVector.fromArray(S, spread, 0, pairOfPoint, k));
             FloatVector e = d.sub(r);
             FloatVector f = e.mul(a).div(a.fma(a, e.mul(e)).max(Float.MIN_NORMAL).sqrt()).add(r).div(d);
             ux.fma(f, cx).intoArray(out, o, lanes, 0, beyond);
@@ -149,16 +180,6 @@ final class VectorBulgeFreeDqsSkinner extends AbstractSkinner {
             ScalarBulgeFreeDqsSkinner.pullPoint(rows, null, restPositions, k, boneJoints[k], restDistances[k],
                     BulgeFreeBinding.spread(dq, pairs[2 * k], pairs[2 * k + 1]), out, stride * k + offset);
         }
-    }
-
-    /** {@link BulgeFreeBinding#spread} of points k..k+7, their two heaviest influences gathered. */
-    private FloatVector spread(float[] dq, int k) {
-        FloatVector dot = FloatVector.zero(S);
-        for (int c = 0; c < 4; c++) {
-            FloatVector first = FloatVector.fromArray(S, dq, c, firstOffsets, k);
-            dot = first.fma(FloatVector.fromArray(S, dq, c, secondOffsets, k), dot);
-        }
-        return dot.fma(dot.neg(), FloatVector.broadcast(S, 1f)).max(0f).sqrt();
     }
 
     /** Per joint: posed head, bone vector, inverse squared length (0 for a point-like bone). */
