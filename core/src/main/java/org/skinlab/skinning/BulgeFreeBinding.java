@@ -22,10 +22,11 @@ package org.skinlab.skinning;
 public final class BulgeFreeBinding {
     /**
      * The excess over the rest distance a pulled point keeps at most, relative to the rest
-     * distance ({@link #pulledDistance}). 0 would be the thesis' formula; 0.035 keeps a third of
-     * DQS's bulge at a 90-degree bend and a quarter at 170 while the volume stays within 1.2% and
-     * 2.2% of rest on the bend cylinder, where the thesis' formula loses 2.2% and 3.5%
-     * (BulgeFreeDqsTest). The shader has the same constant (skinning.glsl, {@code bfdqs}).
+     * distance and to the spread of its two heaviest influences ({@link #pulledDistance},
+     * {@link #spread}). 0 would be the thesis' formula; 0.05 keeps 0.31 of DQS's bulge at 90 and
+     * at 170 degrees of bend while the volume stays within 1.2% and 1.9% of rest on the bend
+     * cylinder, where the thesis' formula loses 2.2% and 3.5% (BulgeFreeDqsTest). The shader has
+     * the same constant (skinning.glsl, {@code bfdqs}).
      */
     public static final float ALLOWANCE = 0.05f;
 
@@ -79,8 +80,10 @@ public final class BulgeFreeBinding {
 
     /**
      * The distance from its bone a point at distance {@code d > r} (r its reference distance) is
-     * pulled back to: {@code r + e a / sqrt(a^2 + e^2)} with e = d - r and a = ALLOWANCE r, a smooth
-     * saturation of the excess (slope 1 at e = 0, never above a); r itself when r = 0.
+     * pulled back to: {@code r + e a / sqrt(a^2 + e^2)} with e = d - r and
+     * a = ALLOWANCE spread r, a smooth saturation of the excess (slope 1 at e = 0, never above a);
+     * r itself when a = 0. DQS's bulge grows with the sine of half the bend angle (spread), and
+     * so does what is kept of it.
      */
     public static float pulledDistance(float d, float r, float spread) {
         float a = ALLOWANCE * spread * r;

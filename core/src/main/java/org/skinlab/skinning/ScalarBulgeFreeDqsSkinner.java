@@ -9,12 +9,14 @@ package org.skinlab.skinning;
  * <li>c, the nearest point to the DQS position q on k's posed bone, the segment from M h to M t
  *     (rows 0 and 1 of {@link JointPalette#boneRows()});</li>
  * <li>d = |q - c|; when d > r the point is moved towards c, {@code q' = c + (q - c) d' / d}, to
- *     {@code d' = r + e a / sqrt(a^2 + e^2)} with e = d - r the excess and a = {@link
- *     BulgeFreeBinding#ALLOWANCE} r ({@link BulgeFreeBinding#pulledDistance}): the thesis' formula
- *     (d' = r) is its limit a = 0; with a > 0 a small excess stays nearly as DQS made it and a large
- *     one is cut smoothly to at most a, which keeps part of the volume DQS's bulge held (the
- *     fold's inside loses volume that only the bulge made up for; docs/skinning.md has the
- *     figures). Points that came nearer (the inside of a bend) stay.</li>
+ *     {@code d' = r + e a / sqrt(a^2 + e^2)} with e = d - r the excess and
+ *     a = {@link BulgeFreeBinding#ALLOWANCE} s r, s the sine of half the angle between the
+ *     rotations of the point's two heaviest influences ({@link BulgeFreeBinding#spread},
+ *     {@link BulgeFreeBinding#pulledDistance}): the thesis' formula (d' = r) is its limit a = 0;
+ *     with a > 0 a small excess stays nearly as DQS made it and a large one is cut smoothly to at
+ *     most a, which keeps a fixed part of DQS's bulge and of the volume it held (the fold's inside
+ *     loses volume that only the bulge made up for; docs/skinning.md has the figures). Points
+ *     that came nearer (the inside of a bend) stay.</li>
  * </ol>
  * <b>Scaled joints.</b> When the palette has scale, r is the rest offset from the bone as k's
  * matrix maps it, {@code |M_k (p - c_rest)|} (c_rest the nearest point of the rest bone): a joint

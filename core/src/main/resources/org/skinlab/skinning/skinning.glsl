@@ -143,7 +143,7 @@ void cor(vec3 p, vec3 n, vec3 c, out vec3 outP, out vec3 outN) {
 // that ended up farther from its bone than at rest is pulled back towards it. Its bone is chosen here
 // as BulgeFreeBinding chooses it on the CPU, from the vertex's own influences and the bones' rest
 // segments (rows 4 and 5 of boneRow, which the header declares: vec4 boneRow(uint joint, int row)),
-// so no attribute is needed. ALLOWANCE and TIE are BulgeFreeBinding's constants.
+// so no attribute is needed. ALLOWANCE and TIE are BulgeFreeBinding's constants (the same values).
 const float BFDQS_ALLOWANCE = 0.05;
 const float BFDQS_TIE = 1e-4;
 
