@@ -118,6 +118,8 @@ public final class Skinners {
                 return new ScalarDqsSkinner(geometry, normals);
             case COR:
                 return new ScalarCorSkinner(geometry, normals);
+            case BFDQS:
+                return new ScalarBulgeFreeDqsSkinner(geometry, normals);
             default:
                 throw new IllegalArgumentException(String.valueOf(method));
         }

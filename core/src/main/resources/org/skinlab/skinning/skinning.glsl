@@ -25,6 +25,12 @@
 //                                         or scale part S (SCALE_ROWS), row-major 3x4
 //   vec4 paletteRotation(uint joint), vec4 paletteDual(uint joint)
 //                                         the joint's dual quaternion: rotation (x y z w), dual part
+//   vec4 boneRow(uint joint, int row)     row 0-5 of the joint's bone rows (JointPalette.boneRows,
+//                                         Frame.boneRows: 0 posed head | twist, 1 posed tail |
+//                                         stretch, 2 tail's stretch offset | 0, 3 posed bone axis | 0,
+//                                         4 rest head | length, 5 rest tail | parent index); the
+//                                         renderers upload them for the methods that read bones
+//                                         (SkinningMethod.usesBones), so only those may call it
 
 uniform bool uHasScale;       // some joint has a scale part this frame: DQS and CoR run the scale phase first
 uniform bool uMatricesMirror; // LBS normals: times the sign of the blend's determinant (Frame.mirrorsMatrices)
@@ -133,8 +139,67 @@ void cor(vec3 p, vec3 n, vec3 c, out vec3 outP, out vec3 outN) {
     outN = rotate(q, n);
 }
 
+// Bulge-free DQS (ScalarBulgeFreeDqsSkinner, BulgeFreeBinding; docs/skinning.md): DQS, then a point
+// that ended up farther from its bone than at rest is pulled back towards it. Its bone is chosen here
+// as BulgeFreeBinding chooses it on the CPU, from the vertex's own influences and the bones' rest
+// segments (rows 4 and 5 of boneRow, which the header declares: vec4 boneRow(uint joint, int row)),
+// so no attribute is needed. ALLOWANCE and TIE are BulgeFreeBinding's constants (the same values).
+const float BFDQS_ALLOWANCE = 0.05;
+const float BFDQS_TIE = 1e-4;
+
+vec3 nearestOnSegment(vec3 p, vec3 a, vec3 b) {
+    vec3 e = b - a;
+    float len2 = dot(e, e);
+    float t = len2 > 0.0 ? clamp(dot(p - a, e) / len2, 0.0, 1.0) : 0.0;
+    return a + t * e;
+}
+
+void bfdqs(vec3 p, vec3 n, out vec3 outP, out vec3 outN) {
+    dqs(p, n, outP, outN);
+    // The nearest rest bone among the influences with weight (slot 0 always); a later, lighter one
+    // only when nearer by more than the tie margin.
+    uint bone = jointAt(0);
+    vec3 restNearest = nearestOnSegment(p, boneRow(bone, 4).xyz, boneRow(bone, 5).xyz);
+    float r = distance(p, restNearest);
+    for (int i = 1; i < influenceCount(); i++) {
+        if (weightAt(i) > 0.0) {
+            uint j = jointAt(i);
+            vec3 c = nearestOnSegment(p, boneRow(j, 4).xyz, boneRow(j, 5).xyz);
+            float d = distance(p, c);
+            if (d < (1.0 - BFDQS_TIE) * r) {
+                r = d;
+                bone = j;
+                restNearest = c;
+            }
+        }
+    }
+    if (uHasScale) {
+        // The rest offset from the bone through the joint's matrix: a joint scaled across its
+        // bone widens what it carries, which is no bulge.
+        vec3 u = p - restNearest;
+        r = length(vec3(dot(paletteRow(MATRIX_ROWS, bone, 0).xyz, u), dot(paletteRow(MATRIX_ROWS, bone, 1).xyz, u),
+                dot(paletteRow(MATRIX_ROWS, bone, 2).xyz, u)));
+    }
+    vec3 c = nearestOnSegment(outP, boneRow(bone, 0).xyz, boneRow(bone, 1).xyz);
+    vec3 u = outP - c;
+    float d = length(u);
+    if (d > r) {
+        // The excess e saturates smoothly at a = ALLOWANCE s r (BulgeFreeBinding.pulledDistance), s the
+        // sine of half the angle between the two heaviest influences' rotations (BulgeFreeBinding.spread).
+        float s = 0.0;
+        if (influenceCount() > 1 && weightAt(1) > 0.0) {
+            float c01 = dot(paletteRotation(jointAt(0)), paletteRotation(jointAt(1)));
+            s = sqrt(max(0.0, 1.0 - c01 * c01));
+        }
+        float a = BFDQS_ALLOWANCE * s * r;
+        float e = d - r;
+        outP = c + u * ((r + e * a / sqrt(max(a * a + e * e, 1e-30))) / d);
+    }
+}
+
 // Point p (normal n, CoR centre c) skinned by the method with this code, SkinningGlsl.methodCode's:
-// 1 LBS, 2 DQS, 3 CoR; any other code leaves them as they are (the desktop's CPU-skinned points).
+// 1 LBS, 2 DQS, 3 CoR, 4 bulge-free DQS; any other code leaves them as they are (CPU-skinned points:
+// code 0, and a method without shader code, which the simulation skins on the CPU, SkinningGlsl.hasCode).
 void skin(int method, vec3 p, vec3 n, vec3 c, out vec3 outP, out vec3 outN) {
     outP = p;
     outN = n;
@@ -144,5 +209,7 @@ void skin(int method, vec3 p, vec3 n, vec3 c, out vec3 outP, out vec3 outN) {
         dqs(p, n, outP, outN);
     } else if (method == 3) {
         cor(p, n, c, outP, outN);
+    } else if (method == 4) {
+        bfdqs(p, n, outP, outN);
     }
 }

@@ -33,6 +33,8 @@ final class VectorKernels {
                 return new VectorDqsSkinner(geometry, normals);
             case COR:
                 return new VectorCorSkinner(geometry, normals);
+            case BFDQS:
+                return new VectorBulgeFreeDqsSkinner(geometry, normals);
             default:
                 return null;
         }

@@ -62,8 +62,8 @@ public final class FrameBenchCommand implements Callable<Integer> {
             + BenchCorpus.SHARED_CORPUS + " beside the repository root, else beside the current directory)")
     Path corpus;
 
-    @Option(names = "--method", paramLabel = "lbs|dqs|cor|both|all",
-            description = "skinning method; both: lbs and dqs; all: lbs, dqs and cor (default: lbs for one file, both"
+    @Option(names = "--method", paramLabel = MethodKeys.KEYS_OR_ALL + "|both",
+            description = "skinning method; both: lbs and dqs; all: every method (default: lbs for one file, both"
                     + " for several)")
     String method;
 
@@ -218,14 +218,7 @@ public final class FrameBenchCommand implements Callable<Integer> {
         if (method.equalsIgnoreCase("both")) {
             return List.of(SkinningMethod.LBS, SkinningMethod.DQS);
         }
-        if (method.equalsIgnoreCase("all")) {
-            return List.of(SkinningMethod.values());
-        }
-        try {
-            return List.of(SkinningMethod.fromKey(method));
-        } catch (IllegalArgumentException e) {
-            throw usage("unknown skinning method \"" + method + "\" (expected lbs, dqs, cor, both or all)");
-        }
+        return MethodKeys.parseOneOrAll("--method", method);
     }
 
     private NormalTransform parseNormals() {
