@@ -37,6 +37,10 @@ public final class SkinningGlsl {
                 return 2;
             case COR:
                 return 3;
+            case STBS_LBS:
+                return 5;
+            case STBS_DQS:
+                return 6;
             default:
                 throw new IllegalArgumentException("no shader code for " + method);
         }
