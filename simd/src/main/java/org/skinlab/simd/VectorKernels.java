@@ -33,6 +33,9 @@ final class VectorKernels {
                 return new VectorDqsSkinner(geometry, normals);
             case COR:
                 return new VectorCorSkinner(geometry, normals);
+            case STBS_LBS:
+            case STBS_DQS:
+                return new VectorStbsSkinner(method, geometry, normals);
             default:
                 return null;
         }
