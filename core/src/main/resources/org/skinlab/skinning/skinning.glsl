@@ -25,6 +25,12 @@
 //                                         or scale part S (SCALE_ROWS), row-major 3x4
 //   vec4 paletteRotation(uint joint), vec4 paletteDual(uint joint)
 //                                         the joint's dual quaternion: rotation (x y z w), dual part
+//   vec4 boneRow(uint joint, int row)     row 0-5 of the joint's bone rows (JointPalette.boneRows,
+//                                         Frame.boneRows: 0 posed head | twist, 1 posed tail |
+//                                         stretch, 2 tail's stretch offset | 0, 3 posed bone axis | 0,
+//                                         4 rest head | length, 5 rest tail | parent index); the
+//                                         renderers upload them for the methods that read bones
+//                                         (SkinningMethod.usesBones), so only those may call it
 
 uniform bool uHasScale;       // some joint has a scale part this frame: DQS and CoR run the scale phase first
 uniform bool uMatricesMirror; // LBS normals: times the sign of the blend's determinant (Frame.mirrorsMatrices)
@@ -195,7 +201,8 @@ void stbsDqs(vec3 p, vec3 n, out vec3 outP, out vec3 outN) {
 }
 
 // Point p (normal n, CoR centre c) skinned by the method with this code, SkinningGlsl.methodCode's:
-// 1 LBS, 2 DQS, 3 CoR; any other code leaves them as they are (the desktop's CPU-skinned points).
+// 1 LBS, 2 DQS, 3 CoR; any other code leaves them as they are (CPU-skinned points: code 0, and a
+// method without shader code, which the simulation skins on the CPU, SkinningGlsl.hasCode).
 void skin(int method, vec3 p, vec3 n, vec3 c, out vec3 outP, out vec3 outN) {
     outP = p;
     outN = n;
