@@ -70,6 +70,28 @@ class StbsAssetTest {
         }
     }
 
+    /** Skinning each shared position once and expanding its frame gives what skinning every point does. */
+    @Test
+    void sharedPositionsGiveTheSamePointsAndUnitNormals() throws Exception {
+        SkinnedModel model = load("twist/arm-twist.dae");
+        SkinnedGeometry g = model.geometries().get(0);
+        assertTrue(g.sharedPositions() != null, "the arm's caps share positions with its rings");
+        model.pose(0.5f, RotationInterpolation.SLERP);
+        JointPalette palette = model.prepareBones(0);
+        int n = g.pointCount();
+        for (SkinningMethod m : new SkinningMethod[] {SkinningMethod.STBS_LBS, SkinningMethod.STBS_DQS}) {
+            float[] p = new float[3 * n], nn = new float[3 * n], sp = new float[3 * n], sn = new float[3 * n];
+            Skinners.scalar(m, g, NormalTransform.INVERSE_TRANSPOSE, PositionSharing.NEVER).skinAll(palette, p, nn);
+            Skinner shared = Skinners.scalar(m, g, NormalTransform.INVERSE_TRANSPOSE, PositionSharing.ALWAYS);
+            assertTrue(Skinners.sharesPositions(shared));
+            shared.skinAll(palette, sp, sn);
+            for (int i = 0; i < 3 * n; i++) {
+                assertEquals(p[i], sp[i], 1e-6, m + " position float " + i);
+                assertEquals(nn[i], sn[i], 1e-5, m + " normal float " + i);
+            }
+        }
+    }
+
     /** The forearm twisted 170 degrees: per method the twist of each ring from elbow to wrist and the elbow ring's radius. */
     static Map<SkinningMethod, List<BoneProfile.Ring>> twistProfiles() throws Exception {
         SkinnedModel model = load("twist/arm-twist.dae");
