@@ -61,6 +61,9 @@ public final class ScalarStbsSkinner extends AbstractSkinner {
         float b0 = 0, b1 = 0, b2 = 0, b3 = 0, b4 = 0, b5 = 0, b6 = 0, b7 = 0, b8 = 0, b9 = 0, b10 = 0, b11 = 0;
         for (int k = 0; k < width; k++) {
             float w = weights[o + k];
+            if (w == 0f && k > 0) {
+                continue; // a padded influence: its transformation (a sin, a cos) is not needed
+            }
             StbsInfluence.transform(rows, dq, joints[o + k], px, py, pz, out, t);
             float x = out[t], y = out[t + 1], z = out[t + 2], s = out[t + 3];
             b0 += w * (1 - 2 * (y * y + z * z));
@@ -113,6 +116,9 @@ public final class ScalarStbsSkinner extends AbstractSkinner {
         float r0 = 0, r1 = 0, r2 = 0, r3 = 0, d0 = 0, d1 = 0, d2 = 0, d3 = 0;
         float p0 = 0, p1 = 0, p2 = 0, p3 = 0;
         for (int k = 0; k < width; k++) {
+            if (weights[o + k] == 0f && k > 0) {
+                continue;
+            }
             StbsInfluence.transform(rows, dq, joints[o + k], px, py, pz, out, t);
             float x = out[t], y = out[t + 1], z = out[t + 2], s = out[t + 3];
             if (k == 0) {

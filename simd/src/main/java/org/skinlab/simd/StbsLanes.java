@@ -50,17 +50,17 @@ final class StbsLanes {
     /**
      * Each influence of block {@code b} for its points at {@code blk[48 b ..]} (px py pz, 8 lanes
      * each): joints through {@code rowIndex} (24 j) and {@code dqIndex} (8 j), 8 lanes per
-     * influence at {@code 8 (b width + k)}; r and x into {@code s[56 k ..]}.
+     * influence at {@code 8 (b width + k)}; r and x of the first {@code active} into {@code s[56 k ..]}.
      */
     static void influences(float[] rows, float[] dq, int[] rowIndex, int[] dqIndex, float[] blk, int b, int width,
-            float[] s) {
+            int active, float[] s) {
         final FloatVector one = FloatVector.broadcast(S, 1f);
         final FloatVector zero = FloatVector.zero(S);
         int fo = VectorStbsSkinner.BLOCK_FLOATS * b;
         FloatVector px = FloatVector.fromArray(S, blk, fo);
         FloatVector py = FloatVector.fromArray(S, blk, fo + 8);
         FloatVector pz = FloatVector.fromArray(S, blk, fo + 16);
-        for (int k = 0; k < width; k++) {
+        for (int k = 0; k < active; k++) {
             int m = 8 * (b * width + k);
             FloatVector hx = FloatVector.fromArray(S, rows, 16, rowIndex, m);
             FloatVector hy = FloatVector.fromArray(S, rows, 17, rowIndex, m);
@@ -110,11 +110,11 @@ final class StbsLanes {
      * {@code 8 (b width + k)}, applied to the block's points; normals by the blend's cofactor
      * (renormalised) or its linear part; x y z interleaved into the outputs at {@code 24 b}.
      */
-    static void linear(float[] s, float[] weights, float[] blk, int b, int width, boolean exact, float[] outPositions,
-            float[] outNormals) {
+    static void linear(float[] s, float[] weights, float[] blk, int b, int width, int active, boolean exact,
+            float[] outPositions, float[] outNormals) {
         FloatVector b0 = FloatVector.zero(S), b1 = b0, b2 = b0, b3 = b0, b4 = b0, b5 = b0;
         FloatVector b6 = b0, b7 = b0, b8 = b0, b9 = b0, b10 = b0, b11 = b0;
-        for (int k = 0; k < width; k++) {
+        for (int k = 0; k < active; k++) {
             int so = INFLUENCE_FLOATS * k;
             FloatVector w = FloatVector.fromArray(S, weights, 8 * (b * width + k));
             FloatVector x = FloatVector.fromArray(S, s, so);
@@ -175,14 +175,14 @@ final class StbsLanes {
      * the first influence's side, blended, normalised by the real part and applied; the normal
      * rotated (renormalised under the exact rule).
      */
-    static void dualQuaternion(float[] s, float[] weights, float[] blk, int b, int width, boolean exact,
+    static void dualQuaternion(float[] s, float[] weights, float[] blk, int b, int width, int active, boolean exact,
             float[] outPositions, float[] outNormals) {
         FloatVector p0 = FloatVector.fromArray(S, s, 0);
         FloatVector p1 = FloatVector.fromArray(S, s, 8);
         FloatVector p2 = FloatVector.fromArray(S, s, 16);
         FloatVector p3 = FloatVector.fromArray(S, s, 24);
         FloatVector r0 = FloatVector.zero(S), r1 = r0, r2 = r0, r3 = r0, d0 = r0, d1 = r0, d2 = r0, d3 = r0;
-        for (int k = 0; k < width; k++) {
+        for (int k = 0; k < active; k++) {
             int so = INFLUENCE_FLOATS * k;
             FloatVector x = FloatVector.fromArray(S, s, so);
             FloatVector y = FloatVector.fromArray(S, s, so + 8);

@@ -34,6 +34,8 @@ final class VectorStbsSkinner extends AbstractSkinner {
     private final float[] weights;
     private final int[] rowIndex;
     private final int[] dqIndex;
+    /** Per block the influences that matter: 1 + the last slot with a weight above 0 in any lane. */
+    private final int[] activeWidth;
     private final ThreadLocal<float[]> scratch;
 
     VectorStbsSkinner(SkinningMethod method, SkinnedGeometry geometry, NormalTransform normals) {
@@ -59,6 +61,14 @@ final class VectorStbsSkinner extends AbstractSkinner {
                 weights[o] = ws[width * i + k];
                 rowIndex[o] = JointPalette.BONE_FLOATS * js[width * i + k];
                 dqIndex[o] = 8 * js[width * i + k];
+            }
+        }
+        activeWidth = new int[blockCount];
+        for (int i = 0; i < BLOCK * blockCount; i++) {
+            for (int k = 0; k < width; k++) {
+                if (ws[width * i + k] != 0f) {
+                    activeWidth[i / BLOCK] = Math.max(activeWidth[i / BLOCK], k + 1);
+                }
             }
         }
         int size = StbsLanes.INFLUENCE_FLOATS * width;
@@ -107,11 +117,14 @@ final class VectorStbsSkinner extends AbstractSkinner {
         float[] s = scratch.get();
         boolean exact = normals == NormalTransform.INVERSE_TRANSPOSE;
         for (int b = firstBlock; b < endBlock; b++) {
-            StbsLanes.influences(rows, dq, rowIndex, dqIndex, points, b, width, s);
+            // Trailing slots without weight in the whole block (padding) are left out: each costs
+            // 21 gathers and a sin and a cos.
+            int active = Math.max(1, activeWidth[b]);
+            StbsLanes.influences(rows, dq, rowIndex, dqIndex, points, b, width, active, s);
             if (dualQuaternions) {
-                StbsLanes.dualQuaternion(s, weights, points, b, width, exact, outPositions, outNormals);
+                StbsLanes.dualQuaternion(s, weights, points, b, width, active, exact, outPositions, outNormals);
             } else {
-                StbsLanes.linear(s, weights, points, b, width, exact, outPositions, outNormals);
+                StbsLanes.linear(s, weights, points, b, width, active, exact, outPositions, outNormals);
             }
         }
         scalar.skin(palette, outPositions, outNormals, BLOCK * endBlock, to);
