@@ -120,6 +120,9 @@ public final class Skinners {
                 return new ScalarCorSkinner(geometry, normals);
             case BFDQS:
                 return new ScalarBulgeFreeDqsSkinner(geometry, normals);
+            case STBS_LBS:
+            case STBS_DQS:
+                return new ScalarStbsSkinner(method, geometry, normals);
             default:
                 throw new IllegalArgumentException(String.valueOf(method));
         }

@@ -35,6 +35,9 @@ final class VectorKernels {
                 return new VectorCorSkinner(geometry, normals);
             case BFDQS:
                 return new VectorBulgeFreeDqsSkinner(geometry, normals);
+            case STBS_LBS:
+            case STBS_DQS:
+                return new VectorStbsSkinner(method, geometry, normals);
             default:
                 return null;
         }

@@ -150,6 +150,24 @@ class AndroidLogicTest {
     }
 
     @Test
+    void theMethodButtonOffersEveryMethodAndTheChoiceOfEachIsSaved() {
+        AnimationConfig config = new AnimationConfig();
+        AppActions.Action method = AppActions.of(config, () -> { }, new MarkerSize(m -> { })).get(3);
+        java.util.Set<SkinningMethod> offered = java.util.EnumSet.noneOf(SkinningMethod.class);
+        for (SkinningMethod m : SkinningMethod.values()) {
+            assertEquals(m, config.method());
+            assertEquals(m.key().toUpperCase(java.util.Locale.ROOT), method.label().get());
+            offered.add(m);
+            SavedChoices saved = new SavedChoices(config.settings(), null, 100, null);
+            assertEquals(m, SavedChoices.fromMap(saved.toMap(), AnimationConfig.Settings.DEFAULT).settings().method(),
+                    m.key() + " is restored");
+            method.run().run();
+        }
+        assertEquals(java.util.EnumSet.allOf(SkinningMethod.class), offered);
+        assertEquals(SkinningMethod.LBS, config.method(), "round again");
+    }
+
+    @Test
     void theUsersChoicesRoundTripAndBadEntriesKeepTheDefaults() {
         AnimationConfig.Settings chosen = AnimationConfig.Settings.DEFAULT.withMethod(SkinningMethod.COR)
                 .withSpeed(-2).withInterpolation(RotationInterpolation.LERP).withFollowCamera(true)

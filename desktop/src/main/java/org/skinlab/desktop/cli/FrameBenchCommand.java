@@ -259,8 +259,9 @@ public final class FrameBenchCommand implements Callable<Integer> {
                 + " influences per position, %s, normals %s, %s, %s%n", name, shape.positionsSkinned(),
                 shape.renderVertices(), shape.joints(), shape.influences(), t.method().key(),
                 normals.toLowerCase(Locale.ROOT), t.kernel(), JavaRuntime.describe());
-        out.printf(Locale.ROOT, "min %.2f µs, median %.2f µs per frame (%d frames: sample, skinning matrices, skin)%n",
-                t.minMicros(), t.medianMicros(), t.frames());
+        out.printf(Locale.ROOT, "min %.2f µs, median %.2f µs per frame (%d frames: sample, skinning matrices, skin);"
+                + " median %.2f ns per position skinned%n", t.minMicros(), t.medianMicros(), t.frames(),
+                nanosPerPosition(t.medianMicros(), shape));
     }
 
     private String toJson(String name, FrameBench.Shape shape, FrameBench.Timing t) {
@@ -277,6 +278,7 @@ public final class FrameBenchCommand implements Callable<Integer> {
         root.put("frames", t.frames());
         root.put("minMicrosPerFrame", round(t.minMicros()));
         root.put("medianMicrosPerFrame", round(t.medianMicros()));
+        root.put("medianNanosPerPosition", round(nanosPerPosition(t.medianMicros(), shape)));
         root.put("implementation", t.kernel());
         root.put("java", JavaRuntime.version());
         root.put("javaVendor", JavaRuntime.vendor());
@@ -285,6 +287,14 @@ public final class FrameBenchCommand implements Callable<Integer> {
         } catch (JsonProcessingException e) {
             throw new IllegalStateException(e);
         }
+    }
+
+    /**
+     * A frame's time per position skinned, in ns: what the methods cost per vertex, compared at the
+     * same mesh (posing is in the frame too, the same for every method).
+     */
+    private static double nanosPerPosition(double micros, FrameBench.Shape shape) {
+        return 1000 * micros / Math.max(1, shape.positionsSkinned());
     }
 
     private static double round(double d) {
