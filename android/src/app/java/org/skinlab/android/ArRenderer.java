@@ -252,7 +252,9 @@ final class ArRenderer implements GLSurfaceView.Renderer {
         glUseProgram(skinned);
         glUniformMatrix4fv(glGetUniformLocation(skinned, "uProjection"), 1, false, projection.get(matrix), 0);
         glUniformMatrix4fv(glGetUniformLocation(skinned, "uModelView"), 1, false, modelView.get(matrix), 0);
-        glUniform1i(glGetUniformLocation(skinned, "uMethod"), SkinningGlsl.methodCode(frame.method()));
+        // A frame with a CPU-skinned mesh (a method without shader code) is drawn as it is: code 0.
+        glUniform1i(glGetUniformLocation(skinned, "uMethod"),
+                frame.hasSkinnedMesh() ? 0 : SkinningGlsl.methodCode(frame.method()));
         glUniform1i(glGetUniformLocation(skinned, "uPalette"), GlesShaders.PALETTE_UNIT);
         glVertexAttrib4f(GlesShaders.COLOR, 1f, 1f, 1f, 1f); // geometries without vertex colours
         boolean viewMirrors = modelView.determinant3x3() < 0f;
@@ -284,9 +286,12 @@ final class ArRenderer implements GLSurfaceView.Renderer {
         glDisable(GL_BLEND);
     }
 
-    /** Geometry {@code g}'s morphed rest shape (when its weights animate), palette and per-geometry uniforms. */
+    /**
+     * Geometry {@code g}'s shape (CPU-skinned, or morphed rest shape when its weights animate),
+     * palette and per-geometry uniforms.
+     */
     private void paletteOf(Frame frame, int g) {
-        models.get(g).restShape(frame, g);
+        models.get(g).shape(frame, g);
         models.get(g).palette(frame, g);
         glUniform1i(glGetUniformLocation(skinned, "uHasScale"), frame.hasScale(g) ? 1 : 0);
         glUniform1i(glGetUniformLocation(skinned, "uMatricesMirror"), frame.mirrorsMatrices(g) ? 1 : 0);

@@ -47,8 +47,10 @@ final class ModelGl {
     private final float[] posedCentres;
     private boolean mirrored;
     private final int vertexCount;
-    /** Staging for a morphing rest shape's positions (3 per vertex), allocated on first use. */
+    /** Staging for a morphing rest shape's or a CPU-skinned mesh's positions (3 per vertex), allocated on first use. */
     private FloatBuffer restStaging;
+    /** Whether buffers 0 and 1 hold something other than the bind pose (a morphed or CPU-skinned shape). */
+    private boolean replacedBindShape;
 
     /** @param textures the GL texture of an image, 0 when it has none */
     ModelGl(SkinnedGeometry g, ToIntFunction<Image> textures) {
@@ -138,20 +140,34 @@ final class ModelGl {
     }
 
     /**
-     * Uploads geometry {@code g}'s morphed rest positions and normals of {@code frame} in place of
-     * its bind-pose ones when its morph weights animate (as the desktop viewer does: docs/skinning.md,
-     * "Morphs"); nothing otherwise.
+     * Uploads what the shader starts from in place of geometry {@code g}'s bind-pose positions and
+     * normals: {@code frame}'s CPU-skinned mesh when it has one (a method without shader code,
+     * {@code SkinningGlsl.hasCode}; the shader then leaves the points as they are, method code 0),
+     * else its morphed rest shape when the morph weights animate (as the desktop viewer does:
+     * docs/skinning.md, "Morphs"), else the bind pose again if an earlier frame replaced it.
      */
-    void restShape(Frame frame, int g) {
-        if (frame.restPositions(g) == null) {
+    void shape(Frame frame, int g) {
+        if (frame.hasSkinnedMesh()) {
+            uploadShape(frame.positions(g), frame.normals(g));
+        } else if (frame.restPositions(g) != null) {
+            uploadShape(frame.restPositions(g), frame.restNormals(g));
+        } else if (replacedBindShape) {
+            uploadShape(geometry.positionArray(), geometry.normalArray());
+            replacedBindShape = false;
+            return;
+        } else {
             return;
         }
+        replacedBindShape = true;
+    }
+
+    private void uploadShape(float[] positions, float[] normals) {
         if (restStaging == null) {
             restStaging = ByteBuffer.allocateDirect(Math.max(4, 12 * vertexCount)).order(ByteOrder.nativeOrder())
                     .asFloatBuffer();
         }
-        uploadRest(buffers[0], frame.restPositions(g));
-        uploadRest(buffers[1], frame.restNormals(g));
+        uploadRest(buffers[0], positions);
+        uploadRest(buffers[1], normals);
         glBindBuffer(GL_ARRAY_BUFFER, 0);
     }
 

@@ -129,12 +129,13 @@ public class SkinlabActivityTest {
         app.tap("Start anim");
         app.tap("Follow: off");
         assertTrue(app.status().contains("| follow"));
-        app.tap("LBS");
-        assertTrue(app.status().contains("| DQS "));
-        app.tap("DQS");
-        assertTrue(app.status().contains("| COR "));
-        app.tap("COR");
-        assertTrue("round again", app.status().contains("| LBS "));
+        // The method button offers all seven, in SkinningMethod's order, and comes round again.
+        org.skinlab.skinning.SkinningMethod[] methods = org.skinlab.skinning.SkinningMethod.values();
+        for (int i = 0; i < methods.length; i++) {
+            String next = methods[(i + 1) % methods.length].key().toUpperCase(java.util.Locale.ROOT);
+            app.tap(methods[i].key().toUpperCase(java.util.Locale.ROOT));
+            assertTrue(next, app.status().contains("| " + next + " "));
+        }
         String interpolation = app.status();
         app.tap("SLERP");
         assertFalse("another interpolation", app.status().equals(interpolation));

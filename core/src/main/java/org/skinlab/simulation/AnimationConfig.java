@@ -181,7 +181,10 @@ public final class AnimationConfig {
         update(s -> s.withMethod(method));
     }
 
-    /** Switches to the next method (LBS, DQS, then round again); returns it. */
+    /**
+     * Switches to the next method in {@link SkinningMethod}'s order (LBS, DQS, CoR, bulge-free
+     * DQS, stretchable and twistable bones on LBS and on DQS, spline, then LBS again); returns it.
+     */
     public SkinningMethod nextMethod() {
         SkinningMethod[] all = SkinningMethod.values();
         return update(s -> s.withMethod(all[(s.method().ordinal() + 1) % all.length])).method();

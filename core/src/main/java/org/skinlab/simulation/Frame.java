@@ -62,12 +62,21 @@ import org.skinlab.skinning.SkinningMethod;
  *     part, then the blended dual quaternion moves p1 and turns the normal. When
  *     {@link #hasScale(int) hasScale(g)} is false every S is the identity and a shader may
  *     skip the phase (a uniform flag).</li>
+ * <li>{@link #boneRows(int)}: {@link JointPalette#BONE_FLOATS} floats per joint, six rows of four
+ *     (posed head | twist, posed tail | stretch, the tail's stretch offset, the posed bone axis,
+ *     rest head | length, rest tail | parent index; {@link JointPalette#boneRows()} defines them):
+ *     what the methods that read bones ({@link SkinningMethod#usesBones()}) take of this step.
+ *     Filled in every frame, whatever {@link #method()} says, as the dual quaternions are. A
+ *     shader reads them as {@code boneRow(joint, row)} (skinning.glsl's header).</li>
  * </ul>
  *
  * <p><b>Palette-only frames.</b> With {@link AnimationConfig#setCpuSkinning} off, a step poses
  * the skeleton and fills the palette but skins nothing; its frame says so with
  * {@link #hasSkinnedMesh()} false, and {@link #positions(int)} and {@link #normals(int)} refuse
- * rather than hand out another step's mesh left in the reused buffer.
+ * rather than hand out another step's mesh left in the reused buffer. A method the shaders have
+ * no code for ({@link org.skinlab.skinning.SkinningGlsl#hasCode}) is skinned on the CPU even then,
+ * so its frames carry the mesh ({@link #hasSkinnedMesh()} true) and a renderer draws them as they
+ * are.
  */
 public final class Frame implements AutoCloseable {
     private final float[][] positions;
@@ -75,6 +84,7 @@ public final class Frame implements AutoCloseable {
     private final float[][] matrices;
     private final float[][] dualQuaternions;
     private final float[][] scales;
+    private final float[][] boneRows;
     private final boolean[] scaled;
     private final boolean[] matricesMirror;
     private final boolean[] scalesMirror;
@@ -111,6 +121,7 @@ public final class Frame implements AutoCloseable {
         matrices = new float[n][];
         dualQuaternions = new float[n][];
         scales = new float[n][];
+        boneRows = new float[n][];
         scaled = new boolean[n];
         matricesMirror = new boolean[n];
         scalesMirror = new boolean[n];
@@ -120,6 +131,7 @@ public final class Frame implements AutoCloseable {
             matrices[g] = new float[12 * jointCounts[g]];
             dualQuaternions[g] = new float[8 * jointCounts[g]];
             scales[g] = new float[12 * jointCounts[g]];
+            boneRows[g] = new float[JointPalette.BONE_FLOATS * jointCounts[g]];
             restPositions[g] = morphing[g] ? new float[3 * pointCounts[g]] : null;
             restNormals[g] = morphing[g] ? new float[3 * pointCounts[g]] : null;
         }
@@ -135,11 +147,12 @@ public final class Frame implements AutoCloseable {
     }
 
     /**
-     * Copies geometry {@code g}'s palette (its dual quaternions prepared) into this buffer
-     * (simulation side only).
+     * Copies geometry {@code g}'s palette (its dual quaternions and bone rows prepared) into this
+     * buffer (simulation side only).
      */
     void copyPalette(int g, JointPalette palette) {
         System.arraycopy(palette.matrices(), 0, matrices[g], 0, matrices[g].length);
+        System.arraycopy(palette.boneRows(), 0, boneRows[g], 0, boneRows[g].length);
         System.arraycopy(palette.dualQuaternions(), 0, dualQuaternions[g], 0, dualQuaternions[g].length);
         System.arraycopy(palette.scales(), 0, scales[g], 0, scales[g].length);
         scaled[g] = palette.hasScale();
@@ -254,6 +267,15 @@ public final class Frame implements AutoCloseable {
      */
     public float[] scales(int g) {
         return scales[g];
+    }
+
+    /**
+     * Bone rows of geometry {@code g}'s joints in this step, for the methods that read bones:
+     * {@link JointPalette#BONE_FLOATS} floats per joint, six rows of four (see the class comment
+     * and {@link JointPalette#boneRows()}). Filled whatever the method. Read-only.
+     */
+    public float[] boneRows(int g) {
+        return boneRows[g];
     }
 
     /** Whether some joint of geometry {@code g} has a scale part in this step (DQS needs its first phase). */

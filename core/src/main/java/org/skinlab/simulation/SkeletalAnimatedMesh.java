@@ -14,6 +14,7 @@ import org.skinlab.model.Model;
 import org.skinlab.skinning.NormalTransform;
 import org.skinlab.skinning.SkinnedGeometry;
 import org.skinlab.skinning.SkinnedModel;
+import org.skinlab.skinning.SkinningGlsl;
 
 /**
  * A model playing one clip, simulated on its own thread (the thesis' {@code SkeletalAnimatedMesh},
@@ -25,7 +26,8 @@ import org.skinlab.skinning.SkinnedModel;
  * <li>advances the playback time by {@code dt * speed} when the animation runs, wrapped or held
  *     at the clip's ends as the wrap mode says;</li>
  * <li>when mesh updates run, poses the skeleton at that time with the configured interpolation,
- *     copies every geometry's joint palette (skinning matrices, dual quaternions, scale parts)
+ *     copies every geometry's joint palette (skinning matrices, dual quaternions, scale parts,
+ *     bone rows)
  *     into a free buffer and, with CPU skinning on, skins every geometry with the configured
  *     method into it too, then publishes it as the latest {@link Frame}. A stopped animation is
  *     still re-posed every step, so switching LBS/DQS or the interpolation shows at once; with
@@ -33,8 +35,10 @@ import org.skinlab.skinning.SkinnedModel;
  *     playback time still advances while the animation runs).</li>
  * </ol>
  * With CPU skinning off ({@link AnimationConfig#setCpuSkinning}) frames carry only the palette,
- * for a renderer that skins on the GPU ({@link Frame#hasSkinnedMesh()}); the switch takes effect
- * at the next step, so the frames say per step which kind they are.
+ * for a renderer that skins on the GPU ({@link Frame#hasSkinnedMesh()}), except for a method the
+ * shaders have no code for ({@link org.skinlab.skinning.SkinningGlsl#hasCode}), which is skinned
+ * here anyway so that every renderer can draw it; the switch takes effect at the next step, so
+ * the frames say per step which kind they are.
  * {@link #step(double)} runs the same step on the caller's thread, for tests, the command line and
  * renderers that drive the simulation themselves.
  *
@@ -443,22 +447,24 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
             return false;
         }
         float clipTime = sampler.clipTime(playback, s.wrapMode());
+        // A method the shaders cannot skin is skinned here whatever the switch says (SkinningGlsl.hasCode).
+        boolean cpuSkinned = s.cpuSkinning() || !SkinningGlsl.hasCode(s.method());
         long t0 = System.nanoTime();
         skinned.pose(clipTime, s.interpolation());
         for (int g = 0; g < pointCounts.length; g++) {
-            // Dual quaternions whatever the method: a split view may draw LBS and DQS from one frame.
-            f.copyPalette(g, skinned.preparePalette(g));
+            // Dual quaternions and bone rows whatever the method: a split view may draw two methods from one frame.
+            f.copyPalette(g, skinned.prepareBones(g));
             if (f.restPositions(g) != null) {
                 SkinnedGeometry geometry = skinned.geometries().get(g);
                 f.copyRestShape(g, geometry.positionArray(), geometry.normalArray());
             }
-            if (s.cpuSkinning()) {
+            if (cpuSkinned) {
                 skinned.skin(g, s.method(), f.positionsForWriting(g), f.normalsForWriting(g));
             }
         }
         long nanos = System.nanoTime() - t0;
         long seq = sequence++;
-        f.describe(seq, playback, clipTime, s.method(), s.interpolation(), s.cpuSkinning(), nanos);
+        f.describe(seq, playback, clipTime, s.method(), s.interpolation(), cpuSkinned, nanos);
         pool.publish(f);
         publishedSequence = seq;
         return true;

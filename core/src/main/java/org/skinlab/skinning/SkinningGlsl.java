@@ -3,10 +3,15 @@ package org.skinlab.skinning;
 import org.skinlab.glsl.GlslInclude;
 
 /**
- * The GPU's twin of this package's kernels: the GLSL text of LBS, DQS and CoR
+ * The GPU's twin of this package's kernels: the GLSL text of the methods that fit a vertex shader
  * ({@code skinning.glsl}, a resource beside this class; its opening comment says what a shader
- * must declare before it and why it lives here), which the desktop's and the Android app's vertex
- * shaders both include. Plain text to core: no GL here.
+ * must declare before it, among it the palette's bone rows {@code boneRow(joint, row)} for the
+ * methods that read bones, and why it lives here), which the desktop's and the Android app's
+ * vertex shaders both include. Plain text to core: no GL here.
+ *
+ * <p>A method without shader code ({@link #hasCode} false) is skinned on the CPU even when the
+ * configuration asks for GPU skinning: the simulation then publishes skinned frames, which both
+ * renderers draw as they are (see {@code SkeletalAnimatedMesh}).
  */
 public final class SkinningGlsl {
     private static final GlslInclude FILE = new GlslInclude("/org/skinlab/skinning/skinning.glsl", "the skinning shader's formulas");
@@ -28,8 +33,30 @@ public final class SkinningGlsl {
         return FILE.expand(shader);
     }
 
-    /** The code of a method in the formulas' {@code skin(method, ...)}: 1 LBS, 2 DQS, 3 CoR (0 skins nothing). */
+    /**
+     * Whether the formulas' {@code skin(method, ...)} has code for {@code method}, so that a
+     * renderer may skin it in the vertex shader; a method without is skinned on the CPU.
+     */
+    public static boolean hasCode(SkinningMethod method) {
+        return code(method) != 0;
+    }
+
+    /**
+     * The code of a method in the formulas' {@code skin(method, ...)}: 1 LBS, 2 DQS, 3 CoR (0 skins
+     * nothing).
+     *
+     * @throws IllegalArgumentException for a method without shader code ({@link #hasCode})
+     */
     public static int methodCode(SkinningMethod method) {
+        int code = code(method);
+        if (code == 0) {
+            throw new IllegalArgumentException("no shader code for " + method);
+        }
+        return code;
+    }
+
+    /** The one list of codes: each method helper adds its case here; 0 for a method without shader code. */
+    private static int code(SkinningMethod method) {
         switch (method) {
             case LBS:
                 return 1;
@@ -37,8 +64,14 @@ public final class SkinningGlsl {
                 return 2;
             case COR:
                 return 3;
+            case BFDQS:
+                return 4;
+            case STBS_LBS:
+                return 5;
+            case STBS_DQS:
+                return 6;
             default:
-                throw new IllegalArgumentException("no shader code for " + method);
+                return 0;
         }
     }
 

@@ -69,9 +69,12 @@ class AnimationConfigTest {
         assertEquals(new AnimationConfig.Settings(1.0, SkinningMethod.DQS, RotationInterpolation.LERP, false, false,
                 false, true, WrapMode.CLAMP), c.settings());
         assertFalse(c.isCpuSkinning());
-        // The methods in order: LBS, DQS, CoR, then LBS again.
-        assertEquals(SkinningMethod.COR, c.nextMethod());
-        assertEquals(SkinningMethod.LBS, c.nextMethod());
+        // Every method in the enum's order, then LBS again.
+        SkinningMethod[] all = SkinningMethod.values();
+        for (int i = 2; i <= all.length; i++) {
+            assertEquals(all[i % all.length], c.nextMethod());
+        }
+        assertEquals(SkinningMethod.DQS, c.nextMethod());
         assertEquals(RotationInterpolation.SLERP, c.nextInterpolation());
         c.startAnimation();
         c.startMeshUpdates();

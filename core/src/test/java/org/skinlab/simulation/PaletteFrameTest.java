@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assertions.fail;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.util.function.BooleanSupplier;
 
@@ -19,6 +20,7 @@ import org.skinlab.model.Model;
 import org.skinlab.model.Skin;
 import org.skinlab.skinning.JointPalette;
 import org.skinlab.skinning.SkinnedGeometry;
+import org.skinlab.skinning.SkinningGlsl;
 import org.skinlab.skinning.SkinningMethod;
 import org.skinlab.testing.TestPaths;
 
@@ -87,6 +89,27 @@ class PaletteFrameTest {
     }
 
     @Test
+    void aMethodWithoutShaderCodeIsSkinnedOnTheCpuEvenInPaletteOnlyMode() {
+        // Renderers can only draw such a method from a mesh: the step makes one whatever the switch says.
+        AnimationConfig config = new AnimationConfig(AnimationConfig.Settings.DEFAULT.withCpuSkinning(false));
+        FrameChecker checker = FrameChecker.ribbon(RIBBON);
+        int cpuOnly = 0;
+        try (SkeletalAnimatedMesh mesh = ribbon(config)) {
+            for (SkinningMethod m : SkinningMethod.values()) {
+                config.setMethod(m);
+                mesh.step(0.25);
+                try (Frame f = mesh.acquire()) {
+                    assertEquals(m, f.method());
+                    assertEquals(!SkinningGlsl.hasCode(m), f.hasSkinnedMesh(), m.key());
+                    assertNull(checker.problem(f), m.key());
+                }
+                cpuOnly += SkinningGlsl.hasCode(m) ? 0 : 1;
+            }
+        }
+        assumeTrue(cpuOnly > 0, "every method has shader code: no CPU fallback to see");
+    }
+
+    @Test
     void framesCarryDualQuaternionsWhateverTheMethod() {
         // An LBS step never needs the dual quaternions itself; a split view drawing DQS from the
         // same frame does. Root turns 90 degrees about x per second, and moves 1 along x.
@@ -117,16 +140,26 @@ class PaletteFrameTest {
     @Test
     void theFrameSaysWhetherItsPaletteMirrors() {
         // A shader's normals need the sign rule of the CPU kernels: the frame carries the palette's flags.
-        JointPalette palette = JointPalette.withoutBindFrames(2);
+        float[] identities = new float[32];
+        for (int i = 0; i < 32; i += 5) {
+            identities[i] = 1f;
+        }
+        identities[16] = identities[21] = identities[26] = identities[31] = 1f;
+        JointPalette palette = SkinnedGeometry.fromArrays(new float[3], new float[] {0, 1, 0}, 1, new int[1],
+                new float[] {1}, identities, new int[] {-1, 0}).newPalette();
         Frame f = new Frame(new int[] {1}, new int[] {2}, new boolean[1]);
         palette.prepareDualQuaternions();
+        palette.prepareBones();
         f.copyPalette(0, palette);
         assertFalse(f.mirrorsMatrices(0));
         assertFalse(f.mirrorsScales(0));
         // A reflection is no rigid motion: DQS's split moves it into the joint's scale part.
         palette.setMatrix(1, new Matrix4f().scaling(-1, 1, 1));
         palette.prepareDualQuaternions();
+        palette.prepareBones();
         f.copyPalette(0, palette);
+        assertEquals(palette.boneRows()[JointPalette.BONE_FLOATS + 23], f.boneRows(0)[JointPalette.BONE_FLOATS + 23],
+                "the bone rows come along: joint 1's parent");
         assertTrue(f.mirrorsMatrices(0));
         assertTrue(f.hasScale(0));
         assertTrue(f.mirrorsScales(0));

@@ -6,7 +6,7 @@ import org.skinlab.skinning.SkinningGlsl;
 
 /**
  * The AR app's OpenGL ES 3.00 shaders: the camera image (an external OES texture) as background,
- * undistorted through the camera's lens ({@link #backgroundFragment()}), and the model skinned in the vertex shader by LBS, DQS or CoR from the palette texture of
+ * undistorted through the camera's lens ({@link #backgroundFragment()}), and the model skinned in the vertex shader by the methods with shader code ({@link SkinningGlsl#hasCode}) from the palette texture of
  * {@link PaletteTexture}, with the formulas the desktop's shader shares ({@link SkinningGlsl}: a 2-D
  * float texture instead of the desktop's texture buffers, which ES 3.0 lacks; {@value #INFLUENCES}
  * influences per vertex). The skinned model's vertex attributes sit at the locations below
@@ -112,7 +112,8 @@ public final class GlesShaders {
             + "#define INFLUENCES " + INFLUENCES + "\n"
             + "#define MATRIX_TEXEL " + PaletteTexture.MATRIX_TEXEL + "\n"
             + "#define ROTATION_TEXEL " + PaletteTexture.ROTATION_TEXEL + "\n"
-            + "#define SCALE_TEXEL " + PaletteTexture.SCALE_TEXEL + "\n";
+            + "#define SCALE_TEXEL " + PaletteTexture.SCALE_TEXEL + "\n"
+            + "#define BONE_TEXEL " + PaletteTexture.BONE_TEXEL + "\n";
 
     private static final String SKINNED_VERTEX_BODY = """
             precision highp float;
@@ -125,7 +126,7 @@ public final class GlesShaders {
             layout(location = UV_LOCATION) in vec2 aUv;
             layout(location = COLOR_LOCATION) in vec4 aColor;
             uniform highp sampler2D uPalette;   // TEXELS_PER_JOINT texels per joint row (PaletteTexture)
-            uniform int uMethod;                // SkinningGlsl.methodCode
+            uniform int uMethod;                // SkinningGlsl.methodCode; 0: the points are CPU-skinned
             uniform mat4 uModelView;
             uniform mat4 uProjection;
             out vec3 vNormal;
@@ -142,6 +143,7 @@ public final class GlesShaders {
             vec4 paletteRow(int part, uint joint, int row) { return texelFetch(uPalette, ivec2(part + row, int(joint)), 0); }
             vec4 paletteRotation(uint joint) { return texelFetch(uPalette, ivec2(ROTATION_TEXEL, int(joint)), 0); }
             vec4 paletteDual(uint joint) { return texelFetch(uPalette, ivec2(ROTATION_TEXEL + 1, int(joint)), 0); }
+            vec4 boneRow(uint joint, int row) { return texelFetch(uPalette, ivec2(BONE_TEXEL + row, int(joint)), 0); }
 
             #include "skinning.glsl"
 

@@ -16,6 +16,7 @@ import org.skinlab.ar.ArPose;
 import org.skinlab.ar.GrayImage;
 import org.skinlab.ar.TrackingState;
 import org.skinlab.simulation.AnimationConfig;
+import org.skinlab.skinning.JointPalette;
 import org.skinlab.skinning.SkinningMethod;
 
 /**
@@ -149,6 +150,24 @@ class AndroidLogicTest {
     }
 
     @Test
+    void theMethodButtonOffersEveryMethodAndTheChoiceOfEachIsSaved() {
+        AnimationConfig config = new AnimationConfig();
+        AppActions.Action method = AppActions.of(config, () -> { }, new MarkerSize(m -> { })).get(3);
+        java.util.Set<SkinningMethod> offered = java.util.EnumSet.noneOf(SkinningMethod.class);
+        for (SkinningMethod m : SkinningMethod.values()) {
+            assertEquals(m, config.method());
+            assertEquals(m.key().toUpperCase(java.util.Locale.ROOT), method.label().get());
+            offered.add(m);
+            SavedChoices saved = new SavedChoices(config.settings(), null, 100, null);
+            assertEquals(m, SavedChoices.fromMap(saved.toMap(), AnimationConfig.Settings.DEFAULT).settings().method(),
+                    m.key() + " is restored");
+            method.run().run();
+        }
+        assertEquals(java.util.EnumSet.allOf(SkinningMethod.class), offered);
+        assertEquals(SkinningMethod.LBS, config.method(), "round again");
+    }
+
+    @Test
     void theUsersChoicesRoundTripAndBadEntriesKeepTheDefaults() {
         AnimationConfig.Settings chosen = AnimationConfig.Settings.DEFAULT.withMethod(SkinningMethod.COR)
                 .withSpeed(-2).withInterpolation(RotationInterpolation.LERP).withFollowCamera(true)
@@ -243,7 +262,7 @@ class AndroidLogicTest {
     }
 
     @Test
-    void thePaletteTextureLaysOutMatricesDualQuaternionsAndScales() {
+    void thePaletteTextureLaysOutMatricesDualQuaternionsScalesAndBoneRows() {
         float[] m = new float[24];
         float[] dq = new float[16];
         for (int i = 0; i < m.length; i++) {
@@ -252,13 +271,20 @@ class AndroidLogicTest {
         for (int i = 0; i < dq.length; i++) {
             dq[i] = 100 + i;
         }
+        float[] bones = new float[2 * JointPalette.BONE_FLOATS];
+        for (int i = 0; i < bones.length; i++) {
+            bones[i] = 1000 + i;
+        }
         float[] dest = new float[PaletteTexture.floats(2)];
-        PaletteTexture.pack(2, m, dq, null, dest);
+        PaletteTexture.pack(2, m, dq, null, bones, dest);
         int row = 4 * PaletteTexture.TEXELS_PER_JOINT;
         assertEquals(12, dest[row], "joint 1's first matrix row starts its texture row");
         assertEquals(108, dest[row + 12], "then its dual quaternion");
         assertArrayEquals(new float[] {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0}, java.util.Arrays.copyOfRange(dest, 20, 32),
                 "no scale: identity rows");
+        assertArrayEquals(java.util.Arrays.copyOfRange(bones, 24, 48),
+                java.util.Arrays.copyOfRange(dest, row + 32, row + 56), "joint 1's six bone rows after its scale rows");
+        assertEquals(row, 56, "14 texels a joint");
     }
 
     @Test

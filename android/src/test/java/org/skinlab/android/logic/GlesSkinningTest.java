@@ -16,7 +16,7 @@ import java.util.Locale;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.params.ParameterizedTest;
-import org.junit.jupiter.params.provider.EnumSource;
+import org.junit.jupiter.params.provider.MethodSource;
 import org.skinlab.collada.ColladaImporter;
 import org.skinlab.model.Model;
 import org.skinlab.simulation.AnimationConfig;
@@ -36,7 +36,8 @@ import org.skinlab.skinning.SkinningMethod;
  * The app's skinning vertex shader ({@link GlesShaders#skinnedVertex()}: its GLSL ES 3.00 header and
  * main around core's shared formulas) computes what core's CPU kernels compute, on a real OpenGL
  * ES 3.0 (Mesa's llvmpipe under Xvfb here), as the desktop's {@code skinlab check-gpu} does for its
- * GLSL 330 variant. For every asset in {@code assets/*}{@code /*.dae}, LBS, DQS and CoR:
+ * GLSL 330 variant. For every asset in {@code assets/*}{@code /*.dae} and every method with shader
+ * code ({@link SkinningGlsl#hasCode}; the app draws the others CPU-skinned):
  * <ul>
  * <li>the palette of simulation frames ({@link SkeletalAnimatedMesh}, palette only) at the clip's
  *     start and every quarter of it, and at its most bent time (the largest angle between two
@@ -122,8 +123,19 @@ class GlesSkinningTest {
         }
     }
 
+    /** The methods the shader has code for. */
+    static List<SkinningMethod> shaderMethods() {
+        List<SkinningMethod> methods = new ArrayList<>();
+        for (SkinningMethod m : SkinningMethod.values()) {
+            if (SkinningGlsl.hasCode(m)) {
+                methods.add(m);
+            }
+        }
+        return methods;
+    }
+
     @ParameterizedTest
-    @EnumSource(SkinningMethod.class)
+    @MethodSource("shaderMethods")
     void theShaderSkinsAsTheCpuKernelOnEveryAsset(SkinningMethod method) {
         Errors all = new Errors();
         for (Asset asset : ASSETS) {
@@ -153,10 +165,15 @@ class GlesSkinningTest {
         // so the kernel runs on the geometry itself, with the centres the app uploads (every asset
         // now). A capped view runs as a geometry of its own on both sides: built from arrays, it
         // has no mesh, and its centres of rotation are its points.
+        // Its joints keep the geometry's hierarchy, so both sides have the same bones.
+        int[] parents = new int[geometry.jointCount()];
+        for (int j = 0; j < parents.length; j++) {
+            parents[j] = geometry.jointParent(j);
+        }
         SkinnedGeometry reference = view.cappedPointCount() == 0 ? geometry
                 : SkinnedGeometry.fromArrays(geometry.positionArray(), geometry.normalArray(),
                         view.influencesPerPoint(), view.jointIndicesAsInts(), view.weights(),
-                        geometry.bindMatrixArray());
+                        geometry.bindMatrixArray(), parents);
         Skinner kernel = Skinners.scalar(method, reference, NormalTransform.INVERSE_TRANSPOSE);
         JointPalette palette = reference.newPalette();
         float[] cpuPositions = new float[3 * reference.pointCount()];
@@ -178,7 +195,9 @@ class GlesSkinningTest {
                     // The kernel's palette is the frame's: the same matrices, prepared by the same code.
                     System.arraycopy(frame.skinningMatrices(g), 0, palette.matrices(), 0, palette.matrices().length);
                     palette.prepareDualQuaternions();
+                    palette.prepareBones();
                     assertArrayEquals(frame.dualQuaternions(g), palette.dualQuaternions(), "dual quaternions");
+                    assertArrayEquals(frame.boneRows(g), palette.boneRows(), "bone rows");
                     assertArrayEquals(frame.scales(g), palette.scales(), "scale parts");
                     assertEquals(frame.hasScale(g), palette.hasScale());
                     errors.scaledPoses += frame.hasScale(g) ? 1 : 0;
@@ -189,8 +208,9 @@ class GlesSkinningTest {
                     mirror(palette);
                     assertTrue(palette.mirrorsMatrices() && palette.mirrorsScales(), "the mirrored pose mirrors");
                     // Packed and flagged as a frame carrying this palette is (Frame.copyPalette).
+                    palette.prepareBones();
                     PaletteTexture.pack(palette.jointCount(), palette.matrices(), palette.dualQuaternions(),
-                            palette.hasScale() ? palette.scales() : null, packed);
+                            palette.hasScale() ? palette.scales() : null, palette.boneRows(), packed);
                     gpu.capture(program, packed, code, palette.hasScale(), palette.mirrorsMatrices(),
                             palette.mirrorsScales(), gpuPositions, gpuNormals);
                     kernel.skinAll(palette, cpuPositions, cpuNormals);

@@ -160,12 +160,16 @@ final class ScenePainter implements AutoCloseable {
         glViewport(0, 0, width, height);
     }
 
-    /** The method the split view draws beside {@code first}: --split's, else LBS and DQS face each other (CoR faces DQS). */
+    /**
+     * The method the split view draws beside {@code first}, on the GPU: --split's, else the method
+     * {@code first} builds on (LBS and DQS face each other, stretchable bones on LBS face LBS, the
+     * rest face DQS).
+     */
     private SkinningMethod other(SkinningMethod first) {
         if (splitMethod != null && splitMethod != first) {
             return splitMethod;
         }
-        return first == SkinningMethod.DQS ? SkinningMethod.LBS : SkinningMethod.DQS;
+        return first == SkinningMethod.DQS || first == SkinningMethod.STBS_LBS ? SkinningMethod.LBS : SkinningMethod.DQS;
     }
 
     private void drawView(SkinningMethod method, boolean cpuPositions, int x, int viewWidth) {

@@ -190,7 +190,7 @@ final class ScriptPlayer {
                 break;
             case "method":
                 SkinningMethod m = viewer.config().method();
-                if (!m.name().equalsIgnoreCase(value)) {
+                if (m != SkinningMethod.fromKey(value)) {
                     throw new IllegalStateException("expected method " + value + " but it is " + m);
                 }
                 break;

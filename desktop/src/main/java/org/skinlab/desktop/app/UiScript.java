@@ -27,7 +27,7 @@ import java.util.Locale;
  * screenshot PATH        write the window as PNG
  * expect mesh NAME       the model shown is NAME (as the toolbar names it)
  * expect status TEXT     the status line contains TEXT
- * expect method LBS|DQS  the skinning method
+ * expect method KEY      the skinning method (any key SkinningMethod.fromKey takes)
  * quit                   close the window
  * </pre>
  * The first step runs once the first model is shown. Paths are relative to the script's folder. Parsing checks every line before anything runs;

@@ -79,7 +79,7 @@ public final class ArCommand implements Callable<Integer> {
     @Option(names = "--fps", paramLabel = "N", description = "frames per second of --images and --video (default: ${DEFAULT-VALUE})")
     double fps = 30;
 
-    @Option(names = "--method", paramLabel = "lbs|dqs|cor", converter = PoseCommand.MethodConverter.class,
+    @Option(names = "--method", paramLabel = MethodKeys.KEYS, converter = MethodKeys.Converter.class,
             description = "skinning method at start (default: lbs)")
     SkinningMethod method = SkinningMethod.LBS;
 

@@ -16,6 +16,7 @@ import org.skinlab.simulation.AnimationConfig;
 import org.skinlab.simulation.Frame;
 import org.skinlab.simulation.SkeletalAnimatedMesh;
 import org.skinlab.skinning.ArtifactMetrics;
+import org.skinlab.skinning.SkinningGlsl;
 import org.skinlab.skinning.SkinningMethod;
 
 import picocli.CommandLine.Command;
@@ -25,8 +26,9 @@ import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
 
 /**
- * {@code skinlab check-gpu FILE... [--method lbs|dqs|cor|all] [--time T,...] [--tolerance R]}: skins
- * each file on the GPU (the viewer's vertex shader, read back with transform feedback) and on the
+ * {@code skinlab check-gpu FILE... [--method KEY|all] [--time T,...] [--tolerance R]}: skins
+ * each file, with every method that has shader code ({@link SkinningGlsl#hasCode}; it names the
+ * others), on the GPU (the viewer's vertex shader, read back with transform feedback) and on the
  * CPU (core's kernels) from the same frame, and reports the largest distance between the two
  * relative to the model's size. Exit status 1 when a distance exceeds the tolerance: a driver, a
  * shader or a kernel that skins wrongly is caught on the user's own machine and files.
@@ -38,7 +40,8 @@ public final class CheckGpuCommand implements Callable<Integer> {
     @Parameters(arity = "1..*", paramLabel = "FILE", description = "model files (.dae, .gltf, .glb)")
     List<Path> files;
 
-    @Option(names = "--method", paramLabel = "lbs|dqs|cor|all", description = "methods to check (default: all)")
+    @Option(names = "--method", paramLabel = MethodKeys.KEYS_OR_ALL,
+            description = "methods to check (default: all, that is every method with shader code)")
     String method = "all";
 
     @Option(names = "--time", split = ",", paramLabel = "T", description = "playback times in seconds "
@@ -61,7 +64,16 @@ public final class CheckGpuCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        List<SkinningMethod> methods = methods(method);
+        List<SkinningMethod> asked = MethodKeys.parseOneOrAll("--method", method);
+        List<SkinningMethod> methods = new ArrayList<>();
+        List<SkinningMethod> withoutCode = new ArrayList<>();
+        for (SkinningMethod m : asked) {
+            (SkinningGlsl.hasCode(m) ? methods : withoutCode).add(m);
+        }
+        if (methods.isEmpty()) {
+            throw new CommandFailure(ExitCodes.USAGE, "--method " + method + ": " + MethodKeys.keys(withoutCode)
+                    + " has no shader code (the viewer and the app skin it on the CPU): nothing to check", null);
+        }
         PrintWriter out = spec.commandLine().getOut();
         List<Result> results = new ArrayList<>();
         GlWindow window;
@@ -82,23 +94,17 @@ public final class CheckGpuCommand implements Callable<Integer> {
         for (Result r : results) {
             boolean pass = r.relative() <= tolerance;
             ok &= pass;
-            out.printf(Locale.ROOT, "%s %-4s %s: %d vertices, largest GPU-CPU distance %.3g (%.3g of the model's size)%n",
+            out.printf(Locale.ROOT, "%s %-8s %s: %d vertices, largest GPU-CPU distance %.3g (%.3g of the model's size)%n",
                     pass ? "ok  " : "FAIL", r.method().key(), r.file(), r.vertices(), r.maxDistance(), r.relative());
+        }
+        if (!withoutCode.isEmpty()) {
+            out.println("not checked, no shader code (skinned on the CPU in the viewer and the app): "
+                    + MethodKeys.keys(withoutCode));
         }
         out.flush();
         return ok ? ExitCodes.OK : ExitCodes.INTERNAL;
     }
 
-    private static List<SkinningMethod> methods(String name) {
-        if (name.equalsIgnoreCase("all")) {
-            return List.of(SkinningMethod.values());
-        }
-        try {
-            return List.of(SkinningMethod.fromKey(name));
-        } catch (IllegalArgumentException e) {
-            throw new CommandFailure(ExitCodes.USAGE, "--method " + name + ": expected lbs, dqs, cor or all", e);
-        }
-    }
 
     private Result check(SkinningShader shader, Path file, Model model, SkinningMethod method) {
         AnimationConfig config = new AnimationConfig();

@@ -26,12 +26,13 @@ import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
 
 /**
- * {@code skinlab compare FILE --joint NAME [--time T,...]}: where each skinning method wins at one
- * joint of a user's file, as a markdown table per time: volume, joint ring, bulge, and the
- * distance to every other method ({@code JointArtifacts}, docs/skinning.md).
+ * {@code skinlab compare FILE --joint NAME [--time T,...] [--method KEY,...|all]}: where each
+ * skinning method wins at one joint of a user's file, as a markdown table per time: volume, joint
+ * ring, bulge, and the distance to every other method compared ({@code JointArtifacts},
+ * docs/skinning.md). Every method by default, or the ones named, in {@link SkinningMethod}'s order.
  */
 @Command(name = "compare", mixinStandardHelpOptions = true,
-        description = {"LBS, DQS and CoR at one joint: volume kept, joint ring, bulge, distance between the methods "
+        description = {"The skinning methods at one joint: volume kept, joint ring, bulge, distance between the methods "
                 + "(a markdown table per time)."})
 public final class CompareCommand implements Callable<Integer> {
     @Parameters(index = "0", paramLabel = "FILE", description = "a model file (.dae, .gltf, .glb)")
@@ -45,11 +46,16 @@ public final class CompareCommand implements Callable<Integer> {
             + " start, middle and end)")
     List<Float> times;
 
+    @Option(names = "--method", split = ",", paramLabel = MethodKeys.KEYS_OR_ALL,
+            description = "the methods compared, comma-separated, or all (default: all)")
+    List<String> methods = List.of("all");
+
     @Spec
     CommandSpec spec;
 
     @Override
     public Integer call() {
+        List<SkinningMethod> compared = compared();
         Model model = ModelFiles.load(file).model;
         SkinnedModel skinned = new SkinnedModel(model, model.clips().isEmpty() ? null : model.clips().get(0),
                 NormalTransform.INVERSE_TRANSPOSE);
@@ -77,12 +83,12 @@ public final class CompareCommand implements Callable<Integer> {
             for (float t : at) {
                 skinned.pose(skinned.sampler().clamp(t), RotationInterpolation.SLERP);
                 Map<SkinningMethod, float[]> posed = new EnumMap<>(SkinningMethod.class);
-                for (SkinningMethod m : SkinningMethod.values()) {
+                for (SkinningMethod m : compared) {
                     float[] points = new float[3 * geometry.pointCount()];
                     skinned.skin(g, m, points, new float[points.length]);
                     posed.put(m, points);
                 }
-                table(out, t, artifacts.report(posed, skinned.palette(g).matrices()));
+                table(out, t, compared, artifacts.report(posed, skinned.palette(g).matrices()));
             }
         }
         if (found == 0) {
@@ -92,19 +98,36 @@ public final class CompareCommand implements Callable<Integer> {
         return ExitCodes.OK;
     }
 
-    private static void table(PrintWriter out, float time, List<JointArtifacts.Report> reports) {
-        out.printf(Locale.ROOT, "%n| t = %.3f s | volume / rest | joint ring / rest | bulge | distance to LBS | DQS | CoR |%n",
-                time);
-        out.println("|---|---:|---:|---:|---:|---:|---:|");
+    /** The methods --method names, each once, in the enum's order. */
+    private List<SkinningMethod> compared() {
+        java.util.EnumSet<SkinningMethod> set = java.util.EnumSet.noneOf(SkinningMethod.class);
+        for (String key : methods) {
+            set.addAll(MethodKeys.parseOneOrAll("--method", key.trim()));
+        }
+        return new ArrayList<>(set);
+    }
+
+    private static void table(PrintWriter out, float time, List<SkinningMethod> methods,
+            List<JointArtifacts.Report> reports) {
+        List<String> names = new ArrayList<>();
+        methods.forEach(m -> names.add(label(m)));
+        out.printf(Locale.ROOT, "%n| t = %.3f s | volume / rest | joint ring / rest | bulge | distance to %s |%n",
+                time, String.join(" | ", names));
+        out.println("|---|---:|---:|---:|" + "---:|".repeat(methods.size()));
         for (JointArtifacts.Report r : reports) {
             List<String> cells = new ArrayList<>();
-            for (SkinningMethod other : SkinningMethod.values()) {
+            for (SkinningMethod other : methods) {
                 Double d = r.distanceTo().get(other);
                 cells.add(d == null ? "" : String.format(Locale.ROOT, "%.4f", d));
             }
-            out.printf(Locale.ROOT, "| %s | %s | %s | %s | %s |%n", r.method().name(), number(r.volume()),
+            out.printf(Locale.ROOT, "| %s | %s | %s | %s | %s |%n", label(r.method()), number(r.volume()),
                     number(r.ringRadius()), number(r.bulge()), String.join(" | ", cells));
         }
+    }
+
+    /** A method in the tables: its key in capitals (LBS, STBS-DQS). */
+    private static String label(SkinningMethod m) {
+        return m.key().toUpperCase(Locale.ROOT);
     }
 
     private static String number(double v) {

@@ -30,9 +30,10 @@ final class EvalAdviceSection implements EvalSection {
     /** The share of a 60 Hz frame (µs) left to skinning: the camera, tracking and drawing need the rest. */
     static final double BUDGET_MICROS = 4000;
     static final int FRAME_RATE = 60;
-    /** One colour per method (LBS, DQS, CoR) in the figures. */
+    /** One colour per method, in SkinningMethod's order (LBS, DQS, CoR, BFDQS, STBS-LBS, STBS-DQS, spline). */
     private static final java.awt.Color[] COLOURS = {new java.awt.Color(0x1f77b4), new java.awt.Color(0xd62728),
-        new java.awt.Color(0x2ca02c)};
+        new java.awt.Color(0x2ca02c), new java.awt.Color(0x9467bd), new java.awt.Color(0xff7f0e),
+        new java.awt.Color(0x8c564b), new java.awt.Color(0x17becf)};
     static final double FRAME_MICROS = 1e6 / FRAME_RATE;
 
     @Override

@@ -79,10 +79,10 @@ final class EvalCrowdsRender {
             results.put("software", RenderBench.isSoftware(bench.renderer()));
             bench.warmUp(model, warmup);
             ArrayNode points = results.putArray("points");
-            int series = 2 * SkinningMethod.values().length;
+            int series = 2 * CrowdBench.METHODS.size();
             int done = 0;
             for (boolean gpu : new boolean[] {false, true}) {
-                for (SkinningMethod method : SkinningMethod.values()) {
+                for (SkinningMethod method : CrowdBench.METHODS) {
                     for (int i = 0; i < steps.size(); i++) {
                         RenderBench.Point p = bench.measure(model, gpu, method, steps.get(i), seconds);
                         points.addObject().put("skinning", p.skinning()).put("method", p.method())

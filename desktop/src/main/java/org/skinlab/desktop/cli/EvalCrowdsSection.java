@@ -92,7 +92,7 @@ final class EvalCrowdsSection implements EvalSection {
         boolean render = EvalCrowdsRender.display() != null;
         double cpuShare = render ? (quick ? 0.55 : 0.6) : 1;
         int block = cores + counts.length;
-        int total = files.size() * SkinningMethod.values().length * block;
+        int total = files.size() * CrowdBench.METHODS.size() * block;
         int done = 0;
         ArrayNode models = results.putArray("models");
         for (Path f : files) {
@@ -103,7 +103,7 @@ final class EvalCrowdsSection implements EvalSection {
             ObjectNode warmed = m.putObject("warmedSeconds");
             ArrayNode threads = m.putArray("threads");
             ArrayNode crowd = m.putArray("crowd");
-            for (SkinningMethod method : SkinningMethod.values()) {
+            for (SkinningMethod method : CrowdBench.METHODS) {
                 int blockStart = done;
                 warmed.put(method.key(), EvalReport.round(bench.warmUp(method, threadCrowd, cores,
                         firstWarmup, maxWarmup)));

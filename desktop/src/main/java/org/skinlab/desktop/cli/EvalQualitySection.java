@@ -273,15 +273,25 @@ final class EvalQualitySection implements EvalSection {
         if (results.has("cowboySkipped")) {
             report.paragraph("The thesis' cowboy is skipped: `" + results.get("cowboySkipped").asText() + "`.");
         }
-        report.header("asset", "joint", "LBS min volume", "DQS min volume", "CoR min volume", "LBS min ring",
-                "DQS min ring", "CoR min ring", "max abs(LBS - DQS) %", "max abs(DQS - CoR) %");
+        List<String> header = new ArrayList<>(List.of("asset", "joint"));
+        for (String measure : new String[] {"min volume", "min ring"}) {
+            for (SkinningMethod m : SkinningMethod.values()) {
+                header.add(m.key().toUpperCase(Locale.ROOT) + " " + measure);
+            }
+        }
+        header.add("max abs(LBS - DQS) %");
+        header.add("max abs(DQS - CoR) %");
+        report.header(header.toArray(new String[0]));
         JsonNode assets = results.get("assets");
         for (int a = 0; a < assets.size(); a++) {
             JsonNode asset = assets.get(a);
             String p = "/assets/" + a;
             if (asset.has("skipped")) {
-                report.row("`" + asset.get("file").asText() + "`", "skipped: " + asset.get("skipped").asText(),
-                        "", "", "", "", "", "", "", "");
+                String[] row = new String[header.size()];
+                java.util.Arrays.fill(row, "");
+                row[0] = "`" + asset.get("file").asText() + "`";
+                row[1] = "skipped: " + asset.get("skipped").asText();
+                report.row(row);
                 continue;
             }
             List<String> cells = new ArrayList<>();

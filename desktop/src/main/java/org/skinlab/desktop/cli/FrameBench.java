@@ -8,7 +8,6 @@ import org.skinlab.animation.RotationInterpolation;
 import org.skinlab.animation.WrapMode;
 import org.skinlab.model.Model;
 import org.skinlab.skinning.InfluenceView;
-import org.skinlab.skinning.JointPalette;
 import org.skinlab.skinning.NormalTransform;
 import org.skinlab.skinning.PositionSharing;
 import org.skinlab.skinning.SkinnedGeometry;
@@ -87,8 +86,13 @@ final class FrameBench {
             return geometry;
         }
         InfluenceView view = InfluenceView.of(geometry, cap);
+        // The joints keep their hierarchy: the bone methods' bones are the frame's.
+        int[] parents = new int[geometry.jointCount()];
+        for (int j = 0; j < parents.length; j++) {
+            parents[j] = geometry.jointParent(j);
+        }
         return SkinnedGeometry.fromArrays(geometry.positionArray(), geometry.normalArray(), view.influencesPerPoint(),
-                view.jointIndicesAsInts(), view.weights(), geometry.bindMatrixArray());
+                view.jointIndicesAsInts(), view.weights(), geometry.bindMatrixArray(), parents);
     }
 
     /**
@@ -166,9 +170,8 @@ final class FrameBench {
         float t = skinned.sampler().clipTime(elapsed, WrapMode.LOOP);
         skinned.pose(t, RotationInterpolation.SLERP);
         for (int g = 0; g < positions.length; g++) {
-            // DQS and CoR read the dual quaternions.
-            JointPalette palette = method != SkinningMethod.LBS ? skinned.preparePalette(g) : skinned.palette(g);
-            skinners[g][method.ordinal()].skinAll(palette, positions[g], normals[g]);
+            // What the method reads: the dual quaternions (all but LBS), the bone rows (the bone methods).
+            skinners[g][method.ordinal()].skinAll(skinned.preparePalette(g, method), positions[g], normals[g]);
         }
     }
 }

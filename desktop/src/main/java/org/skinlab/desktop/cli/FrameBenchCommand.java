@@ -62,8 +62,8 @@ public final class FrameBenchCommand implements Callable<Integer> {
             + BenchCorpus.SHARED_CORPUS + " beside the repository root, else beside the current directory)")
     Path corpus;
 
-    @Option(names = "--method", paramLabel = "lbs|dqs|cor|both|all",
-            description = "skinning method; both: lbs and dqs; all: lbs, dqs and cor (default: lbs for one file, both"
+    @Option(names = "--method", paramLabel = MethodKeys.KEYS_OR_ALL + "|both",
+            description = "skinning method; both: lbs and dqs; all: every method (default: lbs for one file, both"
                     + " for several)")
     String method;
 
@@ -218,14 +218,7 @@ public final class FrameBenchCommand implements Callable<Integer> {
         if (method.equalsIgnoreCase("both")) {
             return List.of(SkinningMethod.LBS, SkinningMethod.DQS);
         }
-        if (method.equalsIgnoreCase("all")) {
-            return List.of(SkinningMethod.values());
-        }
-        try {
-            return List.of(SkinningMethod.fromKey(method));
-        } catch (IllegalArgumentException e) {
-            throw usage("unknown skinning method \"" + method + "\" (expected lbs, dqs, cor, both or all)");
-        }
+        return MethodKeys.parseOneOrAll("--method", method);
     }
 
     private NormalTransform parseNormals() {
@@ -266,8 +259,9 @@ public final class FrameBenchCommand implements Callable<Integer> {
                 + " influences per position, %s, normals %s, %s, %s%n", name, shape.positionsSkinned(),
                 shape.renderVertices(), shape.joints(), shape.influences(), t.method().key(),
                 normals.toLowerCase(Locale.ROOT), t.kernel(), JavaRuntime.describe());
-        out.printf(Locale.ROOT, "min %.2f µs, median %.2f µs per frame (%d frames: sample, skinning matrices, skin)%n",
-                t.minMicros(), t.medianMicros(), t.frames());
+        out.printf(Locale.ROOT, "min %.2f µs, median %.2f µs per frame (%d frames: sample, skinning matrices, skin);"
+                + " median %.2f ns per position skinned%n", t.minMicros(), t.medianMicros(), t.frames(),
+                nanosPerPosition(t.medianMicros(), shape));
     }
 
     private String toJson(String name, FrameBench.Shape shape, FrameBench.Timing t) {
@@ -284,6 +278,7 @@ public final class FrameBenchCommand implements Callable<Integer> {
         root.put("frames", t.frames());
         root.put("minMicrosPerFrame", round(t.minMicros()));
         root.put("medianMicrosPerFrame", round(t.medianMicros()));
+        root.put("medianNanosPerPosition", round(nanosPerPosition(t.medianMicros(), shape)));
         root.put("implementation", t.kernel());
         root.put("java", JavaRuntime.version());
         root.put("javaVendor", JavaRuntime.vendor());
@@ -292,6 +287,14 @@ public final class FrameBenchCommand implements Callable<Integer> {
         } catch (JsonProcessingException e) {
             throw new IllegalStateException(e);
         }
+    }
+
+    /**
+     * A frame's time per position skinned, in ns: what the methods cost per vertex, compared at the
+     * same mesh (posing is in the frame too, the same for every method).
+     */
+    private static double nanosPerPosition(double micros, FrameBench.Shape shape) {
+        return 1000 * micros / Math.max(1, shape.positionsSkinned());
     }
 
     private static double round(double d) {

@@ -26,7 +26,7 @@ final class FrameBenchTable {
         column("influences", 0);
         column("kernel", "vector-256".length());
         for (SkinningMethod m : methods) {
-            column(m.name() + " frame", "100.00 / 100.00".length());
+            column(m.key().toUpperCase(Locale.ROOT) + " frame", "100.00 / 100.00".length());
         }
     }
 

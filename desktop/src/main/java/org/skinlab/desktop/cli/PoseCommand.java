@@ -34,7 +34,7 @@ import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
 
 /**
- * {@code skinlab pose FILE --time T1[,T2...] --method lbs|dqs|cor [--clip NAME] [--json OUT]}: the
+ * {@code skinlab pose FILE --time T1[,T2...] --method KEY [--clip NAME] [--json OUT]}: the
  * deformed positions of every placed mesh at the given clip times. The JSON form is a contract
  * other tools compare against:
  * <pre>
@@ -45,7 +45,8 @@ import picocli.CommandLine.Model.CommandSpec;
  * <li>{@code file}: the path as given on the command line.</li>
  * <li>{@code clip}: the name of the clip played ({@code --clip}, else the file's first clip);
  *     null when the file has no animation: then every time gives the rest pose.</li>
- * <li>{@code method}: {@code "lbs"}, {@code "dqs"} or {@code "cor"}.</li>
+ * <li>{@code method}: the method's key ({@link SkinningMethod#key()}): {@code "lbs"}, {@code "dqs"},
+ *     {@code "cor"}, {@code "bfdqs"}, {@code "stbs-lbs"}, {@code "stbs-dqs"} or {@code "spline"}.</li>
  * <li>{@code times}: the times actually used, in the order given: clamped to
  *     [clip start, clip end]; as given when there is no clip.</li>
  * <li>{@code meshes}: one entry per placed mesh ({@code <instance_controller>} or
@@ -79,8 +80,10 @@ public final class PoseCommand implements Callable<Integer> {
             description = "clip times in seconds, comma-separated; clamped to the clip")
     List<Float> times = new ArrayList<>();
 
-    @Option(names = "--method", required = true, paramLabel = "lbs|dqs|cor", converter = MethodConverter.class,
-            description = "skinning method: lbs (linear blend), dqs (dual quaternion) or cor (optimized centres of rotation)")
+    @Option(names = "--method", required = true, paramLabel = MethodKeys.KEYS, converter = MethodKeys.Converter.class,
+            description = "skinning method: lbs (linear blend), dqs (dual quaternion), cor (optimized centres of rotation),"
+                    + " bfdqs (bulge-free DQS), stbs-lbs or stbs-dqs (stretchable and twistable bones on LBS or DQS),"
+                    + " spline (spline-based)")
     SkinningMethod method;
 
     @Option(names = "--clip", paramLabel = "NAME", description = "the clip to play (default: the file's first clip)")
@@ -265,17 +268,6 @@ public final class PoseCommand implements Callable<Integer> {
                 throw new CommandLine.TypeConversionException("'" + value + "' is beyond the float range");
             }
             return t;
-        }
-    }
-
-    static final class MethodConverter implements CommandLine.ITypeConverter<SkinningMethod> {
-        @Override
-        public SkinningMethod convert(String value) {
-            try {
-                return SkinningMethod.fromKey(value);
-            } catch (IllegalArgumentException e) {
-                throw new CommandLine.TypeConversionException("'" + value + "' is not a skinning method (expected lbs, dqs or cor)");
-            }
         }
     }
 

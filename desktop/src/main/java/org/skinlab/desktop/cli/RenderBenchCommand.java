@@ -28,7 +28,7 @@ import picocli.CommandLine.Model.CommandSpec;
 
 /**
  * {@code skinlab bench-render [FILE]}: the thesis' frames-per-second-against-meshes figure
- * redone. For CPU and GPU skinning, LBS and DQS, it renders a grid of 1, 4, 8, 12, 16, ...
+ * redone. For CPU and GPU skinning and the crowds' methods ({@link CrowdBench#METHODS}), it renders a grid of 1, 4, 8, 12, 16, ...
  * animated copies, each its own simulation stepped every frame (as the thesis' meshes were), in
  * an off-screen window without vsync, and stops a series when it falls below 30 fps. It also
  * reports the bytes the render loop allocated per frame. The loop is {@link RenderBench}'s.
@@ -82,7 +82,7 @@ public final class RenderBenchCommand implements Callable<Integer> {
             bench.warmUp(model, Math.max(2.0, seconds));
             out.printf("%-4s %-4s %9s %9s %9s %12s%n", "skin", "meth", "instances", "fps", "ms/frame", "bytes/frame");
             for (boolean gpu : new boolean[] {false, true}) {
-                for (SkinningMethod method : SkinningMethod.values()) {
+                for (SkinningMethod method : CrowdBench.METHODS) {
                     for (int n : RenderBench.steps(maxInstances)) {
                         RenderBench.Point p = bench.measure(model, gpu, method, n, seconds);
                         points.add(p);

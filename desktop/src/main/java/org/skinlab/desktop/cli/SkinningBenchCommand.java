@@ -41,7 +41,7 @@ public final class SkinningBenchCommand implements Callable<Integer> {
     @Option(names = "--threads", paramLabel = "T", description = "threads, the caller's included (default: ${DEFAULT-VALUE})")
     int threads = 1;
 
-    @Option(names = "--method", paramLabel = "lbs|dqs|cor", description = "skinning method (default: ${DEFAULT-VALUE})")
+    @Option(names = "--method", paramLabel = MethodKeys.KEYS, description = "skinning method (default: ${DEFAULT-VALUE})")
     String method = "lbs";
 
     @Option(names = "--implementation", paramLabel = "auto|scalar|vector",

@@ -9,6 +9,7 @@ import org.skinlab.desktop.ExitCodes;
 import org.skinlab.desktop.app.AppOptions;
 import org.skinlab.desktop.app.SkinlabApp;
 import org.skinlab.desktop.render.DrawSettings;
+import org.skinlab.skinning.SkinningGlsl;
 import org.skinlab.skinning.SkinningMethod;
 
 import picocli.CommandLine;
@@ -33,7 +34,7 @@ public final class ViewCommand implements Callable<Integer> {
     @Parameters(index = "0", arity = "0..1", paramLabel = "FILE", description = "a model file (.dae, .gltf, .glb)")
     Path file;
 
-    @Option(names = "--method", paramLabel = "lbs|dqs|cor", converter = PoseCommand.MethodConverter.class,
+    @Option(names = "--method", paramLabel = MethodKeys.KEYS, converter = MethodKeys.Converter.class,
             description = "skinning method at start (default: lbs)")
     SkinningMethod method = SkinningMethod.LBS;
 
@@ -41,8 +42,9 @@ public final class ViewCommand implements Callable<Integer> {
             description = "rotation interpolation between keyframes (default: slerp)")
     RotationInterpolation interpolation = RotationInterpolation.SLERP;
 
-    @Option(names = "--split", paramLabel = "lbs|dqs|cor", converter = PoseCommand.MethodConverter.class,
-            description = "split view: this method drawn beside --method, in sync")
+    @Option(names = "--split", paramLabel = MethodKeys.KEYS, converter = MethodKeys.Converter.class,
+            description = "split view: this method drawn beside --method, in sync, skinned on the GPU (a method"
+                    + " without shader code cannot be the second view)")
     SkinningMethod split;
 
     @Option(names = "--gpu", description = "skin in the vertex shader (the default)")
@@ -91,6 +93,10 @@ public final class ViewCommand implements Callable<Integer> {
         if (split != null && split == method) {
             throw new CommandFailure(ExitCodes.USAGE, "--split names the method drawn beside --method: use another "
                     + "one than " + method.key(), null);
+        }
+        if (split != null && !SkinningGlsl.hasCode(split)) {
+            throw new CommandFailure(ExitCodes.USAGE, "--split " + split.key() + ": the second view is skinned on the GPU,"
+                    + " and " + split.key() + " has no shader code (it can be --method, skinned on the CPU)", null);
         }
         if (exitAfterFrames < 0) {
             throw new CommandFailure(ExitCodes.USAGE, "--exit-after-frames needs a count >= 0", null);

@@ -50,6 +50,8 @@ public final class ModelRenderer implements AutoCloseable {
     private final Matrix4f clip = new Matrix4f();
     private long uploadedSequence = Long.MIN_VALUE;
     private Frame uploadedFrame;
+    /** Per geometry, whether the bone rows of the frame last uploaded are on the GPU (uploaded on first need). */
+    private final boolean[] bonesUploaded;
 
     /**
      * @param shader   the skinning program (shared between models)
@@ -63,6 +65,7 @@ public final class ModelRenderer implements AutoCloseable {
         centres = new PartCentres[geometries.size()];
         posedCentres = new float[geometries.size()][];
         mirrored = new boolean[geometries.size()];
+        bonesUploaded = new boolean[geometries.size()];
         int blended = 0;
         for (int g = 0; g < geometries.size(); g++) {
             GpuGeometry gpu = new GpuGeometry(geometries.get(g));
@@ -111,6 +114,7 @@ public final class ModelRenderer implements AutoCloseable {
         }
         for (int g = 0; g < geometries.size(); g++) {
             geometries.get(g).upload(frame, g);
+            bonesUploaded[g] = false;
             float[] m = frame.skinningMatrices(g);
             mirrored[g] = geometries.get(g).geometry().windingMirrored() ^ PartCentres.firstJointMirrors(m);
             for (int i = 0; i < centres[g].partCount(); i++) {
@@ -122,10 +126,24 @@ public final class ModelRenderer implements AutoCloseable {
     }
 
     /**
+     * Uploads geometry {@code g}'s bone rows of the frame last uploaded, once per frame, for a
+     * method that reads them: the other methods leave them in the frame. The frame is still held:
+     * drawing happens between its acquire and close.
+     */
+    private void bonesFor(SkinningMethod method, int g) {
+        if (method.usesBones() && !bonesUploaded[g]) {
+            geometries.get(g).palette().uploadBones(uploadedFrame, g);
+            bonesUploaded[g] = true;
+        }
+    }
+
+    /**
      * Draws the frame last {@link #upload uploaded}: opaque and masked parts, then blended parts
      * back to front (each part by its centre; depth writes stay on, as three.js draws transparent
      * objects). Single-sided parts cull back faces. With {@code s.gpuSkinning} false, the
-     * CPU-skinned positions of that frame are drawn (the caller checks the frame has them).
+     * CPU-skinned positions of that frame are drawn (the caller checks the frame has them); with
+     * it true, {@code s.method} must have shader code ({@link SkinningGlsl#hasCode}: the
+     * simulation skins the others on the CPU, so their frames have the mesh).
      */
     public void draw(DrawSettings s) {
         shader.use();
@@ -199,6 +217,9 @@ public final class ModelRenderer implements AutoCloseable {
         GpuGeometry gpu = geometries.get(g);
         if (s.gpuSkinning && s.method == SkinningMethod.COR) {
             gpu.ensureCentres();
+        }
+        if (s.gpuSkinning) {
+            bonesFor(s.method, g);
         }
         // No joint (-1) colours by nothing; a joint outside this palette shows weight 0 (blue).
         glUniform1i(shader.selectedJoint, !weights ? -1 : gpu.paletteIndexOfNode(s.selectedNode));
@@ -284,6 +305,7 @@ public final class ModelRenderer implements AutoCloseable {
             if (method == SkinningMethod.COR) {
                 gpu.ensureCentres();
             }
+            bonesFor(method, g);
             glUniform1i(shader.compare, 0);
             glUniform1i(shader.selectedJoint, -1);
             glUniform1i(shader.columns, 1);

@@ -77,6 +77,7 @@ public final class SkinningShader implements AutoCloseable {
         glUniform1i(program.uniform("uMatrices"), PaletteBuffers.MATRIX_UNIT);
         glUniform1i(program.uniform("uDualQuaternions"), PaletteBuffers.DUAL_QUATERNION_UNIT);
         glUniform1i(program.uniform("uScales"), PaletteBuffers.SCALE_UNIT);
+        glUniform1i(program.uniform("uBones"), PaletteBuffers.BONE_UNIT);
         glUseProgram(0);
     }
 

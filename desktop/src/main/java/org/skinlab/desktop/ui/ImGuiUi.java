@@ -95,7 +95,8 @@ public final class ImGuiUi implements AppUi {
         SkinningMethod[] methods = SkinningMethod.values();
         String[][] labels = new String[methods.length][];
         for (SkinningMethod m : methods) {
-            labels[m.ordinal()] = new String[] {m.name() + " (GPU)", m.name() + " (CPU)"};
+            String name = m.key().toUpperCase(java.util.Locale.ROOT);
+            labels[m.ordinal()] = new String[] {name + " (GPU)", name + " (CPU)"};
         }
         return labels;
     }

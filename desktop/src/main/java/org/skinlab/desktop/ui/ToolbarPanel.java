@@ -27,6 +27,10 @@ final class ToolbarPanel {
     // values() copies its array on every call; the interface draws every frame.
     private static final RotationInterpolation[] INTERPOLATIONS = RotationInterpolation.values();
     private static final SkinningMethod[] METHODS = SkinningMethod.values();
+    /** Radio buttons per row: seven methods in two rows fit the toolbar's width. */
+    private static final int METHODS_PER_ROW = 4;
+    /** Per method its button's text (the key in capitals) with its enum name as the ImGui id scripts find. */
+    private static final String[] METHOD_LABELS = methodLabels();
 
     private final Widgets widgets;
     private final float[] timeline = new float[1];
@@ -93,10 +97,10 @@ final class ToolbarPanel {
         ImGui.separator();
         Widgets.dim("Skinning");
         for (SkinningMethod m : METHODS) {
-            if (m != METHODS[0]) {
+            if (m.ordinal() % METHODS_PER_ROW != 0) {
                 ImGui.sameLine();
             }
-            if (ImGui.radioButton(m.name(), config.method() == m)) {
+            if (ImGui.radioButton(METHOD_LABELS[m.ordinal()], config.method() == m)) {
                 config.setMethod(m);
             }
             widgets.remember(m.name());
@@ -204,5 +208,13 @@ final class ToolbarPanel {
             viewer.config().stopAnimation();
             viewer.seek(timeline[0]);
         }
+    }
+
+    private static String[] methodLabels() {
+        String[] labels = new String[METHODS.length];
+        for (SkinningMethod m : METHODS) {
+            labels[m.ordinal()] = m.key().toUpperCase(java.util.Locale.ROOT) + "##" + m.name();
+        }
+        return labels;
     }
 }

@@ -52,14 +52,18 @@ class CorMethodCommandTest {
         assertEquals(0, frame.status, frame::toString);
         Cli unknown = Cli.run("pose", Cli.defaultAsset().toString(), "--time", "0", "--method", "xyz");
         assertEquals(2, unknown.status, unknown::toString);
-        assertTrue(unknown.err.contains("expected lbs, dqs or cor"), unknown::toString);
+        assertTrue(unknown.err.contains("expected one of lbs, dqs, cor, bfdqs, stbs-lbs, stbs-dqs, spline"),
+                unknown::toString);
     }
 
     @Test
     void compareTabulatesTheMethodsAtAJoint() {
         Cli r = Cli.run("compare", Cli.root().resolve("assets/cylinders/cylinder-bend.dae").toString(), "--joint", "upper",
-                "--time", "4");
+                "--time", "4", "--method", "cor,lbs", "--method", "dqs");
         assertEquals(0, r.status, r::toString);
+        // The chosen set, in the enum's order, whatever order it was named in.
+        assertTrue(r.out.contains("| bulge | distance to LBS | DQS | COR |\n|---|---:|---:|---:|---:|---:|---:|"),
+                r::toString);
         assertTrue(r.out.contains("joint upper with parent lower, 640 points in the joint region"), r::toString);
         // At 170 degrees of bend: DQS bulges 0.038 m, CoR 0.006, LBS loses 8.5% of the volume.
         assertTrue(r.out.contains("| LBS | 0.9146 |"), r::toString);

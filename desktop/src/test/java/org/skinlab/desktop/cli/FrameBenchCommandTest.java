@@ -33,7 +33,7 @@ class FrameBenchCommandTest {
     private static final String[] FAST = {"--warmup-seconds", "0", "--seconds", "0"};
     private static final List<String> KEYS = List.of("benchmark", "file", "method", "normals", "positionsSkinned",
             "renderVertices", "joints", "influences", "frames", "minMicrosPerFrame", "medianMicrosPerFrame",
-            "implementation", "java", "javaVendor");
+            "medianNanosPerPosition", "implementation", "java", "javaVendor");
     private static final String HEADER = "| file | positions skinned | render vertices | joints | influences | kernel"
             + " | LBS frame | DQS frame |";
     private static final String CELL = "[0-9]+\\.[0-9]{2} / [0-9]+\\.[0-9]{2}";
@@ -112,6 +112,9 @@ class FrameBenchCommandTest {
             assertTrue(root.get("frames").intValue() >= 5, r::toString);
             double min = root.get("minMicrosPerFrame").doubleValue();
             assertTrue(min > 0 && min <= root.get("medianMicrosPerFrame").doubleValue(), r::toString);
+            assertEquals(1000 * root.get("medianMicrosPerFrame").doubleValue() / root.get("positionsSkinned").intValue(),
+                    root.get("medianNanosPerPosition").doubleValue(), 1e-3 + 1e-3 * root.get("medianNanosPerPosition")
+                            .doubleValue(), "per position: the frame over the positions skinned");
             assertEquals("vector-256", root.get("implementation").asText());
             assertEquals(System.getProperty("java.version"), root.get("java").asText());
             assertEquals(System.getProperty("java.vendor"), root.get("javaVendor").asText());
@@ -130,7 +133,7 @@ class FrameBenchCommandTest {
                 shape.get(1), shape.get(2), shape.get(3), System.getProperty("java.version"),
                 System.getProperty("java.vendor")), lines[0]);
         assertTrue(lines[1].matches("min [0-9.]+ µs, median [0-9.]+ µs per frame \\([0-9]+ frames: sample, skinning"
-                + " matrices, skin\\)"), lines[1]);
+                + " matrices, skin\\); median [0-9.]+ ns per position skinned"), lines[1]);
     }
 
     @Test
@@ -180,8 +183,13 @@ class FrameBenchCommandTest {
         r = bench(Cli.defaultAsset().toString(), "--method", "all");
         assertEquals(ExitCodes.OK, r.status, r::toString);
         lines = r.out.split("\n");
-        assertEquals(List.of("LBS frame", "DQS frame", "COR frame"), cells(lines[2]).subList(6, 9));
-        assertEquals(9, cells(lines[4]).size());
+        // Every method, in SkinningMethod's order.
+        List<String> titles = new ArrayList<>();
+        for (SkinningMethod m : SkinningMethod.values()) {
+            titles.add(m.key().toUpperCase(java.util.Locale.ROOT) + " frame");
+        }
+        assertEquals(titles, cells(lines[2]).subList(6, 6 + titles.size()));
+        assertEquals(6 + titles.size(), cells(lines[4]).size());
     }
 
     @Test

@@ -16,8 +16,9 @@ layout(location = 8) in vec4 aColor;      // the vertex colour (white when the m
 uniform samplerBuffer uMatrices;      // 3 texels per joint: the rows of a 3x4 affine matrix
 uniform samplerBuffer uDualQuaternions; // 2 texels per joint: rotation (x y z w), dual part
 uniform samplerBuffer uScales;        // 3 texels per joint: rows of the scale/shear part
+uniform samplerBuffer uBones;         // 6 texels per joint: the bone rows (Frame.boneRows), for methods that read bones
 
-uniform int uSkinning;        // 0: positions are already posed (CPU), 1: LBS, 2: DQS, 3: CoR
+uniform int uSkinning;        // 0: positions are already posed (CPU), else SkinningGlsl.methodCode
 uniform int uInfluences;      // 4 or 8
 uniform bool uCompare;        // difference view: also skin with the other method
 uniform int uSelectedJoint;   // weight view
@@ -65,7 +66,11 @@ vec4 paletteDual(uint joint) {
     return texelFetch(uDualQuaternions, int(joint) * 2 + 1);
 }
 
-// LBS, DQS and CoR: the formulas the Android app's shader shares (core's skinning.glsl).
+vec4 boneRow(uint joint, int row) {
+    return texelFetch(uBones, int(joint) * 6 + row);
+}
+
+// The methods' formulas the Android app's shader shares (core's skinning.glsl).
 #include "skinning.glsl"
 
 void main() {

@@ -1,0 +1,50 @@
+package org.skinlab.desktop.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+
+import java.util.ArrayList;
+import java.util.List;
+
+import org.junit.jupiter.api.Test;
+import org.skinlab.desktop.ExitCodes;
+import org.skinlab.skinning.SkinningMethod;
+
+import picocli.CommandLine;
+
+/** Every command's --method takes every method's key: one list of keys, one converter. */
+class MethodKeysTest {
+    @Test
+    void theKeysLabelIsEveryMethodsKeyInOrder() {
+        List<String> keys = new ArrayList<>();
+        for (SkinningMethod m : SkinningMethod.values()) {
+            keys.add(m.key());
+        }
+        assertEquals(String.join("|", keys), MethodKeys.KEYS);
+    }
+
+    @Test
+    void everyKeyParsesInEveryCommandThatTakesOne() {
+        for (SkinningMethod m : SkinningMethod.values()) {
+            for (String key : new String[] {m.key(), m.key().toUpperCase(java.util.Locale.ROOT), m.name()}) {
+                assertEquals(m, new MethodKeys.Converter().convert(key));
+                assertEquals(List.of(m), MethodKeys.parseOneOrAll("--method", key));
+                PoseCommand pose = new PoseCommand();
+                new CommandLine(pose).parseArgs("f.dae", "--time", "0", "--method", key);
+                assertEquals(m, pose.method);
+                ViewCommand view = new ViewCommand();
+                new CommandLine(view).parseArgs("--method", key, "--split", key);
+                assertEquals(m, view.method);
+                assertEquals(m, view.split);
+                ArCommand ar = new ArCommand();
+                new CommandLine(ar).parseArgs("--method", key);
+                assertEquals(m, ar.method);
+            }
+        }
+        assertEquals(List.of(SkinningMethod.values()), MethodKeys.parseOneOrAll("--method", "ALL"));
+        CommandFailure bad = assertThrows(CommandFailure.class, () -> MethodKeys.parseOneOrAll("--method", "lbs2"));
+        assertEquals(ExitCodes.USAGE, bad.status());
+        assertEquals("--method lbs2: unknown skinning method \"lbs2\" (expected one of " + MethodKeys.KEYS.replace("|", ", ")
+                + "), or all", bad.getMessage());
+    }
+}
