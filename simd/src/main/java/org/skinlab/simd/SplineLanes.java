@@ -330,4 +330,30 @@ final class SplineLanes {
         mx.rearrange(Lanes.X2).blend(my.rearrange(Lanes.Y2), Lanes.MY2).blend(mz.rearrange(Lanes.Z2), Lanes.MZ2)
                 .intoArray(outNormals, o + 2 * L);
     }
+
+    /**
+     * The sums as frame records ({@code Skinner#skinFrames}: the columns of N, then p, then N's
+     * last column, each padded to four), 16 floats per point from {@code o}; plain stores.
+     */
+    static void storeFrames(float[] acc, float[] out, int o) {
+        for (int l = 0; l < L; l++) {
+            int f = o + 16 * l;
+            out[f] = acc[3 * L + l];
+            out[f + 1] = acc[6 * L + l];
+            out[f + 2] = acc[9 * L + l];
+            out[f + 3] = 0f;
+            out[f + 4] = acc[4 * L + l];
+            out[f + 5] = acc[7 * L + l];
+            out[f + 6] = acc[10 * L + l];
+            out[f + 7] = 0f;
+            out[f + 8] = acc[l];
+            out[f + 9] = acc[L + l];
+            out[f + 10] = acc[2 * L + l];
+            out[f + 11] = 0f;
+            out[f + 12] = acc[5 * L + l];
+            out[f + 13] = acc[8 * L + l];
+            out[f + 14] = acc[11 * L + l];
+            out[f + 15] = 0f;
+        }
+    }
 }

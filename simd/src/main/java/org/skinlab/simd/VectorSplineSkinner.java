@@ -19,9 +19,9 @@ import org.skinlab.skinning.SplineBinding;
  * its rigid influences and distinct curves are moved to the front of their columns, so a block
  * near one joint evaluates one curve, not one per slot.
  *
- * <p>Frames with joint scale, or with a mirroring joint under exact normals, go through the scalar
- * kernel, as do {@link #skinFrames} (the route of position sharing) and points of a range outside
- * whole blocks of 8.
+ * <p>{@link #skinFrames} (the route of position sharing) writes the same sums as frame records.
+ * Frames with joint scale, or with a mirroring joint under exact normals, go through the scalar
+ * kernel, as do points of a range outside whole blocks of 8.
  */
 final class VectorSplineSkinner extends AbstractSkinner {
     private static final int BLOCK = 8;
@@ -163,37 +163,65 @@ final class VectorSplineSkinner extends AbstractSkinner {
             throw new IndexOutOfBoundsException("output arrays shorter than " + 3 * BLOCK * endBlock);
         }
         scalar.skin(palette, outPositions, outNormals, from, BLOCK * firstBlock);
-        float[] records = table.get();
-        if (hasCurves) {
-            SplineLanes.curveTable(palette.boneRows(), palette.dualQuaternions(), curveParents, records);
-        }
+        float[] records = prepareTable(palette);
         float[] acc = scratch.get();
-        float[] matrices = palette.matrices();
         for (int b = firstBlock; b < endBlock; b++) {
-            java.util.Arrays.fill(acc, 0, 12 * BLOCK, 0f);
-            int pb = 6 * BLOCK * b;
-            for (int k = 0; k < width; k++) {
-                int group = width * b + k;
-                int lanes = BLOCK * group;
-                if (anyRigid[group]) {
-                    SplineLanes.load(matrices, rigidIndex, lanes, 12, acc);
-                    SplineLanes.addRigid(rigidWeights, lanes, points, pb, exact, acc);
-                }
-                if (anyCurve[group]) {
-                    SplineLanes.load(records, curveIndex, lanes, SplineLanes.RECORD, acc);
-                    SplineLanes.curve(parameters, 5 * lanes, points, pb, acc);
-                    SplineLanes.slerp(parameters, 5 * lanes, acc);
-                    SplineLanes.frame(acc);
-                    SplineLanes.accumulate(curveWeights, lanes, acc);
-                }
-            }
-            SplineLanes.store(points, pb, exact, acc, outPositions, outNormals, 3 * BLOCK * b);
+            sums(palette, records, b, exact, acc);
+            SplineLanes.store(points, 6 * BLOCK * b, exact, acc, outPositions, outNormals, 3 * BLOCK * b);
         }
         scalar.skin(palette, outPositions, outNormals, BLOCK * endBlock, to);
     }
 
+    /** This call's curve table (not filled for a geometry without curves, whose palette may lack bone rows). */
+    private float[] prepareTable(JointPalette palette) {
+        float[] records = table.get();
+        if (hasCurves) {
+            SplineLanes.curveTable(palette.boneRows(), palette.dualQuaternions(), curveParents, records);
+        }
+        return records;
+    }
+
+    /** Block b's sums of all its columns into {@code acc}: positions, then the normal matrix. */
+    private void sums(JointPalette palette, float[] records, int b, boolean exact, float[] acc) {
+        java.util.Arrays.fill(acc, 0, 12 * BLOCK, 0f);
+        int pb = 6 * BLOCK * b;
+        float[] matrices = palette.matrices();
+        for (int k = 0; k < width; k++) {
+            int group = width * b + k;
+            int lanes = BLOCK * group;
+            if (anyRigid[group]) {
+                SplineLanes.load(matrices, rigidIndex, lanes, 12, acc);
+                SplineLanes.addRigid(rigidWeights, lanes, points, pb, exact, acc);
+            }
+            if (anyCurve[group]) {
+                SplineLanes.load(records, curveIndex, lanes, SplineLanes.RECORD, acc);
+                SplineLanes.curve(parameters, 5 * lanes, points, pb, acc);
+                SplineLanes.slerp(parameters, 5 * lanes, acc);
+                SplineLanes.frame(acc);
+                SplineLanes.accumulate(curveWeights, lanes, acc);
+            }
+        }
+    }
+
     @Override
     public void skinFrames(JointPalette palette, float[] outFrames, int from, int to) {
-        scalar.skinFrames(palette, outFrames, from, to);
+        boolean exact = normalTransform() == NormalTransform.INVERSE_TRANSPOSE;
+        int firstBlock = (from + BLOCK - 1) / BLOCK;
+        int endBlock = Math.min(to / BLOCK, blockCount);
+        if (palette.hasScale() || (exact && palette.mirrorsMatrices()) || firstBlock >= endBlock) {
+            scalar.skinFrames(palette, outFrames, from, to);
+            return;
+        }
+        if (outFrames.length < FRAME_FLOATS * BLOCK * endBlock) {
+            throw new IndexOutOfBoundsException("output array shorter than " + FRAME_FLOATS * BLOCK * endBlock);
+        }
+        scalar.skinFrames(palette, outFrames, from, BLOCK * firstBlock);
+        float[] records = prepareTable(palette);
+        float[] acc = scratch.get();
+        for (int b = firstBlock; b < endBlock; b++) {
+            sums(palette, records, b, exact, acc);
+            SplineLanes.storeFrames(acc, outFrames, FRAME_FLOATS * BLOCK * b);
+        }
+        scalar.skinFrames(palette, outFrames, BLOCK * endBlock, to);
     }
 }
