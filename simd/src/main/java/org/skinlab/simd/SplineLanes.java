@@ -30,8 +30,13 @@ final class SplineLanes {
     private static final int TANGENT = CURVE + 6;
     private static final int REST_TANGENT = CURVE + 9;
     private static final int SLERP = CURVE + 12;
+    /** With joint scale: the two joints' scale parts (linear, row-major), then K (S(x) or its cofactor). */
+    private static final int SCALES = SLERP + 4;
+    private static final int NORMAL_SCALE = SCALES + 18;
     /** Rows of {@code acc} in all. */
-    static final int ROWS = SLERP + 4;
+    static final int ROWS = NORMAL_SCALE + 9;
+    /** Where each linear element of a row-major 3x4 matrix lies. */
+    private static final int[] LINEAR = {0, 1, 2, 4, 5, 6, 8, 9, 10};
 
     private SplineLanes() {
     }
@@ -97,12 +102,105 @@ final class SplineLanes {
 
     /** Copies {@code fields} floats of each lane's record (at {@code index[lanes + l]}) into rows DATA... */
     static void load(float[] table, int[] index, int lanes, int fields, float[] acc) {
+        loadInto(table, index, lanes, fields, DATA, acc);
+    }
+
+    /** Copies the lanes' scale records ({@link #scaleTable}, same offsets as the curve records). */
+    static void loadScales(float[] table, int[] index, int lanes, float[] acc) {
+        loadInto(table, index, lanes, 18, SCALES, acc);
+    }
+
+    private static void loadInto(float[] table, int[] index, int lanes, int fields, int row, float[] acc) {
         for (int l = 0; l < L; l++) {
             int r = index[lanes + l];
             for (int f = 0; f < fields; f++) {
-                acc[L * (DATA + f) + l] = table[r + f];
+                acc[L * (row + f) + l] = table[r + f];
             }
         }
+    }
+
+    /**
+     * With joint scale, per joint with a curve: the linear parts of its parent's and its own scale
+     * part (row-major, 0..8 and 9..17 of a {@link #RECORD}-float record); the neutral record has
+     * identities.
+     */
+    static void scaleTable(float[] scales, int[] parents, float[] table) {
+        int joints = parents.length;
+        for (int c = 0; c < joints; c++) {
+            int p = parents[c];
+            if (p < 0) {
+                continue;
+            }
+            for (int e = 0; e < 9; e++) {
+                table[RECORD * c + e] = scales[12 * p + LINEAR[e]];
+                table[RECORD * c + 9 + e] = scales[12 * c + LINEAR[e]];
+            }
+        }
+        int n = RECORD * joints;
+        java.util.Arrays.fill(table, n, n + RECORD, 0f);
+        for (int e = 0; e < 3; e++) {
+            table[n + 4 * e] = 1f;
+            table[n + 9 + 4 * e] = 1f;
+        }
+    }
+
+    /**
+     * With joint scale: {@code S(x) = (1 - x) S_p + x S_c}; the offset becomes {@code S(x) l} and K
+     * is S(x)'s cofactor times the sign of its determinant (exact normals) or S(x).
+     */
+    static void scale(float[] par, int po, boolean exact, float[] acc) {
+        FloatVector x = FloatVector.fromArray(S, par, po);
+        FloatVector y = x.neg().add(1f);
+        FloatVector s0 = FloatVector.fromArray(S, acc, L * (SCALES + 0)).mul(y)
+                .add(FloatVector.fromArray(S, acc, L * (SCALES + 9)).mul(x));
+        FloatVector s1 = FloatVector.fromArray(S, acc, L * (SCALES + 1)).mul(y)
+                .add(FloatVector.fromArray(S, acc, L * (SCALES + 10)).mul(x));
+        FloatVector s2 = FloatVector.fromArray(S, acc, L * (SCALES + 2)).mul(y)
+                .add(FloatVector.fromArray(S, acc, L * (SCALES + 11)).mul(x));
+        FloatVector s3 = FloatVector.fromArray(S, acc, L * (SCALES + 3)).mul(y)
+                .add(FloatVector.fromArray(S, acc, L * (SCALES + 12)).mul(x));
+        FloatVector s4 = FloatVector.fromArray(S, acc, L * (SCALES + 4)).mul(y)
+                .add(FloatVector.fromArray(S, acc, L * (SCALES + 13)).mul(x));
+        FloatVector s5 = FloatVector.fromArray(S, acc, L * (SCALES + 5)).mul(y)
+                .add(FloatVector.fromArray(S, acc, L * (SCALES + 14)).mul(x));
+        FloatVector s6 = FloatVector.fromArray(S, acc, L * (SCALES + 6)).mul(y)
+                .add(FloatVector.fromArray(S, acc, L * (SCALES + 15)).mul(x));
+        FloatVector s7 = FloatVector.fromArray(S, acc, L * (SCALES + 7)).mul(y)
+                .add(FloatVector.fromArray(S, acc, L * (SCALES + 16)).mul(x));
+        FloatVector s8 = FloatVector.fromArray(S, acc, L * (SCALES + 8)).mul(y)
+                .add(FloatVector.fromArray(S, acc, L * (SCALES + 17)).mul(x));
+        FloatVector lx = FloatVector.fromArray(S, acc, L * OFFSET);
+        FloatVector ly = FloatVector.fromArray(S, acc, L * (OFFSET + 1));
+        FloatVector lz = FloatVector.fromArray(S, acc, L * (OFFSET + 2));
+        s0.fma(lx, s1.fma(ly, s2.mul(lz))).intoArray(acc, L * OFFSET);
+        s3.fma(lx, s4.fma(ly, s5.mul(lz))).intoArray(acc, L * (OFFSET + 1));
+        s6.fma(lx, s7.fma(ly, s8.mul(lz))).intoArray(acc, L * (OFFSET + 2));
+        if (exact) {
+            FloatVector k0 = s4.mul(s8).sub(s7.mul(s5));
+            FloatVector k1 = s5.mul(s6).sub(s8.mul(s3));
+            FloatVector k2 = s3.mul(s7).sub(s6.mul(s4));
+            FloatVector sign = FloatVector.broadcast(S, 1f)
+                    .blend(-1f, s0.mul(k0).add(s1.mul(k1)).add(s2.mul(k2)).compare(VectorOperators.LT, 0f));
+            k0.mul(sign).intoArray(acc, L * NORMAL_SCALE);
+            k1.mul(sign).intoArray(acc, L * (NORMAL_SCALE + 1));
+            k2.mul(sign).intoArray(acc, L * (NORMAL_SCALE + 2));
+            s7.mul(s2).sub(s1.mul(s8)).mul(sign).intoArray(acc, L * (NORMAL_SCALE + 3));
+            s8.mul(s0).sub(s2.mul(s6)).mul(sign).intoArray(acc, L * (NORMAL_SCALE + 4));
+            s6.mul(s1).sub(s0.mul(s7)).mul(sign).intoArray(acc, L * (NORMAL_SCALE + 5));
+            s1.mul(s5).sub(s4.mul(s2)).mul(sign).intoArray(acc, L * (NORMAL_SCALE + 6));
+            s2.mul(s3).sub(s5.mul(s0)).mul(sign).intoArray(acc, L * (NORMAL_SCALE + 7));
+            s0.mul(s4).sub(s3.mul(s1)).mul(sign).intoArray(acc, L * (NORMAL_SCALE + 8));
+            return;
+        }
+        s0.intoArray(acc, L * NORMAL_SCALE);
+        s1.intoArray(acc, L * (NORMAL_SCALE + 1));
+        s2.intoArray(acc, L * (NORMAL_SCALE + 2));
+        s3.intoArray(acc, L * (NORMAL_SCALE + 3));
+        s4.intoArray(acc, L * (NORMAL_SCALE + 4));
+        s5.intoArray(acc, L * (NORMAL_SCALE + 5));
+        s6.intoArray(acc, L * (NORMAL_SCALE + 6));
+        s7.intoArray(acc, L * (NORMAL_SCALE + 7));
+        s8.intoArray(acc, L * (NORMAL_SCALE + 8));
     }
 
     /** Adds w M p and w N (M's linear part or its cofactor) for matrices loaded by {@link #load}. */
@@ -269,6 +367,29 @@ final class SplineLanes {
         xz.sub(wy).mul(2f).intoArray(acc, L * (FRAME + 6));
         yz.add(wx).mul(2f).intoArray(acc, L * (FRAME + 7));
         xx.add(yy).mul(-2f).add(1f).intoArray(acc, L * (FRAME + 8));
+    }
+
+    /** With joint scale: adds w (f + F l) (l already through S(x)) and w F K to the sums. */
+    static void accumulateScaled(float[] weights, int lanes, float[] acc) {
+        FloatVector w = FloatVector.fromArray(S, weights, lanes);
+        FloatVector lx = FloatVector.fromArray(S, acc, L * OFFSET);
+        FloatVector ly = FloatVector.fromArray(S, acc, L * (OFFSET + 1));
+        FloatVector lz = FloatVector.fromArray(S, acc, L * (OFFSET + 2));
+        for (int r = 0; r < 3; r++) {
+            FloatVector f0 = FloatVector.fromArray(S, acc, L * (FRAME + 3 * r));
+            FloatVector f1 = FloatVector.fromArray(S, acc, L * (FRAME + 3 * r + 1));
+            FloatVector f2 = FloatVector.fromArray(S, acc, L * (FRAME + 3 * r + 2));
+            FloatVector f = FloatVector.fromArray(S, acc, L * (CURVE + r));
+            w.fma(f0.fma(lx, f1.fma(ly, f2.fma(lz, f))), FloatVector.fromArray(S, acc, L * r))
+                    .intoArray(acc, L * r);
+            for (int c = 0; c < 3; c++) {
+                FloatVector k0 = FloatVector.fromArray(S, acc, L * (NORMAL_SCALE + c));
+                FloatVector k1 = FloatVector.fromArray(S, acc, L * (NORMAL_SCALE + 3 + c));
+                FloatVector k2 = FloatVector.fromArray(S, acc, L * (NORMAL_SCALE + 6 + c));
+                int n = L * (3 + 3 * r + c);
+                w.fma(f0.fma(k0, f1.fma(k1, f2.mul(k2))), FloatVector.fromArray(S, acc, n)).intoArray(acc, n);
+            }
+        }
     }
 
     /** Adds w (f + F l) and w F to the sums. */

@@ -19,9 +19,10 @@ import org.skinlab.skinning.SplineBinding;
  * its rigid influences and distinct curves are moved to the front of their columns, so a block
  * near one joint evaluates one curve, not one per slot.
  *
- * <p>{@link #skinFrames} (the route of position sharing) writes the same sums as frame records.
- * Frames with joint scale, or with a mirroring joint under exact normals, go through the scalar
- * kernel, as do points of a range outside whole blocks of 8.
+ * <p>With joint scale, a second per-call table holds each curve's two scale parts, blended along
+ * the curve per lane as in the scalar kernel. {@link #skinFrames} (the route of position sharing)
+ * writes the same sums as frame records. Frames with a mirroring joint under exact normals go
+ * through the scalar kernel, as do points of a range outside whole blocks of 8.
  */
 final class VectorSplineSkinner extends AbstractSkinner {
     private static final int BLOCK = 8;
@@ -46,6 +47,8 @@ final class VectorSplineSkinner extends AbstractSkinner {
     /** Whether any point follows a curve (else the palette's bone rows are not read, as in the scalar kernel). */
     private final boolean hasCurves;
     private final ThreadLocal<float[]> table;
+    /** Per thread: with joint scale, per curve its two joints' scale parts ({@link SplineLanes#scaleTable}). */
+    private final ThreadLocal<float[]> scaleTable;
     /** Per thread: the passes' rows ({@link SplineLanes#ROWS}). */
     private final ThreadLocal<float[]> scratch = ThreadLocal.withInitial(() -> new float[SplineLanes.ROWS * BLOCK]);
 
@@ -72,6 +75,7 @@ final class VectorSplineSkinner extends AbstractSkinner {
         anyRigid = new boolean[width * blockCount];
         anyCurve = new boolean[width * blockCount];
         table = ThreadLocal.withInitial(() -> new float[SplineLanes.RECORD * (joints + 1)]);
+        scaleTable = ThreadLocal.withInitial(() -> new float[SplineLanes.RECORD * (joints + 1)]);
         layOut(geometry, binding);
         boolean curved = false;
         for (boolean c : anyCurve) {
@@ -155,7 +159,7 @@ final class VectorSplineSkinner extends AbstractSkinner {
         boolean exact = normalTransform() == NormalTransform.INVERSE_TRANSPOSE;
         int firstBlock = (from + BLOCK - 1) / BLOCK;
         int endBlock = Math.min(to / BLOCK, blockCount);
-        if (palette.hasScale() || (exact && palette.mirrorsMatrices()) || firstBlock >= endBlock) {
+        if ((exact && palette.mirrorsMatrices()) || firstBlock >= endBlock) {
             scalar.skin(palette, outPositions, outNormals, from, to);
             return;
         }
@@ -172,11 +176,17 @@ final class VectorSplineSkinner extends AbstractSkinner {
         scalar.skin(palette, outPositions, outNormals, BLOCK * endBlock, to);
     }
 
-    /** This call's curve table (not filled for a geometry without curves, whose palette may lack bone rows). */
+    /**
+     * This call's curve table, and with joint scale its scale table (neither filled for a geometry
+     * without curves, whose palette may lack bone rows).
+     */
     private float[] prepareTable(JointPalette palette) {
         float[] records = table.get();
         if (hasCurves) {
             SplineLanes.curveTable(palette.boneRows(), palette.dualQuaternions(), curveParents, records);
+            if (palette.hasScale()) {
+                SplineLanes.scaleTable(palette.scales(), curveParents, scaleTable.get());
+            }
         }
         return records;
     }
@@ -198,7 +208,13 @@ final class VectorSplineSkinner extends AbstractSkinner {
                 SplineLanes.curve(parameters, 5 * lanes, points, pb, acc);
                 SplineLanes.slerp(parameters, 5 * lanes, acc);
                 SplineLanes.frame(acc);
-                SplineLanes.accumulate(curveWeights, lanes, acc);
+                if (palette.hasScale()) {
+                    SplineLanes.loadScales(scaleTable.get(), curveIndex, lanes, acc);
+                    SplineLanes.scale(parameters, 5 * lanes, exact, acc);
+                    SplineLanes.accumulateScaled(curveWeights, lanes, acc);
+                } else {
+                    SplineLanes.accumulate(curveWeights, lanes, acc);
+                }
             }
         }
     }
@@ -208,7 +224,7 @@ final class VectorSplineSkinner extends AbstractSkinner {
         boolean exact = normalTransform() == NormalTransform.INVERSE_TRANSPOSE;
         int firstBlock = (from + BLOCK - 1) / BLOCK;
         int endBlock = Math.min(to / BLOCK, blockCount);
-        if (palette.hasScale() || (exact && palette.mirrorsMatrices()) || firstBlock >= endBlock) {
+        if ((exact && palette.mirrorsMatrices()) || firstBlock >= endBlock) {
             scalar.skinFrames(palette, outFrames, from, to);
             return;
         }
