@@ -123,6 +123,8 @@ public final class Skinners {
             case STBS_LBS:
             case STBS_DQS:
                 return new ScalarStbsSkinner(method, geometry, normals);
+            case SPLINE:
+                return new ScalarSplineSkinner(geometry, normals);
             default:
                 throw new IllegalArgumentException(String.valueOf(method));
         }

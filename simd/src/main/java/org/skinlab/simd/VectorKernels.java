@@ -38,6 +38,8 @@ final class VectorKernels {
             case STBS_LBS:
             case STBS_DQS:
                 return new VectorStbsSkinner(method, geometry, normals);
+            case SPLINE:
+                return new VectorSplineSkinner(geometry, normals);
             default:
                 return null;
         }
