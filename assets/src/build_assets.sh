@@ -38,10 +38,10 @@ run_blender() {
     echo "FAILED: $script $*" >&2
     exit 1
   fi
-  grep -E '^(skin:|cylinder |humanoid:|tentacle:|wrote |  imported:|  re-imported|re-import check|  [0-9]+ key times|  skip )' "$log" || true
+  grep -E '^(skin:|cylinder |humanoid:|tentacle:|limb |wrote |  imported:|  re-imported|re-import check|  [0-9]+ key times|  skip )' "$log" || true
 }
 
-mkdir -p assets/cylinders assets/characters assets/creatures "$REF"
+mkdir -p assets/cylinders assets/characters assets/creatures assets/stretch assets/twist "$REF"
 
 for variant in twist-low twist-high bend; do
   echo "--- cylinder-$variant"
@@ -57,6 +57,14 @@ run_blender humanoid "$SRC/make_humanoid.py" assets/characters/humanoid-walk.dae
 echo "--- tentacle-wave"
 rm -f assets/creatures/tentacle-wave.dae "$REF/tentacle-wave.json"
 run_blender tentacle "$SRC/make_tentacle.py" assets/creatures/tentacle-wave.dae "$REF/tentacle-wave.json"
+
+echo "--- limb-stretch"
+rm -f assets/stretch/limb-stretch.dae "$REF/limb-stretch.json"
+run_blender limb-stretch "$SRC/make_limb.py" stretch assets/stretch/limb-stretch.dae "$REF/limb-stretch.json"
+
+echo "--- arm-twist"
+rm -f assets/twist/arm-twist.dae "$REF/arm-twist.json"
+run_blender arm-twist "$SRC/make_limb.py" twist assets/twist/arm-twist.dae "$REF/arm-twist.json"
 
 echo "--- check_assets.py"
 python3 "$SRC/check_assets.py" assets
@@ -78,6 +86,8 @@ if [ "$PREVIEWS" = 1 ]; then
   run_blender p4 "$SRC/render_preview.py" assets/cylinders/cylinder-twist-low.dae "$SRC/previews/cylinder-twist-low.png" front 0 1 2 3 4
   run_blender p5 "$SRC/render_preview.py" assets/cylinders/cylinder-twist-high.dae "$SRC/previews/cylinder-twist-high.png" front 0 1 2 3 4
   run_blender p6 "$SRC/render_preview.py" assets/cylinders/cylinder-bend.dae "$SRC/previews/cylinder-bend.png" side 0 1 2 3 4
+  run_blender p7 "$SRC/render_preview.py" assets/stretch/limb-stretch.dae "$SRC/previews/limb-stretch.png" front 0 0.5 1
+  run_blender p8 "$SRC/render_preview.py" assets/twist/arm-twist.dae "$SRC/previews/arm-twist.png" front 0 0.5 0.875 1
 fi
 
 echo "all assets built and checked"

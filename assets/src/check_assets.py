@@ -38,13 +38,20 @@ EXPECT = {
         motion=("upper", "Y", 165.0, 179.0)),
     "cylinders/cylinder-bend.dae": dict(
         joints=(2, 2), triangles=(1900, 2200), closed=True, min_keys=5,
-        motion=("upper", "X", 160.0, 179.0), passes_through=("upper", 90.0)),
+        motion=("upper", "X", 160.0, 179.0), passes_through=[("upper", 90.0)]),
     "characters/humanoid-walk.dae": dict(
         joints=(15, 64), triangles=(1000, 2000), closed=True, min_keys=5, loop=True,
         duration=(0.8, 1.2)),
     "creatures/tentacle-wave.dae": dict(
         joints=(6, 10), triangles=(500, 3000), closed=True, min_keys=5, loop=True,
         scaled=True, non_uniform=True),
+    "stretch/limb-stretch.dae": dict(
+        joints=(3, 3), triangles=(3000, 3300), closed=True, min_keys=5, loop=True, duration=(1.9, 2.1),
+        scaled=True, stretch=("middle", 1.5, "end")),
+    "twist/arm-twist.dae": dict(
+        joints=(3, 3), triangles=(3000, 3300), closed=True, min_keys=5, loop=True, duration=(1.9, 2.1),
+        motion=("forearm", "Y", 0.0, 1.0), passes_through=[("forearm", 90.0), ("forearm", 170.0)],
+        peak=("forearm", 179.9)),
 }
 
 
@@ -101,7 +108,16 @@ def relative_rotation(m0, m1):
     c = max(-1.0, min(1.0, (rel[0][0] + rel[1][1] + rel[2][2] - 1.0) / 2.0))
     axis = [rel[2][1] - rel[1][2], rel[0][2] - rel[2][0], rel[1][0] - rel[0][1]]
     n = math.sqrt(sum(a * a for a in axis))
-    axis = [a / n for a in axis] if n > 1e-9 else [0.0, 0.0, 0.0]
+    if n > 1e-6:
+        axis = [a / n for a in axis]
+    elif c < 0.0:
+        # a half turn: rel = 2 a a^T - I, so the axis is the largest column of rel + I
+        k = max(range(3), key=lambda i: rel[i][i])
+        col = [rel[i][k] + (1.0 if i == k else 0.0) for i in range(3)]
+        n = math.sqrt(sum(a * a for a in col))
+        axis = [a / n for a in col]
+    else:
+        axis = [0.0, 0.0, 0.0]
     return math.degrees(math.acos(c)), axis
 
 
@@ -332,6 +348,26 @@ def lbs(points, skin, joint_nodes, world):
     return out
 
 
+def check_stretch(rel, spec, nodes, order, channels, joint_nodes):
+    """The stretched joint's world matrix scales its own Y axis (the bone axis) up to the wanted
+    factor, X and Z stay 1; the child is carried without scale (it does not inherit the stretch)."""
+    sid, want, child = spec
+    by_sid = {nodes[j]["sid"]: j for j in joint_nodes}
+    n_keys = len(channels[by_sid[sid]]["times"])
+    ys, worst_xz, worst_child = [], 0.0, 0.0
+    for k in range(n_keys):
+        world = world_matrices(nodes, order, channels, k)
+        sx, sy, sz = column_scales(world[by_sid[sid]])
+        ys.append(sy)
+        worst_xz = max(worst_xz, abs(sx - 1.0), abs(sz - 1.0))
+        worst_child = max(worst_child, max(abs(x - 1.0) for x in column_scales(world[by_sid[child]])))
+    print("  %s: world scale along the bone per key %s; |x, z scale - 1| <= %.1e; %s's world scale "
+          "|s - 1| <= %.1e" % (sid, " ".join("%.4f" % y for y in ys), worst_xz, child, worst_child))
+    check(abs(max(ys) - want) < 1e-4, "%s: %s stretches to %.4f, not %g" % (rel, sid, max(ys), want))
+    check(worst_xz < 1e-4, "%s: %s scales across its axis" % (rel, sid))
+    check(worst_child < 1e-4, "%s: %s inherits the stretch (world scale off by %.1e)" % (rel, child, worst_child))
+
+
 # ---------------------------------------------------------------- per file
 def check_file(path, rel, ref_dir):
     exp = EXPECT.get(rel, {})
@@ -476,12 +512,21 @@ def check_file(path, rel, ref_dir):
         print("  %s: angle from key 0 about its local %s axis: %s deg; steps %s deg"
               % (sid, axis_name, " ".join("%.1f" % a for a in angles), " ".join("%.1f" % a for a in steps)))
         check(lo <= angles[-1] <= hi, "%s: final angle %.1f not in [%g, %g]" % (rel, angles[-1], lo, hi))
-    if "passes_through" in exp:
-        sid, want = exp["passes_through"]
+    for sid, want in exp.get("passes_through", []):
         nid = [j for j in joint_nodes if nodes[j]["sid"] == sid][0]
         c = channels[nid]
         got = [relative_rotation(c["mats"][0], m)[0] for m in c["mats"]]
         check(any(abs(a - want) < 2.0 for a in got), "%s: no key at %g deg" % (rel, want))
+    if "peak" in exp:
+        sid, least = exp["peak"]
+        nid = [j for j in joint_nodes if nodes[j]["sid"] == sid][0]
+        c = channels[nid]
+        got = [relative_rotation(c["mats"][0], m)[0] for m in c["mats"]]
+        peak = max(range(len(got)), key=lambda k: got[k])
+        print("  %s: largest angle from key 0 %.4f deg at t=%g s" % (sid, got[peak], c["times"][peak]))
+        check(got[peak] >= least, "%s: %s never turns %g deg" % (rel, sid, least))
+    if "stretch" in exp:
+        check_stretch(rel, exp["stretch"], nodes, order, channels, joint_nodes)
 
     # linear blend skinning from the file alone, against Blender's own deformation
     ref_path = os.path.join(ref_dir, os.path.splitext(os.path.basename(rel))[0] + ".json")

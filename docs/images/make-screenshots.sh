@@ -28,3 +28,12 @@ for m in lbs dqs cor; do
     --script docs/images/methods-bend.txt
   mv docs/images/methods-bend.png "docs/images/methods-bend-$m.png"
 done
+# Bulge-free DQS against DQS on the bend cylinder at 90 and 170 degrees (docs/skinning.md).
+for m in dqs bfdqs; do
+  run "$skinlab" view assets/cylinders/cylinder-bend.dae --method "$m" --hide-ui --size 360x540 \
+    --script docs/images/methods-bend.txt
+  mv docs/images/methods-bend.png "docs/images/methods-bend-$m.png"
+  run "$skinlab" view assets/cylinders/cylinder-bend.dae --method "$m" --hide-ui --size 360x540 \
+    --script docs/images/bend-170.txt
+  mv docs/images/bend-170.png "docs/images/bend-170-$m.png"
+done

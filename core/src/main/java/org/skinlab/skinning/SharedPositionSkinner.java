@@ -104,9 +104,11 @@ final class SharedPositionSkinner extends AbstractSkinner {
     public void skin(JointPalette palette, float[] outPositions, float[] outNormals, int from, int to) {
         float[] f = frames.get();
         positionKernel.skinFrames(palette, f, 0, positionCount);
-        // DQS and CoR frames without scale are rotations of unit normals (see expansionNormals).
-        boolean normalise = normals == NormalTransform.INVERSE_TRANSPOSE
-                && (method() == SkinningMethod.LBS || palette.hasScale());
+        // DQS and CoR frames without scale are rotations of unit normals (see expansionNormals);
+        // LBS's and STBS-on-LBS's are cofactors of blended matrices, never unit; spline frames are
+        // blends of rotations.
+        boolean normalise = normals == NormalTransform.INVERSE_TRANSPOSE && (method() == SkinningMethod.LBS
+                || method() == SkinningMethod.STBS_LBS || method() == SkinningMethod.SPLINE || palette.hasScale());
         expansion.expand(f, outPositions, outNormals, from, to, normalise);
     }
 

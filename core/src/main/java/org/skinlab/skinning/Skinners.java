@@ -118,6 +118,13 @@ public final class Skinners {
                 return new ScalarDqsSkinner(geometry, normals);
             case COR:
                 return new ScalarCorSkinner(geometry, normals);
+            case BFDQS:
+                return new ScalarBulgeFreeDqsSkinner(geometry, normals);
+            case STBS_LBS:
+            case STBS_DQS:
+                return new ScalarStbsSkinner(method, geometry, normals);
+            case SPLINE:
+                return new ScalarSplineSkinner(geometry, normals);
             default:
                 throw new IllegalArgumentException(String.valueOf(method));
         }

@@ -64,6 +64,12 @@ public final class SkinningGlsl {
                 return 2;
             case COR:
                 return 3;
+            case BFDQS:
+                return 4;
+            case STBS_LBS:
+                return 5;
+            case STBS_DQS:
+                return 6;
             default:
                 return 0;
         }

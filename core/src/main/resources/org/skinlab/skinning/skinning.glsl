@@ -139,9 +139,128 @@ void cor(vec3 p, vec3 n, vec3 c, out vec3 outP, out vec3 outN) {
     outN = rotate(q, n);
 }
 
+// Bulge-free DQS (ScalarBulgeFreeDqsSkinner, BulgeFreeBinding; docs/skinning.md): DQS, then a point
+// that ended up farther from its bone than at rest is pulled back towards it. Its bone is chosen here
+// as BulgeFreeBinding chooses it on the CPU, from the vertex's own influences and the bones' rest
+// segments (rows 4 and 5 of boneRow, which the header declares: vec4 boneRow(uint joint, int row)),
+// so no attribute is needed. ALLOWANCE and TIE are BulgeFreeBinding's constants (the same values).
+const float BFDQS_ALLOWANCE = 0.05;
+const float BFDQS_TIE = 1e-4;
+
+vec3 nearestOnSegment(vec3 p, vec3 a, vec3 b) {
+    vec3 e = b - a;
+    float len2 = dot(e, e);
+    float t = len2 > 0.0 ? clamp(dot(p - a, e) / len2, 0.0, 1.0) : 0.0;
+    return a + t * e;
+}
+
+void bfdqs(vec3 p, vec3 n, out vec3 outP, out vec3 outN) {
+    dqs(p, n, outP, outN);
+    // The nearest rest bone among the influences with weight (slot 0 always); a later, lighter one
+    // only when nearer by more than the tie margin.
+    uint bone = jointAt(0);
+    vec3 restNearest = nearestOnSegment(p, boneRow(bone, 4).xyz, boneRow(bone, 5).xyz);
+    float r = distance(p, restNearest);
+    for (int i = 1; i < influenceCount(); i++) {
+        if (weightAt(i) > 0.0) {
+            uint j = jointAt(i);
+            vec3 c = nearestOnSegment(p, boneRow(j, 4).xyz, boneRow(j, 5).xyz);
+            float d = distance(p, c);
+            if (d < (1.0 - BFDQS_TIE) * r) {
+                r = d;
+                bone = j;
+                restNearest = c;
+            }
+        }
+    }
+    if (uHasScale) {
+        // The rest offset from the bone through the joint's matrix: a joint scaled across its
+        // bone widens what it carries, which is no bulge.
+        vec3 u = p - restNearest;
+        r = length(vec3(dot(paletteRow(MATRIX_ROWS, bone, 0).xyz, u), dot(paletteRow(MATRIX_ROWS, bone, 1).xyz, u),
+                dot(paletteRow(MATRIX_ROWS, bone, 2).xyz, u)));
+    }
+    vec3 c = nearestOnSegment(outP, boneRow(bone, 0).xyz, boneRow(bone, 1).xyz);
+    vec3 u = outP - c;
+    float d = length(u);
+    if (d > r) {
+        // The excess e saturates smoothly at a = ALLOWANCE s r (BulgeFreeBinding.pulledDistance), s the
+        // sine of half the angle between the two heaviest influences' rotations (BulgeFreeBinding.spread).
+        float s = 0.0;
+        if (influenceCount() > 1 && weightAt(1) > 0.0) {
+            float c01 = dot(paletteRotation(jointAt(0)), paletteRotation(jointAt(1)));
+            s = sqrt(max(0.0, 1.0 - c01 * c01));
+        }
+        float a = BFDQS_ALLOWANCE * s * r;
+        float e = d - r;
+        outP = c + u * ((r + e * a / sqrt(max(a * a + e * e, 1e-30))) / d);
+    }
+}
+
+// Stretchable and twistable bones (Jacobson and Sorkine 2011), as core's StbsInfluence and
+// ScalarStbsSkinner: joint j's rigid transformation of rest point p, a rotation r and a
+// translation x, from its bone rows (JointPalette.boneRows; boneRow(j, row) is declared by the
+// header): the endpoint weight e from the rest bone (rows 4, 5; 1 for a point-like bone), the
+// twist still missing at e, -(1 - e) theta, about the posed axis through the posed head (rows 3,
+// 0), and e times the tail's stretch offset (row 2).
+void stbsInfluence(uint j, vec3 p, out vec4 r, out vec3 x) {
+    vec4 posedHead = boneRow(j, 0);
+    vec4 restHead = boneRow(j, 4);
+    float e = 1.0;
+    if (restHead.w > 0.0) {
+        e = clamp(dot(p - restHead.xyz, boneRow(j, 5).xyz - restHead.xyz) / (restHead.w * restHead.w), 0.0, 1.0);
+    }
+    float halfAngle = -0.5 * (1.0 - e) * posedHead.w;
+    vec3 u = boneRow(j, 3).xyz * sin(halfAngle);
+    float uw = cos(halfAngle);
+    vec4 q = paletteRotation(j);
+    r = vec4(uw * q.xyz + q.w * u + cross(u, q.xyz), uw * q.w - dot(u, q.xyz));
+    x = posedHead.xyz + e * boneRow(j, 2).xyz - rotate(r, restHead.xyz);
+}
+
+// STBS on LBS: the influences' matrices [R(r) | x] blended linearly; normals by the cofactor.
+void stbsLbs(vec3 p, vec3 n, out vec3 outP, out vec3 outN) {
+    vec4 r0 = vec4(0.0), r1 = vec4(0.0), r2 = vec4(0.0);
+    for (int i = 0; i < influenceCount(); i++) {
+        vec4 r;
+        vec3 x;
+        stbsInfluence(jointAt(i), p, r, x);
+        float w = weightAt(i);
+        r0 += w * vec4(1.0 - 2.0 * (r.y * r.y + r.z * r.z), 2.0 * (r.x * r.y - r.z * r.w), 2.0 * (r.x * r.z + r.y * r.w), x.x);
+        r1 += w * vec4(2.0 * (r.x * r.y + r.z * r.w), 1.0 - 2.0 * (r.x * r.x + r.z * r.z), 2.0 * (r.y * r.z - r.x * r.w), x.y);
+        r2 += w * vec4(2.0 * (r.x * r.z - r.y * r.w), 2.0 * (r.y * r.z + r.x * r.w), 1.0 - 2.0 * (r.x * r.x + r.y * r.y), x.z);
+    }
+    outP = applyRows(r0, r1, r2, p);
+    outN = cofactorTimes(r0, r1, r2, n, false);
+}
+
+// STBS on DQS: the influences as dual quaternions (r, (x, 0) r / 2), on the dominant one's side.
+void stbsDqs(vec3 p, vec3 n, out vec3 outP, out vec3 outN) {
+    vec4 pivot = vec4(0.0);
+    vec4 br = vec4(0.0);
+    vec4 bd = vec4(0.0);
+    for (int i = 0; i < influenceCount(); i++) {
+        vec4 r;
+        vec3 x;
+        stbsInfluence(jointAt(i), p, r, x);
+        if (i == 0) {
+            pivot = r;
+        }
+        float w = dot(pivot, r) < 0.0 ? -weightAt(i) : weightAt(i);
+        br += w * r;
+        bd += 0.5 * w * vec4(r.w * x + cross(x, r.xyz), -dot(x, r.xyz));
+    }
+    float len = length(br);
+    br /= len;
+    bd /= len;
+    vec3 t = 2.0 * (br.w * bd.xyz - bd.w * br.xyz + cross(br.xyz, bd.xyz));
+    outP = rotate(br, p) + t;
+    outN = rotate(br, n);
+}
+
 // Point p (normal n, CoR centre c) skinned by the method with this code, SkinningGlsl.methodCode's:
-// 1 LBS, 2 DQS, 3 CoR; any other code leaves them as they are (CPU-skinned points: code 0, and a
-// method without shader code, which the simulation skins on the CPU, SkinningGlsl.hasCode).
+// 1 LBS, 2 DQS, 3 CoR, 4 bulge-free DQS, 5 STBS on LBS, 6 STBS on DQS; any other code leaves them as they are (CPU-skinned points:
+// code 0, and a method without shader code, which the simulation skins on the CPU, SkinningGlsl.hasCode).
 void skin(int method, vec3 p, vec3 n, vec3 c, out vec3 outP, out vec3 outN) {
     outP = p;
     outN = n;
@@ -151,5 +270,11 @@ void skin(int method, vec3 p, vec3 n, vec3 c, out vec3 outP, out vec3 outN) {
         dqs(p, n, outP, outN);
     } else if (method == 3) {
         cor(p, n, c, outP, outN);
+    } else if (method == 4) {
+        bfdqs(p, n, outP, outN);
+    } else if (method == 5) {
+        stbsLbs(p, n, outP, outN);
+    } else if (method == 6) {
+        stbsDqs(p, n, outP, outN);
     }
 }

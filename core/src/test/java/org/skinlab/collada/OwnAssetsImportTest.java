@@ -6,6 +6,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.nio.file.Path;
 
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
 import org.skinlab.model.AnimationClip;
 import org.skinlab.model.Mesh;
 import org.skinlab.model.Model;
@@ -43,5 +45,21 @@ class OwnAssetsImportTest {
         assertEquals(1148, read("cylinders/cylinder-twist-low.dae").meshes().get(0).triangleCount());
         assertEquals(2044, read("cylinders/cylinder-twist-high.dae").meshes().get(0).triangleCount());
         assertEquals(2044, read("cylinders/cylinder-bend.dae").meshes().get(0).triangleCount());
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @CsvSource({"stretch/limb-stretch.dae, 9", "twist/arm-twist.dae, 17"})
+    void stretchAndTwistLimbsHaveThreeJointsTwoInfluencesAndATwoSecondLoop(String asset, int keys) throws Exception {
+        Model m = read(asset);
+        Mesh mesh = m.meshes().get(0);
+        assertEquals(1568, mesh.positionCount());
+        assertEquals(3132, mesh.triangleCount());
+        Skin skin = m.skins().get(0);
+        assertEquals(3, skin.jointCount());
+        assertEquals(2, skin.maxInfluences());
+        AnimationClip clip = m.clips().get(0);
+        assertEquals(2.0f, clip.duration(), 1e-6f);
+        assertTrue(clip.channels().stream().allMatch(c -> c.track().keyCount() == keys));
+        assertEquals(0, m.warnings().size(), () -> m.warnings().toString());
     }
 }

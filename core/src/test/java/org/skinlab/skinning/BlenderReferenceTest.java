@@ -36,7 +36,7 @@ class BlenderReferenceTest {
 
     @ParameterizedTest
     @ValueSource(strings = {"cylinder-twist-low", "cylinder-twist-high", "cylinder-bend", "humanoid-walk",
-            "tentacle-wave"})
+            "tentacle-wave", "limb-stretch", "arm-twist"})
     void lbsAndDqsAgreeWithBlenderOnEveryVertexAtEveryKey(String name) throws IOException, ColladaException {
         JsonNode ref = new ObjectMapper().readTree(
                 Files.readString(TestPaths.root().resolve("assets/reference/skinning/" + name + ".json")));

@@ -33,6 +33,13 @@ final class VectorKernels {
                 return new VectorDqsSkinner(geometry, normals);
             case COR:
                 return new VectorCorSkinner(geometry, normals);
+            case BFDQS:
+                return new VectorBulgeFreeDqsSkinner(geometry, normals);
+            case STBS_LBS:
+            case STBS_DQS:
+                return new VectorStbsSkinner(method, geometry, normals);
+            case SPLINE:
+                return new VectorSplineSkinner(geometry, normals);
             default:
                 return null;
         }

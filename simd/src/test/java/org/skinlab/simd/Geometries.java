@@ -86,6 +86,7 @@ final class Geometries {
             palette.setMatrix(j, m);
         }
         palette.prepareDualQuaternions();
+        palette.prepareBones();
         return palette;
     }
 

@@ -12,7 +12,7 @@ import org.skinlab.desktop.ExitCodes;
         description = "Skeletal animation lab: view COLLADA characters skinned with LBS and DQS (no subcommand: the window "
                 + "on the default character), inspect them, pose them, benchmark.",
         subcommands = {ViewCommand.class, EvalCommand.class, CheckGpuCommand.class, RenderBenchCommand.class, CompareCommand.class,
-                CentresCommand.class,
+                CentresCommand.class, TwistPlotCommand.class,
                 InspectCommand.class, PoseCommand.class, BenchCommand.class, TrackCommand.class,
                 MarkerCommand.class, CalibrationTargetCommand.class, CalibrateCommand.class, ArCommand.class, ArDemoCommand.class,
                 CommandLine.HelpCommand.class})
