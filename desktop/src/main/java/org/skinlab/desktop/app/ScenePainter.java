@@ -15,6 +15,7 @@ import org.skinlab.desktop.viewer.LoadedModel;
 import org.skinlab.desktop.viewer.Viewer;
 import org.skinlab.simulation.AnimationConfig;
 import org.skinlab.simulation.Frame;
+import org.skinlab.skinning.SkinningGlsl;
 import org.skinlab.skinning.SkinningMethod;
 
 /**
@@ -140,7 +141,9 @@ final class ScenePainter implements AutoCloseable {
         info.lbsVolume = difference.lbsVolume();
         info.dqsVolume = difference.dqsVolume();
         boolean cpuFrame = frame.hasSkinnedMesh();
-        SkinningMethod first = cpuFrame ? frame.method() : config.method();
+        // A palette-only frame draws the configured method at once, if the shader has it; a method
+        // without shader code shows from its first CPU-skinned frame on.
+        SkinningMethod first = cpuFrame || !SkinningGlsl.hasCode(config.method()) ? frame.method() : config.method();
         boolean split = viewer.settings().split();
         int w = width - left;
         info.views = split && ar == null ? 2 : 1;

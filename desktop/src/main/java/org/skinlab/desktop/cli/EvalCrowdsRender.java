@@ -151,7 +151,7 @@ final class EvalCrowdsRender {
         chart.getStyler().setLegendPosition(Styler.LegendPosition.InsideNE);
         chart.getStyler().setYAxisLogarithmic(true);
         for (String skinning : new String[] {"cpu", "gpu"}) {
-            for (SkinningMethod method : SkinningMethod.values()) {
+            for (SkinningMethod method : CrowdBench.METHODS) {
                 ArrayNode of = JsonNodeFactory.instance.arrayNode();
                 for (JsonNode pt : points) {
                     if (pt.get("skinning").asText().equals(skinning)) {

@@ -180,7 +180,9 @@ final class EvalCrowdsSection implements EvalSection {
                 + " (phases spread over the clip), every frame each copy sampled, posed and skinned, positions and"
                 + " exact normals (`bench frame`'s frame, the fastest kernels), the copies handed out to a fixed pool"
                 + " of threads (the caller's included) one at a time; the copies share the mesh and the kernels and"
-                + " own their poses and outputs; nothing is drawn. This machine has "
+                + " own their poses and outputs; nothing is drawn. Crowds run LBS, DQS and CoR; the outlook methods"
+                + " (bulge-free DQS, stretchable and twistable bones, splines) are timed per frame in the time section."
+                + " This machine has "
                 + EvalReport.num(results, "/cores") + " cores. First the threads: a crowd of "
                 + EvalReport.num(results, "/threadCrowd") + " copies, the median frame over "
                 + EvalReport.num(results, "/threadSeconds") + " s, as characters per "
@@ -241,7 +243,7 @@ final class EvalCrowdsSection implements EvalSection {
         JsonNode models = results.get("models");
         for (int i = 0; i < models.size(); i++) {
             List<String> each = new ArrayList<>();
-            for (SkinningMethod method : SkinningMethod.values()) {
+            for (SkinningMethod method : CrowdBench.METHODS) {
                 each.add(method.key().toUpperCase(Locale.ROOT) + " "
                         + EvalReport.num(results, "/models/" + i + "/warmedSeconds/" + method.key()) + " s");
             }
@@ -281,7 +283,7 @@ final class EvalCrowdsSection implements EvalSection {
         chart.getStyler().setLegendPosition(Styler.LegendPosition.InsideNW);
         chart.getStyler().setXAxisDecimalPattern("0");
         for (JsonNode m : results.get("models")) {
-            for (SkinningMethod method : SkinningMethod.values()) {
+            for (SkinningMethod method : CrowdBench.METHODS) {
                 series(chart, label(m, method), m.get("threads"), method, "threads", "charactersPerFrame");
             }
         }
@@ -297,7 +299,7 @@ final class EvalCrowdsSection implements EvalSection {
         chart.getStyler().setXAxisLogarithmic(true);
         chart.getStyler().setYAxisLogarithmic(true);
         for (JsonNode m : results.get("models")) {
-            for (SkinningMethod method : SkinningMethod.values()) {
+            for (SkinningMethod method : CrowdBench.METHODS) {
                 series(chart, label(m, method), m.get("crowd"), method, "characters", "fps");
             }
         }

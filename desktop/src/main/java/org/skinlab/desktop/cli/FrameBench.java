@@ -2,6 +2,7 @@ package org.skinlab.desktop.cli;
 
 import java.util.Arrays;
 import java.util.LinkedHashSet;
+import java.util.List;
 import java.util.Set;
 
 import org.skinlab.animation.RotationInterpolation;
@@ -39,8 +40,9 @@ final class FrameBench {
     private final float[][] normals;
     private final Shape shape;
 
-    FrameBench(Model model, NormalTransform rule, PositionSharing sharing) {
-        this(model, rule, sharing, false, 0);
+    /** A bench of {@code methods} (their skinners made here, the others never). */
+    FrameBench(Model model, NormalTransform rule, PositionSharing sharing, List<SkinningMethod> methods) {
+        this(model, rule, sharing, false, 0, methods);
     }
 
     /**
@@ -48,7 +50,8 @@ final class FrameBench {
      * {@code influenceCap} above 0: each geometry with more influences per point than that cut to
      * its heaviest ones, renormalised ({@link InfluenceView}, what a GPU's fixed slots see).
      */
-    FrameBench(Model model, NormalTransform rule, PositionSharing sharing, boolean scalar, int influenceCap) {
+    FrameBench(Model model, NormalTransform rule, PositionSharing sharing, boolean scalar, int influenceCap,
+            List<SkinningMethod> methods) {
         skinned = new SkinnedModel(model, model.clips().isEmpty() ? null : model.clips().get(0), rule);
         int n = skinned.geometries().size();
         skinners = new Skinner[n][SkinningMethod.values().length];
@@ -56,7 +59,7 @@ final class FrameBench {
         for (int g = 0; g < n; g++) {
             SkinnedGeometry original = skinned.geometries().get(g);
             used[g] = capped(original, influenceCap);
-            for (SkinningMethod m : SkinningMethod.values()) {
+            for (SkinningMethod m : methods) {
                 skinners[g][m.ordinal()] = scalar ? Skinners.scalar(m, used[g], rule)
                         : sharing == PositionSharing.AUTO && used[g] == original ? skinned.skinner(g, m)
                         : Skinners.create(m, used[g], rule, sharing);
@@ -102,7 +105,7 @@ final class FrameBench {
      */
     static int positionsSkinned(SkinnedGeometry geometry, Skinner[] skinners) {
         for (Skinner s : skinners) {
-            if (Skinners.sharesPositions(s)) {
+            if (s != null && Skinners.sharesPositions(s)) {
                 return geometry.sharedPositions().pointCount();
             }
         }

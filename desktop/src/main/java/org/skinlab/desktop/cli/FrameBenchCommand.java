@@ -152,7 +152,7 @@ public final class FrameBenchCommand implements Callable<Integer> {
                 }
                 continue;
             }
-            FrameBench bench = new FrameBench(model, rule, sharing);
+            FrameBench bench = new FrameBench(model, rule, sharing, methods);
             List<FrameBench.Timing> timings = new ArrayList<>();
             for (SkinningMethod m : methods) {
                 double w = warmupSeconds == null && warmed.add(m) ? Math.max(warmup, FIRST_WARMUP) : warmup;
@@ -218,7 +218,11 @@ public final class FrameBenchCommand implements Callable<Integer> {
         if (method.equalsIgnoreCase("both")) {
             return List.of(SkinningMethod.LBS, SkinningMethod.DQS);
         }
-        return MethodKeys.parseOneOrAll("--method", method);
+        try {
+            return MethodKeys.parseOneOrAll(method);
+        } catch (IllegalArgumentException e) {
+            throw usage(e.getMessage() + " (or both)");
+        }
     }
 
     private NormalTransform parseNormals() {

@@ -37,16 +37,25 @@ final class MethodKeys {
     /**
      * One method's key, or {@code all} (every method in the enum's order).
      *
-     * @throws CommandFailure (usage) for anything else, naming the keys
+     * @throws IllegalArgumentException for anything else, naming the keys (the command words it as its usage error)
      */
-    static List<SkinningMethod> parseOneOrAll(String option, String value) {
+    static List<SkinningMethod> parseOneOrAll(String value) {
         if (value.equalsIgnoreCase("all")) {
             return List.of(SkinningMethod.values());
         }
         try {
             return List.of(SkinningMethod.fromKey(value));
         } catch (IllegalArgumentException e) {
-            throw new CommandFailure(ExitCodes.USAGE, option + " " + value + ": " + e.getMessage() + ", or all", e);
+            throw new IllegalArgumentException(e.getMessage() + ", or all", e);
+        }
+    }
+
+    /** As {@link #parseOneOrAll(String)}, a bad value being a usage error that names the option. */
+    static List<SkinningMethod> parseOneOrAll(String option, String value) {
+        try {
+            return parseOneOrAll(value);
+        } catch (IllegalArgumentException e) {
+            throw new CommandFailure(ExitCodes.USAGE, option + " " + value + ": " + e.getMessage(), e);
         }
     }
 

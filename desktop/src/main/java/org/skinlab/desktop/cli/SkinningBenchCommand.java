@@ -173,11 +173,18 @@ public final class SkinningBenchCommand implements Callable<Integer> {
     }
 
     private SkinningMethod parseMethod() {
+        SkinningMethod m;
         try {
-            return SkinningMethod.fromKey(method);
+            m = SkinningMethod.fromKey(method);
         } catch (IllegalArgumentException e) {
             throw usage(e.getMessage());
         }
+        if (m.usesBones()) {
+            // The shared reference's joints are frames at the origin without a hierarchy: no bones.
+            throw usage("--method " + m.key() + " reads bones, which the shared reference's synthetic data does not"
+                    + " have; time it on a rig with bench frame FILE --method " + m.key());
+        }
+        return m;
     }
 
     private NormalTransform parseNormals() {

@@ -30,7 +30,10 @@ public final class DrawSettings {
     public final Vector3f eye = new Vector3f();
     /** Skin in the vertex shader from the palette; false draws the frame's CPU-skinned mesh. */
     public boolean gpuSkinning = true;
-    /** The method the GPU skins with (CPU-skinned frames carry their own). */
+    /**
+     * The method the GPU skins with, one with shader code ({@code SkinningGlsl.hasCode}; CPU-skinned
+     * frames carry their own).
+     */
     public SkinningMethod method = SkinningMethod.LBS;
     public View view = View.SHADED;
     /**

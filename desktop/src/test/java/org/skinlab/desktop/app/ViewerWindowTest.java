@@ -72,6 +72,26 @@ class ViewerWindowTest {
     }
 
     @Test
+    void everyMethodIsAToolbarButtonAndDrawsOnEitherSideWithoutGlErrors(@TempDir Path dir) throws IOException {
+        // GPU skinning first: methods without shader code are skinned on the CPU and drawn as such.
+        java.util.List<String> steps = new java.util.ArrayList<>();
+        for (String side : new String[] {"gpu", "cpu"}) {
+            for (org.skinlab.skinning.SkinningMethod m : org.skinlab.skinning.SkinningMethod.values()) {
+                steps.add("click " + m.name());
+                steps.add("wait 3");
+                steps.add("expect method " + m.key());
+            }
+            steps.add("action toggle-gpu-skinning");
+            steps.add("wait 2");
+        }
+        steps.add("quit");
+        Path s = script(dir, steps.toArray(new String[0]));
+        Run r = skinlab("view", "--gl-debug", "--size", "800x500", "--script", s.toString());
+        assertEquals(0, r.status(), r::toString);
+        assertTrue(r.out().contains("no OpenGL errors reported"), r::toString);
+    }
+
+    @Test
     void scriptedNextMeshAndABadDrop(@TempDir Path dir) throws IOException {
         Files.writeString(dir.resolve("bad.dae"), "<COLLADA><oops");
         // Each asset's .glb twin comes right after its .dae.

@@ -2,6 +2,7 @@ package org.skinlab.desktop.cli;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -37,11 +38,19 @@ class MethodKeysTest {
                 assertEquals(m, view.method);
                 assertEquals(m, view.split);
                 ArCommand ar = new ArCommand();
-                new CommandLine(ar).parseArgs("--method", key);
+                new CommandLine(ar).parseArgs("--images", "frames", "--method", key);
                 assertEquals(m, ar.method);
             }
         }
         assertEquals(List.of(SkinningMethod.values()), MethodKeys.parseOneOrAll("--method", "ALL"));
+        // bench skinning's synthetic data has no bones: the bone methods are refused, saying where to time them.
+        for (SkinningMethod m : SkinningMethod.values()) {
+            if (m.usesBones()) {
+                Cli r = Cli.run("bench", "skinning", "--method", m.key(), "--vertices", "10");
+                assertEquals(ExitCodes.USAGE, r.status, r::toString);
+                assertTrue(r.err.contains("bench frame FILE --method " + m.key()), r::toString);
+            }
+        }
         CommandFailure bad = assertThrows(CommandFailure.class, () -> MethodKeys.parseOneOrAll("--method", "lbs2"));
         assertEquals(ExitCodes.USAGE, bad.status());
         assertEquals("--method lbs2: unknown skinning method \"lbs2\" (expected one of " + MethodKeys.KEYS.replace("|", ", ")
