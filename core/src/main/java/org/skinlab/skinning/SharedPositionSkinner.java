@@ -47,6 +47,9 @@ final class SharedPositionSkinner extends AbstractSkinner {
      *     {@code 6 + 2.2 k}, derived from a frame 2 (its frames are rotations too); measured on
      *     the stormtrooper (JDK 25), both ways take the same time (58 and 59 µs), on the cowboy sharing
      *     wins by far (19 against 44 µs).</li>
+     * <li>The bone methods (bulge-free DQS, STBS, spline) take CoR's model: each costs more per
+     *     point than CoR does, on top of a frame derived as cheaply, so sharing pays for them
+     *     wherever it pays for CoR, and the model errs towards skinning every point.</li>
      * </ul>
      * So the stormtrooper (5174 points on 3275 positions, 6 influences) shares for LBS (measured
      * 61 against 81 µs) and, narrowly, for DQS (48 against 53 µs), the thesis' cowboy (4252 on
