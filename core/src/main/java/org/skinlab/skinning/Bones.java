@@ -1,8 +1,10 @@
 package org.skinlab.skinning;
 
 import java.util.Arrays;
+import java.util.List;
 
 import org.joml.Matrix4f;
+import org.skinlab.model.Node;
 
 /**
  * The bones of a geometry's palette as segments in bind space (the points' space), for the
@@ -118,6 +120,30 @@ public final class Bones {
             }
         }
         return lengths;
+    }
+
+    /** Per palette joint, the palette joint of its nearest ancestor node in the palette, else -1. */
+    static int[] jointParents(int[] jointNodes, List<Node> nodes) {
+        int[] parents = new int[jointNodes.length];
+        Arrays.fill(parents, -1);
+        if (nodes.isEmpty()) {
+            return parents;
+        }
+        int[] jointOfNode = new int[nodes.size()];
+        Arrays.fill(jointOfNode, -1);
+        for (int j = jointNodes.length - 1; j >= 0; j--) {
+            if (jointNodes[j] >= 0) {
+                jointOfNode[jointNodes[j]] = j; // a node listed twice: its first joint
+            }
+        }
+        for (int j = 0; j < jointNodes.length; j++) {
+            int node = jointNodes[j] < 0 ? -1 : nodes.get(jointNodes[j]).parent();
+            while (node >= 0 && jointOfNode[node] < 0) {
+                node = nodes.get(node).parent();
+            }
+            parents[j] = node >= 0 && jointOfNode[node] != j ? jointOfNode[node] : -1;
+        }
+        return parents;
     }
 
     public int jointCount() {

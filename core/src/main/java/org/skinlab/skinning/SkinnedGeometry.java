@@ -342,31 +342,7 @@ public final class SkinnedGeometry {
             m.identity().scale(mirrorBindFrames ? -1f : 1f, 1f, 1f).get(bind, 16 * skinJoints);
         }
         return new SkinnedGeometry(instance, vertices, positions, normals, width, joints, weights, jointNodes, bind,
-                pointOfPosition, null, null, mirrored, jointParents(jointNodes, nodes));
-    }
-
-    /** Per palette joint, the palette joint of its nearest ancestor node in the palette, else -1. */
-    private static int[] jointParents(int[] jointNodes, List<Node> nodes) {
-        int[] parents = new int[jointNodes.length];
-        Arrays.fill(parents, -1);
-        if (nodes.isEmpty()) {
-            return parents;
-        }
-        int[] jointOfNode = new int[nodes.size()];
-        Arrays.fill(jointOfNode, -1);
-        for (int j = jointNodes.length - 1; j >= 0; j--) {
-            if (jointNodes[j] >= 0) {
-                jointOfNode[jointNodes[j]] = j; // a node listed twice: its first joint
-            }
-        }
-        for (int j = 0; j < jointNodes.length; j++) {
-            int node = jointNodes[j] < 0 ? -1 : nodes.get(jointNodes[j]).parent();
-            while (node >= 0 && jointOfNode[node] < 0) {
-                node = nodes.get(node).parent();
-            }
-            parents[j] = node >= 0 && jointOfNode[node] != j ? jointOfNode[node] : -1;
-        }
-        return parents;
+                pointOfPosition, null, null, mirrored, Bones.jointParents(jointNodes, nodes));
     }
 
     /** Whether every bind frame of the skin mirrors (then the common mirror moves into the points). */
