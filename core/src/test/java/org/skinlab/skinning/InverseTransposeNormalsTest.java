@@ -2,6 +2,9 @@ package org.skinlab.skinning;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
+import java.util.ArrayList;
+import java.util.List;
+
 import org.joml.Matrix3f;
 import org.joml.Matrix4f;
 import org.joml.Vector3f;
@@ -89,6 +92,9 @@ class InverseTransposeNormalsTest {
         JointPalette palette = g.newPalette();
         palette.setMatrix(0, m);
         palette.prepareDualQuaternions();
+        if (method.usesBones()) {
+            palette.prepareBones();
+        }
         Skinner k = Skinners.scalar(method, g, NormalTransform.INVERSE_TRANSPOSE);
         float[] p = new float[NORMALS.length];
         float[] n = new float[NORMALS.length];
@@ -110,6 +116,17 @@ class InverseTransposeNormalsTest {
         return n;
     }
 
+    /**
+     * The methods that move a point of one joint by that joint's whole matrix. STBS keeps of a
+     * joint's scale only the stretch along its bone (docs/skinning.md), so a scaled or mirrored
+     * joint is not its matrix there; StbsSkinningTest checks its normals.
+     */
+    private static List<SkinningMethod> wholeMatrixMethods() {
+        List<SkinningMethod> methods = new ArrayList<>(List.of(SkinningMethod.values()));
+        methods.removeAll(List.of(SkinningMethod.STBS_LBS, SkinningMethod.STBS_DQS));
+        return methods;
+    }
+
     @Test
     void mirroringJointsKeepNormalsOutward() {
         // A mirror (det < 0): the cofactor is det times the inverse-transpose and would turn every
@@ -117,7 +134,7 @@ class InverseTransposeNormalsTest {
         // (a face at x = +1 with normal +x lands at x = -1 facing -x).
         Matrix4f mirror = new Matrix4f().rotateXYZ(0.2f, 0.9f, -0.3f).scale(-1f, 1f, 1f).setTranslation(0.5f, 0f, 0f);
         Matrix4f scaledMirror = new Matrix4f().rotateXYZ(-0.6f, 0.1f, 0.4f).scale(1.5f, -0.5f, 2f);
-        for (SkinningMethod method : SkinningMethod.values()) {
+        for (SkinningMethod method : wholeMatrixMethods()) {
             assertInverseTranspose(mirror, normalsBothWays(method, mirror));
             assertInverseTranspose(scaledMirror, normalsBothWays(method, scaledMirror));
         }
@@ -126,7 +143,7 @@ class InverseTransposeNormalsTest {
     @Test
     void framesCarryTheSameNormalsForOrdinaryJoints() {
         Matrix4f m = new Matrix4f().rotateXYZ(0.7f, -0.4f, 1.1f).scale(2f, 1f, 0.5f).setTranslation(0.1f, 0.2f, 0.3f);
-        for (SkinningMethod method : SkinningMethod.values()) {
+        for (SkinningMethod method : wholeMatrixMethods()) {
             assertInverseTranspose(m, normalsBothWays(method, m));
         }
     }

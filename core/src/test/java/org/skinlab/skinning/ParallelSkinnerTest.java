@@ -33,17 +33,24 @@ class ParallelSkinnerTest {
             joints[i] = r.nextInt(6);
             weights[i] = 0.25f;
         }
-        return SkinnedGeometry.fromArrays(pos, nrm, 4, joints, weights, new float[16 * 6]);
+        float[] bind = new float[16 * 6];
+        for (int j = 0; j < 6; j++) {
+            new Matrix4f().get(bind, 16 * j);
+        }
+        // A chain 0 <- 1 <- ... <- 5, so that the bone methods have bones with parents.
+        return SkinnedGeometry.fromArrays(pos, nrm, 4, joints, weights, bind, new int[] {-1, 0, 1, 2, 3, 4});
     }
 
-    private static JointPalette palette() {
-        JointPalette p = JointPalette.withoutBindFrames(6);
+    /** Random rigid joints, prepared for every method. */
+    private static JointPalette palette(SkinnedGeometry g) {
+        JointPalette p = g.newPalette();
         Random r = new Random(3);
         for (int j = 0; j < 6; j++) {
             p.setMatrix(j, new Matrix4f().translationRotate(r.nextFloat(), r.nextFloat(), r.nextFloat(),
                     new Quaternionf().rotateXYZ(r.nextFloat() * 3, r.nextFloat() * 3, r.nextFloat() * 3)));
         }
         p.prepareDualQuaternions();
+        p.prepareBones();
         return p;
     }
 
@@ -53,7 +60,7 @@ class ParallelSkinnerTest {
         // 10007 points: chunks of at least 2048 points, so 2 to 4 threads really split it.
         int points = 10007;
         SkinnedGeometry g = geometry(points);
-        JointPalette palette = palette();
+        JointPalette palette = palette(g);
         for (SkinningMethod m : SkinningMethod.values()) {
             Skinner kernel = Skinners.scalar(m, g, NormalTransform.INVERSE_TRANSPOSE);
             float[] p1 = new float[3 * points];
@@ -238,7 +245,7 @@ class ParallelSkinnerTest {
                 .filter(t -> t.getName().startsWith("skinlab-skinning-") && t.isAlive()).count();
         assertEquals(before - 2, after);
         assertThrows(IllegalStateException.class,
-                () -> parallel.skinAll(palette(), new float[300], new float[300]));
+                () -> parallel.skinAll(palette(geometry(100)), new float[300], new float[300]));
         assertFalse(parallel.implementation().isEmpty());
     }
 

@@ -117,11 +117,11 @@ class SharedPositionsTest {
                 Skinner everyPoint = Skinners.create(method, g, rule, PositionSharing.NEVER);
                 for (int t = 0; t < 5; t++) {
                     skinned.pose(start + (end - start) * t / 4f, RotationInterpolation.SLERP);
-                    skinned.palette(0).prepareDualQuaternions();
+                    JointPalette palette = skinned.preparePalette(0, method);
                     int n = 3 * g.pointCount();
                     float[] p1 = new float[n], n1 = new float[n], p2 = new float[n], n2 = new float[n];
-                    once.skinAll(skinned.palette(0), p1, n1);
-                    everyPoint.skinAll(skinned.palette(0), p2, n2);
+                    once.skinAll(palette, p1, n1);
+                    everyPoint.skinAll(palette, p2, n2);
                     float extent = 0;
                     for (float v : p2) {
                         extent = Math.max(extent, Math.abs(v));
