@@ -245,8 +245,9 @@ class VectorSkinnerTest {
     void identityPoseGivesTheBindShape() {
         // Independent check: identity palette, so every kernel must return its input.
         SkinnedGeometry g = Geometries.random(31, 37, 4, 5);
-        JointPalette palette = JointPalette.withoutBindFrames(5);
+        JointPalette palette = g.newPalette(); // identity skinning matrices until set
         palette.prepareDualQuaternions();
+        palette.prepareBones();
         for (SkinningMethod m : WITH_VECTOR_KERNELS) {
             float[] p = new float[3 * 37];
             float[] n = new float[3 * 37];
