@@ -12,10 +12,27 @@ import jdk.incubator.vector.VectorOperators;
  * influence's rigid transformation (core's {@code StbsInfluence}: rotation r, translation x; 7
  * lane vectors per influence at {@code 56 k}), then their linear or dual-quaternion blend applied
  * to the block's points.
+ *
+ * <p><b>No vector crosses a call of ours</b>, not even into {@link #sinCos} and {@link #interleave},
+ * which meet their callers in the scratch: C2 inlines our methods only up to a node budget per
+ * compilation (NodeCountInliningCutoff; Vector API methods are force-inlined), and a vector passed
+ * to or returned by a call it did not inline is boxed. One method per step with vector-valued sin,
+ * cos and store helpers went past the budget: about 1.6 KB of garbage per block. Only arrays and
+ * ints cross between passes; the joints' data is copied and transposed, not gathered ({@link #joints}).
  */
 final class StbsLanes {
     /** Floats of the scratch per influence: r x, y, z, w, then x x, y, z, 8 lanes each. */
     static final int INFLUENCE_FLOATS = 56;
+    /**
+     * Floats of the scratch after the influences: the blend, 12 lane vectors (LBS) or 8 (DQS), then
+     * at {@link #LANES} the x y z lanes of the result before they are interleaved.
+     */
+    static final int BLEND_FLOATS = 120;
+    private static final int LANES = 96;
+    /** Floats per influence of its joints' data ({@link #joints}): 24 fields, 8 lanes each. */
+    static final int JOINT_FLOATS = 192;
+    /** Where the dual quaternion's real part sits among a joint's fields ({@link #packJoints}). */
+    private static final int DQ = 4;
 
     // sin and cos of |a| <= pi/2 by their Taylor series to x^11 and x^12: the first term left out
     // is below 6e-8 there (|a| <= pi/2 since the angle is -(1 - e) theta / 2 with |theta| <= pi).
@@ -26,34 +43,83 @@ final class StbsLanes {
     private StbsLanes() {
     }
 
-    /** sin(a) lane by lane for |a| <= pi/2 (see the constants). */
-    static FloatVector sin(FloatVector a) {
+    /**
+     * sin and cos, lane by lane, of the angles |a| <= pi/2 at {@code s[from ..]} (see the
+     * constants) into {@code s[sinAt ..]} and {@code s[cosAt ..]} (either may be {@code from}).
+     */
+    static void sinCos(float[] s, int from, int sinAt, int cosAt) {
+        FloatVector a = FloatVector.fromArray(S, s, from);
         FloatVector a2 = a.mul(a);
         FloatVector p = a2.mul(S11).add(S9);
         p = p.mul(a2).add(S7);
         p = p.mul(a2).add(S5);
         p = p.mul(a2).add(S3);
-        return p.mul(a2).add(1f).mul(a);
-    }
-
-    /** cos(a) lane by lane for |a| <= pi/2. */
-    static FloatVector cos(FloatVector a) {
-        FloatVector a2 = a.mul(a);
-        FloatVector p = a2.mul(C12).add(C10);
-        p = p.mul(a2).add(C8);
-        p = p.mul(a2).add(C6);
-        p = p.mul(a2).add(C4);
-        p = p.mul(a2).add(C2);
-        return p.mul(a2).add(1f);
+        FloatVector c = a2.mul(C12).add(C10);
+        c = c.mul(a2).add(C8);
+        c = c.mul(a2).add(C6);
+        c = c.mul(a2).add(C4);
+        c = c.mul(a2).add(C2);
+        p.mul(a2).add(1f).mul(a).intoArray(s, sinAt);
+        c.mul(a2).add(1f).intoArray(s, cosAt);
     }
 
     /**
      * Each influence of block {@code b} for its points at {@code blk[48 b ..]} (px py pz, 8 lanes
-     * each): joints through {@code rowIndex} (24 j) and {@code dqIndex} (8 j), 8 lanes per
-     * influence at {@code 8 (b width + k)}; r and x of the first {@code active} into {@code s[56 k ..]}.
+     * each): joints' data ({@link #packJoints}) through {@code rowIndex} (24 j), 8 lanes per
+     * influence at {@code 8 (b width + k)}; r and x of the first {@code active} into {@code s[56 k ..]},
+     * their joints' data transposed in {@code t} (192 floats per influence).
+     * Four passes (see the class comment): the joints' data, the stretch e and half angle, the
+     * rotation, the translation.
      */
-    static void influences(float[] rows, float[] dq, int[] rowIndex, int[] dqIndex, float[] blk, int b, int width,
-            int active, float[] s) {
+    static void influences(float[] table, int[] rowIndex, float[] blk, int b, int width, int active, float[] s,
+            float[] t) {
+        joints(table, rowIndex, b, width, active, t);
+        stretch(blk, b, active, s, t);
+        rotation(active, s, t);
+        translation(active, s, t);
+    }
+
+    /**
+     * Per joint j the data the passes read, 24 floats at {@code 24 j} (so the bone-row offsets
+     * index it): bone rows 0..3, the dual quaternion's real part (rows 4..7 are not read), rows 8..23.
+     */
+    static void packJoints(float[] rows, float[] dq, int jointCount, float[] table) {
+        System.arraycopy(rows, 0, table, 0, 24 * jointCount);
+        for (int j = 0; j < jointCount; j++) {
+            for (int c = 0; c < 4; c++) {
+                table[24 * j + DQ + c] = dq[8 * j + c];
+            }
+        }
+    }
+
+    /**
+     * Per influence its lanes' joints' data ({@link #packJoints}) into {@code t[192 k ..]}, field f
+     * at {@code 8 f} (8 lanes): each lane's 24 floats copied as three 8-float rows, then 8 lanes'
+     * rows transposed ({@link DqsLanes#transpose}, in place). Not {@code fromArray} with an index
+     * map: C2 intrinsifies that gather only where it inlines {@code IntVector.species} (96 bytes,
+     * left out at call sites it profiles as cold), so some compilations (every one on JDK 17) run
+     * its Java fallback, which allocates.
+     */
+    private static void joints(float[] table, int[] rowIndex, int b, int width, int active, float[] t) {
+        for (int k = 0; k < active; k++) {
+            int m = 8 * (b * width + k);
+            int g = JOINT_FLOATS * k;
+            for (int l = 0; l < 8; l++) {
+                int r = rowIndex[m + l];
+                FloatVector.fromArray(S, table, r).intoArray(t, g + 8 * l);
+                FloatVector.fromArray(S, table, r + 8).intoArray(t, g + 64 + 8 * l);
+                FloatVector.fromArray(S, table, r + 16).intoArray(t, g + 128 + 8 * l);
+            }
+        }
+        DqsLanes.transpose(t, t, 0, 3 * active);
+    }
+
+    /**
+     * Per influence the endpoint weight e of the block's points along the bone (1 for a bone
+     * without length) into {@code s[56 k + 32 ..]} and the half twist angle (e - 1) theta / 2 into
+     * {@code s[56 k + 40 ..]}, where {@link #translation} later writes x.
+     */
+    private static void stretch(float[] blk, int b, int active, float[] s, float[] t) {
         final FloatVector one = FloatVector.broadcast(S, 1f);
         final FloatVector zero = FloatVector.zero(S);
         int fo = VectorStbsSkinner.BLOCK_FLOATS * b;
@@ -61,57 +127,89 @@ final class StbsLanes {
         FloatVector py = FloatVector.fromArray(S, blk, fo + 8);
         FloatVector pz = FloatVector.fromArray(S, blk, fo + 16);
         for (int k = 0; k < active; k++) {
-            int m = 8 * (b * width + k);
-            FloatVector hx = FloatVector.fromArray(S, rows, 16, rowIndex, m);
-            FloatVector hy = FloatVector.fromArray(S, rows, 17, rowIndex, m);
-            FloatVector hz = FloatVector.fromArray(S, rows, 18, rowIndex, m);
-            FloatVector length = FloatVector.fromArray(S, rows, 19, rowIndex, m);
-            FloatVector along = px.sub(hx).mul(FloatVector.fromArray(S, rows, 20, rowIndex, m).sub(hx))
-                    .add(py.sub(hy).mul(FloatVector.fromArray(S, rows, 21, rowIndex, m).sub(hy)))
-                    .add(pz.sub(hz).mul(FloatVector.fromArray(S, rows, 22, rowIndex, m).sub(hz)));
+            int g = JOINT_FLOATS * k;
+            FloatVector hx = FloatVector.fromArray(S, t, g + 8 * 16);
+            FloatVector hy = FloatVector.fromArray(S, t, g + 8 * 17);
+            FloatVector hz = FloatVector.fromArray(S, t, g + 8 * 18);
+            FloatVector length = FloatVector.fromArray(S, t, g + 8 * 19);
+            FloatVector along = px.sub(hx).mul(FloatVector.fromArray(S, t, g + 8 * 20).sub(hx))
+                    .add(py.sub(hy).mul(FloatVector.fromArray(S, t, g + 8 * 21).sub(hy)))
+                    .add(pz.sub(hz).mul(FloatVector.fromArray(S, t, g + 8 * 22).sub(hz)));
             VectorMask<Float> point = length.compare(VectorOperators.GT, 0f);
             FloatVector e = one.blend(along.div(length.mul(length)).max(zero).min(one), point);
-            FloatVector half = e.sub(one).mul(FloatVector.fromArray(S, rows, 3, rowIndex, m)).mul(0.5f);
-            FloatVector sin = sin(half);
-            FloatVector uw = cos(half);
-            FloatVector ux = FloatVector.fromArray(S, rows, 12, rowIndex, m).mul(sin);
-            FloatVector uy = FloatVector.fromArray(S, rows, 13, rowIndex, m).mul(sin);
-            FloatVector uz = FloatVector.fromArray(S, rows, 14, rowIndex, m).mul(sin);
-            FloatVector qx = FloatVector.fromArray(S, dq, 0, dqIndex, m);
-            FloatVector qy = FloatVector.fromArray(S, dq, 1, dqIndex, m);
-            FloatVector qz = FloatVector.fromArray(S, dq, 2, dqIndex, m);
-            FloatVector qw = FloatVector.fromArray(S, dq, 3, dqIndex, m);
-            FloatVector rx = uw.mul(qx).add(ux.mul(qw)).add(uy.mul(qz).sub(uz.mul(qy)));
-            FloatVector ry = uw.mul(qy).add(uy.mul(qw)).add(uz.mul(qx).sub(ux.mul(qz)));
-            FloatVector rz = uw.mul(qz).add(uz.mul(qw)).add(ux.mul(qy).sub(uy.mul(qx)));
-            FloatVector rw = uw.mul(qw).sub(ux.mul(qx).add(uy.mul(qy)).add(uz.mul(qz)));
+            int so = INFLUENCE_FLOATS * k;
+            e.intoArray(s, so + 32);
+            e.sub(one).mul(FloatVector.fromArray(S, t, g + 8 * 3)).mul(0.5f).intoArray(s, so + 40);
+        }
+    }
+
+    /** Per influence the rotation r = u q, u the twist by the half angle about the bone, into {@code s[56 k ..]}. */
+    private static void rotation(int active, float[] s, float[] t) {
+        for (int k = 0; k < active; k++) {
+            int g = JOINT_FLOATS * k;
+            int so = INFLUENCE_FLOATS * k;
+            sinCos(s, so + 40, so + 40, so + 48);
+            FloatVector sin = FloatVector.fromArray(S, s, so + 40);
+            FloatVector uw = FloatVector.fromArray(S, s, so + 48);
+            FloatVector ux = FloatVector.fromArray(S, t, g + 8 * 12).mul(sin);
+            FloatVector uy = FloatVector.fromArray(S, t, g + 8 * 13).mul(sin);
+            FloatVector uz = FloatVector.fromArray(S, t, g + 8 * 14).mul(sin);
+            FloatVector qx = FloatVector.fromArray(S, t, g + 8 * (DQ + 0));
+            FloatVector qy = FloatVector.fromArray(S, t, g + 8 * (DQ + 1));
+            FloatVector qz = FloatVector.fromArray(S, t, g + 8 * (DQ + 2));
+            FloatVector qw = FloatVector.fromArray(S, t, g + 8 * (DQ + 3));
+            uw.mul(qx).add(ux.mul(qw)).add(uy.mul(qz).sub(uz.mul(qy))).intoArray(s, so);
+            uw.mul(qy).add(uy.mul(qw)).add(uz.mul(qx).sub(ux.mul(qz))).intoArray(s, so + 8);
+            uw.mul(qz).add(uz.mul(qw)).add(ux.mul(qy).sub(uy.mul(qx))).intoArray(s, so + 16);
+            uw.mul(qw).sub(ux.mul(qx).add(uy.mul(qy)).add(uz.mul(qz))).intoArray(s, so + 24);
+        }
+    }
+
+    /**
+     * Per influence the translation x = o + e t - R(r) h (o, t: bone rows 0..2 and 8..10, h the
+     * head; R(r) h = h + 2 r x (r x h + w h)) into {@code s[56 k + 32 ..]}, over e and the half angle.
+     */
+    private static void translation(int active, float[] s, float[] t) {
+        for (int k = 0; k < active; k++) {
+            int g = JOINT_FLOATS * k;
+            int so = INFLUENCE_FLOATS * k;
+            FloatVector rx = FloatVector.fromArray(S, s, so);
+            FloatVector ry = FloatVector.fromArray(S, s, so + 8);
+            FloatVector rz = FloatVector.fromArray(S, s, so + 16);
+            FloatVector rw = FloatVector.fromArray(S, s, so + 24);
+            FloatVector e = FloatVector.fromArray(S, s, so + 32);
+            FloatVector hx = FloatVector.fromArray(S, t, g + 8 * 16);
+            FloatVector hy = FloatVector.fromArray(S, t, g + 8 * 17);
+            FloatVector hz = FloatVector.fromArray(S, t, g + 8 * 18);
             FloatVector cx = ry.mul(hz).sub(rz.mul(hy)).add(rw.mul(hx));
             FloatVector cy = rz.mul(hx).sub(rx.mul(hz)).add(rw.mul(hy));
             FloatVector cz = rx.mul(hy).sub(ry.mul(hx)).add(rw.mul(hz));
             FloatVector gx = ry.mul(cz).sub(rz.mul(cy));
             FloatVector gy = rz.mul(cx).sub(rx.mul(cz));
             FloatVector gz = rx.mul(cy).sub(ry.mul(cx));
-            int so = INFLUENCE_FLOATS * k;
-            rx.intoArray(s, so);
-            ry.intoArray(s, so + 8);
-            rz.intoArray(s, so + 16);
-            rw.intoArray(s, so + 24);
-            e.fma(FloatVector.fromArray(S, rows, 8, rowIndex, m), FloatVector.fromArray(S, rows, 0, rowIndex, m))
+            e.fma(FloatVector.fromArray(S, t, g + 8 * 8), FloatVector.fromArray(S, t, g + 8 * 0))
                     .sub(hx.add(gx.add(gx))).intoArray(s, so + 32);
-            e.fma(FloatVector.fromArray(S, rows, 9, rowIndex, m), FloatVector.fromArray(S, rows, 1, rowIndex, m))
+            e.fma(FloatVector.fromArray(S, t, g + 8 * 9), FloatVector.fromArray(S, t, g + 8 * 1))
                     .sub(hy.add(gy.add(gy))).intoArray(s, so + 40);
-            e.fma(FloatVector.fromArray(S, rows, 10, rowIndex, m), FloatVector.fromArray(S, rows, 2, rowIndex, m))
+            e.fma(FloatVector.fromArray(S, t, g + 8 * 10), FloatVector.fromArray(S, t, g + 8 * 2))
                     .sub(hz.add(gz.add(gz))).intoArray(s, so + 48);
         }
     }
 
     /**
      * STBS on LBS for block b: the influences' [R(r) | x] blended with the weights at
-     * {@code 8 (b width + k)}, applied to the block's points; normals by the blend's cofactor
-     * (renormalised) or its linear part; x y z interleaved into the outputs at {@code 24 b}.
+     * {@code 8 (b width + k)} into {@code s[o ..]} (12 lane vectors, row-major 3x4), then applied to
+     * the block's points; normals by the blend's cofactor (renormalised) or its linear part; x y z
+     * interleaved into the outputs at {@code 24 b}.
      */
-    static void linear(float[] s, float[] weights, float[] blk, int b, int width, int active, boolean exact,
+    static void linear(float[] s, int o, float[] weights, float[] blk, int b, int width, int active, boolean exact,
             float[] outPositions, float[] outNormals) {
+        linearBlend(s, o, weights, b, width, active);
+        linearPositions(s, o, blk, b, outPositions);
+        linearNormals(s, o, blk, b, exact, outNormals);
+    }
+
+    private static void linearBlend(float[] s, int o, float[] weights, int b, int width, int active) {
         FloatVector b0 = FloatVector.zero(S), b1 = b0, b2 = b0, b3 = b0, b4 = b0, b5 = b0;
         FloatVector b6 = b0, b7 = b0, b8 = b0, b9 = b0, b10 = b0, b11 = b0;
         for (int k = 0; k < active; k++) {
@@ -138,15 +236,51 @@ final class StbsLanes {
             b10 = w.sub(w2.mul(xx.add(yy))).add(b10);
             b11 = w.fma(FloatVector.fromArray(S, s, so + 48), b11);
         }
+        b0.intoArray(s, o);
+        b1.intoArray(s, o + 8);
+        b2.intoArray(s, o + 16);
+        b3.intoArray(s, o + 24);
+        b4.intoArray(s, o + 32);
+        b5.intoArray(s, o + 40);
+        b6.intoArray(s, o + 48);
+        b7.intoArray(s, o + 56);
+        b8.intoArray(s, o + 64);
+        b9.intoArray(s, o + 72);
+        b10.intoArray(s, o + 80);
+        b11.intoArray(s, o + 88);
+    }
+
+    private static void linearPositions(float[] s, int o, float[] blk, int b, float[] outPositions) {
         int fo = VectorStbsSkinner.BLOCK_FLOATS * b;
         FloatVector px = FloatVector.fromArray(S, blk, fo);
         FloatVector py = FloatVector.fromArray(S, blk, fo + 8);
         FloatVector pz = FloatVector.fromArray(S, blk, fo + 16);
+        FloatVector x = FloatVector.fromArray(S, s, o).mul(px).add(FloatVector.fromArray(S, s, o + 8).mul(py))
+                .add(FloatVector.fromArray(S, s, o + 16).mul(pz)).add(FloatVector.fromArray(S, s, o + 24));
+        FloatVector y = FloatVector.fromArray(S, s, o + 32).mul(px).add(FloatVector.fromArray(S, s, o + 40).mul(py))
+                .add(FloatVector.fromArray(S, s, o + 48).mul(pz)).add(FloatVector.fromArray(S, s, o + 56));
+        FloatVector z = FloatVector.fromArray(S, s, o + 64).mul(px).add(FloatVector.fromArray(S, s, o + 72).mul(py))
+                .add(FloatVector.fromArray(S, s, o + 80).mul(pz)).add(FloatVector.fromArray(S, s, o + 88));
+        x.intoArray(s, o + LANES);
+        y.intoArray(s, o + LANES + 8);
+        z.intoArray(s, o + LANES + 16);
+        interleave(s, o + LANES, outPositions, 24 * b);
+    }
+
+    private static void linearNormals(float[] s, int o, float[] blk, int b, boolean exact, float[] outNormals) {
+        FloatVector b0 = FloatVector.fromArray(S, s, o);
+        FloatVector b1 = FloatVector.fromArray(S, s, o + 8);
+        FloatVector b2 = FloatVector.fromArray(S, s, o + 16);
+        FloatVector b4 = FloatVector.fromArray(S, s, o + 32);
+        FloatVector b5 = FloatVector.fromArray(S, s, o + 40);
+        FloatVector b6 = FloatVector.fromArray(S, s, o + 48);
+        FloatVector b8 = FloatVector.fromArray(S, s, o + 64);
+        FloatVector b9 = FloatVector.fromArray(S, s, o + 72);
+        FloatVector b10 = FloatVector.fromArray(S, s, o + 80);
+        int fo = VectorStbsSkinner.BLOCK_FLOATS * b;
         FloatVector nx = FloatVector.fromArray(S, blk, fo + 24);
         FloatVector ny = FloatVector.fromArray(S, blk, fo + 32);
         FloatVector nz = FloatVector.fromArray(S, blk, fo + 40);
-        store(b0.mul(px).add(b1.mul(py)).add(b2.mul(pz)).add(b3), b4.mul(px).add(b5.mul(py)).add(b6.mul(pz)).add(b7),
-                b8.mul(px).add(b9.mul(py)).add(b10.mul(pz)).add(b11), outPositions, 24 * b);
         FloatVector mx;
         FloatVector my;
         FloatVector mz;
@@ -167,16 +301,25 @@ final class StbsLanes {
             my = b4.mul(nx).add(b5.mul(ny)).add(b6.mul(nz));
             mz = b8.mul(nx).add(b9.mul(ny)).add(b10.mul(nz));
         }
-        store(mx, my, mz, outNormals, 24 * b);
+        mx.intoArray(s, o + LANES);
+        my.intoArray(s, o + LANES + 8);
+        mz.intoArray(s, o + LANES + 16);
+        interleave(s, o + LANES, outNormals, 24 * b);
     }
 
     /**
      * STBS on DQS for block b: the influences as dual quaternions (r, (x, 0) r / 2), flipped onto
-     * the first influence's side, blended, normalised by the real part and applied; the normal
-     * rotated (renormalised under the exact rule).
+     * the first influence's side, blended into {@code s[o ..]} (real then dual part, 8 lane vectors),
+     * normalised by the real part and applied; the normal rotated (renormalised under the exact rule).
      */
-    static void dualQuaternion(float[] s, float[] weights, float[] blk, int b, int width, int active, boolean exact,
-            float[] outPositions, float[] outNormals) {
+    static void dualQuaternion(float[] s, int o, float[] weights, float[] blk, int b, int width, int active,
+            boolean exact, float[] outPositions, float[] outNormals) {
+        dualQuaternionBlend(s, o, weights, b, width, active);
+        dualQuaternionPositions(s, o, blk, b, outPositions);
+        dualQuaternionNormals(s, o, blk, b, exact, outNormals);
+    }
+
+    private static void dualQuaternionBlend(float[] s, int o, float[] weights, int b, int width, int active) {
         FloatVector p0 = FloatVector.fromArray(S, s, 0);
         FloatVector p1 = FloatVector.fromArray(S, s, 8);
         FloatVector p2 = FloatVector.fromArray(S, s, 16);
@@ -203,9 +346,26 @@ final class StbsLanes {
             d2 = hw.fma(q.mul(ez).add(ex.mul(y).sub(ey.mul(x))), d2);
             d3 = hw.neg().fma(ex.mul(x).add(ey.mul(y)).add(ez.mul(z)), d3);
         }
+        r0.intoArray(s, o);
+        r1.intoArray(s, o + 8);
+        r2.intoArray(s, o + 16);
+        r3.intoArray(s, o + 24);
+        d0.intoArray(s, o + 32);
+        d1.intoArray(s, o + 40);
+        d2.intoArray(s, o + 48);
+        d3.intoArray(s, o + 56);
+    }
+
+    /** Normalises the blend by its real part, applies it to the points, and leaves the unit real part in {@code s[o ..]}. */
+    private static void dualQuaternionPositions(float[] s, int o, float[] blk, int b, float[] outPositions) {
+        FloatVector r0 = FloatVector.fromArray(S, s, o);
+        FloatVector r1 = FloatVector.fromArray(S, s, o + 8);
+        FloatVector r2 = FloatVector.fromArray(S, s, o + 16);
+        FloatVector r3 = FloatVector.fromArray(S, s, o + 24);
         FloatVector inv = FloatVector.broadcast(S, 1f).div(r0.mul(r0).add(r1.mul(r1)).add(r2.mul(r2)).add(r3.mul(r3)).sqrt());
         FloatVector rx = r0.mul(inv), ry = r1.mul(inv), rz = r2.mul(inv), rw = r3.mul(inv);
-        FloatVector dx = d0.mul(inv), dy = d1.mul(inv), dz = d2.mul(inv), dw = d3.mul(inv);
+        FloatVector dx = FloatVector.fromArray(S, s, o + 32).mul(inv), dy = FloatVector.fromArray(S, s, o + 40).mul(inv);
+        FloatVector dz = FloatVector.fromArray(S, s, o + 48).mul(inv), dw = FloatVector.fromArray(S, s, o + 56).mul(inv);
         FloatVector tx = rw.mul(dx).sub(dw.mul(rx)).add(ry.mul(dz).sub(rz.mul(dy)));
         FloatVector ty = rw.mul(dy).sub(dw.mul(ry)).add(rz.mul(dx).sub(rx.mul(dz)));
         FloatVector tz = rw.mul(dz).sub(dw.mul(rz)).add(rx.mul(dy).sub(ry.mul(dx)));
@@ -219,17 +379,31 @@ final class StbsLanes {
         FloatVector ex = ry.mul(cz).sub(rz.mul(cy));
         FloatVector ey = rz.mul(cx).sub(rx.mul(cz));
         FloatVector ez = rx.mul(cy).sub(ry.mul(cx));
-        store(px.add(ex.add(ex)).add(tx.add(tx)), py.add(ey.add(ey)).add(ty.add(ty)), pz.add(ez.add(ez)).add(tz.add(tz)),
-                outPositions, 24 * b);
+        px.add(ex.add(ex)).add(tx.add(tx)).intoArray(s, o + LANES);
+        py.add(ey.add(ey)).add(ty.add(ty)).intoArray(s, o + LANES + 8);
+        pz.add(ez.add(ez)).add(tz.add(tz)).intoArray(s, o + LANES + 16);
+        interleave(s, o + LANES, outPositions, 24 * b);
+        rx.intoArray(s, o);
+        ry.intoArray(s, o + 8);
+        rz.intoArray(s, o + 16);
+        rw.intoArray(s, o + 24);
+    }
+
+    private static void dualQuaternionNormals(float[] s, int o, float[] blk, int b, boolean exact, float[] outNormals) {
+        FloatVector rx = FloatVector.fromArray(S, s, o);
+        FloatVector ry = FloatVector.fromArray(S, s, o + 8);
+        FloatVector rz = FloatVector.fromArray(S, s, o + 16);
+        FloatVector rw = FloatVector.fromArray(S, s, o + 24);
+        int fo = VectorStbsSkinner.BLOCK_FLOATS * b;
         FloatVector nx = FloatVector.fromArray(S, blk, fo + 24);
         FloatVector ny = FloatVector.fromArray(S, blk, fo + 32);
         FloatVector nz = FloatVector.fromArray(S, blk, fo + 40);
-        cx = ry.mul(nz).sub(rz.mul(ny)).add(rw.mul(nx));
-        cy = rz.mul(nx).sub(rx.mul(nz)).add(rw.mul(ny));
-        cz = rx.mul(ny).sub(ry.mul(nx)).add(rw.mul(nz));
-        ex = ry.mul(cz).sub(rz.mul(cy));
-        ey = rz.mul(cx).sub(rx.mul(cz));
-        ez = rx.mul(cy).sub(ry.mul(cx));
+        FloatVector cx = ry.mul(nz).sub(rz.mul(ny)).add(rw.mul(nx));
+        FloatVector cy = rz.mul(nx).sub(rx.mul(nz)).add(rw.mul(ny));
+        FloatVector cz = rx.mul(ny).sub(ry.mul(nx)).add(rw.mul(nz));
+        FloatVector ex = ry.mul(cz).sub(rz.mul(cy));
+        FloatVector ey = rz.mul(cx).sub(rx.mul(cz));
+        FloatVector ez = rx.mul(cy).sub(ry.mul(cx));
         FloatVector mx = nx.add(ex.add(ex));
         FloatVector my = ny.add(ey.add(ey));
         FloatVector mz = nz.add(ez.add(ez));
@@ -240,11 +414,17 @@ final class StbsLanes {
             my = my.mul(scale);
             mz = mz.mul(scale);
         }
-        store(mx, my, mz, outNormals, 24 * b);
+        mx.intoArray(s, o + LANES);
+        my.intoArray(s, o + LANES + 8);
+        mz.intoArray(s, o + LANES + 16);
+        interleave(s, o + LANES, outNormals, 24 * b);
     }
 
-    /** x, y, z lanes interleaved into {@code out[o .. o + 24)} (see {@link Lanes}). */
-    private static void store(FloatVector x, FloatVector y, FloatVector z, float[] out, int o) {
+    /** The x, y, z lanes at {@code s[from ..]} (8 each) interleaved into {@code out[o .. o + 24)} (see {@link Lanes}). */
+    private static void interleave(float[] s, int from, float[] out, int o) {
+        FloatVector x = FloatVector.fromArray(S, s, from);
+        FloatVector y = FloatVector.fromArray(S, s, from + 8);
+        FloatVector z = FloatVector.fromArray(S, s, from + 16);
         x.rearrange(Lanes.X0).blend(y.rearrange(Lanes.Y0), Lanes.MY0).blend(z.rearrange(Lanes.Z0), Lanes.MZ0).intoArray(out, o);
         x.rearrange(Lanes.X1).blend(y.rearrange(Lanes.Y1), Lanes.MY1).blend(z.rearrange(Lanes.Z1), Lanes.MZ1).intoArray(out, o + 8);
         x.rearrange(Lanes.X2).blend(y.rearrange(Lanes.Y2), Lanes.MY2).blend(z.rearrange(Lanes.Z2), Lanes.MZ2).intoArray(out, o + 16);

@@ -9,13 +9,14 @@ import org.skinlab.skinning.SkinningMethod;
 
 /**
  * Stretchable and twistable bones on LBS or DQS on 8-lane vectors, 8 points per block: the
- * arithmetic of {@link ScalarStbsSkinner} written once per lane, in two passes per block
+ * arithmetic of {@link ScalarStbsSkinner} written once per lane, in small passes per block
  * ({@link StbsLanes}): every influence's rigid transformation (its joint's bone rows and dual
- * quaternion gathered per lane; sin and cos by polynomials), then the blend.
+ * quaternion copied per lane from a per-call joint table and transposed; sin and cos by
+ * polynomials), then the blend and its application.
  *
  * <p><b>Layout.</b> The constructor repacks the geometry into blocks of 8 points: px py pz nx ny
  * nz, 8 lanes each, and per influence k of block b at {@code 8 (b width + k)} the weights and the
- * gather offsets of the joints' bone rows (24 j) and dual quaternions (8 j). Points of a range
+ * offsets of the joints' data (24 j, in the bone rows and in {@link StbsLanes#packJoints}'s table). Points of a range
  * outside whole blocks ({@link #rangeAlignment()}) and {@link #skinFrames} (which only a
  * position-sharing geometry asks for) go through the scalar kernel.
  */
@@ -33,10 +34,12 @@ final class VectorStbsSkinner extends AbstractSkinner {
     private final float[] points;
     private final float[] weights;
     private final int[] rowIndex;
-    private final int[] dqIndex;
     /** Per block the influences that matter: 1 + the last slot with a weight above 0 in any lane. */
     private final int[] activeWidth;
     private final ThreadLocal<float[]> scratch;
+    private final ThreadLocal<float[]> jointScratch;
+    /** Per thread the joints' data of the palette being applied ({@link StbsLanes#packJoints}). */
+    private final ThreadLocal<float[]> jointTable;
 
     VectorStbsSkinner(SkinningMethod method, SkinnedGeometry geometry, NormalTransform normals) {
         super(method, "vector-256", geometry, normals);
@@ -52,7 +55,6 @@ final class VectorStbsSkinner extends AbstractSkinner {
         int n = BLOCK * blockCount * width;
         weights = new float[n];
         rowIndex = new int[n];
-        dqIndex = new int[n];
         int[] js = geometry.jointArray();
         float[] ws = geometry.weightArray();
         for (int i = 0; i < BLOCK * blockCount; i++) {
@@ -60,7 +62,6 @@ final class VectorStbsSkinner extends AbstractSkinner {
                 int o = BLOCK * ((i / BLOCK) * width + k) + i % BLOCK;
                 weights[o] = ws[width * i + k];
                 rowIndex[o] = JointPalette.BONE_FLOATS * js[width * i + k];
-                dqIndex[o] = 8 * js[width * i + k];
             }
         }
         activeWidth = new int[blockCount];
@@ -71,8 +72,11 @@ final class VectorStbsSkinner extends AbstractSkinner {
                 }
             }
         }
-        int size = StbsLanes.INFLUENCE_FLOATS * width;
+        int size = StbsLanes.INFLUENCE_FLOATS * width + StbsLanes.BLEND_FLOATS;
         scratch = ThreadLocal.withInitial(() -> new float[size]);
+        jointScratch = ThreadLocal.withInitial(() -> new float[StbsLanes.JOINT_FLOATS * width]);
+        int tableSize = JointPalette.BONE_FLOATS * jointCount;
+        jointTable = ThreadLocal.withInitial(() -> new float[tableSize]);
     }
 
     /** Copies the rest positions and normals (unit under the exact rule) into the blocks. */
@@ -115,16 +119,20 @@ final class VectorStbsSkinner extends AbstractSkinner {
         float[] rows = palette.boneRows();
         float[] dq = palette.dualQuaternions();
         float[] s = scratch.get();
+        float[] t = jointScratch.get();
+        float[] table = jointTable.get();
+        StbsLanes.packJoints(rows, dq, jointCount, table);
         boolean exact = normals == NormalTransform.INVERSE_TRANSPOSE;
+        int blend = StbsLanes.INFLUENCE_FLOATS * width;
         for (int b = firstBlock; b < endBlock; b++) {
             // Trailing slots without weight in the whole block (padding) are left out: each costs
-            // 21 gathers and a sin and a cos.
+            // 24 copied and transposed floats per lane and a sin and a cos.
             int active = Math.max(1, activeWidth[b]);
-            StbsLanes.influences(rows, dq, rowIndex, dqIndex, points, b, width, active, s);
+            StbsLanes.influences(table, rowIndex, points, b, width, active, s, t);
             if (dualQuaternions) {
-                StbsLanes.dualQuaternion(s, weights, points, b, width, active, exact, outPositions, outNormals);
+                StbsLanes.dualQuaternion(s, blend, weights, points, b, width, active, exact, outPositions, outNormals);
             } else {
-                StbsLanes.linear(s, weights, points, b, width, active, exact, outPositions, outNormals);
+                StbsLanes.linear(s, blend, weights, points, b, width, active, exact, outPositions, outNormals);
             }
         }
         scalar.skin(palette, outPositions, outNormals, BLOCK * endBlock, to);

@@ -3,11 +3,13 @@ package org.skinlab.simd;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assertions.fail;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
+import com.sun.management.ThreadMXBean;
+
+import java.lang.management.ManagementFactory;
 import java.util.Arrays;
 import java.util.Random;
-
-import jdk.incubator.vector.FloatVector;
 
 import org.joml.Matrix4f;
 import org.joml.Quaternionf;
@@ -106,6 +108,52 @@ class VectorStbsSkinnerTest {
         }
     }
 
+    /**
+     * The per-frame path allocates nothing: once C2 has compiled every pass (10 x 2 000 warm-up
+     * calls of 25 blocks each, repeated up to 5 times for a compiler queue that is slow to get
+     * there), 2 000 calls allocate fewer bytes than calls, the smallest object being 16 bytes. A
+     * vector boxed at a call C2 did not inline, or a gather left to the Vector API's Java fallback,
+     * costs hundreds of bytes per block. From JDK 25 (what the CLI runs): JDK 17's C2 leaves some of
+     * the kernel's lane permutations to that fallback (JFR: {@code AbstractShuffle.toArray},
+     * {@code Float256Vector.bOp} under the transpose), about 40 KB per call here.
+     */
+    @ParameterizedTest
+    @CsvSource({"STBS_LBS, INVERSE_TRANSPOSE", "STBS_LBS, BLENDED_MATRIX", "STBS_DQS, INVERSE_TRANSPOSE",
+        "STBS_DQS, BLENDED_MATRIX"})
+    void skinningAllocatesNothingOnceCompiled(SkinningMethod method, NormalTransform normals) {
+        assumeTrue(Runtime.version().feature() >= 25, "JDK 17's C2 leaves some lane permutations to Java code");
+        int calls = 2_000;
+        SkinnedGeometry g = chain(7, 200, 4, 6);
+        Skinner vector = new VectorSkinnerProvider().create(method, g, normals);
+        assertTrue(vector instanceof VectorStbsSkinner, "the provider offers the vector kernel for " + method);
+        JointPalette palette = pose(g, 7, true);
+        float[] p = new float[3 * 200];
+        float[] n = new float[3 * 200];
+        long bytes = allocatedBytes(() -> vector.skin(palette, p, n, 0, 200), calls);
+        assertTrue(bytes < calls, method + " " + normals + ": " + bytes + " bytes allocated in " + calls + " calls");
+    }
+
+    /**
+     * The fewest bytes this thread allocated in {@code calls} runs of {@code r}, each measurement
+     * after 10 {@code calls} more warm-up runs, over up to 5 rounds (the first below {@code calls} ends them).
+     */
+    private static long allocatedBytes(Runnable r, int calls) {
+        ThreadMXBean threads = (ThreadMXBean) ManagementFactory.getThreadMXBean();
+        long id = Thread.currentThread().getId();
+        long fewest = Long.MAX_VALUE;
+        for (int round = 0; round < 5 && fewest >= calls; round++) {
+            for (int i = 0; i < 10 * calls; i++) {
+                r.run();
+            }
+            long before = threads.getThreadAllocatedBytes(id);
+            for (int i = 0; i < calls; i++) {
+                r.run();
+            }
+            fewest = Math.min(fewest, threads.getThreadAllocatedBytes(id) - before);
+        }
+        return fewest;
+    }
+
     @Test
     void thePolynomialsMatchSinAndCosOverTheHalfAngleRange() {
         float[] a = new float[8];
@@ -114,9 +162,10 @@ class VectorStbsSkinnerTest {
             for (int l = 0; l < 8; l++) {
                 a[l] = (float) (-Math.PI / 2 + Math.PI * (i + l) / 8000.0);
             }
-            FloatVector v = FloatVector.fromArray(Lanes.S, a, 0);
-            float[] s = StbsLanes.sin(v).toArray();
-            float[] c = StbsLanes.cos(v).toArray();
+            float[] scratch = Arrays.copyOf(a, 24);
+            StbsLanes.sinCos(scratch, 0, 8, 16);
+            float[] s = Arrays.copyOfRange(scratch, 8, 16);
+            float[] c = Arrays.copyOfRange(scratch, 16, 24);
             for (int l = 0; l < 8; l++) {
                 worst = Math.max(worst, (float) Math.abs(s[l] - Math.sin(a[l])));
                 worst = Math.max(worst, (float) Math.abs(c[l] - Math.cos(a[l])));
