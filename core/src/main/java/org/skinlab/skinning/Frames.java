@@ -89,4 +89,31 @@ final class Frames {
         f[o + 14] = a22;
         f[o + 15] = 0f;
     }
+
+    /**
+     * Writes point i from its deformed position {@code d[0..3)} and normal matrix {@code d[3..12)}
+     * (row-major, applied to the rest normal), as the kernels that compute a per-point frame do in
+     * {@link Skinner#skin}: the normal renormalised when {@code renormalise} (exact normals).
+     */
+    static void putPoint(float[] d, float[] restNormals, int i, boolean renormalise, float[] outPositions,
+            float[] outNormals) {
+        int v = 3 * i;
+        outPositions[v] = d[0];
+        outPositions[v + 1] = d[1];
+        outPositions[v + 2] = d[2];
+        float nx = restNormals[v], ny = restNormals[v + 1], nz = restNormals[v + 2];
+        float mx = d[3] * nx + d[4] * ny + d[5] * nz;
+        float my = d[6] * nx + d[7] * ny + d[8] * nz;
+        float mz = d[9] * nx + d[10] * ny + d[11] * nz;
+        if (renormalise) {
+            float len2 = mx * mx + my * my + mz * mz;
+            float scale = len2 > 0f ? 1f / (float) Math.sqrt(len2) : 0f;
+            mx *= scale;
+            my *= scale;
+            mz *= scale;
+        }
+        outNormals[v] = mx;
+        outNormals[v + 1] = my;
+        outNormals[v + 2] = mz;
+    }
 }

@@ -316,24 +316,7 @@ public final class ScalarSplineSkinner extends AbstractSkinner {
         final float[] d = scratch.get();
         for (int i = from; i < to; i++) {
             deform(palette, i, exactNormals, mirrors, d);
-            int v = 3 * i;
-            outPositions[v] = d[0];
-            outPositions[v + 1] = d[1];
-            outPositions[v + 2] = d[2];
-            float nx = restNormals[v], ny = restNormals[v + 1], nz = restNormals[v + 2];
-            float mx = d[3] * nx + d[4] * ny + d[5] * nz;
-            float my = d[6] * nx + d[7] * ny + d[8] * nz;
-            float mz = d[9] * nx + d[10] * ny + d[11] * nz;
-            if (exactNormals) {
-                float len2 = mx * mx + my * my + mz * mz;
-                float scale = len2 > 0f ? 1f / (float) Math.sqrt(len2) : 0f;
-                mx *= scale;
-                my *= scale;
-                mz *= scale;
-            }
-            outNormals[v] = mx;
-            outNormals[v + 1] = my;
-            outNormals[v + 2] = mz;
+            Frames.putPoint(d, restNormals, i, exactNormals, outPositions, outNormals);
         }
     }
 
