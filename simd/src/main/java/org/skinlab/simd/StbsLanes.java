@@ -314,12 +314,96 @@ final class StbsLanes {
      */
     static void dualQuaternion(float[] s, int o, float[] weights, float[] blk, int b, int width, int active,
             boolean exact, float[] outPositions, float[] outNormals) {
-        dualQuaternionBlend(s, o, weights, b, width, active);
+        dualQuaternionBlend(s, s, o, weights, b, width, active);
         dualQuaternionPositions(s, o, blk, b, outPositions);
         dualQuaternionNormals(s, o, blk, b, exact, outNormals);
     }
 
-    private static void dualQuaternionBlend(float[] s, int o, float[] weights, int b, int width, int active) {
+    /**
+     * Block b's frame records ({@link org.skinlab.skinning.Skinner#skinFrames}) on LBS: the blend
+     * as in {@link #linear}, N its linear part's cofactor (unsigned, as the scalar kernel: a blend
+     * of rotations turns no normal inwards unless it degenerates) or that part itself, 16 lane
+     * vectors into {@code f} (128 floats), transposed into the points' records at {@code 128 b}.
+     */
+    static void linearFrames(float[] s, int o, float[] weights, float[] blk, int b, int width, int active,
+            boolean exact, float[] f, float[] outFrames) {
+        linearBlend(s, o, weights, b, width, active);
+        linearFrameLanes(s, o, blk, b, exact, f);
+        storeFrames(f, outFrames, 128 * b);
+    }
+
+    /** The record's 16 fields as lane vectors, field c at {@code f[8 c ..]} (fields 3, 7, 11, 15 zero). */
+    private static void linearFrameLanes(float[] s, int o, float[] blk, int b, boolean exact, float[] f) {
+        FloatVector b0 = FloatVector.fromArray(S, s, o);
+        FloatVector b1 = FloatVector.fromArray(S, s, o + 8);
+        FloatVector b2 = FloatVector.fromArray(S, s, o + 16);
+        FloatVector b4 = FloatVector.fromArray(S, s, o + 32);
+        FloatVector b5 = FloatVector.fromArray(S, s, o + 40);
+        FloatVector b6 = FloatVector.fromArray(S, s, o + 48);
+        FloatVector b8 = FloatVector.fromArray(S, s, o + 64);
+        FloatVector b9 = FloatVector.fromArray(S, s, o + 72);
+        FloatVector b10 = FloatVector.fromArray(S, s, o + 80);
+        int fo = VectorStbsSkinner.BLOCK_FLOATS * b;
+        FloatVector px = FloatVector.fromArray(S, blk, fo);
+        FloatVector py = FloatVector.fromArray(S, blk, fo + 8);
+        FloatVector pz = FloatVector.fromArray(S, blk, fo + 16);
+        b0.mul(px).add(b1.mul(py)).add(b2.mul(pz)).add(FloatVector.fromArray(S, s, o + 24)).intoArray(f, 64);
+        b4.mul(px).add(b5.mul(py)).add(b6.mul(pz)).add(FloatVector.fromArray(S, s, o + 56)).intoArray(f, 72);
+        b8.mul(px).add(b9.mul(py)).add(b10.mul(pz)).add(FloatVector.fromArray(S, s, o + 88)).intoArray(f, 80);
+        if (exact) {
+            // Row-major cofactor c_rc as in ScalarStbsSkinner; the record holds N's columns.
+            b5.mul(b10).sub(b9.mul(b6)).intoArray(f, 0);
+            b9.mul(b2).sub(b1.mul(b10)).intoArray(f, 8);
+            b1.mul(b6).sub(b5.mul(b2)).intoArray(f, 16);
+            b6.mul(b8).sub(b10.mul(b4)).intoArray(f, 32);
+            b10.mul(b0).sub(b2.mul(b8)).intoArray(f, 40);
+            b2.mul(b4).sub(b6.mul(b0)).intoArray(f, 48);
+            b4.mul(b9).sub(b8.mul(b5)).intoArray(f, 96);
+            b8.mul(b1).sub(b0.mul(b9)).intoArray(f, 104);
+            b0.mul(b5).sub(b4.mul(b1)).intoArray(f, 112);
+        } else {
+            b0.intoArray(f, 0);
+            b4.intoArray(f, 8);
+            b8.intoArray(f, 16);
+            b1.intoArray(f, 32);
+            b5.intoArray(f, 40);
+            b9.intoArray(f, 48);
+            b2.intoArray(f, 96);
+            b6.intoArray(f, 104);
+            b10.intoArray(f, 112);
+        }
+        FloatVector zero = FloatVector.zero(S);
+        zero.intoArray(f, 24);
+        zero.intoArray(f, 56);
+        zero.intoArray(f, 88);
+        zero.intoArray(f, 120);
+    }
+
+    /**
+     * The 16 lane vectors at {@code f} transposed in place ({@link DqsLanes#transpose}: fields 0..7
+     * and 8..15 of the 8 points, 8 floats each), then copied into the records at {@code out[o ..]}.
+     */
+    private static void storeFrames(float[] f, float[] out, int o) {
+        DqsLanes.transpose(f, f, 0, 2);
+        for (int l = 0; l < 8; l++) {
+            FloatVector.fromArray(S, f, 8 * l).intoArray(out, o + 16 * l);
+            FloatVector.fromArray(S, f, 64 + 8 * l).intoArray(out, o + 16 * l + 8);
+        }
+    }
+
+    /**
+     * Block b's frame records on DQS: the blend as in {@link #dualQuaternion}, into {@code f} from 0
+     * (64 floats: the layout of {@link DqsLanes}' scratch), then {@link DqsLanes#rigidFrames}, which
+     * normalises it and writes N = its rotation and p' = R p + t at {@code 128 b}.
+     */
+    static void dualQuaternionFrames(float[] s, float[] weights, float[] blk, int b, int width, int active, float[] f,
+            float[] outFrames) {
+        dualQuaternionBlend(s, f, 0, weights, b, width, active);
+        DqsLanes.rigidFrames(f, blk, outFrames, b, b + 1, 0);
+    }
+
+    /** The blend of the influences in {@code s} into {@code d[o ..]}: real part, then dual part, 4 lane vectors each. */
+    private static void dualQuaternionBlend(float[] s, float[] d, int o, float[] weights, int b, int width, int active) {
         FloatVector p0 = FloatVector.fromArray(S, s, 0);
         FloatVector p1 = FloatVector.fromArray(S, s, 8);
         FloatVector p2 = FloatVector.fromArray(S, s, 16);
@@ -346,14 +430,14 @@ final class StbsLanes {
             d2 = hw.fma(q.mul(ez).add(ex.mul(y).sub(ey.mul(x))), d2);
             d3 = hw.neg().fma(ex.mul(x).add(ey.mul(y)).add(ez.mul(z)), d3);
         }
-        r0.intoArray(s, o);
-        r1.intoArray(s, o + 8);
-        r2.intoArray(s, o + 16);
-        r3.intoArray(s, o + 24);
-        d0.intoArray(s, o + 32);
-        d1.intoArray(s, o + 40);
-        d2.intoArray(s, o + 48);
-        d3.intoArray(s, o + 56);
+        r0.intoArray(d, o);
+        r1.intoArray(d, o + 8);
+        r2.intoArray(d, o + 16);
+        r3.intoArray(d, o + 24);
+        d0.intoArray(d, o + 32);
+        d1.intoArray(d, o + 40);
+        d2.intoArray(d, o + 48);
+        d3.intoArray(d, o + 56);
     }
 
     /** Normalises the blend by its real part, applies it to the points, and leaves the unit real part in {@code s[o ..]}. */

@@ -17,8 +17,12 @@ import org.skinlab.skinning.SkinningMethod;
  * <p><b>Layout.</b> The constructor repacks the geometry into blocks of 8 points: px py pz nx ny
  * nz, 8 lanes each, and per influence k of block b at {@code 8 (b width + k)} the weights and the
  * offsets of the joints' data (24 j, in the bone rows and in {@link StbsLanes#packJoints}'s table). Points of a range
- * outside whole blocks ({@link #rangeAlignment()}) and {@link #skinFrames} (which only a
- * position-sharing geometry asks for) go through the scalar kernel.
+ * outside whole blocks ({@link #rangeAlignment()}) go through the scalar kernel.
+ *
+ * <p>{@link #skinFrames} (the route of position sharing) runs the same influence pass and blend,
+ * then writes 8 points' frame records from lanes: on LBS the blend's position and its linear
+ * part's cofactor (or that part), transposed ({@link StbsLanes#linearFrames}); on DQS through
+ * the DQS kernel's {@link DqsLanes#rigidFrames}.
  */
 final class VectorStbsSkinner extends AbstractSkinner {
     static final int BLOCK = 8;
@@ -40,6 +44,8 @@ final class VectorStbsSkinner extends AbstractSkinner {
     private final ThreadLocal<float[]> jointScratch;
     /** Per thread the joints' data of the palette being applied ({@link StbsLanes#packJoints}). */
     private final ThreadLocal<float[]> jointTable;
+    /** Per thread one block's frame records in lanes ({@link #skinFrames}): 16 fields, 8 lanes each. */
+    private final ThreadLocal<float[]> frameScratch = ThreadLocal.withInitial(() -> new float[FRAME_FLOATS * BLOCK]);
 
     VectorStbsSkinner(SkinningMethod method, SkinnedGeometry geometry, NormalTransform normals) {
         super(method, "vector-256", geometry, normals);
@@ -140,6 +146,36 @@ final class VectorStbsSkinner extends AbstractSkinner {
 
     @Override
     public void skinFrames(JointPalette palette, float[] outFrames, int from, int to) {
-        scalar.skinFrames(palette, outFrames, from, to);
+        if (palette.jointCount() != jointCount) {
+            throw new IllegalArgumentException("palette of " + palette.jointCount() + " joints for a geometry of "
+                    + jointCount);
+        }
+        int firstBlock = (from + BLOCK - 1) / BLOCK;
+        int endBlock = Math.min(to / BLOCK, blockCount);
+        if (firstBlock >= endBlock) {
+            scalar.skinFrames(palette, outFrames, from, to);
+            return;
+        }
+        if (outFrames.length < FRAME_FLOATS * BLOCK * endBlock) {
+            throw new IndexOutOfBoundsException("output array shorter than " + FRAME_FLOATS * BLOCK * endBlock);
+        }
+        scalar.skinFrames(palette, outFrames, from, BLOCK * firstBlock);
+        float[] s = scratch.get();
+        float[] t = jointScratch.get();
+        float[] table = jointTable.get();
+        float[] f = frameScratch.get();
+        StbsLanes.packJoints(palette.boneRows(), palette.dualQuaternions(), jointCount, table);
+        boolean exact = normals == NormalTransform.INVERSE_TRANSPOSE;
+        int blend = StbsLanes.INFLUENCE_FLOATS * width;
+        for (int b = firstBlock; b < endBlock; b++) {
+            int active = Math.max(1, activeWidth[b]);
+            StbsLanes.influences(table, rowIndex, points, b, width, active, s, t);
+            if (dualQuaternions) {
+                StbsLanes.dualQuaternionFrames(s, weights, points, b, width, active, f, outFrames);
+            } else {
+                StbsLanes.linearFrames(s, blend, weights, points, b, width, active, exact, f, outFrames);
+            }
+        }
+        scalar.skinFrames(palette, outFrames, BLOCK * endBlock, to);
     }
 }

@@ -109,6 +109,39 @@ class VectorStbsSkinnerTest {
     }
 
     /**
+     * {@link Skinner#skinFrames} (the route of position sharing) against the scalar kernel's frames:
+     * the same records (N's columns, p, padding) for every range, nothing written outside it.
+     */
+    @ParameterizedTest
+    @CsvSource({"STBS_LBS, INVERSE_TRANSPOSE, 4, false", "STBS_LBS, BLENDED_MATRIX, 3, true",
+        "STBS_LBS, INVERSE_TRANSPOSE, 2, true", "STBS_LBS, BLENDED_MATRIX, 1, false",
+        "STBS_DQS, INVERSE_TRANSPOSE, 4, true", "STBS_DQS, BLENDED_MATRIX, 3, false",
+        "STBS_DQS, INVERSE_TRANSPOSE, 1, false", "STBS_DQS, BLENDED_MATRIX, 2, true"})
+    void framesAgreeWithScalarForEveryRange(SkinningMethod method, NormalTransform normals, int width, boolean scaled) {
+        SkinnedGeometry g = chain(width + 10, 203, width, 6);
+        Skinner vector = new VectorSkinnerProvider().create(method, g, normals);
+        assertTrue(vector instanceof VectorStbsSkinner, "the provider offers the vector kernel for " + method);
+        Skinner scalar = Skinners.scalar(method, g, normals, PositionSharing.NEVER);
+        for (int seed = 0; seed < 5; seed++) {
+            JointPalette palette = pose(g, 300 * width + seed, scaled);
+            for (int[] range : new int[][] {{0, 203}, {0, 200}, {3, 77}, {8, 16}, {9, 14}}) {
+                int n = Skinner.FRAME_FLOATS * g.pointCount();
+                float[] vf = nan(n), sf = nan(n);
+                vector.skinFrames(palette, vf, range[0], range[1]);
+                scalar.skinFrames(palette, sf, range[0], range[1]);
+                for (int i = 0; i < n; i++) {
+                    int point = i / Skinner.FRAME_FLOATS;
+                    if (point < range[0] || point >= range[1]) {
+                        assertTrue(Float.isNaN(vf[i]), "float " + i + " outside the range was written");
+                        continue;
+                    }
+                    check(vector, "frame", i, vf[i], sf[i]);
+                }
+            }
+        }
+    }
+
+    /**
      * The per-frame path allocates nothing: once C2 has compiled every pass (10 x 2 000 warm-up
      * calls of 25 blocks each, repeated up to 5 times for a compiler queue that is slow to get
      * there), 2 000 calls allocate fewer bytes than calls, the smallest object being 16 bytes. A
@@ -130,6 +163,22 @@ class VectorStbsSkinnerTest {
         float[] p = new float[3 * 200];
         float[] n = new float[3 * 200];
         long bytes = allocatedBytes(() -> vector.skin(palette, p, n, 0, 200), calls);
+        assertTrue(bytes < calls, method + " " + normals + ": " + bytes + " bytes allocated in " + calls + " calls");
+    }
+
+    /** {@link Skinner#skinFrames} allocates nothing either (see {@link #skinningAllocatesNothingOnceCompiled}). */
+    @ParameterizedTest
+    @CsvSource({"STBS_LBS, INVERSE_TRANSPOSE", "STBS_LBS, BLENDED_MATRIX", "STBS_DQS, INVERSE_TRANSPOSE",
+        "STBS_DQS, BLENDED_MATRIX"})
+    void framesAllocateNothingOnceCompiled(SkinningMethod method, NormalTransform normals) {
+        assumeTrue(Runtime.version().feature() >= 25, "JDK 17's C2 leaves some lane permutations to Java code");
+        int calls = 2_000;
+        SkinnedGeometry g = chain(7, 200, 4, 6);
+        Skinner vector = new VectorSkinnerProvider().create(method, g, normals);
+        assertTrue(vector instanceof VectorStbsSkinner, "the provider offers the vector kernel for " + method);
+        JointPalette palette = pose(g, 7, true);
+        float[] f = new float[Skinner.FRAME_FLOATS * 200];
+        long bytes = allocatedBytes(() -> vector.skinFrames(palette, f, 0, 200), calls);
         assertTrue(bytes < calls, method + " " + normals + ": " + bytes + " bytes allocated in " + calls + " calls");
     }
 
