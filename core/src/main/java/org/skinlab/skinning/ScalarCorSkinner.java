@@ -212,24 +212,8 @@ public final class ScalarCorSkinner extends AbstractSkinner {
         final float[] d = scratch.get();
         for (int i = from; i < to; i++) {
             deform(palette, i, exactNormals, d);
-            int f = FRAME_FLOATS * i;
-            // Columns of N, then p, then N's last column (Skinner#skinFrames).
-            outFrames[f] = d[3];
-            outFrames[f + 1] = d[6];
-            outFrames[f + 2] = d[9];
-            outFrames[f + 3] = 0;
-            outFrames[f + 4] = d[4];
-            outFrames[f + 5] = d[7];
-            outFrames[f + 6] = d[10];
-            outFrames[f + 7] = 0;
-            outFrames[f + 8] = d[0];
-            outFrames[f + 9] = d[1];
-            outFrames[f + 10] = d[2];
-            outFrames[f + 11] = 0;
-            outFrames[f + 12] = d[5];
-            outFrames[f + 13] = d[8];
-            outFrames[f + 14] = d[11];
-            outFrames[f + 15] = 0;
+            Frames.put(outFrames, FRAME_FLOATS * i, false, false, d[3], d[4], d[5], d[6], d[7], d[8], d[9], d[10], d[11],
+                    d[0], d[1], d[2]);
         }
     }
 }
