@@ -85,7 +85,7 @@ final class ModelGl {
         glBufferData(GL_ARRAY_BUFFER, 4 * k * n, w, GL_STATIC_DRAW);
         glEnableVertexAttribArray(GlesShaders.WEIGHTS);
         glVertexAttribPointer(GlesShaders.WEIGHTS, k, GL_FLOAT, false, 4 * k, 0);
-        floats(buffers[4], g.centersOfRotation(), 3 * n, GlesShaders.CENTRE, 3);
+        floats(buffers[4], g.centresOfRotation(), 3 * n, GlesShaders.CENTRE, 3);
         if (uv != null) {
             floats(buffers[6], uv, 2 * n, GlesShaders.UV, 2);
         }

@@ -44,7 +44,7 @@ import org.skinlab.ar.MarkerScene;
 import org.skinlab.ar.TrackerConfig;
 import org.skinlab.simulation.AnimationConfig;
 import org.skinlab.simulation.SkeletalAnimatedMesh;
-import org.skinlab.skinning.CentersOfRotation;
+import org.skinlab.skinning.CentresOfRotation;
 
 /**
  * The AR app's one Activity: the camera image with the animated character standing on the printed
@@ -113,7 +113,7 @@ public final class SkinlabActivity extends Activity {
     protected void onCreate(Bundle saved) {
         super.onCreate(saved);
         // CoR's centres are computed once per model and then read from the app's cache folder.
-        CentersOfRotation.setCacheDirectory(new File(getCacheDir(), "centres").toPath());
+        CentresOfRotation.setCacheDirectory(new File(getCacheDir(), "centres").toPath());
         try {
             catalog = new ModelCatalog(getAssets().list("models"));
         } catch (IOException | IllegalArgumentException e) {

@@ -11,7 +11,7 @@ import java.security.MessageDigest;
 import java.security.NoSuchAlgorithmException;
 
 /**
- * The files of {@link CentersOfRotation}'s cache: {@code HASH.cor}, a header (magic, version,
+ * The files of {@link CentresOfRotation}'s cache: {@code HASH.cor}, a header (magic, version,
  * float count) and the centres, little-endian. The name is the SHA-256 of everything the centres
  * depend on, so a changed file or parameter is a different name and a stale entry is never read.
  * Files are written to a temporary name and moved into place, so a reader never sees half a file.
@@ -26,7 +26,7 @@ final class CentresCache {
     }
 
     /** The hex SHA-256 of the geometry's positions, triangles, influences and the parameters. */
-    static String key(SkinnedGeometry g, CentersOfRotation.Parameters parameters) {
+    static String key(SkinnedGeometry g, CentresOfRotation.Parameters parameters) {
         MessageDigest sha;
         try {
             sha = MessageDigest.getInstance("SHA-256");

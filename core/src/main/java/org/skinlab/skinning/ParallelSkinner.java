@@ -9,7 +9,7 @@ import java.util.concurrent.atomic.AtomicReference;
 import java.util.concurrent.locks.LockSupport;
 
 /**
- * Runs any {@link Skinner} over several threads: {@link #skin} (and {@link #skinFrames}) cuts its range into a few chunks
+ * Runs any {@link Skinner} over several threads: {@link #skin} (and {@link #skinDeformations}) cuts its range into a few chunks
  * per thread, starting at multiples of the kernel's {@link Skinner#rangeAlignment()}, and the
  * calling thread and a small persistent pool take chunks from a shared counter until none is left.
  * Plain Java (Android-safe).
@@ -56,8 +56,8 @@ public final class ParallelSkinner implements Skinner, AutoCloseable {
     private JointPalette palette;
     private float[] outPositions;
     private float[] outNormals;
-    private float[] outFrames;
-    /** Whether the frame being run is a {@link #skinFrames} call. */
+    private float[] outDeformations;
+    /** Whether the frame being run is a {@link #skinDeformations} call. */
     private boolean frames;
     private int from;
     private int to;
@@ -130,7 +130,7 @@ public final class ParallelSkinner implements Skinner, AutoCloseable {
     }
 
     @Override
-    public void skinFrames(JointPalette p, float[] frames, int start, int end) {
+    public void skinDeformations(JointPalette p, float[] frames, int start, int end) {
         run(p, null, null, frames, true, start, end);
     }
 
@@ -150,7 +150,7 @@ public final class ParallelSkinner implements Skinner, AutoCloseable {
         palette = p;
         outPositions = positions;
         outNormals = normals;
-        outFrames = outputFrames;
+        outDeformations = outputFrames;
         frames = framesCall;
         from = start;
         to = end;
@@ -179,7 +179,7 @@ public final class ParallelSkinner implements Skinner, AutoCloseable {
         // its compare-and-set must then fail, or it would run and count a chunk of the next frame.
         claim.set(((long) generation << 32) | CLOSED);
         palette = null;
-        outPositions = outNormals = outFrames = null;
+        outPositions = outNormals = outDeformations = null;
         Throwable t = failure.get();
         if (t instanceof RuntimeException) {
             throw (RuntimeException) t;
@@ -216,7 +216,7 @@ public final class ParallelSkinner implements Skinner, AutoCloseable {
             }
             int chunk = (int) c;
             try {
-                runKernel(palette, outPositions, outNormals, outFrames, frames, bound(chunk), bound(chunk + 1));
+                runKernel(palette, outPositions, outNormals, outDeformations, frames, bound(chunk), bound(chunk + 1));
             } catch (RuntimeException | Error e) {
                 failure.compareAndSet(null, e);
             }
@@ -231,7 +231,7 @@ public final class ParallelSkinner implements Skinner, AutoCloseable {
     private void runKernel(JointPalette p, float[] positions, float[] normals, float[] outputFrames,
             boolean framesCall, int start, int end) {
         if (framesCall) {
-            kernel.skinFrames(p, outputFrames, start, end);
+            kernel.skinDeformations(p, outputFrames, start, end);
         } else {
             kernel.skin(p, positions, normals, start, end);
         }

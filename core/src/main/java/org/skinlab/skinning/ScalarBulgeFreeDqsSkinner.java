@@ -52,10 +52,10 @@ public final class ScalarBulgeFreeDqsSkinner extends AbstractSkinner {
     }
 
     @Override
-    public void skinFrames(JointPalette palette, float[] outFrames, int from, int to) {
-        dqs.skinFrames(palette, outFrames, from, to);
-        // The frame's position sits at floats 8..10 (Skinner.skinFrames).
-        pull(palette, outFrames, FRAME_FLOATS, 8, from, to);
+    public void skinDeformations(JointPalette palette, float[] outDeformations, int from, int to) {
+        dqs.skinDeformations(palette, outDeformations, from, to);
+        // The frame's position sits at floats 8..10 (Skinner.skinDeformations).
+        pull(palette, outDeformations, DEFORMATION_FLOATS, 8, from, to);
     }
 
     /** The correction of points [from, to) whose DQS positions are at {@code stride * i + offset}. */

@@ -2,7 +2,7 @@ package org.skinlab.skinning;
 
 /**
  * Skinning with optimized centres of rotation (Le and Hodgins 2016, section 5) in plain Java, any
- * number of influences. Per point p with centre c ({@link SkinnedGeometry#centersOfRotation()}):
+ * number of influences. Per point p with centre c ({@link SkinnedGeometry#centresOfRotation()}):
  * <ol>
  * <li>if any joint is scaled this frame, the scale phase of DQS first ({@link ScalarDqsSkinner}):
  *     {@code S = sum_k w_k S_(j_k)}, {@code p1 = S p}, {@code c1 = S c}, the normal by S's
@@ -33,7 +33,7 @@ public final class ScalarCorSkinner extends AbstractSkinner {
         super(SkinningMethod.COR, "scalar", geometry, normals);
         this.positions = geometry.positionArray();
         this.restNormals = geometry.normalArray();
-        this.centres = geometry.centersOfRotation();
+        this.centres = geometry.centresOfRotation();
         this.joints = geometry.jointArray();
         this.weights = geometry.weightArray();
         this.width = geometry.influencesPerPoint();
@@ -202,17 +202,17 @@ public final class ScalarCorSkinner extends AbstractSkinner {
         final float[] d = scratch.get();
         for (int i = from; i < to; i++) {
             deform(palette, i, exactNormals, d);
-            Frames.putPoint(d, restNormals, i, exactNormals, outPositions, outNormals);
+            Deformations.putPoint(d, restNormals, i, exactNormals, outPositions, outNormals);
         }
     }
 
     @Override
-    public void skinFrames(JointPalette palette, float[] outFrames, int from, int to) {
+    public void skinDeformations(JointPalette palette, float[] outDeformations, int from, int to) {
         final boolean exactNormals = normals == NormalTransform.INVERSE_TRANSPOSE;
         final float[] d = scratch.get();
         for (int i = from; i < to; i++) {
             deform(palette, i, exactNormals, d);
-            Frames.put(outFrames, FRAME_FLOATS * i, false, false, d[3], d[4], d[5], d[6], d[7], d[8], d[9], d[10], d[11],
+            Deformations.put(outDeformations, DEFORMATION_FLOATS * i, false, false, d[3], d[4], d[5], d[6], d[7], d[8], d[9], d[10], d[11],
                     d[0], d[1], d[2]);
         }
     }

@@ -189,7 +189,7 @@ public final class ScalarDqsSkinner extends AbstractSkinner {
     }
 
     @Override
-    public void skinFrames(JointPalette palette, float[] outFrames, int from, int to) {
+    public void skinDeformations(JointPalette palette, float[] outDeformations, int from, int to) {
         final float[] dq = palette.dualQuaternions();
         final float[] sc = palette.scales();
         final boolean scaled = palette.hasScale();
@@ -209,7 +209,7 @@ public final class ScalarDqsSkinner extends AbstractSkinner {
             float r20 = 2 * (rx * rz - ry * rw), r21 = 2 * (ry * rz + rx * rw), r22 = 1 - 2 * (rx * rx + ry * ry);
             float n00 = r00, n01 = r01, n02 = r02, n10 = r10, n11 = r11, n12 = r12, n20 = r20, n21 = r21, n22 = r22;
             if (scaled) {
-                Frames.blendMatrices(sc, joints, weights, o, width, b, 8);
+                Deformations.blendMatrices(sc, joints, weights, o, width, b, 8);
                 float qx = b[8] * px + b[9] * py + b[10] * pz + b[11];
                 float qy = b[12] * px + b[13] * py + b[14] * pz + b[15];
                 float qz = b[16] * px + b[17] * py + b[18] * pz + b[19];
@@ -218,7 +218,7 @@ public final class ScalarDqsSkinner extends AbstractSkinner {
                 pz = qz;
                 int k = 20;
                 if (exactNormals) {
-                    Frames.signedCofactor(b, 8, mirror, b, 20);
+                    Deformations.signedCofactor(b, 8, mirror, b, 20);
                 } else {
                     for (int row = 0; row < 3; row++) {
                         System.arraycopy(b, 8 + 4 * row, b, 20 + 3 * row, 3);
@@ -242,7 +242,7 @@ public final class ScalarDqsSkinner extends AbstractSkinner {
             float cx = ry * pz - rz * py + rw * px;
             float cy = rz * px - rx * pz + rw * py;
             float cz = rx * py - ry * px + rw * pz;
-            Frames.put(outFrames, Skinner.FRAME_FLOATS * i, false, false, n00, n01, n02, n10, n11, n12, n20, n21, n22,
+            Deformations.put(outDeformations, Skinner.DEFORMATION_FLOATS * i, false, false, n00, n01, n02, n10, n11, n12, n20, n21, n22,
                     px + 2 * (ry * cz - rz * cy) + tx, py + 2 * (rz * cx - rx * cz) + ty,
                     pz + 2 * (rx * cy - ry * cx) + tz);
         }

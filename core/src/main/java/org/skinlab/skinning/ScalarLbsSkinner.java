@@ -80,7 +80,7 @@ public final class ScalarLbsSkinner extends AbstractSkinner {
     }
 
     @Override
-    public void skinFrames(JointPalette palette, float[] outFrames, int from, int to) {
+    public void skinDeformations(JointPalette palette, float[] outDeformations, int from, int to) {
         final float[] mat = palette.matrices();
         final boolean exactNormals = normals == NormalTransform.INVERSE_TRANSPOSE;
         final boolean mirror = exactNormals && palette.mirrorsMatrices();
@@ -109,7 +109,7 @@ public final class ScalarLbsSkinner extends AbstractSkinner {
             }
             int v = 3 * i;
             float px = positions[v], py = positions[v + 1], pz = positions[v + 2];
-            Frames.put(outFrames, Skinner.FRAME_FLOATS * i, exactNormals, mirror, b0, b1, b2, b4, b5, b6, b8, b9, b10,
+            Deformations.put(outDeformations, Skinner.DEFORMATION_FLOATS * i, exactNormals, mirror, b0, b1, b2, b4, b5, b6, b8, b9, b10,
                     b0 * px + b1 * py + b2 * pz + b3, b4 * px + b5 * py + b6 * pz + b7,
                     b8 * px + b9 * py + b10 * pz + b11);
         }

@@ -316,18 +316,18 @@ public final class ScalarSplineSkinner extends AbstractSkinner {
         final float[] d = scratch.get();
         for (int i = from; i < to; i++) {
             deform(palette, i, exactNormals, mirrors, d);
-            Frames.putPoint(d, restNormals, i, exactNormals, outPositions, outNormals);
+            Deformations.putPoint(d, restNormals, i, exactNormals, outPositions, outNormals);
         }
     }
 
     @Override
-    public void skinFrames(JointPalette palette, float[] outFrames, int from, int to) {
+    public void skinDeformations(JointPalette palette, float[] outDeformations, int from, int to) {
         final boolean exactNormals = normals == NormalTransform.INVERSE_TRANSPOSE;
         final boolean mirrors = exactNormals && palette.mirrorsMatrices();
         final float[] d = scratch.get();
         for (int i = from; i < to; i++) {
             deform(palette, i, exactNormals, mirrors, d);
-            Frames.put(outFrames, FRAME_FLOATS * i, false, false, d[3], d[4], d[5], d[6], d[7], d[8], d[9], d[10], d[11],
+            Deformations.put(outDeformations, DEFORMATION_FLOATS * i, false, false, d[3], d[4], d[5], d[6], d[7], d[8], d[9], d[10], d[11],
                     d[0], d[1], d[2]);
         }
     }

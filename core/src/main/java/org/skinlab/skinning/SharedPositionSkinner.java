@@ -3,7 +3,7 @@ package org.skinlab.skinning;
 /**
  * Skins a geometry whose render vertices share positions ({@link SkinnedGeometry#sharedPositions()})
  * by deforming each position once into a frame, with a kernel built on the position-level
- * geometry, and then deriving every point from its position's frame ({@link FrameExpansion}).
+ * geometry, and then deriving every point from its position's frame ({@link DeformationExpansion}).
  *
  * <p>Each call deforms all positions, whatever range of points it is asked for: the frames of a
  * range's positions are not a contiguous range. So split a frame over threads at the level of the
@@ -12,19 +12,19 @@ package org.skinlab.skinning;
  */
 final class SharedPositionSkinner extends AbstractSkinner {
     private final Skinner positionKernel;
-    private final FrameExpansion expansion;
-    private final int[] frameOfPoint;
+    private final DeformationExpansion expansion;
+    private final int[] deformationOfPoint;
     private final int positionCount;
     private final ThreadLocal<float[]> frames;
 
-    SharedPositionSkinner(SkinnedGeometry geometry, Skinner positionKernel, FrameExpansion expansion) {
+    SharedPositionSkinner(SkinnedGeometry geometry, Skinner positionKernel, DeformationExpansion expansion) {
         super(positionKernel.method(), positionKernel.implementation() + ", each position once ("
                 + expansion.implementation() + " expansion)", geometry, positionKernel.normalTransform());
         this.positionKernel = positionKernel;
         this.expansion = expansion;
-        this.frameOfPoint = geometry.frameOfPointArray();
+        this.deformationOfPoint = geometry.deformationOfPointArray();
         this.positionCount = positionKernel.geometry().pointCount();
-        int size = FRAME_FLOATS * positionCount;
+        int size = DEFORMATION_FLOATS * positionCount;
         this.frames = ThreadLocal.withInitial(() -> new float[size]);
     }
 
@@ -106,7 +106,7 @@ final class SharedPositionSkinner extends AbstractSkinner {
     @Override
     public void skin(JointPalette palette, float[] outPositions, float[] outNormals, int from, int to) {
         float[] f = frames.get();
-        positionKernel.skinFrames(palette, f, 0, positionCount);
+        positionKernel.skinDeformations(palette, f, 0, positionCount);
         // DQS and CoR frames without scale are rotations of unit normals (see expansionNormals);
         // LBS's and STBS-on-LBS's are cofactors of blended matrices, never unit; spline frames are
         // blends of rotations.
@@ -116,11 +116,11 @@ final class SharedPositionSkinner extends AbstractSkinner {
     }
 
     @Override
-    public void skinFrames(JointPalette palette, float[] outFrames, int from, int to) {
+    public void skinDeformations(JointPalette palette, float[] outDeformations, int from, int to) {
         float[] f = frames.get();
-        positionKernel.skinFrames(palette, f, 0, positionCount);
+        positionKernel.skinDeformations(palette, f, 0, positionCount);
         for (int i = from; i < to; i++) {
-            System.arraycopy(f, FRAME_FLOATS * frameOfPoint[i], outFrames, FRAME_FLOATS * i, FRAME_FLOATS);
+            System.arraycopy(f, DEFORMATION_FLOATS * deformationOfPoint[i], outDeformations, DEFORMATION_FLOATS * i, DEFORMATION_FLOATS);
         }
     }
 }

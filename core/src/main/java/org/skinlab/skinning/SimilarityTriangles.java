@@ -3,7 +3,7 @@ package org.skinlab.skinning;
 import java.util.Arrays;
 
 /**
- * The rest-pose surface over which {@link CentersOfRotation} integrates weight similarity: per
+ * The rest-pose surface over which {@link CentresOfRotation} integrates weight similarity: per
  * triangle its corners, area, the joints any corner weights (its support) with each corner's
  * weight on them, and how finely it is integrated.
  *

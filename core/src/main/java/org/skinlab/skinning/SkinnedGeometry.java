@@ -44,8 +44,8 @@ import org.skinlab.model.Skin;
  * differ (the thesis' cowboy has 740 positions in 4252 vertices). When points share positions,
  * {@link #sharedPositions()} is a second geometry whose points are the mesh's positions (in source
  * order, normals zero); a skinner may then deform those once into per-position frames
- * ({@link Skinner#skinFrames}) and derive every point from the frame of its position
- * ({@link #frameOfPointArray()}) and its own rest normal. Whether that pays depends on the method
+ * ({@link Skinner#skinDeformations}) and derive every point from the frame of its position
+ * ({@link #deformationOfPointArray()}) and its own rest normal. Whether that pays depends on the method
  * and is decided where skinners are made ({@link Skinners}). Either way the points, their order
  * and the arrays below stay the same for callers.
  */
@@ -62,15 +62,15 @@ public final class SkinnedGeometry {
     private final float[] bindMatrices;
     private final int[] pointOfPosition;
     /** Per point, its position in {@link #sharedPositions}; null when points are skinned one by one. */
-    private final int[] frameOfPoint;
+    private final int[] deformationOfPoint;
     private final SkinnedGeometry sharedPositions;
     private final boolean windingMirrored;
     /** Per palette joint, the palette joint of its nearest ancestor node that is one, else -1. */
     private final int[] jointParents;
     /** The bone methods' segments, computed on first request ({@link Bones}). */
     private volatile Bones bones;
-    /** CoR skinning's centres, computed on first request (CentersOfRotation). */
-    private volatile float[] centersOfRotation;
+    /** CoR skinning's centres, computed on first request (CentresOfRotation). */
+    private volatile float[] centresOfRotation;
     /**
      * For a {@link #sharedPositions()} geometry, the geometry whose positions it holds: its centres
      * come from there, since its mesh's triangles index that geometry's points, not its own. Set
@@ -90,7 +90,7 @@ public final class SkinnedGeometry {
 
     private SkinnedGeometry(MeshInstance instance, int vertexCount, float[] positions, float[] normals,
             int influences, int[] joints, float[] weights, int[] jointNodes, float[] bindMatrices,
-            int[] pointOfPosition, int[] frameOfPoint, SkinnedGeometry sharedPositions, boolean windingMirrored,
+            int[] pointOfPosition, int[] deformationOfPoint, SkinnedGeometry sharedPositions, boolean windingMirrored,
             int[] jointParents) {
         if (jointParents.length != jointNodes.length) {
             throw new IllegalArgumentException("need one parent per palette joint");
@@ -107,7 +107,7 @@ public final class SkinnedGeometry {
         this.jointNodes = jointNodes;
         this.bindMatrices = bindMatrices;
         this.pointOfPosition = pointOfPosition;
-        this.frameOfPoint = frameOfPoint;
+        this.deformationOfPoint = deformationOfPoint;
         this.sharedPositions = sharedPositions;
         if (sharedPositions != null) {
             sharedPositions.positionsOf = this;
@@ -509,28 +509,28 @@ public final class SkinnedGeometry {
      * Per point, the point of {@link #sharedPositions()} whose frame it takes its position and
      * normal matrix from; null when positions are not shared. Read-only.
      */
-    public int[] frameOfPointArray() {
-        return frameOfPoint;
+    public int[] deformationOfPointArray() {
+        return deformationOfPoint;
     }
 
     /**
      * The centre of rotation of every point (3 floats per point, bind space) for CoR skinning,
-     * computed on the first call ({@link CentersOfRotation} with the paper's parameters, in parallel; read from
+     * computed on the first call ({@link CentresOfRotation} with the paper's parameters, in parallel; read from
      * its disk cache when one is set) and kept.
      * Read-only.
      */
-    public float[] centersOfRotation() {
-        float[] c = centersOfRotation;
+    public float[] centresOfRotation() {
+        float[] c = centresOfRotation;
         if (c == null) {
             synchronized (this) {
-                c = centersOfRotation;
+                c = centresOfRotation;
                 if (c == null) {
                     SkinnedGeometry rest = centresOfRestShape;
-                    c = rest != null ? rest.centersOfRotation()
+                    c = rest != null ? rest.centresOfRotation()
                             : positionsOf != null ? positionsOf.centresOfSharedPositions()
-                            : CentersOfRotation.computeOrLoad(this, CentersOfRotation.Parameters.DEFAULT,
-                                    CentersOfRotation.Progress.NONE);
-                    centersOfRotation = c;
+                            : CentresOfRotation.computeOrLoad(this, CentresOfRotation.Parameters.DEFAULT,
+                                    CentresOfRotation.Progress.NONE);
+                    centresOfRotation = c;
                 }
             }
         }
@@ -548,14 +548,14 @@ public final class SkinnedGeometry {
 
     /**
      * The centres of {@link #sharedPositions()}' points, one per position: every point carrying a
-     * position has that position's centre ({@link CentersOfRotation#compute}); a position no point
+     * position has that position's centre ({@link CentresOfRotation#compute}); a position no point
      * carries keeps itself.
      */
     private float[] centresOfSharedPositions() {
-        float[] perPoint = centersOfRotation();
+        float[] perPoint = centresOfRotation();
         float[] perPosition = sharedPositions.positionArray().clone();
         for (int i = 0; i < pointCount; i++) {
-            System.arraycopy(perPoint, 3 * i, perPosition, 3 * frameOfPoint[i], 3);
+            System.arraycopy(perPoint, 3 * i, perPosition, 3 * deformationOfPoint[i], 3);
         }
         return perPosition;
     }

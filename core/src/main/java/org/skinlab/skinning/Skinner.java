@@ -20,12 +20,12 @@ public interface Skinner {
      */
     void skin(JointPalette palette, float[] outPositions, float[] outNormals, int from, int to);
 
-    /** Floats per point written by {@link #skinFrames}. */
-    int FRAME_FLOATS = 16;
+    /** Floats per point written by {@link #skinDeformations}. */
+    int DEFORMATION_FLOATS = 16;
 
     /**
      * Deforms points {@code [from, to)} into <em>frames</em>, from which any number of render
-     * vertices sharing a point's position are derived ({@link FrameExpansion}): per point 16 floats
+     * vertices sharing a point's position are derived ({@link DeformationExpansion}): per point 16 floats
      * at {@code 16 * point}, the columns of the normal matrix N and the deformed position p, each
      * padded to four: {@code N00 N10 N20 0, N01 N11 N21 0, px py pz 0, N02 N12 N22 0} (p before N's
      * last column so that a vector expansion stores it straight from the loaded half). A rest normal
@@ -34,7 +34,7 @@ public interface Skinner {
      * of the blended linear part times the sign of its determinant, so a mirroring transform keeps
      * normals outward; the geometry's normals are not read. Same threading rules as {@link #skin}.
      */
-    void skinFrames(JointPalette palette, float[] outFrames, int from, int to);
+    void skinDeformations(JointPalette palette, float[] outDeformations, int from, int to);
 
     /**
      * Ranges handed to {@link #skin} by a splitter should start at multiples of this (a SIMD

@@ -13,10 +13,10 @@ public interface SkinnerProvider {
     Skinner create(SkinningMethod method, SkinnedGeometry geometry, NormalTransform normals);
 
     /**
-     * A faster {@link FrameExpansion} than the scalar one for this mapping and these rest normals
-     * (see {@link FrameExpansion#scalar}), or null.
+     * A faster {@link DeformationExpansion} than the scalar one for this mapping and these rest normals
+     * (see {@link DeformationExpansion#scalar}), or null.
      */
-    default FrameExpansion frameExpansion(int[] frameOfPoint, float[] restNormals) {
+    default DeformationExpansion deformationExpansion(int[] deformationOfPoint, float[] restNormals) {
         return null;
     }
 }

@@ -31,7 +31,7 @@ public final class Skinners {
     /**
      * The fastest skinner available for the geometry; for one that shares positions
      * ({@link SkinnedGeometry#sharedPositions()}) the fastest kernel on its positions and the fastest
-     * {@link FrameExpansion}.
+     * {@link DeformationExpansion}.
      */
     public static Skinner create(SkinningMethod method, SkinnedGeometry geometry, NormalTransform normals) {
         return create(method, geometry, normals, PositionSharing.AUTO);
@@ -43,7 +43,7 @@ public final class Skinners {
         SkinnedGeometry shared = shared(method, geometry, sharing);
         if (shared != null) {
             return new SharedPositionSkinner(geometry, create(method, shared, normals), expansion(
-                    geometry.frameOfPointArray(), SharedPositionSkinner.expansionNormals(method, normals, geometry)));
+                    geometry.deformationOfPointArray(), SharedPositionSkinner.expansionNormals(method, normals, geometry)));
         }
         for (SkinnerProvider p : PROVIDERS) {
             Skinner s;
@@ -74,12 +74,12 @@ public final class Skinners {
         return skinner instanceof SharedPositionSkinner;
     }
 
-    /** The fastest {@link FrameExpansion} available for a mapping and rest normals. */
-    public static FrameExpansion expansion(int[] frameOfPoint, float[] restNormals) {
+    /** The fastest {@link DeformationExpansion} available for a mapping and rest normals. */
+    public static DeformationExpansion expansion(int[] deformationOfPoint, float[] restNormals) {
         for (SkinnerProvider p : PROVIDERS) {
-            FrameExpansion e;
+            DeformationExpansion e;
             try {
-                e = p.frameExpansion(frameOfPoint, restNormals);
+                e = p.deformationExpansion(deformationOfPoint, restNormals);
             } catch (LinkageError err) {
                 continue;
             }
@@ -87,7 +87,7 @@ public final class Skinners {
                 return e;
             }
         }
-        return FrameExpansion.scalar(frameOfPoint, restNormals);
+        return DeformationExpansion.scalar(deformationOfPoint, restNormals);
     }
 
     /** The fastest skinner with exact normals ({@link NormalTransform#INVERSE_TRANSPOSE}). */
@@ -108,8 +108,8 @@ public final class Skinners {
             PositionSharing sharing) {
         SkinnedGeometry shared = shared(method, geometry, sharing);
         if (shared != null) {
-            return new SharedPositionSkinner(geometry, scalar(method, shared, normals), FrameExpansion.scalar(
-                    geometry.frameOfPointArray(), SharedPositionSkinner.expansionNormals(method, normals, geometry)));
+            return new SharedPositionSkinner(geometry, scalar(method, shared, normals), DeformationExpansion.scalar(
+                    geometry.deformationOfPointArray(), SharedPositionSkinner.expansionNormals(method, normals, geometry)));
         }
         switch (method) {
             case LBS:

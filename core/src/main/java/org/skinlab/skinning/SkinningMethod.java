@@ -13,7 +13,7 @@ public enum SkinningMethod {
     /**
      * Skinning with optimized centres of rotation (Le and Hodgins 2016): the rotations blended as
      * in DQS, the translation LBS's at a per-point centre of rotation precomputed from the weights
-     * ({@link CentersOfRotation}); see {@link ScalarCorSkinner}.
+     * ({@link CentresOfRotation}); see {@link ScalarCorSkinner}.
      */
     COR,
     /**

@@ -123,11 +123,11 @@ class BulgeFreeDqsTest {
         Skinner scalar = new ScalarBulgeFreeDqsSkinner(g, NormalTransform.INVERSE_TRANSPOSE);
         float[] positions = new float[3 * g.pointCount()];
         scalar.skinAll(palette, positions, new float[positions.length]);
-        float[] frames = new float[Skinner.FRAME_FLOATS * g.pointCount()];
-        scalar.skinFrames(palette, frames, 0, g.pointCount());
+        float[] frames = new float[Skinner.DEFORMATION_FLOATS * g.pointCount()];
+        scalar.skinDeformations(palette, frames, 0, g.pointCount());
         for (int i = 0; i < g.pointCount(); i++) {
             for (int a = 0; a < 3; a++) {
-                assertEquals(positions[3 * i + a], frames[Skinner.FRAME_FLOATS * i + 8 + a], "point " + i);
+                assertEquals(positions[3 * i + a], frames[Skinner.DEFORMATION_FLOATS * i + 8 + a], "point " + i);
             }
         }
     }

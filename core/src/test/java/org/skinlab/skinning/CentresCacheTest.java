@@ -31,44 +31,44 @@ class CentresCacheTest {
     @Test
     void theSecondLoadReadsTheFirstsCentres(@TempDir Path dir) throws Exception {
         SkinnedGeometry g = geometry("cylinders/cylinder-bend.dae");
-        float[] computed = CentersOfRotation.compute(g, CentersOfRotation.Parameters.DEFAULT, CentersOfRotation.Progress.NONE);
-        String key = CentresCache.key(g, CentersOfRotation.Parameters.DEFAULT);
+        float[] computed = CentresOfRotation.compute(g, CentresOfRotation.Parameters.DEFAULT, CentresOfRotation.Progress.NONE);
+        String key = CentresCache.key(g, CentresOfRotation.Parameters.DEFAULT);
         assertEquals(null, CentresCache.load(dir, key, computed.length));
         CentresCache.store(dir, key, computed);
         assertEquals(List.of(dir.resolve(key + ".cor")), entries(dir), "one file, no temporary left");
         assertArrayEquals(computed, CentresCache.load(dir, key, computed.length));
         // Another sigma or epsilon, or another geometry, is another entry; the twist cylinder is the bend
         // cylinder's mesh and weights with another animation: the same entry serves both.
-        assertNotEquals(key, CentresCache.key(g, new CentersOfRotation.Parameters(0.2, 0.1)));
-        assertNotEquals(key, CentresCache.key(g, new CentersOfRotation.Parameters(0.1, 0.05)));
-        assertNotEquals(key, CentresCache.key(geometry("cylinders/cylinder-twist-low.dae"), CentersOfRotation.Parameters.DEFAULT));
-        assertEquals(key, CentresCache.key(geometry("cylinders/cylinder-twist-high.dae"), CentersOfRotation.Parameters.DEFAULT));
+        assertNotEquals(key, CentresCache.key(g, new CentresOfRotation.Parameters(0.2, 0.1)));
+        assertNotEquals(key, CentresCache.key(g, new CentresOfRotation.Parameters(0.1, 0.05)));
+        assertNotEquals(key, CentresCache.key(geometry("cylinders/cylinder-twist-low.dae"), CentresOfRotation.Parameters.DEFAULT));
+        assertEquals(key, CentresCache.key(geometry("cylinders/cylinder-twist-high.dae"), CentresOfRotation.Parameters.DEFAULT));
     }
 
     @Test
     void computeOrLoadUsesTheCacheDirectory(@TempDir Path dir) throws Exception {
         SkinnedGeometry g = geometry("cylinders/cylinder-twist-low.dae");
-        Path before = CentersOfRotation.cacheDirectory();
-        CentersOfRotation.setCacheDirectory(dir.resolve("cache"));
+        Path before = CentresOfRotation.cacheDirectory();
+        CentresOfRotation.setCacheDirectory(dir.resolve("cache"));
         try {
             AtomicInteger calls = new AtomicInteger();
-            float[] first = CentersOfRotation.computeOrLoad(g, CentersOfRotation.Parameters.DEFAULT, (done, total) -> calls.incrementAndGet());
+            float[] first = CentresOfRotation.computeOrLoad(g, CentresOfRotation.Parameters.DEFAULT, (done, total) -> calls.incrementAndGet());
             int computingCalls = calls.get();
             assertTrue(computingCalls >= 1);
             assertEquals(1, entries(dir.resolve("cache")).size());
             calls.set(0);
-            float[] second = CentersOfRotation.computeOrLoad(g, CentersOfRotation.Parameters.DEFAULT, (done, total) -> calls.incrementAndGet());
+            float[] second = CentresOfRotation.computeOrLoad(g, CentresOfRotation.Parameters.DEFAULT, (done, total) -> calls.incrementAndGet());
             assertArrayEquals(first, second);
             assertEquals(1, calls.get(), "a load reports itself done at once");
         } finally {
-            CentersOfRotation.setCacheDirectory(before);
+            CentresOfRotation.setCacheDirectory(before);
         }
     }
 
     @Test
     void aDamagedEntryIsPassedBy(@TempDir Path dir) throws Exception {
         SkinnedGeometry g = geometry("cylinders/cylinder-twist-low.dae");
-        String key = CentresCache.key(g, CentersOfRotation.Parameters.DEFAULT);
+        String key = CentresCache.key(g, CentresOfRotation.Parameters.DEFAULT);
         int floats = 3 * g.pointCount();
         Files.write(dir.resolve(key + ".cor"), new byte[12 + 4 * floats]); // right size, wrong header
         assertEquals(null, CentresCache.load(dir, key, floats));

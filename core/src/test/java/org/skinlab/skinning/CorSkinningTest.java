@@ -78,7 +78,7 @@ class CorSkinningTest {
     private static void assertMatchesReference(String asset, float time) throws Exception {
         Posed p = new Posed(asset, time);
         float[] cor = p.skin(SkinningMethod.COR);
-        float[] centres = p.g.centersOfRotation();
+        float[] centres = p.g.centresOfRotation();
         for (int i = 0; i < p.g.vertexCount(); i++) {
             double[] r = reference(p.g, p.skinned.palette(0).matrices(), centres, i);
             for (int d = 0; d < 3; d++) {

@@ -12,7 +12,7 @@ import org.junit.jupiter.api.Test;
 
 /**
  * {@link NormalTransform#INVERSE_TRANSPOSE} in the scalar kernels (directly and through
- * {@link Skinner#skinFrames} and {@link FrameExpansion}) against JOML's own
+ * {@link Skinner#skinDeformations} and {@link DeformationExpansion}) against JOML's own
  * {@code invert().transpose()} of the joint matrix (an independent computation), on a single joint
  * that rotates and scales non-uniformly, so that the inverse-transpose, the inverse and the matrix
  * itself all move a normal differently. Tolerance 1e-5: a handful of float operations on unit
@@ -100,15 +100,15 @@ class InverseTransposeNormalsTest {
         float[] n = new float[NORMALS.length];
         k.skinAll(palette, p, n);
         int points = g.pointCount();
-        float[] frames = new float[Skinner.FRAME_FLOATS * points];
-        k.skinFrames(palette, frames, 0, points);
+        float[] frames = new float[Skinner.DEFORMATION_FLOATS * points];
+        k.skinDeformations(palette, frames, 0, points);
         int[] identity = new int[points];
         for (int i = 0; i < points; i++) {
             identity[i] = i;
         }
         float[] p2 = new float[NORMALS.length];
         float[] n2 = new float[NORMALS.length];
-        FrameExpansion.scalar(identity, g.normalArray()).expand(frames, p2, n2, 0, points, true);
+        DeformationExpansion.scalar(identity, g.normalArray()).expand(frames, p2, n2, 0, points, true);
         for (int i = 0; i < NORMALS.length; i++) {
             assertEquals(p[i], p2[i], 1e-5f, method + ": position float " + i + " by frames");
             assertEquals(n[i], n2[i], 1e-5f, method + ": normal float " + i + " by frames");

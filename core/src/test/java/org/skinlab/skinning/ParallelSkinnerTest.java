@@ -117,7 +117,7 @@ class ParallelSkinnerTest {
         }
 
         @Override
-        public void skinFrames(JointPalette palette, float[] outFrames, int from, int to) {
+        public void skinDeformations(JointPalette palette, float[] outDeformations, int from, int to) {
             frameRanges.add(new int[] {from, to});
         }
 
@@ -137,9 +137,9 @@ class ParallelSkinnerTest {
         SkinnedGeometry g = geometry(10);
         Recorder k = new Recorder(g, 8);
         try (ParallelSkinner parallel = new ParallelSkinner(k, 2)) {
-            parallel.skinFrames(null, null, 3, 99_997);
+            parallel.skinDeformations(null, null, 3, 99_997);
         }
-        assertTrue(k.ranges.isEmpty(), "skinFrames must not call skin");
+        assertTrue(k.ranges.isEmpty(), "skinDeformations must not call skin");
         assertTrue(k.frameRanges.size() > 1, "the range is split");
         List<int[]> sorted = new ArrayList<>(k.frameRanges);
         sorted.sort((a, b) -> Integer.compare(a[0], b[0]));

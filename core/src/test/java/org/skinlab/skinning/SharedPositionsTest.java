@@ -17,8 +17,8 @@ import org.skinlab.model.Model;
 import org.skinlab.testing.TestPaths;
 
 /**
- * Skinning each position once ({@link SkinnedGeometry#sharedPositions()}, {@link Skinner#skinFrames},
- * {@link FrameExpansion}) against skinning every point on its own with the same scalar kernel, on
+ * Skinning each position once ({@link SkinnedGeometry#sharedPositions()}, {@link Skinner#skinDeformations},
+ * {@link DeformationExpansion}) against skinning every point on its own with the same scalar kernel, on
  * the thesis' cowboy (740 positions in 4252 render vertices, 6 influences, flat-shaded) at five
  * times of its clip. Tolerance 1e-5 of the model's extent on positions and 1e-5 on unit normals:
  * the same float operations, except that a normal goes through a stored matrix (one more rounding
@@ -52,11 +52,11 @@ class SharedPositionsTest {
         Path file = TestPaths.corpusFileOrSkip("S01_cowboy.dae");
         SkinnedGeometry g = SkinnedModel.of(ColladaImporter.read(file)).geometries().get(0);
         SkinnedGeometry shared = g.sharedPositions();
-        float[] perPosition = shared.centersOfRotation();
-        float[] perPoint = g.centersOfRotation();
+        float[] perPosition = shared.centresOfRotation();
+        float[] perPoint = g.centresOfRotation();
         int moved = 0;
         for (int i = 0; i < g.pointCount(); i++) {
-            int f = g.frameOfPointArray()[i];
+            int f = g.deformationOfPointArray()[i];
             for (int c = 0; c < 3; c++) {
                 assertEquals(perPoint[3 * i + c], perPosition[3 * f + c], 0f, "point " + i);
             }
@@ -81,7 +81,7 @@ class SharedPositionsTest {
         SkinnedGeometry g = SkinnedGeometry.fromArrays(new float[6], new float[6], 1, new int[2], new float[] {1, 1},
                 new float[16]);
         assertNull(g.sharedPositions());
-        assertNull(g.frameOfPointArray());
+        assertNull(g.deformationOfPointArray());
     }
 
     @Test
@@ -103,7 +103,7 @@ class SharedPositionsTest {
         assertEquals(4252, g.pointCount());
         assertEquals(740, shared.pointCount());
         for (int i = 0; i < g.pointCount(); i++) {
-            int f = g.frameOfPointArray()[i];
+            int f = g.deformationOfPointArray()[i];
             for (int c = 0; c < 3; c++) {
                 assertEquals(g.positionArray()[3 * i + c], shared.positionArray()[3 * f + c], "point " + i);
             }

@@ -4,7 +4,7 @@ import java.nio.file.Path;
 import java.util.Locale;
 
 import org.skinlab.desktop.cli.SkinlabCommand;
-import org.skinlab.skinning.CentersOfRotation;
+import org.skinlab.skinning.CentresOfRotation;
 
 /** Entry point of the {@code skinlab} application. */
 public final class SkinlabMain {
@@ -12,7 +12,7 @@ public final class SkinlabMain {
     }
 
     public static void main(String[] args) {
-        CentersOfRotation.setCacheDirectory(cacheDirectory());
+        CentresOfRotation.setCacheDirectory(cacheDirectory());
         System.exit(SkinlabCommand.run(args));
     }
 

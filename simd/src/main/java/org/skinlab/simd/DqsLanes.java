@@ -140,7 +140,7 @@ final class DqsLanes {
 
     /**
      * Per point of blocks {@code [firstBlock, endBlock)}: the blended dual quaternion of the
-     * scratch, normalised, as the point's frame ({@link org.skinlab.skinning.Skinner#skinFrames}):
+     * scratch, normalised, as the point's frame ({@link org.skinlab.skinning.Skinner#skinDeformations}):
      * the rotation R as N's columns and the deformed position {@code p' = R p + t}, with R from the
      * rotation quaternion and t = 2 (w d - d_w r + r x d), into {@code out} at
      * {@code 16 (point - outFirstPoint)}. The eight lane vectors of each half of the record are

@@ -16,7 +16,7 @@ import org.skinlab.skinning.Skinner;
  * over the 8 lanes as two vectors {@code [c0 | c1]}, {@code [c2 | c3]} (columns, c3 the
  * translation, row 3 zero): the blend of any number of influences, composing with a rigid
  * matrix, and applying the result to a point (positions and normals, or a frame record of
- * {@link Skinner#skinFrames}). Passes meet in a small scratch of {@link #CHUNK} matrices (16 floats
+ * {@link Skinner#skinDeformations}). Passes meet in a small scratch of {@link #CHUNK} matrices (16 floats
  * each) that stays in L1.
  *
  * <p><b>Sign of a determinant</b> (exact normals): {@code clamp(d * 1e30, -1, 1)}, two lane-wise
@@ -206,7 +206,7 @@ final class MatrixPasses {
     /**
      * {@code acc_l = D_l acc_l} for {@code l < count}: each scratch matrix composed with the rigid
      * motion {@code D = [R | t]} of the frame at the same place in {@code rigid} (frame records of
-     * points {@code firstPoint + l}, as {@link Skinner#skinFrames} lays them out, N = R), t
+     * points {@code firstPoint + l}, as {@link Skinner#skinDeformations} lays them out, N = R), t
      * recovered as {@code p' - R p} from the frame's position and the point's rest position.
      * Column c of the product is {@code R s_c} (plus {@code t} for the translation column).
      */
@@ -240,7 +240,7 @@ final class MatrixPasses {
     }
 
     /**
-     * Frame records ({@link Skinner#skinFrames}) of points {@code [from, to)} from their matrices in
+     * Frame records ({@link Skinner#skinDeformations}) of points {@code [from, to)} from their matrices in
      * {@code acc} (from 0): the deformed position and, with {@code cofactor}, the matrix's cofactor
      * (times the sign of its determinant when {@code signed}: the palette mirrors), else its linear
      * part.
@@ -258,7 +258,7 @@ final class MatrixPasses {
             FloatVector pz1 = FloatVector.broadcast(S, positions[v + 2]).blend(one, HI);
             FloatVector p = a.mul(pxy).add(b.mul(pz1));
             p = p.add(p.rearrange(SWAP)); // the position in both halves
-            int f = Skinner.FRAME_FLOATS * i;
+            int f = Skinner.DEFORMATION_FLOATS * i;
             if (cofactor) {
                 // [c1 | c2] x [c2 | c0] = [c1 x c2 | c2 x c0]; [c0 | c1] x [c1 | c0] = [c0 x c1 | ...]
                 FloatVector aSwap = a.rearrange(SWAP);

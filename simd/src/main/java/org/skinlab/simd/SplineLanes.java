@@ -453,7 +453,7 @@ final class SplineLanes {
     }
 
     /**
-     * The sums as frame records ({@code Skinner#skinFrames}: the columns of N, then p, then N's
+     * The sums as frame records ({@code Skinner#skinDeformations}: the columns of N, then p, then N's
      * last column, each padded to four), 16 floats per point from {@code o}; plain stores.
      */
     static void storeFrames(float[] acc, float[] out, int o) {

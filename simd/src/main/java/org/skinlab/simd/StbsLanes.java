@@ -320,16 +320,16 @@ final class StbsLanes {
     }
 
     /**
-     * Block b's frame records ({@link org.skinlab.skinning.Skinner#skinFrames}) on LBS: the blend
+     * Block b's frame records ({@link org.skinlab.skinning.Skinner#skinDeformations}) on LBS: the blend
      * as in {@link #linear}, N its linear part's cofactor (unsigned, as the scalar kernel: a blend
      * of rotations turns no normal inwards unless it degenerates) or that part itself, 16 lane
      * vectors into {@code f} (128 floats), transposed into the points' records at {@code 128 b}.
      */
     static void linearFrames(float[] s, int o, float[] weights, float[] blk, int b, int width, int active,
-            boolean exact, float[] f, float[] outFrames) {
+            boolean exact, float[] f, float[] outDeformations) {
         linearBlend(s, o, weights, b, width, active);
         linearFrameLanes(s, o, blk, b, exact, f);
-        storeFrames(f, outFrames, 128 * b);
+        storeFrames(f, outDeformations, 128 * b);
     }
 
     /** The record's 16 fields as lane vectors, field c at {@code f[8 c ..]} (fields 3, 7, 11, 15 zero). */
@@ -397,9 +397,9 @@ final class StbsLanes {
      * normalises it and writes N = its rotation and p' = R p + t at {@code 128 b}.
      */
     static void dualQuaternionFrames(float[] s, float[] weights, float[] blk, int b, int width, int active, float[] f,
-            float[] outFrames) {
+            float[] outDeformations) {
         dualQuaternionBlend(s, f, 0, weights, b, width, active);
-        DqsLanes.rigidFrames(f, blk, outFrames, b, b + 1, 0);
+        DqsLanes.rigidFrames(f, blk, outDeformations, b, b + 1, 0);
     }
 
     /** The blend of the influences in {@code s} into {@code d[o ..]}: real part, then dual part, 4 lane vectors each. */

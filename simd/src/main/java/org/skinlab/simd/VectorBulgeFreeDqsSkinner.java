@@ -135,9 +135,9 @@ final class VectorBulgeFreeDqsSkinner extends AbstractSkinner {
     }
 
     @Override
-    public void skinFrames(JointPalette palette, float[] outFrames, int from, int to) {
-        dqs.skinFrames(palette, outFrames, from, to);
-        pull(palette, outFrames, Skinner.FRAME_FLOATS, 8, from, to);
+    public void skinDeformations(JointPalette palette, float[] outDeformations, int from, int to) {
+        dqs.skinDeformations(palette, outDeformations, from, to);
+        pull(palette, outDeformations, Skinner.DEFORMATION_FLOATS, 8, from, to);
     }
 
     /** Pulls points [from, to) whose DQS positions sit at {@code stride * i + offset}. */

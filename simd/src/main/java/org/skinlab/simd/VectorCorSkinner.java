@@ -25,7 +25,7 @@ import org.skinlab.skinning.SkinningMethod;
  * lane vectors.
  *
  * <p><b>Finish.</b> {@link #skin}: {@link CorLanes#applyAndStore} rotates and translates in lanes
- * and interleaves the results. {@link #skinFrames} (the route of position sharing):
+ * and interleaves the results. {@link #skinDeformations} (the route of position sharing):
  * {@link CorLanes#asDualQuaternions} writes each point's motion {@code p -> R p + (A c - R c)} as
  * a dual quaternion into the DQS kernel's scratch layout, and {@link DqsLanes#rigidFrames} turns
  * those into frame records.
@@ -62,7 +62,7 @@ final class VectorCorSkinner extends AbstractSkinner {
         this.scalar = new ScalarCorSkinner(geometry, normals);
         this.blend = new SignedDqBlend(geometry);
         this.jointCount = geometry.jointCount();
-        float[] centres = geometry.centersOfRotation();
+        float[] centres = geometry.centresOfRotation();
         blockCount = geometry.pointCount() / BLOCK;
         points = new float[DqsLanes.BLOCK_FLOATS * blockCount];
         centreLanes = new float[3 * BLOCK * blockCount];
@@ -132,15 +132,15 @@ final class VectorCorSkinner extends AbstractSkinner {
     }
 
     @Override
-    public void skinFrames(JointPalette palette, float[] outFrames, int from, int to) {
+    public void skinDeformations(JointPalette palette, float[] outDeformations, int from, int to) {
         checkPalette(palette);
         int firstBlock = (from + BLOCK - 1) / BLOCK;
         int endBlock = Math.min(to / BLOCK, blockCount);
         if (palette.hasScale() || firstBlock >= endBlock) {
-            scalar.skinFrames(palette, outFrames, from, to);
+            scalar.skinDeformations(palette, outDeformations, from, to);
             return;
         }
-        scalar.skinFrames(palette, outFrames, from, BLOCK * firstBlock);
+        scalar.skinDeformations(palette, outDeformations, from, BLOCK * firstBlock);
         float[] tab = rotationTable(palette);
         float[] rows = lowerRows(palette.matrices());
         float[] lanesA = firstLanes.get();
@@ -149,9 +149,9 @@ final class VectorCorSkinner extends AbstractSkinner {
             int e = Math.min(endBlock, b + CHUNK);
             blendLanes(tab, rows, lanesA, lanesB, b, e);
             CorLanes.asDualQuaternions(lanesA, lanesB, centreLanes, b, e);
-            DqsLanes.rigidFrames(lanesA, points, outFrames, b, e, 0);
+            DqsLanes.rigidFrames(lanesA, points, outDeformations, b, e, 0);
         }
-        scalar.skinFrames(palette, outFrames, BLOCK * endBlock, to);
+        scalar.skinDeformations(palette, outDeformations, BLOCK * endBlock, to);
     }
 
     /** Blocks {@code [b, e)}: the two blends of each point, transposed into lane vectors. */

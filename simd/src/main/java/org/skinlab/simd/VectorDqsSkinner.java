@@ -38,7 +38,7 @@ import org.skinlab.skinning.SkinningMethod;
  * composed with the point's blended scale part and applied like an LBS matrix
  * ({@link MatrixPasses}): the two-phase split of the scalar kernel, {@code D (S p)}, with normals
  * by {@code R} times S's signed cofactor. Without scale both {@link NormalTransform}s rotate the
- * normal; INVERSE_TRANSPOSE then scales it to unit length. {@link #skinFrames} takes the matrix route always.
+ * normal; INVERSE_TRANSPOSE then scales it to unit length. {@link #skinDeformations} takes the matrix route always.
  *
  * <p><b>Influences.</b> Any number: written-out blends for up to 4, 6 and 8, then one scratch pass
  * per influence beyond the eighth.
@@ -123,7 +123,7 @@ final class VectorDqsSkinner extends AbstractSkinner {
         float[] s = scratch.get();
         if (palette.hasScale()) {
             // Two phases per point, as a matrix: the rigid part of the blended dual quaternion
-            // times the blended scale part, then applied like an LBS matrix (see skinFrames).
+            // times the blended scale part, then applied like an LBS matrix (see skinDeformations).
             float[] cs = scaleColumns(palette);
             float[] r = rigid.get();
             float[] acc = blended.get();
@@ -158,21 +158,21 @@ final class VectorDqsSkinner extends AbstractSkinner {
     }
 
     /**
-     * Frames of points {@code [from, to)}: per point the rigid matrix of its blended dual
+     * Deformations of points {@code [from, to)}: per point the rigid matrix of its blended dual
      * quaternion ({@link DqsLanes#rigidFrames}), composed with its blended scale part when the palette
      * has one, then applied to the rest position; N is the rotation, or the rotation times the
      * scale part's signed cofactor (exact rule) or linear part.
      */
     @Override
-    public void skinFrames(JointPalette palette, float[] outFrames, int from, int to) {
+    public void skinDeformations(JointPalette palette, float[] outDeformations, int from, int to) {
         checkPalette(palette);
         int firstBlock = (from + BLOCK - 1) / BLOCK;
         int endBlock = Math.min(to / BLOCK, blockCount);
         if (firstBlock >= endBlock) {
-            scalar.skinFrames(palette, outFrames, from, to);
+            scalar.skinDeformations(palette, outDeformations, from, to);
             return;
         }
-        scalar.skinFrames(palette, outFrames, from, BLOCK * firstBlock);
+        scalar.skinDeformations(palette, outDeformations, from, BLOCK * firstBlock);
         float[] dq = palette.dualQuaternions();
         float[] tab = blend.signedPairs(dq);
         float[] s = scratch.get();
@@ -192,12 +192,12 @@ final class VectorDqsSkinner extends AbstractSkinner {
                 DqsLanes.rigidFrames(s, points, r, b, e, p0);
                 MatrixPasses.blend(cs, blend.passJoints, blend.passWeights, blend.passWidth, p0, p1, acc);
                 MatrixPasses.compose(r, restPositions, p0, acc, p1 - p0);
-                MatrixPasses.frames(acc, restPositions, exact, mirror, outFrames, p0, p1);
+                MatrixPasses.frames(acc, restPositions, exact, mirror, outDeformations, p0, p1);
             } else {
-                DqsLanes.rigidFrames(s, points, outFrames, b, e, 0);
+                DqsLanes.rigidFrames(s, points, outDeformations, b, e, 0);
             }
         }
-        scalar.skinFrames(palette, outFrames, BLOCK * endBlock, to);
+        scalar.skinDeformations(palette, outDeformations, BLOCK * endBlock, to);
     }
 
     private void checkPalette(JointPalette palette) {

@@ -2,7 +2,7 @@ package org.skinlab.simd;
 
 import jdk.incubator.vector.FloatVector;
 
-import org.skinlab.skinning.FrameExpansion;
+import org.skinlab.skinning.DeformationExpansion;
 import org.skinlab.skinning.NormalTransform;
 import org.skinlab.skinning.SkinnedGeometry;
 import org.skinlab.skinning.Skinner;
@@ -21,8 +21,8 @@ final class VectorKernels {
         return FloatVector.SPECIES_PREFERRED.vectorBitSize() >= Lanes.S.vectorBitSize();
     }
 
-    static FrameExpansion frameExpansion(int[] frameOfPoint, float[] restNormals) {
-        return new VectorFrameExpansion(frameOfPoint, restNormals);
+    static DeformationExpansion deformationExpansion(int[] deformationOfPoint, float[] restNormals) {
+        return new VectorDeformationExpansion(deformationOfPoint, restNormals);
     }
 
     static Skinner create(SkinningMethod method, SkinnedGeometry geometry, NormalTransform normals) {

@@ -37,7 +37,7 @@ import org.skinlab.skinning.SkinningMethod;
  * the results do not depend on how a mesh is split into ranges).
  *
  * <p>Geometries with up to 4 influences per point are padded to 4 with weight 0 and take the
- * fused loops below; more influences, and {@link #skinFrames}, go through {@link MatrixPasses}
+ * fused loops below; more influences, and {@link #skinDeformations}, go through {@link MatrixPasses}
  * (a blend pass written out for 4 or 8 influences, then the application to the points).
  *
  * <p>When the palette mirrors ({@link JointPalette#mirrorsMatrices()}), exact normals carry the sign
@@ -134,7 +134,7 @@ final class VectorLbsSkinner extends AbstractSkinner {
     }
 
     @Override
-    public void skinFrames(JointPalette palette, float[] outFrames, int from, int to) {
+    public void skinDeformations(JointPalette palette, float[] outDeformations, int from, int to) {
         float[] c = columnMajor(palette);
         float[] acc = scratch.get();
         boolean cofactor = normals == NormalTransform.INVERSE_TRANSPOSE;
@@ -142,7 +142,7 @@ final class VectorLbsSkinner extends AbstractSkinner {
         for (int s = from; s < to; s += MatrixPasses.CHUNK) {
             int e = Math.min(to, s + MatrixPasses.CHUNK);
             blend(c, s, e, acc);
-            MatrixPasses.frames(acc, restPositions, cofactor, mirror, outFrames, s, e);
+            MatrixPasses.frames(acc, restPositions, cofactor, mirror, outDeformations, s, e);
         }
     }
 

@@ -1,6 +1,6 @@
 package org.skinlab.simd;
 
-import org.skinlab.skinning.FrameExpansion;
+import org.skinlab.skinning.DeformationExpansion;
 import org.skinlab.skinning.NormalTransform;
 import org.skinlab.skinning.SkinnedGeometry;
 import org.skinlab.skinning.Skinner;
@@ -12,7 +12,7 @@ import org.skinlab.skinning.SkinningMethod;
  * {@code --add-modules jdk.incubator.vector}, its vectors are at least 256 bits wide (otherwise the
  * API silently falls back to a Java loop per lane, far slower than the scalar kernels), and the
  * geometry has at most 65536 joints (any number of influences). In every other case it returns null
- * and core's scalar kernels run. The same conditions hold for its {@link FrameExpansion}.
+ * and core's scalar kernels run. The same conditions hold for its {@link DeformationExpansion}.
  *
  * <p>This class must load without the incubator module, so it names no class of it: the check
  * goes through the module layer, and {@link VectorKernels} is touched only after it passes.
@@ -30,11 +30,11 @@ public final class VectorSkinnerProvider implements SkinnerProvider {
     }
 
     @Override
-    public FrameExpansion frameExpansion(int[] frameOfPoint, float[] restNormals) {
+    public DeformationExpansion deformationExpansion(int[] deformationOfPoint, float[] restNormals) {
         if (!moduleAvailable() || !VectorKernels.fastOnThisMachine()) {
             return null;
         }
-        return VectorKernels.frameExpansion(frameOfPoint, restNormals);
+        return VectorKernels.deformationExpansion(deformationOfPoint, restNormals);
     }
 
     /** True when the incubator module is in the boot layer (the JVM got {@code --add-modules}). */

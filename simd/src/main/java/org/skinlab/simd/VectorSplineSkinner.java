@@ -20,7 +20,7 @@ import org.skinlab.skinning.SplineBinding;
  * near one joint evaluates one curve, not one per slot.
  *
  * <p>With joint scale, a second per-call table holds each curve's two scale parts, blended along
- * the curve per lane as in the scalar kernel. {@link #skinFrames} (the route of position sharing)
+ * the curve per lane as in the scalar kernel. {@link #skinDeformations} (the route of position sharing)
  * writes the same sums as frame records. Frames with a mirroring joint under exact normals go
  * through the scalar kernel, as do points of a range outside whole blocks of 8.
  */
@@ -220,24 +220,24 @@ final class VectorSplineSkinner extends AbstractSkinner {
     }
 
     @Override
-    public void skinFrames(JointPalette palette, float[] outFrames, int from, int to) {
+    public void skinDeformations(JointPalette palette, float[] outDeformations, int from, int to) {
         boolean exact = normalTransform() == NormalTransform.INVERSE_TRANSPOSE;
         int firstBlock = (from + BLOCK - 1) / BLOCK;
         int endBlock = Math.min(to / BLOCK, blockCount);
         if ((exact && palette.mirrorsMatrices()) || firstBlock >= endBlock) {
-            scalar.skinFrames(palette, outFrames, from, to);
+            scalar.skinDeformations(palette, outDeformations, from, to);
             return;
         }
-        if (outFrames.length < FRAME_FLOATS * BLOCK * endBlock) {
-            throw new IndexOutOfBoundsException("output array shorter than " + FRAME_FLOATS * BLOCK * endBlock);
+        if (outDeformations.length < DEFORMATION_FLOATS * BLOCK * endBlock) {
+            throw new IndexOutOfBoundsException("output array shorter than " + DEFORMATION_FLOATS * BLOCK * endBlock);
         }
-        scalar.skinFrames(palette, outFrames, from, BLOCK * firstBlock);
+        scalar.skinDeformations(palette, outDeformations, from, BLOCK * firstBlock);
         float[] records = prepareTable(palette);
         float[] acc = scratch.get();
         for (int b = firstBlock; b < endBlock; b++) {
             sums(palette, records, b, exact, acc);
-            SplineLanes.storeFrames(acc, outFrames, FRAME_FLOATS * BLOCK * b);
+            SplineLanes.storeFrames(acc, outDeformations, DEFORMATION_FLOATS * BLOCK * b);
         }
-        scalar.skinFrames(palette, outFrames, BLOCK * endBlock, to);
+        scalar.skinDeformations(palette, outDeformations, BLOCK * endBlock, to);
     }
 }

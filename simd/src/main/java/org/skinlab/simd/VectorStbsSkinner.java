@@ -19,7 +19,7 @@ import org.skinlab.skinning.SkinningMethod;
  * offsets of the joints' data (24 j, in the bone rows and in {@link StbsLanes#packJoints}'s table). Points of a range
  * outside whole blocks ({@link #rangeAlignment()}) go through the scalar kernel.
  *
- * <p>{@link #skinFrames} (the route of position sharing) runs the same influence pass and blend,
+ * <p>{@link #skinDeformations} (the route of position sharing) runs the same influence pass and blend,
  * then writes 8 points' frame records from lanes: on LBS the blend's position and its linear
  * part's cofactor (or that part), transposed ({@link StbsLanes#linearFrames}); on DQS through
  * the DQS kernel's {@link DqsLanes#rigidFrames}.
@@ -44,8 +44,8 @@ final class VectorStbsSkinner extends AbstractSkinner {
     private final ThreadLocal<float[]> jointScratch;
     /** Per thread the joints' data of the palette being applied ({@link StbsLanes#packJoints}). */
     private final ThreadLocal<float[]> jointTable;
-    /** Per thread one block's frame records in lanes ({@link #skinFrames}): 16 fields, 8 lanes each. */
-    private final ThreadLocal<float[]> frameScratch = ThreadLocal.withInitial(() -> new float[FRAME_FLOATS * BLOCK]);
+    /** Per thread one block's frame records in lanes ({@link #skinDeformations}): 16 fields, 8 lanes each. */
+    private final ThreadLocal<float[]> frameScratch = ThreadLocal.withInitial(() -> new float[DEFORMATION_FLOATS * BLOCK]);
 
     VectorStbsSkinner(SkinningMethod method, SkinnedGeometry geometry, NormalTransform normals) {
         super(method, "vector-256", geometry, normals);
@@ -145,7 +145,7 @@ final class VectorStbsSkinner extends AbstractSkinner {
     }
 
     @Override
-    public void skinFrames(JointPalette palette, float[] outFrames, int from, int to) {
+    public void skinDeformations(JointPalette palette, float[] outDeformations, int from, int to) {
         if (palette.jointCount() != jointCount) {
             throw new IllegalArgumentException("palette of " + palette.jointCount() + " joints for a geometry of "
                     + jointCount);
@@ -153,13 +153,13 @@ final class VectorStbsSkinner extends AbstractSkinner {
         int firstBlock = (from + BLOCK - 1) / BLOCK;
         int endBlock = Math.min(to / BLOCK, blockCount);
         if (firstBlock >= endBlock) {
-            scalar.skinFrames(palette, outFrames, from, to);
+            scalar.skinDeformations(palette, outDeformations, from, to);
             return;
         }
-        if (outFrames.length < FRAME_FLOATS * BLOCK * endBlock) {
-            throw new IndexOutOfBoundsException("output array shorter than " + FRAME_FLOATS * BLOCK * endBlock);
+        if (outDeformations.length < DEFORMATION_FLOATS * BLOCK * endBlock) {
+            throw new IndexOutOfBoundsException("output array shorter than " + DEFORMATION_FLOATS * BLOCK * endBlock);
         }
-        scalar.skinFrames(palette, outFrames, from, BLOCK * firstBlock);
+        scalar.skinDeformations(palette, outDeformations, from, BLOCK * firstBlock);
         float[] s = scratch.get();
         float[] t = jointScratch.get();
         float[] table = jointTable.get();
@@ -171,11 +171,11 @@ final class VectorStbsSkinner extends AbstractSkinner {
             int active = Math.max(1, activeWidth[b]);
             StbsLanes.influences(table, rowIndex, points, b, width, active, s, t);
             if (dualQuaternions) {
-                StbsLanes.dualQuaternionFrames(s, weights, points, b, width, active, f, outFrames);
+                StbsLanes.dualQuaternionFrames(s, weights, points, b, width, active, f, outDeformations);
             } else {
-                StbsLanes.linearFrames(s, blend, weights, points, b, width, active, exact, f, outFrames);
+                StbsLanes.linearFrames(s, blend, weights, points, b, width, active, exact, f, outDeformations);
             }
         }
-        scalar.skinFrames(palette, outFrames, BLOCK * endBlock, to);
+        scalar.skinDeformations(palette, outDeformations, BLOCK * endBlock, to);
     }
 }

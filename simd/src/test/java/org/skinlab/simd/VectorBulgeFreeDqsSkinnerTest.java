@@ -50,7 +50,7 @@ class VectorBulgeFreeDqsSkinnerTest {
             for (int to : edges) {
                 if (from <= to) {
                     pulled = Math.max(pulled, assertAgrees(k, palette, from, to));
-                    assertFramesAgree(k, palette, from, to);
+                    assertDeformationsAgree(k, palette, from, to);
                 }
             }
         }
@@ -65,7 +65,7 @@ class VectorBulgeFreeDqsSkinnerTest {
         for (long seed = 1; seed <= 3; seed++) {
             JointPalette palette = pose(g, seed, false);
             assertAgrees(vector(g, normals), palette, 0, g.pointCount());
-            assertFramesAgree(vector(g, normals), palette, 0, g.pointCount());
+            assertDeformationsAgree(vector(g, normals), palette, 0, g.pointCount());
         }
     }
 
@@ -119,17 +119,17 @@ class VectorBulgeFreeDqsSkinnerTest {
         Skinner k = vector(g, NormalTransform.INVERSE_TRANSPOSE);
         float[] p = new float[3 * g.pointCount()];
         float[] n = new float[3 * g.pointCount()];
-        float[] f = new float[Skinner.FRAME_FLOATS * g.pointCount()];
+        float[] f = new float[Skinner.DEFORMATION_FLOATS * g.pointCount()];
         long bytes = Long.MAX_VALUE;
         for (int attempt = 0; attempt < 5 && bytes >= 64 * 1024; attempt++) {
             for (int i = 0; i < 30_000; i++) {
                 k.skin(palette, p, n, 0, g.pointCount());
-                k.skinFrames(palette, f, 0, g.pointCount());
+                k.skinDeformations(palette, f, 0, g.pointCount());
             }
             long start = threads.getThreadAllocatedBytes(thread);
             for (int i = 0; i < 2_000; i++) {
                 k.skin(palette, p, n, 0, g.pointCount());
-                k.skinFrames(palette, f, 0, g.pointCount());
+                k.skinDeformations(palette, f, 0, g.pointCount());
             }
             bytes = threads.getThreadAllocatedBytes(thread) - start;
         }
@@ -167,16 +167,16 @@ class VectorBulgeFreeDqsSkinnerTest {
         return pulled;
     }
 
-    private static void assertFramesAgree(Skinner vector, JointPalette palette, int from, int to) {
+    private static void assertDeformationsAgree(Skinner vector, JointPalette palette, int from, int to) {
         SkinnedGeometry g = vector.geometry();
         Skinner scalar = Skinners.scalar(SkinningMethod.BFDQS, g, vector.normalTransform());
         int n = g.pointCount();
-        float[] vf = nanFilled(Skinner.FRAME_FLOATS * n);
-        float[] sf = nanFilled(Skinner.FRAME_FLOATS * n);
-        vector.skinFrames(palette, vf, from, to);
-        scalar.skinFrames(palette, sf, from, to);
+        float[] vf = nanFilled(Skinner.DEFORMATION_FLOATS * n);
+        float[] sf = nanFilled(Skinner.DEFORMATION_FLOATS * n);
+        vector.skinDeformations(palette, vf, from, to);
+        scalar.skinDeformations(palette, sf, from, to);
         for (int i = 0; i < vf.length; i++) {
-            int point = i / Skinner.FRAME_FLOATS;
+            int point = i / Skinner.DEFORMATION_FLOATS;
             if (point < from || point >= to) {
                 if (!Float.isNaN(vf[i])) {
                     fail("frame float " + i + " outside [" + from + ", " + to + ") was written");

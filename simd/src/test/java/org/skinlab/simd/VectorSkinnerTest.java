@@ -116,8 +116,8 @@ class VectorSkinnerTest {
         assertTrue(palette.hasScale(), "the pose scales every other joint");
         assertAgrees(vector(method, g, normals), palette, 0, 101);
         assertAgrees(vector(method, g, normals), palette, 9, 90);
-        assertFramesAgree(vector(method, g, normals), palette, 0, 101);
-        assertFramesAgree(vector(method, g, normals), palette, 3, 77);
+        assertDeformationsAgree(vector(method, g, normals), palette, 0, 101);
+        assertDeformationsAgree(vector(method, g, normals), palette, 3, 77);
     }
 
     @ParameterizedTest(name = "{0} {1}, {2} influences, scaled {3}")
@@ -133,7 +133,7 @@ class VectorSkinnerTest {
         for (int from : edges) {
             for (int to : edges) {
                 if (from <= to) {
-                    assertFramesAgree(k, palette, from, to);
+                    assertDeformationsAgree(k, palette, from, to);
                 }
             }
         }
@@ -154,7 +154,7 @@ class VectorSkinnerTest {
         palette.prepareDualQuaternions();
         assertTrue(palette.hasScale(), "a mirrored joint is a scale part for DQS");
         assertAgrees(vector(method, g, normals), palette, 0, 203);
-        assertFramesAgree(vector(method, g, normals), palette, 0, 203);
+        assertDeformationsAgree(vector(method, g, normals), palette, 0, 203);
     }
 
     @ParameterizedTest(name = "{0} influences")
@@ -167,22 +167,22 @@ class VectorSkinnerTest {
         Skinner k = vector(SkinningMethod.DQS, g, NormalTransform.INVERSE_TRANSPOSE);
         assertAgrees(k, palette, 0, 2003);
         assertAgrees(k, palette, 5, 1999);
-        assertFramesAgree(k, palette, 0, 2003);
+        assertDeformationsAgree(k, palette, 0, 2003);
         JointPalette scaled = Geometries.pose(g, 82, true);
         assertAgrees(k, scaled, 0, 2003);
     }
 
-    /** skinFrames of both kernels on [from, to), outputs compared (nothing written outside). */
-    private static void assertFramesAgree(Skinner vector, JointPalette palette, int from, int to) {
+    /** skinDeformations of both kernels on [from, to), outputs compared (nothing written outside). */
+    private static void assertDeformationsAgree(Skinner vector, JointPalette palette, int from, int to) {
         SkinnedGeometry g = vector.geometry();
         Skinner scalar = Skinners.scalar(vector.method(), g, vector.normalTransform());
         int n = g.pointCount();
-        float[] vf = nanFilled(Skinner.FRAME_FLOATS * n);
-        float[] sf = nanFilled(Skinner.FRAME_FLOATS * n);
-        vector.skinFrames(palette, vf, from, to);
-        scalar.skinFrames(palette, sf, from, to);
+        float[] vf = nanFilled(Skinner.DEFORMATION_FLOATS * n);
+        float[] sf = nanFilled(Skinner.DEFORMATION_FLOATS * n);
+        vector.skinDeformations(palette, vf, from, to);
+        scalar.skinDeformations(palette, sf, from, to);
         for (int i = 0; i < vf.length; i++) {
-            int point = i / Skinner.FRAME_FLOATS;
+            int point = i / Skinner.DEFORMATION_FLOATS;
             if (point < from || point >= to) {
                 if (!Float.isNaN(vf[i])) {
                     fail("frame float " + i + " outside [" + from + ", " + to + ") was written");
@@ -203,7 +203,7 @@ class VectorSkinnerTest {
         if (method == SkinningMethod.COR) {
             // Random geometries have no triangles, so their centres are the points themselves
             // (p' = A p); the character's mesh gives real centres, which this case must exercise.
-            float[] c = g.centersOfRotation();
+            float[] c = g.centresOfRotation();
             float[] p = g.positionArray();
             int away = 0;
             for (int i = 0; i < g.pointCount(); i++) {

@@ -52,7 +52,7 @@ class VectorSplineSkinnerTest {
                     int n = g.pointCount();
                     assertAgrees(asset, vector, scalar, palette, 0, n);
                     assertAgrees(asset, vector, scalar, palette, 3, n - 5);
-                    assertFramesAgree(asset, vector, scalar, palette, 3, n - 5);
+                    assertDeformationsAgree(asset, vector, scalar, palette, 3, n - 5);
                 }
             }
         }
@@ -76,13 +76,13 @@ class VectorSplineSkinnerTest {
         }
     }
 
-    private static void assertFramesAgree(String asset, Skinner vector, Skinner scalar, JointPalette palette,
+    private static void assertDeformationsAgree(String asset, Skinner vector, Skinner scalar, JointPalette palette,
             int from, int to) {
         int n = vector.geometry().pointCount();
-        float[] vf = nanFilled(Skinner.FRAME_FLOATS * n), sf = nanFilled(Skinner.FRAME_FLOATS * n);
-        vector.skinFrames(palette, vf, from, to);
-        scalar.skinFrames(palette, sf, from, to);
-        for (int i = Skinner.FRAME_FLOATS * from; i < Skinner.FRAME_FLOATS * to; i++) {
+        float[] vf = nanFilled(Skinner.DEFORMATION_FLOATS * n), sf = nanFilled(Skinner.DEFORMATION_FLOATS * n);
+        vector.skinDeformations(palette, vf, from, to);
+        scalar.skinDeformations(palette, sf, from, to);
+        for (int i = Skinner.DEFORMATION_FLOATS * from; i < Skinner.DEFORMATION_FLOATS * to; i++) {
             check(asset + " frame", i, vf[i], sf[i]);
         }
     }

@@ -109,7 +109,7 @@ class VectorStbsSkinnerTest {
     }
 
     /**
-     * {@link Skinner#skinFrames} (the route of position sharing) against the scalar kernel's frames:
+     * {@link Skinner#skinDeformations} (the route of position sharing) against the scalar kernel's frames:
      * the same records (N's columns, p, padding) for every range, nothing written outside it.
      */
     @ParameterizedTest
@@ -125,12 +125,12 @@ class VectorStbsSkinnerTest {
         for (int seed = 0; seed < 5; seed++) {
             JointPalette palette = pose(g, 300 * width + seed, scaled);
             for (int[] range : new int[][] {{0, 203}, {0, 200}, {3, 77}, {8, 16}, {9, 14}}) {
-                int n = Skinner.FRAME_FLOATS * g.pointCount();
+                int n = Skinner.DEFORMATION_FLOATS * g.pointCount();
                 float[] vf = nan(n), sf = nan(n);
-                vector.skinFrames(palette, vf, range[0], range[1]);
-                scalar.skinFrames(palette, sf, range[0], range[1]);
+                vector.skinDeformations(palette, vf, range[0], range[1]);
+                scalar.skinDeformations(palette, sf, range[0], range[1]);
                 for (int i = 0; i < n; i++) {
-                    int point = i / Skinner.FRAME_FLOATS;
+                    int point = i / Skinner.DEFORMATION_FLOATS;
                     if (point < range[0] || point >= range[1]) {
                         assertTrue(Float.isNaN(vf[i]), "float " + i + " outside the range was written");
                         continue;
@@ -166,7 +166,7 @@ class VectorStbsSkinnerTest {
         assertTrue(bytes < calls, method + " " + normals + ": " + bytes + " bytes allocated in " + calls + " calls");
     }
 
-    /** {@link Skinner#skinFrames} allocates nothing either (see {@link #skinningAllocatesNothingOnceCompiled}). */
+    /** {@link Skinner#skinDeformations} allocates nothing either (see {@link #skinningAllocatesNothingOnceCompiled}). */
     @ParameterizedTest
     @CsvSource({"STBS_LBS, INVERSE_TRANSPOSE", "STBS_LBS, BLENDED_MATRIX", "STBS_DQS, INVERSE_TRANSPOSE",
         "STBS_DQS, BLENDED_MATRIX"})
@@ -177,8 +177,8 @@ class VectorStbsSkinnerTest {
         Skinner vector = new VectorSkinnerProvider().create(method, g, normals);
         assertTrue(vector instanceof VectorStbsSkinner, "the provider offers the vector kernel for " + method);
         JointPalette palette = pose(g, 7, true);
-        float[] f = new float[Skinner.FRAME_FLOATS * 200];
-        long bytes = allocatedBytes(() -> vector.skinFrames(palette, f, 0, 200), calls);
+        float[] f = new float[Skinner.DEFORMATION_FLOATS * 200];
+        long bytes = allocatedBytes(() -> vector.skinDeformations(palette, f, 0, 200), calls);
         assertTrue(bytes < calls, method + " " + normals + ": " + bytes + " bytes allocated in " + calls + " calls");
     }
 

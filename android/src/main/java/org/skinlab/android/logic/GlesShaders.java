@@ -20,7 +20,7 @@ public final class GlesShaders {
     public static final int JOINTS = 2;
     /** {@value #INFLUENCES} weights per vertex, floats. */
     public static final int WEIGHTS = 3;
-    /** CoR's centre of rotation per vertex, 3 floats ({@code SkinnedGeometry.centersOfRotation()}). */
+    /** CoR's centre of rotation per vertex, 3 floats ({@code SkinnedGeometry.centresOfRotation()}). */
     public static final int CENTRE = 4;
     /** The texture coordinates the materials sample by (2 floats; the model's v-up convention). */
     public static final int UV = 5;

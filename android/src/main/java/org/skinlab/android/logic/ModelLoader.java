@@ -76,7 +76,7 @@ public final class ModelLoader implements AutoCloseable {
             mesh = SkeletalAnimatedMesh.of(ModelImporter.read(in, name, null), config);
             for (SkinnedGeometry g : mesh.geometries()) {
                 if (g.isSkinned()) {
-                    g.centersOfRotation();
+                    g.centresOfRotation();
                 }
             }
             textures = ModelTextures.decode(mesh.model(), decoder);

@@ -21,7 +21,7 @@ import org.skinlab.importer.ModelImporter;
 import org.skinlab.simulation.AnimationConfig;
 import org.skinlab.simulation.Frame;
 import org.skinlab.simulation.SkeletalAnimatedMesh;
-import org.skinlab.skinning.CentersOfRotation;
+import org.skinlab.skinning.CentresOfRotation;
 
 /**
  * Runs the app's core paths (import, simulation, CoR's centres and their cache, the skinning
@@ -50,7 +50,7 @@ public final class ShrinkProbe {
     /** Import, simulation, the GPU palette and CoR's centres with their cache, as the app runs them. */
     private static void probeModel(Path model) throws Exception {
         Path cache = Files.createTempDirectory("skinlab-centres");
-        CentersOfRotation.setCacheDirectory(cache);
+        CentresOfRotation.setCacheDirectory(cache);
         try (InputStream in = Files.newInputStream(model);
                 SkeletalAnimatedMesh mesh = SkeletalAnimatedMesh.of(ModelImporter.read(in,
                         model.getFileName().toString(), null), new AnimationConfig(AnimationConfig.Settings.DEFAULT
@@ -61,7 +61,7 @@ public final class ShrinkProbe {
                 PaletteTexture.pack(f, 0, palette);
             }
             // CoR's centres as the Activity's loader prepares them, kept in the app's cache folder.
-            mesh.geometries().get(0).centersOfRotation();
+            mesh.geometries().get(0).centresOfRotation();
         }
         try (Stream<Path> cached = Files.list(cache)) {
             List<Path> files = cached.collect(Collectors.toList());

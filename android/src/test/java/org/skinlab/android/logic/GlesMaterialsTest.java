@@ -249,7 +249,7 @@ class GlesMaterialsTest {
             glBufferData(GL_ARRAY_BUFFER, w, GL_STATIC_DRAW);
             glEnableVertexAttribArray(GlesShaders.WEIGHTS);
             glVertexAttribPointer(GlesShaders.WEIGHTS, k, GL_FLOAT, false, 4 * k, 0);
-            floats(g.centersOfRotation(), 3 * vn, GlesShaders.CENTRE, 3);
+            floats(g.centresOfRotation(), 3 * vn, GlesShaders.CENTRE, 3);
             floats(PartMaterial.texCoords(g.mesh(), g.instance()), 2 * vn, GlesShaders.UV, 2);
             if (g.mesh().hasColors()) {
                 floats(g.mesh().colors(), 4 * vn, GlesShaders.COLOR, 4);

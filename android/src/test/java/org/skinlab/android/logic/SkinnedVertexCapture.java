@@ -57,7 +57,7 @@ final class SkinnedVertexCapture implements AutoCloseable {
         glBufferData(GL_ARRAY_BUFFER, w, GL_STATIC_DRAW);
         glEnableVertexAttribArray(GlesShaders.WEIGHTS);
         glVertexAttribPointer(GlesShaders.WEIGHTS, k, GL_FLOAT, false, 4 * k, 0);
-        floats(buffers[4], g.centersOfRotation(), 3 * n, GlesShaders.CENTRE);
+        floats(buffers[4], g.centresOfRotation(), 3 * n, GlesShaders.CENTRE);
         glBindVertexArray(0);
         glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, buffers[5]);
         glBufferData(GL_TRANSFORM_FEEDBACK_BUFFER, 24L * Math.max(1, n), GL_STREAM_READ);

@@ -19,7 +19,7 @@ import org.skinlab.animation.RotationInterpolation;
 import org.skinlab.desktop.ExitCodes;
 import org.skinlab.model.Mesh;
 import org.skinlab.model.Model;
-import org.skinlab.skinning.CentersOfRotation;
+import org.skinlab.skinning.CentresOfRotation;
 import org.skinlab.skinning.SkinnedGeometry;
 import org.skinlab.skinning.SkinnedModel;
 import org.skinlab.skinning.SkinningMethod;
@@ -33,7 +33,7 @@ import picocli.CommandLine.Model.CommandSpec;
 
 /**
  * {@code skinlab centres FILE... [--sigma S] [--epsilon E|none] [--runs N] [--json OUT [--time T,...]]}:
- * CoR's precomputation ({@link CentersOfRotation}) timed per skinned mesh, and the centres
+ * CoR's precomputation ({@link CentresOfRotation}) timed per skinned mesh, and the centres
  * exported for other tools.
  *
  * <p>The table has a row per skinned mesh: positions, triangles, the triangles integrated over
@@ -62,10 +62,10 @@ public final class CentresCommand implements Callable<Integer> {
 
     @Option(names = "--sigma", paramLabel = "S", description = "width of the weight-similarity kernel (default: "
             + "${DEFAULT-VALUE}, the paper's)")
-    double sigma = CentersOfRotation.Parameters.DEFAULT.sigma();
+    double sigma = CentresOfRotation.Parameters.DEFAULT.sigma();
 
     @Option(names = "--epsilon", paramLabel = "E|none", description = "largest weight difference along an edge of "
-            + "the integration mesh, at least " + CentersOfRotation.MIN_WEIGHT_EPSILON + "; none: the triangles as "
+            + "the integration mesh, at least " + CentresOfRotation.MIN_WEIGHT_EPSILON + "; none: the triangles as "
             + "they are (default: 0.1, the paper's)")
     String epsilon = "0.1";
 
@@ -86,7 +86,7 @@ public final class CentresCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws IOException {
-        CentersOfRotation.Parameters parameters = parameters();
+        CentresOfRotation.Parameters parameters = parameters();
         if (runs < 1) {
             throw usage("--runs must be at least 1");
         }
@@ -96,7 +96,7 @@ public final class CentresCommand implements Callable<Integer> {
         if (json == null && !times.isEmpty()) {
             throw usage("--time goes with --json");
         }
-        if (!times.isEmpty() && !parameters.equals(CentersOfRotation.Parameters.DEFAULT)) {
+        if (!times.isEmpty() && !parameters.equals(CentresOfRotation.Parameters.DEFAULT)) {
             throw usage("--time: the runtime skins with the paper's centres (sigma 0.1, epsilon 0.1); leave "
                     + "--sigma and --epsilon at their defaults");
         }
@@ -120,14 +120,14 @@ public final class CentresCommand implements Callable<Integer> {
                 float[] c = null;
                 for (int r = 0; r < runs; r++) {
                     long start = System.nanoTime();
-                    c = CentersOfRotation.compute(g, parameters, CentersOfRotation.Progress.NONE);
+                    c = CentresOfRotation.compute(g, parameters, CentresOfRotation.Progress.NONE);
                     millis[r] = (System.nanoTime() - start) / 1e6;
                 }
                 centres.add(c);
                 Mesh mesh = g.mesh();
                 report.printf(Locale.ROOT, "| %s | %s | %d | %d | %d | %.1f | %s |%n", file.getFileName(), mesh.id(),
                         mesh.positionCount(), mesh.triangleCount(),
-                        CentersOfRotation.integrationTriangles(g, parameters), millis[0],
+                        CentresOfRotation.integrationTriangles(g, parameters), millis[0],
                         runs > 1 ? String.format(Locale.ROOT, "%.1f", median(Arrays.copyOfRange(millis, 1, runs))) : "-");
                 report.flush();
             }
@@ -138,7 +138,7 @@ public final class CentresCommand implements Callable<Integer> {
         return ExitCodes.OK;
     }
 
-    private CentersOfRotation.Parameters parameters() {
+    private CentresOfRotation.Parameters parameters() {
         double e;
         if (epsilon.equalsIgnoreCase("none")) {
             e = Double.POSITIVE_INFINITY;
@@ -150,13 +150,13 @@ public final class CentresCommand implements Callable<Integer> {
             }
         }
         try {
-            return new CentersOfRotation.Parameters(sigma, e);
+            return new CentresOfRotation.Parameters(sigma, e);
         } catch (IllegalArgumentException x) {
             throw usage(x.getMessage());
         }
     }
 
-    private void export(Path file, SkinnedModel skinned, List<float[]> centres, CentersOfRotation.Parameters parameters,
+    private void export(Path file, SkinnedModel skinned, List<float[]> centres, CentresOfRotation.Parameters parameters,
             PrintWriter out) throws IOException {
         if (json.equals("-")) {
             write(file, skinned, centres, parameters, out);
@@ -173,7 +173,7 @@ public final class CentresCommand implements Callable<Integer> {
         }
     }
 
-    private void write(Path file, SkinnedModel skinned, List<float[]> centres, CentersOfRotation.Parameters parameters,
+    private void write(Path file, SkinnedModel skinned, List<float[]> centres, CentresOfRotation.Parameters parameters,
             Writer w) throws IOException {
         try (JsonGenerator g = new JsonFactory().createGenerator(w)) {
             g.disable(JsonGenerator.Feature.AUTO_CLOSE_TARGET);

@@ -213,7 +213,7 @@ final class GpuGeometry implements AutoCloseable {
             return;
         }
         centreBuffer = glGenBuffers();
-        upload(centreBuffer, geometry.centersOfRotation(), 3 * vertexCount, GL_STATIC_DRAW);
+        upload(centreBuffer, geometry.centresOfRotation(), 3 * vertexCount, GL_STATIC_DRAW);
         glBindVertexArray(gpuVao);
         attribute(7, centreBuffer, 3);
         glBindVertexArray(0);

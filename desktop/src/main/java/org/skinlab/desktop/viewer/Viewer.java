@@ -149,7 +149,7 @@ public final class Viewer implements AutoCloseable {
                 // user first switches to CoR.
                 for (SkinnedGeometry g : ((LoadedModel) result).mesh().geometries()) {
                     if (g.isSkinned()) {
-                        g.centersOfRotation();
+                        g.centresOfRotation();
                     }
                 }
             }

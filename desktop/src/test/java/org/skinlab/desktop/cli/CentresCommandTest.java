@@ -12,7 +12,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.skinlab.collada.ColladaImporter;
 import org.skinlab.model.Mesh;
-import org.skinlab.skinning.CentersOfRotation;
+import org.skinlab.skinning.CentresOfRotation;
 import org.skinlab.skinning.SkinnedGeometry;
 import org.skinlab.skinning.SkinnedModel;
 
@@ -51,7 +51,7 @@ class CentresCommandTest {
         assertEquals(g.jointCount(), m.get("joints").asInt());
         assertEquals(mesh.positionCount(), m.get("influences").size());
         float[] centres = g.positionsInSourceOrder(
-                CentersOfRotation.compute(g, CentersOfRotation.Parameters.DEFAULT, CentersOfRotation.Progress.NONE),
+                CentresOfRotation.compute(g, CentresOfRotation.Parameters.DEFAULT, CentresOfRotation.Progress.NONE),
                 new float[3 * mesh.positionCount()]);
         float[] rest = g.positionsInSourceOrder(g.positionArray(), new float[3 * mesh.positionCount()]);
         for (int i = 0; i < centres.length; i++) {

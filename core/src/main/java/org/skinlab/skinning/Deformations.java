@@ -1,12 +1,12 @@
 package org.skinlab.skinning;
 
 /**
- * The per-point frame record of {@link Skinner#skinFrames} (16 floats: two columns of the normal
+ * The per-point frame record of {@link Skinner#skinDeformations} (16 floats: two columns of the normal
  * matrix N, the deformed position, N's last column, each padded to four) and the blends the scalar
  * kernels share. Plain Java.
  */
-final class Frames {
-    private Frames() {
+final class Deformations {
+    private Deformations() {
     }
 
     /**

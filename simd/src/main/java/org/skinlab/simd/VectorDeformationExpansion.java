@@ -5,11 +5,11 @@ import static org.skinlab.simd.Lanes.SWAP;
 
 import jdk.incubator.vector.FloatVector;
 
-import org.skinlab.skinning.FrameExpansion;
+import org.skinlab.skinning.DeformationExpansion;
 import org.skinlab.skinning.Skinner;
 
 /**
- * {@link FrameExpansion} on 8-lane vectors, one point per iteration. The rest normals are laid out
+ * {@link DeformationExpansion} on 8-lane vectors, one point per iteration. The rest normals are laid out
  * once as the operands the frame's halves {@code [N0 | N1]} and {@code [p | N2]} are multiplied by:
  * {@code [nx nx nx nx | ny ny ny ny]} and {@code [0 0 0 0 | nz nz nz nz]} (16 floats per point),
  * so a point costs four loads, a multiply, a fused multiply-add, one lane swap and an add; the
@@ -19,13 +19,13 @@ import org.skinlab.skinning.Skinner;
  * split gives the same bits. Exact normals are then renormalised eight at a time
  * ({@link MatrixPasses#normalise}).
  */
-final class VectorFrameExpansion implements FrameExpansion {
-    private final int[] frameOfPoint;
+final class VectorDeformationExpansion implements DeformationExpansion {
+    private final int[] deformationOfPoint;
     private final float[] operands;
 
-    VectorFrameExpansion(int[] frameOfPoint, float[] restNormals) {
-        this.frameOfPoint = frameOfPoint;
-        int n = frameOfPoint.length;
+    VectorDeformationExpansion(int[] deformationOfPoint, float[] restNormals) {
+        this.deformationOfPoint = deformationOfPoint;
+        int n = deformationOfPoint.length;
         operands = new float[16 * n];
         for (int i = 0; i < n; i++) {
             float nx = restNormals[3 * i], ny = restNormals[3 * i + 1], nz = restNormals[3 * i + 2];
@@ -40,11 +40,11 @@ final class VectorFrameExpansion implements FrameExpansion {
     @Override
     public void expand(float[] frames, float[] outPositions, float[] outNormals, int from, int to,
             boolean normalise) {
-        final int[] fop = frameOfPoint;
+        final int[] fop = deformationOfPoint;
         final float[] ops = operands;
         int end = Math.max(from, to - 2);
         for (int i = from; i < end; i++) {
-            int f = Skinner.FRAME_FLOATS * fop[i];
+            int f = Skinner.DEFORMATION_FLOATS * fop[i];
             int v = 3 * i;
             FloatVector n01 = FloatVector.fromArray(S, frames, f);
             FloatVector pn2 = FloatVector.fromArray(S, frames, f + 8);
@@ -55,7 +55,7 @@ final class VectorFrameExpansion implements FrameExpansion {
         }
         for (int i = end; i < to; i++) {
             // The loop's sums in the loop's order: (N0 nx + 0) + (N1 ny + N2 nz).
-            int f = Skinner.FRAME_FLOATS * fop[i];
+            int f = Skinner.DEFORMATION_FLOATS * fop[i];
             int v = 3 * i;
             int o = 16 * i;
             float nx = ops[o], ny = ops[o + 4], nz = ops[o + 12];

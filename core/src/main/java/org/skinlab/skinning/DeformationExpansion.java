@@ -2,19 +2,19 @@ package org.skinlab.skinning;
 
 /**
  * The second half of skinning each position once: derives a geometry's points from the frames of
- * the positions they carry ({@link Skinner#skinFrames}). Per point {@code i} with frame
- * {@code f = frameOfPoint[i]}: the position is the frame's, the normal is {@code N_f n_i} for the
+ * the positions they carry ({@link Skinner#skinDeformations}). Per point {@code i} with frame
+ * {@code f = deformationOfPoint[i]}: the position is the frame's, the normal is {@code N_f n_i} for the
  * point's own rest normal, renormalised when asked (zero stays zero). An expansion is bound to one
  * geometry's mapping and rest normals (so it may keep them in whatever layout suits it) and holds
  * no per-call state: disjoint ranges may run on different threads at once. Core's implementation
  * is {@link #scalar}; a {@link SkinnerProvider} may offer a faster one.
  */
-public interface FrameExpansion {
+public interface DeformationExpansion {
     /**
      * Writes 3 floats per point {@code [from, to)} into {@code outPositions} and {@code outNormals}
      * at {@code 3 * point}.
      *
-     * @param frames    {@link Skinner#FRAME_FLOATS} floats per frame
+     * @param frames    {@link Skinner#DEFORMATION_FLOATS} floats per frame
      * @param normalise scale each normal to unit length (the exact normal rule)
      */
     void expand(float[] frames, float[] outPositions, float[] outNormals, int from, int to, boolean normalise);
@@ -25,16 +25,16 @@ public interface FrameExpansion {
     /**
      * The plain-Java expansion (Android, and the reference for faster ones).
      *
-     * @param frameOfPoint the frame of each point (read, not copied)
+     * @param deformationOfPoint the frame of each point (read, not copied)
      * @param restNormals  3 floats per point (read, not copied)
      */
-    static FrameExpansion scalar(int[] frameOfPoint, float[] restNormals) {
-        return new FrameExpansion() {
+    static DeformationExpansion scalar(int[] deformationOfPoint, float[] restNormals) {
+        return new DeformationExpansion() {
             @Override
             public void expand(float[] frames, float[] outPositions, float[] outNormals, int from, int to,
                     boolean normalise) {
                 for (int i = from; i < to; i++) {
-                    int f = Skinner.FRAME_FLOATS * frameOfPoint[i];
+                    int f = Skinner.DEFORMATION_FLOATS * deformationOfPoint[i];
                     int v = 3 * i;
                     float nx = restNormals[v], ny = restNormals[v + 1], nz = restNormals[v + 2];
                     float x = frames[f] * nx + frames[f + 4] * ny + frames[f + 12] * nz;

@@ -31,7 +31,7 @@ import java.util.stream.IntStream;
  * parallel over positions. The paper's further acceleration (clustering similar weight vectors)
  * is not needed at our sizes: docs/skinning.md has the timings ({@code skinlab centres}).
  */
-public final class CentersOfRotation {
+public final class CentresOfRotation {
     /**
      * The precomputation's two parameters: the width of the similarity kernel and the largest
      * weight distance along an edge of the integration mesh (both the paper's defaults: 0.1).
@@ -67,7 +67,7 @@ public final class CentersOfRotation {
     /** Where computed centres are kept between runs; null: nowhere (see {@link #setCacheDirectory}). */
     private static volatile Path cacheDirectory;
 
-    private CentersOfRotation() {
+    private CentresOfRotation() {
     }
 
     /**
@@ -143,10 +143,10 @@ public final class CentersOfRotation {
         if (positions == geometry) {
             return centres;
         }
-        int[] frameOfPoint = geometry.frameOfPointArray();
+        int[] deformationOfPoint = geometry.deformationOfPointArray();
         float[] perPoint = new float[3 * geometry.pointCount()];
         for (int i = 0; i < geometry.pointCount(); i++) {
-            System.arraycopy(centres, 3 * frameOfPoint[i], perPoint, 3 * i, 3);
+            System.arraycopy(centres, 3 * deformationOfPoint[i], perPoint, 3 * i, 3);
         }
         return perPoint;
     }

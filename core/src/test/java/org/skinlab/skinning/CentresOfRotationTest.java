@@ -14,11 +14,11 @@ import org.skinlab.testing.TestPaths;
  * The centres of rotation against a second, deliberately plain implementation of the paper's
  * formula and its subdivision (dense weight vectors, every ordered joint pair j != k, every
  * triangle, sub-triangles built from their grid vertices, double precision, no code shared with
- * {@link CentersOfRotation}), against an exact centre derived by hand, and against what they mean: on the cylinders the centre of a
+ * {@link CentresOfRotation}), against an exact centre derived by hand, and against what they mean: on the cylinders the centre of a
  * point in the blend region lies on the axis, at about the point's height (the rings of equal
  * weights around it).
  */
-class CentersOfRotationTest {
+class CentresOfRotationTest {
     private static SkinnedGeometry geometry(String asset) throws Exception {
         return SkinnedModel.of(ColladaImporter.read(TestPaths.asset(asset))).geometries().get(0);
     }
@@ -125,8 +125,8 @@ class CentersOfRotationTest {
 
     private static void assertMatchesReference(String asset, int step, double epsilon) throws Exception {
         SkinnedGeometry g = geometry(asset);
-        float[] c = CentersOfRotation.compute(g, new CentersOfRotation.Parameters(0.1, epsilon),
-                CentersOfRotation.Progress.NONE);
+        float[] c = CentresOfRotation.compute(g, new CentresOfRotation.Parameters(0.1, epsilon),
+                CentresOfRotation.Progress.NONE);
         assertEquals(3 * g.pointCount(), c.length);
         for (int p = 0; p < g.vertexCount(); p += step) {
             double[] r = reference(g, p, 0.1, epsilon);
@@ -147,7 +147,7 @@ class CentersOfRotationTest {
     void theCoarseTwistCylinderMatchesThePlainFormulaSubdividedOrNot() throws Exception {
         // Rings 0.118 m apart across the joint: weights jump by up to 0.2 along an edge.
         SkinnedGeometry g = geometry("cylinders/cylinder-twist-low.dae");
-        assertTrue(CentersOfRotation.integrationTriangles(g, CentersOfRotation.Parameters.DEFAULT)
+        assertTrue(CentresOfRotation.integrationTriangles(g, CentresOfRotation.Parameters.DEFAULT)
                 > 2L * g.mesh().triangleCount(), "the coarse rings are subdivided");
         assertMatchesReference("cylinders/cylinder-twist-low.dae", 3, 0.1);
         assertMatchesReference("cylinders/cylinder-twist-low.dae", 3, Double.POSITIVE_INFINITY);
@@ -205,8 +205,8 @@ class CentersOfRotationTest {
         double[] error = new double[3];
         double[] epsilons = {Double.POSITIVE_INFINITY, 0.1, 0.02};
         for (int e = 0; e < 3; e++) {
-            float[] c = CentersOfRotation.compute(g, triangles, new CentersOfRotation.Parameters(sigma, epsilons[e]),
-                    CentersOfRotation.Progress.NONE);
+            float[] c = CentresOfRotation.compute(g, triangles, new CentresOfRotation.Parameters(sigma, epsilons[e]),
+                    CentresOfRotation.Progress.NONE);
             error[e] = Math.hypot(c[12] - exact, c[13] - 0.5);
             assertEquals(0, c[14], 1e-6);
         }
@@ -221,7 +221,7 @@ class CentersOfRotationTest {
     void blendedPointsTurnAboutTheAxis() throws Exception {
         // cylinder-twist-high: axis z from 0 to 2, joint at z = 1, radius 0.25 (assets/README.md).
         SkinnedGeometry g = geometry("cylinders/cylinder-twist-high.dae");
-        float[] c = CentersOfRotation.compute(g, CentersOfRotation.Parameters.DEFAULT, CentersOfRotation.Progress.NONE);
+        float[] c = CentresOfRotation.compute(g, CentresOfRotation.Parameters.DEFAULT, CentresOfRotation.Progress.NONE);
         int blended = 0;
         int k = g.influencesPerPoint();
         for (int p = 0; p < g.vertexCount(); p++) {
@@ -247,7 +247,7 @@ class CentersOfRotationTest {
         SkinnedGeometry g = geometry("cylinders/cylinder-twist-low.dae");
         AtomicInteger last = new AtomicInteger();
         int[] total = new int[1];
-        CentersOfRotation.compute(g, CentersOfRotation.Parameters.DEFAULT, (done, all) -> {
+        CentresOfRotation.compute(g, CentresOfRotation.Parameters.DEFAULT, (done, all) -> {
             last.accumulateAndGet(done, Math::max);
             total[0] = all;
         });
@@ -256,10 +256,10 @@ class CentersOfRotationTest {
 
     @Test
     void parametersOutsideTheirRangeAreRefused() {
-        assertThrows(IllegalArgumentException.class, () -> new CentersOfRotation.Parameters(0, 0.1));
-        assertThrows(IllegalArgumentException.class, () -> new CentersOfRotation.Parameters(Double.NaN, 0.1));
-        assertThrows(IllegalArgumentException.class, () -> new CentersOfRotation.Parameters(0.1, 0.001));
-        assertThrows(IllegalArgumentException.class, () -> new CentersOfRotation.Parameters(0.1, Double.NaN));
-        new CentersOfRotation.Parameters(0.1, Double.POSITIVE_INFINITY);
+        assertThrows(IllegalArgumentException.class, () -> new CentresOfRotation.Parameters(0, 0.1));
+        assertThrows(IllegalArgumentException.class, () -> new CentresOfRotation.Parameters(Double.NaN, 0.1));
+        assertThrows(IllegalArgumentException.class, () -> new CentresOfRotation.Parameters(0.1, 0.001));
+        assertThrows(IllegalArgumentException.class, () -> new CentresOfRotation.Parameters(0.1, Double.NaN));
+        new CentresOfRotation.Parameters(0.1, Double.POSITIVE_INFINITY);
     }
 }
