@@ -26,6 +26,7 @@ import javax.tools.JavaCompiler;
 import javax.tools.ToolProvider;
 
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 import org.skinlab.model.Model;
 import org.skinlab.testing.TestPaths;
 
@@ -39,9 +40,8 @@ class ReadmeExampleTest {
             "clip time (\\S+) s: vertex 0 at \\((\\S+), (\\S+), (\\S+)\\), joint 0 at x = (\\S+)\\s*");
 
     @Test
-    void readmeWalkThroughCompilesRunsAndPrintsASkinnedVertex() throws Exception {
+    void readmeWalkThroughCompilesRunsAndPrintsASkinnedVertex(@TempDir Path dir) throws Exception {
         String block = readmeJavaBlock();
-        Path dir = Files.createTempDirectory("readme-example");
         Path source = dir.resolve("ReadmeExample.java");
         Files.writeString(source, asClass(block));
 
