@@ -32,12 +32,12 @@ import org.skinlab.testing.TestPaths;
 
 /**
  * Keeps the README's Java walk-through true: its {@code java} block is compiled against core and
- * run on the default character, and what it prints must be a skinned vertex and a joint.
+ * run on the default character, and what it prints must be a skinned vertex and its palette's size.
  */
 class ReadmeExampleTest {
     private static final Pattern JAVA_BLOCK = Pattern.compile("```java\n(.*?)```", Pattern.DOTALL);
     private static final Pattern PRINTED = Pattern.compile(
-            "clip time (\\S+) s: vertex 0 at \\((\\S+), (\\S+), (\\S+)\\), joint 0 at x = (\\S+)\\s*");
+            "clip time (\\S+) s: vertex 0 at \\((\\S+), (\\S+), (\\S+)\\), (\\d+) joints in the palette\\s*");
 
     @Test
     void readmeWalkThroughCompilesRunsAndPrintsASkinnedVertex(@TempDir Path dir) throws Exception {
@@ -55,10 +55,11 @@ class ReadmeExampleTest {
         String printed = runMain(dir);
         Matcher m = PRINTED.matcher(printed);
         assertTrue(m.matches(), () -> "unexpected output: " + printed);
-        for (int i = 1; i <= 5; i++) {
+        for (int i = 1; i <= 4; i++) {
             assertTrue(Double.isFinite(Double.parseDouble(m.group(i))), printed);
         }
         assertTrue(Double.parseDouble(m.group(1)) > 0, () -> "the clip played on the thread: " + printed);
+        assertEquals(19, Integer.parseInt(m.group(5)), () -> "the walking character has 19 joints: " + printed);
     }
 
     private static String readmeJavaBlock() throws IOException {
