@@ -13,7 +13,7 @@
 # Needs JDK 17, Gradle (builds desktop/build/install when missing), Node >= 18 and npm (installs
 # bench/threejs/node_modules from package-lock.json when missing). Ours runs on the start script's
 # Java: the newest JDK >= 17 installed, or SKINLAB_JAVA_HOME=DIR (=build: the default java); the
-# table names it (README, "Which Java runs skinlab").
+# table names it (docs/running.md, "Which Java runs skinlab").
 set -eu
 
 root=$(cd "$(dirname "$0")/.." && pwd)

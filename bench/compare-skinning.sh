@@ -15,7 +15,7 @@
 # gives both ratios, min / C++ min and median / C++ median: on a shared machine the minimum is the
 # less disturbed figure. Needs g++ (builds /tmp/skin_ref once), python3, JDK 17 and Gradle. Ours runs
 # on the start script's Java: the newest JDK >= 17 installed, or SKINLAB_JAVA_HOME=DIR (=build: the
-# default java); the table names it (README, "Which Java runs skinlab").
+# default java); the table names it (docs/running.md, "Which Java runs skinlab").
 set -eu
 
 root=$(cd "$(dirname "$0")/.." && pwd)

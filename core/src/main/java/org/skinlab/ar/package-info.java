@@ -7,5 +7,9 @@
  * black square, x to the right, y toward the marker's top edge, z out of the printed face;
  * {@code X_cam = R X_marker + t} in metres; corners TL, TR, BR, BL of the printed marker. See
  * {@code docs/ar.md}.
+ *
+ * <p>Depends on BoofCV's recognition module (never boofcv-io), JOML, {@code org.skinlab.scene}
+ * (standing a model on the marker) and {@code org.skinlab.glsl} (the lens formulas for the
+ * background shaders); never on a GL binding.
  */
 package org.skinlab.ar;

@@ -5,5 +5,6 @@
  * {@link org.skinlab.collada.ColladaException}s naming the file and the element; what is
  * tolerated becomes a warning in the model. Offline work: runs once per file, never per frame.
  * See docs/importer.md for the mapping and the leniency decisions.
+ * Depends on {@code org.skinlab.model}, JOML and the JDK's SAX parser only.
  */
 package org.skinlab.collada;

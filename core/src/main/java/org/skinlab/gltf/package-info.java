@@ -6,5 +6,6 @@
  * and the JSON pointer; what is tolerated becomes a warning in the model. Offline work: runs once
  * per file, never per frame. See docs/importer.md ("glTF 2.0") for the mapping and the leniency
  * decisions.
+ * Depends on {@code org.skinlab.model}, JOML and jackson-core only.
  */
 package org.skinlab.gltf;

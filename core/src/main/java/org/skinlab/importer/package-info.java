@@ -4,5 +4,6 @@
  * {@link org.skinlab.collada.ColladaImporter} or {@link org.skinlab.gltf.GltfImporter}; both
  * produce the same {@link org.skinlab.model.Model} and throw an
  * {@link org.skinlab.model.ImportException}.
+ * Depends on the two importers and {@code org.skinlab.model} only.
  */
 package org.skinlab.importer;

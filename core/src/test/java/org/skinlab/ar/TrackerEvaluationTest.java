@@ -17,7 +17,7 @@ import org.skinlab.ar.synthetic.SceneOptions;
 import org.skinlab.ar.synthetic.SyntheticCamera;
 
 /**
- * The tracker on synthetic camera frames of known pose (issue 10's harness): a 10 cm ArUco
+ * The tracker on synthetic camera frames of known pose: a 10 cm ArUco
  * MIP_36h12 marker seen by a 640x480 camera with a 60 degree horizontal field of view (fx = 554 px,
  * a phone's main camera at VGA), anywhere in the image, turned about its normal at random, tilted
  * about a random axis in its plane; every frame blurred (sigma 0.5-1.2 px), noisy (sigma 2-5 gray
@@ -25,7 +25,7 @@ import org.skinlab.ar.synthetic.SyntheticCamera;
  * 1.3 code cells) over the code ({@link MarkerShots#central}). Frames and their degradations come
  * from one seed: the counts below are deterministic.
  *
- * <p><b>Rates</b> (issue 10's goals): at least 99% found up to 1.5 m and 85% at 1.5-2 m, for tilts
+ * <p><b>Rates</b> (the goals): at least 99% found up to 1.5 m and 85% at 1.5-2 m, for tilts
  * up to 60 degrees. Between 60 and 70 degrees of tilt BoofCV's square detector itself loses markers
  * beyond about a metre (measured with its own default settings too: 9 of 16 at 70 degrees and
  * 1.25 m), so that band is held to 85% up to 1 m and reported, not claimed, beyond

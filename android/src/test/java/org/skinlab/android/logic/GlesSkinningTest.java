@@ -162,8 +162,8 @@ class GlesSkinningTest {
     private static void check(SkinningMethod method, Asset asset, int g, SkinnedGeometry geometry, Errors errors) {
         InfluenceView view = InfluenceView.of(geometry, GlesShaders.INFLUENCES);
         // A view that drops no weight deforms exactly as the geometry (InfluenceView's contract),
-        // so the kernel runs on the geometry itself, with the centres the app uploads (every asset
-        // now). A capped view runs as a geometry of its own on both sides: built from arrays, it
+        // so the kernel runs on the geometry itself, with the centres the app uploads (for every
+        // asset). A capped view runs as a geometry of its own on both sides: built from arrays, it
         // has no mesh, and its centres of rotation are its points.
         // Its joints keep the geometry's hierarchy, so both sides have the same bones.
         int[] parents = new int[geometry.jointCount()];
