@@ -25,7 +25,7 @@ import org.skinlab.skinning.SkinnedModel;
  *     bone rows)
  *     into a free buffer and, with CPU skinning on, skins every geometry with the configured
  *     method into it too, then publishes it as the latest {@link Frame}. A stopped animation is
- *     still re-posed every step, so switching LBS/DQS or the interpolation shows at once; with
+ *     still re-posed every step, so switching the method or the interpolation shows at once; with
  *     mesh updates stopped nothing is posed or published and readers keep the last frame (the
  *     playback time still advances while the animation runs).</li>
  * </ol>
