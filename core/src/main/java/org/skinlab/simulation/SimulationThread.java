@@ -12,9 +12,9 @@ import java.util.function.DoublePredicate;
  * that runs after a step that published. What a step does is the mesh's; the thread's pacing is
  * {@link PacedThread}'s.
  *
- * <p><b>Why one lock and one lifecycle monitor.</b> Steps (threaded or by hand) and
- * {@link #exclusively seeks} hold the step lock, so a thread still finishing its last step after
- * a stop never overlaps a new one. Starting and stopping hold the lifecycle monitor, which is
+ * <p><b>Why one lock and one lifecycle monitor.</b> Steps (threaded or by hand) and the mesh's
+ * seeks ({@link #exclusively}) hold the step lock, so a thread still finishing its last step
+ * after a stop never overlaps a new one. Starting and stopping hold the lifecycle monitor, which is
  * never held while stepping or joining: a {@link #stop()} from another thread (or from the
  * listener, on the simulation thread itself) can therefore never wait for a thread that waits for
  * it. The frame listener runs after the step lock is released, so a slow listener stalls neither
