@@ -320,15 +320,4 @@ public final class AnimationHelper {
         Quaternionf r = rotationOf(m, new Quaternionf());
         return dest.set(r.x, r.y, r.z, r.w, m.m30(), m.m31(), m.m32());
     }
-
-    /**
-     * The rigid matrix of a dual quaternion (normalised first, so any non-zero one works).
-     * Allocates a few temporaries: for tests and offline use.
-     */
-    public static Matrix4f toMatrix(DualQuaternion dq, Matrix4f dest) {
-        DualQuaternion n = new DualQuaternion(dq).normalize();
-        Vector3f t = n.getTranslation(new Vector3f());
-        rotationMatrix(new Quaternionf(n.rx, n.ry, n.rz, n.rw), dest);
-        return dest.setTranslation(t);
-    }
 }

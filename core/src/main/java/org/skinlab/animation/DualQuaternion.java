@@ -231,14 +231,6 @@ public final class DualQuaternion {
         return dest.normalize();
     }
 
-    /** True when all components equal within {@code eps}, or all equal after negating o (same transform). */
-    public boolean equalsTransform(DualQuaternion o, float eps) {
-        float s = realDot(o) < 0 ? -1 : 1;
-        return Math.abs(rx - s * o.rx) <= eps && Math.abs(ry - s * o.ry) <= eps && Math.abs(rz - s * o.rz) <= eps
-                && Math.abs(rw - s * o.rw) <= eps && Math.abs(dx - s * o.dx) <= eps && Math.abs(dy - s * o.dy) <= eps
-                && Math.abs(dz - s * o.dz) <= eps && Math.abs(dw - s * o.dw) <= eps;
-    }
-
     @Override
     public String toString() {
         return "DualQuaternion[r=(" + rx + ", " + ry + ", " + rz + ", " + rw + "), d=(" + dx + ", " + dy + ", " + dz

@@ -173,8 +173,7 @@ public final class Skeleton {
      * {@code dest = a * b} for affine matrices stored column-major, 16 floats each (bottom rows
      * taken as 0 0 0 1, not read), except that {@code b} may be row-major; {@code dest} may be
      * either operand. Each entry is summed in the order JOML's {@code Matrix4f.mulAffine} uses,
-     * so the results equal JOML's products, which this code replaced, to the bit (up to the sign
-     * of a zero).
+     * so the results equal JOML's products to the bit (up to the sign of a zero).
      */
     static void mulAffine(float[] a, int ao, float[] b, int bo, boolean bRowMajor, float[] dest, int d) {
         int rs = bRowMajor ? 4 : 1; // step between rows of b

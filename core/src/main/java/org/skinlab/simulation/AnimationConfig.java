@@ -182,8 +182,8 @@ public final class AnimationConfig {
     }
 
     /**
-     * Switches to the next method in {@link SkinningMethod}'s order (LBS, DQS, CoR, bulge-free
-     * DQS, stretchable and twistable bones on LBS and on DQS, spline, then LBS again); returns it.
+     * Switches to the next method in {@link SkinningMethod}'s declaration order, from the last
+     * back to the first; returns it.
      */
     public SkinningMethod nextMethod() {
         SkinningMethod[] all = SkinningMethod.values();
@@ -199,7 +199,10 @@ public final class AnimationConfig {
         update(s -> s.withInterpolation(interpolation));
     }
 
-    /** Switches to the next interpolation (LERP, SLERP, NLERP, then round again); returns it. */
+    /**
+     * Switches to the next interpolation in {@link RotationInterpolation}'s declaration order,
+     * from the last back to the first; returns it.
+     */
     public RotationInterpolation nextInterpolation() {
         RotationInterpolation[] all = RotationInterpolation.values();
         return update(s -> s.withInterpolation(all[(s.interpolation().ordinal() + 1) % all.length]))

@@ -31,7 +31,6 @@ final class FramePool {
     private final int[] jointCounts;
     private final boolean[] morphing;
     private final int maxBuffers;
-    private final boolean inPlace;
     private final AtomicReference<Frame> latest = new AtomicReference<>();
     /** Writer side only. */
     private Frame[] buffers;
@@ -40,15 +39,12 @@ final class FramePool {
      * @param pointCounts points per geometry
      * @param jointCounts palette joints per geometry
      * @param morphing    per geometry, whether its rest shape morphs ({@link Frame#restPositions})
-     * @param inPlace     test-only: claim always returns the first buffer, leased or latest or not, so
-     *                    the writer fills the frame readers hold (what this class exists to prevent)
      */
-    FramePool(int[] pointCounts, int[] jointCounts, boolean[] morphing, int maxBuffers, boolean inPlace) {
+    FramePool(int[] pointCounts, int[] jointCounts, boolean[] morphing, int maxBuffers) {
         this.pointCounts = pointCounts.clone();
         this.jointCounts = jointCounts.clone();
         this.morphing = morphing.clone();
         this.maxBuffers = maxBuffers;
-        this.inPlace = inPlace;
         buffers = new Frame[Math.min(INITIAL_BUFFERS, maxBuffers)];
         for (int i = 0; i < buffers.length; i++) {
             buffers[i] = new Frame(this.pointCounts, this.jointCounts, this.morphing);
@@ -89,9 +85,6 @@ final class FramePool {
 
     /** A buffer to fill: neither the latest nor leased. Null when every buffer is held. */
     Frame claim() {
-        if (inPlace) {
-            return buffers[0];
-        }
         Frame shown = latest.get();
         for (Frame f : buffers) {
             if (f != shown && f.leases.get() == 0) {
@@ -110,10 +103,5 @@ final class FramePool {
     /** Makes a filled buffer the latest; the volatile store makes its contents visible to readers. */
     void publish(Frame f) {
         latest.set(f);
-    }
-
-    /** Buffers allocated so far (writer side). */
-    int bufferCount() {
-        return buffers.length;
     }
 }

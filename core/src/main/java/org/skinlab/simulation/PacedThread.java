@@ -52,10 +52,6 @@ final class PacedThread {
         thread.start();
     }
 
-    Thread thread() {
-        return thread;
-    }
-
     boolean stopRequested() {
         return stopRequested;
     }

@@ -3,10 +3,6 @@ package org.skinlab.simulation;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Objects;
-import java.util.concurrent.TimeUnit;
-import java.util.concurrent.atomic.AtomicInteger;
-import java.util.concurrent.atomic.AtomicReference;
-import java.util.concurrent.locks.ReentrantLock;
 
 import org.skinlab.animation.AnimationSampler;
 import org.skinlab.model.AnimationClip;
@@ -14,7 +10,6 @@ import org.skinlab.model.Model;
 import org.skinlab.skinning.NormalTransform;
 import org.skinlab.skinning.SkinnedGeometry;
 import org.skinlab.skinning.SkinnedModel;
-import org.skinlab.skinning.SkinningGlsl;
 
 /**
  * A model playing one clip, simulated on its own thread (the thesis' {@code SkeletalAnimatedMesh},
@@ -30,7 +25,7 @@ import org.skinlab.skinning.SkinningGlsl;
  *     bone rows)
  *     into a free buffer and, with CPU skinning on, skins every geometry with the configured
  *     method into it too, then publishes it as the latest {@link Frame}. A stopped animation is
- *     still re-posed every step, so switching LBS/DQS or the interpolation shows at once; with
+ *     still re-posed every step, so switching the method or the interpolation shows at once; with
  *     mesh updates stopped nothing is posed or published and readers keep the last frame (the
  *     playback time still advances while the animation runs).</li>
  * </ol>
@@ -60,9 +55,10 @@ import org.skinlab.skinning.SkinningGlsl;
  * <p><b>Thread rules.</b> Every method may be called from any thread. {@link #start()},
  * {@link #stop()} and {@link #close()} are idempotent; stop and close return once the thread has
  * ended (unless called from the simulation thread itself, e.g. from the frame listener). Stepping
- * is serialised by one lock, so a thread that is still finishing its last step after a stop never
- * overlaps a new one. {@link #step(double)} refuses while the thread runs: two clocks driving one
- * playback would make its time meaningless. Interrupting the simulation thread stops it.
+ * is serialised by one lock ({@link SimulationThread}), so a thread that is still finishing its
+ * last step after a stop never overlaps a new one. {@link #step(double)} refuses while the thread
+ * runs: two clocks driving one playback would make its time meaningless. Interrupting the
+ * simulation thread stops it.
  *
  * <p><b>Failures.</b> Anything the simulation thread throws (a skinning bug, the frame listener,
  * which runs after the step lock is released) is kept in {@link #failure()}, the thread ends
@@ -70,7 +66,9 @@ import org.skinlab.skinning.SkinningGlsl;
  * refuse with the failure as the cause, so it cannot vanish. {@link #throwIfFailed()} lets a
  * render loop surface it.
  *
- * <p>In steady state a step allocates nothing.
+ * <p>Who does what: this class keeps the playback clock and publishes each step's frame;
+ * {@link FrameWriter} poses and skins into it, {@link FramePool} hands the buffers out, and
+ * {@link SimulationThread} decides when steps run. In steady state a step allocates nothing.
  */
 public final class SkeletalAnimatedMesh implements AutoCloseable {
     /** Steps per second unless {@link #setStepRate} says otherwise: a display's refresh rate. */
@@ -84,19 +82,16 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
     public static final double MAX_STEP_SECONDS = 0.25;
     /** Most buffers the frame pool grows to when many readers hold frames at once. */
     public static final int MAX_BUFFERS = 8;
-    /** How often a simulation thread waiting for the step lock checks whether it was stopped. */
-    private static final long LOCK_POLL_NANOS = TimeUnit.MILLISECONDS.toNanos(5);
-    private static final AtomicInteger THREAD_NUMBERS = new AtomicInteger();
 
     private final Model model;
     private final AnimationClip clip;
     private final AnimationConfig config;
-    private final int[] pointCounts;
-
-    // Simulation side: touched only while holding stepLock.
-    private final ReentrantLock stepLock = new ReentrantLock();
     private final SkinnedModel skinned;
+    private final SimulationThread thread;
+
+    // Simulation side: touched only inside a step or under SimulationThread.exclusively.
     private final AnimationSampler sampler;
+    private final FrameWriter writer;
     private final FramePool pool;
     private double playback;
     private long sequence;
@@ -106,14 +101,6 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
     private volatile long publishedSequence;
     private volatile long steps;
     private volatile long droppedFrames;
-    private volatile long periodNanos = Math.round(1e9 / DEFAULT_STEP_RATE);
-    private volatile Runnable frameListener;
-    private final AtomicReference<Throwable> failure = new AtomicReference<>();
-
-    // Thread lifecycle, guarded by `lifecycle` (never held while stepping or joining).
-    private final Object lifecycle = new Object();
-    private volatile PacedThread current;
-    private volatile boolean closed;
 
     /** The model's first clip (at rest if it has none), a fresh config, exact normals. */
     public static SkeletalAnimatedMesh of(Model model) {
@@ -149,39 +136,17 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
     }
 
     public SkeletalAnimatedMesh(Model model, AnimationClip clip, AnimationConfig config, NormalTransform normals) {
-        this(model, clip, config, normals, false);
-    }
-
-    /**
-     * @param publishInPlace test-only: write every step into the buffer readers are given (what the
-     *                       snapshot design exists to prevent), so the torn-frame test can show its
-     *                       check catches tearing
-     */
-    SkeletalAnimatedMesh(Model model, AnimationClip clip, AnimationConfig config, NormalTransform normals,
-            boolean publishInPlace) {
         this.model = Objects.requireNonNull(model, "model");
         this.clip = clip;
         this.config = Objects.requireNonNull(config, "config");
         this.skinned = new SkinnedModel(model, clip, Objects.requireNonNull(normals, "normals"));
         this.sampler = skinned.sampler();
-        List<SkinnedGeometry> geometries = skinned.geometries();
-        pointCounts = new int[geometries.size()];
-        int[] jointCounts = new int[pointCounts.length];
-        boolean[] morphing = new boolean[pointCounts.length];
-        for (int g = 0; g < pointCounts.length; g++) {
-            pointCounts[g] = geometries.get(g).pointCount();
-            jointCounts[g] = geometries.get(g).jointCount();
-            morphing[g] = skinned.morphs(g);
-        }
-        pool = new FramePool(pointCounts, jointCounts, morphing, MAX_BUFFERS, publishInPlace);
+        this.writer = new FrameWriter(skinned);
+        this.pool = writer.newPool(MAX_BUFFERS);
+        this.thread = new SimulationThread(describe(), this::advance);
         // Frame 0: the clip's start, so acquire() always has something to give, whatever the
         // switches say (no listener can be set yet).
-        stepLock.lock();
-        try {
-            publish(config.settings());
-        } finally {
-            stepLock.unlock();
-        }
+        thread.exclusively(() -> publish(config.settings()));
     }
 
     public Model model() {
@@ -203,6 +168,11 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
      */
     public List<SkinnedGeometry> geometries() {
         return skinned.geometries();
+    }
+
+    /** The clip's length in seconds (0 at rest, without a clip). */
+    public double clipDuration() {
+        return clip == null ? 0.0 : clip.duration();
     }
 
     // ------------------------------------------------------------------------------- readers
@@ -238,21 +208,18 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
 
     /** What ended the simulation thread, or null. */
     public Throwable failure() {
-        return failure.get();
+        return thread.failure();
     }
 
     /** Throws if the simulation thread has failed, with the failure as cause. */
     public void throwIfFailed() {
-        Throwable t = failure.get();
-        if (t != null) {
-            throw new IllegalStateException(describe() + ": simulation thread failed: " + t, t);
-        }
+        thread.throwIfFailed();
     }
 
     // ---------------------------------------------------------------------------- settings
 
     public double stepRate() {
-        return 1e9 / periodNanos;
+        return thread.stepRate();
     }
 
     /**
@@ -260,11 +227,7 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
      * any thread, any time; the running thread uses it from its next step on.
      */
     public void setStepRate(double stepsPerSecond) {
-        if (!(stepsPerSecond >= MIN_STEP_RATE && stepsPerSecond <= MAX_STEP_RATE)) {
-            throw new IllegalArgumentException("step rate " + stepsPerSecond + " outside [" + MIN_STEP_RATE + ", "
-                    + MAX_STEP_RATE + "] steps per second");
-        }
-        periodNanos = Math.round(1e9 / stepsPerSecond);
+        thread.setStepRate(stepsPerSecond);
     }
 
     /**
@@ -280,7 +243,7 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
      * published. Null for none.
      */
     public void setFrameListener(Runnable listener) {
-        frameListener = listener;
+        thread.setFrameListener(listener);
     }
 
     // ---------------------------------------------------------------------------- lifecycle
@@ -292,30 +255,12 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
      * @throws IllegalStateException after {@link #close()}, or after the thread failed
      */
     public boolean start() {
-        synchronized (lifecycle) {
-            if (closed) {
-                throw new IllegalStateException(describe() + ": closed, cannot start again");
-            }
-            Throwable t = failure.get();
-            if (t != null) {
-                throw new IllegalStateException(describe() + ": the simulation failed earlier: " + t, t);
-            }
-            PacedThread r = current;
-            if (r != null && r.isRunning()) {
-                return false;
-            }
-            PacedThread next = new PacedThread("skinlab-simulation-" + THREAD_NUMBERS.incrementAndGet(),
-                    () -> periodNanos, this::threadStep, thrown -> failure.compareAndSet(null, thrown));
-            current = next;
-            next.start();
-            return true;
-        }
+        return thread.start();
     }
 
     /** Whether the simulation thread runs (started, not stopped, not ended by failure or interrupt). */
     public boolean isRunning() {
-        PacedThread r = current;
-        return r != null && r.isRunning();
+        return thread.isRunning();
     }
 
     /**
@@ -325,31 +270,20 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
      * @return true if this call asked a running thread to stop
      */
     public boolean stop() {
-        PacedThread r;
-        boolean stopped;
-        synchronized (lifecycle) {
-            r = current;
-            if (r == null) {
-                return false;
-            }
-            stopped = r.requestStop();
-        }
-        r.awaitEnd();
-        return stopped;
+        return thread.stop();
     }
 
     /** Stops the thread (as {@link #stop()}) for good: start and step refuse afterwards. Idempotent. */
     @Override
     public void close() {
-        synchronized (lifecycle) {
-            closed = true;
-        }
-        stop();
+        thread.close();
     }
 
     public boolean isClosed() {
-        return closed;
+        return thread.isClosed();
     }
+
+    // ---------------------------------------------------------------------------- simulation
 
     /**
      * One simulation step on the caller's thread: advance playback by {@code dtSeconds} times the
@@ -362,22 +296,7 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
         if (!(dtSeconds >= 0) || Double.isInfinite(dtSeconds)) {
             throw new IllegalArgumentException("step of " + dtSeconds + " s (need a finite time >= 0)");
         }
-        boolean published;
-        stepLock.lock();
-        try {
-            if (closed) {
-                throw new IllegalStateException(describe() + ": closed, cannot step");
-            }
-            throwIfFailed();
-            if (isRunning()) {
-                throw new IllegalStateException(describe()
-                        + ": the simulation thread is running; stop() it before stepping by hand");
-            }
-            published = advance(dtSeconds);
-        } finally {
-            stepLock.unlock();
-        }
-        notifyListener(published);
+        thread.stepByHand(dtSeconds);
     }
 
     /**
@@ -393,39 +312,13 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
         if (Double.isNaN(seconds) || Double.isInfinite(seconds)) {
             throw new IllegalArgumentException("seek to " + seconds + " s (need a finite time)");
         }
-        stepLock.lock();
-        try {
+        thread.exclusively(() -> {
             playback = sampler.wrapElapsed(seconds, config.settings().wrapMode());
             playbackTime = playback;
-        } finally {
-            stepLock.unlock();
-        }
+        });
     }
 
-    /** The clip's length in seconds (0 at rest, without a clip). */
-    public double clipDuration() {
-        return clip == null ? 0.0 : clip.duration();
-    }
-
-    /** Buffers the frame pool holds so far (three, more while many readers hold frames). */
-    int bufferCount() {
-        stepLock.lock();
-        try {
-            return pool.bufferCount();
-        } finally {
-            stepLock.unlock();
-        }
-    }
-
-    /** The thread of the current runner, for tests; null before the first start. */
-    Thread simulationThread() {
-        PacedThread r = current;
-        return r == null ? null : r.thread();
-    }
-
-    // ---------------------------------------------------------------------------- simulation
-
-    /** One step; the caller holds stepLock. Returns whether it published a frame. */
+    /** One step (the caller holds the step lock): the clock, then the frame. True when it published one. */
     private boolean advance(double dt) {
         AnimationConfig.Settings s = config.settings();
         if (s.animationRunning()) {
@@ -437,8 +330,8 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
     }
 
     /**
-     * Poses, fills a free buffer with the palette (and, with CPU skinning, the skinned mesh) and
-     * publishes it; the caller holds stepLock. False when every buffer was held (dropped).
+     * Fills a free buffer with this step's frame and publishes it (the caller holds the step
+     * lock). False when every buffer was held (dropped).
      */
     private boolean publish(AnimationConfig.Settings s) {
         Frame f = pool.claim();
@@ -446,74 +339,11 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
             droppedFrames++;
             return false;
         }
-        float clipTime = sampler.clipTime(playback, s.wrapMode());
-        // A method the shaders cannot skin is skinned here whatever the switch says (SkinningGlsl.hasCode).
-        boolean cpuSkinned = s.cpuSkinning() || !SkinningGlsl.hasCode(s.method());
-        long t0 = System.nanoTime();
-        skinned.pose(clipTime, s.interpolation());
-        for (int g = 0; g < pointCounts.length; g++) {
-            // Dual quaternions and bone rows whatever the method: a split view may draw two methods from one frame.
-            f.copyPalette(g, skinned.prepareBones(g));
-            if (f.restPositions(g) != null) {
-                SkinnedGeometry geometry = skinned.geometries().get(g);
-                f.copyRestShape(g, geometry.positionArray(), geometry.normalArray());
-            }
-            if (cpuSkinned) {
-                skinned.skin(g, s.method(), f.positionsForWriting(g), f.normalsForWriting(g));
-            }
-        }
-        long nanos = System.nanoTime() - t0;
         long seq = sequence++;
-        f.describe(seq, playback, clipTime, s.method(), s.interpolation(), cpuSkinned, nanos);
+        writer.write(f, playback, s, seq);
         pool.publish(f);
         publishedSequence = seq;
         return true;
-    }
-
-    /**
-     * Runs the frame listener, if any, after a step that published; the caller must not hold
-     * stepLock, so a slow listener stalls neither the next step nor hand steps on other threads.
-     */
-    private void notifyListener(boolean published) {
-        Runnable listener = frameListener;
-        if (published && listener != null) {
-            listener.run();
-        }
-    }
-
-    /** One step of the simulation thread (see {@link PacedThread} for its pacing). */
-    private boolean threadStep(PacedThread r, double elapsedSeconds) {
-        if (!lockForStep(r)) {
-            return false;
-        }
-        boolean published;
-        try {
-            if (r.stopRequested()) {
-                return false;
-            }
-            published = advance(Math.min(elapsedSeconds, MAX_STEP_SECONDS));
-        } finally {
-            stepLock.unlock();
-        }
-        notifyListener(published); // what it throws ends the thread as failure()
-        return true;
-    }
-
-    /**
-     * Takes stepLock, polling for a stop while someone else steps, so that a {@link #stop()} does
-     * not have to wait for another thread's step to end first.
-     */
-    private boolean lockForStep(PacedThread r) {
-        try {
-            while (!stepLock.tryLock(LOCK_POLL_NANOS, TimeUnit.NANOSECONDS)) {
-                if (r.stopRequested()) {
-                    return false;
-                }
-            }
-            return true;
-        } catch (InterruptedException e) {
-            return false; // an interrupt stops the simulation thread
-        }
     }
 
     private String describe() {

@@ -4,6 +4,8 @@ import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.skinlab.animation.DualQuaternions.sameTransform;
+import static org.skinlab.animation.DualQuaternions.toMatrix;
 import static org.skinlab.animation.MathAssertions.S;
 import static org.skinlab.animation.MathAssertions.assertMatrixEquals;
 import static org.skinlab.animation.MathAssertions.assertSameRotation;
@@ -94,7 +96,7 @@ class DualQuaternionTest {
             // a * b applies b first, as the matrix product A B does.
             Matrix4f ab = new Matrix4f().translation(ta).rotate(ra).mul(new Matrix4f().translation(tb).rotate(rb));
             DualQuaternion product = a.mul(b, new DualQuaternion());
-            assertMatrixEquals(ab, AnimationHelper.toMatrix(product, new Matrix4f()), 2e-5);
+            assertMatrixEquals(ab, toMatrix(product, new Matrix4f()), 2e-5);
             Vector3f p = randomVector(random, 3);
             assertPoint(ab.transformPosition(new Vector3f(p)), product.transformPosition(new Vector3f(p)), 2e-5f);
             // JOML style: the destination may be either operand.
@@ -113,8 +115,8 @@ class DualQuaternionTest {
         for (int trial = 0; trial < 100; trial++) {
             DualQuaternion dq = of(AnimationHelperTest.randomRotation(random), randomVector(random, 5));
             DualQuaternion inverse = new DualQuaternion(dq).conjugate();
-            assertTrue(dq.mul(inverse, new DualQuaternion()).equalsTransform(new DualQuaternion(), 1e-6f));
-            assertTrue(inverse.mul(dq, new DualQuaternion()).equalsTransform(new DualQuaternion(), 1e-6f));
+            assertTrue(sameTransform(dq.mul(inverse, new DualQuaternion()), new DualQuaternion(), 1e-6f));
+            assertTrue(sameTransform(inverse.mul(dq, new DualQuaternion()), new DualQuaternion(), 1e-6f));
             Vector3f p = randomVector(random, 3);
             assertPoint(p, inverse.transformPosition(dq.transformPosition(new Vector3f(p))), POINT);
         }
@@ -140,23 +142,23 @@ class DualQuaternionTest {
             assertEquals(1, len, 1e-6);
             assertEquals(0, dq.rx * dq.dx + dq.ry * dq.dy + dq.rz * dq.dz + dq.rw * dq.dw, 1e-6);
             // Scaling does not change the transform; the part along r is what normalize removes.
-            assertTrue(dq.equalsTransform(unit, 1e-5f), dq + " vs " + unit);
+            assertTrue(sameTransform(dq, unit, 1e-5f), dq + " vs " + unit);
         }
     }
 
     @Test
     void normalizeOfZeroIsTheIdentity() {
         DualQuaternion zero = new DualQuaternion().scale(0);
-        assertTrue(zero.normalize().equalsTransform(new DualQuaternion(), 0f));
+        assertTrue(sameTransform(zero.normalize(), new DualQuaternion(), 0f));
     }
 
     @Test
     void blendEndsAtItsInputs() {
         DualQuaternion a = of(axisAngle(40, 1, 0, 0), new Vector3f(1, 2, 3));
         DualQuaternion b = of(axisAngle(-70, 0, 1, 1), new Vector3f(-3, 0, 2));
-        assertTrue(a.blend(b, 0, new DualQuaternion()).equalsTransform(a, 1e-6f));
-        assertTrue(a.blend(b, 1, new DualQuaternion()).equalsTransform(b, 1e-6f));
-        assertTrue(a.blend(negated(b), 1, new DualQuaternion()).equalsTransform(b, 1e-6f));
+        assertTrue(sameTransform(a.blend(b, 0, new DualQuaternion()), a, 1e-6f));
+        assertTrue(sameTransform(a.blend(b, 1, new DualQuaternion()), b, 1e-6f));
+        assertTrue(sameTransform(a.blend(negated(b), 1, new DualQuaternion()), b, 1e-6f));
     }
 
     @Test
@@ -177,7 +179,7 @@ class DualQuaternionTest {
         DualQuaternion a = new DualQuaternion();
         DualQuaternion b = of(axisAngle(90, 0, 0, 1), new Vector3f());
         DualQuaternion m = a.blend(b, 0.5f, new DualQuaternion());
-        assertTrue(m.equalsTransform(of(axisAngle(45, 0, 0, 1), new Vector3f()), 1e-6f), m.toString());
+        assertTrue(sameTransform(m, of(axisAngle(45, 0, 0, 1), new Vector3f()), 1e-6f), m.toString());
     }
 
     @Test
@@ -189,11 +191,11 @@ class DualQuaternionTest {
         for (float t : new float[] {0.1f, 0.5f, 0.8f}) {
             DualQuaternion direct = a.blend(b, t, new DualQuaternion());
             DualQuaternion viaNegated = a.blend(negated(b), t, new DualQuaternion());
-            assertTrue(direct.equalsTransform(viaNegated, 1e-6f), direct + " vs " + viaNegated);
+            assertTrue(sameTransform(direct, viaNegated, 1e-6f), direct + " vs " + viaNegated);
         }
         // a with -a: the same transform throughout.
         for (float t : new float[] {0.25f, 0.5f, 0.75f}) {
-            assertTrue(a.blend(negated(a), t, new DualQuaternion()).equalsTransform(a, 1e-6f));
+            assertTrue(sameTransform(a.blend(negated(a), t, new DualQuaternion()), a, 1e-6f));
         }
     }
 
@@ -211,14 +213,14 @@ class DualQuaternionTest {
     }
 
     @Test
-    void equalsTransformTreatsNegationAsEqualAndHonoursTheTolerance() {
+    void sameTransformTreatsNegationAsEqualAndHonoursTheTolerance() {
         DualQuaternion a = of(axisAngle(20, 1, 2, 3), new Vector3f(1, 0, 0));
-        assertTrue(a.equalsTransform(negated(a), 0f));
+        assertTrue(sameTransform(a, negated(a), 0f));
         DualQuaternion moved = new DualQuaternion(a);
         moved.dz += 1e-3f;
-        assertTrue(a.equalsTransform(moved, 2e-3f));
-        assertFalse(a.equalsTransform(moved, 5e-4f));
-        assertFalse(a.equalsTransform(of(axisAngle(21, 1, 2, 3), new Vector3f(1, 0, 0)), 1e-3f));
+        assertTrue(sameTransform(a, moved, 2e-3f));
+        assertFalse(sameTransform(a, moved, 5e-4f));
+        assertFalse(sameTransform(a, of(axisAngle(21, 1, 2, 3), new Vector3f(1, 0, 0)), 1e-3f));
     }
 
     @Test
@@ -245,15 +247,15 @@ class DualQuaternionTest {
             for (Vector3f t : translations) {
                 Matrix4f m = new Matrix4f().translation(t).rotate(r);
                 DualQuaternion dq = AnimationHelper.toDualQuaternion(m, new DualQuaternion());
-                assertTrue(dq.equalsTransform(of(r, t), 1e-6f * Math.max(1, t.length())), r + " " + t + ": " + dq);
-                assertMatrixEquals(m, AnimationHelper.toMatrix(dq, new Matrix4f()), 1e-6 * Math.max(1, t.length()));
+                assertTrue(sameTransform(dq, of(r, t), 1e-6f * Math.max(1, t.length())), r + " " + t + ": " + dq);
+                assertMatrixEquals(m, toMatrix(dq, new Matrix4f()), 1e-6 * Math.max(1, t.length()));
             }
         }
     }
 
     @Test
     void toMatrixOfTheIdentityIsTheIdentityMatrix() {
-        assertMatrixEquals(new Matrix4f(), AnimationHelper.toMatrix(new DualQuaternion(), new Matrix4f()), 0);
+        assertMatrixEquals(new Matrix4f(), toMatrix(new DualQuaternion(), new Matrix4f()), 0);
     }
 
     @Test
@@ -261,9 +263,9 @@ class DualQuaternionTest {
         // A blend result that is not unit: 2.5 (r + e d). The matrix is that of r + e d, not 6.25 R.
         DualQuaternion unit = of(axisAngle(90, 0, 0, 1), new Vector3f(2, 0, 0));
         Matrix4f expected = rows(0, -1, 0, 2, 1, 0, 0, 0, 0, 0, 1, 0);
-        assertMatrixEquals(expected, AnimationHelper.toMatrix(new DualQuaternion(unit).scale(2.5f), new Matrix4f()),
+        assertMatrixEquals(expected, toMatrix(new DualQuaternion(unit).scale(2.5f), new Matrix4f()),
                 1e-6);
-        assertMatrixEquals(expected, AnimationHelper.toMatrix(unit, new Matrix4f()), 1e-6);
+        assertMatrixEquals(expected, toMatrix(unit, new Matrix4f()), 1e-6);
     }
 
     @Test
@@ -272,6 +274,6 @@ class DualQuaternionTest {
         Matrix4f m = AnimationHelper.compose(new Vector3f(1, 2, 3), new Quaternionf(0, 0, S, S),
                 new Vector3f(2, 3, 4), new Matrix4f());
         DualQuaternion dq = AnimationHelper.toDualQuaternion(m, new DualQuaternion());
-        assertTrue(dq.equalsTransform(of(new Quaternionf(0, 0, S, S), new Vector3f(1, 2, 3)), 1e-6f), dq.toString());
+        assertTrue(sameTransform(dq, of(new Quaternionf(0, 0, S, S), new Vector3f(1, 2, 3)), 1e-6f), dq.toString());
     }
 }

@@ -3,7 +3,6 @@ package org.skinlab.collada;
 import static org.junit.jupiter.api.Assertions.assertTimeoutPreemptively;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assertions.fail;
-import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.io.ByteArrayInputStream;
 import java.io.IOException;
@@ -98,10 +97,9 @@ class ImportFuzzTest {
         String[] names = {"K01_simple_bone.dae", "M03_cube_empty_tags.dae", "S11_box_nested_animation.dae",
             "S12_library_animation_clips.dae", "S14_two_skinned_cubes.dae", "S15_leg_control_bones.dae",
             "T01_cinema4d.dae"};
-        Path corpus = TestPaths.corpusOrSkip();
+        TestPaths.corpusOrSkip();
         return Stream.of(names).map(name -> DynamicTest.dynamicTest(name, () -> {
-            Path file = corpus.resolve(name);
-            assumeTrue(Files.isRegularFile(file), () -> file + " not found: skipped");
+            Path file = TestPaths.corpusFileOrSkip(name);
             fuzz(name, Files.readString(file), 300, name.hashCode());
         }));
     }

@@ -1,5 +1,6 @@
 package org.skinlab.gltf;
 
+import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.io.IOException;
@@ -33,7 +34,10 @@ final class GltfSamples {
         return TestPaths.shared().resolve("gltf-samples");
     }
 
-    /** The sample file of that name in any sample's folder; skips the calling test when absent. */
+    /**
+     * The sample file of that name in any sample's folder; skips the calling test when the samples
+     * folder is absent, fails when the folder is there but lacks the file.
+     */
     static Path fileOrSkip(String fileName) throws IOException {
         Path folder = folder();
         assumeTrue(Files.isDirectory(folder), () -> "glTF samples folder " + folder + " not found (set "
@@ -44,8 +48,8 @@ final class GltfSamples {
                 && p.getFileName().toString().equals(fileName))) {
             found = files.sorted().findFirst();
         }
-        assumeTrue(found.isPresent(), () -> "glTF sample " + fileName + " not found under " + folder
-                + " (tools/gltf/gltf-samples.py says where it comes from): skipped");
+        assertTrue(found.isPresent(), () -> "glTF sample " + fileName + " not found under " + folder
+                + " although the samples folder is there (tools/gltf/gltf-samples.py says where it comes from)");
         return found.get();
     }
 }

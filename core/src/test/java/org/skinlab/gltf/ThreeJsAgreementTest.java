@@ -2,7 +2,6 @@ package org.skinlab.gltf;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.io.IOException;
 import java.io.InputStream;
@@ -88,8 +87,8 @@ class ThreeJsAgreementTest {
     @MethodSource("assets")
     void assetGlbAgreesWithThreeJs(String name) throws IOException, ImportException {
         List<Path> files = assetGlbs().stream().filter(p -> p.getFileName().toString().equals(name)).toList();
-        assumeTrue(files.size() == 1, () -> "assets/**/" + name + " not found (the assets' .glb export, "
-                + "assets/src): skipped");
+        assertEquals(1, files.size(), () -> "assets/**/" + name + " should be one file (the assets' .glb export, "
+                + "assets/src), found " + files);
         report(name, agreement(files.get(0), reference(assetReferences(), name)));
     }
 

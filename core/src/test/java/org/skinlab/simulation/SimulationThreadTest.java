@@ -2,7 +2,6 @@ package org.skinlab.simulation;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
-import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
@@ -11,11 +10,14 @@ import static org.junit.jupiter.api.Assertions.fail;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Set;
 import java.util.SplittableRandom;
+import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicReference;
 import java.util.concurrent.locks.LockSupport;
 import java.util.function.BooleanSupplier;
 
@@ -56,11 +58,54 @@ class SimulationThreadTest {
         return Thread.getAllStackTraces().keySet().stream().anyMatch(t -> t.isAlive() && t.getName().equals(name));
     }
 
+    /**
+     * A frame listener that notes the threads it runs on and then runs {@code then}. The listener
+     * runs on the thread that stepped, so after {@link SkeletalAnimatedMesh#start()} it meets the
+     * simulation thread: the tests watch that thread without the mesh handing it out.
+     */
+    private static final class ThreadWitness implements Runnable {
+        private final Runnable then;
+        private final Set<Thread> seen = ConcurrentHashMap.newKeySet();
+        private volatile Thread last;
+
+        ThreadWitness(Runnable then) {
+            this.then = then;
+        }
+
+        @Override
+        public void run() {
+            Thread t = Thread.currentThread();
+            seen.add(t);
+            last = t;
+            then.run();
+        }
+
+        /** Every thread the listener ran on so far. */
+        Set<Thread> seen() {
+            return Set.copyOf(seen);
+        }
+
+        /** Waits for a frame published by a simulation thread other than {@code previous}; returns that thread. */
+        Thread awaitSimulationThread(Thread previous) throws InterruptedException {
+            AtomicReference<Thread> found = new AtomicReference<>();
+            await("a frame from a new simulation thread", 5, () -> {
+                Thread t = last;
+                if (t != null && t != previous && t.getName().startsWith(THREAD_PREFIX)) {
+                    found.set(t);
+                }
+                return found.get() != null;
+            });
+            return found.get();
+        }
+    }
+
     @Test
     void closeStopsTheThreadAndStartAfterCloseFailsClearly() throws Exception {
         SkeletalAnimatedMesh mesh = ribbon(new AnimationConfig());
+        ThreadWitness witness = new ThreadWitness(() -> { });
+        mesh.setFrameListener(witness);
         assertTrue(mesh.start());
-        Thread thread = mesh.simulationThread();
+        Thread thread = witness.awaitSimulationThread(null);
         assertTrue(thread.isDaemon());
         assertTrue(thread.getName().startsWith(THREAD_PREFIX), thread.getName());
         assertTrue(liveThreadNamed(thread.getName()));
@@ -84,18 +129,22 @@ class SimulationThreadTest {
     @Test
     void startTwiceRunsOneThreadAndStopBeforeStartIsHarmless() throws Exception {
         try (SkeletalAnimatedMesh mesh = ribbon(new AnimationConfig())) {
+            ThreadWitness witness = new ThreadWitness(() -> { });
+            mesh.setFrameListener(witness);
             assertFalse(mesh.stop());
             assertTrue(mesh.start());
-            Thread first = mesh.simulationThread();
+            Thread first = witness.awaitSimulationThread(null);
             assertFalse(mesh.start());
-            assertSame(first, mesh.simulationThread());
+            long seen = mesh.latestSequence();
+            await("more steps", 5, () -> mesh.latestSequence() >= seen + 3);
+            assertEquals(Set.of(first), witness.seen(), "a second start began another thread");
             assertThrows(IllegalStateException.class, () -> mesh.step(0.1), "hand steps while the thread runs");
             assertTrue(mesh.stop());
             assertFalse(first.isAlive());
             assertFalse(mesh.stop());
             mesh.step(0.1); // allowed again once stopped
             assertTrue(mesh.start()); // and a stopped mesh restarts on a new thread
-            assertTrue(mesh.simulationThread() != first && mesh.isRunning());
+            assertTrue(witness.awaitSimulationThread(first) != first && mesh.isRunning());
         }
     }
 
@@ -109,12 +158,13 @@ class SimulationThreadTest {
         // widens the window in which a spammer's stop() waits for this thread while this thread
         // calls stop(): a stop() that held its lock while joining would deadlock here.
         AtomicInteger published = new AtomicInteger();
-        mesh.setFrameListener(() -> {
+        ThreadWitness witness = new ThreadWitness(() -> {
             if (published.incrementAndGet() % 8 == 0) {
                 LockSupport.parkNanos(200_000);
                 mesh.stop();
             }
         });
+        mesh.setFrameListener(witness);
         int threads = 6;
         int operations = 3000;
         ConcurrentLinkedQueue<Throwable> unexpected = new ConcurrentLinkedQueue<>();
@@ -192,9 +242,9 @@ class SimulationThreadTest {
         assertTrue(unexpected.isEmpty(), () -> "unexpected: " + unexpected);
         assertEquals(0, tornFrames.get());
         assertNull(mesh.failure());
-        Thread last = mesh.simulationThread();
         mesh.close();
-        assertTrue(last == null || !last.isAlive());
+        // Every thread that published (simulation threads, and the spammers' hand steps) has ended.
+        assertTrue(witness.seen().stream().noneMatch(Thread::isAlive), () -> "still alive: " + witness.seen());
         // Every thread any spammer started has ended: each was stopped (and joined) by a stop()
         // that returned, or by the close() above.
         assertFalse(Thread.getAllStackTraces().keySet().stream()
@@ -208,13 +258,14 @@ class SimulationThreadTest {
             mesh.setStepRate(1000);
             RuntimeException boom = new RuntimeException("boom from the frame listener");
             AtomicInteger calls = new AtomicInteger();
-            mesh.setFrameListener(() -> {
+            ThreadWitness witness = new ThreadWitness(() -> {
                 if (calls.incrementAndGet() == 5) {
                     throw boom;
                 }
             });
+            mesh.setFrameListener(witness);
             mesh.start();
-            Thread thread = mesh.simulationThread();
+            Thread thread = witness.awaitSimulationThread(null);
             await("the thread to end", 5, () -> !thread.isAlive());
             assertSame(boom, mesh.failure());
             assertFalse(mesh.isRunning());
@@ -233,8 +284,10 @@ class SimulationThreadTest {
     @Test
     void interruptingTheSimulationThreadStopsItAndItCanStartAgain() throws Exception {
         try (SkeletalAnimatedMesh mesh = ribbon(new AnimationConfig())) {
+            ThreadWitness witness = new ThreadWitness(() -> { });
+            mesh.setFrameListener(witness);
             mesh.start();
-            Thread thread = mesh.simulationThread();
+            Thread thread = witness.awaitSimulationThread(null);
             thread.interrupt();
             await("the interrupted thread to end", 5, () -> !thread.isAlive());
             assertFalse(mesh.isRunning());
@@ -322,6 +375,8 @@ class SimulationThreadTest {
         config.setInterpolation(RotationInterpolation.NLERP);
         try (SkeletalAnimatedMesh mesh = SkeletalAnimatedMesh.of(model, model.clips().get(0).name(), config)) {
             FrameChecker checker = new FrameChecker(model, mesh.clip(), false);
+            ThreadWitness witness = new ThreadWitness(() -> { });
+            mesh.setFrameListener(witness);
             long first;
             float firstTime;
             float[] firstPositions;
@@ -352,7 +407,8 @@ class SimulationThreadTest {
                 assertTrue(f.skinningNanos() > 0);
             }
             assertNull(mesh.failure());
-            assertNotNull(mesh.simulationThread());
+            assertTrue(witness.seen().stream().anyMatch(t -> t.getName().startsWith(THREAD_PREFIX)),
+                    () -> "no frame came from a simulation thread: " + witness.seen());
         }
     }
 }

@@ -9,6 +9,7 @@ import java.util.SplittableRandom;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.concurrent.locks.LockSupport;
+import java.util.function.Supplier;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
@@ -16,6 +17,7 @@ import org.skinlab.animation.RotationInterpolation;
 import org.skinlab.animation.WrapMode;
 import org.skinlab.model.Model;
 import org.skinlab.skinning.NormalTransform;
+import org.skinlab.skinning.SkinnedModel;
 import org.skinlab.skinning.SkinningGlsl;
 import org.skinlab.skinning.SkinningMethod;
 
@@ -24,9 +26,9 @@ import org.skinlab.skinning.SkinningMethod;
  * thread flips every switch at random (CPU skinning included, so about half the frames are
  * palette-only); {@link FrameChecker} recomputes each snapshot's palette and mesh from the step
  * it claims to be and demands bit-for-bit equality, so a frame mixing two steps fails the test.
- * The last tests run the same harness against a mesh that writes into the published buffer (the
- * race the snapshot design prevents) and require the checker to catch it, the palette check and
- * the mesh check each on its own: the checks can fail.
+ * The last tests run the same harness against a writer that fills the published buffer in place
+ * ({@link InPlaceWriter}: the race the snapshot design prevents) and require the checker to catch
+ * it, the palette check and the mesh check each on its own: the checks can fail.
  */
 class TornFrameTest {
     private static final int SNAPSHOTS = 100_000;
@@ -51,11 +53,49 @@ class TornFrameTest {
         }
     }
 
+    /**
+     * A writer without the snapshot protocol: every step is skinned straight into the one buffer
+     * readers are given (the thesis' design without its mutex), with the mesh's clock rule. It
+     * spends most of its time inside that write, so readers land in half-written frames, on two
+     * cores or one (a writer preempted mid-frame leaves its frame half-written for the whole time
+     * slice).
+     */
+    private static final class InPlaceWriter {
+        private final AnimationConfig config;
+        private final SkinnedModel skinned = new SkinnedModel(RIBBON, RIBBON.clips().get(0),
+                NormalTransform.INVERSE_TRANSPOSE);
+        private final FrameWriter writer = new FrameWriter(skinned);
+        /** One buffer, published once: readers lease it while the writer keeps filling it. */
+        private final FramePool pool = writer.newPool(1);
+        private final Frame shared = pool.claim();
+        private double playback;
+        private long sequence;
+
+        InPlaceWriter(AnimationConfig config) {
+            this.config = config;
+            writer.write(shared, playback, config.settings(), sequence++);
+            pool.publish(shared);
+        }
+
+        void step() {
+            AnimationConfig.Settings s = config.settings();
+            if (s.animationRunning()) {
+                playback = skinned.sampler().wrapElapsed(playback + 0.001 * s.speed(), s.wrapMode());
+            }
+            writer.write(shared, playback, s, sequence++);
+        }
+
+        Frame acquire() {
+            return pool.acquire();
+        }
+    }
+
     @Test
     @Timeout(value = 60, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
     void readerNeverSeesATornFrameWhileStepsRunFlatOutOnAnotherThread() throws Exception {
         try (SkeletalAnimatedMesh mesh = new SkeletalAnimatedMesh(RIBBON, RIBBON.clips().get(0), new AnimationConfig())) {
-            Result r = hammer(mesh, false, true, SNAPSHOTS, Integer.MAX_VALUE);
+            Result r = hammer(mesh.config(), mesh::acquire, () -> mesh.step(0.001), true, SNAPSHOTS,
+                    Integer.MAX_VALUE);
             assertClean(r);
         }
     }
@@ -65,7 +105,13 @@ class TornFrameTest {
     void readerNeverSeesATornFrameFromTheSimulationThread() throws Exception {
         try (SkeletalAnimatedMesh mesh = new SkeletalAnimatedMesh(RIBBON, RIBBON.clips().get(0), new AnimationConfig())) {
             mesh.setStepRate(SkeletalAnimatedMesh.MAX_STEP_RATE);
-            Result r = hammer(mesh, true, true, SNAPSHOTS, Integer.MAX_VALUE);
+            mesh.start();
+            Result r;
+            try {
+                r = hammer(mesh.config(), mesh::acquire, null, true, SNAPSHOTS, Integer.MAX_VALUE);
+            } finally {
+                mesh.stop();
+            }
             assertClean(r);
             assertTrue(mesh.failure() == null, () -> "simulation failed: " + mesh.failure());
         }
@@ -74,18 +120,12 @@ class TornFrameTest {
     @Test
     @Timeout(value = 60, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
     void theCheckCatchesTornFramesWhenTheSimulationWritesIntoThePublishedBuffer() throws Exception {
-        // The same harness, but every step is skinned straight into the buffer readers hold (the
-        // thesis' design without its mutex). The writer spends most of its time inside that write,
-        // so readers land in half-written frames, on two cores or one (a writer preempted mid-frame
-        // leaves its frame half-written for the whole time slice).
-        try (SkeletalAnimatedMesh mesh = new SkeletalAnimatedMesh(RIBBON, RIBBON.clips().get(0), new AnimationConfig(),
-                NormalTransform.INVERSE_TRANSPOSE, true)) {
-            Result r = hammer(mesh, false, false, SNAPSHOTS, 20);
-            assertTrue(r.tornMeshes() > 0, () -> "no torn mesh detected in " + r.snapshots() + " snapshots of "
-                    + r.distinctFrames() + " frames written in place: the mesh check would not notice tearing");
-            assertTrue(r.tornPalettes() > 0, () -> "no torn palette detected in " + r.snapshots() + " snapshots of "
-                    + r.distinctFrames() + " frames written in place: the palette check would not notice tearing");
-        }
+        InPlaceWriter inPlace = new InPlaceWriter(new AnimationConfig());
+        Result r = hammer(inPlace.config, inPlace::acquire, inPlace::step, false, SNAPSHOTS, 20);
+        assertTrue(r.tornMeshes() > 0, () -> "no torn mesh detected in " + r.snapshots() + " snapshots of "
+                + r.distinctFrames() + " frames written in place: the mesh check would not notice tearing");
+        assertTrue(r.tornPalettes() > 0, () -> "no torn palette detected in " + r.snapshots() + " snapshots of "
+                + r.distinctFrames() + " frames written in place: the palette check would not notice tearing");
     }
 
     @Test
@@ -94,13 +134,11 @@ class TornFrameTest {
         // Palette-only frames have no mesh to compare: the palette check alone must see the tearing.
         AnimationConfig config = new AnimationConfig();
         config.setCpuSkinning(false);
-        try (SkeletalAnimatedMesh mesh = new SkeletalAnimatedMesh(RIBBON, RIBBON.clips().get(0), config,
-                NormalTransform.INVERSE_TRANSPOSE, true)) {
-            Result r = hammer(mesh, false, false, SNAPSHOTS, 20);
-            assertEquals(0, r.skinnedFrames(), "a frame had a mesh although CPU skinning stayed off");
-            assertTrue(r.tornPalettes() > 0, () -> "no torn palette detected in " + r.snapshots() + " snapshots of "
-                    + r.distinctFrames() + " palette-only frames written in place");
-        }
+        InPlaceWriter inPlace = new InPlaceWriter(config);
+        Result r = hammer(config, inPlace::acquire, inPlace::step, false, SNAPSHOTS, 20);
+        assertEquals(0, r.skinnedFrames(), "a frame had a mesh although CPU skinning stayed off");
+        assertTrue(r.tornPalettes() > 0, () -> "no torn palette detected in " + r.snapshots() + " snapshots of "
+                + r.distinctFrames() + " palette-only frames written in place");
     }
 
     private static void assertClean(Result r) {
@@ -117,25 +155,23 @@ class TornFrameTest {
     }
 
     /**
-     * Runs a writer (the simulation thread, or a thread stepping by hand as fast as it can) and a
-     * settings flipper (CPU skinning among its switches if {@code flipCpuSkinning}) while this
-     * thread takes at least {@code snapshots} snapshots and checks each, going on until it has
-     * seen {@link #MIN_DISTINCT_FRAMES} frames (or {@link #READ_NANOS} passed); stops early once
-     * {@code maxTorn} torn palettes and as many torn meshes (if any frame had a mesh) were seen.
+     * Runs a writer ({@code writerStep} over and over on a thread of its own, or nothing when the
+     * simulation thread already runs) and a settings flipper (CPU skinning among its switches if
+     * {@code flipCpuSkinning}) while this thread takes at least {@code snapshots} snapshots from
+     * {@code reader} and checks each, going on until it has seen {@link #MIN_DISTINCT_FRAMES}
+     * frames (or {@link #READ_NANOS} passed); stops early once {@code maxTorn} torn palettes and as
+     * many torn meshes (if any frame had a mesh) were seen.
      */
-    private static Result hammer(SkeletalAnimatedMesh mesh, boolean useThread, boolean flipCpuSkinning,
-            int snapshots, int maxTorn) throws InterruptedException {
-        AnimationConfig config = mesh.config();
+    private static Result hammer(AnimationConfig config, Supplier<Frame> reader, Runnable writerStep,
+            boolean flipCpuSkinning, int snapshots, int maxTorn) throws InterruptedException {
         AtomicBoolean done = new AtomicBoolean();
         AtomicReference<Throwable> helperFailure = new AtomicReference<>();
         Thread writer = null;
-        if (useThread) {
-            mesh.start();
-        } else {
+        if (writerStep != null) {
             writer = new Thread(() -> {
                 try {
                     while (!done.get()) {
-                        mesh.step(0.001);
+                        writerStep.run();
                     }
                 } catch (Throwable t) {
                     helperFailure.compareAndSet(null, t);
@@ -168,7 +204,7 @@ class TornFrameTest {
         }, "test-flipper");
         flipper.start();
 
-        FrameChecker checker = FrameChecker.ribbon(mesh.model());
+        FrameChecker checker = FrameChecker.ribbon(RIBBON);
         int tornPalettes = 0;
         int tornMeshes = 0;
         int skinned = 0;
@@ -184,7 +220,7 @@ class TornFrameTest {
         try {
             while ((taken < snapshots || distinct < MIN_DISTINCT_FRAMES && System.nanoTime() - giveUp < 0)
                     && !(tornPalettes >= maxTorn && (tornMeshes >= maxTorn || skinned == 0))) {
-                try (Frame frame = mesh.acquire()) {
+                try (Frame frame = reader.get()) {
                     taken++;
                     if (!frame.hasSkinnedMesh()) {
                         paletteOnly++;
@@ -219,7 +255,6 @@ class TornFrameTest {
             if (writer != null) {
                 writer.join();
             }
-            mesh.stop();
         }
         if (helperFailure.get() != null) {
             throw new AssertionError("a helper thread failed", helperFailure.get());

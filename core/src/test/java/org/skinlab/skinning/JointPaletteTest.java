@@ -19,6 +19,7 @@ import org.joml.Vector4d;
 import org.junit.jupiter.api.Test;
 import org.skinlab.animation.AnimationHelper;
 import org.skinlab.animation.DualQuaternion;
+import org.skinlab.animation.DualQuaternions;
 
 /**
  * {@link JointPalette#prepareDualQuaternions()}: the split {@code M = D S} of the class comment,
@@ -171,7 +172,7 @@ class JointPaletteTest {
 
     private static Matrix4d rigidPart(JointPalette palette, int j) {
         DualQuaternion dq = new DualQuaternion().set(palette.dualQuaternions(), 8 * j);
-        return new Matrix4d(AnimationHelper.toMatrix(dq, new Matrix4f()));
+        return new Matrix4d(DualQuaternions.toMatrix(dq, new Matrix4f()));
     }
 
     private static void assertMatrixEquals(Matrix4d expected, Matrix4d actual, String what) {

@@ -1,9 +1,11 @@
 package org.skinlab.testing;
 
+import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Optional;
 
 /**
  * Where tests find the repository and the shared folder beside it. The build passes
@@ -44,16 +46,33 @@ public final class TestPaths {
      * reason) when it is absent.
      */
     public static Path corpusOrSkip() {
-        Path corpus = shared().resolve("corpus");
+        Path corpus = corpus();
         assumeTrue(Files.isDirectory(corpus), () -> "shared corpus not found at " + corpus
                 + ": third-party conformance tests skipped");
         return corpus;
     }
 
-    /** One corpus file; skips the calling test when the corpus is absent. */
+    /**
+     * One corpus file, or empty when the corpus is absent. Fails when the corpus is there but
+     * lacks the file: a broken corpus must not pass for an absent one.
+     */
+    public static Optional<Path> corpusFile(String name) {
+        Path corpus = corpus();
+        if (!Files.isDirectory(corpus)) {
+            return Optional.empty();
+        }
+        Path file = corpus.resolve(name);
+        assertTrue(Files.isRegularFile(file), () -> "the shared corpus at " + corpus + " has no " + name);
+        return Optional.of(file);
+    }
+
+    /** One corpus file; skips the calling test when the corpus is absent, fails when it lacks the file. */
     public static Path corpusFileOrSkip(String name) {
-        Path file = corpusOrSkip().resolve(name);
-        assumeTrue(Files.isRegularFile(file), () -> "corpus file " + file + " not found: test skipped");
-        return file;
+        corpusOrSkip();
+        return corpusFile(name).orElseThrow();
+    }
+
+    private static Path corpus() {
+        return shared().resolve("corpus");
     }
 }

@@ -9,7 +9,6 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 
-import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.skinlab.desktop.render.GlTestDisplay;
@@ -60,8 +59,7 @@ class CheckGpuCommandTest {
 
     @Test
     void aSixInfluenceCharacterToo() {
-        Path cowboy = Cli.shared().resolve("corpus/S01_cowboy.dae");
-        Assumptions.assumeTrue(Files.isRegularFile(cowboy), "skipped: " + cowboy + " is absent (the shared corpus)");
+        Path cowboy = Cli.corpusFileOrSkip("S01_cowboy.dae");
         assertAllOk(Cli.run("check-gpu", "--time", "0,0.3,0.9,1.7", cowboy.toString()), 1);
     }
 

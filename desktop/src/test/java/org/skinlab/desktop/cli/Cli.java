@@ -1,11 +1,13 @@
 package org.skinlab.desktop.cli;
 
+import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.io.PrintWriter;
 import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Optional;
 
 /** Runs the command line in this JVM and keeps what it printed. */
 final class Cli {
@@ -75,6 +77,26 @@ final class Cli {
         assumeTrue(Files.isDirectory(corpus), () -> "shared corpus not found at " + corpus
                 + ": third-party corpus test skipped");
         return corpus;
+    }
+
+    /**
+     * One corpus file, or empty when the corpus is absent. Fails when the corpus is there but
+     * lacks the file: a broken corpus must not pass for an absent one.
+     */
+    static Optional<Path> corpusFile(String name) {
+        Path corpus = shared().resolve("corpus");
+        if (!Files.isDirectory(corpus)) {
+            return Optional.empty();
+        }
+        Path file = corpus.resolve(name);
+        assertTrue(Files.isRegularFile(file), () -> "the shared corpus at " + corpus + " has no " + name);
+        return Optional.of(file);
+    }
+
+    /** One corpus file; skips the calling test when the corpus is absent, fails when it lacks the file. */
+    static Path corpusFileOrSkip(String name) {
+        corpusOrSkip();
+        return corpusFile(name).orElseThrow();
     }
 
     /** The default asset, as an absolute path. */

@@ -4,7 +4,6 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -39,7 +38,7 @@ class EvalCrowdsTest {
         int cores = Runtime.getRuntime().availableProcessors();
         assertEquals(cores, r.get("cores").asInt());
         assertEquals(1000.0 / 60, r.get("frameBudgetMillis").asDouble(), 1e-3);
-        boolean cowboy = Files.isRegularFile(Cli.shared().resolve("corpus/S01_cowboy.dae"));
+        boolean cowboy = Cli.corpusFile("S01_cowboy.dae").isPresent();
         assertEquals(cowboy ? 2 : 1, r.get("models").size(), r.toString());
         assertEquals(!cowboy, r.has("cowboySkipped"));
 

@@ -1,0 +1,59 @@
+package org.skinlab.simulation;
+
+import org.skinlab.skinning.SkinnedGeometry;
+import org.skinlab.skinning.SkinnedModel;
+import org.skinlab.skinning.SkinningGlsl;
+
+/**
+ * The per-frame work of a step: poses a {@link SkinnedModel} at a playback time and fills a
+ * {@link Frame} with every geometry's joint palette and, when the mesh is skinned on the CPU, the
+ * skinned mesh. It writes whichever frame it is given; which buffer that may be is
+ * {@link FramePool}'s rule. Not thread-safe (the model holds the pose): one step at a time.
+ * Allocates nothing.
+ */
+final class FrameWriter {
+    private final SkinnedModel skinned;
+
+    FrameWriter(SkinnedModel skinned) {
+        this.skinned = skinned;
+    }
+
+    /** A pool of frames shaped for this model's geometries. */
+    FramePool newPool(int maxBuffers) {
+        int n = skinned.geometries().size();
+        int[] pointCounts = new int[n];
+        int[] jointCounts = new int[n];
+        boolean[] morphing = new boolean[n];
+        for (int g = 0; g < n; g++) {
+            pointCounts[g] = skinned.geometries().get(g).pointCount();
+            jointCounts[g] = skinned.geometries().get(g).jointCount();
+            morphing[g] = skinned.morphs(g);
+        }
+        return new FramePool(pointCounts, jointCounts, morphing, maxBuffers);
+    }
+
+    /**
+     * Poses the model at {@code playback} (seconds since the clip's start, brought into the clip as
+     * {@code s.wrapMode()} says) and fills {@code f} as step {@code sequence} under {@code s}.
+     */
+    void write(Frame f, double playback, AnimationConfig.Settings s, long sequence) {
+        float clipTime = skinned.sampler().clipTime(playback, s.wrapMode());
+        // A method the shaders cannot skin is skinned here whatever the switch says (SkinningGlsl.hasCode).
+        boolean cpuSkinned = s.cpuSkinning() || !SkinningGlsl.hasCode(s.method());
+        long t0 = System.nanoTime();
+        skinned.pose(clipTime, s.interpolation());
+        for (int g = 0; g < f.geometryCount(); g++) {
+            // Dual quaternions and bone rows whatever the method: a split view may draw two methods from one frame.
+            f.copyPalette(g, skinned.prepareBones(g));
+            if (f.restPositions(g) != null) {
+                SkinnedGeometry geometry = skinned.geometries().get(g);
+                f.copyRestShape(g, geometry.positionArray(), geometry.normalArray());
+            }
+            if (cpuSkinned) {
+                skinned.skin(g, s.method(), f.positionsForWriting(g), f.normalsForWriting(g));
+            }
+        }
+        long nanos = System.nanoTime() - t0;
+        f.describe(sequence, playback, clipTime, s.method(), s.interpolation(), cpuSkinned, nanos);
+    }
+}
