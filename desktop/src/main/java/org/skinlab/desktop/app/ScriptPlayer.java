@@ -11,6 +11,7 @@ import org.lwjgl.glfw.GLFWMouseButtonCallback;
 import org.lwjgl.glfw.GLFWScrollCallback;
 import org.lwjgl.system.MemoryStack;
 import org.skinlab.desktop.render.GlWindow;
+import org.skinlab.desktop.ui.UserInterface;
 import org.skinlab.desktop.viewer.LoadedModel;
 import org.skinlab.desktop.viewer.Viewer;
 import org.skinlab.desktop.viewer.ViewerAction;
@@ -29,7 +30,7 @@ final class ScriptPlayer {
     private final GlWindow window;
     private final SkinlabApp app;
     private final Viewer viewer;
-    private final AppUi ui;
+    private final UserInterface ui;
     private int next;
     private int waitFrames;
     /** Frames waited for a load; -1 when not waiting. A script starts once the first model is shown. */
@@ -39,7 +40,7 @@ final class ScriptPlayer {
     private String failure;
     private boolean entered;
 
-    ScriptPlayer(UiScript script, GlWindow window, SkinlabApp app, Viewer viewer, AppUi ui) {
+    ScriptPlayer(UiScript script, GlWindow window, SkinlabApp app, Viewer viewer, UserInterface ui) {
         this.script = script;
         this.window = window;
         this.app = app;

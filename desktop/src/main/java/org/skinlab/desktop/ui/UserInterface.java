@@ -1,15 +1,18 @@
-package org.skinlab.desktop.app;
+package org.skinlab.desktop.ui;
 
 /**
- * The window's user interface drawn over the scene (the ImGui toolbar, help and plots), seen from
- * the render loop. Called on the window's thread only.
+ * The window's user interface around the scene (the ImGui toolbar, numbers, help and status
+ * line), seen from the render loop. Called on the window's thread only.
  */
-public interface AppUi extends AutoCloseable {
-    /** Builds and draws the interface for this frame, over the scene already drawn. */
-    void render(AppFrame frame);
+public interface UserInterface extends AutoCloseable {
+    /**
+     * Places the panels for a framebuffer of {@code width x height} pixels and puts the part they
+     * leave free into {@code area}: the scene is drawn there, so no panel covers the model.
+     */
+    void layOut(int width, int height, SceneArea area);
 
-    /** Window pixels at the left the interface keeps for itself (the toolbar beside the scene). */
-    int reservedLeft();
+    /** Builds and draws the interface for this frame, over the scene already drawn. */
+    void render(SceneReadout scene);
 
     /** Whether the interface uses the mouse now (then the camera ignores it). */
     boolean wantsMouse();
@@ -26,15 +29,15 @@ public interface AppUi extends AutoCloseable {
     @Override
     void close();
 
-    /** No interface: the scene only (--hide-ui, headless pictures). */
-    AppUi NONE = new AppUi() {
+    /** No interface: the scene takes the whole window (--hide-ui, headless pictures). */
+    UserInterface NONE = new UserInterface() {
         @Override
-        public void render(AppFrame frame) {
+        public void layOut(int width, int height, SceneArea area) {
+            area.set(0, 0, width, height);
         }
 
         @Override
-        public int reservedLeft() {
-            return 0;
+        public void render(SceneReadout scene) {
         }
 
         @Override
