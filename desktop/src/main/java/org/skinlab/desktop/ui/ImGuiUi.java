@@ -87,7 +87,7 @@ public final class ImGuiUi implements UserInterface {
         return scale > 0 ? scale : 1f;
     }
 
-    /** Names the method of each view at its bottom centre (the split view's two halves). */
+    /** Names the method of each view in the row under it (the split view's two halves). */
     private static void labelViews(SceneReadout s) {
         if (!s.drewMesh()) {
             return;
@@ -100,7 +100,7 @@ public final class ImGuiUi implements UserInterface {
         for (int v = 0; v < s.views(); v++) {
             String label = VIEW_LABELS[s.viewMethod(v).ordinal()][s.viewOnCpu(v) ? 1 : 0];
             float x = left + v * viewWidth + (viewWidth - ImGui.calcTextSizeX(label)) / 2;
-            float y = bottom - 3 * ImGui.getFrameHeight();
+            float y = bottom + (PanelLayout.labelRow(ImGui.getFrameHeight()) - ImGui.getFontSize()) / 2;
             ImGui.getForegroundDrawList().addText(x, y, 0xFFFFFFFF, label);
         }
     }

@@ -6,7 +6,8 @@ package org.skinlab.desktop.ui;
  * the scene does not reach, and the status line sits under the toolbar, wrapped to its width. A
  * panel whose column would leave the scene less than {@value #MIN_SCENE_SHARE} of the window's
  * width collapses to its title bar (a click opens it again, over the scene); collapsed title bars
- * form a band along the top, and the scene starts below it. Panel sizes are those measured when
+ * form a band along the top, and the scene starts below it. The views' labels get a row of their
+ * own under the scene. Panel sizes are those measured when
  * each was last drawn open, so a collapsed panel keeps the size it would open to.
  */
 final class PanelLayout {
@@ -43,9 +44,15 @@ final class PanelLayout {
         sceneRight = numbers ? width - (numbersWidth + 2 * MARGIN) : width;
         sceneTop = toolbar && numbers ? 0f : titleHeight + 2 * MARGIN;
         // Under a collapsed toolbar the status line spans the bottom, below the scene.
-        sceneBottom = toolbar ? height : height - status - MARGIN;
+        float below = toolbar ? 0f : status + MARGIN;
+        sceneBottom = height - below - labelRow(titleHeight);
         toolbarMaxHeight = Math.max(titleHeight, height - 2 * MARGIN - status);
         statusWidth = toolbar ? Math.max(toolbarWidth, 1f) : width - 2 * MARGIN;
+    }
+
+    /** The height of the row under the scene that holds the views' labels (one line of text). */
+    static float labelRow(float lineHeight) {
+        return lineHeight + MARGIN;
     }
 
     /** Records the toolbar's width as drawn open. */

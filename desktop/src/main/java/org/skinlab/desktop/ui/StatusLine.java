@@ -1,7 +1,6 @@
 package org.skinlab.desktop.ui;
 
 import imgui.ImGui;
-import imgui.ImGuiStyle;
 import imgui.flag.ImGuiCond;
 import imgui.flag.ImGuiWindowFlags;
 
@@ -16,15 +15,17 @@ final class StatusLine {
             layout.statusMeasured(0f);
             return;
         }
-        ImGuiStyle style = ImGui.getStyle();
-        float width = layout.statusWidth();
+        float padding = ImGui.getStyle().getWindowPaddingX();
+        // The width is set, not fitted: a fitted window takes the last frame's width, which would
+        // clip this frame's text when the layout widens it.
+        float width = Math.min(ImGui.calcTextSizeX(message) + 2 * padding, layout.statusWidth());
         ImGui.setNextWindowPos(PanelLayout.MARGIN, ImGui.getIO().getDisplaySizeY() - PanelLayout.MARGIN,
                 ImGuiCond.Always, 0f, 1f);
-        ImGui.setNextWindowSizeConstraints(0f, 0f, width, Float.MAX_VALUE);
+        ImGui.setNextWindowSizeConstraints(width, 0f, width, Float.MAX_VALUE);
         ImGui.setNextWindowBgAlpha(0.7f);
         ImGui.begin("status", ImGuiWindowFlags.NoDecoration | ImGuiWindowFlags.AlwaysAutoResize
                 | ImGuiWindowFlags.NoMove | ImGuiWindowFlags.NoFocusOnAppearing | ImGuiWindowFlags.NoNav);
-        ImGui.pushTextWrapPos(width - style.getWindowPaddingX());
+        ImGui.pushTextWrapPos(width - padding);
         ImGui.textUnformatted(message);
         ImGui.popTextWrapPos();
         layout.statusMeasured(ImGui.getWindowHeight());

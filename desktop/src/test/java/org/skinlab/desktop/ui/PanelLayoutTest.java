@@ -29,7 +29,8 @@ class PanelLayoutTest {
         assertEquals(TOOLBAR + 2 * PanelLayout.MARGIN, layout.sceneLeft());
         assertEquals(1280 - NUMBERS - 2 * PanelLayout.MARGIN, layout.sceneRight());
         assertEquals(0f, layout.sceneTop());
-        assertEquals(800f, layout.sceneBottom());
+        // Under the scene, the row of the views' labels.
+        assertEquals(800 - TITLE - PanelLayout.MARGIN, layout.sceneBottom());
         // The status line keeps its place under the toolbar.
         assertEquals(800 - 2 * PanelLayout.MARGIN - STATUS - PanelLayout.MARGIN, layout.toolbarMaxHeight());
         assertEquals(TOOLBAR, layout.statusWidth());
@@ -59,7 +60,7 @@ class PanelLayoutTest {
         assertFalse(layout.numbersOpen());
         assertEquals(0f, layout.sceneLeft());
         assertEquals(480f, layout.sceneRight());
-        assertEquals(400 - STATUS - 2 * PanelLayout.MARGIN, layout.sceneBottom());
+        assertEquals(400 - STATUS - 2 * PanelLayout.MARGIN - (TITLE + PanelLayout.MARGIN), layout.sceneBottom());
         assertEquals(480 - 2 * PanelLayout.MARGIN, layout.statusWidth());
     }
 }
