@@ -11,6 +11,7 @@ import org.skinlab.desktop.render.GlWindow;
 import org.skinlab.desktop.render.ModelRenderer;
 import org.skinlab.desktop.render.SkinningShader;
 import org.skinlab.desktop.render.TextureCache;
+import org.skinlab.desktop.ui.SceneArea;
 import org.skinlab.desktop.viewer.LoadedModel;
 import org.skinlab.desktop.viewer.Viewer;
 import org.skinlab.simulation.AnimationConfig;
@@ -23,14 +24,14 @@ import org.skinlab.skinning.SkinningMethod;
  * viewer shows another model), then from one simulation {@link Frame} the model in one view, the
  * split view's two, or on the marker over the camera image (AR), with the floor, skeleton and
  * difference colours the viewer's switches ask for; the numbers it measures go into the
- * {@link AppFrame} the interface shows. GL thread only.
+ * {@link MutableSceneReadout} the interface shows. GL thread only.
  */
 final class ScenePainter implements AutoCloseable {
     private final GlWindow window;
     private final Viewer viewer;
     private final AnimationConfig config;
     private final SkinningMethod splitMethod;
-    private final AppFrame info;
+    private final MutableSceneReadout info;
     /** The AR mode's camera background and marker placement ({@code skinlab ar}), or null. */
     private final ArPresenter ar;
     private final SkinningShader shader = new SkinningShader();
@@ -43,9 +44,9 @@ final class ScenePainter implements AutoCloseable {
     private DifferenceProbe difference;
     private int width;
     private int height;
-    private int left;
+    private SceneArea area;
 
-    ScenePainter(GlWindow window, Viewer viewer, AnimationConfig config, SkinningMethod splitMethod, AppFrame info,
+    ScenePainter(GlWindow window, Viewer viewer, AnimationConfig config, SkinningMethod splitMethod, MutableSceneReadout info,
             ArPresenter ar) {
         this.window = window;
         this.viewer = viewer;
@@ -66,15 +67,13 @@ final class ScenePainter implements AutoCloseable {
     }
 
     /**
-     * Draws the scene into a framebuffer of {@code width x height} whose left {@code reserved}
-     * pixels the toolbar covers (unless that is half the window or more: then the scene takes it
-     * all, the toolbar floats over it). Returns whether a model frame was drawn.
+     * Draws the scene into the {@code area} of a framebuffer of {@code width x height} (the rest
+     * is the interface's). Returns whether a model frame was drawn.
      */
-    boolean paint(int width, int height, int reserved) {
+    boolean paint(int width, int height, SceneArea area) {
         this.width = width;
         this.height = height;
-        this.left = reserved < width / 2 ? reserved : 0;
-        info.sceneLeft = left;
+        this.area = area;
         sync();
         if (ar != null) {
             drawArBackground();
@@ -124,7 +123,6 @@ final class ScenePainter implements AutoCloseable {
 
     private void drawScene(Frame frame) {
         renderer.upload(frame);
-        info.sequence = frame.sequence();
         info.skinningNanos = frame.skinningNanos();
         info.clipTime = frame.clipTime();
         glEnable(GL_DEPTH_TEST);
@@ -145,12 +143,13 @@ final class ScenePainter implements AutoCloseable {
         // without shader code shows from its first CPU-skinned frame on.
         SkinningMethod first = cpuFrame || !SkinningGlsl.hasCode(config.method()) ? frame.method() : config.method();
         boolean split = viewer.settings().split();
-        int w = width - left;
+        int left = area.x();
+        int w = area.width();
         info.views = split && ar == null ? 2 : 1;
         info.viewMethods[0] = first;
         info.viewOnCpu[0] = cpuFrame;
         if (ar != null) {
-            drawArModel(first, cpuFrame, w);
+            drawArModel(first, cpuFrame);
         } else if (split) {
             drawView(first, cpuFrame, left, w / 2);
             drawView(other(first), false, left + w / 2, w - w / 2);
@@ -176,8 +175,8 @@ final class ScenePainter implements AutoCloseable {
     }
 
     private void drawView(SkinningMethod method, boolean cpuPositions, int x, int viewWidth) {
-        glViewport(x, 0, viewWidth, height);
-        viewer.camera().projection(viewWidth / (float) Math.max(1, height), draw.viewProjection);
+        glViewport(x, area.y(), viewWidth, area.height());
+        viewer.camera().projection(viewWidth / (float) area.height(), draw.viewProjection);
         viewer.camera().viewTimesInto(draw.viewProjection);
         viewer.camera().eye(draw.eye);
         drawModel(method, cpuPositions, viewer.settings().instances(), viewer.settings().columns(), true);
@@ -213,8 +212,8 @@ final class ScenePainter implements AutoCloseable {
 
     /** AR: the newest camera frame across the scene area; the tracking state in the status line when it changes. */
     private void drawArBackground() {
-        glViewport(left, 0, width - left, height);
-        ar.drawBackground(width - left, height);
+        glViewport(area.x(), area.y(), area.width(), area.height());
+        ar.drawBackground(area.width(), area.height());
         String change = ar.statusChange();
         if (change != null) {
             viewer.setStatus(change);
@@ -223,9 +222,9 @@ final class ScenePainter implements AutoCloseable {
     }
 
     /** AR: the model on the marker, or nothing while the marker is not shown. */
-    private void drawArModel(SkinningMethod method, boolean cpuPositions, int viewWidth) {
-        glViewport(left, 0, viewWidth, height);
-        if (ar.placeModel(shown.framing(), config, draw, viewWidth, height)) {
+    private void drawArModel(SkinningMethod method, boolean cpuPositions) {
+        glViewport(area.x(), area.y(), area.width(), area.height());
+        if (ar.placeModel(shown.framing(), config, draw, area.width(), area.height())) {
             drawModel(method, cpuPositions, 1, 1, false);
         }
     }

@@ -11,6 +11,7 @@ import org.lwjgl.glfw.GLFWMouseButtonCallback;
 import org.lwjgl.glfw.GLFWScrollCallback;
 import org.lwjgl.system.MemoryStack;
 import org.skinlab.desktop.render.GlWindow;
+import org.skinlab.desktop.ui.UserInterface;
 import org.skinlab.desktop.viewer.LoadedModel;
 import org.skinlab.desktop.viewer.Viewer;
 import org.skinlab.desktop.viewer.ViewerAction;
@@ -29,7 +30,7 @@ final class ScriptPlayer {
     private final GlWindow window;
     private final SkinlabApp app;
     private final Viewer viewer;
-    private final AppUi ui;
+    private final UserInterface ui;
     private int next;
     private int waitFrames;
     /** Frames waited for a load; -1 when not waiting. A script starts once the first model is shown. */
@@ -39,7 +40,7 @@ final class ScriptPlayer {
     private String failure;
     private boolean entered;
 
-    ScriptPlayer(UiScript script, GlWindow window, SkinlabApp app, Viewer viewer, AppUi ui) {
+    ScriptPlayer(UiScript script, GlWindow window, SkinlabApp app, Viewer viewer, UserInterface ui) {
         this.script = script;
         this.window = window;
         this.app = app;
@@ -109,15 +110,17 @@ final class ScriptPlayer {
     }
 
     private void run(UiScript.Step s) {
+        if (!userInput(s) && !viewerStep(s)) {
+            throw new IllegalArgumentException("unknown verb " + s.verb());
+        }
+    }
+
+    /** The steps a user's keys, mouse and file drops would take; false for other verbs. */
+    private boolean userInput(UiScript.Step s) {
         switch (s.verb()) {
-            case "action":
-                ViewerAction a = ViewerAction.byName(s.rest())
-                        .orElseThrow(() -> new IllegalArgumentException("no action named " + s.rest()));
-                app.windowAction(a);
-                break;
             case "key":
                 key(Keys.code(s.arg(0)), s.args().size() > 1 ? Keys.modifier(s.arg(1)) : 0);
-                break;
+                return true;
             case "click":
                 float[] c = ui.itemCentre(s.rest());
                 if (c == null) {
@@ -125,50 +128,63 @@ final class ScriptPlayer {
                 }
                 move(c[0], c[1]);
                 clickPhase = 2;
-                break;
+                return true;
             case "move":
                 move(s.number(0), s.number(1));
-                break;
+                return true;
             case "drag":
                 move(s.number(0), s.number(1));
                 button(GLFW_PRESS);
                 move((s.number(0) + s.number(2)) / 2, (s.number(1) + s.number(3)) / 2);
                 move(s.number(2), s.number(3));
                 button(GLFW_RELEASE);
-                break;
+                return true;
             case "scroll":
                 GLFWScrollCallback sc = glfwSetScrollCallback(window.handle(), null);
                 glfwSetScrollCallback(window.handle(), sc);
                 if (sc != null) {
                     sc.invoke(window.handle(), 0, s.number(0));
                 }
-                break;
+                return true;
             case "drop":
                 drop(script.resolve(s.rest()));
-                break;
+                return true;
+            default:
+                return false;
+        }
+    }
+
+    /** The steps that go to the viewer and the window directly, and the script's waits and checks. */
+    private boolean viewerStep(UiScript.Step s) {
+        switch (s.verb()) {
+            case "action":
+                ViewerAction a = ViewerAction.byName(s.rest())
+                        .orElseThrow(() -> new IllegalArgumentException("no action named " + s.rest()));
+                app.windowAction(a);
+                return true;
             case "open":
                 viewer.open(script.resolve(s.rest()));
-                break;
+                return true;
             case "seek":
                 viewer.seek(s.number(0));
-                break;
+                return true;
             case "wait":
                 waitFrames = Integer.parseInt(s.arg(0));
-                break;
+                return true;
             case "wait-loaded":
                 loadWait = 0;
-                break;
+                return true;
             case "screenshot":
                 app.writeScreenshot(script.resolve(s.rest()));
-                break;
+                return true;
             case "expect":
                 expect(s);
-                break;
+                return true;
             case "quit":
                 window.requestClose();
-                break;
+                return true;
             default:
-                throw new IllegalArgumentException("unknown verb " + s.verb());
+                return false;
         }
     }
 

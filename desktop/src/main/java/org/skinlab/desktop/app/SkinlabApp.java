@@ -16,6 +16,7 @@ import org.skinlab.desktop.render.GlDebugLog;
 import org.skinlab.desktop.render.GlWindow;
 import org.skinlab.desktop.render.Screenshot;
 import org.skinlab.desktop.ui.ImGuiUi;
+import org.skinlab.desktop.ui.UserInterface;
 import org.skinlab.desktop.viewer.LoadedModel;
 import org.skinlab.desktop.viewer.ModelLibrary;
 import org.skinlab.desktop.viewer.Viewer;
@@ -26,7 +27,7 @@ import org.skinlab.simulation.Frame;
 
 /**
  * The viewer window: the render loop that ties the {@link Viewer} (model, switches, camera), the
- * {@link ScenePainter} (the scene on the GPU) and the {@link AppUi} (toolbar) together, for a
+ * {@link ScenePainter} (the scene on the GPU) and the {@link UserInterface} (toolbar) together, for a
  * person, a script or one headless picture. Each loop iteration acquires the newest simulation
  * {@link Frame} once and draws everything from it, so a split view, the instances and the numbers
  * always show the same time step.
@@ -40,11 +41,11 @@ public final class SkinlabApp implements AutoCloseable {
     private final AppOptions options;
     private final AnimationConfig config = new AnimationConfig();
     private final Viewer viewer;
-    private final AppFrame info = new AppFrame();
+    private final MutableSceneReadout info = new MutableSceneReadout();
     private final ScenePainter scene;
     private final WindowInput input;
     private final int[] size = new int[2];
-    private AppUi ui = AppUi.NONE;
+    private UserInterface ui = UserInterface.NONE;
     private ScriptPlayer player;
     private final GlDebugLog debugLog;
     /** The AR mode's camera background and marker placement ({@code skinlab ar}), or null. */
@@ -233,9 +234,10 @@ public final class SkinlabApp implements AutoCloseable {
         glViewport(0, 0, size[0], size[1]);
         glClearColor(BACKGROUND[0], BACKGROUND[1], BACKGROUND[2], 1f);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        boolean drew = scene.paint(size[0], size[1], ui.reservedLeft());
+        ui.layOut(size[0], size[1], info.area);
+        boolean drew = scene.paint(size[0], size[1], info.area);
         info.drewMesh = drew;
-        info.frameNumber = frameNumber++;
+        frameNumber++;
         sample(drew);
         ui.render(info);
         if (screenshot) {

@@ -10,6 +10,7 @@ import org.lwjgl.glfw.GLFWKeyCallback;
 import org.lwjgl.glfw.GLFWMouseButtonCallback;
 import org.lwjgl.glfw.GLFWScrollCallback;
 import org.skinlab.desktop.render.GlWindow;
+import org.skinlab.desktop.ui.UserInterface;
 import org.skinlab.desktop.viewer.Viewer;
 import org.skinlab.desktop.viewer.ViewerAction;
 
@@ -29,7 +30,7 @@ final class WindowInput implements AutoCloseable {
     private final GLFWCursorPosCallback cursor;
     private final GLFWScrollCallback scroll;
     private final GLFWDropCallback drop;
-    private AppUi ui = AppUi.NONE;
+    private UserInterface ui = UserInterface.NONE;
     private final int[] height = new int[1];
     private int dragButton = -1;
     private double lastX;
@@ -56,7 +57,7 @@ final class WindowInput implements AutoCloseable {
         glfwSetDropCallback(w, drop);
     }
 
-    void setUi(AppUi ui) {
+    void setUi(UserInterface ui) {
         this.ui = ui;
     }
 

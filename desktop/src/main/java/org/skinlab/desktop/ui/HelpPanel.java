@@ -1,6 +1,5 @@
 package org.skinlab.desktop.ui;
 
-import org.skinlab.desktop.app.AppFrame;
 import org.skinlab.desktop.viewer.ViewerAction;
 
 import imgui.ImGui;
@@ -12,8 +11,8 @@ import imgui.flag.ImGuiWindowFlags;
 final class HelpPanel {
     private static final ViewerAction[] ALL = ViewerAction.values();
 
-    void draw(AppFrame f) {
-        ImGui.setNextWindowPos(f.width() - 8f, f.height() - 8f, ImGuiCond.Always, 1f, 1f);
+    void draw(SceneReadout scene) {
+        ImGui.setNextWindowPos(scene.width() - 8f, scene.height() - 8f, ImGuiCond.Always, 1f, 1f);
         ImGui.setNextWindowBgAlpha(0.85f);
         ImGui.begin("Keys", ImGuiWindowFlags.AlwaysAutoResize | ImGuiWindowFlags.NoMove | ImGuiWindowFlags.NoCollapse);
         Widgets.dim("Mouse: left drag orbits, right or middle drag pans, wheel zooms; drop a .dae, .gltf or .glb "

@@ -4,8 +4,6 @@ import java.util.HashMap;
 import java.util.Map;
 import java.util.function.Consumer;
 
-import org.skinlab.desktop.app.AppFrame;
-import org.skinlab.desktop.app.AppUi;
 import org.skinlab.desktop.render.GlWindow;
 import org.skinlab.desktop.viewer.ViewerAction;
 import org.skinlab.skinning.SkinningMethod;
@@ -19,11 +17,12 @@ import imgui.glfw.ImGuiImplGlfw;
 
 /**
  * The Dear ImGui interface (imgui-java): the toolbar with every thesis function, the live numbers
- * and plots, the help panel and the status line. It owns the ImGui and ImPlot contexts and their
+ * and plots, the help panel and the status line, placed by a {@link PanelLayout} around the
+ * scene. It owns the ImGui and ImPlot contexts and their
  * GLFW and OpenGL 3 backends; the GLFW backend chains to the callbacks installed before it, so
  * the scene still gets the keys and the mouse the interface does not use.
  */
-public final class ImGuiUi implements AppUi {
+public final class ImGuiUi implements UserInterface {
     private final ImGuiImplGlfw glfw = new ImGuiImplGlfw();
     private final ImGuiImplGl3 gl3 = new ImGuiImplGl3();
     private final ImPlotContext plotContext;
@@ -32,6 +31,7 @@ public final class ImGuiUi implements AppUi {
     private final StatsPanel stats;
     private final HelpPanel help;
     private final StatusLine status;
+    private final PanelLayout layout = new PanelLayout();
 
     /**
      * @param actions what a button does: the window performs the action (some need the window)
@@ -55,36 +55,52 @@ public final class ImGuiUi implements AppUi {
     }
 
     @Override
-    public void render(AppFrame frame) {
+    public void layOut(int width, int height, SceneArea area) {
+        // Window coordinates are framebuffer pixels divided by the content scale.
+        float scale = framebufferScale();
+        layout.decide(width / scale, height / scale, ImGui.getFrameHeight());
+        int left = Math.round(layout.sceneLeft() * scale);
+        int top = Math.round(layout.sceneTop() * scale);
+        int right = Math.round(layout.sceneRight() * scale);
+        int bottom = Math.round(layout.sceneBottom() * scale);
+        area.set(left, height - bottom, right - left, bottom - top);
+    }
+
+    @Override
+    public void render(SceneReadout scene) {
         gl3.newFrame();
         glfw.newFrame();
         ImGui.newFrame();
-        toolbar.draw(frame);
-        stats.draw(frame);
-        if (frame.viewer().settings().help()) {
-            help.draw(frame);
+        toolbar.draw(scene, layout);
+        stats.draw(scene, layout);
+        if (scene.viewer().settings().help()) {
+            help.draw(scene);
         }
-        status.draw(frame);
-        labelViews(frame);
+        status.draw(scene, layout);
+        labelViews(scene);
         ImGui.render();
         gl3.renderDrawData(ImGui.getDrawData());
     }
 
-    /** Names the method of each view at its bottom centre (the split view's two halves). */
-    private static void labelViews(AppFrame f) {
-        if (!f.drewMesh()) {
+    private static float framebufferScale() {
+        float scale = ImGui.getIO().getDisplayFramebufferScaleX();
+        return scale > 0 ? scale : 1f;
+    }
+
+    /** Names the method of each view in the row under it (the split view's two halves). */
+    private static void labelViews(SceneReadout s) {
+        if (!s.drewMesh()) {
             return;
         }
-        // Window coordinates are framebuffer pixels divided by the content scale.
-        float scale = ImGui.getIO().getDisplayFramebufferScaleX();
-        float width = f.width() / (scale > 0 ? scale : 1f);
-        float height = f.height() / (scale > 0 ? scale : 1f);
-        float left = f.sceneLeft() / (scale > 0 ? scale : 1f);
-        float viewWidth = (width - left) / f.views();
-        for (int v = 0; v < f.views(); v++) {
-            String label = VIEW_LABELS[f.viewMethod(v).ordinal()][f.viewOnCpu(v) ? 1 : 0];
+        float scale = framebufferScale();
+        SceneArea area = s.sceneArea();
+        float left = area.x() / scale;
+        float bottom = (s.height() - area.y()) / scale;
+        float viewWidth = area.width() / scale / s.views();
+        for (int v = 0; v < s.views(); v++) {
+            String label = VIEW_LABELS[s.viewMethod(v).ordinal()][s.viewOnCpu(v) ? 1 : 0];
             float x = left + v * viewWidth + (viewWidth - ImGui.calcTextSizeX(label)) / 2;
-            float y = height - 3 * ImGui.getFrameHeight();
+            float y = bottom + (PanelLayout.labelRow(ImGui.getFrameHeight()) - ImGui.getFontSize()) / 2;
             ImGui.getForegroundDrawList().addText(x, y, 0xFFFFFFFF, label);
         }
     }
@@ -99,11 +115,6 @@ public final class ImGuiUi implements AppUi {
             labels[m.ordinal()] = new String[] {name + " (GPU)", name + " (CPU)"};
         }
         return labels;
-    }
-
-    @Override
-    public int reservedLeft() {
-        return Math.round(toolbar.right() * ImGui.getIO().getDisplayFramebufferScaleX());
     }
 
     @Override

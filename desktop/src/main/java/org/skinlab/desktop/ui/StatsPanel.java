@@ -1,6 +1,5 @@
 package org.skinlab.desktop.ui;
 
-import org.skinlab.desktop.app.AppFrame;
 import org.skinlab.desktop.render.DrawSettings;
 import org.skinlab.desktop.viewer.LiveStats;
 import org.skinlab.desktop.viewer.RollingSeries;
@@ -20,6 +19,8 @@ import imgui.flag.ImGuiWindowFlags;
  * second, and in the difference view the largest LBS-DQS distance and both methods' volumes.
  */
 final class StatsPanel {
+    /** The panel's window title. */
+    static final String TITLE = "Numbers";
     /** Seconds of history the plots show. */
     private static final float WINDOW_SECONDS = 10f;
 
@@ -41,9 +42,31 @@ final class StatsPanel {
     private float meanSkin = Float.NaN;
     private float meanVertices = Float.NaN;
 
-    void draw(AppFrame f) {
-        LiveStats stats = f.stats();
-        // Numbers that change every frame are read 4 times a second: legible, and no string per frame.
+    void draw(SceneReadout scene, PanelLayout layout) {
+        LiveStats stats = scene.stats();
+        refreshMeans(stats);
+        if (!begin(layout)) {
+            ImGui.end();
+            return;
+        }
+        ImGui.textUnformatted(fps.of(meanFps));
+        ImGui.sameLine();
+        ImGui.textUnformatted(frameMs.of(meanFrame));
+        plot("##fps", stats.fps, null);
+        ImGui.textUnformatted(scene.gpuSkinned() ? "skinning on the GPU (vertex shader)" : skinMs.of(meanSkin));
+        if (!scene.gpuSkinned()) {
+            plot("##skin", stats.skinningMillis, null);
+        }
+        ImGui.textUnformatted(vertices.of(meanVertices));
+        Widgets.dim(drawn.of(scene.vertices()));
+        ImGui.separator();
+        comparison(scene, stats);
+        layout.numbersMeasured(ImGui.getWindowWidth());
+        ImGui.end();
+    }
+
+    /** Numbers that change every frame are read 4 times a second: legible, and no string per frame. */
+    private void refreshMeans(LiveStats stats) {
         long now = System.nanoTime();
         if (refreshedAt < 0 || now - refreshedAt > 250_000_000L) {
             refreshedAt = now;
@@ -52,32 +75,32 @@ final class StatsPanel {
             meanSkin = stats.skinningMillis.mean();
             meanVertices = stats.verticesPerSecond.mean();
         }
-        ImGui.setNextWindowPos(f.width() - 8f, 8f, ImGuiCond.Always, 1f, 0f);
+    }
+
+    /** Opens the panel's window at the top right; false when collapsed. */
+    private static boolean begin(PanelLayout layout) {
+        ImGui.setNextWindowPos(ImGui.getIO().getDisplaySizeX() - PanelLayout.MARGIN, PanelLayout.MARGIN,
+                ImGuiCond.Always, 1f, 0f);
+        if (layout.numbersChanged()) {
+            ImGui.setNextWindowCollapsed(!layout.numbersOpen(), ImGuiCond.Always);
+        }
         ImGui.setNextWindowBgAlpha(0.85f);
-        ImGui.begin("Numbers", ImGuiWindowFlags.AlwaysAutoResize | ImGuiWindowFlags.NoMove | ImGuiWindowFlags.NoCollapse);
-        ImGui.textUnformatted(fps.of(meanFps));
-        ImGui.sameLine();
-        ImGui.textUnformatted(frameMs.of(meanFrame));
-        plot("##fps", stats.fps, null);
-        ImGui.textUnformatted(f.gpuSkinned() ? "skinning on the GPU (vertex shader)" : skinMs.of(meanSkin));
-        if (!f.gpuSkinned()) {
-            plot("##skin", stats.skinningMillis, null);
+        return ImGui.begin(TITLE, ImGuiWindowFlags.AlwaysAutoResize | ImGuiWindowFlags.NoMove);
+    }
+
+    /** The difference view's distance, and both methods' volumes with their plot. */
+    private void comparison(SceneReadout scene, LiveStats stats) {
+        if (scene.viewer().settings().drawView() == DrawSettings.View.DIFFERENCE) {
+            ImGui.textUnformatted(difference.of(100 * scene.maxDifference()));
+            Widgets.dim(full.of(100 * scene.differenceFull()));
         }
-        ImGui.textUnformatted(vertices.of(meanVertices));
-        Widgets.dim(drawn.of(f.vertices()));
-        ImGui.separator();
-        if (f.viewer().settings().drawView() == DrawSettings.View.DIFFERENCE) {
-            ImGui.textUnformatted(difference.of(100 * f.maxDifference()));
-            Widgets.dim(full.of(100 * f.differenceFull()));
-        }
-        if (!Double.isNaN(f.lbsVolume())) {
-            ImGui.textUnformatted(lbsVolume.of(f.lbsVolume()));
-            ImGui.textUnformatted(dqsVolume.of(f.dqsVolume()));
+        if (!Double.isNaN(scene.lbsVolume())) {
+            ImGui.textUnformatted(lbsVolume.of(scene.lbsVolume()));
+            ImGui.textUnformatted(dqsVolume.of(scene.dqsVolume()));
             plot("##volume", stats.lbsVolume, stats.dqsVolume);
         } else {
             Widgets.dim("volume: the mesh is not closed");
         }
-        ImGui.end();
     }
 
     /** A small line plot of the last seconds of one or two series. */

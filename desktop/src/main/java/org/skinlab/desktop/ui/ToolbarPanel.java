@@ -1,7 +1,6 @@
 package org.skinlab.desktop.ui;
 
 import org.skinlab.animation.RotationInterpolation;
-import org.skinlab.desktop.app.AppFrame;
 import org.skinlab.desktop.render.DrawSettings;
 import org.skinlab.desktop.viewer.LoadedModel;
 import org.skinlab.desktop.viewer.Viewer;
@@ -39,7 +38,6 @@ final class ToolbarPanel {
     private final CachedText influences = new CachedText("%.0f influences per vertex in the shader");
     private final CachedText capped = new CachedText("%.0f vertices capped (weights renormalised)");
     private boolean scrubbing;
-    private float right;
     private LoadedModel namedModel;
     private int namedJoint = -1;
     private String modelLine = "";
@@ -49,15 +47,38 @@ final class ToolbarPanel {
         this.widgets = widgets;
     }
 
-    void draw(AppFrame f) {
-        Viewer viewer = f.viewer();
-        AnimationConfig config = viewer.config();
-        ViewerSettings s = viewer.settings();
+    void draw(SceneReadout scene, PanelLayout layout) {
+        if (!begin(layout)) {
+            ImGui.end();
+            return;
+        }
+        Viewer viewer = scene.viewer();
         LoadedModel model = viewer.current();
-        ImGui.setNextWindowPos(8, 8, ImGuiCond.Always);
-        ImGui.setNextWindowBgAlpha(0.85f);
-        ImGui.begin(TITLE, ImGuiWindowFlags.AlwaysAutoResize | ImGuiWindowFlags.NoMove | ImGuiWindowFlags.NoCollapse);
+        modelSection(viewer, model);
+        ImGui.separator();
+        animationSection(scene, viewer, model);
+        ImGui.separator();
+        skinningSection(scene, viewer);
+        ImGui.separator();
+        viewSection(viewer, model);
+        ImGui.separator();
+        windowButtons();
+        layout.toolbarMeasured(ImGui.getWindowWidth());
+        ImGui.end();
+    }
 
+    /** Opens the toolbar's window at the top left, no taller than the layout allows; false when collapsed. */
+    private static boolean begin(PanelLayout layout) {
+        ImGui.setNextWindowPos(PanelLayout.MARGIN, PanelLayout.MARGIN, ImGuiCond.Always);
+        ImGui.setNextWindowSizeConstraints(0f, 0f, Float.MAX_VALUE, layout.toolbarMaxHeight());
+        if (layout.toolbarChanged()) {
+            ImGui.setNextWindowCollapsed(!layout.toolbarOpen(), ImGuiCond.Always);
+        }
+        ImGui.setNextWindowBgAlpha(0.85f);
+        return ImGui.begin(TITLE, ImGuiWindowFlags.AlwaysAutoResize | ImGuiWindowFlags.NoMove);
+    }
+
+    private void modelSection(Viewer viewer, LoadedModel model) {
         Widgets.dim("Model");
         ImGui.textUnformatted(modelLine(model));
         widgets.action(ViewerAction.PREVIOUS_MESH);
@@ -66,8 +87,10 @@ final class ToolbarPanel {
         ImGui.sameLine();
         widgets.action(ViewerAction.OPEN_FILE);
         clips(viewer, model);
+    }
 
-        ImGui.separator();
+    private void animationSection(SceneReadout scene, Viewer viewer, LoadedModel model) {
+        AnimationConfig config = viewer.config();
         Widgets.dim("Animation");
         widgets.action(ViewerAction.TOGGLE_ANIMATION);
         ImGui.sameLine();
@@ -81,6 +104,14 @@ final class ToolbarPanel {
         widgets.action(ViewerAction.FASTER);
         ImGui.sameLine();
         ImGui.textUnformatted(speed.of(config.speed()));
+        interpolations(config);
+        timeline(scene, viewer, model);
+        widgets.action(ViewerAction.STEP_BACK);
+        ImGui.sameLine();
+        widgets.action(ViewerAction.STEP_FORWARD);
+    }
+
+    private void interpolations(AnimationConfig config) {
         ImGui.textUnformatted("Interpolation");
         for (RotationInterpolation r : INTERPOLATIONS) {
             ImGui.sameLine();
@@ -89,12 +120,10 @@ final class ToolbarPanel {
             }
             widgets.remember(r.name());
         }
-        timeline(f, viewer, model);
-        widgets.action(ViewerAction.STEP_BACK);
-        ImGui.sameLine();
-        widgets.action(ViewerAction.STEP_FORWARD);
+    }
 
-        ImGui.separator();
+    private void skinningSection(SceneReadout scene, Viewer viewer) {
+        AnimationConfig config = viewer.config();
         Widgets.dim("Skinning");
         for (SkinningMethod m : METHODS) {
             if (m.ordinal() % METHODS_PER_ROW != 0) {
@@ -106,13 +135,15 @@ final class ToolbarPanel {
             widgets.remember(m.name());
         }
         widgets.toggle(ViewerAction.TOGGLE_GPU_SKINNING, "GPU skinning", !config.isCpuSkinning());
-        Widgets.dim(influences.of(f.shaderInfluences()));
-        if (f.cappedVertices() > 0) {
-            Widgets.dim(capped.of(f.cappedVertices()));
+        Widgets.dim(influences.of(scene.shaderInfluences()));
+        if (scene.cappedVertices() > 0) {
+            Widgets.dim(capped.of(scene.cappedVertices()));
         }
-        widgets.toggle(ViewerAction.TOGGLE_SPLIT, "Split view (the other method beside)", s.split());
+        widgets.toggle(ViewerAction.TOGGLE_SPLIT, "Split view (the other method beside)", viewer.settings().split());
+    }
 
-        ImGui.separator();
+    private void viewSection(Viewer viewer, LoadedModel model) {
+        ViewerSettings s = viewer.settings();
         Widgets.dim("View");
         widgets.radio(ViewerAction.VIEW_SHADED, s.drawView() == DrawSettings.View.SHADED);
         ImGui.sameLine();
@@ -135,8 +166,10 @@ final class ToolbarPanel {
         widgets.action(ViewerAction.MORE_INSTANCES);
         ImGui.sameLine();
         ImGui.textUnformatted(instances.of(s.instances()));
+    }
 
-        ImGui.separator();
+    /** What the window does: camera, picture, help, quit. */
+    private void windowButtons() {
         widgets.action(ViewerAction.CENTRE_CAMERA);
         ImGui.sameLine();
         widgets.action(ViewerAction.SCREENSHOT);
@@ -144,13 +177,6 @@ final class ToolbarPanel {
         widgets.action(ViewerAction.TOGGLE_HELP);
         ImGui.sameLine();
         widgets.action(ViewerAction.QUIT);
-        right = ImGui.getWindowPosX() + ImGui.getWindowWidth() + 8f;
-        ImGui.end();
-    }
-
-    /** The toolbar's right edge with a margin, in window coordinates (0 before it was drawn). */
-    float right() {
-        return right;
     }
 
     private String modelLine(LoadedModel model) {
@@ -193,12 +219,12 @@ final class ToolbarPanel {
         widgets.remember("Clip");
     }
 
-    private void timeline(AppFrame f, Viewer viewer, LoadedModel model) {
+    private void timeline(SceneReadout scene, Viewer viewer, LoadedModel model) {
         float duration = model == null ? 0f : (float) model.mesh().clipDuration();
         float start = model == null || model.clipIndex() < 0 ? 0f
                 : model.model().clips().get(model.clipIndex()).start();
         if (!scrubbing) {
-            timeline[0] = (float) f.clipTime() - start;
+            timeline[0] = (float) scene.clipTime() - start;
         }
         boolean moved = ImGui.sliderFloat("Time", timeline, 0f, Math.max(duration, 1e-3f), "%.2f s");
         scrubbing = ImGui.isItemActive();

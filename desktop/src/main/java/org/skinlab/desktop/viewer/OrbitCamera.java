@@ -27,8 +27,12 @@ public final class OrbitCamera {
     private float pitch = (float) Math.toRadians(12);
     private float distance = 3f;
     private float radius = 1f;
-    /** Whether the distance still waits for the view's aspect (set by frame, used by projection). */
-    private boolean fitPending;
+    /**
+     * Whether the distance follows the view's aspect: from {@link #frame} until the user zooms, so
+     * the framed sphere stays in a view the interface resizes (its panels settle over the first
+     * frames, and a window can be resized).
+     */
+    private boolean fitting;
 
     /**
      * Looks at the sphere from the front (or the {@link #setHomeYaw home yaw}), slightly above, so
@@ -40,7 +44,7 @@ public final class OrbitCamera {
         yaw = homeYaw;
         pitch = (float) Math.toRadians(12);
         distance = radius / (float) Math.sin(FOV_Y / 2) * 1.1f;
-        fitPending = true;
+        fitting = true;
     }
 
     /** The angle (radians) around the vertical axis that framing looks from: 0 from +z, pi/2 from +x. */
@@ -81,6 +85,7 @@ public final class OrbitCamera {
 
     /** Zooms in (positive steps) or out, between a hundredth and a hundred framing radii. */
     public void zoom(float steps) {
+        fitting = false;
         distance = (float) (distance * Math.pow(ZOOM_PER_STEP, -steps));
         distance = Math.max(radius * 0.01f, Math.min(radius * 100f, distance));
     }
@@ -98,11 +103,10 @@ public final class OrbitCamera {
 
     /** A perspective projection whose near and far planes keep the framed sphere in depth range. */
     public Matrix4f projection(float aspect, Matrix4f dest) {
-        if (fitPending) {
+        if (fitting) {
             // The sphere must fit the narrower of the two fields of view.
             float halfX = (float) Math.atan(Math.tan(FOV_Y / 2) * aspect);
             distance = radius / (float) Math.sin(Math.min(FOV_Y / 2, halfX)) * 1.1f;
-            fitPending = false;
         }
         float near = Math.max(distance - 50f * radius, distance * 0.01f);
         float far = distance + 50f * radius;

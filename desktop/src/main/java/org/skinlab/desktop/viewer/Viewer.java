@@ -267,86 +267,11 @@ public final class Viewer implements AutoCloseable {
      * need the window (a dialog, the framebuffer): the window handles them and this does nothing.
      */
     public void perform(ViewerAction action) {
+        boolean done = animationAction(action) || modelAction(action) || viewAction(action);
+        if (done) {
+            return;
+        }
         switch (action) {
-            case TOGGLE_ANIMATION:
-                config.setAnimationRunning(!config.isAnimationRunning());
-                break;
-            case TOGGLE_MESH_UPDATES:
-                config.setMeshUpdatesRunning(!config.isMeshUpdatesRunning());
-                break;
-            case TOGGLE_FOLLOW_CAMERA:
-                config.setFollowCamera(!config.isFollowCamera());
-                break;
-            case NEXT_METHOD:
-                config.nextMethod();
-                break;
-            case NEXT_INTERPOLATION:
-                config.nextInterpolation();
-                break;
-            case SLOWER:
-                config.slower();
-                break;
-            case FASTER:
-                config.faster();
-                break;
-            case PREVIOUS_MESH:
-                load(library.neighbour(stepBase(), -1), null, 0, 0.0);
-                break;
-            case NEXT_MESH:
-                load(library.neighbour(stepBase(), 1), null, 0, 0.0);
-                break;
-            case CENTRE_CAMERA:
-                frameCamera();
-                break;
-            case TOGGLE_GPU_SKINNING:
-                config.setCpuSkinning(!config.isCpuSkinning());
-                break;
-            case NEXT_CLIP:
-                if (current != null && current.model().clips().size() > 1) {
-                    playClip((current.clipIndex() + 1) % current.model().clips().size());
-                }
-                break;
-            case STEP_BACK:
-                stepPlayback(-STEP_SECONDS);
-                break;
-            case STEP_FORWARD:
-                stepPlayback(STEP_SECONDS);
-                break;
-            case FEWER_INSTANCES:
-                settings.fewerInstances();
-                frameCamera();
-                break;
-            case MORE_INSTANCES:
-                settings.moreInstances();
-                frameCamera();
-                break;
-            case TOGGLE_SKELETON:
-                settings.setSkeleton(!settings.skeleton());
-                break;
-            case TOGGLE_WIREFRAME:
-                settings.setWireframe(!settings.wireframe());
-                break;
-            case VIEW_SHADED:
-                settings.setView(DrawSettings.View.SHADED);
-                break;
-            case VIEW_WEIGHTS:
-                settings.setView(DrawSettings.View.WEIGHTS);
-                break;
-            case VIEW_DIFFERENCE:
-                settings.setView(DrawSettings.View.DIFFERENCE);
-                break;
-            case PREVIOUS_JOINT:
-                settings.selectJoint(settings.selectedJoint() - 1, jointCount());
-                break;
-            case NEXT_JOINT:
-                settings.selectJoint(settings.selectedJoint() + 1, jointCount());
-                break;
-            case TOGGLE_SPLIT:
-                settings.setSplit(!settings.split());
-                break;
-            case TOGGLE_HELP:
-                settings.setHelp(!settings.help());
-                break;
             case QUIT:
                 quit = true;
                 break;
@@ -355,6 +280,109 @@ public final class Viewer implements AutoCloseable {
                 break;
             default:
                 throw new AssertionError(action);
+        }
+    }
+
+    /** The animation's switches (the shared {@link AnimationConfig}); false for other actions. */
+    private boolean animationAction(ViewerAction action) {
+        switch (action) {
+            case TOGGLE_ANIMATION:
+                config.setAnimationRunning(!config.isAnimationRunning());
+                return true;
+            case TOGGLE_MESH_UPDATES:
+                config.setMeshUpdatesRunning(!config.isMeshUpdatesRunning());
+                return true;
+            case TOGGLE_FOLLOW_CAMERA:
+                config.setFollowCamera(!config.isFollowCamera());
+                return true;
+            case NEXT_METHOD:
+                config.nextMethod();
+                return true;
+            case NEXT_INTERPOLATION:
+                config.nextInterpolation();
+                return true;
+            case SLOWER:
+                config.slower();
+                return true;
+            case FASTER:
+                config.faster();
+                return true;
+            case TOGGLE_GPU_SKINNING:
+                config.setCpuSkinning(!config.isCpuSkinning());
+                return true;
+            default:
+                return false;
+        }
+    }
+
+    /** The model shown, its clip and its playback; false for other actions. */
+    private boolean modelAction(ViewerAction action) {
+        switch (action) {
+            case PREVIOUS_MESH:
+                load(library.neighbour(stepBase(), -1), null, 0, 0.0);
+                return true;
+            case NEXT_MESH:
+                load(library.neighbour(stepBase(), 1), null, 0, 0.0);
+                return true;
+            case NEXT_CLIP:
+                if (current != null && current.model().clips().size() > 1) {
+                    playClip((current.clipIndex() + 1) % current.model().clips().size());
+                }
+                return true;
+            case STEP_BACK:
+                stepPlayback(-STEP_SECONDS);
+                return true;
+            case STEP_FORWARD:
+                stepPlayback(STEP_SECONDS);
+                return true;
+            default:
+                return false;
+        }
+    }
+
+    /** How the model is shown: camera, instances and the {@link ViewerSettings}; false for other actions. */
+    private boolean viewAction(ViewerAction action) {
+        switch (action) {
+            case CENTRE_CAMERA:
+                frameCamera();
+                return true;
+            case FEWER_INSTANCES:
+                settings.fewerInstances();
+                frameCamera();
+                return true;
+            case MORE_INSTANCES:
+                settings.moreInstances();
+                frameCamera();
+                return true;
+            case TOGGLE_SKELETON:
+                settings.setSkeleton(!settings.skeleton());
+                return true;
+            case TOGGLE_WIREFRAME:
+                settings.setWireframe(!settings.wireframe());
+                return true;
+            case VIEW_SHADED:
+                settings.setView(DrawSettings.View.SHADED);
+                return true;
+            case VIEW_WEIGHTS:
+                settings.setView(DrawSettings.View.WEIGHTS);
+                return true;
+            case VIEW_DIFFERENCE:
+                settings.setView(DrawSettings.View.DIFFERENCE);
+                return true;
+            case PREVIOUS_JOINT:
+                settings.selectJoint(settings.selectedJoint() - 1, jointCount());
+                return true;
+            case NEXT_JOINT:
+                settings.selectJoint(settings.selectedJoint() + 1, jointCount());
+                return true;
+            case TOGGLE_SPLIT:
+                settings.setSplit(!settings.split());
+                return true;
+            case TOGGLE_HELP:
+                settings.setHelp(!settings.help());
+                return true;
+            default:
+                return false;
         }
     }
 

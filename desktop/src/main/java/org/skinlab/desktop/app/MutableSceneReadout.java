@@ -1,125 +1,123 @@
 package org.skinlab.desktop.app;
 
+import org.skinlab.desktop.ui.SceneArea;
+import org.skinlab.desktop.ui.SceneReadout;
 import org.skinlab.desktop.viewer.LiveStats;
-import org.skinlab.skinning.SkinningMethod;
 import org.skinlab.desktop.viewer.Viewer;
+import org.skinlab.skinning.SkinningMethod;
 
 /**
- * What the interface shows about the frame just drawn: the viewer (its model, switches, camera and
- * live series), what the renderer drew and the numbers the comparison measured. One instance,
- * refilled every frame by the render loop; read by {@link AppUi} on the same thread.
+ * The {@link SceneReadout} the render loop fills: one instance, written by {@link SkinlabApp} and
+ * {@link ScenePainter} while a window frame is drawn, then read by the interface.
  */
-public final class AppFrame {
+final class MutableSceneReadout implements SceneReadout {
     final LiveStats stats = new LiveStats();
+    final SceneArea area = new SceneArea();
     Viewer viewer;
     int width;
     int height;
-    long frameNumber;
     double frameMillis;
     boolean drewMesh;
     boolean gpuSkinned;
-    long sequence = -1;
     double clipTime;
-    /** The method each view shows (one, or two side by side), and whether the CPU skinned it. */
     final SkinningMethod[] viewMethods = new SkinningMethod[2];
     final boolean[] viewOnCpu = new boolean[2];
     int views;
-    int sceneLeft;
     int vertices;
     long skinningNanos;
     int shaderInfluences;
     int cappedVertices;
-    /** Largest |LBS - DQS| over the model relative to its size; NaN when not measured. */
     double maxDifference = Double.NaN;
-    /** The value at the top of the difference colour map, relative to the model's size. */
     double differenceFull = Double.NaN;
     double lbsVolume = Double.NaN;
     double dqsVolume = Double.NaN;
 
+    @Override
     public LiveStats stats() {
         return stats;
     }
 
-    /** Framebuffer pixels left of the scene (the toolbar's). */
-    public int sceneLeft() {
-        return sceneLeft;
+    @Override
+    public SceneArea sceneArea() {
+        return area;
     }
 
-    /** Views drawn side by side: 1, or 2 in the split view. */
+    @Override
     public int views() {
         return views;
     }
 
+    @Override
     public SkinningMethod viewMethod(int view) {
         return viewMethods[view];
     }
 
+    @Override
     public boolean viewOnCpu(int view) {
         return viewOnCpu[view];
     }
 
+    @Override
     public Viewer viewer() {
         return viewer;
     }
 
+    @Override
     public int width() {
         return width;
     }
 
+    @Override
     public int height() {
         return height;
     }
 
-
-    public long frameNumber() {
-        return frameNumber;
-    }
-
-    public double frameMillis() {
-        return frameMillis;
-    }
-
-    /** Whether a model frame was drawn (false while the first one is being made). */
+    @Override
     public boolean drewMesh() {
         return drewMesh;
     }
 
+    @Override
     public boolean gpuSkinned() {
         return gpuSkinned;
     }
 
-    public long sequence() {
-        return sequence;
-    }
-
+    @Override
     public double clipTime() {
         return clipTime;
     }
 
+    @Override
     public int vertices() {
         return vertices;
     }
 
+    @Override
     public int shaderInfluences() {
         return shaderInfluences;
     }
 
+    @Override
     public int cappedVertices() {
         return cappedVertices;
     }
 
+    @Override
     public double maxDifference() {
         return maxDifference;
     }
 
+    @Override
     public double differenceFull() {
         return differenceFull;
     }
 
+    @Override
     public double lbsVolume() {
         return lbsVolume;
     }
 
+    @Override
     public double dqsVolume() {
         return dqsVolume;
     }

@@ -1,0 +1,62 @@
+package org.skinlab.desktop.ui;
+
+import org.skinlab.desktop.viewer.LiveStats;
+import org.skinlab.desktop.viewer.Viewer;
+import org.skinlab.skinning.SkinningMethod;
+
+/**
+ * What the interface shows about the scene just drawn: the viewer (its model, switches, camera and
+ * live series), what the renderer drew and the numbers the comparison measured. Refilled every
+ * window frame by the render loop and read by the interface on the same thread.
+ */
+public interface SceneReadout {
+    Viewer viewer();
+
+    LiveStats stats();
+
+    /** Framebuffer width and height in pixels. */
+    int width();
+
+    int height();
+
+    /** Where the scene was drawn: the window less the docked panels. */
+    SceneArea sceneArea();
+
+    /** Views drawn side by side in the scene area: 1, or 2 in the split view. */
+    int views();
+
+    /** The method a view shows. */
+    SkinningMethod viewMethod(int view);
+
+    /** Whether the CPU skinned what a view shows. */
+    boolean viewOnCpu(int view);
+
+    /** Whether a model frame was drawn (false while the first one is being made). */
+    boolean drewMesh();
+
+    boolean gpuSkinned();
+
+    /** The clip time of the simulation frame drawn, in seconds. */
+    double clipTime();
+
+    /** Vertices drawn per instance. */
+    int vertices();
+
+    /** Influences per vertex the shader reads. */
+    int shaderInfluences();
+
+    /** Vertices whose influences the shader's cap cut (their weights renormalised). */
+    int cappedVertices();
+
+    /** Largest |LBS - DQS| over the model relative to its size; NaN when not measured. */
+    double maxDifference();
+
+    /** The value at the top of the difference colour map, relative to the model's size. */
+    double differenceFull();
+
+    /** LBS's volume relative to the rest shape's; NaN when the mesh is not closed. */
+    double lbsVolume();
+
+    /** DQS's volume relative to the rest shape's; NaN when the mesh is not closed. */
+    double dqsVolume();
+}
