@@ -41,9 +41,9 @@ public final class RenderBenchCommand implements Callable<Integer> {
             description = "a model file, .dae/.gltf/.glb (default: the bundled walking character)")
     Path file;
 
-    @Option(names = "--size", paramLabel = "WxH", converter = ViewCommand.SizeConverter.class,
+    @Option(names = "--size", paramLabel = "WxH", converter = WindowOptions.SizeConverter.class,
             description = "framebuffer size (default: 640x480)")
-    ViewCommand.Size size = new ViewCommand.Size(640, 480);
+    WindowOptions.Size size = new WindowOptions.Size(640, 480);
 
     @Option(names = "--seconds", paramLabel = "S", description = "measured time per point (default: 1.5)")
     double seconds = 1.5;
