@@ -175,7 +175,7 @@ public final class SkinningBenchCommand implements Callable<Integer> {
     private SkinningMethod parseMethod() {
         SkinningMethod m;
         try {
-            m = SkinningMethod.fromKey(method);
+            m = MethodKeys.parse(method);
         } catch (IllegalArgumentException e) {
             throw usage(e.getMessage());
         }
