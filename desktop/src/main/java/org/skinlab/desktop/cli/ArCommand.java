@@ -10,6 +10,7 @@ import org.skinlab.ar.CameraIntrinsics;
 import org.skinlab.ar.FiducialTracker;
 import org.skinlab.ar.MarkerDictionary;
 import org.skinlab.ar.TrackerConfig;
+import org.skinlab.desktop.CommandFailure;
 import org.skinlab.desktop.ExitCodes;
 import org.skinlab.desktop.app.AppOptions;
 import org.skinlab.desktop.app.ArSetup;

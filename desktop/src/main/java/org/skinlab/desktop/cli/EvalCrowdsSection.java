@@ -15,6 +15,9 @@ import org.knowm.xchart.XYChartBuilder;
 import org.knowm.xchart.XYSeries;
 import org.knowm.xchart.style.Styler;
 import org.knowm.xchart.style.markers.SeriesMarkers;
+import org.skinlab.desktop.ModelFiles;
+import org.skinlab.desktop.bench.CrowdBench;
+import org.skinlab.desktop.bench.RenderBench;
 import org.skinlab.skinning.SkinningMethod;
 
 /**

@@ -16,6 +16,8 @@ import org.knowm.xchart.XYChart;
 import org.knowm.xchart.XYChartBuilder;
 import org.knowm.xchart.style.Styler;
 import org.skinlab.animation.RotationInterpolation;
+import org.skinlab.desktop.ModelFileSearch;
+import org.skinlab.desktop.ModelFiles;
 import org.skinlab.model.Model;
 import org.skinlab.model.Node;
 import org.skinlab.skinning.InfluenceCapError;

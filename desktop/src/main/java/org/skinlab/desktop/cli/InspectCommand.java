@@ -14,7 +14,10 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
+import org.skinlab.desktop.CommandFailure;
 import org.skinlab.desktop.ExitCodes;
+import org.skinlab.desktop.ModelFileSearch;
+import org.skinlab.desktop.ModelFiles;
 import org.skinlab.importer.ModelImporter;
 import org.skinlab.model.AnimationClip;
 import org.skinlab.model.ImportWarning;

@@ -3,6 +3,7 @@ package org.skinlab.desktop.cli;
 import java.util.ArrayList;
 import java.util.List;
 
+import org.skinlab.desktop.CommandFailure;
 import org.skinlab.desktop.ExitCodes;
 import org.skinlab.skinning.SkinningMethod;
 

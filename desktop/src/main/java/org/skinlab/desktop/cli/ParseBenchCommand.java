@@ -15,8 +15,10 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
+import org.skinlab.desktop.CommandFailure;
 import org.skinlab.desktop.ExitCodes;
 import org.skinlab.desktop.bench.AssimpBaseline;
+import org.skinlab.desktop.bench.ParseTimer;
 import org.skinlab.desktop.bench.SyntheticCollada;
 import org.skinlab.desktop.bench.SyntheticGltf;
 import org.skinlab.importer.ModelImporter;

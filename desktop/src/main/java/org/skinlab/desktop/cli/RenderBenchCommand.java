@@ -14,7 +14,11 @@ import java.util.concurrent.Callable;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.SerializationFeature;
 
+import org.skinlab.desktop.CommandFailure;
 import org.skinlab.desktop.ExitCodes;
+import org.skinlab.desktop.ModelFiles;
+import org.skinlab.desktop.bench.CrowdBench;
+import org.skinlab.desktop.bench.RenderBench;
 import org.skinlab.desktop.render.GlWindow;
 import org.skinlab.desktop.viewer.ModelLibrary;
 import org.skinlab.model.Model;

@@ -4,6 +4,7 @@ import java.nio.file.Path;
 import java.util.concurrent.Callable;
 
 import org.skinlab.animation.RotationInterpolation;
+import org.skinlab.desktop.CommandFailure;
 import org.skinlab.desktop.ExitCodes;
 import org.skinlab.desktop.app.AppOptions;
 import org.skinlab.desktop.app.SkinlabApp;
