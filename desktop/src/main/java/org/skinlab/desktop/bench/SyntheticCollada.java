@@ -53,75 +53,12 @@ public final class SyntheticCollada {
                     + "<unit name=\"meter\" meter=\"1\"/><up_axis>Z_UP</up_axis></asset>\n");
             w.write("  <library_geometries><geometry id=\"grid-mesh\" name=\"grid\"><mesh>\n");
 
-            w.write("    <source id=\"grid-positions\"><float_array id=\"grid-positions-array\" count=\""
-                    + positions * 3 + "\">");
             StringBuilder sb = new StringBuilder(1 << 16);
-            for (int y = 0; y < side; y++) {
-                for (int x = 0; x < side; x++) {
-                    float px = x / (float) n * 4f;
-                    float py = y / (float) n * 4f;
-                    float pz = 0.1f * (float) Math.sin(px * 3.1) * (float) Math.cos(py * 2.3);
-                    sb.append(px).append(' ').append(py).append(' ').append(pz).append(' ');
-                }
-                flush(w, sb);
-            }
-            flush(w, sb);
-            w.write("</float_array><technique_common><accessor source=\"#grid-positions-array\" count=\"" + positions
-                    + "\" stride=\"3\"><param name=\"X\" type=\"float\"/><param name=\"Y\" type=\"float\"/>"
-                    + "<param name=\"Z\" type=\"float\"/></accessor></technique_common></source>\n");
-
-            // One normal per quad (flat shading) and one UV per position, as separate index streams.
-            w.write("    <source id=\"grid-normals\"><float_array id=\"grid-normals-array\" count=\"" + quads * 3
-                    + "\">");
-            for (long q = 0; q < quads; q++) {
-                float a = (q % 7) * 0.01f;
-                float len = (float) Math.sqrt(1 + a * a);
-                sb.append(a / len).append(' ').append(0f).append(' ').append(1f / len).append(' ');
-                if (sb.length() > (1 << 15)) {
-                    flush(w, sb);
-                }
-            }
-            flush(w, sb);
-            w.write("</float_array><technique_common><accessor source=\"#grid-normals-array\" count=\"" + quads
-                    + "\" stride=\"3\"><param name=\"X\" type=\"float\"/><param name=\"Y\" type=\"float\"/>"
-                    + "<param name=\"Z\" type=\"float\"/></accessor></technique_common></source>\n");
-
-            w.write("    <source id=\"grid-uv\"><float_array id=\"grid-uv-array\" count=\"" + positions * 2 + "\">");
-            for (int y = 0; y < side; y++) {
-                for (int x = 0; x < side; x++) {
-                    sb.append(x / (float) n).append(' ').append(y / (float) n).append(' ');
-                }
-                flush(w, sb);
-            }
-            w.write("</float_array><technique_common><accessor source=\"#grid-uv-array\" count=\"" + positions
-                    + "\" stride=\"2\"><param name=\"S\" type=\"float\"/><param name=\"T\" type=\"float\"/>"
-                    + "</accessor></technique_common></source>\n");
-
-            w.write("    <vertices id=\"grid-vertices\"><input semantic=\"POSITION\" source=\"#grid-positions\"/>"
-                    + "</vertices>\n");
-            w.write("    <polylist count=\"" + quads + "\"><input semantic=\"VERTEX\" source=\"#grid-vertices\" "
-                    + "offset=\"0\"/><input semantic=\"NORMAL\" source=\"#grid-normals\" offset=\"1\"/>"
-                    + "<input semantic=\"TEXCOORD\" source=\"#grid-uv\" offset=\"2\" set=\"0\"/>\n      <vcount>");
-            for (long q = 0; q < quads; q++) {
-                sb.append("4 ");
-                if (sb.length() > (1 << 15)) {
-                    flush(w, sb);
-                }
-            }
-            flush(w, sb);
-            w.write("</vcount>\n      <p>");
-            long q = 0;
-            for (int y = 0; y < n; y++) {
-                for (int x = 0; x < n; x++, q++) {
-                    int a = y * side + x;
-                    int[] corners = {a, a + 1, a + 1 + side, a + side};
-                    for (int c : corners) {
-                        sb.append(c).append(' ').append(q).append(' ').append(c).append(' ');
-                    }
-                }
-                flush(w, sb);
-            }
-            w.write("</p>\n    </polylist>\n  </mesh></geometry></library_geometries>\n");
+            writePositions(w, sb, n, side, positions);
+            writeNormals(w, sb, quads);
+            writeUvs(w, sb, n, side, positions);
+            writePolylist(w, sb, n, side, quads);
+            w.write("  </mesh></geometry></library_geometries>\n");
 
             writeSkin(w, sb, n, side, positions);
             writeScene(w);
@@ -129,6 +66,86 @@ public final class SyntheticCollada {
             w.write("</COLLADA>\n");
         }
         return 2 * quads;
+    }
+
+    /** The grid's positions: a gentle sine surface over 4 m by 4 m. */
+    private static void writePositions(Writer w, StringBuilder sb, int n, int side, long positions) throws IOException {
+        w.write("    <source id=\"grid-positions\"><float_array id=\"grid-positions-array\" count=\""
+                + positions * 3 + "\">");
+        for (int y = 0; y < side; y++) {
+            for (int x = 0; x < side; x++) {
+                float px = x / (float) n * 4f;
+                float py = y / (float) n * 4f;
+                float pz = 0.1f * (float) Math.sin(px * 3.1) * (float) Math.cos(py * 2.3);
+                sb.append(px).append(' ').append(py).append(' ').append(pz).append(' ');
+            }
+            flush(w, sb);
+        }
+        flush(w, sb);
+        w.write("</float_array><technique_common><accessor source=\"#grid-positions-array\" count=\"" + positions
+                + "\" stride=\"3\"><param name=\"X\" type=\"float\"/><param name=\"Y\" type=\"float\"/>"
+                + "<param name=\"Z\" type=\"float\"/></accessor></technique_common></source>\n");
+    }
+
+    /** One normal per quad (flat shading), an index stream of its own beside the positions'. */
+    private static void writeNormals(Writer w, StringBuilder sb, long quads) throws IOException {
+        w.write("    <source id=\"grid-normals\"><float_array id=\"grid-normals-array\" count=\"" + quads * 3
+                + "\">");
+        for (long q = 0; q < quads; q++) {
+            float a = (q % 7) * 0.01f;
+            float len = (float) Math.sqrt(1 + a * a);
+            sb.append(a / len).append(' ').append(0f).append(' ').append(1f / len).append(' ');
+            if (sb.length() > (1 << 15)) {
+                flush(w, sb);
+            }
+        }
+        flush(w, sb);
+        w.write("</float_array><technique_common><accessor source=\"#grid-normals-array\" count=\"" + quads
+                + "\" stride=\"3\"><param name=\"X\" type=\"float\"/><param name=\"Y\" type=\"float\"/>"
+                + "<param name=\"Z\" type=\"float\"/></accessor></technique_common></source>\n");
+    }
+
+    /** One UV per position, a third index stream. */
+    private static void writeUvs(Writer w, StringBuilder sb, int n, int side, long positions) throws IOException {
+        w.write("    <source id=\"grid-uv\"><float_array id=\"grid-uv-array\" count=\"" + positions * 2 + "\">");
+        for (int y = 0; y < side; y++) {
+            for (int x = 0; x < side; x++) {
+                sb.append(x / (float) n).append(' ').append(y / (float) n).append(' ');
+            }
+            flush(w, sb);
+        }
+        w.write("</float_array><technique_common><accessor source=\"#grid-uv-array\" count=\"" + positions
+                + "\" stride=\"2\"><param name=\"S\" type=\"float\"/><param name=\"T\" type=\"float\"/>"
+                + "</accessor></technique_common></source>\n");
+    }
+
+    /** The quads: vertex, normal and UV index of each corner. */
+    private static void writePolylist(Writer w, StringBuilder sb, int n, int side, long quads) throws IOException {
+        w.write("    <vertices id=\"grid-vertices\"><input semantic=\"POSITION\" source=\"#grid-positions\"/>"
+                + "</vertices>\n");
+        w.write("    <polylist count=\"" + quads + "\"><input semantic=\"VERTEX\" source=\"#grid-vertices\" "
+                + "offset=\"0\"/><input semantic=\"NORMAL\" source=\"#grid-normals\" offset=\"1\"/>"
+                + "<input semantic=\"TEXCOORD\" source=\"#grid-uv\" offset=\"2\" set=\"0\"/>\n      <vcount>");
+        for (long q = 0; q < quads; q++) {
+            sb.append("4 ");
+            if (sb.length() > (1 << 15)) {
+                flush(w, sb);
+            }
+        }
+        flush(w, sb);
+        w.write("</vcount>\n      <p>");
+        long q = 0;
+        for (int y = 0; y < n; y++) {
+            for (int x = 0; x < n; x++, q++) {
+                int a = y * side + x;
+                int[] corners = {a, a + 1, a + 1 + side, a + side};
+                for (int c : corners) {
+                    sb.append(c).append(' ').append(q).append(' ').append(c).append(' ');
+                }
+            }
+            flush(w, sb);
+        }
+        w.write("</p>\n    </polylist>\n");
     }
 
     private static void writeSkin(Writer w, StringBuilder sb, int n, int side, long positions) throws IOException {

@@ -54,43 +54,7 @@ public final class SyntheticSkinData {
         this.influences = influences;
         SplitMix64 r = new SplitMix64(seed);
         for (int j = 0; j < JOINTS; j++) {
-            float x = r.nextSigned();
-            float y = r.nextSigned();
-            float z = r.nextSigned();
-            float w = r.nextSigned();
-            float n = (float) Math.sqrt(x * x + y * y + z * z + w * w);
-            x /= n;
-            y /= n;
-            z /= n;
-            w /= n;
-            float tx = r.nextSigned();
-            float ty = r.nextSigned();
-            float tz = r.nextSigned();
-            float[] m = matrices;
-            int o = 12 * j;
-            m[o] = 1 - 2 * (y * y + z * z);
-            m[o + 1] = 2 * (x * y - w * z);
-            m[o + 2] = 2 * (x * z + w * y);
-            m[o + 3] = tx;
-            m[o + 4] = 2 * (x * y + w * z);
-            m[o + 5] = 1 - 2 * (x * x + z * z);
-            m[o + 6] = 2 * (y * z - w * x);
-            m[o + 7] = ty;
-            m[o + 8] = 2 * (x * z - w * y);
-            m[o + 9] = 2 * (y * z + w * x);
-            m[o + 10] = 1 - 2 * (x * x + y * y);
-            m[o + 11] = tz;
-            // d = (t, 0) r / 2 (Kavan et al. 2008)
-            float[] q = dualQuaternions;
-            int p = 8 * j;
-            q[p] = x;
-            q[p + 1] = y;
-            q[p + 2] = z;
-            q[p + 3] = w;
-            q[p + 4] = 0.5f * (tx * w + ty * z - tz * y);
-            q[p + 5] = 0.5f * (-tx * z + ty * w + tz * x);
-            q[p + 6] = 0.5f * (tx * y - ty * x + tz * w);
-            q[p + 7] = -0.5f * (tx * x + ty * y + tz * z);
+            drawJoint(r, j);
         }
         positions = new float[3 * points];
         normals = new float[3 * points];
@@ -99,42 +63,88 @@ public final class SyntheticSkinData {
         int[] ids = new int[influences];
         float[] ws = new float[influences];
         for (int i = 0; i < points; i++) {
-            for (int k = 0; k < 3; k++) {
-                positions[3 * i + k] = r.nextSigned();
+            drawPoint(r, i, ids, ws);
+        }
+    }
+
+    /** Joint {@code j}: a random rotation (a normalised random quaternion) and translation, as a matrix and a dual quaternion. */
+    private void drawJoint(SplitMix64 r, int j) {
+        float x = r.nextSigned();
+        float y = r.nextSigned();
+        float z = r.nextSigned();
+        float w = r.nextSigned();
+        float n = (float) Math.sqrt(x * x + y * y + z * z + w * w);
+        x /= n;
+        y /= n;
+        z /= n;
+        w /= n;
+        float tx = r.nextSigned();
+        float ty = r.nextSigned();
+        float tz = r.nextSigned();
+        float[] m = matrices;
+        int o = 12 * j;
+        m[o] = 1 - 2 * (y * y + z * z);
+        m[o + 1] = 2 * (x * y - w * z);
+        m[o + 2] = 2 * (x * z + w * y);
+        m[o + 3] = tx;
+        m[o + 4] = 2 * (x * y + w * z);
+        m[o + 5] = 1 - 2 * (x * x + z * z);
+        m[o + 6] = 2 * (y * z - w * x);
+        m[o + 7] = ty;
+        m[o + 8] = 2 * (x * z - w * y);
+        m[o + 9] = 2 * (y * z + w * x);
+        m[o + 10] = 1 - 2 * (x * x + y * y);
+        m[o + 11] = tz;
+        // d = (t, 0) r / 2 (Kavan et al. 2008)
+        float[] q = dualQuaternions;
+        int p = 8 * j;
+        q[p] = x;
+        q[p + 1] = y;
+        q[p + 2] = z;
+        q[p + 3] = w;
+        q[p + 4] = 0.5f * (tx * w + ty * z - tz * y);
+        q[p + 5] = 0.5f * (-tx * z + ty * w + tz * x);
+        q[p + 6] = 0.5f * (tx * y - ty * x + tz * w);
+        q[p + 7] = -0.5f * (tx * x + ty * y + tz * z);
+    }
+
+    /** Point {@code i}: position, unit normal, {@link #influences} distinct joints and normalised weights. */
+    private void drawPoint(SplitMix64 r, int i, int[] ids, float[] ws) {
+        for (int k = 0; k < 3; k++) {
+            positions[3 * i + k] = r.nextSigned();
+        }
+        float nx = r.nextSigned();
+        float ny = r.nextSigned();
+        float nz = r.nextSigned();
+        float nn = (float) Math.sqrt(nx * nx + ny * ny + nz * nz);
+        if (nn < 1e-6f) {
+            nx = 0;
+            ny = 0;
+            nz = 1;
+            nn = 1;
+        }
+        normals[3 * i] = nx / nn;
+        normals[3 * i + 1] = ny / nn;
+        normals[3 * i + 2] = nz / nn;
+        int got = 0;
+        while (got < influences) {
+            int c = (int) (r.next() & (JOINTS - 1));
+            boolean duplicate = false;
+            for (int k = 0; k < got; k++) {
+                duplicate |= ids[k] == c;
             }
-            float nx = r.nextSigned();
-            float ny = r.nextSigned();
-            float nz = r.nextSigned();
-            float nn = (float) Math.sqrt(nx * nx + ny * ny + nz * nz);
-            if (nn < 1e-6f) {
-                nx = 0;
-                ny = 0;
-                nz = 1;
-                nn = 1;
+            if (!duplicate) {
+                ids[got++] = c;
             }
-            normals[3 * i] = nx / nn;
-            normals[3 * i + 1] = ny / nn;
-            normals[3 * i + 2] = nz / nn;
-            int got = 0;
-            while (got < influences) {
-                int c = (int) (r.next() & (JOINTS - 1));
-                boolean duplicate = false;
-                for (int k = 0; k < got; k++) {
-                    duplicate |= ids[k] == c;
-                }
-                if (!duplicate) {
-                    ids[got++] = c;
-                }
-            }
-            float sum = 0;
-            for (int k = 0; k < influences; k++) {
-                ws[k] = 0.05f + r.nextFloat();
-                sum += ws[k];
-            }
-            for (int k = 0; k < influences; k++) {
-                joints[influences * i + k] = ids[k];
-                weights[influences * i + k] = ws[k] / sum;
-            }
+        }
+        float sum = 0;
+        for (int k = 0; k < influences; k++) {
+            ws[k] = 0.05f + r.nextFloat();
+            sum += ws[k];
+        }
+        for (int k = 0; k < influences; k++) {
+            joints[influences * i + k] = ids[k];
+            weights[influences * i + k] = ws[k] / sum;
         }
     }
 

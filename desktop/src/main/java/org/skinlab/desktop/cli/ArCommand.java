@@ -10,6 +10,7 @@ import org.skinlab.ar.CameraIntrinsics;
 import org.skinlab.ar.FiducialTracker;
 import org.skinlab.ar.MarkerDictionary;
 import org.skinlab.ar.TrackerConfig;
+import org.skinlab.desktop.CommandFailure;
 import org.skinlab.desktop.ExitCodes;
 import org.skinlab.desktop.app.AppOptions;
 import org.skinlab.desktop.app.ArSetup;
@@ -21,10 +22,10 @@ import org.skinlab.desktop.ar.IntrinsicsFile;
 import org.skinlab.desktop.ar.VideoFileSource;
 import org.skinlab.desktop.ar.WebcamSource;
 import org.skinlab.desktop.render.DrawSettings;
-import org.skinlab.skinning.SkinningMethod;
 
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -79,22 +80,8 @@ public final class ArCommand implements Callable<Integer> {
     @Option(names = "--fps", paramLabel = "N", description = "frames per second of --images and --video (default: ${DEFAULT-VALUE})")
     double fps = 30;
 
-    @Option(names = "--method", paramLabel = MethodKeys.KEYS, converter = MethodKeys.Converter.class,
-            description = "skinning method at start (default: lbs)")
-    SkinningMethod method = SkinningMethod.LBS;
-
-    @Option(names = "--screenshot", paramLabel = "OUT.png", description = "render one frame off-screen, write it as PNG and exit")
-    Path screenshot;
-
-    @Option(names = "--size", paramLabel = "WxH", converter = ViewCommand.SizeConverter.class,
-            description = "window or screenshot size in pixels (default: 1280x800)")
-    ViewCommand.Size size = new ViewCommand.Size(AppOptions.DEFAULT_WIDTH, AppOptions.DEFAULT_HEIGHT);
-
-    @Option(names = "--hide-ui", description = "draw the scene only, without the toolbar")
-    boolean hideUi;
-
-    @Option(names = "--script", paramLabel = "FILE", description = "replay UI actions from FILE (docs/desktop.md)")
-    Path script;
+    @Mixin
+    WindowOptions window = new WindowOptions();
 
     @Option(names = "--exit-after-frames", paramLabel = "N", description = "close after N frames")
     int exitAfterFrames;
@@ -127,8 +114,9 @@ public final class ArCommand implements Callable<Integer> {
         }
         FiducialTracker.runOnCallingThread();
         ArFeed feed = new ArFeed(frames, ArSession.of(new FiducialTracker(config, k)));
-        AppOptions options = new AppOptions(file, method, RotationInterpolation.SLERP, true, DrawSettings.View.SHADED, null,
-                null, 0, screenshot, size.width(), size.height(), hideUi, script, exitAfterFrames, false);
+        AppOptions options = new AppOptions(file, window.method, RotationInterpolation.SLERP, true,
+                DrawSettings.View.SHADED, null, null, 0, window.screenshot, window.size.width(), window.size.height(),
+                window.hideUi, window.script, exitAfterFrames, false);
         return SkinlabApp.run(options, new ArSetup(feed, k, markerSizeMm / 1000), spec.commandLine().getOut(),
                 spec.commandLine().getErr());
     }

@@ -14,6 +14,7 @@ import org.skinlab.ar.CalibrationTarget;
 import org.skinlab.ar.CameraIntrinsics;
 import org.skinlab.ar.GrayImage;
 import org.skinlab.ar.LensDistortion;
+import org.skinlab.desktop.CommandFailure;
 import org.skinlab.desktop.ExitCodes;
 import org.skinlab.desktop.ar.CameraCalibration;
 import org.skinlab.desktop.ar.GrayImages;

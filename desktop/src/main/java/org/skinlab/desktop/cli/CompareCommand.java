@@ -10,7 +10,9 @@ import java.util.Map;
 import java.util.concurrent.Callable;
 
 import org.skinlab.animation.RotationInterpolation;
+import org.skinlab.desktop.CommandFailure;
 import org.skinlab.desktop.ExitCodes;
+import org.skinlab.desktop.ModelFiles;
 import org.skinlab.model.Model;
 import org.skinlab.model.Node;
 import org.skinlab.skinning.JointArtifacts;

@@ -15,6 +15,7 @@ import org.knowm.xchart.XYSeries;
 import org.knowm.xchart.style.Styler;
 import org.knowm.xchart.style.lines.SeriesLines;
 import org.knowm.xchart.style.markers.SeriesMarkers;
+import org.skinlab.desktop.ModelFileSearch;
 import org.skinlab.skinning.SkinningMethod;
 
 /**
@@ -92,81 +93,91 @@ final class EvalAdviceSection implements EvalSection {
         in.put("frameMicros", EvalReport.round(FRAME_MICROS));
         JsonNode time = context.measured("time");
         if (time != null) {
-            for (JsonNode asset : time.get("assets")) {
-                if (!asset.get("file").asText().equals(CHARACTER)) {
-                    continue;
-                }
-                ObjectNode c = in.putObject("character");
-                c.put("file", CHARACTER);
-                c.put("vertices", asset.get("renderVertices").asInt());
-                c.put("joints", asset.get("joints").asInt());
-                for (JsonNode run : asset.get("runs")) {
-                    if (run.get("influences").asText().equals("all")) {
-                        ObjectNode k = object(c, run.get("kernels").asText());
-                        double micros = run.get("medianMicros").asDouble();
-                        k.put(run.get("method").asText() + "Micros", micros);
-                        k.put(run.get("method").asText() + "PerFrame", (long) Math.floor(FRAME_MICROS / micros));
-                    }
-                }
-                for (String k : new String[] {"fastest", "scalar"}) {
-                    ObjectNode n = object(c, k);
-                    n.put("dqsOverLbs", EvalReport.round(n.get("dqsMicros").asDouble() / n.get("lbsMicros").asDouble()));
-                    n.put("corOverDqs", EvalReport.round(n.get("corMicros").asDouble() / n.get("dqsMicros").asDouble()));
-                }
-            }
+            characterTimes(time, in);
         }
         JsonNode quality = context.measured("quality");
         if (quality != null) {
-            for (JsonNode asset : quality.get("assets")) {
-                String file = asset.get("file").asText();
-                if (asset.has("skipped")) {
-                    continue;
+            qualityInputs(quality, in);
+        }
+        EvalAdvice.crowdsAndTracking(context, in);
+    }
+
+    /** The bundled character's frame per method and kernels, and the methods' cost ratios. */
+    private static void characterTimes(JsonNode time, ObjectNode in) {
+        for (JsonNode asset : time.get("assets")) {
+            if (!asset.get("file").asText().equals(CHARACTER)) {
+                continue;
+            }
+            ObjectNode c = in.putObject("character");
+            c.put("file", CHARACTER);
+            c.put("vertices", asset.get("renderVertices").asInt());
+            c.put("joints", asset.get("joints").asInt());
+            for (JsonNode run : asset.get("runs")) {
+                if (run.get("influences").asText().equals("all")) {
+                    ObjectNode k = object(c, run.get("kernels").asText());
+                    double micros = run.get("medianMicros").asDouble();
+                    k.put(run.get("method").asText() + "Micros", micros);
+                    k.put(run.get("method").asText() + "PerFrame", (long) Math.floor(FRAME_MICROS / micros));
                 }
-                if (file.equals("cylinder-twist-high.dae")) {
-                    ObjectNode t = in.putObject("twist");
-                    t.put("file", file);
-                    JsonNode angles = asset.get("angleDegrees");
-                    t.put("angleDegrees", angles.get(angles.size() - 1).asDouble());
-                    for (SkinningMethod m : SkinningMethod.values()) {
-                        t.put(m.key() + "Ring", asset.at("/methods/" + m.key() + "/minRingRadius").asDouble());
+            }
+            for (String k : new String[] {"fastest", "scalar"}) {
+                ObjectNode n = object(c, k);
+                n.put("dqsOverLbs", EvalReport.round(n.get("dqsMicros").asDouble() / n.get("lbsMicros").asDouble()));
+                n.put("corOverDqs", EvalReport.round(n.get("corMicros").asDouble() / n.get("dqsMicros").asDouble()));
+            }
+        }
+    }
+
+    /** The twist, bend, character and influence-cap numbers of the quality section. */
+    private static void qualityInputs(JsonNode quality, ObjectNode in) {
+        for (JsonNode asset : quality.get("assets")) {
+            String file = asset.get("file").asText();
+            if (asset.has("skipped")) {
+                continue;
+            }
+            if (file.equals("cylinder-twist-high.dae")) {
+                ObjectNode t = in.putObject("twist");
+                t.put("file", file);
+                JsonNode angles = asset.get("angleDegrees");
+                t.put("angleDegrees", angles.get(angles.size() - 1).asDouble());
+                for (SkinningMethod m : SkinningMethod.values()) {
+                    t.put(m.key() + "Ring", asset.at("/methods/" + m.key() + "/minRingRadius").asDouble());
+                }
+                // The first sampled angle at which LBS has lost a tenth of the ring.
+                JsonNode ring = asset.at("/methods/lbs/ringRadius");
+                for (int i = 0; i < ring.size(); i++) {
+                    if (ring.get(i).asDouble() < 0.9) {
+                        t.put("lbsRingBelow90PercentAtDegrees", angles.get(i).asDouble());
+                        break;
                     }
-                    // The first sampled angle at which LBS has lost a tenth of the ring.
-                    JsonNode ring = asset.at("/methods/lbs/ringRadius");
-                    for (int i = 0; i < ring.size(); i++) {
-                        if (ring.get(i).asDouble() < 0.9) {
-                            t.put("lbsRingBelow90PercentAtDegrees", angles.get(i).asDouble());
-                            break;
-                        }
-                    }
-                } else if (file.equals("cylinder-bend.dae")) {
-                    ObjectNode b = in.putObject("bend");
-                    b.put("file", file);
-                    JsonNode angles = asset.get("angleDegrees");
-                    b.put("angleDegrees", angles.get(angles.size() - 1).asDouble());
-                    for (SkinningMethod m : SkinningMethod.values()) {
-                        b.put(m.key() + "Bulge", asset.at("/methods/" + m.key() + "/maxBulge").asDouble());
-                        b.put(m.key() + "Volume", asset.at("/methods/" + m.key() + "/minVolume").asDouble());
-                    }
-                } else if (file.equals(CHARACTER)) {
-                    ObjectNode d = in.putObject("characterQuality");
-                    d.put("maxLbsDqsPercent", asset.get("maxLbsDqsPercent").asDouble());
-                    d.put("maxDqsCorPercent", asset.get("maxDqsCorPercent").asDouble());
-                } else if (asset.get("influences").asInt() > InfluenceCapReport.CAP_4) {
-                    ObjectNode cap = in.putObject("cap");
-                    cap.put("file", file);
-                    cap.put("influences", asset.get("influences").asInt());
-                    for (JsonNode c : asset.get("caps")) {
-                        if (c.get("cap").asInt() == InfluenceCapReport.CAP_4) {
-                            cap.put("cap", InfluenceCapReport.CAP_4);
-                            cap.put("cappedPositions", c.get("cappedPositions").asInt());
-                            cap.put("lbsPercent", c.get("lbsPercent").asDouble());
-                            cap.put("dqsPercent", c.get("dqsPercent").asDouble());
-                        }
+                }
+            } else if (file.equals("cylinder-bend.dae")) {
+                ObjectNode b = in.putObject("bend");
+                b.put("file", file);
+                JsonNode angles = asset.get("angleDegrees");
+                b.put("angleDegrees", angles.get(angles.size() - 1).asDouble());
+                for (SkinningMethod m : SkinningMethod.values()) {
+                    b.put(m.key() + "Bulge", asset.at("/methods/" + m.key() + "/maxBulge").asDouble());
+                    b.put(m.key() + "Volume", asset.at("/methods/" + m.key() + "/minVolume").asDouble());
+                }
+            } else if (file.equals(CHARACTER)) {
+                ObjectNode d = in.putObject("characterQuality");
+                d.put("maxLbsDqsPercent", asset.get("maxLbsDqsPercent").asDouble());
+                d.put("maxDqsCorPercent", asset.get("maxDqsCorPercent").asDouble());
+            } else if (asset.get("influences").asInt() > InfluenceCapReport.CAP_4) {
+                ObjectNode cap = in.putObject("cap");
+                cap.put("file", file);
+                cap.put("influences", asset.get("influences").asInt());
+                for (JsonNode c : asset.get("caps")) {
+                    if (c.get("cap").asInt() == InfluenceCapReport.CAP_4) {
+                        cap.put("cap", InfluenceCapReport.CAP_4);
+                        cap.put("cappedPositions", c.get("cappedPositions").asInt());
+                        cap.put("lbsPercent", c.get("lbsPercent").asDouble());
+                        cap.put("dqsPercent", c.get("dqsPercent").asDouble());
                     }
                 }
             }
         }
-        EvalAdvice.crowdsAndTracking(context, in);
     }
 
     private static ObjectNode object(ObjectNode parent, String name) {

@@ -8,6 +8,8 @@ import com.fasterxml.jackson.databind.JsonNode;
 
 import me.tongfei.progressbar.ProgressBar;
 
+import org.skinlab.desktop.bench.BenchCorpus;
+
 /**
  * What a section of {@code skinlab eval} measures with: the mode (quick or full), the repository's
  * assets, the shared fixtures when present, where to say what it skips, and the progress bar. The

@@ -15,6 +15,9 @@ import org.knowm.xchart.XYChartBuilder;
 import org.knowm.xchart.XYSeries;
 import org.knowm.xchart.style.Styler;
 import org.knowm.xchart.style.markers.SeriesMarkers;
+import org.skinlab.desktop.ModelFiles;
+import org.skinlab.desktop.bench.CrowdBench;
+import org.skinlab.desktop.bench.RenderBench;
 import org.skinlab.skinning.SkinningMethod;
 
 /**
@@ -79,16 +82,7 @@ final class EvalCrowdsSection implements EvalSection {
         for (double[] t : THESIS) {
             thesis.addObject().put("meshes", (int) t[0]).put("dqsFps", t[1]).put("lbsFps", t[2]);
         }
-        List<Path> files = new ArrayList<>();
-        files.add(context.root().resolve("assets").resolve(WALKER));
-        String cowboyName = EvalTimeSection.THESIS.get(0).file();
-        Path cowboy = context.corpus() == null ? null : context.corpus().resolve(cowboyName);
-        if (cowboy != null && Files.isRegularFile(cowboy)) {
-            files.add(cowboy);
-        } else {
-            results.put("cowboySkipped", "no " + cowboyName + " in the shared corpus at " + context.corpusPlace());
-            context.say("crowds: " + results.get("cowboySkipped").asText());
-        }
+        List<Path> files = files(context, results);
         boolean render = EvalCrowdsRender.display() != null;
         double cpuShare = render ? (quick ? 0.55 : 0.6) : 1;
         int block = cores + counts.length;
@@ -128,6 +122,21 @@ final class EvalCrowdsSection implements EvalSection {
         Path renderFile = files.get(files.size() - 1);
         EvalCrowdsRender.measure(context, renderNode, renderFile, cpuShare);
         beside(results);
+    }
+
+    /** The walker, and the thesis' cowboy when the shared corpus has it (else why not, in results and said). */
+    private static List<Path> files(EvalContext context, ObjectNode results) {
+        List<Path> files = new ArrayList<>();
+        files.add(context.root().resolve("assets").resolve(WALKER));
+        String cowboyName = EvalTimeSection.THESIS.get(0).file();
+        Path cowboy = context.corpus() == null ? null : context.corpus().resolve(cowboyName);
+        if (cowboy != null && Files.isRegularFile(cowboy)) {
+            files.add(cowboy);
+        } else {
+            results.put("cowboySkipped", "no " + cowboyName + " in the shared corpus at " + context.corpusPlace());
+            context.say("crowds: " + results.get("cowboySkipped").asText());
+        }
+        return files;
     }
 
     /** One timing's numbers: microseconds, as a frame of one character is some of them. */

@@ -22,8 +22,12 @@ import org.knowm.xchart.CategoryChartBuilder;
 import org.knowm.xchart.XYChart;
 import org.knowm.xchart.XYChartBuilder;
 import org.knowm.xchart.style.Styler;
+import org.skinlab.desktop.CommandFailure;
 import org.skinlab.desktop.ExitCodes;
+import org.skinlab.desktop.ModelFileSearch;
 import org.skinlab.desktop.bench.AssimpBaseline;
+import org.skinlab.desktop.bench.BenchCorpus;
+import org.skinlab.desktop.bench.ParseTimer;
 
 /**
  * Section "load": import time of our assets, of the shared corpus and of the shared conformance

@@ -25,6 +25,7 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 import org.joml.Matrix4f;
 import org.joml.Vector3f;
 import org.skinlab.animation.RotationInterpolation;
+import org.skinlab.desktop.ModelFiles;
 import org.skinlab.desktop.render.DrawSettings;
 import org.skinlab.model.Model;
 import org.skinlab.skinning.InfluenceCapError;

@@ -16,6 +16,8 @@ import org.knowm.xchart.XYChart;
 import org.knowm.xchart.XYChartBuilder;
 import org.knowm.xchart.style.Styler;
 import org.skinlab.animation.RotationInterpolation;
+import org.skinlab.desktop.ModelFileSearch;
+import org.skinlab.desktop.ModelFiles;
 import org.skinlab.model.Model;
 import org.skinlab.model.Node;
 import org.skinlab.skinning.InfluenceCapError;
@@ -94,33 +96,15 @@ final class EvalQualitySection implements EvalSection {
         Model model = ModelFiles.load(file).model;
         SkinnedModel skinned = new SkinnedModel(model, model.clips().isEmpty() ? null : model.clips().get(0),
                 NormalTransform.INVERSE_TRANSPOSE);
-        int g = -1;
-        int joint = -1;
-        int parent = -1;
-        JointArtifacts artifacts = null;
-        for (int k = 0; k < skinned.geometries().size(); k++) {
-            SkinnedGeometry geometry = skinned.geometries().get(k);
-            if (g >= 0 && geometry.pointCount() <= skinned.geometries().get(g).pointCount()) {
-                continue;
-            }
-            for (int j = 0; j < geometry.jointCount(); j++) {
-                int p = CompareCommand.parentInPalette(model, geometry, j);
-                if (p < 0) {
-                    continue;
-                }
-                JointArtifacts a = new JointArtifacts(geometry, j, p);
-                if (a.regionSize() > 0 && (artifacts == null || k != g || a.regionSize() > artifacts.regionSize())) {
-                    g = k;
-                    joint = j;
-                    parent = p;
-                    artifacts = a;
-                }
-            }
-        }
-        if (artifacts == null) {
+        Measured measured = largestRegion(model, skinned);
+        if (measured == null) {
             asset.put("skipped", "no skinned geometry has a joint whose parent is in its skin");
             return;
         }
+        int g = measured.geometry();
+        int joint = measured.joint();
+        int parent = measured.parent();
+        JointArtifacts artifacts = measured.artifacts();
         SkinnedGeometry geometry = skinned.geometries().get(g);
         asset.put("mesh", geometry.mesh() == null ? "?" : geometry.mesh().id());
         asset.put("joint", name(model, geometry.jointNode(joint)));
@@ -132,15 +116,7 @@ final class EvalQualitySection implements EvalSection {
         float[] times = times(skinned.sampler().start(), skinned.sampler().end(), quick);
         ArrayNode t = asset.putArray("times");
         ArrayNode angles = asset.putArray("angleDegrees");
-        Map<SkinningMethod, ObjectNode> byMethod = new EnumMap<>(SkinningMethod.class);
-        ObjectNode methods = asset.putObject("methods");
-        for (SkinningMethod m : SkinningMethod.values()) {
-            ObjectNode node = methods.putObject(m.key());
-            node.putArray("volume");
-            node.putArray("ringRadius");
-            node.putArray("bulge");
-            byMethod.put(m, node);
-        }
+        Map<SkinningMethod, ObjectNode> byMethod = methodNodes(asset.putObject("methods"));
         double lbsDqs = 0;
         double dqsCor = 0;
         Map<SkinningMethod, float[]> posed = new EnumMap<>(SkinningMethod.class);
@@ -178,6 +154,54 @@ final class EvalQualitySection implements EvalSection {
         asset.put("maxLbsDqsPercent", EvalReport.round(100 * lbsDqs));
         asset.put("maxDqsCorPercent", EvalReport.round(100 * dqsCor));
         caps(model, geometry, asset);
+    }
+
+    /** The joint measured in a file: its geometry, palette indices and the region it moves. */
+    private record Measured(int geometry, int joint, int parent, JointArtifacts artifacts) {
+    }
+
+    /**
+     * The joint with the largest region (of points it and its parent move) in the geometry with
+     * the most points that has one; null when no joint's parent is in its skin.
+     */
+    private static Measured largestRegion(Model model, SkinnedModel skinned) {
+        int g = -1;
+        int joint = -1;
+        int parent = -1;
+        JointArtifacts artifacts = null;
+        for (int k = 0; k < skinned.geometries().size(); k++) {
+            SkinnedGeometry geometry = skinned.geometries().get(k);
+            if (g >= 0 && geometry.pointCount() <= skinned.geometries().get(g).pointCount()) {
+                continue;
+            }
+            for (int j = 0; j < geometry.jointCount(); j++) {
+                int p = CompareCommand.parentInPalette(model, geometry, j);
+                if (p < 0) {
+                    continue;
+                }
+                JointArtifacts a = new JointArtifacts(geometry, j, p);
+                if (a.regionSize() > 0 && (artifacts == null || k != g || a.regionSize() > artifacts.regionSize())) {
+                    g = k;
+                    joint = j;
+                    parent = p;
+                    artifacts = a;
+                }
+            }
+        }
+        return artifacts == null ? null : new Measured(g, joint, parent, artifacts);
+    }
+
+    /** Per method, its node with the empty series filled per sampled time. */
+    private static Map<SkinningMethod, ObjectNode> methodNodes(ObjectNode methods) {
+        Map<SkinningMethod, ObjectNode> byMethod = new EnumMap<>(SkinningMethod.class);
+        for (SkinningMethod m : SkinningMethod.values()) {
+            ObjectNode node = methods.putObject(m.key());
+            node.putArray("volume");
+            node.putArray("ringRadius");
+            node.putArray("bulge");
+            byMethod.put(m, node);
+        }
+        return byMethod;
     }
 
     /** The cap errors of the measured geometry's mesh ({@code InfluenceCapReport}, every clip at its own 30 samples a second). */

@@ -7,6 +7,9 @@ import java.util.function.DoubleConsumer;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
+import org.skinlab.desktop.ModelFiles;
+import org.skinlab.desktop.bench.PaletteBench;
+import org.skinlab.desktop.bench.SkinningTiming;
 import org.skinlab.desktop.bench.SyntheticSkinData;
 import org.skinlab.model.MeshInstance;
 import org.skinlab.model.Model;

@@ -13,7 +13,11 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 import org.knowm.xchart.CategoryChart;
 import org.knowm.xchart.CategoryChartBuilder;
 import org.knowm.xchart.style.Styler;
+import org.skinlab.desktop.ModelFileSearch;
+import org.skinlab.desktop.ModelFiles;
 import org.skinlab.desktop.bench.CppSkinningReference;
+import org.skinlab.desktop.bench.FrameBench;
+import org.skinlab.desktop.bench.SkinningTiming;
 import org.skinlab.desktop.bench.SyntheticSkinData;
 import org.skinlab.model.MeshInstance;
 import org.skinlab.model.Model;
@@ -81,18 +85,7 @@ final class EvalTimeSection implements EvalSection {
         results.put("firstWarmupSeconds", firstWarmup);
         results.put("seconds", seconds);
         results.put("cap", CAP);
-        List<Path> files = new ArrayList<>();
-        Path assetsFolder = context.root().resolve("assets");
-        for (ModelFileSearch.Entry e : ModelFileSearch.expand(List.of(assetsFolder), ModelFileSearch.COLLADA)) {
-            files.add(e.path());
-        }
-        Path cowboy = context.corpus() == null ? null : context.corpus().resolve(THESIS.get(0).file());
-        if (cowboy != null && Files.isRegularFile(cowboy)) {
-            files.add(cowboy);
-        } else {
-            results.put("cowboySkipped", "no " + THESIS.get(0).file() + " in the shared corpus at "
-                    + context.corpusPlace());
-        }
+        List<Path> files = files(context, results);
         List<Model> models = new ArrayList<>();
         List<Path> skinned = new ArrayList<>();
         for (Path f : files) {
@@ -148,6 +141,23 @@ final class EvalTimeSection implements EvalSection {
         }
         thesis(results);
         reference(context, results.putObject("reference"));
+    }
+
+    /** Our COLLADA assets, and the thesis' cowboy when the shared corpus has it (else why not, in results). */
+    private static List<Path> files(EvalContext context, ObjectNode results) {
+        List<Path> files = new ArrayList<>();
+        Path assetsFolder = context.root().resolve("assets");
+        for (ModelFileSearch.Entry e : ModelFileSearch.expand(List.of(assetsFolder), ModelFileSearch.COLLADA)) {
+            files.add(e.path());
+        }
+        Path cowboy = context.corpus() == null ? null : context.corpus().resolve(THESIS.get(0).file());
+        if (cowboy != null && Files.isRegularFile(cowboy)) {
+            files.add(cowboy);
+        } else {
+            results.put("cowboySkipped", "no " + THESIS.get(0).file() + " in the shared corpus at "
+                    + context.corpusPlace());
+        }
+        return files;
     }
 
     /**

@@ -94,14 +94,7 @@ final class EvalTrackingSection implements EvalSection {
     }
 
     private void measure(EvalContext context, ObjectNode results, Sizes sizes) {
-        ObjectNode camera = results.putObject("camera");
-        camera.put("width", CAMERA.width());
-        camera.put("height", CAMERA.height());
-        camera.put("horizontalFovDegrees", HORIZONTAL_FOV);
-        camera.put("fx", EvalReport.round(CAMERA.fx()));
-        results.put("markerMm", EvalReport.round(1000 * MARKER_METRES));
-        results.put("dictionary", MarkerDictionary.DEFAULT.key());
-        results.put("framesPerBin", sizes.perBin());
+        putSetup(results, sizes);
         int bins = (DISTANCES.length - 1) * (TILTS.length - 1);
         // Progress in about a positive frame's time: a clutter frame is smaller, a mixed one has 4x4 rays.
         double warm = 4 * sizes.warmupSeconds();
@@ -126,28 +119,10 @@ final class EvalTrackingSection implements EvalSection {
             for (int t = 0; t + 1 < TILTS.length; t++) {
                 Random random = new Random(BIN_SEED + 100 * d + t);
                 DetectionTally tally = new DetectionTally();
-                int boofFound = 0;
+                int[] boofHits = {0};
                 for (int i = 0; i < sizes.perBin(); i++) {
                     MarkerShot shot = shots.shot(random, DISTANCES[d], DISTANCES[d + 1], TILTS[t], TILTS[t + 1]);
-                    // Alternating who goes first, so that neither always meets the other's caches.
-                    List<MarkerDetection> found = null;
-                    for (int k = 0; k < 2; k++) {
-                        if ((k == 0) == (frame % 2 == 0)) {
-                            long start = System.nanoTime();
-                            found = ours.detect(shot.image());
-                            oursMs[frame] = (System.nanoTime() - start) * 1e-6;
-                        } else {
-                            long start = System.nanoTime();
-                            int n = boof.detect(shot.image());
-                            for (int m = 0; m < n; m++) {
-                                boof.pose(m, pose);
-                            }
-                            boofMs[frame] = (System.nanoTime() - start) * 1e-6;
-                            for (int m = 0; m < n; m++) {
-                                boofFound += boof.id(m) == shot.marker().pattern().id() ? 1 : 0;
-                            }
-                        }
-                    }
+                    List<MarkerDetection> found = race(shot, frame, ours, boof, pose, oursMs, boofMs, boofHits);
                     tally.add(shot.marker(), found);
                     all.add(shot.marker(), found);
                     if (d == ABOUT_ONE_METRE && TILTS[t + 1] <= GOAL_TILT) {
@@ -156,6 +131,7 @@ final class EvalTrackingSection implements EvalSection {
                     frame++;
                     context.progress((warm + frame) / total);
                 }
+                int boofFound = boofHits[0];
                 boofAll += boofFound;
                 ObjectNode bin = table.addObject();
                 bin.put("distanceMin", DISTANCES[d]);
@@ -166,6 +142,54 @@ final class EvalTrackingSection implements EvalSection {
                 bin.put("boofFound", boofFound);
             }
         }
+        putSummary(results, all, boofAll, aboutOneMetre, oursMs, boofMs);
+
+        falseMarkers(context, results, sizes, ours, warm + frame, total);
+    }
+
+    /**
+     * Both detectors on one shot, alternating who goes first so that neither always meets the
+     * other's caches: their times to {@code oursMs[frame]} and {@code boofMs[frame]}, BoofCV's finds
+     * of the shot's marker added to {@code boofHits[0]}; returns our detections.
+     */
+    private static List<MarkerDetection> race(MarkerShot shot, int frame, FiducialTracker ours, BoofSquareHamming boof,
+            Se3_F64 pose, double[] oursMs, double[] boofMs, int[] boofHits) {
+        List<MarkerDetection> found = null;
+        for (int k = 0; k < 2; k++) {
+            if ((k == 0) == (frame % 2 == 0)) {
+                long start = System.nanoTime();
+                found = ours.detect(shot.image());
+                oursMs[frame] = (System.nanoTime() - start) * 1e-6;
+            } else {
+                long start = System.nanoTime();
+                int n = boof.detect(shot.image());
+                for (int m = 0; m < n; m++) {
+                    boof.pose(m, pose);
+                }
+                boofMs[frame] = (System.nanoTime() - start) * 1e-6;
+                for (int m = 0; m < n; m++) {
+                    boofHits[0] += boof.id(m) == shot.marker().pattern().id() ? 1 : 0;
+                }
+            }
+        }
+        return found;
+    }
+
+    /** The camera, marker and dictionary every bin uses. */
+    private static void putSetup(ObjectNode results, Sizes sizes) {
+        ObjectNode camera = results.putObject("camera");
+        camera.put("width", CAMERA.width());
+        camera.put("height", CAMERA.height());
+        camera.put("horizontalFovDegrees", HORIZONTAL_FOV);
+        camera.put("fx", EvalReport.round(CAMERA.fx()));
+        results.put("markerMm", EvalReport.round(1000 * MARKER_METRES));
+        results.put("dictionary", MarkerDictionary.DEFAULT.key());
+        results.put("framesPerBin", sizes.perBin());
+    }
+
+    /** Detection over all bins and about a metre away, and both detectors' times per frame. */
+    private static void putSummary(ObjectNode results, DetectionTally all, int boofAll, DetectionTally aboutOneMetre,
+            double[] oursMs, double[] boofMs) {
         ObjectNode overall = results.putObject("all");
         tally(overall, all);
         overall.put("boofFound", boofAll);
@@ -184,8 +208,6 @@ final class EvalTrackingSection implements EvalSection {
         timing.put("oursMeanMs", EvalReport.round(Arrays.stream(oursMs).average().orElse(0)));
         timing.put("boofMeanMs", EvalReport.round(Arrays.stream(boofMs).average().orElse(0)));
         timing.put("ratio", EvalReport.round(median(oursMs) / median(boofMs)));
-
-        falseMarkers(context, results, sizes, ours, warm + frame, total);
     }
 
     /**

@@ -15,7 +15,14 @@ import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
+import org.skinlab.desktop.CommandFailure;
 import org.skinlab.desktop.ExitCodes;
+import org.skinlab.desktop.ModelFileSearch;
+import org.skinlab.desktop.ModelFiles;
+import org.skinlab.desktop.bench.BenchCorpus;
+import org.skinlab.desktop.bench.FrameBench;
+import org.skinlab.desktop.bench.FrameBenchTable;
+import org.skinlab.desktop.bench.PaletteBench;
 import org.skinlab.model.MeshInstance;
 import org.skinlab.model.Model;
 import org.skinlab.skinning.NormalTransform;
@@ -121,14 +128,8 @@ public final class FrameBenchCommand implements Callable<Integer> {
         Set<SkinningMethod> warmed = EnumSet.noneOf(SkinningMethod.class);
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
-        FrameBenchTable table = null;
-        if (!json && !single && !paletteOnly) {
-            table = new FrameBenchTable(methods, inputs.stream().mapToInt(i -> i.name().length()).max().orElse(0));
-            out.println(caption(warmup, timed));
-            out.println();
-            out.print(table.header());
-            out.flush();
-        }
+        FrameBenchTable table = !json && !single && !paletteOnly
+                ? startTable(out, inputs, methods, warmup, timed) : null;
         int status = ExitCodes.OK;
         for (Input input : inputs) {
             Model model;
@@ -144,32 +145,83 @@ public final class FrameBenchCommand implements Callable<Integer> {
                 continue;
             }
             if (paletteOnly) {
-                try {
-                    PaletteBench.run(new SkinnedModel(model, model.clips().isEmpty() ? null : model.clips().get(0), rule),
-                            input.name(), warmupSeconds == null ? FIRST_WARMUP : warmup, timed, json, out);
-                } catch (JsonProcessingException e) {
-                    throw new IllegalStateException(e);
-                }
+                printPalette(out, input.name(), PaletteBench.measure(new SkinnedModel(model,
+                        model.clips().isEmpty() ? null : model.clips().get(0), rule),
+                        warmupSeconds == null ? FIRST_WARMUP : warmup, timed));
                 continue;
             }
-            FrameBench bench = new FrameBench(model, rule, sharing, methods);
-            List<FrameBench.Timing> timings = new ArrayList<>();
-            for (SkinningMethod m : methods) {
-                double w = warmupSeconds == null && warmed.add(m) ? Math.max(warmup, FIRST_WARMUP) : warmup;
-                FrameBench.Timing timing = bench.measure(m, w, timed);
-                timings.add(timing);
-                if (json) {
-                    out.println(toJson(input.name(), bench.shape(), timing));
-                }
-            }
-            if (table != null) {
-                out.print(table.row(input.name(), bench.shape(), timings));
-            } else if (!json) {
-                printTwoLines(out, input.name(), bench.shape(), timings.get(0));
-            }
-            out.flush();
+            measureFile(out, input.name(), new FrameBench(model, rule, sharing, methods), methods, warmed, warmup,
+                    timed, table);
         }
         return status;
+    }
+
+    /** The table of several files or methods: its caption and header, printed before the first file is measured. */
+    private FrameBenchTable startTable(PrintWriter out, List<Input> inputs, List<SkinningMethod> methods, double warmup,
+            double timed) {
+        FrameBenchTable table = new FrameBenchTable(methods,
+                inputs.stream().mapToInt(i -> i.name().length()).max().orElse(0));
+        out.println(caption(warmup, timed));
+        out.println();
+        out.print(table.header());
+        out.flush();
+        return table;
+    }
+
+    /**
+     * Times one file's frame with each method and prints it: a JSON line per method, a row of the
+     * table, or the two lines of a single file and method. A method's first file warms up longer.
+     */
+    private void measureFile(PrintWriter out, String name, FrameBench bench, List<SkinningMethod> methods,
+            Set<SkinningMethod> warmed, double warmup, double timed, FrameBenchTable table) {
+        List<FrameBench.Timing> timings = new ArrayList<>();
+        for (SkinningMethod m : methods) {
+            double w = warmupSeconds == null && warmed.add(m) ? Math.max(warmup, FIRST_WARMUP) : warmup;
+            FrameBench.Timing timing = bench.measure(m, w, timed);
+            timings.add(timing);
+            if (json) {
+                out.println(toJson(name, bench.shape(), timing));
+            }
+        }
+        if (table != null) {
+            out.print(table.row(name, bench.shape(), timings));
+        } else if (!json) {
+            printTwoLines(out, name, bench.shape(), timings.get(0));
+        }
+        out.flush();
+    }
+
+    /** {@code --palette-only}'s report of one file: each part's minimum, median and mean, as text or JSON. */
+    private void printPalette(PrintWriter out, String name, PaletteBench.Samples samples) {
+        double[][] stats = samples.stats();
+        List<String> parts = PaletteBench.PARTS;
+        if (json) {
+            ObjectMapper mapper = new ObjectMapper();
+            ObjectNode root = mapper.createObjectNode();
+            root.put("benchmark", "frame-palette");
+            root.put("file", name);
+            root.put("joints", samples.joints());
+            root.put("frames", samples.frames());
+            for (int p = 0; p < parts.size(); p++) {
+                ObjectNode part = root.putObject(parts.get(p));
+                part.put("minMicros", round(stats[p][0]));
+                part.put("medianMicros", round(stats[p][1]));
+                part.put("meanMicros", round(stats[p][2]));
+            }
+            try {
+                out.println(mapper.writeValueAsString(root));
+            } catch (JsonProcessingException e) {
+                throw new IllegalStateException(e);
+            }
+        } else {
+            out.printf(Locale.ROOT, "palette of %s: %d joints, %d frames (slerp)%n", name, samples.joints(),
+                    samples.frames());
+            for (int p = 0; p < parts.size(); p++) {
+                out.printf(Locale.ROOT, "%-16s min %.3f µs, median %.3f µs, mean %.3f µs%n", parts.get(p), stats[p][0],
+                        stats[p][1], stats[p][2]);
+            }
+        }
+        out.flush();
     }
 
     /**

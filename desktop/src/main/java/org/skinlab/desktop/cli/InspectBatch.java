@@ -11,6 +11,7 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
 import org.skinlab.desktop.ExitCodes;
+import org.skinlab.desktop.ModelFileSearch;
 import org.skinlab.model.Mesh;
 import org.skinlab.model.ImportException;
 import org.skinlab.model.Model;

@@ -14,7 +14,10 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
+import org.skinlab.desktop.CommandFailure;
 import org.skinlab.desktop.ExitCodes;
+import org.skinlab.desktop.ModelFileSearch;
+import org.skinlab.desktop.ModelFiles;
 import org.skinlab.importer.ModelImporter;
 import org.skinlab.model.AnimationClip;
 import org.skinlab.model.ImportWarning;
@@ -167,40 +170,8 @@ public final class InspectCommand implements Callable<Integer> {
             m.put("skinned", skin.isPresent());
             m.put("joints", skin.map(Skin::jointCount).orElse(0));
             m.put("maxInfluences", skin.map(Skin::maxInfluences).orElse(0));
-            ArrayNode materials = m.putArray("materials");
-            for (MaterialBinding b : model.materialsOf(mesh)) {
-                ObjectNode entry = materials.addObject();
-                entry.put("symbol", b.symbol());
-                boolean bound = b.material() != Material.DEFAULT;
-                entry.put("name", bound ? b.material().name() : null);
-                float[] diffuse = bound ? b.material().diffuse() : null;
-                if (diffuse == null) {
-                    entry.putNull("diffuse");
-                } else {
-                    ArrayNode rgba = entry.putArray("diffuse");
-                    for (float f : diffuse) {
-                        rgba.add(shortest(f));
-                    }
-                }
-                Path texture = bound ? textureFile(b.material()) : null;
-                entry.put("texture", texture == null ? null : texture.toString());
-            }
-            InfluenceCapReport.MeshReport caps = capReports.get(mesh);
-            if (caps == null) {
-                m.putNull("influenceCap");
-            } else {
-                ObjectNode ic = m.putObject("influenceCap");
-                ic.put("restSize", shortest((float) caps.restSize()));
-                ic.put("samples", caps.samples());
-                ObjectNode byCap = ic.putObject("caps");
-                for (InfluenceCapReport.Cap cap : caps.caps()) {
-                    ObjectNode c = byCap.putObject(String.valueOf(cap.cap()));
-                    c.put("cappedPositions", cap.cappedPositions());
-                    c.put("maxDroppedWeight", shortest(cap.maxDroppedWeight()));
-                    putWorst(c.putObject("lbs"), cap.lbs());
-                    putWorst(c.putObject("dqs"), cap.dqs());
-                }
-            }
+            putMaterials(m.putArray("materials"), model.materialsOf(mesh));
+            putInfluenceCap(m, capReports.get(mesh));
         }
         ArrayNode clips = root.putArray("clips");
         for (AnimationClip clip : model.clips()) {
@@ -215,6 +186,46 @@ public final class InspectCommand implements Callable<Integer> {
         }
         root.put("loadMillis", Math.round(loadMillis * 1000.0) / 1000.0);
         return root;
+    }
+
+    /** A mesh's bound materials: symbol, name, diffuse colour and texture file, null where unbound. */
+    private static void putMaterials(ArrayNode materials, List<MaterialBinding> bindings) {
+        for (MaterialBinding b : bindings) {
+            ObjectNode entry = materials.addObject();
+            entry.put("symbol", b.symbol());
+            boolean bound = b.material() != Material.DEFAULT;
+            entry.put("name", bound ? b.material().name() : null);
+            float[] diffuse = bound ? b.material().diffuse() : null;
+            if (diffuse == null) {
+                entry.putNull("diffuse");
+            } else {
+                ArrayNode rgba = entry.putArray("diffuse");
+                for (float f : diffuse) {
+                    rgba.add(shortest(f));
+                }
+            }
+            Path texture = bound ? textureFile(b.material()) : null;
+            entry.put("texture", texture == null ? null : texture.toString());
+        }
+    }
+
+    /** A mesh's {@code "influenceCap"}: null without a report, else per cap what it costs. */
+    private static void putInfluenceCap(ObjectNode m, InfluenceCapReport.MeshReport caps) {
+        if (caps == null) {
+            m.putNull("influenceCap");
+        } else {
+            ObjectNode ic = m.putObject("influenceCap");
+            ic.put("restSize", shortest((float) caps.restSize()));
+            ic.put("samples", caps.samples());
+            ObjectNode byCap = ic.putObject("caps");
+            for (InfluenceCapReport.Cap cap : caps.caps()) {
+                ObjectNode c = byCap.putObject(String.valueOf(cap.cap()));
+                c.put("cappedPositions", cap.cappedPositions());
+                c.put("maxDroppedWeight", shortest(cap.maxDroppedWeight()));
+                putWorst(c.putObject("lbs"), cap.lbs());
+                putWorst(c.putObject("dqs"), cap.dqs());
+            }
+        }
     }
 
     /** One method's worst: distance and relative always, position, clip and time null when nothing moved. */

@@ -5,6 +5,7 @@ import java.util.concurrent.Callable;
 
 import org.skinlab.ar.MarkerDictionary;
 import org.skinlab.ar.MarkerPattern;
+import org.skinlab.desktop.CommandFailure;
 import org.skinlab.desktop.ExitCodes;
 import org.skinlab.desktop.ar.MarkerSheet;
 

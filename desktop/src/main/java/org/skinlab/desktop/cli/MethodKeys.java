@@ -3,6 +3,7 @@ package org.skinlab.desktop.cli;
 import java.util.ArrayList;
 import java.util.List;
 
+import org.skinlab.desktop.CommandFailure;
 import org.skinlab.desktop.ExitCodes;
 import org.skinlab.skinning.SkinningMethod;
 
@@ -22,12 +23,21 @@ final class MethodKeys {
     private MethodKeys() {
     }
 
+    /**
+     * One method's key, any case: the one place a command turns a key into a method.
+     *
+     * @throws IllegalArgumentException for anything else, naming the keys
+     */
+    static SkinningMethod parse(String value) {
+        return SkinningMethod.fromKey(value);
+    }
+
     /** The picocli converter of one method's key. */
     static final class Converter implements CommandLine.ITypeConverter<SkinningMethod> {
         @Override
         public SkinningMethod convert(String value) {
             try {
-                return SkinningMethod.fromKey(value);
+                return parse(value);
             } catch (IllegalArgumentException e) {
                 throw new CommandLine.TypeConversionException(e.getMessage());
             }
@@ -44,7 +54,7 @@ final class MethodKeys {
             return List.of(SkinningMethod.values());
         }
         try {
-            return List.of(SkinningMethod.fromKey(value));
+            return List.of(parse(value));
         } catch (IllegalArgumentException e) {
             throw new IllegalArgumentException(e.getMessage() + ", or all", e);
         }

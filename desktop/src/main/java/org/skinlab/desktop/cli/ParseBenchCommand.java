@@ -15,8 +15,10 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
+import org.skinlab.desktop.CommandFailure;
 import org.skinlab.desktop.ExitCodes;
 import org.skinlab.desktop.bench.AssimpBaseline;
+import org.skinlab.desktop.bench.ParseTimer;
 import org.skinlab.desktop.bench.SyntheticCollada;
 import org.skinlab.desktop.bench.SyntheticGltf;
 import org.skinlab.importer.ModelImporter;
@@ -116,30 +118,11 @@ public final class ParseBenchCommand implements Callable<Integer> {
                 inputs.addAll(writeTwins(twinFolder, err));
             }
             if (generatedTriangles > 0 && files.isEmpty()) {
-                generated = Files.createTempFile("skinlab-generated-", ".dae");
-                long t = SyntheticCollada.write(generated, generatedTriangles);
-                generatedActual = t;
-                err.printf(Locale.ROOT, "bench parse: generated %s (%d triangles, %.1f MB)%n", generated, t,
-                        Files.size(generated) / 1e6);
+                generated = writeGenerated(err);
                 inputs.add(generated);
             }
-            List<byte[]> data = new ArrayList<>();
-            for (Path p : inputs) {
-                if (!Files.isRegularFile(p)) {
-                    throw new CommandFailure(ExitCodes.USAGE, "file not found: " + p, null);
-                }
-                data.add(Files.readAllBytes(p));
-            }
-            String assimpVersion = null;
-            if (compareAssimp) {
-                try {
-                    assimpVersion = AssimpBaseline.loadAndVersion();
-                } catch (IllegalStateException e) {
-                    throw new CommandFailure(ExitCodes.UNAVAILABLE, "bench parse --compare-assimp: " + e.getMessage(), e);
-                }
-                err.printf(Locale.ROOT, "bench parse: comparing with assimp %s, flags %s%n", assimpVersion,
-                        AssimpBaseline.describe(assimpFlags));
-            }
+            List<byte[]> data = readAll(inputs);
+            String assimpVersion = compareAssimp ? loadAssimp(err) : null;
             List<ParseTimer.Result> results = measure(inputs, data, generated, err);
             if (json) {
                 out.println(new ObjectMapper().writeValueAsString(toJson(results, assimpVersion)));
@@ -162,6 +145,47 @@ public final class ParseBenchCommand implements Callable<Integer> {
                 Files.deleteIfExists(twinFolder);
             }
         }
+    }
+
+    /** A generated file of {@code --generated-triangles} in a temporary file (the caller deletes it). */
+    private Path writeGenerated(PrintWriter err) throws IOException {
+        Path generated = Files.createTempFile("skinlab-generated-", ".dae");
+        long t;
+        try {
+            t = SyntheticCollada.write(generated, generatedTriangles);
+        } catch (IOException | RuntimeException e) {
+            Files.deleteIfExists(generated);
+            throw e;
+        }
+        generatedActual = t;
+        err.printf(Locale.ROOT, "bench parse: generated %s (%d triangles, %.1f MB)%n", generated, t,
+                Files.size(generated) / 1e6);
+        return generated;
+    }
+
+    /** Every file's bytes, read before anything is timed. */
+    private static List<byte[]> readAll(List<Path> inputs) throws IOException {
+        List<byte[]> data = new ArrayList<>();
+        for (Path p : inputs) {
+            if (!Files.isRegularFile(p)) {
+                throw new CommandFailure(ExitCodes.USAGE, "file not found: " + p, null);
+            }
+            data.add(Files.readAllBytes(p));
+        }
+        return data;
+    }
+
+    /** Loads assimp's library and names its version, or fails as unavailable. */
+    private String loadAssimp(PrintWriter err) {
+        String assimpVersion;
+        try {
+            assimpVersion = AssimpBaseline.loadAndVersion();
+        } catch (IllegalStateException e) {
+            throw new CommandFailure(ExitCodes.UNAVAILABLE, "bench parse --compare-assimp: " + e.getMessage(), e);
+        }
+        err.printf(Locale.ROOT, "bench parse: comparing with assimp %s, flags %s%n", assimpVersion,
+                AssimpBaseline.describe(assimpFlags));
+        return assimpVersion;
     }
 
     /** The same character as a .glb and as a .dae, in {@code folder}; their names go into the report. */

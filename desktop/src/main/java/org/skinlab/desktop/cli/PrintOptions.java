@@ -3,6 +3,7 @@ package org.skinlab.desktop.cli;
 import java.nio.file.Path;
 
 import picocli.CommandLine.Option;
+import org.skinlab.desktop.CommandFailure;
 import org.skinlab.desktop.ExitCodes;
 
 /** Where a printable sheet goes ({@code --pdf}, {@code --png}, {@code --dpi}): {@code marker}'s and {@code calibration-target}'s. */

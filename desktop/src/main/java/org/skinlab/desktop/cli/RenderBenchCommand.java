@@ -14,7 +14,11 @@ import java.util.concurrent.Callable;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.SerializationFeature;
 
+import org.skinlab.desktop.CommandFailure;
 import org.skinlab.desktop.ExitCodes;
+import org.skinlab.desktop.ModelFiles;
+import org.skinlab.desktop.bench.CrowdBench;
+import org.skinlab.desktop.bench.RenderBench;
 import org.skinlab.desktop.render.GlWindow;
 import org.skinlab.desktop.viewer.ModelLibrary;
 import org.skinlab.model.Model;
@@ -41,9 +45,9 @@ public final class RenderBenchCommand implements Callable<Integer> {
             description = "a model file, .dae/.gltf/.glb (default: the bundled walking character)")
     Path file;
 
-    @Option(names = "--size", paramLabel = "WxH", converter = ViewCommand.SizeConverter.class,
+    @Option(names = "--size", paramLabel = "WxH", converter = WindowOptions.SizeConverter.class,
             description = "framebuffer size (default: 640x480)")
-    ViewCommand.Size size = new ViewCommand.Size(640, 480);
+    WindowOptions.Size size = new WindowOptions.Size(640, 480);
 
     @Option(names = "--seconds", paramLabel = "S", description = "measured time per point (default: 1.5)")
     double seconds = 1.5;

@@ -5,6 +5,7 @@ import java.util.List;
 
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
+import org.skinlab.desktop.CommandFailure;
 import org.skinlab.desktop.ExitCodes;
 
 /** The {@code skinlab} command and its subcommands. */

@@ -7,7 +7,9 @@ import java.util.concurrent.Callable;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
+import org.skinlab.desktop.CommandFailure;
 import org.skinlab.desktop.ExitCodes;
+import org.skinlab.desktop.bench.SkinningTiming;
 import org.skinlab.desktop.bench.SyntheticSkinData;
 import org.skinlab.desktop.bench.ThesisSkinningBaseline;
 import org.skinlab.skinning.JointPalette;
@@ -175,7 +177,7 @@ public final class SkinningBenchCommand implements Callable<Integer> {
     private SkinningMethod parseMethod() {
         SkinningMethod m;
         try {
-            m = SkinningMethod.fromKey(method);
+            m = MethodKeys.parse(method);
         } catch (IllegalArgumentException e) {
             throw usage(e.getMessage());
         }

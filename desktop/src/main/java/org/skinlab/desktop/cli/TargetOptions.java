@@ -1,6 +1,7 @@
 package org.skinlab.desktop.cli;
 
 import org.skinlab.ar.CalibrationTarget;
+import org.skinlab.desktop.CommandFailure;
 import org.skinlab.desktop.ExitCodes;
 
 import picocli.CommandLine.Option;

@@ -2,16 +2,12 @@ package org.skinlab.desktop.cli;
 
 import java.io.IOException;
 import java.io.PrintWriter;
-import java.lang.management.ManagementFactory;
-import java.lang.management.ThreadMXBean;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.Comparator;
 import java.util.List;
 import java.util.Locale;
-import java.util.TreeSet;
 import java.util.concurrent.Callable;
 import java.util.stream.Stream;
 
@@ -19,16 +15,15 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
 import boofcv.concurrency.BoofConcurrency;
-import georegression.struct.se.Se3_F64;
 
 import org.skinlab.ar.BoofSquareHamming;
-import org.skinlab.ar.CameraIntrinsics;
 import org.skinlab.ar.FiducialTracker;
-import org.skinlab.ar.GrayImage;
-import org.skinlab.ar.MarkerDetection;
 import org.skinlab.ar.MarkerDictionary;
-import org.skinlab.ar.TrackerConfig;
+import org.skinlab.desktop.CommandFailure;
 import org.skinlab.desktop.ExitCodes;
+import org.skinlab.desktop.bench.OpenCvAruco;
+import org.skinlab.desktop.bench.TrackBench;
+import org.skinlab.desktop.bench.TrackBenchVideo;
 
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
@@ -91,11 +86,6 @@ public final class TrackBenchCommand implements Callable<Integer> {
     @Option(names = "--json", description = "print the result as one line of JSON")
     boolean json;
 
-    /** One contender's pass over the frames: its per-frame milliseconds to {@code ms}, the ids found to {@code ids}. */
-    private interface Pass {
-        void run(double[] ms, List<List<Integer>> ids) throws IOException;
-    }
-
     @Override
     public Integer call() throws IOException {
         if (frames < 2 || seconds <= 0 || warmupSeconds < 0 || !(markerSizeMm > 0)) {
@@ -132,192 +122,96 @@ public final class TrackBenchCommand implements Callable<Integer> {
     }
 
     private Integer run(TrackBenchVideo video, MarkerDictionary dict, Path work) throws IOException {
-        List<GrayImage> list = video.frames();
-        int n = list.size();
-        CameraIntrinsics k = video.camera();
-        TrackerConfig config = TrackerConfig.of(dict, markerSizeMm / 1000);
-        FiducialTracker ours = new FiducialTracker(config, k);
-        BoofSquareHamming boof = BoofSquareHamming.defaults(dict, markerSizeMm / 1000, k);
-        Se3_F64 pose = new Se3_F64();
-        int[] inRegion = new int[1];
-        OpenCvAruco.Failure why = new OpenCvAruco.Failure();
-        OpenCvAruco opencv = OpenCvAruco.start(opencvScript, work, list, k, dict, markerSizeMm / 1000, clock, why);
-        try {
-            List<String> names = new ArrayList<>(List.of("BoofCV squareHamming, default settings",
-                    "skinlab detect (whole frame)", "skinlab track (near the last markers first)"));
-            List<Pass> passes = new ArrayList<>(List.of(
-                (ms, ids) -> {
-                    for (int i = 0; i < n; i++) {
-                        long start = now();
-                        int found = boof.detect(list.get(i));
-                        for (int m = 0; m < found; m++) {
-                            boof.pose(m, pose);
-                        }
-                        ms[i] = (now() - start) * 1e-6;
-                        if (ids != null) {
-                            TreeSet<Integer> s = new TreeSet<>();
-                            for (int m = 0; m < found; m++) {
-                                s.add(boof.id(m));
-                            }
-                            ids.add(new ArrayList<>(s));
-                        }
-                    }
-                },
-                (ms, ids) -> {
-                    for (int i = 0; i < n; i++) {
-                        long start = now();
-                        List<MarkerDetection> found = ours.detect(list.get(i));
-                        ms[i] = (now() - start) * 1e-6;
-                        record(found, ids);
-                    }
-                },
-                (ms, ids) -> {
-                    ours.reset();
-                    for (int i = 0; i < n; i++) {
-                        long start = now();
-                        List<MarkerDetection> found = ours.track(list.get(i));
-                        ms[i] = (now() - start) * 1e-6;
-                        inRegion[0] += ours.lastFoundInRegion() ? 1 : 0;
-                        record(found, ids);
-                    }
-                }));
-            if (opencv != null) {
-                names.add("OpenCV " + opencv.version() + " ArUco, default parameters");
-                passes.add((ms, ids) -> {
-                    System.arraycopy(opencv.round(), 0, ms, 0, n);
-                    if (ids != null) {
-                        ids.addAll(opencv.ids());
-                    }
-                });
-            }
-            int c = passes.size();
-            double[] scratch = new double[n];
-            long warmEnd = System.nanoTime() + (long) (warmupSeconds * 1e9);
-            do {
-                for (Pass p : passes) {
-                    p.run(scratch, null);
-                }
-            } while (System.nanoTime() < warmEnd);
-            List<List<List<Integer>>> ids = new ArrayList<>();
-            for (Pass p : passes) {
-                List<List<Integer>> found = new ArrayList<>();
-                p.run(scratch, found);
-                ids.add(found);
-            }
-            List<double[]> times = new ArrayList<>();
-            inRegion[0] = 0;
-            int rounds = 0;
-            long end = System.nanoTime() + (long) (seconds * 1e9);
-            do {
-                for (Pass p : passes) {
-                    double[] ms = new double[n];
-                    p.run(ms, null);
-                    times.add(ms);
-                }
-                rounds++;
-            } while (System.nanoTime() < end || rounds < 3);
-            double[] median = new double[c];
-            double[] mean = new double[c];
-            for (int i = 0; i < c; i++) {
-                double[] all = new double[rounds * n];
-                for (int r = 0; r < rounds; r++) {
-                    System.arraycopy(times.get(r * c + i), 0, all, r * n, n);
-                }
-                Arrays.sort(all);
-                median[i] = all[all.length / 2];
-                mean[i] = Arrays.stream(all).average().orElse(0);
-            }
-            report(video, dict, names, ids, median, mean, rounds, inRegion[0] / (double) (rounds * n),
-                    opencv != null ? opencv.version() : why.reason);
-        } finally {
-            if (opencv != null) {
-                opencv.close();
-            }
+        TrackBench.Result r = TrackBench.measure(video, dict, markerSizeMm, opencvScript, work, clock, warmupSeconds,
+                seconds);
+        Agreement agreement = Agreement.of(r.ids(), video.frames().size());
+        PrintWriter out = spec.commandLine().getOut();
+        if (json) {
+            printJson(out, video, dict, r, agreement);
+        } else {
+            printText(out, video, dict, r, agreement);
         }
+        out.flush();
         return ExitCodes.OK;
     }
 
-    private final ThreadMXBean threads = ManagementFactory.getThreadMXBean();
-
-    /** Nanoseconds of the chosen clock. */
-    private long now() {
-        return clock.equals("cpu") ? threads.getCurrentThreadCpuTime() : System.nanoTime();
-    }
-
-    private static void record(List<MarkerDetection> found, List<List<Integer>> ids) {
-        if (ids != null) {
-            TreeSet<Integer> s = new TreeSet<>();
-            for (MarkerDetection d : found) {
-                s.add(d.id());
-            }
-            ids.add(new ArrayList<>(s));
-        }
-    }
-
-    private void report(TrackBenchVideo video, MarkerDictionary dict, List<String> names, List<List<List<Integer>>> ids,
-            double[] median, double[] mean, int rounds, double regionShare, String opencv) {
-        int n = video.frames().size();
-        int c = names.size();
-        double[] perFrame = new double[c];
-        int[] sameAsDetect = new int[c];
-        List<Integer> trackMismatches = new ArrayList<>();
-        for (int i = 0; i < c; i++) {
-            for (int f = 0; f < n; f++) {
-                perFrame[i] += ids.get(i).get(f).size();
-                if (ids.get(i).get(f).equals(ids.get(1).get(f))) {
-                    sameAsDetect[i]++;
-                } else if (i == 2) {
-                    trackMismatches.add(f);
+    /**
+     * How the contenders' ids compare with detect's (contender 1), frame by frame.
+     *
+     * @param perFrame        markers found per frame, on average
+     * @param sameAsDetect    frames with the same ids as detect
+     * @param trackMismatches the frames in which track (contender 2) found other ids than detect
+     */
+    private record Agreement(double[] perFrame, int[] sameAsDetect, List<Integer> trackMismatches) {
+        static Agreement of(List<List<List<Integer>>> ids, int n) {
+            int c = ids.size();
+            double[] perFrame = new double[c];
+            int[] sameAsDetect = new int[c];
+            List<Integer> trackMismatches = new ArrayList<>();
+            for (int i = 0; i < c; i++) {
+                for (int f = 0; f < n; f++) {
+                    perFrame[i] += ids.get(i).get(f).size();
+                    if (ids.get(i).get(f).equals(ids.get(1).get(f))) {
+                        sameAsDetect[i]++;
+                    } else if (i == 2) {
+                        trackMismatches.add(f);
+                    }
                 }
             }
+            for (int i = 0; i < c; i++) {
+                perFrame[i] /= n;
+            }
+            return new Agreement(perFrame, sameAsDetect, trackMismatches);
         }
-        for (int i = 0; i < c; i++) {
-            perFrame[i] /= n;
-        }
-        PrintWriter out = spec.commandLine().getOut();
+    }
+
+    private void printJson(PrintWriter out, TrackBenchVideo video, MarkerDictionary dict, TrackBench.Result r,
+            Agreement a) {
         String[] keys = {"boofcvDefault", "detect", "track", "opencv"};
-        if (json) {
-            ObjectNode o = new ObjectMapper().createObjectNode();
-            o.put("video", video.name());
-            o.put("frames", n);
-            o.put("width", video.camera().width());
-            o.put("height", video.camera().height());
-            o.put("dictionary", dict.key());
-            o.put("rounds", rounds);
-            o.put("clock", clock);
-            o.put("java", Runtime.version().toString());
-            o.put("opencv", opencv);
-            for (int i = 0; i < c; i++) {
-                o.put(keys[i] + "Ms", median[i]);
-                o.put(keys[i] + "MeanMs", mean[i]);
-                o.put(keys[i] + "MarkersPerFrame", perFrame[i]);
-                o.put(keys[i] + "FramesWithDetectIds", sameAsDetect[i]);
-            }
-            // The names of the first version of this report.
-            o.put("markersPerFrameBoofcv", perFrame[0]);
-            o.put("markersPerFrameDetect", perFrame[1]);
-            o.put("markersPerFrameTrack", perFrame[2]);
-            o.put("trackFoundInRegion", regionShare);
-            out.println(o);
-        } else {
-            out.printf(Locale.ROOT,
-                    "marker tracking, %s, %s, %d rounds, Java %s, one core (BoofCV's threads off), %s%n", video.name(),
-                    dict.key(), rounds, Runtime.version(),
-                    clock.equals("cpu") ? "the thread's CPU time per frame" : "wall clock per frame");
-            out.printf(Locale.ROOT, "%-46s %10s %10s %9s %14s %s%n", "", "median ms", "mean ms", "vs BoofCV",
-                    "markers/frame", "frames with detect's ids");
-            for (int i = 0; i < c; i++) {
-                out.printf(Locale.ROOT, "%-46s %10.2f %10.2f %8.2fx %14.2f %d of %d%n", names.get(i), median[i],
-                        mean[i], median[i] / median[0], perFrame[i], sameAsDetect[i], n);
-            }
-            if (c < 4) {
-                out.printf(Locale.ROOT, "OpenCV ArUco: %s%n", opencv);
-            }
-            out.printf(Locale.ROOT, "track found every marker near the last ones in %.0f%% of frames%s%n",
-                    100 * regionShare, trackMismatches.isEmpty() ? ""
-                            : "; other ids than detect in frames " + trackMismatches);
+        ObjectNode o = new ObjectMapper().createObjectNode();
+        o.put("video", video.name());
+        o.put("frames", video.frames().size());
+        o.put("width", video.camera().width());
+        o.put("height", video.camera().height());
+        o.put("dictionary", dict.key());
+        o.put("rounds", r.rounds());
+        o.put("clock", clock);
+        o.put("java", Runtime.version().toString());
+        o.put("opencv", r.opencv());
+        for (int i = 0; i < r.names().size(); i++) {
+            o.put(keys[i] + "Ms", r.median()[i]);
+            o.put(keys[i] + "MeanMs", r.mean()[i]);
+            o.put(keys[i] + "MarkersPerFrame", a.perFrame()[i]);
+            o.put(keys[i] + "FramesWithDetectIds", a.sameAsDetect()[i]);
         }
-        out.flush();
+        // The same counts under the names that scripts reading this report know.
+        o.put("markersPerFrameBoofcv", a.perFrame()[0]);
+        o.put("markersPerFrameDetect", a.perFrame()[1]);
+        o.put("markersPerFrameTrack", a.perFrame()[2]);
+        o.put("trackFoundInRegion", r.regionShare());
+        out.println(o);
+    }
+
+    private void printText(PrintWriter out, TrackBenchVideo video, MarkerDictionary dict, TrackBench.Result r,
+            Agreement a) {
+        int n = video.frames().size();
+        double[] median = r.median();
+        out.printf(Locale.ROOT,
+                "marker tracking, %s, %s, %d rounds, Java %s, one core (BoofCV's threads off), %s%n", video.name(),
+                dict.key(), r.rounds(), Runtime.version(),
+                clock.equals("cpu") ? "the thread's CPU time per frame" : "wall clock per frame");
+        out.printf(Locale.ROOT, "%-46s %10s %10s %9s %14s %s%n", "", "median ms", "mean ms", "vs BoofCV",
+                "markers/frame", "frames with detect's ids");
+        for (int i = 0; i < r.names().size(); i++) {
+            out.printf(Locale.ROOT, "%-46s %10.2f %10.2f %8.2fx %14.2f %d of %d%n", r.names().get(i), median[i],
+                    r.mean()[i], median[i] / median[0], a.perFrame()[i], a.sameAsDetect()[i], n);
+        }
+        if (r.names().size() < 4) {
+            out.printf(Locale.ROOT, "OpenCV ArUco: %s%n", r.opencv());
+        }
+        out.printf(Locale.ROOT, "track found every marker near the last ones in %.0f%% of frames%s%n",
+                100 * r.regionShare(), a.trackMismatches().isEmpty() ? ""
+                        : "; other ids than detect in frames " + a.trackMismatches());
     }
 
     private static int[] parseSize(String s) {

@@ -13,7 +13,9 @@ import org.knowm.xchart.XYChart;
 import org.knowm.xchart.XYChartBuilder;
 import org.knowm.xchart.style.Styler;
 import org.skinlab.animation.RotationInterpolation;
+import org.skinlab.desktop.CommandFailure;
 import org.skinlab.desktop.ExitCodes;
+import org.skinlab.desktop.ModelFiles;
 import org.skinlab.model.Model;
 import org.skinlab.model.Node;
 import org.skinlab.skinning.BoneProfile;
@@ -46,9 +48,10 @@ public final class TwistPlotCommand implements Callable<Integer> {
     @Option(names = "--time", paramLabel = "T", description = "clip time in seconds (default: ${DEFAULT-VALUE})")
     float time = 0f;
 
-    @Option(names = "--methods", split = ",", paramLabel = "KEY",
+    @Option(names = "--methods", split = ",", paramLabel = "KEY", converter = MethodKeys.Converter.class,
             description = "methods to compare (default: lbs,dqs,stbs-lbs,stbs-dqs)")
-    List<String> methods = List.of("lbs", "dqs", "stbs-lbs", "stbs-dqs");
+    List<SkinningMethod> methods = List.of(SkinningMethod.LBS, SkinningMethod.DQS, SkinningMethod.STBS_LBS,
+            SkinningMethod.STBS_DQS);
 
     @Option(names = "--png", paramLabel = "FILE", description = "also write the twist plot there")
     Path png;
@@ -83,8 +86,7 @@ public final class TwistPlotCommand implements Callable<Integer> {
                 .title(String.format(Locale.ROOT, "Twist along the %s of %s at t = %.3f s", joint, file.getFileName(), time))
                 .xAxisTitle("position along the bone (0 joint, 1 tail)").yAxisTitle("twist of the ring (degrees)").build();
         chart.getStyler().setLegendPosition(Styler.LegendPosition.InsideSE);
-        for (String key : methods) {
-            SkinningMethod method = SkinningMethod.fromKey(key);
+        for (SkinningMethod method : methods) {
             float[] points = new float[3 * geometry.pointCount()];
             skinned.skin(g, method, points, new float[points.length]);
             List<BoneProfile.Ring> rings = profile.measure(points, skinned.prepareBones(g));

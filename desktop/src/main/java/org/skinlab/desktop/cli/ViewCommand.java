@@ -1,10 +1,10 @@
 package org.skinlab.desktop.cli;
 
 import java.nio.file.Path;
-import java.util.Locale;
 import java.util.concurrent.Callable;
 
 import org.skinlab.animation.RotationInterpolation;
+import org.skinlab.desktop.CommandFailure;
 import org.skinlab.desktop.ExitCodes;
 import org.skinlab.desktop.app.AppOptions;
 import org.skinlab.desktop.app.SkinlabApp;
@@ -14,6 +14,7 @@ import org.skinlab.skinning.SkinningMethod;
 
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
@@ -34,9 +35,8 @@ public final class ViewCommand implements Callable<Integer> {
     @Parameters(index = "0", arity = "0..1", paramLabel = "FILE", description = "a model file (.dae, .gltf, .glb)")
     Path file;
 
-    @Option(names = "--method", paramLabel = MethodKeys.KEYS, converter = MethodKeys.Converter.class,
-            description = "skinning method at start (default: lbs)")
-    SkinningMethod method = SkinningMethod.LBS;
+    @Mixin
+    WindowOptions window = new WindowOptions();
 
     @Option(names = "--interpolation", paramLabel = "slerp|nlerp|lerp", converter = PoseCommand.RotationConverter.class,
             description = "rotation interpolation between keyframes (default: slerp)")
@@ -64,20 +64,6 @@ public final class ViewCommand implements Callable<Integer> {
             description = "the camera's angle around the model: 0 from the front (+z, the default), 90 from +x")
     double yaw;
 
-    @Option(names = "--screenshot", paramLabel = "OUT.png",
-            description = "render one frame off-screen, write it as PNG and exit")
-    Path screenshot;
-
-    @Option(names = "--size", paramLabel = "WxH", converter = SizeConverter.class,
-            description = "window or screenshot size in pixels (default: 1280x800)")
-    Size size = new Size(AppOptions.DEFAULT_WIDTH, AppOptions.DEFAULT_HEIGHT);
-
-    @Option(names = "--hide-ui", description = "draw the scene only, without the toolbar")
-    boolean hideUi;
-
-    @Option(names = "--script", paramLabel = "FILE", description = "replay UI actions from FILE (docs/desktop.md)")
-    Path script;
-
     @Option(names = "--exit-after-frames", paramLabel = "N",
             description = "close after N frames; exit status 1 when the last frame drew nothing")
     int exitAfterFrames;
@@ -90,9 +76,9 @@ public final class ViewCommand implements Callable<Integer> {
         if (gpu && cpu) {
             throw new CommandFailure(ExitCodes.USAGE, "--gpu and --cpu exclude each other", null);
         }
-        if (split != null && split == method) {
+        if (split != null && split == window.method) {
             throw new CommandFailure(ExitCodes.USAGE, "--split names the method drawn beside --method: use another "
-                    + "one than " + method.key(), null);
+                    + "one than " + window.method.key(), null);
         }
         if (split != null && !SkinningGlsl.hasCode(split)) {
             throw new CommandFailure(ExitCodes.USAGE, "--split " + split.key() + ": the second view is skinned on the GPU,"
@@ -107,8 +93,9 @@ public final class ViewCommand implements Callable<Integer> {
         if (!Double.isFinite(yaw)) {
             throw new CommandFailure(ExitCodes.USAGE, "--yaw needs a finite angle (degrees)", null);
         }
-        AppOptions options = new AppOptions(file, method, interpolation, !cpu, view, split, time, yaw, screenshot,
-                size.width(), size.height(), hideUi, script, exitAfterFrames, glDebug);
+        AppOptions options = new AppOptions(file, window.method, interpolation, !cpu, view, split, time, yaw,
+                window.screenshot, window.size.width(), window.size.height(), window.hideUi, window.script,
+                exitAfterFrames, glDebug);
         return SkinlabApp.run(options, spec.commandLine().getOut(), spec.commandLine().getErr());
     }
 
@@ -122,30 +109,6 @@ public final class ViewCommand implements Callable<Integer> {
             }
             throw new CommandLine.TypeConversionException("'" + value + "' is not a view (expected shaded, weights or "
                     + "difference)");
-        }
-    }
-
-    /** A window or picture size in pixels. */
-    record Size(int width, int height) {
-    }
-
-    static final class SizeConverter implements CommandLine.ITypeConverter<Size> {
-        @Override
-        public Size convert(String value) {
-            String[] parts = value.toLowerCase(Locale.ROOT).split("x");
-            try {
-                if (parts.length == 2) {
-                    int w = Integer.parseInt(parts[0].trim());
-                    int h = Integer.parseInt(parts[1].trim());
-                    if (w >= 16 && h >= 16 && w <= 16384 && h <= 16384) {
-                        return new Size(w, h);
-                    }
-                }
-            } catch (NumberFormatException e) {
-                // reported below
-            }
-            throw new CommandLine.TypeConversionException("'" + value + "' is not a size (expected WxH, e.g. 1280x800, "
-                    + "16 to 16384 pixels each)");
         }
     }
 }

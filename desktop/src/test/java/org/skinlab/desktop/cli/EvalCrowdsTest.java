@@ -12,6 +12,7 @@ import java.util.Locale;
 import com.fasterxml.jackson.databind.JsonNode;
 
 import org.junit.jupiter.api.Test;
+import org.skinlab.desktop.bench.CrowdBench;
 import org.skinlab.skinning.SkinningMethod;
 
 /**

@@ -16,6 +16,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.skinlab.collada.ColladaImporter;
 import org.skinlab.desktop.ExitCodes;
+import org.skinlab.desktop.ModelFileSearch;
 import org.skinlab.model.MeshInstance;
 import org.skinlab.model.Model;
 import org.skinlab.skinning.SkinnedGeometry;

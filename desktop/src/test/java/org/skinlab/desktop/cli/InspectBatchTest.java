@@ -27,6 +27,7 @@ import org.junit.jupiter.api.io.TempDir;
 
 import org.skinlab.collada.ColladaImporter;
 import org.skinlab.desktop.ExitCodes;
+import org.skinlab.desktop.ModelFileSearch;
 
 /**
  * {@code skinlab inspect FILE...} over several files and folders. Stdout in JSON mode is JSON

@@ -8,6 +8,7 @@ import java.util.ArrayList;
 import java.util.List;
 
 import org.junit.jupiter.api.Test;
+import org.skinlab.desktop.CommandFailure;
 import org.skinlab.desktop.ExitCodes;
 import org.skinlab.skinning.SkinningMethod;
 
@@ -35,11 +36,14 @@ class MethodKeysTest {
                 assertEquals(m, pose.method);
                 ViewCommand view = new ViewCommand();
                 new CommandLine(view).parseArgs("--method", key, "--split", key);
-                assertEquals(m, view.method);
+                assertEquals(m, view.window.method);
                 assertEquals(m, view.split);
                 ArCommand ar = new ArCommand();
                 new CommandLine(ar).parseArgs("--images", "frames", "--method", key);
-                assertEquals(m, ar.method);
+                assertEquals(m, ar.window.method);
+                TwistPlotCommand twist = new TwistPlotCommand();
+                new CommandLine(twist).parseArgs("f.dae", "--joint", "j", "--methods", key + "," + key);
+                assertEquals(List.of(m, m), twist.methods);
             }
         }
         assertEquals(List.of(SkinningMethod.values()), MethodKeys.parseOneOrAll("--method", "ALL"));
@@ -55,5 +59,23 @@ class MethodKeysTest {
         assertEquals(ExitCodes.USAGE, bad.status());
         assertEquals("--method lbs2: unknown skinning method \"lbs2\" (expected one of " + MethodKeys.KEYS.replace("|", ", ")
                 + "), or all", bad.getMessage());
+    }
+
+    @Test
+    void anUnknownKeyIsAUsageErrorNamingEveryKeyInEveryCommand() {
+        String unknown = "unknown skinning method \"lbs2\" (expected one of " + MethodKeys.KEYS.replace("|", ", ") + ")";
+        Cli view = Cli.run("view", "--method", "lbs2");
+        assertEquals(ExitCodes.USAGE, view.status, view::toString);
+        assertEquals("Invalid value for option '--method': " + unknown, view.errLines()[0]);
+        Cli twist = Cli.run("twist-plot", "f.dae", "--joint", "j", "--methods", "lbs,lbs2");
+        assertEquals(ExitCodes.USAGE, twist.status, twist::toString);
+        assertEquals("Invalid value for option '--methods' (KEY): " + unknown, twist.errLines()[0]);
+        Cli bench = Cli.run("bench", "skinning", "--method", "lbs2", "--vertices", "10");
+        assertEquals(ExitCodes.USAGE, bench.status, bench::toString);
+        assertEquals("skinlab: bench skinning: " + unknown, bench.errLines()[0]);
+        Cli frame = Cli.run("bench", "frame", "--method", "lbs2",
+                Cli.root().resolve("assets/characters/humanoid-walk.dae").toString());
+        assertEquals(ExitCodes.USAGE, frame.status, frame::toString);
+        assertEquals("skinlab: bench frame: " + unknown + ", or all (or both)", frame.errLines()[0]);
     }
 }

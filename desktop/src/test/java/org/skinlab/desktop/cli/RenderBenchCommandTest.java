@@ -12,6 +12,7 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.skinlab.desktop.bench.RenderBench;
 import org.skinlab.desktop.render.GlTestDisplay;
 
 /** The thesis' figure's shape: six series (CPU and GPU; LBS, DQS, CoR) over the instance steps, each point measured. */

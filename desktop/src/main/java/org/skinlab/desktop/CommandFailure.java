@@ -1,6 +1,9 @@
-package org.skinlab.desktop.cli;
+package org.skinlab.desktop;
 
-/** A command failed in an expected way: print the message on one line, exit with the status. */
+/**
+ * A command, or the benchmark or file search it runs, failed in an expected way: print the message
+ * on one line, exit with the status (one of {@link ExitCodes}).
+ */
 public final class CommandFailure extends RuntimeException {
     private static final long serialVersionUID = 1L;
     private final int status;

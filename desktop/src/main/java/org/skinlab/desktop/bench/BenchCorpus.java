@@ -1,9 +1,11 @@
-package org.skinlab.desktop.cli;
+package org.skinlab.desktop.bench;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+
+import org.skinlab.desktop.ModelFileSearch;
 
 /**
  * Where {@code bench frame --all-corpus} finds its files: our characters
@@ -13,15 +15,15 @@ import java.util.List;
  * {@code settings.gradle} and {@code assets/characters}; so the command works from the root and
  * from any folder inside the repository.
  */
-final class BenchCorpus {
-    static final String CHARACTERS = "assets/characters";
-    static final String SHARED_CORPUS = "../shared/corpus";
+public final class BenchCorpus {
+    public static final String CHARACTERS = "assets/characters";
+    public static final String SHARED_CORPUS = "../shared/corpus";
 
     private BenchCorpus() {
     }
 
     /** The repository root at or above {@code from}, or null outside a checkout. */
-    static Path repositoryRoot(Path from) {
+    public static Path repositoryRoot(Path from) {
         for (Path d = from.toAbsolutePath().normalize(); d != null; d = d.getParent()) {
             if (Files.isRegularFile(d.resolve("settings.gradle")) && Files.isDirectory(d.resolve(CHARACTERS))) {
                 return d;
@@ -34,7 +36,7 @@ final class BenchCorpus {
      * The shared corpus beside the repository root (when there is one) or else beside
      * {@code from}; null when neither exists.
      */
-    static Path sharedCorpus(Path root, Path from) {
+    public static Path sharedCorpus(Path root, Path from) {
         List<Path> places = new ArrayList<>();
         if (root != null) {
             places.add(root.resolve(SHARED_CORPUS).normalize());
@@ -49,12 +51,12 @@ final class BenchCorpus {
     }
 
     /** Our characters: the {@code .dae} files of the repository's assets/characters. */
-    static List<ModelFileSearch.Entry> characters(Path root) {
+    public static List<ModelFileSearch.Entry> characters(Path root) {
         return ModelFileSearch.expand(List.of(root.resolve(CHARACTERS)), ModelFileSearch.COLLADA);
     }
 
     /** Every {@code .dae} below the corpus folder, in {@link ModelFileSearch}'s order. */
-    static List<ModelFileSearch.Entry> corpusFiles(Path corpus) {
+    public static List<ModelFileSearch.Entry> corpusFiles(Path corpus) {
         return ModelFileSearch.expand(List.of(corpus), ModelFileSearch.COLLADA);
     }
 }

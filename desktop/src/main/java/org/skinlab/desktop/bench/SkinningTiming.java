@@ -1,4 +1,4 @@
-package org.skinlab.desktop.cli;
+package org.skinlab.desktop.bench;
 
 import java.util.Arrays;
 
@@ -11,16 +11,16 @@ import org.skinlab.desktop.bench.SyntheticSkinData;
  * {@link JitWarmup}), then timed runs of the whole mesh for a given time (at least 5), each
  * sample in ns per vertex; the minimum and the upper median, as the reference reports them.
  */
-final class SkinningTiming {
-    final double[] nsPerVertex;
-    final double checksum;
+public final class SkinningTiming {
+    public final double[] nsPerVertex;
+    public final double checksum;
 
     private SkinningTiming(double[] nsPerVertex, double checksum) {
         this.nsPerVertex = nsPerVertex;
         this.checksum = checksum;
     }
 
-    static SkinningTiming measure(Runnable frame, float[] positions, float[] normals, int vertices,
+    public static SkinningTiming measure(Runnable frame, float[] positions, float[] normals, int vertices,
             double warmupSeconds, double seconds) {
         Arrays.fill(positions, 0f);
         Arrays.fill(normals, 0f);
@@ -42,12 +42,12 @@ final class SkinningTiming {
         return new SkinningTiming(Arrays.copyOf(samples, n), checksum);
     }
 
-    double min() {
+    public double min() {
         return Arrays.stream(nsPerVertex).min().orElse(Double.NaN);
     }
 
     /** The upper median, as the reference ({@code samples[n / 2]} of the sorted samples). */
-    double median() {
+    public double median() {
         double[] s = nsPerVertex.clone();
         Arrays.sort(s);
         return s[s.length / 2];

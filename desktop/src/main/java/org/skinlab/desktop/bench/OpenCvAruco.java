@@ -1,4 +1,4 @@
-package org.skinlab.desktop.cli;
+package org.skinlab.desktop.bench;
 
 import java.io.BufferedReader;
 import java.io.IOException;
@@ -28,7 +28,7 @@ import org.skinlab.ar.MarkerPattern;
  * that its rounds alternate with the Java contenders'. It gets the same frames (written as PGM)
  * and the dictionary's codes as BoofCV prints them, so it reads the same ids.
  */
-final class OpenCvAruco implements AutoCloseable {
+public final class OpenCvAruco implements AutoCloseable {
     private final Process process;
     private final BufferedReader in;
     private final Writer out;
@@ -43,15 +43,15 @@ final class OpenCvAruco implements AutoCloseable {
     }
 
     /** What did not start, for the report, when {@link #start} returns null. */
-    static final class Failure {
-        String reason = "";
+    public static final class Failure {
+        public String reason = "";
     }
 
     /**
      * Starts the script on the frames, or returns null with {@code why.reason} set (no script, no
      * python3, no cv2).
      */
-    static OpenCvAruco start(Path script, Path work, List<GrayImage> frames, CameraIntrinsics k,
+    public static OpenCvAruco start(Path script, Path work, List<GrayImage> frames, CameraIntrinsics k,
             MarkerDictionary dictionary, double markerMetres, String clock, Failure why) throws IOException {
         if (!Files.isRegularFile(script)) {
             why.reason = "not run (no " + script + "; run from the repository root or give --opencv-script)";
@@ -92,12 +92,12 @@ final class OpenCvAruco implements AutoCloseable {
         return new OpenCvAruco(p, in, out, hello.get("opencv").asText());
     }
 
-    String version() {
+    public String version() {
         return version;
     }
 
     /** One timed pass over the frames: milliseconds per frame. */
-    double[] round() throws IOException {
+    public double[] round() throws IOException {
         JsonNode list = ask("round");
         double[] ms = new double[list.size()];
         for (int i = 0; i < ms.length; i++) {
@@ -107,7 +107,7 @@ final class OpenCvAruco implements AutoCloseable {
     }
 
     /** The ids found in each frame, ascending. */
-    List<List<Integer>> ids() throws IOException {
+    public List<List<Integer>> ids() throws IOException {
         JsonNode list = ask("ids");
         List<List<Integer>> ids = new ArrayList<>();
         for (JsonNode frame : list) {

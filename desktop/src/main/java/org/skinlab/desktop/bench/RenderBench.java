@@ -1,4 +1,4 @@
-package org.skinlab.desktop.cli;
+package org.skinlab.desktop.bench;
 
 import static org.lwjgl.glfw.GLFW.glfwPollEvents;
 import static org.lwjgl.glfw.GLFW.glfwSwapInterval;
@@ -29,13 +29,13 @@ import org.skinlab.skinning.SkinningMethod;
  * frames of warm-up, then frames for a given time (at least 5), and the bytes the render thread
  * allocated per timed frame.
  */
-final class RenderBench implements AutoCloseable {
+public final class RenderBench implements AutoCloseable {
     /** Words of GL_RENDERER that name a rasteriser running on the CPU. */
     private static final List<String> SOFTWARE = List.of("llvmpipe", "softpipe", "swrast", "swiftshader",
             "lavapipe", "software rasterizer", "software renderer");
     private static final int WARMUP_FRAMES = 10;
 
-    record Point(String skinning, String method, int instances, double fps, double msPerFrame,
+    public record Point(String skinning, String method, int instances, double fps, double msPerFrame,
             double bytesPerFrame) {
     }
 
@@ -57,7 +57,7 @@ final class RenderBench implements AutoCloseable {
     }
 
     /** An off-screen window of {@code width} x {@code height} with its context current. */
-    static RenderBench open(int width, int height) throws GlWindow.WindowUnavailableException {
+    public static RenderBench open(int width, int height) throws GlWindow.WindowUnavailableException {
         GlWindow window = new GlWindow("skinlab bench-render", width, height, false, false);
         try {
             return new RenderBench(window, width, height);
@@ -68,7 +68,7 @@ final class RenderBench implements AutoCloseable {
     }
 
     /** Instance counts: the thesis' 1, 4, 8, 12, 16, then on in steps of 8, 16, 32 ... */
-    static List<Integer> steps(int max) {
+    public static List<Integer> steps(int max) {
         List<Integer> n = new ArrayList<>();
         n.add(1);
         for (int i = 4; i <= Math.min(16, max); i += 4) {
@@ -85,18 +85,18 @@ final class RenderBench implements AutoCloseable {
     }
 
     /** Whether a GL_RENDERER string names a software rasteriser (Mesa's llvmpipe, SwiftShader ...). */
-    static boolean isSoftware(String renderer) {
+    public static boolean isSoftware(String renderer) {
         String r = renderer.toLowerCase(Locale.ROOT);
         return SOFTWARE.stream().anyMatch(r::contains);
     }
 
     /** GL_RENDERER. */
-    String renderer() {
+    public String renderer() {
         return renderer;
     }
 
     /** GL_VERSION. */
-    String version() {
+    public String version() {
         return version;
     }
 
@@ -104,14 +104,14 @@ final class RenderBench implements AutoCloseable {
      * Renders one copy with CPU skinning for {@code seconds} per method, discarded: the JIT
      * compiles the kernels (the Vector API allocates until it has).
      */
-    void warmUp(Model model, double seconds) {
+    public void warmUp(Model model, double seconds) {
         for (SkinningMethod method : CrowdBench.METHODS) {
             measure(model, false, method, 1, seconds);
         }
     }
 
     /** {@code instances} copies, CPU or GPU skinning, one method: frames for {@code seconds} after the warm-up frames. */
-    Point measure(Model model, boolean gpu, SkinningMethod method, int instances, double seconds) {
+    public Point measure(Model model, boolean gpu, SkinningMethod method, int instances, double seconds) {
         AnimationConfig config = new AnimationConfig();
         config.setMethod(method);
         config.setCpuSkinning(!gpu);

@@ -1,4 +1,4 @@
-package org.skinlab.desktop.cli;
+package org.skinlab.desktop.bench;
 
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
@@ -22,7 +22,7 @@ import java.util.function.IntConsumer;
  * every item of the last one is done. Workers spin briefly, then park until the next frame.
  * One caller at a time; {@link #close()} stops the workers.
  */
-final class CrowdThreads implements AutoCloseable {
+public final class CrowdThreads implements AutoCloseable {
     /** Spins of a waiting thread before it parks (worker) or yields (caller). */
     private static final int SPIN = 2_000;
     /** The index of a barred word: above any count. */

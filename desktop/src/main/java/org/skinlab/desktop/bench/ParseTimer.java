@@ -1,4 +1,4 @@
-package org.skinlab.desktop.cli;
+package org.skinlab.desktop.bench;
 
 import java.io.ByteArrayInputStream;
 import java.io.IOException;
@@ -10,6 +10,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.function.IntConsumer;
 
+import org.skinlab.desktop.CommandFailure;
 import org.skinlab.desktop.ExitCodes;
 import org.skinlab.desktop.bench.AssimpBaseline;
 import org.skinlab.importer.ModelImporter;
@@ -24,26 +25,26 @@ import org.skinlab.model.Model;
  * assimp on the same bytes right after ours with the same protocol and a warm-up of the same
  * length.
  */
-final class ParseTimer {
+public final class ParseTimer {
     static final int LARGE_BYTES = 10_000_000;
 
     /** One file to time: its name in reports, its bytes and where it lives (for relative URLs). */
-    record Input(String name, byte[] bytes, Path location) {
+    public record Input(String name, byte[] bytes, Path location) {
     }
 
     /** One file's measurement. */
-    static final class Result {
-        final String name;
-        final long bytes;
-        final long triangles;
-        final double[] millis;
+    public static final class Result {
+        public final String name;
+        public final long bytes;
+        public final long triangles;
+        public final double[] millis;
         /** Why our importer refused the file (tolerant timing only), else null; then millis is empty. */
-        String error;
+        public String error;
         /** assimp's times, or null when not compared or when assimp failed. */
-        double[] assimpMillis;
-        long assimpTriangles;
+        public double[] assimpMillis;
+        public long assimpTriangles;
         /** assimp's message when it refused the file, else null. */
-        String assimpError;
+        public String assimpError;
 
         Result(String name, long bytes, long triangles, double[] millis) {
             this.name = name;
@@ -52,23 +53,23 @@ final class ParseTimer {
             this.millis = millis;
         }
 
-        double min() {
+        public double min() {
             return min(millis);
         }
 
-        double median() {
+        public double median() {
             return median(millis);
         }
 
-        double max() {
+        public double max() {
             return Arrays.stream(millis).max().orElse(Double.NaN);
         }
 
-        static double min(double[] millis) {
+        public static double min(double[] millis) {
             return Arrays.stream(millis).min().orElse(Double.NaN);
         }
 
-        static double median(double[] millis) {
+        public static double median(double[] millis) {
             if (millis.length == 0) {
                 return Double.NaN;
             }
@@ -79,11 +80,11 @@ final class ParseTimer {
         }
 
         /** assimp median / our median: how many times faster we are. */
-        double assimpRatio() {
+        public double assimpRatio() {
             return median(assimpMillis) / median();
         }
 
-        double mbPerSecond() {
+        public double mbPerSecond() {
             return bytes / 1e6 / (median() / 1000.0);
         }
     }
@@ -110,7 +111,7 @@ final class ParseTimer {
     private final String logPrefix;
     private IntConsumer progress = i -> { };
 
-    ParseTimer(double warmupSeconds, int runs, int assimpFlags, boolean tolerant, PrintWriter log, String logPrefix) {
+    public ParseTimer(double warmupSeconds, int runs, int assimpFlags, boolean tolerant, PrintWriter log, String logPrefix) {
         this.warmupSeconds = warmupSeconds;
         this.runs = runs;
         this.assimpFlags = assimpFlags;
@@ -120,12 +121,12 @@ final class ParseTimer {
     }
 
     /** Called with the number of files measured so far, after each file. */
-    ParseTimer onProgress(IntConsumer progress) {
+    public ParseTimer onProgress(IntConsumer progress) {
         this.progress = progress;
         return this;
     }
 
-    List<Result> measure(List<Input> inputs) {
+    public List<Result> measure(List<Input> inputs) {
         boolean[] refused = new boolean[inputs.size()];
         String[] errors = new String[inputs.size()];
         for (int i = 0; i < inputs.size() && tolerant; i++) {

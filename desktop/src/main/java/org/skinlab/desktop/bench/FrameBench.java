@@ -1,4 +1,4 @@
-package org.skinlab.desktop.cli;
+package org.skinlab.desktop.bench;
 
 import java.util.Arrays;
 import java.util.LinkedHashSet;
@@ -24,13 +24,13 @@ import org.skinlab.skinning.SkinningMethod;
  * Each frame advances the clip by 1/60 s (looping), so the sampler's key search moves as it does
  * when playing. Warm-up, then timed frames for a given time (at least 5).
  */
-final class FrameBench {
+public final class FrameBench {
     /** What one frame deforms, summed over the placed meshes (influences: the most per position). */
-    record Shape(int positionsSkinned, int renderVertices, int joints, int influences) {
+    public record Shape(int positionsSkinned, int renderVertices, int joints, int influences) {
     }
 
     /** One method's frames: the kernels that ran and the time per frame in microseconds. */
-    record Timing(SkinningMethod method, String kernel, int frames, double minMicros, double medianMicros) {
+    public record Timing(SkinningMethod method, String kernel, int frames, double minMicros, double medianMicros) {
     }
 
     private final SkinnedModel skinned;
@@ -41,7 +41,7 @@ final class FrameBench {
     private final Shape shape;
 
     /** A bench of {@code methods} (their skinners made here, the others never). */
-    FrameBench(Model model, NormalTransform rule, PositionSharing sharing, List<SkinningMethod> methods) {
+    public FrameBench(Model model, NormalTransform rule, PositionSharing sharing, List<SkinningMethod> methods) {
         this(model, rule, sharing, false, 0, methods);
     }
 
@@ -50,7 +50,7 @@ final class FrameBench {
      * {@code influenceCap} above 0: each geometry with more influences per point than that cut to
      * its heaviest ones, renormalised ({@link InfluenceView}, what a GPU's fixed slots see).
      */
-    FrameBench(Model model, NormalTransform rule, PositionSharing sharing, boolean scalar, int influenceCap,
+    public FrameBench(Model model, NormalTransform rule, PositionSharing sharing, boolean scalar, int influenceCap,
             List<SkinningMethod> methods) {
         skinned = new SkinnedModel(model, model.clips().isEmpty() ? null : model.clips().get(0), rule);
         int n = skinned.geometries().size();
@@ -117,7 +117,7 @@ final class FrameBench {
         return 3 * geometry.pointCount();
     }
 
-    Shape shape() {
+    public Shape shape() {
         return shape;
     }
 
@@ -138,7 +138,7 @@ final class FrameBench {
      * Warms up for at least {@code warmupSeconds} and until the JIT has compiled the kernels
      * ({@link JitWarmup}), then times frames for {@code seconds} (at least 5 frames).
      */
-    Timing measure(SkinningMethod method, double warmupSeconds, double seconds) {
+    public Timing measure(SkinningMethod method, double warmupSeconds, double seconds) {
         long[] counter = {0};
         JitWarmup.run(() -> step(method, counter[0]++), warmupSeconds);
         long frame = counter[0];

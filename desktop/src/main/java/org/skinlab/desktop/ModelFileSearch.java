@@ -1,4 +1,4 @@
-package org.skinlab.desktop.cli;
+package org.skinlab.desktop;
 
 import java.io.IOException;
 import java.nio.file.AccessDeniedException;
@@ -36,11 +36,11 @@ import org.skinlab.importer.ModelImporter;
  *
  * <p>Only paths are kept, never file contents: a batch of any size reads one file at a time.
  */
-final class ModelFileSearch {
+public final class ModelFileSearch {
     /** Every file {@link ModelImporter} reads. */
     static final Predicate<String> MODELS = ModelImporter::isModelFile;
     /** COLLADA files only. */
-    static final Predicate<String> COLLADA = name -> name.toLowerCase(Locale.ROOT).endsWith(".dae");
+    public static final Predicate<String> COLLADA = name -> name.toLowerCase(Locale.ROOT).endsWith(".dae");
 
     private ModelFileSearch() {
     }
@@ -53,11 +53,11 @@ final class ModelFileSearch {
      *     argument: the name every output line uses
      * @param problem why it cannot even be tried (a folder that cannot be listed), or null
      */
-    record Entry(Path path, String shown, String problem) {
+    public record Entry(Path path, String shown, String problem) {
     }
 
     /** Order of paths inside one folder: name by name, each name by its UTF-16 code units. */
-    static final Comparator<Path> BY_PATH = (a, b) -> {
+    public static final Comparator<Path> BY_PATH = (a, b) -> {
         int n = Math.min(a.getNameCount(), b.getNameCount());
         for (int i = 0; i < n; i++) {
             int c = a.getName(i).toString().compareTo(b.getName(i).toString());
@@ -69,7 +69,7 @@ final class ModelFileSearch {
     };
 
     /** The files the arguments name, in order, folders searched for every model file. */
-    static List<Entry> expand(List<Path> arguments) {
+    public static List<Entry> expand(List<Path> arguments) {
         return expand(arguments, MODELS);
     }
 
@@ -81,7 +81,7 @@ final class ModelFileSearch {
      *     nothing to inspect: a path that does not exist, or a folder with no wanted file
      *     anywhere below it
      */
-    static List<Entry> expand(List<Path> arguments, Predicate<String> wanted) {
+    public static List<Entry> expand(List<Path> arguments, Predicate<String> wanted) {
         List<Entry> entries = new ArrayList<>();
         List<String> usageProblems = new ArrayList<>();
         for (Path argument : arguments) {
@@ -140,7 +140,7 @@ final class ModelFileSearch {
     }
 
     /** A short, human reason for a failed file operation ({@code AccessDeniedException} has only the path). */
-    static String reason(IOException e) {
+    public static String reason(IOException e) {
         if (e instanceof AccessDeniedException) {
             return "permission denied";
         }

@@ -1,4 +1,4 @@
-package org.skinlab.desktop.cli;
+package org.skinlab.desktop.bench;
 
 import java.io.IOException;
 import java.nio.file.Path;
@@ -19,10 +19,10 @@ import org.skinlab.desktop.ar.IntrinsicsFile;
  * @param frames the frames, all of the camera's size
  * @param camera their camera
  */
-record TrackBenchVideo(String name, List<GrayImage> frames, CameraIntrinsics camera) {
+public record TrackBenchVideo(String name, List<GrayImage> frames, CameraIntrinsics camera) {
 
     /** {@code count} frames of {@link DemoVideo} at 640x480 with a 60 degree field of view. */
-    static TrackBenchVideo synthetic(int count) {
+    public static TrackBenchVideo synthetic(int count) {
         CameraIntrinsics k = CameraIntrinsics.fromHorizontalFov(640, 480, 60);
         DemoVideo demo = new DemoVideo(k, count);
         List<GrayImage> frames = new ArrayList<>(count);
@@ -37,7 +37,7 @@ record TrackBenchVideo(String name, List<GrayImage> frames, CameraIntrinsics cam
      * {@link IntrinsicsFile} reads, with its lens) or a 60 degree field of view; resampled to
      * {@code width x height} when those are positive.
      */
-    static TrackBenchVideo images(Path dir, Path intrinsics, int width, int height) throws IOException {
+    public static TrackBenchVideo images(Path dir, Path intrinsics, int width, int height) throws IOException {
         List<GrayImage> frames = new ArrayList<>();
         for (Path file : GrayImages.list(dir)) {
             frames.add(GrayImages.read(file));

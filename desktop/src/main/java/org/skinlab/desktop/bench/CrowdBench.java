@@ -1,4 +1,4 @@
-package org.skinlab.desktop.cli;
+package org.skinlab.desktop.bench;
 
 import java.lang.management.ManagementFactory;
 import java.util.Arrays;
@@ -19,13 +19,13 @@ import org.skinlab.skinning.SkinningMethod;
  * ({@link SkinnedModel#newCharacter()}) and own their poses, palettes and outputs, as a crowd of
  * one character would; nothing is allocated per frame.
  */
-final class CrowdBench {
+public final class CrowdBench {
     /** A frame's budget at 60 Hz, in ms: what "characters per frame" divides. */
-    static final double FRAME_MILLIS = 1000.0 / 60;
+    public static final double FRAME_MILLIS = 1000.0 / 60;
     /** Most timed frames per measurement. */
     static final int MAX_FRAMES = 1 << 16;
     /** Bytes a frame below which the kernels count as compiled (a frame of an uncompiled one allocates megabytes). */
-    static final int COMPILED_BYTES = 1024;
+    public static final int COMPILED_BYTES = 1024;
 
     /**
      * Frames of a crowd: the median and fastest frame in ms, the bytes the crowd's threads
@@ -33,7 +33,7 @@ final class CrowdBench {
      * copies the calling thread ran itself (1 on one thread; near 1 / threads when the pool's
      * threads get cores).
      */
-    record Timing(SkinningMethod method, int characters, int threads, int frames, double medianMillis,
+    public record Timing(SkinningMethod method, int characters, int threads, int frames, double medianMillis,
             double minMillis, double bytesPerFrame, double callerShare) {
     }
 
@@ -44,7 +44,7 @@ final class CrowdBench {
      * eval's time section; in crowds they would more than double the section's run (each method is
      * timed over every thread count and crowd size) without a question the per-vertex figures leave open.
      */
-    static final List<SkinningMethod> METHODS = List.of(SkinningMethod.LBS, SkinningMethod.DQS, SkinningMethod.COR);
+    public static final List<SkinningMethod> METHODS = List.of(SkinningMethod.LBS, SkinningMethod.DQS, SkinningMethod.COR);
 
     private final SkinnedModel[] characters;
     private final double[] phases;
@@ -61,7 +61,7 @@ final class CrowdBench {
     private long frame;
 
     /** Up to {@code maxCharacters} copies of the model (the skinners of the {@link #METHODS} made here). */
-    CrowdBench(Model model, int maxCharacters) {
+    public CrowdBench(Model model, int maxCharacters) {
         SkinnedModel first = SkinnedModel.of(model);
         int geometries = first.geometries().size();
         skinners = new Skinner[geometries][SkinningMethod.values().length];
@@ -95,7 +95,7 @@ final class CrowdBench {
     }
 
     /** The points one copy skins per frame (its render vertices and any unused positions). */
-    int pointsPerCharacter() {
+    public int pointsPerCharacter() {
         return points;
     }
 
@@ -103,7 +103,7 @@ final class CrowdBench {
      * {@code count} copies on {@code threads} threads: frames for {@code warmupSeconds}, then timed
      * frames for {@code seconds} (at least 5, at most {@value #MAX_FRAMES}).
      */
-    Timing measure(SkinningMethod m, int count, int threads, double warmupSeconds, double seconds) {
+    public Timing measure(SkinningMethod m, int count, int threads, double warmupSeconds, double seconds) {
         check(count);
         method = crowdMethod(m);
         try (CrowdThreads pool = new CrowdThreads(threads, this::character)) {
@@ -138,7 +138,7 @@ final class CrowdBench {
      * frame (the JIT has compiled the kernels: before, the Vector API allocates its vectors and
      * runs many times slower) or {@code maxSeconds} have passed. Returns the seconds it took.
      */
-    double warmUp(SkinningMethod m, int count, int threads, double minSeconds, double maxSeconds) {
+    public double warmUp(SkinningMethod m, int count, int threads, double minSeconds, double maxSeconds) {
         check(count);
         method = crowdMethod(m);
         long start = System.nanoTime();

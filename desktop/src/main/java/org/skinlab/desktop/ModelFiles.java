@@ -1,4 +1,4 @@
-package org.skinlab.desktop.cli;
+package org.skinlab.desktop;
 
 import java.io.IOException;
 import java.nio.file.Files;
@@ -11,14 +11,14 @@ import org.skinlab.model.ImportException;
 import org.skinlab.model.Model;
 
 /** Loads the file a command names, turning failures into {@link CommandFailure}s. */
-final class ModelFiles {
+public final class ModelFiles {
     private ModelFiles() {
     }
 
     /** A model and how long the import took. */
-    static final class Loaded {
-        final Model model;
-        final double millis;
+    public static final class Loaded {
+        public final Model model;
+        public final double millis;
 
         Loaded(Model model, double millis) {
             this.model = model;
@@ -26,7 +26,7 @@ final class ModelFiles {
         }
     }
 
-    static Loaded load(Path file) {
+    public static Loaded load(Path file) {
         if (!Files.exists(file)) {
             throw new CommandFailure(ExitCodes.USAGE, "file not found: " + file, null);
         }

@@ -1,4 +1,4 @@
-package org.skinlab.desktop.cli;
+package org.skinlab.desktop.bench;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -11,13 +11,13 @@ import org.skinlab.skinning.SkinningMethod;
  * as the file is measured, so columns are padded to widths known in advance (a longer cell only
  * shifts its row; markdown does not care). A method's cell is "median / min" in µs per frame.
  */
-final class FrameBenchTable {
+public final class FrameBenchTable {
     private final List<SkinningMethod> methods;
     private final List<String> titles = new ArrayList<>();
     private final List<Integer> widths = new ArrayList<>();
 
     /** @param nameWidth the longest file name to be shown */
-    FrameBenchTable(List<SkinningMethod> methods, int nameWidth) {
+    public FrameBenchTable(List<SkinningMethod> methods, int nameWidth) {
         this.methods = List.copyOf(methods);
         column("file", nameWidth);
         column("positions skinned", 0);
@@ -36,7 +36,7 @@ final class FrameBenchTable {
     }
 
     /** The title line and the alignment line (text left, numbers right). */
-    String header() {
+    public String header() {
         StringBuilder separator = new StringBuilder("|");
         for (int c = 0; c < titles.size(); c++) {
             separator.append(c == 0 || c == 5 ? "-".repeat(widths.get(c) + 2)
@@ -46,7 +46,7 @@ final class FrameBenchTable {
     }
 
     /** A file's row; {@code timings} in the order of the table's methods. */
-    String row(String name, FrameBench.Shape shape, List<FrameBench.Timing> timings) {
+    public String row(String name, FrameBench.Shape shape, List<FrameBench.Timing> timings) {
         List<String> cells = new ArrayList<>();
         cells.add(name);
         cells.add(String.valueOf(shape.positionsSkinned()));

@@ -1,4 +1,4 @@
-package org.skinlab.desktop.cli;
+package org.skinlab.desktop.bench;
 
 import java.lang.management.ManagementFactory;
 import java.lang.management.ThreadMXBean;
@@ -11,7 +11,7 @@ import java.lang.management.ThreadMXBean;
  * slower meanwhile: a warm-up of fixed length on a busy machine timed those boxes instead of the
  * kernel. Without HotSpot's per-thread allocation counter it is the fixed warm-up.
  */
-final class JitWarmup {
+public final class JitWarmup {
     static final int COMPILED_BYTES = 1024;
     /** The most a warm-up waits for the JIT beyond its minimum, in seconds. */
     static final double MAX_EXTRA_SECONDS = 10;
