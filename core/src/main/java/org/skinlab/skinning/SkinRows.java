@@ -5,13 +5,11 @@ import java.util.Arrays;
 import org.skinlab.model.Skin;
 
 /**
- * A skin's influences as a geometry's fixed-width rows, one per point: the influences of the
- * point's position, {@link #width} per row (the most any position of the skin has: all
- * influences are kept), sorted by decreasing weight so the first is the dominant one (the DQS
- * antipodality pivot), padded with weight 0 on the dominant joint. Weights are divided by their
- * sum, as Blender's armature deform does, so files whose weights do not add up to one still
- * deform rigidly. A position without weight (or with weights summing to zero) and COLLADA's
- * joint index -1 take the bind-shape pseudo-joint, palette index {@code skin.jointCount()}.
+ * A skin's influences as a geometry's fixed-width rows, one per point, as
+ * {@link SkinnedGeometry}'s class comment gives them ("Influences"): all influences of the point's
+ * position, heaviest first, divided by their sum, padded with weight 0 on the dominant joint. A
+ * position without weight (or with weights summing to zero) and COLLADA's joint index -1 take the
+ * bind-shape pseudo-joint, palette index {@code skin.jointCount()}.
  */
 final class SkinRows {
     final int width;

@@ -22,7 +22,7 @@ import org.skinlab.model.Node;
  * the dominant one (the DQS antipodality pivot), padded with weight 0 on the dominant joint.
  * Weights are divided by their sum, as Blender's armature deform does, so files whose weights do
  * not add up to one still deform rigidly. A position without weight (or with weights summing to
- * zero) stays where the bind shape puts it ({@link SkinRows}).
+ * zero) stays where the bind shape puts it ({@code SkinRows}).
  *
  * <p><b>Joints.</b> {@link #jointCount()} palette entries: the skin's joints in skin order, plus,
  * when needed, one pseudo-joint for COLLADA's joint index -1 (the bind shape itself) and for
@@ -31,7 +31,7 @@ import org.skinlab.model.Node;
  * {@code world(node) * bind}, applied to the points' positions, which already hold the bind shape
  * matrix (positions moved by it, normals by its inverse-transpose, once, when the geometry is
  * built). When every bind frame mirrors, that common mirror is moved into the points too (see
- * {@link #windingMirrored()} and {@link BindSpace}), so the skinning matrices stay rigid for DQS.
+ * {@link #windingMirrored()} and {@code BindSpace}), so the skinning matrices stay rigid for DQS.
  * A static mesh becomes a geometry with one joint, its own node, and identity bind: the same code
  * places it.
  *
@@ -45,7 +45,7 @@ import org.skinlab.model.Node;
  * and is decided where skinners are made ({@link Skinners}). Either way the points, their order
  * and the arrays below stay the same for callers.
  *
- * <p>{@link MeshGeometry} builds a geometry from a placed mesh; {@link #fromArrays} takes the
+ * <p>{@code MeshGeometry} builds a geometry from a placed mesh; {@link #fromArrays} takes the
  * arrays as they are.
  */
 public final class SkinnedGeometry {
