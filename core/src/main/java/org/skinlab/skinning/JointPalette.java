@@ -60,8 +60,6 @@ public final class JointPalette {
      */
     private final float[] rotation = new float[9];
     private final float[] quaternion = new float[4];
-    /** Per-frame scratch: a posed frame's linear part Xl (row-major 3x3, from {@link #posedLinearPart}). */
-    private final float[] posedLinear = new float[9];
 
     /**
      * @param bindMatrices per joint 16 floats column-major, the matrix that takes bind-shape
@@ -210,49 +208,41 @@ public final class JointPalette {
      * {@code S = B S0 B^-1 = D^-1 M = [Dl^T Ml | Dl^T (m - d)]} with M = [Ml|m], D = [Dl|d].
      */
     private boolean split(int j) {
-        int o = 12 * j;
-        float[] x = posedLinear;
-        posedLinearPart(o, x);
-        if (isRigid(x)) {
-            keepRigid(o);
-            return false;
-        }
-        float[] r = rotation;
-        boneAxisFrame(x[0], x[1], x[2], x[3], x[4], x[5], x[6], x[7], x[8], r);
-        putRigidPart(o, r);
-        putScalePart(o);
-        return true;
-    }
-
-    /** Xl, the linear part of joint {@code o / 12}'s posed frame X = M B, row-major into {@code x}. */
-    private void posedLinearPart(int o, float[] x) {
         float[] mat = matrices;
         float[] piv = pivots;
+        int o = 12 * j;
         float m00 = mat[o], m01 = mat[o + 1], m02 = mat[o + 2];
         float m10 = mat[o + 4], m11 = mat[o + 5], m12 = mat[o + 6];
         float m20 = mat[o + 8], m21 = mat[o + 9], m22 = mat[o + 10];
         float b00 = piv[o], b01 = piv[o + 1], b02 = piv[o + 2];
         float b10 = piv[o + 4], b11 = piv[o + 5], b12 = piv[o + 6];
         float b20 = piv[o + 8], b21 = piv[o + 9], b22 = piv[o + 10];
-        x[0] = m00 * b00 + (m01 * b10 + m02 * b20);
-        x[3] = m10 * b00 + (m11 * b10 + m12 * b20);
-        x[6] = m20 * b00 + (m21 * b10 + m22 * b20);
-        x[1] = m00 * b01 + (m01 * b11 + m02 * b21);
-        x[4] = m10 * b01 + (m11 * b11 + m12 * b21);
-        x[7] = m20 * b01 + (m21 * b11 + m22 * b21);
-        x[2] = m00 * b02 + (m01 * b12 + m02 * b22);
-        x[5] = m10 * b02 + (m11 * b12 + m12 * b22);
-        x[8] = m20 * b02 + (m21 * b12 + m22 * b22);
+        // Xl, the linear part of the posed joint frame X = M B (in locals: this runs per joint per frame).
+        float x00 = m00 * b00 + (m01 * b10 + m02 * b20);
+        float x10 = m10 * b00 + (m11 * b10 + m12 * b20);
+        float x20 = m20 * b00 + (m21 * b10 + m22 * b20);
+        float x01 = m00 * b01 + (m01 * b11 + m02 * b21);
+        float x11 = m10 * b01 + (m11 * b11 + m12 * b21);
+        float x21 = m20 * b01 + (m21 * b11 + m22 * b21);
+        float x02 = m00 * b02 + (m01 * b12 + m02 * b22);
+        float x12 = m10 * b02 + (m11 * b12 + m12 * b22);
+        float x22 = m20 * b02 + (m21 * b12 + m22 * b22);
+        if (isRigid(x00, x01, x02, x10, x11, x12, x20, x21, x22)) {
+            keepRigid(o);
+            return false;
+        }
+        boneAxisFrame(x00, x01, x02, x10, x11, x12, x20, x21, x22, rotation);
+        putRigidPart(o, rotation);
+        putScalePart(o);
+        return true;
     }
 
     /**
-     * Whether a posed frame's linear part (row-major) has unit columns and no reflection, to float
-     * noise: then the joint needs no scale part.
+     * Whether a posed frame's linear part (given row by row) has unit columns and no reflection,
+     * to float noise: then the joint needs no scale part.
      */
-    private static boolean isRigid(float[] x) {
-        float x00 = x[0], x01 = x[1], x02 = x[2];
-        float x10 = x[3], x11 = x[4], x12 = x[5];
-        float x20 = x[6], x21 = x[7], x22 = x[8];
+    private static boolean isRigid(float x00, float x01, float x02, float x10, float x11, float x12, float x20,
+            float x21, float x22) {
         float l0 = x00 * x00 + x10 * x10 + x20 * x20 - 1f;
         float l1 = x01 * x01 + x11 * x11 + x21 * x21 - 1f;
         float l2 = x02 * x02 + x12 * x12 + x22 * x22 - 1f;
@@ -263,8 +253,32 @@ public final class JointPalette {
 
     /** A joint whose matrix is rigid to float noise: D = M, S = I. */
     private void keepRigid(int o) {
-        System.arraycopy(matrices, o, rigidParts, o, 12);
-        setIdentity3x4(scales, o);
+        float[] d = rigidParts;
+        float[] sc = scales;
+        d[o] = matrices[o];
+        d[o + 1] = matrices[o + 1];
+        d[o + 2] = matrices[o + 2];
+        d[o + 3] = matrices[o + 3];
+        d[o + 4] = matrices[o + 4];
+        d[o + 5] = matrices[o + 5];
+        d[o + 6] = matrices[o + 6];
+        d[o + 7] = matrices[o + 7];
+        d[o + 8] = matrices[o + 8];
+        d[o + 9] = matrices[o + 9];
+        d[o + 10] = matrices[o + 10];
+        d[o + 11] = matrices[o + 11];
+        sc[o] = 1f;
+        sc[o + 1] = 0f;
+        sc[o + 2] = 0f;
+        sc[o + 3] = 0f;
+        sc[o + 4] = 0f;
+        sc[o + 5] = 1f;
+        sc[o + 6] = 0f;
+        sc[o + 7] = 0f;
+        sc[o + 8] = 0f;
+        sc[o + 9] = 0f;
+        sc[o + 10] = 1f;
+        sc[o + 11] = 0f;
     }
 
     /** D = [R Bl^T | x - Dl b] into {@code rigidParts}, with x the translation of X = M B. */
