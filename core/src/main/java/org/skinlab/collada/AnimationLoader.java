@@ -199,7 +199,6 @@ final class AnimationLoader {
     // ------------------------------------------------------------------------------- channels
 
     private void readChannel(XmlElement channel, Channels channels) throws ColladaException {
-        List<AnimationChannel> out = channels.nodes;
         XmlElement sampler = ctx.resolve(channel, "source", "sampler");
         String target = ctx.attr(channel, "target");
         int slash = target.indexOf('/');
@@ -212,14 +211,7 @@ final class AnimationLoader {
         }
         String nodeId = target.substring(0, slash);
         String rest = target.substring(slash + 1);
-        int selectorAt = rest.length();
-        for (int i = 0; i < rest.length(); i++) {
-            char c = rest.charAt(i);
-            if (c == '.' || c == '(') {
-                selectorAt = i;
-                break;
-            }
-        }
+        int selectorAt = selectorStart(rest);
         String sid = rest.substring(0, selectorAt);
         String selector = rest.substring(selectorAt);
         if (sid.contains("/")) {
@@ -237,31 +229,54 @@ final class AnimationLoader {
             return;
         }
         for (int i = 0; i < copies.size(); i++) {
-            Node node = nodes.get(copies.get(i));
-            int transformIndex = node.transformIndex(sid);
-            if (transformIndex < 0) {
-                ctx.warn(channel, "target=\"" + target + "\" skipped: node \"" + nodeId
-                        + "\" has no transform element with sid \"" + sid + "\"");
+            if (!readNodeChannel(channel, sampler, nodes.get(copies.get(i)), nodeId, sid, selector, channels.nodes)) {
                 return;
             }
-            TransformElement.Kind kind = node.transforms().get(transformIndex).kind();
-            int[] range = select(kind, selector);
-            if (range == null) {
-                ctx.warn(channel, "target=\"" + target + "\" skipped: \"" + selector + "\" does not select values of a <"
-                        + kind.elementName() + ">");
-                return;
-            }
-            // The angle of a <rotate> (member ANGLE or index 3): where Blender's radian tangents can be.
-            boolean angle = kind == TransformElement.Kind.ROTATE && range[0] == 3 && range[1] == 1;
-            KeyframeTrack track = samplers.track(sampler, range[1],
-                    kind == TransformElement.Kind.MATRIX && range[1] == 16, angle && tangents.fromBlender());
-            if (track.keyCount() == 0) {
-                // Nothing to evaluate, and its start and end (0) would stretch the default clip.
-                ctx.warn(channel, "target=\"" + target + "\" skipped: its sampler has no keys");
-                return;
-            }
-            out.add(new AnimationChannel(node.index(), transformIndex, range[0], track, target));
         }
+    }
+
+    /** Where the member selector ({@code .X}, {@code (3)}) of a target's sid part starts, or its length. */
+    private static int selectorStart(String sidAndSelector) {
+        for (int i = 0; i < sidAndSelector.length(); i++) {
+            char c = sidAndSelector.charAt(i);
+            if (c == '.' || c == '(') {
+                return i;
+            }
+        }
+        return sidAndSelector.length();
+    }
+
+    /**
+     * Adds the channel of one copy of the target node to {@code out}; returns false, having warned,
+     * when the channel is skipped (it is then skipped for every copy).
+     */
+    private boolean readNodeChannel(XmlElement channel, XmlElement sampler, Node node, String nodeId, String sid,
+            String selector, List<AnimationChannel> out) throws ColladaException {
+        String target = channel.attr("target");
+        int transformIndex = node.transformIndex(sid);
+        if (transformIndex < 0) {
+            ctx.warn(channel, "target=\"" + target + "\" skipped: node \"" + nodeId
+                    + "\" has no transform element with sid \"" + sid + "\"");
+            return false;
+        }
+        TransformElement.Kind kind = node.transforms().get(transformIndex).kind();
+        int[] range = select(kind, selector);
+        if (range == null) {
+            ctx.warn(channel, "target=\"" + target + "\" skipped: \"" + selector + "\" does not select values of a <"
+                    + kind.elementName() + ">");
+            return false;
+        }
+        // The angle of a <rotate> (member ANGLE or index 3): where Blender's radian tangents can be.
+        boolean angle = kind == TransformElement.Kind.ROTATE && range[0] == 3 && range[1] == 1;
+        KeyframeTrack track = samplers.track(sampler, range[1],
+                kind == TransformElement.Kind.MATRIX && range[1] == 16, angle && tangents.fromBlender());
+        if (track.keyCount() == 0) {
+            // Nothing to evaluate, and its start and end (0) would stretch the default clip.
+            ctx.warn(channel, "target=\"" + target + "\" skipped: its sampler has no keys");
+            return false;
+        }
+        out.add(new AnimationChannel(node.index(), transformIndex, range[0], track, target));
+        return true;
     }
 
     /** {offset, width} of the values a selector picks from an element of the given kind, or null. */

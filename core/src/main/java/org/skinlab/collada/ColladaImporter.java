@@ -6,7 +6,7 @@ import java.io.InputStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.IdentityHashMap;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -90,21 +90,8 @@ public final class ColladaImporter {
         }
         AssetInfo asset = readAsset(ctx, root);
 
-        Map<XmlElement, Mesh> meshesByGeometry = new IdentityHashMap<>();
-        List<Mesh> meshes = new ArrayList<>();
-        GeometryLoader geometryLoader = new GeometryLoader(ctx);
-        for (XmlElement library : root.children("library_geometries")) {
-            for (XmlElement geometry : library.children("geometry")) {
-                if (geometry.id() == null) {
-                    ctx.warn(geometry, "geometry without id; nothing can refer to it");
-                }
-                Mesh mesh = geometryLoader.load(geometry);
-                if (mesh != null) {
-                    meshesByGeometry.put(geometry, mesh);
-                    meshes.add(mesh);
-                }
-            }
-        }
+        Map<XmlElement, Mesh> meshesByGeometry = loadGeometries(ctx, root);
+        List<Mesh> meshes = new ArrayList<>(meshesByGeometry.values());
 
         MorphLoader morphLoader = new MorphLoader(ctx, meshesByGeometry);
         Map<XmlElement, Morph> morphsByController = morphLoader.loadAll(root);
@@ -112,19 +99,8 @@ public final class ColladaImporter {
             meshes.add(m.result());
         }
 
-        Map<XmlElement, Skin> skinsByController = new IdentityHashMap<>();
-        List<Skin> skins = new ArrayList<>();
-        SkinLoader skinLoader = new SkinLoader(ctx, meshesByGeometry, morphsByController);
-        for (XmlElement library : root.children("library_controllers")) {
-            for (XmlElement controller : library.children("controller")) {
-                XmlElement skin = controller.child("skin");
-                if (skin != null) {
-                    Skin s = skinLoader.load(controller, skin);
-                    skinsByController.put(controller, s);
-                    skins.add(s);
-                }
-            }
-        }
+        Map<XmlElement, Skin> skinsByController = loadSkins(ctx, root, meshesByGeometry, morphsByController);
+        List<Skin> skins = new ArrayList<>(skinsByController.values());
 
         MaterialLoader materialLoader = new MaterialLoader(ctx);
         Map<XmlElement, Material> materials = materialLoader.loadAll(root);
@@ -136,6 +112,40 @@ public final class ColladaImporter {
         return new Model(name, asset, meshes, skins, new ArrayList<>(morphsByController.values()),
                 new ArrayList<>(materials.values()), materialLoader.images(), scene.nodes, scene.instances, clips,
                 ctx.warnings());
+    }
+
+    /** Every {@code <geometry>} with a mesh, in document order. */
+    private static Map<XmlElement, Mesh> loadGeometries(ImportContext ctx, XmlElement root) throws ColladaException {
+        Map<XmlElement, Mesh> meshesByGeometry = new LinkedHashMap<>();
+        GeometryLoader geometryLoader = new GeometryLoader(ctx);
+        for (XmlElement library : root.children("library_geometries")) {
+            for (XmlElement geometry : library.children("geometry")) {
+                if (geometry.id() == null) {
+                    ctx.warn(geometry, "geometry without id; nothing can refer to it");
+                }
+                Mesh mesh = geometryLoader.load(geometry);
+                if (mesh != null) {
+                    meshesByGeometry.put(geometry, mesh);
+                }
+            }
+        }
+        return meshesByGeometry;
+    }
+
+    /** Every {@code <controller><skin>}, in document order. */
+    private static Map<XmlElement, Skin> loadSkins(ImportContext ctx, XmlElement root,
+            Map<XmlElement, Mesh> meshesByGeometry, Map<XmlElement, Morph> morphsByController) throws ColladaException {
+        Map<XmlElement, Skin> skinsByController = new LinkedHashMap<>();
+        SkinLoader skinLoader = new SkinLoader(ctx, meshesByGeometry, morphsByController);
+        for (XmlElement library : root.children("library_controllers")) {
+            for (XmlElement controller : library.children("controller")) {
+                XmlElement skin = controller.child("skin");
+                if (skin != null) {
+                    skinsByController.put(controller, skinLoader.load(controller, skin));
+                }
+            }
+        }
+        return skinsByController;
     }
 
     private static AssetInfo readAsset(ImportContext ctx, XmlElement root) throws ColladaException {

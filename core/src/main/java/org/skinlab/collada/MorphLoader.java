@@ -91,15 +91,7 @@ final class MorphLoader {
     }
 
     private Morph read(XmlElement controller, XmlElement morph, Mesh base) throws ColladaException {
-        String methodName = morph.attr("method");
-        Morph.Method method = Morph.Method.NORMALIZED;
-        if (methodName != null) {
-            try {
-                method = Morph.Method.valueOf(methodName.trim().toUpperCase(Locale.ROOT));
-            } catch (IllegalArgumentException e) {
-                ctx.warn(morph, "method=\"" + methodName + "\" is neither NORMALIZED nor RELATIVE; read as NORMALIZED");
-            }
-        }
+        Morph.Method method = method(morph);
         XmlElement targets = ctx.child(morph, "targets");
         XmlElement targetInput = null;
         XmlElement weightInput = null;
@@ -125,20 +117,8 @@ final class MorphLoader {
         java.util.Arrays.fill(slots, -1);
         weightSlots.put(controller, slots);
         for (int i = 0; i < targetIds.length; i++) {
-            XmlElement g = ctx.byId(targetIds[i]);
-            Mesh target = g == null ? null : meshes.get(g);
-            if (target == null) {
-                ctx.warn(targetInput, "morph target \"" + targetIds[i] + "\" is "
-                        + (g == null ? "nothing in the file" : "no <geometry> with a <mesh>") + "; left out");
-            } else if (target.positionCount() < base.positionCount()) {
-                ctx.warn(targetInput, "morph target \"" + targetIds[i] + "\" has " + target.positionCount()
-                        + " positions, the base " + base.positionCount() + "; left out");
-            } else {
-                if (target.positionCount() > base.positionCount()) {
-                    ctx.warn(targetInput, "morph target \"" + targetIds[i] + "\" has " + target.positionCount()
-                            + " positions, the base " + base.positionCount() + "; its first " + base.positionCount()
-                            + " are used");
-                }
+            Mesh target = usableTarget(targetInput, targetIds[i], base);
+            if (target != null) {
                 slots[i] = used.size();
                 usedWeights[used.size()] = weights[i];
                 used.add(target);
@@ -146,5 +126,45 @@ final class MorphLoader {
         }
         return new Morph(controller.id(), controller.attr("name"), base, method, used,
                 java.util.Arrays.copyOf(usedWeights, used.size()));
+    }
+
+    /** The morph's method attribute; NORMALIZED when absent or unknown (with a warning). */
+    private Morph.Method method(XmlElement morph) {
+        String methodName = morph.attr("method");
+        Morph.Method method = Morph.Method.NORMALIZED;
+        if (methodName != null) {
+            try {
+                method = Morph.Method.valueOf(methodName.trim().toUpperCase(Locale.ROOT));
+            } catch (IllegalArgumentException e) {
+                ctx.warn(morph, "method=\"" + methodName + "\" is neither NORMALIZED nor RELATIVE; read as NORMALIZED");
+            }
+        }
+        return method;
+    }
+
+    /**
+     * The mesh of the target named {@code id}, or null, with a warning, when it names no mesh or
+     * one with fewer positions than the base (a target with more is used, and its extra positions
+     * not).
+     */
+    private Mesh usableTarget(XmlElement targetInput, String id, Mesh base) {
+        XmlElement g = ctx.byId(id);
+        Mesh target = g == null ? null : meshes.get(g);
+        if (target == null) {
+            ctx.warn(targetInput, "morph target \"" + id + "\" is "
+                    + (g == null ? "nothing in the file" : "no <geometry> with a <mesh>") + "; left out");
+            return null;
+        }
+        if (target.positionCount() < base.positionCount()) {
+            ctx.warn(targetInput, "morph target \"" + id + "\" has " + target.positionCount()
+                    + " positions, the base " + base.positionCount() + "; left out");
+            return null;
+        }
+        if (target.positionCount() > base.positionCount()) {
+            ctx.warn(targetInput, "morph target \"" + id + "\" has " + target.positionCount()
+                    + " positions, the base " + base.positionCount() + "; its first " + base.positionCount()
+                    + " are used");
+        }
+        return target;
     }
 }

@@ -66,15 +66,8 @@ final class SamplerReader {
         if (inputIn == null || outputIn == null) {
             throw ctx.error(sampler, "needs an INPUT and an OUTPUT input");
         }
-        Source timeSource = ctx.inputSource(inputIn);
-        float[] times = timeSource.floats(ctx, inputIn, 1, "INPUT");
+        float[] times = keyTimes(inputIn);
         int keys = times.length;
-        for (int k = 1; k < keys; k++) {
-            if (times[k] < times[k - 1]) {
-                throw ctx.error(timeSource.element, "key times decrease at key " + k + " (" + times[k - 1] + " then "
-                        + times[k] + ")");
-            }
-        }
         float[] values = keyValues(outputIn, keys, width, "OUTPUT");
         if (matrix) {
             for (int k = 0; k < keys; k++) {
@@ -83,45 +76,14 @@ final class SamplerReader {
                 }
             }
         }
-
-        Interpolation[] interpolations = new Interpolation[keys];
-        java.util.Arrays.fill(interpolations, Interpolation.LINEAR);
-        if (interpolationIn != null) {
-            Source s = ctx.inputSource(interpolationIn);
-            String[] names = s.names(ctx, interpolationIn, "INTERPOLATION");
-            if (names.length != keys) {
-                throw ctx.error(interpolationIn, "INTERPOLATION has " + names.length + " entries for " + keys + " keys");
-            }
-            // One warning per sampler, not per key: a long CARDINAL track would otherwise fill
-            // the warning list (ImportContext.MAX_WARNINGS) and hide everything else.
-            Set<String> unsupported = null;
-            for (int k = 0; k < keys; k++) {
-                Interpolation i = interpolation(names[k]);
-                if (i == null) {
-                    if (unsupported == null) {
-                        unsupported = new LinkedHashSet<>();
-                    }
-                    unsupported.add(names[k]);
-                    i = Interpolation.LINEAR;
-                }
-                interpolations[k] = i;
-            }
-            if (unsupported != null) {
-                ctx.warn(interpolationIn, "interpolation " + String.join(", ", unsupported)
-                        + " is not supported; read as LINEAR");
-            }
-        }
-        boolean curved = false;
-        for (Interpolation i : interpolations) {
-            curved |= i == Interpolation.BEZIER || i == Interpolation.HERMITE;
-        }
+        Interpolation[] interpolations = interpolations(interpolationIn, keys);
         float[] inTangents = null;
         float[] outTangents = null;
-        if (curved) {
+        if (isCurved(interpolations)) {
             if (inTangentIn == null || outTangentIn == null) {
                 ctx.warn(sampler, "BEZIER/HERMITE keys without IN_TANGENT and OUT_TANGENT; read as LINEAR");
                 for (int k = 0; k < keys; k++) {
-                    if (interpolations[k] == Interpolation.BEZIER || interpolations[k] == Interpolation.HERMITE) {
+                    if (isCurved(interpolations[k])) {
                         interpolations[k] = Interpolation.LINEAR;
                     }
                 }
@@ -136,6 +98,65 @@ final class SamplerReader {
             }
         }
         return new KeyframeTrack(times, values, width, interpolations, inTangents, outTangents);
+    }
+
+    /** The INPUT's key times, refused where they decrease. */
+    private float[] keyTimes(XmlElement inputIn) throws ColladaException {
+        Source timeSource = ctx.inputSource(inputIn);
+        float[] times = timeSource.floats(ctx, inputIn, 1, "INPUT");
+        for (int k = 1; k < times.length; k++) {
+            if (times[k] < times[k - 1]) {
+                throw ctx.error(timeSource.element, "key times decrease at key " + k + " (" + times[k - 1] + " then "
+                        + times[k] + ")");
+            }
+        }
+        return times;
+    }
+
+    /** Each key's interpolation: LINEAR without an INTERPOLATION input, and for names we do not support. */
+    private Interpolation[] interpolations(XmlElement interpolationIn, int keys) throws ColladaException {
+        Interpolation[] interpolations = new Interpolation[keys];
+        java.util.Arrays.fill(interpolations, Interpolation.LINEAR);
+        if (interpolationIn == null) {
+            return interpolations;
+        }
+        Source s = ctx.inputSource(interpolationIn);
+        String[] names = s.names(ctx, interpolationIn, "INTERPOLATION");
+        if (names.length != keys) {
+            throw ctx.error(interpolationIn, "INTERPOLATION has " + names.length + " entries for " + keys + " keys");
+        }
+        // One warning per sampler, not per key: a long CARDINAL track would otherwise fill
+        // the warning list (ImportContext.MAX_WARNINGS) and hide everything else.
+        Set<String> unsupported = null;
+        for (int k = 0; k < keys; k++) {
+            Interpolation i = interpolation(names[k]);
+            if (i == null) {
+                if (unsupported == null) {
+                    unsupported = new LinkedHashSet<>();
+                }
+                unsupported.add(names[k]);
+                i = Interpolation.LINEAR;
+            }
+            interpolations[k] = i;
+        }
+        if (unsupported != null) {
+            ctx.warn(interpolationIn, "interpolation " + String.join(", ", unsupported)
+                    + " is not supported; read as LINEAR");
+        }
+        return interpolations;
+    }
+
+    private static boolean isCurved(Interpolation[] interpolations) {
+        boolean curved = false;
+        for (Interpolation i : interpolations) {
+            curved |= isCurved(i);
+        }
+        return curved;
+    }
+
+    /** Whether a key's curve needs tangents. */
+    private static boolean isCurved(Interpolation i) {
+        return i == Interpolation.BEZIER || i == Interpolation.HERMITE;
     }
 
     /** The interpolation of that name, or null when it is not supported (CARDINAL, BSPLINE, ...). */

@@ -43,14 +43,14 @@ final class Source {
         this.nonFiniteReason = nonFiniteReason;
     }
 
+    private Source(XmlElement element, XmlElement array, Values values, int count, int stride, int offset,
+            int[] components) {
+        this(element, array, values.floats, values.ints, values.names, values.idrefs, count, stride, offset,
+                components, values.nonFinite, values.firstNonFinite, values.nonFiniteReason);
+    }
+
     static Source parse(ImportContext ctx, XmlElement source) throws ColladaException {
-        XmlElement own = null;
-        for (XmlElement c : source.children()) {
-            if (isArray(c)) {
-                own = c;
-                break;
-            }
-        }
+        XmlElement own = ownArray(source);
         XmlElement technique = source.child("technique_common");
         XmlElement accessor = technique == null ? null : technique.child("accessor");
         XmlElement array = own;
@@ -60,51 +60,10 @@ final class Source {
         if (array == null) {
             throw ctx.error(source, "has no data array (float_array, int_array, Name_array or IDREF_array)");
         }
-        int declared = ctx.count(array, "count", -1);
-        float[] floats = null;
-        int[] ints = null;
-        String[] names = null;
-        int length;
-        int nonFinite = 0;
-        String firstNonFinite = null;
-        String nonFiniteReason = null;
-        switch (array.name()) {
-            case "float_array": {
-                NumberScanner n = NumberParser.scannedFloats(ctx, array);
-                floats = n.floats();
-                length = floats.length;
-                nonFinite = n.nonFiniteCount();
-                if (nonFinite > 0) {
-                    firstNonFinite = "value " + n.nonFiniteIndex() + " \"" + n.nonFiniteToken() + "\"";
-                    nonFiniteReason = n.nonFiniteReason();
-                }
-                break;
-            }
-            case "int_array":
-                ints = NumberParser.ints(ctx, array, -1);
-                length = ints.length;
-                break;
-            case "bool_array":
-                throw ctx.error(array, "a bool_array cannot feed geometry, skin or animation data");
-            default:
-                names = NumberParser.names(ctx, array, -1);
-                if (declared >= 0 && names.length > declared) {
-                    names = SpacedNames.rejoin(ctx, array, names, declared);
-                }
-                length = names.length;
-                break;
-        }
-        if (declared >= 0 && declared != length) {
-            // Exporters get the count attribute wrong (the CTS has such files); the values present
-            // are what the accessor reads, and it is checked against them below.
-            ctx.warn(array, "count=\"" + declared + "\" but " + length + " values; the values present are read");
-        }
-        boolean idrefs = array.name().equals("IDREF_array");
-
+        Values values = Values.read(ctx, array);
         if (accessor == null) {
             ctx.warn(source, "no <technique_common><accessor>; every value read as one element");
-            return new Source(source, array, floats, ints, names, idrefs, length, 1, 0, new int[] {0}, nonFinite,
-                    firstNonFinite, nonFiniteReason);
+            return new Source(source, array, values, values.length, 1, 0, new int[] {0});
         }
         int count = ctx.count(accessor, "count", -1);
         if (count < 0) {
@@ -116,28 +75,9 @@ final class Source {
             throw ctx.error(accessor, "stride=\"0\"");
         }
         List<XmlElement> params = accessor.children("param");
-        boolean anyNamed = false;
-        for (XmlElement param : params) {
-            anyNamed |= param.attr("name") != null;
-        }
-        if (!params.isEmpty() && !anyNamed) {
-            // The specification says an unnamed param skips its slot, which would leave nothing to
-            // read; FBX-COLLADA, Mixamo, Softimage and 3ds Max write such accessors for joint
-            // names and sampler inputs and outputs, meaning "the data".
-            ctx.warnOnce("unnamed-params", accessor, "no <param> of this accessor has a name (and maybe others);"
-                    + " their components are read as data");
-        }
+        boolean anyNamed = anyNamed(ctx, accessor, params);
         List<Integer> comps = new ArrayList<>();
-        int slot = 0;
-        for (XmlElement param : params) {
-            int width = paramWidth(param.attr("type"));
-            if (param.attr("name") != null || !anyNamed) {
-                for (int k = 0; k < width; k++) {
-                    comps.add(slot + k);
-                }
-            }
-            slot += width;
-        }
+        int slot = namedComponents(params, anyNamed, comps);
         if (stride == 0) {
             stride = Math.max(1, slot); // count="0" stride="0": an empty source, however it is laid out
         }
@@ -149,9 +89,71 @@ final class Source {
                 comps.add(k);
             }
         }
-        // Element i reads values offset + i * stride + c for its components c.
+        int[] components = toArray(comps);
+        count = elementsPresent(ctx, accessor, count, stride, offset, components, values.length);
+        return new Source(source, array, values, count, stride, offset, components);
+    }
+
+    /** The source's own array, the first child that is one, or null. */
+    private static XmlElement ownArray(XmlElement source) {
+        for (XmlElement c : source.children()) {
+            if (isArray(c)) {
+                return c;
+            }
+        }
+        return null;
+    }
+
+    /** Whether some param of the accessor has a name; warns (once per file) when none has. */
+    private static boolean anyNamed(ImportContext ctx, XmlElement accessor, List<XmlElement> params) {
+        boolean anyNamed = false;
+        for (XmlElement param : params) {
+            anyNamed |= param.attr("name") != null;
+        }
+        if (!params.isEmpty() && !anyNamed) {
+            // The specification says an unnamed param skips its slot, which would leave nothing to
+            // read; FBX-COLLADA, Mixamo, Softimage and 3ds Max write such accessors for joint
+            // names and sampler inputs and outputs, meaning "the data".
+            ctx.warnOnce("unnamed-params", accessor, "no <param> of this accessor has a name (and maybe others);"
+                    + " their components are read as data");
+        }
+        return anyNamed;
+    }
+
+    /**
+     * Adds to {@code comps} the value offsets the params pick (the named ones, or all when none
+     * is named) and returns how many values the params span.
+     */
+    private static int namedComponents(List<XmlElement> params, boolean anyNamed, List<Integer> comps) {
+        int slot = 0;
+        for (XmlElement param : params) {
+            int width = paramWidth(param.attr("type"));
+            if (param.attr("name") != null || !anyNamed) {
+                for (int k = 0; k < width; k++) {
+                    comps.add(slot + k);
+                }
+            }
+            slot += width;
+        }
+        return slot;
+    }
+
+    private static int[] toArray(List<Integer> comps) {
+        int[] components = new int[comps.size()];
+        for (int i = 0; i < components.length; i++) {
+            components[i] = comps.get(i);
+        }
+        return components;
+    }
+
+    /**
+     * The accessor's count, or the whole elements the array holds when the count promises more
+     * (with a warning): element i reads values offset + i * stride + c for its components c.
+     */
+    private static int elementsPresent(ImportContext ctx, XmlElement accessor, int count, int stride, int offset,
+            int[] components, int length) {
         int span = 0;
-        for (int c : comps) {
+        for (int c : components) {
             span = Math.max(span, c + 1);
         }
         long needed = count == 0 ? 0 : (long) offset + (long) (count - 1) * stride + span;
@@ -162,14 +164,61 @@ final class Source {
             ctx.warn(accessor, "count=\"" + count + "\" stride=\"" + stride + "\" offset=\"" + offset + "\" needs "
                     + needed + " values but the array has " + length + "; the " + present + " whole elements present"
                     + " are read");
-            count = present;
+            return present;
         }
-        int[] components = new int[comps.size()];
-        for (int i = 0; i < components.length; i++) {
-            components[i] = comps.get(i);
+        return count;
+    }
+
+    /** The values of a data array, with what the scanner found non-finite among floats. */
+    private static final class Values {
+        float[] floats;
+        int[] ints;
+        String[] names;
+        int length;
+        int nonFinite;
+        String firstNonFinite;
+        String nonFiniteReason;
+        boolean idrefs;
+
+        /** Reads the array's values; warns when its count attribute disagrees with them. */
+        static Values read(ImportContext ctx, XmlElement array) throws ColladaException {
+            int declared = ctx.count(array, "count", -1);
+            Values v = new Values();
+            switch (array.name()) {
+                case "float_array": {
+                    NumberScanner n = NumberParser.scannedFloats(ctx, array);
+                    v.floats = n.floats();
+                    v.length = v.floats.length;
+                    v.nonFinite = n.nonFiniteCount();
+                    if (v.nonFinite > 0) {
+                        v.firstNonFinite = "value " + n.nonFiniteIndex() + " \"" + n.nonFiniteToken() + "\"";
+                        v.nonFiniteReason = n.nonFiniteReason();
+                    }
+                    break;
+                }
+                case "int_array":
+                    v.ints = NumberParser.ints(ctx, array, -1);
+                    v.length = v.ints.length;
+                    break;
+                case "bool_array":
+                    throw ctx.error(array, "a bool_array cannot feed geometry, skin or animation data");
+                default:
+                    v.names = NumberParser.names(ctx, array, -1);
+                    if (declared >= 0 && v.names.length > declared) {
+                        v.names = SpacedNames.rejoin(ctx, array, v.names, declared);
+                    }
+                    v.length = v.names.length;
+                    break;
+            }
+            if (declared >= 0 && declared != v.length) {
+                // Exporters get the count attribute wrong (the CTS has such files); the values
+                // present are what the accessor reads, and it is checked against them
+                // (elementsPresent).
+                ctx.warn(array, "count=\"" + declared + "\" but " + v.length + " values; the values present are read");
+            }
+            v.idrefs = array.name().equals("IDREF_array");
+            return v;
         }
-        return new Source(source, array, floats, ints, names, idrefs, count, stride, offset, components, nonFinite,
-                firstNonFinite, nonFiniteReason);
     }
 
     private static boolean isArray(XmlElement e) {

@@ -42,13 +42,34 @@ public final class Bones {
     /** The bones of a geometry's palette joints. */
     public static Bones of(SkinnedGeometry geometry) {
         int joints = geometry.jointCount();
-        float[] bind = geometry.bindMatrixArray();
         int[] parents = new int[joints];
-        float[] heads = new float[3 * joints];
-        float[] axes = new float[3 * joints];
-        Matrix4f frame = new Matrix4f();
         for (int j = 0; j < joints; j++) {
             parents[j] = geometry.jointParent(j);
+        }
+        float[] heads = new float[3 * joints];
+        float[] axes = new float[3 * joints];
+        restHeadsAndAxes(geometry.bindMatrixArray(), heads, axes);
+        int[] tailJoints = tailJoints(parents, heads, axes);
+        float[] leafLengths = leafLengths(geometry, heads, axes, tailJoints);
+        float[] segments = new float[6 * joints];
+        for (int j = 0; j < joints; j++) {
+            System.arraycopy(heads, 3 * j, segments, 6 * j, 3);
+            int t = tailJoints[j];
+            for (int a = 0; a < 3; a++) {
+                segments[6 * j + 3 + a] = t >= 0 ? heads[3 * t + a] : heads[3 * j + a] + leafLengths[j] * axes[3 * j + a];
+            }
+        }
+        return new Bones(parents, tailJoints, segments);
+    }
+
+    /**
+     * Per joint its rest frame's origin (the head) and unit Y axis (the bone axis; +Y where the
+     * frame has none), from its bind matrix: the frame is {@code inverse(bind)}, the identity
+     * where that is singular.
+     */
+    private static void restHeadsAndAxes(float[] bind, float[] heads, float[] axes) {
+        Matrix4f frame = new Matrix4f();
+        for (int j = 0; j < heads.length / 3; j++) {
             frame.set(bind, 16 * j).invert();
             if (!frame.isFinite()) {
                 frame.identity();
@@ -66,6 +87,11 @@ public final class Bones {
                 axes[3 * j + 1] = 1f;
             }
         }
+    }
+
+    /** Per joint the child whose head lies most nearly along its axis (see the class comment), or -1. */
+    private static int[] tailJoints(int[] parents, float[] heads, float[] axes) {
+        int joints = parents.length;
         int[] tailJoints = new int[joints];
         Arrays.fill(tailJoints, -1);
         float[] bestCos = new float[joints];
@@ -88,16 +114,7 @@ public final class Bones {
                 tailJoints[p] = c;
             }
         }
-        float[] leafLengths = leafLengths(geometry, heads, axes, tailJoints);
-        float[] segments = new float[6 * joints];
-        for (int j = 0; j < joints; j++) {
-            System.arraycopy(heads, 3 * j, segments, 6 * j, 3);
-            int t = tailJoints[j];
-            for (int a = 0; a < 3; a++) {
-                segments[6 * j + 3 + a] = t >= 0 ? heads[3 * t + a] : heads[3 * j + a] + leafLengths[j] * axes[3 * j + a];
-            }
-        }
-        return new Bones(parents, tailJoints, segments);
+        return tailJoints;
     }
 
     /** Per leaf joint, how far along its axis the points it dominates reach (0 for none beyond the head). */

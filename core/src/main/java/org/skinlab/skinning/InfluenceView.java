@@ -90,48 +90,65 @@ public final class InfluenceView {
         int[] order = new int[width];
         int capped = 0;
         for (int i = 0; i < points; i++) {
-            int o = width * i;
-            // Stable insertion sort of the row's slots by decreasing weight: a no-op for the rows
-            // SkinnedGeometry.of sorts already, needed for fromArrays rows taken as given.
-            for (int a = 0; a < width; a++) {
-                int e = a;
-                int b = a - 1;
-                while (b >= 0 && sourceWeights[o + order[b]] < sourceWeights[o + e]) {
-                    order[b + 1] = order[b];
-                    b--;
-                }
-                order[b + 1] = e;
-            }
-            int kept = Math.min(k, width);
-            double lostWeight = 0;
-            boolean lost = false;
-            for (int s = kept; s < width; s++) {
-                lostWeight += sourceWeights[o + order[s]];
-                lost |= sourceWeights[o + order[s]] != 0f;
-            }
-            dropped[i] = (float) lostWeight;
-            double sum = 0;
-            for (int s = 0; s < kept; s++) {
-                sum += sourceWeights[o + order[s]];
-            }
-            // A sum of zero or less only comes from fromArrays rows (negative weights): kept as given.
-            boolean renormalise = lost && sum > 0;
-            if (lost) {
+            sortByDecreasingWeight(sourceWeights, width * i, width, order);
+            if (capRow(sourceJoints, sourceWeights, width, i, order, k, joints, weights, dropped)) {
                 capped++;
-            }
-            int d = k * i;
-            int first = sourceJoints[o + order[0]];
-            for (int s = 0; s < k; s++) {
-                float w = s < kept ? sourceWeights[o + order[s]] : 0f;
-                if (renormalise) {
-                    w = (float) (w / sum);
-                }
-                weights[d + s] = w;
-                joints[d + s] = (short) (w == 0f ? first : sourceJoints[o + order[s]]);
             }
         }
         return new InfluenceView(k, points, geometry.vertexCount(), geometry.jointCount(), width, joints, weights,
                 dropped, capped);
+    }
+
+    /**
+     * The slots of the row at {@code o} into {@code order}, by decreasing weight: a stable
+     * insertion sort, a no-op for the rows {@link SkinnedGeometry#of} sorts already, needed for
+     * {@link SkinnedGeometry#fromArrays} rows taken as given.
+     */
+    private static void sortByDecreasingWeight(float[] sourceWeights, int o, int width, int[] order) {
+        for (int a = 0; a < width; a++) {
+            int e = a;
+            int b = a - 1;
+            while (b >= 0 && sourceWeights[o + order[b]] < sourceWeights[o + e]) {
+                order[b + 1] = order[b];
+                b--;
+            }
+            order[b + 1] = e;
+        }
+    }
+
+    /**
+     * Writes point {@code i}'s {@code k} heaviest influences (in {@code order}) into {@code joints}
+     * and {@code weights}, renormalised when the cap dropped weight, and that weight into
+     * {@code dropped}; returns whether it dropped any.
+     */
+    private static boolean capRow(int[] sourceJoints, float[] sourceWeights, int width, int i, int[] order, int k,
+            short[] joints, float[] weights, float[] dropped) {
+        int o = width * i;
+        int kept = Math.min(k, width);
+        double lostWeight = 0;
+        boolean lost = false;
+        for (int s = kept; s < width; s++) {
+            lostWeight += sourceWeights[o + order[s]];
+            lost |= sourceWeights[o + order[s]] != 0f;
+        }
+        dropped[i] = (float) lostWeight;
+        double sum = 0;
+        for (int s = 0; s < kept; s++) {
+            sum += sourceWeights[o + order[s]];
+        }
+        // A sum of zero or less only comes from fromArrays rows (negative weights): kept as given.
+        boolean renormalise = lost && sum > 0;
+        int d = k * i;
+        int first = sourceJoints[o + order[0]];
+        for (int s = 0; s < k; s++) {
+            float w = s < kept ? sourceWeights[o + order[s]] : 0f;
+            if (renormalise) {
+                w = (float) (w / sum);
+            }
+            weights[d + s] = w;
+            joints[d + s] = (short) (w == 0f ? first : sourceJoints[o + order[s]]);
+        }
+        return lost;
     }
 
     /** Influences per point in this view ({@code k}). */

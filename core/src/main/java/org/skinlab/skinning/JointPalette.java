@@ -100,6 +100,7 @@ public final class JointPalette {
             setIdentity3x4(matrices, 12 * j);
         }
     }
+
     /** A palette of {@code joints} joints whose bind frames are at the origin (e.g. benchmarks). */
     public static JointPalette withoutBindFrames(int joints) {
         float[] identities = new float[16 * joints];
@@ -209,16 +210,14 @@ public final class JointPalette {
     private boolean split(int j) {
         float[] mat = matrices;
         float[] piv = pivots;
-        float[] d = rigidParts;
-        float[] sc = scales;
         int o = 12 * j;
-        float m00 = mat[o], m01 = mat[o + 1], m02 = mat[o + 2], mt0 = mat[o + 3];
-        float m10 = mat[o + 4], m11 = mat[o + 5], m12 = mat[o + 6], mt1 = mat[o + 7];
-        float m20 = mat[o + 8], m21 = mat[o + 9], m22 = mat[o + 10], mt2 = mat[o + 11];
-        float b00 = piv[o], b01 = piv[o + 1], b02 = piv[o + 2], bt0 = piv[o + 3];
-        float b10 = piv[o + 4], b11 = piv[o + 5], b12 = piv[o + 6], bt1 = piv[o + 7];
-        float b20 = piv[o + 8], b21 = piv[o + 9], b22 = piv[o + 10], bt2 = piv[o + 11];
-        // Xl, the linear part of the posed joint frame X = M B.
+        float m00 = mat[o], m01 = mat[o + 1], m02 = mat[o + 2];
+        float m10 = mat[o + 4], m11 = mat[o + 5], m12 = mat[o + 6];
+        float m20 = mat[o + 8], m21 = mat[o + 9], m22 = mat[o + 10];
+        float b00 = piv[o], b01 = piv[o + 1], b02 = piv[o + 2];
+        float b10 = piv[o + 4], b11 = piv[o + 5], b12 = piv[o + 6];
+        float b20 = piv[o + 8], b21 = piv[o + 9], b22 = piv[o + 10];
+        // Xl, the linear part of the posed joint frame X = M B (in locals: this runs per joint per frame).
         float x00 = m00 * b00 + (m01 * b10 + m02 * b20);
         float x10 = m10 * b00 + (m11 * b10 + m12 * b20);
         float x20 = m20 * b00 + (m21 * b10 + m22 * b20);
@@ -228,46 +227,74 @@ public final class JointPalette {
         float x02 = m00 * b02 + (m01 * b12 + m02 * b22);
         float x12 = m10 * b02 + (m11 * b12 + m12 * b22);
         float x22 = m20 * b02 + (m21 * b12 + m22 * b22);
+        if (isRigid(x00, x01, x02, x10, x11, x12, x20, x21, x22)) {
+            keepRigid(o);
+            return false;
+        }
+        boneAxisFrame(x00, x01, x02, x10, x11, x12, x20, x21, x22, rotation);
+        putRigidPart(o, rotation);
+        putScalePart(o);
+        return true;
+    }
+
+    /**
+     * Whether a posed frame's linear part (given row by row) has unit columns and no reflection,
+     * to float noise: then the joint needs no scale part.
+     */
+    private static boolean isRigid(float x00, float x01, float x02, float x10, float x11, float x12, float x20,
+            float x21, float x22) {
         float l0 = x00 * x00 + x10 * x10 + x20 * x20 - 1f;
         float l1 = x01 * x01 + x11 * x11 + x21 * x21 - 1f;
         float l2 = x02 * x02 + x12 * x12 + x22 * x22 - 1f;
         float det = (x00 * x11 - x10 * x01) * x22 + (x20 * x01 - x00 * x21) * x12 + (x10 * x21 - x20 * x11) * x02;
         // Blender compares |size - 1|^2 with 1e-8; |len^2 - 1| ~ 2 |len - 1| near one.
-        if (!(l0 * l0 + l1 * l1 + l2 * l2 > 4 * 1e-8f || det < 0f)) {
-            // M is rigid to float noise: D = M, S = I.
-            d[o] = m00;
-            d[o + 1] = m01;
-            d[o + 2] = m02;
-            d[o + 3] = mt0;
-            d[o + 4] = m10;
-            d[o + 5] = m11;
-            d[o + 6] = m12;
-            d[o + 7] = mt1;
-            d[o + 8] = m20;
-            d[o + 9] = m21;
-            d[o + 10] = m22;
-            d[o + 11] = mt2;
-            sc[o] = 1f;
-            sc[o + 1] = 0f;
-            sc[o + 2] = 0f;
-            sc[o + 3] = 0f;
-            sc[o + 4] = 0f;
-            sc[o + 5] = 1f;
-            sc[o + 6] = 0f;
-            sc[o + 7] = 0f;
-            sc[o + 8] = 0f;
-            sc[o + 9] = 0f;
-            sc[o + 10] = 1f;
-            sc[o + 11] = 0f;
-            return false;
-        }
-        float[] r = rotation;
-        boneAxisFrame(x00, x01, x02, x10, x11, x12, x20, x21, x22, r);
-        // x, the translation of X.
+        return !(l0 * l0 + l1 * l1 + l2 * l2 > 4 * 1e-8f || det < 0f);
+    }
+
+    /** A joint whose matrix is rigid to float noise: D = M, S = I. */
+    private void keepRigid(int o) {
+        float[] d = rigidParts;
+        float[] sc = scales;
+        d[o] = matrices[o];
+        d[o + 1] = matrices[o + 1];
+        d[o + 2] = matrices[o + 2];
+        d[o + 3] = matrices[o + 3];
+        d[o + 4] = matrices[o + 4];
+        d[o + 5] = matrices[o + 5];
+        d[o + 6] = matrices[o + 6];
+        d[o + 7] = matrices[o + 7];
+        d[o + 8] = matrices[o + 8];
+        d[o + 9] = matrices[o + 9];
+        d[o + 10] = matrices[o + 10];
+        d[o + 11] = matrices[o + 11];
+        sc[o] = 1f;
+        sc[o + 1] = 0f;
+        sc[o + 2] = 0f;
+        sc[o + 3] = 0f;
+        sc[o + 4] = 0f;
+        sc[o + 5] = 1f;
+        sc[o + 6] = 0f;
+        sc[o + 7] = 0f;
+        sc[o + 8] = 0f;
+        sc[o + 9] = 0f;
+        sc[o + 10] = 1f;
+        sc[o + 11] = 0f;
+    }
+
+    /** D = [R Bl^T | x - Dl b] into {@code rigidParts}, with x the translation of X = M B. */
+    private void putRigidPart(int o, float[] r) {
+        float[] mat = matrices;
+        float[] piv = pivots;
+        float[] d = rigidParts;
+        float m00 = mat[o], m01 = mat[o + 1], m02 = mat[o + 2], mt0 = mat[o + 3];
+        float m10 = mat[o + 4], m11 = mat[o + 5], m12 = mat[o + 6], mt1 = mat[o + 7];
+        float m20 = mat[o + 8], m21 = mat[o + 9], m22 = mat[o + 10], mt2 = mat[o + 11];
+        float b00 = piv[o], b01 = piv[o + 1], b02 = piv[o + 2], bt0 = piv[o + 3];
+        float b10 = piv[o + 4], b11 = piv[o + 5], b12 = piv[o + 6], bt1 = piv[o + 7];
+        float b20 = piv[o + 8], b21 = piv[o + 9], b22 = piv[o + 10], bt2 = piv[o + 11];
         float xt0 = m00 * bt0 + (m01 * bt1 + (m02 * bt2 + mt0));
         float xt1 = m10 * bt0 + (m11 * bt1 + (m12 * bt2 + mt1));
         float xt2 = m20 * bt0 + (m21 * bt1 + (m22 * bt2 + mt2));
-        // Dl = R Bl^T, d = x - Dl b
         float d00 = r[0] * b00 + r[1] * b01 + r[2] * b02;
         float d01 = r[0] * b10 + r[1] * b11 + r[2] * b12;
         float d02 = r[0] * b20 + r[1] * b21 + r[2] * b22;
@@ -277,25 +304,34 @@ public final class JointPalette {
         float d20 = r[6] * b00 + r[7] * b01 + r[8] * b02;
         float d21 = r[6] * b10 + r[7] * b11 + r[8] * b12;
         float d22 = r[6] * b20 + r[7] * b21 + r[8] * b22;
-        float dt0 = xt0 - (d00 * bt0 + d01 * bt1 + d02 * bt2);
-        float dt1 = xt1 - (d10 * bt0 + d11 * bt1 + d12 * bt2);
-        float dt2 = xt2 - (d20 * bt0 + d21 * bt1 + d22 * bt2);
         d[o] = d00;
         d[o + 1] = d01;
         d[o + 2] = d02;
-        d[o + 3] = dt0;
+        d[o + 3] = xt0 - (d00 * bt0 + d01 * bt1 + d02 * bt2);
         d[o + 4] = d10;
         d[o + 5] = d11;
         d[o + 6] = d12;
-        d[o + 7] = dt1;
+        d[o + 7] = xt1 - (d10 * bt0 + d11 * bt1 + d12 * bt2);
         d[o + 8] = d20;
         d[o + 9] = d21;
         d[o + 10] = d22;
-        d[o + 11] = dt2;
-        // S = [Dl^T Ml | Dl^T (m - d)]
-        float e0 = mt0 - dt0;
-        float e1 = mt1 - dt1;
-        float e2 = mt2 - dt2;
+        d[o + 11] = xt2 - (d20 * bt0 + d21 * bt1 + d22 * bt2);
+    }
+
+    /** S = [Dl^T Ml | Dl^T (m - d)] into {@link #scales}, from the rigid part D already put. */
+    private void putScalePart(int o) {
+        float[] mat = matrices;
+        float[] d = rigidParts;
+        float[] sc = scales;
+        float m00 = mat[o], m01 = mat[o + 1], m02 = mat[o + 2];
+        float m10 = mat[o + 4], m11 = mat[o + 5], m12 = mat[o + 6];
+        float m20 = mat[o + 8], m21 = mat[o + 9], m22 = mat[o + 10];
+        float d00 = d[o], d01 = d[o + 1], d02 = d[o + 2];
+        float d10 = d[o + 4], d11 = d[o + 5], d12 = d[o + 6];
+        float d20 = d[o + 8], d21 = d[o + 9], d22 = d[o + 10];
+        float e0 = mat[o + 3] - d[o + 3];
+        float e1 = mat[o + 7] - d[o + 7];
+        float e2 = mat[o + 11] - d[o + 11];
         sc[o] = d00 * m00 + d10 * m10 + d20 * m20;
         sc[o + 1] = d00 * m01 + d10 * m11 + d20 * m21;
         sc[o + 2] = d00 * m02 + d10 * m12 + d20 * m22;
@@ -308,7 +344,6 @@ public final class JointPalette {
         sc[o + 9] = d02 * m01 + d12 * m11 + d22 * m21;
         sc[o + 10] = d02 * m02 + d12 * m12 + d22 * m22;
         sc[o + 11] = d02 * e0 + d12 * e1 + d22 * e2;
-        return true;
     }
 
     /**

@@ -7,7 +7,6 @@ import org.joml.Matrix4f;
 import org.skinlab.model.MeshInstance;
 import org.skinlab.model.Morph;
 import org.skinlab.model.Node;
-import org.skinlab.model.Skin;
 
 /**
  * The rest shape of a placed mesh whose morph weights animate: its own {@link SkinnedGeometry}
@@ -25,7 +24,7 @@ final class MorphedRestShape {
     private final float[] meshPositions;
     /** Per point of {@link #geometry}, its mesh position. */
     private final int[] positionOfPoint;
-    /** {@link #pointTransform}, column-major. */
+    /** {@link BindSpace#pointTransform}, column-major. */
     private final float[] transform = new float[16];
     /** Its normal matrix (cofactor times the sign of the determinant), column-major; for morphed normals. */
     private final float[] normalTransform = new float[9];
@@ -38,21 +37,11 @@ final class MorphedRestShape {
         this.rest = rest;
         this.geometry = SkinnedGeometry.of(instance, nodes);
         this.meshPositions = new float[3 * morph.base().positionCount()];
-        int vertices = geometry.vertexCount();
-        positionOfPoint = new int[geometry.pointCount()];
-        for (int v = 0; v < vertices; v++) {
-            positionOfPoint[v] = instance.mesh().vertexPosition(v);
-        }
-        for (int p = 0; p < geometry.positionCount(); p++) {
-            int point = geometry.pointOfPosition(p);
-            if (point >= vertices) {
-                positionOfPoint[point] = p;
-            }
-        }
+        this.positionOfPoint = PointLayout.of(instance.mesh()).positionOfPoint;
         // CoR's centres stay those of the rest shape (computed once there, whoever asks first:
         // a CoR skinner, or a GPU renderer uploading them), not recomputed per frame (docs/skinning.md).
         geometry.takeCentresFrom(rest);
-        Matrix4f m = pointTransform(instance);
+        Matrix4f m = BindSpace.pointTransform(instance);
         m.get(transform);
         Matrix3f n = m.get3x3(new Matrix3f()).cofactor();
         if (m.determinant3x3() < 0f) {
@@ -65,24 +54,6 @@ final class MorphedRestShape {
     /** The geometry this shape rewrites (its own). */
     SkinnedGeometry geometry() {
         return geometry;
-    }
-
-    /**
-     * What takes a mesh position to its point's position in the geometry's
-     * {@link SkinnedGeometry#positionArray()}: the bind shape matrix, then the common mirror of the
-     * bind frames when there is one (as {@code SkinnedGeometry.skinned} applies them once); the
-     * identity for a static mesh.
-     */
-    static Matrix4f pointTransform(MeshInstance instance) {
-        Matrix4f m = new Matrix4f();
-        Skin skin = instance.skin();
-        if (skin == null) {
-            return m;
-        }
-        if (SkinnedGeometry.mirrorsBindFrames(skin)) {
-            m.scale(-1f, 1f, 1f);
-        }
-        return m.mul(skin.bindShapeMatrix());
     }
 
     /** Whether the rest normals morph too (then skinners must read them from the geometry per frame). */

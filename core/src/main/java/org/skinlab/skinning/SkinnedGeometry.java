@@ -3,14 +3,9 @@ package org.skinlab.skinning;
 import java.util.Arrays;
 import java.util.List;
 
-import org.joml.Matrix3f;
-import org.joml.Matrix4f;
-import org.joml.Matrix4fc;
-import org.joml.Vector3f;
 import org.skinlab.model.Mesh;
 import org.skinlab.model.MeshInstance;
 import org.skinlab.model.Node;
-import org.skinlab.model.Skin;
 
 /**
  * The runtime form of one placed mesh, built once from a {@link MeshInstance}: flat arrays a
@@ -27,7 +22,7 @@ import org.skinlab.model.Skin;
  * the dominant one (the DQS antipodality pivot), padded with weight 0 on the dominant joint.
  * Weights are divided by their sum, as Blender's armature deform does, so files whose weights do
  * not add up to one still deform rigidly. A position without weight (or with weights summing to
- * zero) stays where the bind shape puts it.
+ * zero) stays where the bind shape puts it ({@code SkinRows}).
  *
  * <p><b>Joints.</b> {@link #jointCount()} palette entries: the skin's joints in skin order, plus,
  * when needed, one pseudo-joint for COLLADA's joint index -1 (the bind shape itself) and for
@@ -36,18 +31,22 @@ import org.skinlab.model.Skin;
  * {@code world(node) * bind}, applied to the points' positions, which already hold the bind shape
  * matrix (positions moved by it, normals by its inverse-transpose, once, when the geometry is
  * built). When every bind frame mirrors, that common mirror is moved into the points too (see
- * {@link #windingMirrored()}), so the skinning matrices stay rigid for DQS. A static mesh becomes a geometry with
- * one joint, its own node, and identity bind: the same code places it.
+ * {@link #windingMirrored()} and {@code BindSpace}), so the skinning matrices stay rigid for DQS.
+ * A static mesh becomes a geometry with one joint, its own node, and identity bind: the same code
+ * places it.
  *
  * <p><b>Shared positions.</b> A point's deformed position depends only on its POSITION entry, and
  * exporters split a position into several render vertices wherever normals or texture coordinates
  * differ (the thesis' cowboy has 740 positions in 4252 vertices). When points share positions,
  * {@link #sharedPositions()} is a second geometry whose points are the mesh's positions (in source
- * order, normals zero); a skinner may then deform those once into per-position frames
- * ({@link Skinner#skinDeformations}) and derive every point from the frame of its position
+ * order, normals zero); a skinner may then deform those once into per-position deformations
+ * ({@link Skinner#skinDeformations}) and derive every point from the deformation of its position
  * ({@link #deformationOfPointArray()}) and its own rest normal. Whether that pays depends on the method
  * and is decided where skinners are made ({@link Skinners}). Either way the points, their order
  * and the arrays below stay the same for callers.
+ *
+ * <p>{@code MeshGeometry} builds a geometry from a placed mesh; {@link #fromArrays} takes the
+ * arrays as they are.
  */
 public final class SkinnedGeometry {
     private final MeshInstance instance;
@@ -81,14 +80,12 @@ public final class SkinnedGeometry {
     /** For a geometry whose rest shape morphs per frame, the unmorphed one that owns its centres. */
     private volatile SkinnedGeometry centresOfRestShape;
 
-    private SkinnedGeometry(MeshInstance instance, int vertexCount, float[] positions, float[] normals,
-            int influences, int[] joints, float[] weights, int[] jointNodes, float[] bindMatrices,
-            int[] pointOfPosition, int[] jointParents) {
-        this(instance, vertexCount, positions, normals, influences, joints, weights, jointNodes, bindMatrices,
-                pointOfPosition, null, null, false, jointParents);
-    }
-
-    private SkinnedGeometry(MeshInstance instance, int vertexCount, float[] positions, float[] normals,
+    /**
+     * The arrays as they are, without copying or checking them beyond the palette's parents;
+     * {@code deformationOfPoint} and {@code sharedPositions} are both null or both set (see the
+     * class comment).
+     */
+    SkinnedGeometry(MeshInstance instance, int vertexCount, float[] positions, float[] normals,
             int influences, int[] joints, float[] weights, int[] jointNodes, float[] bindMatrices,
             int[] pointOfPosition, int[] deformationOfPoint, SkinnedGeometry sharedPositions, boolean windingMirrored,
             int[] jointParents) {
@@ -129,73 +126,7 @@ public final class SkinnedGeometry {
      * nearest ancestor node that is one.
      */
     public static SkinnedGeometry of(MeshInstance instance, List<Node> nodes) {
-        Mesh mesh = instance.mesh();
-        int vertices = mesh.vertexCount();
-        int[] pointOfPosition = new int[mesh.positionCount()];
-        Arrays.fill(pointOfPosition, -1);
-        for (int v = vertices - 1; v >= 0; v--) {
-            pointOfPosition[mesh.vertexPosition(v)] = v; // the first vertex of each position wins
-        }
-        int orphans = 0;
-        for (int p = 0; p < pointOfPosition.length; p++) {
-            if (pointOfPosition[p] < 0) {
-                pointOfPosition[p] = vertices + orphans++;
-            }
-        }
-        int points = vertices + orphans;
-        int[] positionOfPoint = new int[points];
-        for (int v = 0; v < vertices; v++) {
-            positionOfPoint[v] = mesh.vertexPosition(v);
-        }
-        for (int p = 0; p < pointOfPosition.length; p++) {
-            if (pointOfPosition[p] >= vertices) {
-                positionOfPoint[pointOfPosition[p]] = p;
-            }
-        }
-        float[] meshPositions = mesh.positions();
-        float[] positions = new float[3 * points];
-        for (int i = 0; i < points; i++) {
-            System.arraycopy(meshPositions, 3 * positionOfPoint[i], positions, 3 * i, 3);
-        }
-        float[] normals = new float[3 * points];
-        if (mesh.hasNormals()) {
-            System.arraycopy(mesh.normals(), 0, normals, 0, 3 * vertices);
-        }
-        Skin skin = instance.skin();
-        if (skin == null) {
-            int[] joints = new int[points];
-            float[] weights = new float[points];
-            Arrays.fill(weights, 1f);
-            return new SkinnedGeometry(instance, vertices, positions, normals, 1, joints, weights,
-                    new int[] {instance.node()}, new Matrix4f().get(new float[16]), pointOfPosition, new int[] {-1});
-        }
-        SkinnedGeometry byPoint = skinned(instance, skin, vertices, positions, normals, positionOfPoint,
-                pointOfPosition, nodes);
-        if (points == pointOfPosition.length) {
-            return byPoint; // one point per position: nothing to share
-        }
-        return byPoint.withSharedPositions(positionOfPoint);
-    }
-
-    /** This geometry with a position-level twin for kernels that skin each position once. */
-    private SkinnedGeometry withSharedPositions(int[] positionOfPoint) {
-        int positionCount = pointOfPosition.length;
-        int w = influences;
-        int[] rowJoints = new int[w * positionCount];
-        float[] rowWeights = new float[w * positionCount];
-        float[] sourcePositions = new float[3 * positionCount];
-        int[] identity = new int[positionCount];
-        for (int p = 0; p < positionCount; p++) {
-            System.arraycopy(positions, 3 * pointOfPosition[p], sourcePositions, 3 * p, 3);
-            // A position's influences are those of any point that carries it (they are per position).
-            System.arraycopy(joints, w * pointOfPosition[p], rowJoints, w * p, w);
-            System.arraycopy(weights, w * pointOfPosition[p], rowWeights, w * p, w);
-            identity[p] = p;
-        }
-        SkinnedGeometry shared = new SkinnedGeometry(instance, 0, sourcePositions, new float[3 * positionCount], w,
-                rowJoints, rowWeights, jointNodes, bindMatrices, identity, null, null, windingMirrored, jointParents);
-        return new SkinnedGeometry(instance, vertexCount, positions, normals, w, joints, weights, jointNodes,
-                bindMatrices, pointOfPosition, positionOfPoint, shared, windingMirrored, jointParents);
+        return MeshGeometry.build(instance, nodes);
     }
 
     /**
@@ -222,13 +153,32 @@ public final class SkinnedGeometry {
      */
     public static SkinnedGeometry fromArrays(float[] positions, float[] normals, int influences, int[] joints,
             float[] weights, float[] bindMatrices, int[] jointParents) {
+        checkArrays(positions, normals, influences, joints, weights, bindMatrices);
+        int jointCount = bindMatrices.length / 16;
+        checkHierarchy(jointParents, jointCount);
+        checkInfluences(joints, weights, jointCount);
+        int points = positions.length / 3;
+        int[] identity = new int[points];
+        for (int i = 0; i < points; i++) {
+            identity[i] = i;
+        }
+        int[] nodes = new int[jointCount];
+        Arrays.fill(nodes, -1);
+        return new SkinnedGeometry(null, points, positions, normals, influences, joints, weights, nodes,
+                bindMatrices, identity, null, null, false, jointParents.clone());
+    }
+
+    private static void checkArrays(float[] positions, float[] normals, int influences, int[] joints,
+            float[] weights, float[] bindMatrices) {
         int points = positions.length / 3;
         if (positions.length != 3 * points || normals.length != 3 * points || influences < 1
                 || joints.length != influences * points || weights.length != influences * points
                 || bindMatrices.length % 16 != 0) {
             throw new IllegalArgumentException("array sizes disagree");
         }
-        int jointCount = bindMatrices.length / 16;
+    }
+
+    private static void checkHierarchy(int[] jointParents, int jointCount) {
         if (jointParents.length != jointCount) {
             throw new IllegalArgumentException("need one parent per palette joint");
         }
@@ -239,6 +189,9 @@ public final class SkinnedGeometry {
                         + " must be -1 or an earlier joint");
             }
         }
+    }
+
+    private static void checkInfluences(int[] joints, float[] weights, int jointCount) {
         for (float w : weights) {
             if (!(w >= 0f) || Float.isInfinite(w)) {
                 throw new IllegalArgumentException("weight " + w + ": weights must be finite and not negative");
@@ -249,155 +202,6 @@ public final class SkinnedGeometry {
                 throw new IllegalArgumentException("joint " + j + " outside the palette of " + jointCount);
             }
         }
-        int[] identity = new int[points];
-        for (int i = 0; i < points; i++) {
-            identity[i] = i;
-        }
-        int[] nodes = new int[jointCount];
-        Arrays.fill(nodes, -1);
-        return new SkinnedGeometry(null, points, positions, normals, influences, joints, weights, nodes,
-                bindMatrices, identity, jointParents.clone());
-    }
-
-    private static SkinnedGeometry skinned(MeshInstance instance, Skin skin, int vertices, float[] positions,
-            float[] normals, int[] positionOfPoint, int[] pointOfPosition, List<Node> nodes) {
-        int points = positionOfPoint.length;
-        int skinJoints = skin.jointCount();
-        int bindShapeJoint = skinJoints; // the pseudo-joint's palette index, used only if needed
-        boolean needsBindShapeJoint = false;
-        int width = Math.max(1, skin.maxInfluences());
-        int[] joints = new int[width * points];
-        float[] weights = new float[width * points];
-        int[] order = new int[width];
-        for (int i = 0; i < points; i++) {
-            int p = positionOfPoint[i];
-            int start = skin.influenceStart(p);
-            int n = skin.influenceCount(p);
-            float sum = 0f;
-            for (int k = 0; k < n; k++) {
-                sum += weightOf(skin, start + k);
-                order[k] = start + k;
-            }
-            int o = width * i;
-            if (n == 0 || !(Math.abs(sum) > 1e-12f)) {
-                needsBindShapeJoint = true;
-                Arrays.fill(joints, o, o + width, bindShapeJoint);
-                weights[o] = 1f;
-                continue;
-            }
-            // Insertion sort by decreasing weight (n is small): the dominant influence goes first.
-            for (int a = 1; a < n; a++) {
-                int e = order[a];
-                int b = a - 1;
-                while (b >= 0 && weightOf(skin, order[b]) < weightOf(skin, e)) {
-                    order[b + 1] = order[b];
-                    b--;
-                }
-                order[b + 1] = e;
-            }
-            for (int k = 0; k < width; k++) {
-                if (k < n) {
-                    int j = skin.influenceJoint(order[k]);
-                    if (j < 0) {
-                        needsBindShapeJoint = true;
-                        j = bindShapeJoint;
-                    }
-                    joints[o + k] = j;
-                    weights[o + k] = weightOf(skin, order[k]) / sum;
-                } else {
-                    joints[o + k] = joints[o];
-                    weights[o + k] = 0f;
-                }
-            }
-        }
-        boolean mirrored = applyBindShape(skin.bindShapeMatrix(), positions, normals);
-        // Bind frames that all mirror (every INV_BIND with a negative determinant, e.g. a rig
-        // exported through a mirroring bind shape) make every skinning matrix a reflection, which
-        // DQS can only take through its scale phase. The common mirror F = diag(-1 1 1) moves
-        // into the points instead (p -> F p, n -> F n, INV_BIND -> INV_BIND F; F F = I, so LBS is
-        // unchanged): the skinning matrices become rigid again and DQS blends rigid motions.
-        boolean mirrorBindFrames = mirrorsBindFrames(skin);
-        Matrix4f m = new Matrix4f();
-        if (mirrorBindFrames) {
-            for (int i = 0; i < positions.length; i += 3) {
-                positions[i] = -positions[i];
-                normals[i] = -normals[i];
-            }
-            mirrored = !mirrored;
-        }
-        int paletteSize = skinJoints + (needsBindShapeJoint ? 1 : 0);
-        int[] jointNodes = new int[paletteSize];
-        float[] bind = new float[16 * paletteSize];
-        for (int j = 0; j < skinJoints; j++) {
-            jointNodes[j] = instance.jointNode(j);
-            skin.inverseBindMatrix(j, m);
-            if (mirrorBindFrames) {
-                m.scale(-1f, 1f, 1f);
-            }
-            m.get(bind, 16 * j);
-        }
-        if (needsBindShapeJoint) {
-            jointNodes[skinJoints] = -1;
-            // The points already hold the bind shape (and F, which this joint undoes).
-            m.identity().scale(mirrorBindFrames ? -1f : 1f, 1f, 1f).get(bind, 16 * skinJoints);
-        }
-        return new SkinnedGeometry(instance, vertices, positions, normals, width, joints, weights, jointNodes, bind,
-                pointOfPosition, null, null, mirrored, Bones.jointParents(jointNodes, nodes));
-    }
-
-    /** Whether every bind frame of the skin mirrors (then the common mirror moves into the points). */
-    static boolean mirrorsBindFrames(Skin skin) {
-        Matrix4f m = new Matrix4f();
-        boolean all = skin.jointCount() > 0;
-        for (int j = 0; j < skin.jointCount() && all; j++) {
-            all = skin.inverseBindMatrix(j, m).determinant3x3() < 0f;
-        }
-        return all;
-    }
-
-    /**
-     * Moves the points into bind space once: positions by the bind shape matrix, normals by its
-     * inverse-transpose (the cofactor times the sign of its determinant, renormalised). Every
-     * joint's skinning matrix would apply it first anyway ({@code world * INV_BIND * BSM}); doing it
-     * here keeps it out of the joints, so a bind shape that scales or mirrors (the stormtrooper's
-     * mirrors and scales by 1.662) does not make every joint a scaled one for DQS, and a joint's
-     * rest frame is {@code inverse(INV_BIND)}, as in Blender's armature deform
-     * (docs/references.md).
-     */
-    private static boolean applyBindShape(Matrix4fc bsm, float[] positions, float[] normals) {
-        if (new Matrix4f(bsm).equals(new Matrix4f())) {
-            return false;
-        }
-        Matrix3f cofactor = new Matrix3f();
-        bsm.get3x3(cofactor).cofactor();
-        if (bsm.determinant3x3() < 0f) {
-            cofactor.scale(-1f);
-        }
-        Vector3f v = new Vector3f();
-        for (int i = 0; i < positions.length; i += 3) {
-            bsm.transformPosition(v.set(positions[i], positions[i + 1], positions[i + 2]));
-            positions[i] = v.x;
-            positions[i + 1] = v.y;
-            positions[i + 2] = v.z;
-            cofactor.transform(v.set(normals[i], normals[i + 1], normals[i + 2]));
-            float len2 = v.lengthSquared();
-            if (len2 > 0f) {
-                v.mul((float) (1.0 / Math.sqrt(len2)));
-            }
-            normals[i] = v.x;
-            normals[i + 1] = v.y;
-            normals[i + 2] = v.z;
-        }
-        return bsm.determinant3x3() < 0f;
-    }
-
-    /**
-     * An influence's weight as the kernels use it: a negative weight (the importer clamps and
-     * warns; a skin built in code may still hold one) counts as 0, so a sum is never reduced or
-     * cancelled to zero by it, and no point is pulled away from the joints it names.
-     */
-    private static float weightOf(Skin skin, int influence) {
-        return Math.max(0f, skin.influenceWeight(influence));
     }
 
     /**
@@ -506,8 +310,8 @@ public final class SkinnedGeometry {
     }
 
     /**
-     * Per point, the point of {@link #sharedPositions()} whose frame it takes its position and
-     * normal matrix from; null when positions are not shared. Read-only.
+     * Per point, the point of {@link #sharedPositions()} whose deformation it takes its position
+     * and normal matrix from; null when positions are not shared. Read-only.
      */
     public int[] deformationOfPointArray() {
         return deformationOfPoint;

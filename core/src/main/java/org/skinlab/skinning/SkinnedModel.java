@@ -70,7 +70,7 @@ public final class SkinnedModel {
         for (int g = 0; g < n; g++) {
             SkinnedGeometry geometry = geometries.get(g);
             palettes[g] = geometry.newPalette();
-            // LBS and DQS now; CoR's skinner on first use (its centres take a precomputation).
+            // LBS's and DQS's skinners at once; CoR's on first use (its centres take a precomputation).
             for (SkinningMethod m : new SkinningMethod[] {SkinningMethod.LBS, SkinningMethod.DQS}) {
                 skinners[g][m.ordinal()] = newSkinner(g, m);
             }
