@@ -327,8 +327,7 @@ public final class ScalarSplineSkinner extends AbstractSkinner {
         final float[] d = scratch.get();
         for (int i = from; i < to; i++) {
             deform(palette, i, exactNormals, mirrors, d);
-            Deformations.put(outDeformations, DEFORMATION_FLOATS * i, false, false, d[3], d[4], d[5], d[6], d[7], d[8], d[9], d[10], d[11],
-                    d[0], d[1], d[2]);
+            Deformations.put(outDeformations, DEFORMATION_FLOATS * i, d, 0);
         }
     }
 }
