@@ -4,14 +4,17 @@ package org.skinlab.skinning;
  * Skinning with optimized centres of rotation (Le and Hodgins 2016, section 5) in plain Java, any
  * number of influences. Per point p with centre c ({@link SkinnedGeometry#centresOfRotation()}):
  * <ol>
- * <li>if any joint is scaled this frame, the scale phase of DQS first ({@link ScalarDqsSkinner}):
- *     {@code S = sum_k w_k S_(j_k)}, {@code p1 = S p}, {@code c1 = S c}, the normal by S's
- *     cofactor matrix (times the sign of det S) or by S itself; otherwise p1 = p, c1 = c;</li>
+ * <li>if any joint is scaled this frame, the scale phase of DQS first
+ *     ({@link SkinningSteps#scalePhase}): {@code S = sum_k w_k S_(j_k)}, {@code p1 = S p},
+ *     {@code c1 = S c}, the normal by S's cofactor matrix (times the sign of det S) or by S itself;
+ *     otherwise p1 = p, c1 = c;</li>
  * <li>the rotations' blend {@code q = sum_k s_k w_k r_(j_k)}, flipped onto the dominant
- *     influence's side as in DQS, normalised: R;</li>
+ *     influence's side and normalised, the real part of DQS's blend
+ *     ({@link SkinningSteps#blendDualQuaternions}): R;</li>
  * <li>the centre moved by LBS of the joints' rigid parts D (from the palette's dual quaternions;
- *     D = M for unscaled joints): {@code t = sum_k w_k D_(j_k) c1};</li>
- * <li>{@code p' = R (p1 - c1) + t}, the normal turned by R.</li>
+ *     D = M for unscaled joints, so the LBS blend of the matrices applies once):
+ *     {@code t = sum_k w_k D_(j_k) c1};</li>
+ * <li>{@code p' = R (p1 - c1) + t}, the normal matrix R K (K the scale phase's), or R without scale.</li>
  * </ol>
  * Without scale this is the paper's formula, {@code p' = R (p - c) + LBS(c)}: rigid parts move
  * rigidly (every influence the same D gives p' = D p), the rotation is blended as in DQS (no
@@ -26,14 +29,12 @@ public final class ScalarCorSkinner extends AbstractSkinner {
     private final int[] joints;
     private final float[] weights;
     private final int width;
-    /** The normal matrix of the scale phase without scale. */
-    private static final float[] IDENTITY = {1, 0, 0, 0, 1, 0, 0, 0, 1};
     /**
-     * Offsets in the per-thread scratch, after p' (0..2) and the normal matrix (3..11): p1, c1, K of
-     * step 1, the blended rotation (8 floats, of which the real part is used), R, the centre's
-     * translation t, and the blended matrix: the scale phase's S and its K, or LBS's blend.
+     * Offsets in the per-thread scratch, after p' (0..2) and the normal matrix (3..11): p1 and c1 of
+     * step 1 with scale, the blended rotation (8 floats, of which the real part is used), R with
+     * scale, the centre's translation t, and the blended matrix: the scale phase's S and its K, or LBS's blend.
      */
-    private static final int P1 = 12, C1 = 15, K = 18, ROTATION = 27, R = 35, T = 44, S = 47;
+    private static final int P1 = 12, C1 = 15, ROTATION = 18, R = 26, T = 35, S = 38;
     private final ThreadLocal<float[]> scratch = ThreadLocal.withInitial(
             () -> new float[S + SkinningSteps.SCALE_PHASE_FLOATS]);
 
@@ -54,50 +55,47 @@ public final class ScalarCorSkinner extends AbstractSkinner {
     private void deform(JointPalette palette, int i, boolean exactNormals, float[] d) {
         int o = width * i;
         int v = 3 * i;
-        scalePhase(palette, o, v, exactNormals, d);
-        SkinningSteps.blendDualQuaternions(palette.dualQuaternions(), joints, weights, o, width, d, ROTATION);
+        float[] dq = palette.dualQuaternions();
+        SkinningSteps.blendDualQuaternions(dq, joints, weights, o, width, d, ROTATION);
         if (palette.hasScale()) {
-            moveScaledCentre(palette.dualQuaternions(), o, d);
+            SkinningSteps.rotationMatrix(d[ROTATION], d[ROTATION + 1], d[ROTATION + 2], d[ROTATION + 3], d, R);
+            scalePhase(palette, o, v, exactNormals, d);
+            moveScaledCentre(dq, o, d);
+            turnAboutCentre(d, R, d, P1, d, C1, d);
+            SkinningSteps.multiply3x3(d, R, d, S + 12, d, 3);
         } else {
-            moveCentre(palette.matrices(), o, d);
+            // Without scale the normal matrix is R itself.
+            SkinningSteps.rotationMatrix(d[ROTATION], d[ROTATION + 1], d[ROTATION + 2], d[ROTATION + 3], d, 3);
+            moveCentre(palette.matrices(), o, v, d);
+            turnAboutCentre(d, 3, positions, v, centres, v, d);
         }
-        SkinningSteps.rotationMatrix(d[ROTATION], d[ROTATION + 1], d[ROTATION + 2], d[ROTATION + 3], d, R);
-        float ex = d[P1] - d[C1], ey = d[P1 + 1] - d[C1 + 1], ez = d[P1 + 2] - d[C1 + 2];
-        d[0] = d[R] * ex + d[R + 1] * ey + d[R + 2] * ez + d[T];
-        d[1] = d[R + 3] * ex + d[R + 4] * ey + d[R + 5] * ez + d[T + 1];
-        d[2] = d[R + 6] * ex + d[R + 7] * ey + d[R + 8] * ez + d[T + 2];
-        SkinningSteps.multiply3x3(d, R, d, K, d, 3);
     }
 
     /**
-     * Step 1: p1 and c1 into {@code d[P1]} and {@code d[C1]}, the normal matrix K of the scale phase
-     * into {@code d[K]} (the identity without scale).
+     * Step 4: {@code p' = R (p1 - c1) + t} into {@code d[0..3)}, R at {@code d[r]}, p1 at
+     * {@code p[pv]}, c1 at {@code c[cv]}, t at {@code d[T]}.
      */
-    private void scalePhase(JointPalette palette, int o, int v, boolean exactNormals, float[] d) {
-        if (!palette.hasScale()) {
-            System.arraycopy(positions, v, d, P1, 3);
-            System.arraycopy(centres, v, d, C1, 3);
-            System.arraycopy(IDENTITY, 0, d, K, 9);
-            return;
-        }
-        SkinningSteps.scalePhase(palette.scales(), joints, weights, o, width, exactNormals, palette.mirrorsScales(), d, S);
-        transformAffine(d, S, positions, v, d, P1);
-        transformAffine(d, S, centres, v, d, C1);
-        System.arraycopy(d, S + 12, d, K, 9);
+    private static void turnAboutCentre(float[] d, int r, float[] p, int pv, float[] c, int cv, float[] out) {
+        float ex = p[pv] - c[cv], ey = p[pv + 1] - c[cv + 1], ez = p[pv + 2] - c[cv + 2];
+        out[0] = d[r] * ex + d[r + 1] * ey + d[r + 2] * ez + d[T];
+        out[1] = d[r + 3] * ex + d[r + 4] * ey + d[r + 5] * ez + d[T + 1];
+        out[2] = d[r + 6] * ex + d[r + 7] * ey + d[r + 8] * ez + d[T + 2];
     }
 
-    /** {@code dest[dd..dd+3) = A x} for the 3x4 matrix A at {@code a[ao]} and the point x at {@code x[xo]}. */
-    private static void transformAffine(float[] a, int ao, float[] x, int xo, float[] dest, int dd) {
-        float px = x[xo], py = x[xo + 1], pz = x[xo + 2];
-        dest[dd] = a[ao] * px + a[ao + 1] * py + a[ao + 2] * pz + a[ao + 3];
-        dest[dd + 1] = a[ao + 4] * px + a[ao + 5] * py + a[ao + 6] * pz + a[ao + 7];
-        dest[dd + 2] = a[ao + 8] * px + a[ao + 9] * py + a[ao + 10] * pz + a[ao + 11];
+    /**
+     * Step 1 with scale: S and its normal matrix K into {@code d[S..S+21)}, p1 = S p and c1 = S c
+     * into {@code d[P1]} and {@code d[C1]}.
+     */
+    private void scalePhase(JointPalette palette, int o, int v, boolean exactNormals, float[] d) {
+        SkinningSteps.scalePhase(palette.scales(), joints, weights, o, width, exactNormals, palette.mirrorsScales(), d, S);
+        SkinningSteps.transformAffine(d, S, positions, v, d, P1);
+        SkinningSteps.transformAffine(d, S, centres, v, d, C1);
     }
 
     /** Step 3 without scale: D = M, so {@code t = (sum_k w_k M_(j_k)) c}, the blended matrix applied once. */
-    private void moveCentre(float[] matrices, int o, float[] d) {
+    private void moveCentre(float[] matrices, int o, int v, float[] d) {
         SkinningSteps.blendMatrices(matrices, joints, weights, o, width, d, S);
-        transformAffine(d, S, d, C1, d, T);
+        SkinningSteps.transformAffine(d, S, centres, v, d, T);
     }
 
     /**
@@ -109,7 +107,9 @@ public final class ScalarCorSkinner extends AbstractSkinner {
         float tx = 0, ty = 0, tz = 0;
         for (int k = 0; k < width; k++) {
             float w = weights[o + k];
-            SkinningSteps.transformPoint(dq, 8 * joints[o + k], cx, cy, cz, d, T);
+            int q = 8 * joints[o + k];
+            SkinningSteps.transformPoint(dq[q], dq[q + 1], dq[q + 2], dq[q + 3], dq[q + 4], dq[q + 5], dq[q + 6], dq[q + 7],
+                    cx, cy, cz, d, T);
             tx += w * d[T];
             ty += w * d[T + 1];
             tz += w * d[T + 2];

@@ -4,21 +4,18 @@ package org.skinlab.skinning;
  * Dual Quaternion Skinning in plain Java, any number of influences (Kavan et al. 2008, with the
  * two-phase scale split of {@link JointPalette}). Per point:
  * <ol>
- * <li>if any joint is scaled this frame, {@code S = sum_k w_k S_(j_k)}, {@code p1 = S p}, the
- *     normal by {@link NormalTransform} applied to S (under INVERSE_TRANSPOSE times the sign of
- *     det S, so that a mirroring scale keeps normals outward);</li>
- * <li>{@code b = sum_k s_k w_k q_(j_k)} with {@code s_k = sign(q_(j_0) . q_(j_k))} on the real
- *     parts, j_0 the dominant influence: antipodal quaternions (the same rotation) are flipped
- *     onto the pivot's hemisphere so the blend takes the short way (Kavan et al. 2008, section
- *     4). The sign comes from {@code Math.copySign}, not a branch: with joints in random order a
- *     branch mispredicts about half the time. Its argument is {@code dot + 0}, so a dot of -0
- *     (orthogonal rotations) counts as +0, as in a lane compare {@code dot < 0}: the SIMD kernels
- *     then pick the same sign in that tie;</li>
- * <li>normalise b by its real part and apply it: rotate p1 and the normal, translate p1; under
+ * <li>if any joint is scaled this frame, the scale phase ({@link SkinningSteps#scalePhase}):
+ *     {@code S = sum_k w_k S_(j_k)}, {@code p1 = S p}, the normal by {@link NormalTransform}
+ *     applied to S (under INVERSE_TRANSPOSE by its cofactor times the sign of det S, so that a
+ *     mirroring scale keeps normals outward, and scaled to unit length);</li>
+ * <li>the blend {@code b = sum_k s_k w_k q_(j_k)}, antipodal quaternions flipped onto the first
+ *     influence's hemisphere, normalised by its real part
+ *     ({@link SkinningSteps#blendDualQuaternions});</li>
+ * <li>b applied: p1 rotated and translated, the normal rotated
+ *     ({@link SkinningSteps#transformPoint}, {@link SkinningSteps#rotate}); under
  *     INVERSE_TRANSPOSE the normal is then scaled to unit length, as LBS's is.</li>
  * </ol>
- * Since every flipped term has a non-negative dot with the pivot, |b.real| >= w_0 > 0: the
- * normalisation never divides by zero.
+ * The SIMD kernels flip the same terms (a dot of -0 included) and are tested against this one.
  */
 public final class ScalarDqsSkinner extends AbstractSkinner {
     private final float[] positions;
@@ -28,9 +25,9 @@ public final class ScalarDqsSkinner extends AbstractSkinner {
     private final int width;
     /**
      * Per thread: the blended dual quaternion (0..7), the scale phase's S and K (8..28,
-     * {@link SkinningSteps#scalePhase}); in {@link #skin} the scaled point and normal (29..34); in
-     * {@link #skinDeformations} R (32..40) and the deformation, position (41..43) and normal matrix
-     * (44..52).
+     * {@link SkinningSteps#scalePhase}) and the scaled point (29..31); in {@link #skin} the scaled
+     * normal (32..34); in {@link #skinDeformations} R (32..40) and the deformation, position
+     * (41..43) and normal matrix (44..52).
      */
     private final ThreadLocal<float[]> blended = ThreadLocal.withInitial(() -> new float[53]);
 
@@ -67,8 +64,10 @@ public final class ScalarDqsSkinner extends AbstractSkinner {
                 pv = 29;
                 nv = 32;
             }
-            SkinningSteps.transformPoint(b, 0, p[pv], p[pv + 1], p[pv + 2], outPositions, v);
-            SkinningSteps.rotate(b, 0, n[nv], n[nv + 1], n[nv + 2], outNormals, v);
+            float rx = b[0], ry = b[1], rz = b[2], rw = b[3];
+            SkinningSteps.transformPoint(rx, ry, rz, rw, b[4], b[5], b[6], b[7], p[pv], p[pv + 1], p[pv + 2], outPositions,
+                    v);
+            SkinningSteps.rotate(rx, ry, rz, rw, n[nv], n[nv + 1], n[nv + 2], outNormals, v);
             if (exactNormals) {
                 // Unit length like every exact normal (the rest normals of a file need not be).
                 float mx = outNormals[v], my = outNormals[v + 1], mz = outNormals[v + 2];
@@ -87,10 +86,7 @@ public final class ScalarDqsSkinner extends AbstractSkinner {
      * length (K carries the sign of det S already).
      */
     private void scalePoint(float[] b, int v, boolean exactNormals) {
-        float px = positions[v], py = positions[v + 1], pz = positions[v + 2];
-        b[29] = b[8] * px + b[9] * py + b[10] * pz + b[11];
-        b[30] = b[12] * px + b[13] * py + b[14] * pz + b[15];
-        b[31] = b[16] * px + b[17] * py + b[18] * pz + b[19];
+        SkinningSteps.transformAffine(b, 8, positions, v, b, 29);
         float nx = restNormals[v], ny = restNormals[v + 1], nz = restNormals[v + 2];
         float mx = b[20] * nx + b[21] * ny + b[22] * nz;
         float my = b[23] * nx + b[24] * ny + b[25] * nz;
@@ -119,19 +115,20 @@ public final class ScalarDqsSkinner extends AbstractSkinner {
             int o = width * i;
             SkinningSteps.blendDualQuaternions(dq, joints, weights, o, width, b, 0);
             int v = 3 * i;
-            float px = positions[v], py = positions[v + 1], pz = positions[v + 2];
+            float[] p = positions;
+            int pv = v;
             if (scaled) {
                 SkinningSteps.scalePhase(sc, joints, weights, o, width, exactNormals, mirror, b, 8);
-                px = b[8] * positions[v] + b[9] * positions[v + 1] + b[10] * positions[v + 2] + b[11];
-                py = b[12] * positions[v] + b[13] * positions[v + 1] + b[14] * positions[v + 2] + b[15];
-                pz = b[16] * positions[v] + b[17] * positions[v + 1] + b[18] * positions[v + 2] + b[19];
+                SkinningSteps.transformAffine(b, 8, positions, v, b, 29);
+                p = b;
+                pv = 29;
                 // N = R K
                 SkinningSteps.rotationMatrix(b[0], b[1], b[2], b[3], b, 32);
                 SkinningSteps.multiply3x3(b, 32, b, 20, b, 44);
             } else {
                 SkinningSteps.rotationMatrix(b[0], b[1], b[2], b[3], b, 44);
             }
-            SkinningSteps.transformPoint(b, 0, px, py, pz, b, 41);
+            SkinningSteps.transformPoint(b[0], b[1], b[2], b[3], b[4], b[5], b[6], b[7], p[pv], p[pv + 1], p[pv + 2], b, 41);
             Deformations.put(outDeformations, DEFORMATION_FLOATS * i, b, 41);
         }
     }

@@ -40,25 +40,35 @@ public final class ScalarLbsSkinner extends AbstractSkinner {
             SkinningSteps.blendMatrices(mat, joints, weights, width * i, width, b, 0);
             int v = 3 * i;
             float px = positions[v], py = positions[v + 1], pz = positions[v + 2];
-            outPositions[v] = b[0] * px + b[1] * py + b[2] * pz + b[3];
-            outPositions[v + 1] = b[4] * px + b[5] * py + b[6] * pz + b[7];
-            outPositions[v + 2] = b[8] * px + b[9] * py + b[10] * pz + b[11];
+            float qx = b[0] * px + b[1] * py + b[2] * pz + b[3];
+            float qy = b[4] * px + b[5] * py + b[6] * pz + b[7];
+            float qz = b[8] * px + b[9] * py + b[10] * pz + b[11];
             float nx = restNormals[v], ny = restNormals[v + 1], nz = restNormals[v + 2];
+            float mx;
+            float my;
+            float mz;
             if (exactNormals) {
                 SkinningSteps.signedCofactor(b, 0, mirror, b, 12);
-                float rx = b[12] * nx + b[13] * ny + b[14] * nz;
-                float ry = b[15] * nx + b[16] * ny + b[17] * nz;
-                float rz = b[18] * nx + b[19] * ny + b[20] * nz;
-                float len2 = rx * rx + ry * ry + rz * rz;
+                mx = b[12] * nx + b[13] * ny + b[14] * nz;
+                my = b[15] * nx + b[16] * ny + b[17] * nz;
+                mz = b[18] * nx + b[19] * ny + b[20] * nz;
+                float len2 = mx * mx + my * my + mz * mz;
                 float inv = len2 > 0f ? (float) (1.0 / Math.sqrt(len2)) : 0f;
-                outNormals[v] = rx * inv;
-                outNormals[v + 1] = ry * inv;
-                outNormals[v + 2] = rz * inv;
+                mx *= inv;
+                my *= inv;
+                mz *= inv;
             } else {
-                outNormals[v] = b[0] * nx + b[1] * ny + b[2] * nz;
-                outNormals[v + 1] = b[4] * nx + b[5] * ny + b[6] * nz;
-                outNormals[v + 2] = b[8] * nx + b[9] * ny + b[10] * nz;
+                mx = b[0] * nx + b[1] * ny + b[2] * nz;
+                my = b[4] * nx + b[5] * ny + b[6] * nz;
+                mz = b[8] * nx + b[9] * ny + b[10] * nz;
             }
+            // Written last: a store to another float[] would keep the JIT from reading b from registers.
+            outPositions[v] = qx;
+            outPositions[v + 1] = qy;
+            outPositions[v + 2] = qz;
+            outNormals[v] = mx;
+            outNormals[v + 1] = my;
+            outNormals[v + 2] = mz;
         }
     }
 

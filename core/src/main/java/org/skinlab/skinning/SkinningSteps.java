@@ -8,8 +8,9 @@ package org.skinlab.skinning;
  *
  * <p>Allocation-free in JOML's style: arrays and offsets in, the result into the caller's
  * {@code dest} at an offset (a per-thread scratch array of the kernel). Matrices are row-major,
- * 3x4 (12 floats, the last column the translation) or 3x3 (9 floats). Plain Java; each step is a
- * small static method, so the JIT inlines it into the kernel's loop.
+ * 3x4 (12 floats, the last column the translation) or 3x3 (9 floats). Plain Java, static and
+ * stateless. A kernel reads a step's result from its scratch before it writes to another float
+ * array, so that the JIT can take the values from registers instead of memory.
  */
 final class SkinningSteps {
     /** Floats {@link #scalePhase} writes: the blended scale part S (3x4), then its normal matrix K (3x3). */
@@ -21,18 +22,15 @@ final class SkinningSteps {
     /**
      * The LBS blend {@code B = sum_k w_k M_(j_k)} over the {@code width} influences at {@code o}
      * (Kavan et al. 2008, eq. 1), 12 floats into {@code dest[d..d+12)}; {@code matrices} holds 12
-     * floats per joint. The sum starts from the first influence's term.
+     * floats per joint. The sums start from -0, the identity of IEEE addition, so the first term
+     * is kept exactly (also when it is -0).
      */
     static void blendMatrices(float[] matrices, int[] joints, float[] weights, int o, int width, float[] dest, int d) {
-        float w = weights[o];
-        int m = 12 * joints[o];
-        float b0 = w * matrices[m], b1 = w * matrices[m + 1], b2 = w * matrices[m + 2], b3 = w * matrices[m + 3];
-        float b4 = w * matrices[m + 4], b5 = w * matrices[m + 5], b6 = w * matrices[m + 6], b7 = w * matrices[m + 7];
-        float b8 = w * matrices[m + 8], b9 = w * matrices[m + 9], b10 = w * matrices[m + 10];
-        float b11 = w * matrices[m + 11];
-        for (int k = 1; k < width; k++) {
-            w = weights[o + k];
-            m = 12 * joints[o + k];
+        float b0 = -0f, b1 = -0f, b2 = -0f, b3 = -0f, b4 = -0f, b5 = -0f;
+        float b6 = -0f, b7 = -0f, b8 = -0f, b9 = -0f, b10 = -0f, b11 = -0f;
+        for (int k = 0; k < width; k++) {
+            float w = weights[o + k];
+            int m = 12 * joints[o + k];
             b0 += w * matrices[m];
             b1 += w * matrices[m + 1];
             b2 += w * matrices[m + 2];
@@ -46,18 +44,9 @@ final class SkinningSteps {
             b10 += w * matrices[m + 10];
             b11 += w * matrices[m + 11];
         }
-        dest[d] = b0;
-        dest[d + 1] = b1;
-        dest[d + 2] = b2;
-        dest[d + 3] = b3;
-        dest[d + 4] = b4;
-        dest[d + 5] = b5;
-        dest[d + 6] = b6;
-        dest[d + 7] = b7;
-        dest[d + 8] = b8;
-        dest[d + 9] = b9;
-        dest[d + 10] = b10;
-        dest[d + 11] = b11;
+        put4(dest, d, 1f, b0, b1, b2, b3);
+        put4(dest, d + 4, 1f, b4, b5, b6, b7);
+        put4(dest, d + 8, 1f, b8, b9, b10, b11);
     }
 
     /**
@@ -89,15 +78,26 @@ final class SkinningSteps {
             d2 += w * dq[q + 6];
             d3 += w * dq[q + 7];
         }
-        float inv = (float) (1.0 / Math.sqrt(r0 * r0 + r1 * r1 + r2 * r2 + r3 * r3));
-        dest[d] = r0 * inv;
-        dest[d + 1] = r1 * inv;
-        dest[d + 2] = r2 * inv;
-        dest[d + 3] = r3 * inv;
-        dest[d + 4] = d0 * inv;
-        dest[d + 5] = d1 * inv;
-        dest[d + 6] = d2 * inv;
-        dest[d + 7] = d3 * inv;
+        float inv = inverseLength(r0, r1, r2, r3);
+        put4(dest, d, inv, r0, r1, r2, r3);
+        put4(dest, d + 4, inv, d0, d1, d2, d3);
+    }
+
+    /** {@code 1 / |(x, y, z, w)|}, the square root and the division in double. */
+    private static float inverseLength(float x, float y, float z, float w) {
+        return (float) (1.0 / Math.sqrt(x * x + y * y + z * z + w * w));
+    }
+
+    /**
+     * {@code s (a, b, c, e)} into {@code dest[d..d+4)}: the blends' stores, in a method of its own so
+     * that {@link #blendMatrices} stays within the bytecode size C2 inlines into a hot loop (325
+     * bytes, {@code -XX:FreqInlineSize}); times 1 is exact.
+     */
+    private static void put4(float[] dest, int d, float s, float a, float b, float c, float e) {
+        dest[d] = s * a;
+        dest[d + 1] = s * b;
+        dest[d + 2] = s * c;
+        dest[d + 3] = s * e;
     }
 
     /**
@@ -175,35 +175,45 @@ final class SkinningSteps {
     }
 
     /**
-     * The point (x, y, z) moved by the unit dual quaternion at {@code q[qo]} (real r, dual d), into
-     * {@code dest[d..d+3)}: {@code v' = v + 2 r x (r x v + r_w v) + t}, with the translation
-     * {@code t = 2 (r_w d - d_w r + r x d)} (Kavan et al. 2008, section 3).
+     * {@code A x} for the 3x4 matrix A at {@code a[ao]} and the point x at {@code x[xo]}, into
+     * {@code dest[d..d+3)}.
      */
-    static void transformPoint(float[] q, int qo, float x, float y, float z, float[] dest, int d) {
-        float rx = q[qo], ry = q[qo + 1], rz = q[qo + 2], rw = q[qo + 3];
-        float dx = q[qo + 4], dy = q[qo + 5], dz = q[qo + 6], dw = q[qo + 7];
+    static void transformAffine(float[] a, int ao, float[] x, int xo, float[] dest, int d) {
+        float px = x[xo], py = x[xo + 1], pz = x[xo + 2];
+        dest[d] = a[ao] * px + a[ao + 1] * py + a[ao + 2] * pz + a[ao + 3];
+        dest[d + 1] = a[ao + 4] * px + a[ao + 5] * py + a[ao + 6] * pz + a[ao + 7];
+        dest[d + 2] = a[ao + 8] * px + a[ao + 9] * py + a[ao + 10] * pz + a[ao + 11];
+    }
+
+    /**
+     * The point (x, y, z) moved by the unit dual quaternion (real r, dual d) into
+     * {@code dest[o..o+3)}: {@code v' = v + 2 r x (r x v + r_w v) + t}, with the translation
+     * {@code t = 2 (r_w d - d_w r + r x d)} (Kavan et al. 2008, section 3). The quaternion comes as
+     * values, so a kernel reads it from its scratch once for the point and the normal.
+     */
+    static void transformPoint(float rx, float ry, float rz, float rw, float dx, float dy, float dz, float dw, float x,
+            float y, float z, float[] dest, int o) {
         float tx = 2 * (rw * dx - dw * rx + (ry * dz - rz * dy));
         float ty = 2 * (rw * dy - dw * ry + (rz * dx - rx * dz));
         float tz = 2 * (rw * dz - dw * rz + (rx * dy - ry * dx));
         float cx = ry * z - rz * y + rw * x;
         float cy = rz * x - rx * z + rw * y;
         float cz = rx * y - ry * x + rw * z;
-        dest[d] = x + 2 * (ry * cz - rz * cy) + tx;
-        dest[d + 1] = y + 2 * (rz * cx - rx * cz) + ty;
-        dest[d + 2] = z + 2 * (rx * cy - ry * cx) + tz;
+        dest[o] = x + 2 * (ry * cz - rz * cy) + tx;
+        dest[o + 1] = y + 2 * (rz * cx - rx * cz) + ty;
+        dest[o + 2] = z + 2 * (rx * cy - ry * cx) + tz;
     }
 
     /**
-     * The vector (x, y, z) turned by the unit quaternion at {@code q[qo]}, into
-     * {@code dest[d..d+3)}: {@code v' = v + 2 r x (r x v + r_w v)}.
+     * The vector (x, y, z) turned by the unit quaternion r into {@code dest[o..o+3)}:
+     * {@code v' = v + 2 r x (r x v + r_w v)}.
      */
-    static void rotate(float[] q, int qo, float x, float y, float z, float[] dest, int d) {
-        float rx = q[qo], ry = q[qo + 1], rz = q[qo + 2], rw = q[qo + 3];
+    static void rotate(float rx, float ry, float rz, float rw, float x, float y, float z, float[] dest, int o) {
         float cx = ry * z - rz * y + rw * x;
         float cy = rz * x - rx * z + rw * y;
         float cz = rx * y - ry * x + rw * z;
-        dest[d] = x + 2 * (ry * cz - rz * cy);
-        dest[d + 1] = y + 2 * (rz * cx - rx * cz);
-        dest[d + 2] = z + 2 * (rx * cy - ry * cx);
+        dest[o] = x + 2 * (ry * cz - rz * cy);
+        dest[o + 1] = y + 2 * (rz * cx - rx * cz);
+        dest[o + 2] = z + 2 * (rx * cy - ry * cx);
     }
 }
