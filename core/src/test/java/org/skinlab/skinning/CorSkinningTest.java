@@ -150,7 +150,7 @@ class CorSkinningTest {
 
     @Test
     void theTwistKeepsTheJointRingAndTheVolume() throws Exception {
-        // Issue 11's goal: at about 170 degrees of twist the joint ring keeps 95% of its radius.
+        // The goal: at about 170 degrees of twist the joint ring keeps 95% of its radius.
         Posed p = new Posed("cylinders/cylinder-twist-high.dae", 4f);
         Vector3f lower = p.world("Armature_lower");
         Vector3f joint = p.world("Armature_upper");
@@ -211,7 +211,7 @@ class CorSkinningTest {
                     ArtifactMetrics.relativeVolume(p.g, p.skin(SkinningMethod.LBS)));
             assertTrue(corBulge < dqsBulge, "CoR bulges " + corBulge + ", DQS " + dqsBulge);
             // Measured: 0.997 at 90 degrees, 0.975 at 170 (DQS keeps 0.999 there by bulging out,
-            // LBS 0.915). Issue 11 asks for 2% at both: met at 90, missed by half a percent at 170
+            // LBS 0.915). The goal is 2% at both: met at 90, missed by half a percent at 170
             // (docs/skinning.md); this bound says how far.
             assertEquals(1.0, volume, time < 3f ? 0.02 : 0.03, "CoR volume at " + time + " s");
         }
