@@ -87,7 +87,8 @@ public final class ScalarCorSkinner extends AbstractSkinner {
      * into {@code d[P1]} and {@code d[C1]}.
      */
     private void scalePhase(JointPalette palette, int o, int v, boolean exactNormals, float[] d) {
-        SkinningSteps.scalePhase(palette.scales(), joints, weights, o, width, exactNormals, palette.mirrorsScales(), d, S);
+        SkinningSteps.scalePhase(palette.scales(), joints, weights, o, width, exactNormals, palette.mirrorsScales(), d,
+                S);
         SkinningSteps.transformAffine(d, S, positions, v, d, P1);
         SkinningSteps.transformAffine(d, S, centres, v, d, C1);
     }
@@ -108,8 +109,8 @@ public final class ScalarCorSkinner extends AbstractSkinner {
         for (int k = 0; k < width; k++) {
             float w = weights[o + k];
             int q = 8 * joints[o + k];
-            SkinningSteps.transformPoint(dq[q], dq[q + 1], dq[q + 2], dq[q + 3], dq[q + 4], dq[q + 5], dq[q + 6], dq[q + 7],
-                    cx, cy, cz, d, T);
+            SkinningSteps.transformPoint(dq[q], dq[q + 1], dq[q + 2], dq[q + 3], dq[q + 4], dq[q + 5], dq[q + 6],
+                    dq[q + 7], cx, cy, cz, d, T);
             tx += w * d[T];
             ty += w * d[T + 1];
             tz += w * d[T + 2];

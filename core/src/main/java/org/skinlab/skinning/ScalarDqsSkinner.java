@@ -65,8 +65,8 @@ public final class ScalarDqsSkinner extends AbstractSkinner {
                 nv = 32;
             }
             float rx = b[0], ry = b[1], rz = b[2], rw = b[3];
-            SkinningSteps.transformPoint(rx, ry, rz, rw, b[4], b[5], b[6], b[7], p[pv], p[pv + 1], p[pv + 2], outPositions,
-                    v);
+            SkinningSteps.transformPoint(rx, ry, rz, rw, b[4], b[5], b[6], b[7], p[pv], p[pv + 1], p[pv + 2],
+                    outPositions, v);
             SkinningSteps.rotate(rx, ry, rz, rw, n[nv], n[nv + 1], n[nv + 2], outNormals, v);
             if (exactNormals) {
                 // Unit length like every exact normal (the rest normals of a file need not be).
@@ -128,7 +128,8 @@ public final class ScalarDqsSkinner extends AbstractSkinner {
             } else {
                 SkinningSteps.rotationMatrix(b[0], b[1], b[2], b[3], b, 44);
             }
-            SkinningSteps.transformPoint(b[0], b[1], b[2], b[3], b[4], b[5], b[6], b[7], p[pv], p[pv + 1], p[pv + 2], b, 41);
+            SkinningSteps.transformPoint(b[0], b[1], b[2], b[3], b[4], b[5], b[6], b[7], p[pv], p[pv + 1], p[pv + 2],
+                    b, 41);
             Deformations.put(outDeformations, DEFORMATION_FLOATS * i, b, 41);
         }
     }

@@ -2,11 +2,15 @@ package org.skinlab.skinning;
 
 /**
  * Linear Blend Skinning in plain Java, any number of influences: per point
- * {@code M = sum_k w_k M_(j_k)} ({@link SkinningSteps#blendMatrices}), {@code p' = M p}, and the
- * normal by {@link NormalTransform}: under INVERSE_TRANSPOSE by M's cofactor (det times the
- * inverse-transpose; with a mirroring palette times the sign of det, so the normal stays outward)
- * and scaled to unit length, else by M's linear part.
+ * {@code M = sum_k w_k M_(j_k)}, {@code p' = M p}, and the normal by {@link NormalTransform}.
  * The portable kernel (Android) and the reference the SIMD kernels are tested against.
+ *
+ * <p>The one kernel that keeps its blend and cofactor written out instead of calling
+ * {@link SkinningSteps#blendMatrices} and {@link SkinningSteps#signedCofactor} (the same formulas
+ * in the same order, so the same bits): LBS does so little per point that passing the 12 blended
+ * floats and the 9 of the cofactor through a scratch array, as the other kernels do, made a
+ * frame measurably slower, where in registers they cost nothing; Java has no other way to return
+ * several values from a method.
  */
 public final class ScalarLbsSkinner extends AbstractSkinner {
     private final float[] positions;
@@ -14,12 +18,6 @@ public final class ScalarLbsSkinner extends AbstractSkinner {
     private final int[] joints;
     private final float[] weights;
     private final int width;
-    /**
-     * Per thread: in {@link #skin} the blend B (0..11) and its normal matrix (12..20); in
-     * {@link #skinDeformations} the point's deformation, position (0..2) and normal matrix (3..11),
-     * and B (12..23).
-     */
-    private final ThreadLocal<float[]> scratch = ThreadLocal.withInitial(() -> new float[24]);
 
     public ScalarLbsSkinner(SkinnedGeometry geometry, NormalTransform normals) {
         super(SkinningMethod.LBS, "scalar", geometry, normals);
@@ -35,40 +33,56 @@ public final class ScalarLbsSkinner extends AbstractSkinner {
         final float[] mat = palette.matrices();
         final boolean exactNormals = normals == NormalTransform.INVERSE_TRANSPOSE;
         final boolean mirror = exactNormals && palette.mirrorsMatrices();
-        final float[] b = scratch.get();
         for (int i = from; i < to; i++) {
-            SkinningSteps.blendMatrices(mat, joints, weights, width * i, width, b, 0);
+            int o = width * i;
+            float w = weights[o];
+            int m = 12 * joints[o];
+            float b0 = w * mat[m], b1 = w * mat[m + 1], b2 = w * mat[m + 2], b3 = w * mat[m + 3];
+            float b4 = w * mat[m + 4], b5 = w * mat[m + 5], b6 = w * mat[m + 6], b7 = w * mat[m + 7];
+            float b8 = w * mat[m + 8], b9 = w * mat[m + 9], b10 = w * mat[m + 10], b11 = w * mat[m + 11];
+            for (int k = 1; k < width; k++) {
+                w = weights[o + k];
+                m = 12 * joints[o + k];
+                b0 += w * mat[m];
+                b1 += w * mat[m + 1];
+                b2 += w * mat[m + 2];
+                b3 += w * mat[m + 3];
+                b4 += w * mat[m + 4];
+                b5 += w * mat[m + 5];
+                b6 += w * mat[m + 6];
+                b7 += w * mat[m + 7];
+                b8 += w * mat[m + 8];
+                b9 += w * mat[m + 9];
+                b10 += w * mat[m + 10];
+                b11 += w * mat[m + 11];
+            }
             int v = 3 * i;
             float px = positions[v], py = positions[v + 1], pz = positions[v + 2];
-            float qx = b[0] * px + b[1] * py + b[2] * pz + b[3];
-            float qy = b[4] * px + b[5] * py + b[6] * pz + b[7];
-            float qz = b[8] * px + b[9] * py + b[10] * pz + b[11];
+            outPositions[v] = b0 * px + b1 * py + b2 * pz + b3;
+            outPositions[v + 1] = b4 * px + b5 * py + b6 * pz + b7;
+            outPositions[v + 2] = b8 * px + b9 * py + b10 * pz + b11;
             float nx = restNormals[v], ny = restNormals[v + 1], nz = restNormals[v + 2];
-            float mx;
-            float my;
-            float mz;
             if (exactNormals) {
-                SkinningSteps.signedCofactor(b, 0, mirror, b, 12);
-                mx = b[12] * nx + b[13] * ny + b[14] * nz;
-                my = b[15] * nx + b[16] * ny + b[17] * nz;
-                mz = b[18] * nx + b[19] * ny + b[20] * nz;
-                float len2 = mx * mx + my * my + mz * mz;
-                float inv = len2 > 0f ? (float) (1.0 / Math.sqrt(len2)) : 0f;
-                mx *= inv;
-                my *= inv;
-                mz *= inv;
+                // Columns c0 = (b0 b4 b8), c1 = (b1 b5 b9), c2 = (b2 b6 b10); the inverse-transpose
+                // times det has columns c1 x c2, c2 x c0, c0 x c1.
+                float k00 = b5 * b10 - b9 * b6, k01 = b6 * b8 - b10 * b4, k02 = b4 * b9 - b8 * b5;
+                float rx = k00 * nx + k01 * ny + k02 * nz;
+                float ry = (b9 * b2 - b1 * b10) * nx + (b10 * b0 - b2 * b8) * ny + (b8 * b1 - b0 * b9) * nz;
+                float rz = (b1 * b6 - b5 * b2) * nx + (b2 * b4 - b6 * b0) * ny + (b0 * b5 - b4 * b1) * nz;
+                float len2 = rx * rx + ry * ry + rz * rz;
+                // The cofactor is det times the inverse-transpose: under a mirroring blend (det < 0)
+                // it would turn the normal inwards, so with a mirroring palette the sign of det goes
+                // into the scale.
+                float det = mirror ? b0 * k00 + b1 * k01 + b2 * k02 : 1f;
+                float inv = len2 > 0f ? Math.copySign((float) (1.0 / Math.sqrt(len2)), det) : 0f;
+                outNormals[v] = rx * inv;
+                outNormals[v + 1] = ry * inv;
+                outNormals[v + 2] = rz * inv;
             } else {
-                mx = b[0] * nx + b[1] * ny + b[2] * nz;
-                my = b[4] * nx + b[5] * ny + b[6] * nz;
-                mz = b[8] * nx + b[9] * ny + b[10] * nz;
+                outNormals[v] = b0 * nx + b1 * ny + b2 * nz;
+                outNormals[v + 1] = b4 * nx + b5 * ny + b6 * nz;
+                outNormals[v + 2] = b8 * nx + b9 * ny + b10 * nz;
             }
-            // Written last: a store to another float[] would keep the JIT from reading b from registers.
-            outPositions[v] = qx;
-            outPositions[v + 1] = qy;
-            outPositions[v + 2] = qz;
-            outNormals[v] = mx;
-            outNormals[v + 1] = my;
-            outNormals[v + 2] = mz;
         }
     }
 
@@ -77,20 +91,34 @@ public final class ScalarLbsSkinner extends AbstractSkinner {
         final float[] mat = palette.matrices();
         final boolean exactNormals = normals == NormalTransform.INVERSE_TRANSPOSE;
         final boolean mirror = exactNormals && palette.mirrorsMatrices();
-        final float[] b = scratch.get();
         for (int i = from; i < to; i++) {
-            SkinningSteps.blendMatrices(mat, joints, weights, width * i, width, b, 12);
+            int o = width * i;
+            float w = weights[o];
+            int m = 12 * joints[o];
+            float b0 = w * mat[m], b1 = w * mat[m + 1], b2 = w * mat[m + 2], b3 = w * mat[m + 3];
+            float b4 = w * mat[m + 4], b5 = w * mat[m + 5], b6 = w * mat[m + 6], b7 = w * mat[m + 7];
+            float b8 = w * mat[m + 8], b9 = w * mat[m + 9], b10 = w * mat[m + 10], b11 = w * mat[m + 11];
+            for (int k = 1; k < width; k++) {
+                w = weights[o + k];
+                m = 12 * joints[o + k];
+                b0 += w * mat[m];
+                b1 += w * mat[m + 1];
+                b2 += w * mat[m + 2];
+                b3 += w * mat[m + 3];
+                b4 += w * mat[m + 4];
+                b5 += w * mat[m + 5];
+                b6 += w * mat[m + 6];
+                b7 += w * mat[m + 7];
+                b8 += w * mat[m + 8];
+                b9 += w * mat[m + 9];
+                b10 += w * mat[m + 10];
+                b11 += w * mat[m + 11];
+            }
             int v = 3 * i;
             float px = positions[v], py = positions[v + 1], pz = positions[v + 2];
-            b[0] = b[12] * px + b[13] * py + b[14] * pz + b[15];
-            b[1] = b[16] * px + b[17] * py + b[18] * pz + b[19];
-            b[2] = b[20] * px + b[21] * py + b[22] * pz + b[23];
-            if (exactNormals) {
-                SkinningSteps.signedCofactor(b, 12, mirror, b, 3);
-            } else {
-                SkinningSteps.linearPart(b, 12, b, 3);
-            }
-            Deformations.put(outDeformations, DEFORMATION_FLOATS * i, b, 0);
+            Deformations.putCofactor(outDeformations, DEFORMATION_FLOATS * i, exactNormals, mirror, b0, b1, b2, b4, b5,
+                    b6, b8, b9, b10, b0 * px + b1 * py + b2 * pz + b3, b4 * px + b5 * py + b6 * pz + b7,
+                    b8 * px + b9 * py + b10 * pz + b11);
         }
     }
 }
