@@ -178,6 +178,35 @@ public final class CentresOfRotation {
     /** One point's centre into {@code out}. */
     private static void centre(SkinnedGeometry g, int p, SimilarityTriangles t, double inverseSigmaSquared,
             Scratch scratch, float[] out) {
+        int support = gatherWeights(g, p, scratch);
+        double[] sums = scratch.sums;
+        Arrays.fill(sums, 0);
+        int found = support >= 2 ? t.candidates(scratch.pointJoints, support, scratch.hits, scratch.candidates) : 0;
+        for (int c = 0; c < found; c++) {
+            int tri = scratch.candidates[c];
+            int m = sharedJoints(t, tri, scratch);
+            integrate(t, tri, m, inverseSigmaSquared, scratch);
+        }
+        float[] rest = g.positionArray();
+        if (sums[3] > 0) {
+            out[3 * p] = (float) (sums[0] / sums[3]);
+            out[3 * p + 1] = (float) (sums[1] / sums[3]);
+            out[3 * p + 2] = (float) (sums[2] / sums[3]);
+        } else {
+            out[3 * p] = rest[3 * p];
+            out[3 * p + 1] = rest[3 * p + 1];
+            out[3 * p + 2] = rest[3 * p + 2];
+        }
+        for (int a = 0; a < support; a++) {
+            scratch.weightOfJoint[scratch.pointJoints[a]] = 0;
+        }
+    }
+
+    /**
+     * Point p's weight per joint into {@code scratch.weightOfJoint} (summed over repeated joints) and
+     * its joints into {@code scratch.pointJoints}; returns how many joints it has.
+     */
+    private static int gatherWeights(SkinnedGeometry g, int p, Scratch scratch) {
         int k = g.influencesPerPoint();
         int[] joints = g.jointArray();
         float[] weights = g.weightArray();
@@ -193,48 +222,43 @@ public final class CentresOfRotation {
                 weightOfJoint[j] += w;
             }
         }
-        double[] sums = scratch.sums;
-        Arrays.fill(sums, 0);
-        int found = support >= 2 ? t.candidates(scratch.pointJoints, support, scratch.hits, scratch.candidates) : 0;
+        return support;
+    }
+
+    /**
+     * The joints both the point and triangle {@code tri} weight, into {@code scratch.shared}: per
+     * joint w_p and the corners' weights (4 doubles); returns how many.
+     */
+    private static int sharedJoints(SimilarityTriangles t, int tri, Scratch scratch) {
         double[] shared = scratch.shared;
-        for (int c = 0; c < found; c++) {
-            int tri = scratch.candidates[c];
-            // The joints both the point and the triangle weight: w_p and the corners' weights.
-            int m = 0;
-            for (int e = t.start[tri]; e < t.start[tri + 1]; e++) {
-                float wp = weightOfJoint[t.joints[e]];
-                if (wp > 0) {
-                    shared[4 * m] = wp;
-                    shared[4 * m + 1] = t.cornerWeights[3 * e];
-                    shared[4 * m + 2] = t.cornerWeights[3 * e + 1];
-                    shared[4 * m + 3] = t.cornerWeights[3 * e + 2];
-                    m++;
-                }
-            }
-            // The n x n grid's sub-triangles by their centroids, at (u, v) n along the edges ab and
-            // ac: upward ones at (i + 1/3, j + 1/3), downward ones at (i + 2/3, j + 2/3).
-            int n = t.segments[tri];
-            for (int i = 0; i < n; i++) {
-                for (int j = 0; j < n - i; j++) {
-                    add(t, tri, (i + 1.0 / 3) / n, (j + 1.0 / 3) / n, shared, m, inverseSigmaSquared, scratch);
-                    if (i + j < n - 1) {
-                        add(t, tri, (i + 2.0 / 3) / n, (j + 2.0 / 3) / n, shared, m, inverseSigmaSquared, scratch);
-                    }
-                }
+        int m = 0;
+        for (int e = t.start[tri]; e < t.start[tri + 1]; e++) {
+            float wp = scratch.weightOfJoint[t.joints[e]];
+            if (wp > 0) {
+                shared[4 * m] = wp;
+                shared[4 * m + 1] = t.cornerWeights[3 * e];
+                shared[4 * m + 2] = t.cornerWeights[3 * e + 1];
+                shared[4 * m + 3] = t.cornerWeights[3 * e + 2];
+                m++;
             }
         }
-        float[] rest = g.positionArray();
-        if (sums[3] > 0) {
-            out[3 * p] = (float) (sums[0] / sums[3]);
-            out[3 * p + 1] = (float) (sums[1] / sums[3]);
-            out[3 * p + 2] = (float) (sums[2] / sums[3]);
-        } else {
-            out[3 * p] = rest[3 * p];
-            out[3 * p + 1] = rest[3 * p + 1];
-            out[3 * p + 2] = rest[3 * p + 2];
-        }
-        for (int a = 0; a < support; a++) {
-            weightOfJoint[scratch.pointJoints[a]] = 0;
+        return m;
+    }
+
+    /**
+     * Adds triangle {@code tri}'s n x n grid of sub-triangles by their centroids, at (u, v) n along
+     * the edges ab and ac: upward ones at (i + 1/3, j + 1/3), downward ones at (i + 2/3, j + 2/3).
+     */
+    private static void integrate(SimilarityTriangles t, int tri, int m, double inverseSigmaSquared, Scratch scratch) {
+        double[] shared = scratch.shared;
+        int n = t.segments[tri];
+        for (int i = 0; i < n; i++) {
+            for (int j = 0; j < n - i; j++) {
+                add(t, tri, (i + 1.0 / 3) / n, (j + 1.0 / 3) / n, shared, m, inverseSigmaSquared, scratch);
+                if (i + j < n - 1) {
+                    add(t, tri, (i + 2.0 / 3) / n, (j + 2.0 / 3) / n, shared, m, inverseSigmaSquared, scratch);
+                }
+            }
         }
     }
 

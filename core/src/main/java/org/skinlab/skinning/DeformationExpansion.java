@@ -1,23 +1,24 @@
 package org.skinlab.skinning;
 
 /**
- * The second half of skinning each position once: derives a geometry's points from the frames of
- * the positions they carry ({@link Skinner#skinDeformations}). Per point {@code i} with frame
- * {@code f = deformationOfPoint[i]}: the position is the frame's, the normal is {@code N_f n_i} for the
- * point's own rest normal, renormalised when asked (zero stays zero). An expansion is bound to one
- * geometry's mapping and rest normals (so it may keep them in whatever layout suits it) and holds
- * no per-call state: disjoint ranges may run on different threads at once. Core's implementation
- * is {@link #scalar}; a {@link SkinnerProvider} may offer a faster one.
+ * The second half of skinning each position once: derives a geometry's points from the
+ * deformations of the positions they carry ({@link Skinner#skinDeformations}). Per point {@code i}
+ * with deformation {@code f = deformationOfPoint[i]}: the position is the deformation's, the normal
+ * is {@code N_f n_i} for the point's own rest normal, renormalised when asked (zero stays zero).
+ * An expansion is bound to one geometry's mapping and rest normals (so it may keep them in
+ * whatever layout suits it) and holds no per-call state: disjoint ranges may run on different
+ * threads at once. Core's implementation is {@link #scalar}; a {@link SkinnerProvider} may offer a
+ * faster one.
  */
 public interface DeformationExpansion {
     /**
      * Writes 3 floats per point {@code [from, to)} into {@code outPositions} and {@code outNormals}
      * at {@code 3 * point}.
      *
-     * @param frames    {@link Skinner#DEFORMATION_FLOATS} floats per frame
-     * @param normalise scale each normal to unit length (the exact normal rule)
+     * @param deformations {@link Skinner#DEFORMATION_FLOATS} floats per deformation
+     * @param normalise    scale each normal to unit length (the exact normal rule)
      */
-    void expand(float[] frames, float[] outPositions, float[] outNormals, int from, int to, boolean normalise);
+    void expand(float[] deformations, float[] outPositions, float[] outNormals, int from, int to, boolean normalise);
 
     /** A short name for reports. */
     String implementation();
@@ -25,21 +26,21 @@ public interface DeformationExpansion {
     /**
      * The plain-Java expansion (Android, and the reference for faster ones).
      *
-     * @param deformationOfPoint the frame of each point (read, not copied)
-     * @param restNormals  3 floats per point (read, not copied)
+     * @param deformationOfPoint the deformation of each point (read, not copied)
+     * @param restNormals        3 floats per point (read, not copied)
      */
     static DeformationExpansion scalar(int[] deformationOfPoint, float[] restNormals) {
         return new DeformationExpansion() {
             @Override
-            public void expand(float[] frames, float[] outPositions, float[] outNormals, int from, int to,
+            public void expand(float[] deformations, float[] outPositions, float[] outNormals, int from, int to,
                     boolean normalise) {
                 for (int i = from; i < to; i++) {
                     int f = Skinner.DEFORMATION_FLOATS * deformationOfPoint[i];
                     int v = 3 * i;
                     float nx = restNormals[v], ny = restNormals[v + 1], nz = restNormals[v + 2];
-                    float x = frames[f] * nx + frames[f + 4] * ny + frames[f + 12] * nz;
-                    float y = frames[f + 1] * nx + frames[f + 5] * ny + frames[f + 13] * nz;
-                    float z = frames[f + 2] * nx + frames[f + 6] * ny + frames[f + 14] * nz;
+                    float x = deformations[f] * nx + deformations[f + 4] * ny + deformations[f + 12] * nz;
+                    float y = deformations[f + 1] * nx + deformations[f + 5] * ny + deformations[f + 13] * nz;
+                    float z = deformations[f + 2] * nx + deformations[f + 6] * ny + deformations[f + 14] * nz;
                     if (normalise) {
                         float len2 = x * x + y * y + z * z;
                         float inv = len2 > 0f ? (float) (1.0 / Math.sqrt(len2)) : 0f;
@@ -50,9 +51,9 @@ public interface DeformationExpansion {
                     outNormals[v] = x;
                     outNormals[v + 1] = y;
                     outNormals[v + 2] = z;
-                    outPositions[v] = frames[f + 8];
-                    outPositions[v + 1] = frames[f + 9];
-                    outPositions[v + 2] = frames[f + 10];
+                    outPositions[v] = deformations[f + 8];
+                    outPositions[v + 1] = deformations[f + 9];
+                    outPositions[v + 2] = deformations[f + 10];
                 }
             }
 

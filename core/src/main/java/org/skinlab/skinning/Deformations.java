@@ -1,62 +1,48 @@
 package org.skinlab.skinning;
 
 /**
- * The per-point frame record of {@link Skinner#skinDeformations} (16 floats: two columns of the normal
- * matrix N, the deformed position, N's last column, each padded to four) and the blends the scalar
- * kernels share. Plain Java.
+ * The per-point records the scalar kernels write: the deformation of {@link Skinner#skinDeformations}
+ * (16 floats: two columns of the normal matrix N, the deformed position, N's last column, each
+ * padded to four) and the point of {@link Skinner#skin}. Both start from what every kernel computes
+ * per point, its deformed position {@code d[0..3)} and normal matrix {@code d[3..12)}. Plain Java.
  */
 final class Deformations {
     private Deformations() {
     }
 
     /**
-     * {@code b = sum_k w_k M_(j_k)} over the {@code width} influences at {@code o}: 12 floats,
-     * row-major 3x4, into {@code b}. {@code matrices} holds 12 floats per joint.
+     * Writes the deformation at {@code f[o]} from a point's deformed position {@code d[e..e+3)} and
+     * normal matrix {@code d[e+3..e+12)} (row-major), as the kernels compute them.
      */
-    static void blendMatrices(float[] matrices, int[] joints, float[] weights, int o, int width, float[] b, int bo) {
-        float w = weights[o];
-        int m = 12 * joints[o];
-        for (int c = 0; c < 12; c++) {
-            b[bo + c] = w * matrices[m + c];
-        }
-        for (int k = 1; k < width; k++) {
-            w = weights[o + k];
-            m = 12 * joints[o + k];
-            for (int c = 0; c < 12; c++) {
-                b[bo + c] += w * matrices[m + c];
-            }
-        }
+    static void put(float[] f, int o, float[] d, int e) {
+        f[o] = d[e + 3];
+        f[o + 1] = d[e + 6];
+        f[o + 2] = d[e + 9];
+        f[o + 3] = 0f;
+        f[o + 4] = d[e + 4];
+        f[o + 5] = d[e + 7];
+        f[o + 6] = d[e + 10];
+        f[o + 7] = 0f;
+        f[o + 8] = d[e];
+        f[o + 9] = d[e + 1];
+        f[o + 10] = d[e + 2];
+        f[o + 11] = 0f;
+        f[o + 12] = d[e + 5];
+        f[o + 13] = d[e + 8];
+        f[o + 14] = d[e + 11];
+        f[o + 15] = 0f;
     }
 
     /**
-     * The normal matrix of the row-major 3x4 matrix at {@code a[ao]}: its cofactor matrix, times the
-     * sign of its determinant when {@code signed}, row-major 3x3 into {@code out[oo..oo+9)}.
+     * Writes the deformation at {@code f[o]}: position {@code (px, py, pz)} and the normal matrix of
+     * the row-major linear part {@code a}: with {@code cofactor}, its cofactor matrix, times the sign
+     * of its determinant when {@code signed} (the palette mirrors: see
+     * {@link JointPalette#mirrorsMatrices()}), otherwise {@code a} itself. For
+     * {@link ScalarLbsSkinner}, which keeps its blend in registers (its class comment says why):
+     * {@link SkinningSteps#signedCofactor}'s formula on values.
      */
-    static void signedCofactor(float[] a, int ao, boolean signed, float[] out, int oo) {
-        float a00 = a[ao], a01 = a[ao + 1], a02 = a[ao + 2];
-        float a10 = a[ao + 4], a11 = a[ao + 5], a12 = a[ao + 6];
-        float a20 = a[ao + 8], a21 = a[ao + 9], a22 = a[ao + 10];
-        float c00 = a11 * a22 - a21 * a12, c01 = a12 * a20 - a22 * a10, c02 = a10 * a21 - a20 * a11;
-        float s = signed ? Math.copySign(1f, a00 * c00 + a01 * c01 + a02 * c02) : 1f;
-        out[oo] = s * c00;
-        out[oo + 1] = s * c01;
-        out[oo + 2] = s * c02;
-        out[oo + 3] = s * (a21 * a02 - a01 * a22);
-        out[oo + 4] = s * (a22 * a00 - a02 * a20);
-        out[oo + 5] = s * (a20 * a01 - a00 * a21);
-        out[oo + 6] = s * (a01 * a12 - a11 * a02);
-        out[oo + 7] = s * (a02 * a10 - a12 * a00);
-        out[oo + 8] = s * (a00 * a11 - a10 * a01);
-    }
-
-    /**
-     * Writes the frame at {@code o}: position {@code (px, py, pz)} and the normal matrix of the
-     * row-major linear part {@code a}: with {@code cofactor}, its cofactor matrix, times the sign of
-     * its determinant when {@code signed} (the palette mirrors: see
-     * {@link JointPalette#mirrorsMatrices()}), otherwise {@code a} itself.
-     */
-    static void put(float[] f, int o, boolean cofactor, boolean signed, float a00, float a01, float a02, float a10, float a11,
-            float a12, float a20, float a21, float a22, float px, float py, float pz) {
+    static void putCofactor(float[] f, int o, boolean cofactor, boolean signed, float a00, float a01, float a02,
+            float a10, float a11, float a12, float a20, float a21, float a22, float px, float py, float pz) {
         if (cofactor) {
             float c00 = a11 * a22 - a21 * a12, c01 = a12 * a20 - a22 * a10, c02 = a10 * a21 - a20 * a11;
             float c10 = a21 * a02 - a01 * a22, c11 = a22 * a00 - a02 * a20, c12 = a20 * a01 - a00 * a21;
@@ -92,8 +78,8 @@ final class Deformations {
 
     /**
      * Writes point i from its deformed position {@code d[0..3)} and normal matrix {@code d[3..12)}
-     * (row-major, applied to the rest normal), as the kernels that compute a per-point frame do in
-     * {@link Skinner#skin}: the normal renormalised when {@code renormalise} (exact normals).
+     * (row-major, applied to the rest normal): the normal renormalised when {@code renormalise}
+     * (exact normals).
      */
     static void putPoint(float[] d, float[] restNormals, int i, boolean renormalise, float[] outPositions,
             float[] outNormals) {

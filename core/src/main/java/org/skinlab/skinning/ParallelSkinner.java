@@ -58,7 +58,7 @@ public final class ParallelSkinner implements Skinner, AutoCloseable {
     private float[] outNormals;
     private float[] outDeformations;
     /** Whether the frame being run is a {@link #skinDeformations} call. */
-    private boolean frames;
+    private boolean deformationsCall;
     private int from;
     private int to;
     private int chunkSize;
@@ -130,11 +130,11 @@ public final class ParallelSkinner implements Skinner, AutoCloseable {
     }
 
     @Override
-    public void skinDeformations(JointPalette p, float[] frames, int start, int end) {
-        run(p, null, null, frames, true, start, end);
+    public void skinDeformations(JointPalette p, float[] deformations, int start, int end) {
+        run(p, null, null, deformations, true, start, end);
     }
 
-    private void run(JointPalette p, float[] positions, float[] normals, float[] outputFrames, boolean framesCall,
+    private void run(JointPalette p, float[] positions, float[] normals, float[] deformations, boolean isDeformations,
             int start, int end) {
         if (closed) {
             throw new IllegalStateException("ParallelSkinner is closed");
@@ -142,7 +142,7 @@ public final class ParallelSkinner implements Skinner, AutoCloseable {
         int n = end - start;
         int chunks = Math.min(threads() * CHUNKS_PER_THREAD, n / MIN_CHUNK);
         if (workers.length == 0 || chunks < 2) {
-            runKernel(p, positions, normals, outputFrames, framesCall, start, end);
+            runKernel(p, positions, normals, deformations, isDeformations, start, end);
             return;
         }
         int size = (n + chunks - 1) / chunks;
@@ -150,8 +150,8 @@ public final class ParallelSkinner implements Skinner, AutoCloseable {
         palette = p;
         outPositions = positions;
         outNormals = normals;
-        outDeformations = outputFrames;
-        frames = framesCall;
+        outDeformations = deformations;
+        deformationsCall = isDeformations;
         from = start;
         to = end;
         chunkSize = size;
@@ -216,7 +216,8 @@ public final class ParallelSkinner implements Skinner, AutoCloseable {
             }
             int chunk = (int) c;
             try {
-                runKernel(palette, outPositions, outNormals, outDeformations, frames, bound(chunk), bound(chunk + 1));
+                runKernel(palette, outPositions, outNormals, outDeformations, deformationsCall, bound(chunk),
+                        bound(chunk + 1));
             } catch (RuntimeException | Error e) {
                 failure.compareAndSet(null, e);
             }
@@ -228,10 +229,10 @@ public final class ParallelSkinner implements Skinner, AutoCloseable {
         }
     }
 
-    private void runKernel(JointPalette p, float[] positions, float[] normals, float[] outputFrames,
-            boolean framesCall, int start, int end) {
-        if (framesCall) {
-            kernel.skinDeformations(p, outputFrames, start, end);
+    private void runKernel(JointPalette p, float[] positions, float[] normals, float[] deformations,
+            boolean isDeformations, int start, int end) {
+        if (isDeformations) {
+            kernel.skinDeformations(p, deformations, start, end);
         } else {
             kernel.skin(p, positions, normals, start, end);
         }

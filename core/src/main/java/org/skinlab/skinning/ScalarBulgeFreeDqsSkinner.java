@@ -54,7 +54,7 @@ public final class ScalarBulgeFreeDqsSkinner extends AbstractSkinner {
     @Override
     public void skinDeformations(JointPalette palette, float[] outDeformations, int from, int to) {
         dqs.skinDeformations(palette, outDeformations, from, to);
-        // The frame's position sits at floats 8..10 (Skinner.skinDeformations).
+        // A deformation's position sits at floats 8..10 (Skinner.skinDeformations).
         pull(palette, outDeformations, DEFORMATION_FLOATS, 8, from, to);
     }
 

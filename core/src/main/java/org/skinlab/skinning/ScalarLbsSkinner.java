@@ -4,6 +4,13 @@ package org.skinlab.skinning;
  * Linear Blend Skinning in plain Java, any number of influences: per point
  * {@code M = sum_k w_k M_(j_k)}, {@code p' = M p}, and the normal by {@link NormalTransform}.
  * The portable kernel (Android) and the reference the SIMD kernels are tested against.
+ *
+ * <p>The one kernel that keeps its blend and cofactor written out instead of calling
+ * {@link SkinningSteps#blendMatrices} and {@link SkinningSteps#signedCofactor} (the same formulas
+ * in the same order, so the same bits): LBS does so little per point that passing the 12 blended
+ * floats and the 9 of the cofactor through a scratch array, as the other kernels do, made a
+ * frame measurably slower, where in registers they cost nothing; Java has no other way to return
+ * several values from a method.
  */
 public final class ScalarLbsSkinner extends AbstractSkinner {
     private final float[] positions;
@@ -109,8 +116,8 @@ public final class ScalarLbsSkinner extends AbstractSkinner {
             }
             int v = 3 * i;
             float px = positions[v], py = positions[v + 1], pz = positions[v + 2];
-            Deformations.put(outDeformations, Skinner.DEFORMATION_FLOATS * i, exactNormals, mirror, b0, b1, b2, b4, b5, b6, b8, b9, b10,
-                    b0 * px + b1 * py + b2 * pz + b3, b4 * px + b5 * py + b6 * pz + b7,
+            Deformations.putCofactor(outDeformations, DEFORMATION_FLOATS * i, exactNormals, mirror, b0, b1, b2, b4, b5,
+                    b6, b8, b9, b10, b0 * px + b1 * py + b2 * pz + b3, b4 * px + b5 * py + b6 * pz + b7,
                     b8 * px + b9 * py + b10 * pz + b11);
         }
     }

@@ -31,8 +31,13 @@ public final class ScalarSplineSkinner extends AbstractSkinner {
     private final int width;
     private final int[] curves;
     private final float[] parameters;
-    /** Per thread: p' (0..2), the normal matrix row-major (3..11), one influence's F (12..20). */
-    private final ThreadLocal<float[]> scratch = ThreadLocal.withInitial(() -> new float[21]);
+    /**
+     * Offsets in the per-thread scratch, after p' (0..2), the normal matrix row-major (3..11) and
+     * one influence's F (12..20): that influence's normal matrix (3x3), and S(x) as a 3x4 for its
+     * cofactor (the translation column unused).
+     */
+    private static final int NORMAL_MATRIX = 21, SCALE = 30;
+    private final ThreadLocal<float[]> scratch = ThreadLocal.withInitial(() -> new float[SCALE + 12]);
 
     public ScalarSplineSkinner(SkinnedGeometry geometry, NormalTransform normals) {
         this(geometry, normals, SplineBinding.of(geometry));
@@ -104,24 +109,24 @@ public final class ScalarSplineSkinner extends AbstractSkinner {
 
     private static final int PARAMETER_OFFSET = SplineBinding.PARAMETER_FLOATS;
 
-    /** Adds w M_j p and w N_j (M_j's linear part, or its cofactor under exact normals). */
+    /**
+     * Adds w M_j p and w N_j: M_j's linear part, or under exact normals its
+     * {@linkplain SkinningSteps#signedCofactor cofactor} (signed when the palette mirrors), built in
+     * {@code out[NORMAL_MATRIX..)}.
+     */
     private static void addRigid(float[] m, int o, float w, float px, float py, float pz, boolean exactNormals,
             boolean mirrors, float[] out) {
         out[0] += w * (m[o] * px + m[o + 1] * py + m[o + 2] * pz + m[o + 3]);
         out[1] += w * (m[o + 4] * px + m[o + 5] * py + m[o + 6] * pz + m[o + 7]);
         out[2] += w * (m[o + 8] * px + m[o + 9] * py + m[o + 10] * pz + m[o + 11]);
-        float a0 = m[o], a1 = m[o + 1], a2 = m[o + 2];
-        float a3 = m[o + 4], a4 = m[o + 5], a5 = m[o + 6];
-        float a6 = m[o + 8], a7 = m[o + 9], a8 = m[o + 10];
-        if (!exactNormals) {
-            addScaled(out, w, a0, a1, a2, a3, a4, a5, a6, a7, a8);
-            return;
+        if (exactNormals) {
+            SkinningSteps.signedCofactor(m, o, mirrors, out, NORMAL_MATRIX);
+        } else {
+            SkinningSteps.linearPart(m, o, out, NORMAL_MATRIX);
         }
-        float k0 = a4 * a8 - a7 * a5, k1 = a5 * a6 - a8 * a3, k2 = a3 * a7 - a6 * a4;
-        float k3 = a7 * a2 - a1 * a8, k4 = a8 * a0 - a2 * a6, k5 = a6 * a1 - a0 * a7;
-        float k6 = a1 * a5 - a4 * a2, k7 = a2 * a3 - a5 * a0, k8 = a0 * a4 - a3 * a1;
-        float sw = mirrors && a0 * k0 + a1 * k1 + a2 * k2 < 0f ? -w : w;
-        addScaled(out, sw, k0, k1, k2, k3, k4, k5, k6, k7, k8);
+        for (int c = 0; c < 9; c++) {
+            out[3 + c] += w * out[NORMAL_MATRIX + c];
+        }
     }
 
     private static void addScaled(float[] out, float w, float n0, float n1, float n2, float n3, float n4, float n5,
@@ -190,35 +195,30 @@ public final class ScalarSplineSkinner extends AbstractSkinner {
     private static void addScaledCurve(float[] sc, int p, int c, float x, float w, float fx, float fy, float fz,
             float lx, float ly, float lz, boolean exactNormals, float[] out) {
         float y = 1f - x;
-        float s0 = y * sc[p] + x * sc[c], s1 = y * sc[p + 1] + x * sc[c + 1], s2 = y * sc[p + 2] + x * sc[c + 2];
-        float s3 = y * sc[p + 4] + x * sc[c + 4], s4 = y * sc[p + 5] + x * sc[c + 5], s5 = y * sc[p + 6] + x * sc[c + 6];
-        float s6 = y * sc[p + 8] + x * sc[c + 8], s7 = y * sc[p + 9] + x * sc[c + 9];
-        float s8 = y * sc[p + 10] + x * sc[c + 10];
-        float mx = s0 * lx + s1 * ly + s2 * lz, my = s3 * lx + s4 * ly + s5 * lz, mz = s6 * lx + s7 * ly + s8 * lz;
+        for (int r = 0; r < 3; r++) {
+            for (int col = 0; col < 3; col++) {
+                out[SCALE + 4 * r + col] = y * sc[p + 4 * r + col] + x * sc[c + 4 * r + col];
+            }
+        }
+        int s = SCALE;
+        float mx = out[s] * lx + out[s + 1] * ly + out[s + 2] * lz;
+        float my = out[s + 4] * lx + out[s + 5] * ly + out[s + 6] * lz;
+        float mz = out[s + 8] * lx + out[s + 9] * ly + out[s + 10] * lz;
         out[0] += w * (fx + out[12] * mx + out[13] * my + out[14] * mz);
         out[1] += w * (fy + out[15] * mx + out[16] * my + out[17] * mz);
         out[2] += w * (fz + out[18] * mx + out[19] * my + out[20] * mz);
-        float k0 = s0, k1 = s1, k2 = s2, k3 = s3, k4 = s4, k5 = s5, k6 = s6, k7 = s7, k8 = s8;
+        int k = NORMAL_MATRIX;
         if (exactNormals) {
-            k0 = s4 * s8 - s7 * s5;
-            k1 = s5 * s6 - s8 * s3;
-            k2 = s3 * s7 - s6 * s4;
-            k3 = s7 * s2 - s1 * s8;
-            k4 = s8 * s0 - s2 * s6;
-            k5 = s6 * s1 - s0 * s7;
-            k6 = s1 * s5 - s4 * s2;
-            k7 = s2 * s3 - s5 * s0;
-            k8 = s0 * s4 - s3 * s1;
-            if (s0 * k0 + s1 * k1 + s2 * k2 < 0f) {
-                w = -w;
-            }
+            SkinningSteps.signedCofactor(out, s, true, out, k);
+        } else {
+            SkinningSteps.linearPart(out, s, out, k);
         }
         // N = F K, row by row.
         for (int r = 0; r < 3; r++) {
             float a0 = out[12 + 3 * r], a1 = out[13 + 3 * r], a2 = out[14 + 3 * r];
-            out[3 + 3 * r] += w * (a0 * k0 + a1 * k3 + a2 * k6);
-            out[4 + 3 * r] += w * (a0 * k1 + a1 * k4 + a2 * k7);
-            out[5 + 3 * r] += w * (a0 * k2 + a1 * k5 + a2 * k8);
+            out[3 + 3 * r] += w * (a0 * out[k] + a1 * out[k + 3] + a2 * out[k + 6]);
+            out[4 + 3 * r] += w * (a0 * out[k + 1] + a1 * out[k + 4] + a2 * out[k + 7]);
+            out[5 + 3 * r] += w * (a0 * out[k + 2] + a1 * out[k + 5] + a2 * out[k + 8]);
         }
     }
 
@@ -281,15 +281,7 @@ public final class ScalarSplineSkinner extends AbstractSkinner {
             qz = fz;
             qw = fw;
         }
-        dest[12] = 1 - 2 * (qy * qy + qz * qz);
-        dest[13] = 2 * (qx * qy - qz * qw);
-        dest[14] = 2 * (qx * qz + qy * qw);
-        dest[15] = 2 * (qx * qy + qz * qw);
-        dest[16] = 1 - 2 * (qx * qx + qz * qz);
-        dest[17] = 2 * (qy * qz - qx * qw);
-        dest[18] = 2 * (qx * qz - qy * qw);
-        dest[19] = 2 * (qy * qz + qx * qw);
-        dest[20] = 1 - 2 * (qx * qx + qy * qy);
+        SkinningSteps.rotationMatrix(qx, qy, qz, qw, dest, 12);
     }
 
     /**
@@ -327,8 +319,7 @@ public final class ScalarSplineSkinner extends AbstractSkinner {
         final float[] d = scratch.get();
         for (int i = from; i < to; i++) {
             deform(palette, i, exactNormals, mirrors, d);
-            Deformations.put(outDeformations, DEFORMATION_FLOATS * i, false, false, d[3], d[4], d[5], d[6], d[7], d[8], d[9], d[10], d[11],
-                    d[0], d[1], d[2]);
+            Deformations.put(outDeformations, DEFORMATION_FLOATS * i, d, 0);
         }
     }
 }

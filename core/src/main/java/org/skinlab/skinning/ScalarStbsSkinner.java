@@ -25,8 +25,13 @@ public final class ScalarStbsSkinner extends AbstractSkinner {
     private final float[] weights;
     private final int width;
     private final boolean dualQuaternionBlend;
-    /** Per thread: p' (0..2), the normal matrix row-major (3..11), one influence (12..18). */
-    private final ThreadLocal<float[]> scratch = ThreadLocal.withInitial(() -> new float[12 + StbsInfluence.FLOATS]);
+    /**
+     * Offsets in the per-thread scratch, after p' (0..2) and the normal matrix row-major (3..11):
+     * one influence ({@link StbsInfluence}), its rotation matrix, and the blended 3x4 B of STBS_LBS
+     * (its translation column unused).
+     */
+    private static final int T = 12, R = T + StbsInfluence.FLOATS, B = R + 9;
+    private final ThreadLocal<float[]> scratch = ThreadLocal.withInitial(() -> new float[B + 12]);
 
     /** @param method {@link SkinningMethod#STBS_LBS} or {@link SkinningMethod#STBS_DQS} */
     public ScalarStbsSkinner(SkinningMethod method, SkinnedGeometry geometry, NormalTransform normals) {
@@ -51,10 +56,10 @@ public final class ScalarStbsSkinner extends AbstractSkinner {
         }
     }
 
+    /** STBS_LBS: {@code p' = B p}, {@code B = sum_k w_k [R(r_k) | x_k]}, the normal by B's cofactor or B. */
     private void deformLinear(JointPalette palette, int i, boolean exactNormals, float[] out) {
         final float[] rows = palette.boneRows();
         final float[] dq = palette.dualQuaternions();
-        final int t = 12;
         int o = width * i;
         int v = 3 * i;
         float px = positions[v], py = positions[v + 1], pz = positions[v + 2];
@@ -64,52 +69,51 @@ public final class ScalarStbsSkinner extends AbstractSkinner {
             if (w == 0f && k > 0) {
                 continue; // a padded influence: its transformation (a sin, a cos) is not needed
             }
-            StbsInfluence.transform(rows, dq, joints[o + k], px, py, pz, out, t);
-            float x = out[t], y = out[t + 1], z = out[t + 2], s = out[t + 3];
-            b0 += w * (1 - 2 * (y * y + z * z));
-            b1 += w * (2 * (x * y - z * s));
-            b2 += w * (2 * (x * z + y * s));
-            b3 += w * out[t + 4];
-            b4 += w * (2 * (x * y + z * s));
-            b5 += w * (1 - 2 * (x * x + z * z));
-            b6 += w * (2 * (y * z - x * s));
-            b7 += w * out[t + 5];
-            b8 += w * (2 * (x * z - y * s));
-            b9 += w * (2 * (y * z + x * s));
-            b10 += w * (1 - 2 * (x * x + y * y));
-            b11 += w * out[t + 6];
+            StbsInfluence.transform(rows, dq, joints[o + k], px, py, pz, out, T);
+            SkinningSteps.rotationMatrix(out[T], out[T + 1], out[T + 2], out[T + 3], out, R);
+            b0 += w * out[R];
+            b1 += w * out[R + 1];
+            b2 += w * out[R + 2];
+            b3 += w * out[T + 4];
+            b4 += w * out[R + 3];
+            b5 += w * out[R + 4];
+            b6 += w * out[R + 5];
+            b7 += w * out[T + 5];
+            b8 += w * out[R + 6];
+            b9 += w * out[R + 7];
+            b10 += w * out[R + 8];
+            b11 += w * out[T + 6];
         }
         out[0] = b0 * px + b1 * py + b2 * pz + b3;
         out[1] = b4 * px + b5 * py + b6 * pz + b7;
         out[2] = b8 * px + b9 * py + b10 * pz + b11;
+        out[B] = b0;
+        out[B + 1] = b1;
+        out[B + 2] = b2;
+        out[B + 4] = b4;
+        out[B + 5] = b5;
+        out[B + 6] = b6;
+        out[B + 8] = b8;
+        out[B + 9] = b9;
+        out[B + 10] = b10;
         if (exactNormals) {
-            // The cofactor: a blend of rotations has a positive determinant unless it degenerates.
-            out[3] = b5 * b10 - b9 * b6;
-            out[4] = b6 * b8 - b10 * b4;
-            out[5] = b4 * b9 - b8 * b5;
-            out[6] = b9 * b2 - b1 * b10;
-            out[7] = b10 * b0 - b2 * b8;
-            out[8] = b8 * b1 - b0 * b9;
-            out[9] = b1 * b6 - b5 * b2;
-            out[10] = b2 * b4 - b6 * b0;
-            out[11] = b0 * b5 - b4 * b1;
+            // Unsigned: a blend of rotations has a positive determinant unless it degenerates.
+            SkinningSteps.signedCofactor(out, B, false, out, 3);
         } else {
-            out[3] = b0;
-            out[4] = b1;
-            out[5] = b2;
-            out[6] = b4;
-            out[7] = b5;
-            out[8] = b6;
-            out[9] = b8;
-            out[10] = b9;
-            out[11] = b10;
+            SkinningSteps.linearPart(out, B, out, 3);
         }
     }
 
+    /**
+     * STBS_DQS: each influence as the unit dual quaternion {@code (r_k, x_k r_k / 2)}, blended with
+     * antipodality signs against the first influence's r and normalised (the signed blend of
+     * {@link SkinningSteps#blendDualQuaternions}, over transformations made per point); then
+     * {@code p' = R p + t}, the normal matrix R.
+     */
     private void deformDualQuaternions(JointPalette palette, int i, float[] out) {
         final float[] rows = palette.boneRows();
         final float[] dq = palette.dualQuaternions();
-        final int t = 12;
+        final int t = T;
         int o = width * i;
         int v = 3 * i;
         float px = positions[v], py = positions[v + 1], pz = positions[v + 2];
@@ -147,21 +151,10 @@ public final class ScalarStbsSkinner extends AbstractSkinner {
         float tx = 2 * (rw * dx - dw * rx + (ry * dz - rz * dy));
         float ty = 2 * (rw * dy - dw * ry + (rz * dx - rx * dz));
         float tz = 2 * (rw * dz - dw * rz + (rx * dy - ry * dx));
-        float m0 = 1 - 2 * (ry * ry + rz * rz), m1 = 2 * (rx * ry - rz * rw), m2 = 2 * (rx * rz + ry * rw);
-        float m3 = 2 * (rx * ry + rz * rw), m4 = 1 - 2 * (rx * rx + rz * rz), m5 = 2 * (ry * rz - rx * rw);
-        float m6 = 2 * (rx * rz - ry * rw), m7 = 2 * (ry * rz + rx * rw), m8 = 1 - 2 * (rx * rx + ry * ry);
-        out[0] = m0 * px + m1 * py + m2 * pz + tx;
-        out[1] = m3 * px + m4 * py + m5 * pz + ty;
-        out[2] = m6 * px + m7 * py + m8 * pz + tz;
-        out[3] = m0;
-        out[4] = m1;
-        out[5] = m2;
-        out[6] = m3;
-        out[7] = m4;
-        out[8] = m5;
-        out[9] = m6;
-        out[10] = m7;
-        out[11] = m8;
+        SkinningSteps.rotationMatrix(rx, ry, rz, rw, out, 3);
+        out[0] = out[3] * px + out[4] * py + out[5] * pz + tx;
+        out[1] = out[6] * px + out[7] * py + out[8] * pz + ty;
+        out[2] = out[9] * px + out[10] * py + out[11] * pz + tz;
     }
 
     @Override
@@ -180,8 +173,7 @@ public final class ScalarStbsSkinner extends AbstractSkinner {
         final float[] d = scratch.get();
         for (int i = from; i < to; i++) {
             deform(palette, i, exactNormals, d);
-            Deformations.put(outDeformations, DEFORMATION_FLOATS * i, false, false, d[3], d[4], d[5], d[6], d[7], d[8], d[9], d[10], d[11],
-                    d[0], d[1], d[2]);
+            Deformations.put(outDeformations, DEFORMATION_FLOATS * i, d, 0);
         }
     }
 }

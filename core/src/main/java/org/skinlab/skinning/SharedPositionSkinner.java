@@ -2,20 +2,20 @@ package org.skinlab.skinning;
 
 /**
  * Skins a geometry whose render vertices share positions ({@link SkinnedGeometry#sharedPositions()})
- * by deforming each position once into a frame, with a kernel built on the position-level
- * geometry, and then deriving every point from its position's frame ({@link DeformationExpansion}).
+ * by deforming each position once, with a kernel built on the position-level geometry, and then
+ * deriving every point from its position's deformation ({@link DeformationExpansion}).
  *
- * <p>Each call deforms all positions, whatever range of points it is asked for: the frames of a
- * range's positions are not a contiguous range. So split a frame over threads at the level of the
- * position kernel, not by wrapping this skinner in a {@link ParallelSkinner} (which would repeat
- * the position work per chunk). The frames live in a per-thread scratch array.
+ * <p>Each call deforms all positions, whatever range of points it is asked for: the deformations
+ * of a range's points are not a contiguous range. So split a frame over threads at the level of
+ * the position kernel, not by wrapping this skinner in a {@link ParallelSkinner} (which would
+ * repeat the position work per chunk). The deformations live in a per-thread scratch array.
  */
 final class SharedPositionSkinner extends AbstractSkinner {
     private final Skinner positionKernel;
     private final DeformationExpansion expansion;
     private final int[] deformationOfPoint;
     private final int positionCount;
-    private final ThreadLocal<float[]> frames;
+    private final ThreadLocal<float[]> deformations;
 
     SharedPositionSkinner(SkinnedGeometry geometry, Skinner positionKernel, DeformationExpansion expansion) {
         super(positionKernel.method(), positionKernel.implementation() + ", each position once ("
@@ -25,7 +25,7 @@ final class SharedPositionSkinner extends AbstractSkinner {
         this.deformationOfPoint = geometry.deformationOfPointArray();
         this.positionCount = positionKernel.geometry().pointCount();
         int size = DEFORMATION_FLOATS * positionCount;
-        this.frames = ThreadLocal.withInitial(() -> new float[size]);
+        this.deformations = ThreadLocal.withInitial(() -> new float[size]);
     }
 
     /** The kernel that deforms the positions. */
@@ -36,50 +36,49 @@ final class SharedPositionSkinner extends AbstractSkinner {
     /**
      * Whether skinning each of {@code positions} positions once and deriving {@code points} points
      * from them is cheaper than skinning every point, for a method and {@code influences} per
-     * point. The costs per point in ns, fitted to the vector kernels on JDK 17 (docs/benchmarks.md,
-     * "Each position once"; the scalar kernels favour sharing at least as much):
+     * point. The costs per point in ns, fitted to the vector kernels (the scalar kernels favour
+     * sharing at least as much; the measurements are in docs/benchmarks.md, "The shared-position
+     * rule, measured"):
      * <ul>
-     * <li>LBS: directly {@code 2 + 2.2 k}, into a frame {@code 3 + 1.75 k}, derived from a frame 3.4
-     *     (with the renormalisation of its normal);</li>
-     * <li>DQS: directly {@code 4 + 1.1 k} (8 points per lane group), into a frame {@code 6 + k},
-     *     derived from a frame 2 (rotations keep unit normals).</li>
-     * <li>CoR: directly {@code 4 + 2.2 k} (two 8-float blends per influence, as LBS), into a frame
-     *     {@code 6 + 2.2 k}, derived from a frame 2 (its frames are rotations too); measured on
-     *     the stormtrooper (JDK 25), both ways take the same time (58 and 59 µs), on the cowboy sharing
-     *     wins by far (19 against 44 µs).</li>
+     * <li>LBS: directly {@code 2 + 2.2 k}, into a deformation {@code 3 + 1.75 k}, derived from a
+     *     deformation 3.4 (with the renormalisation of its normal);</li>
+     * <li>DQS: directly {@code 4 + 1.1 k} (8 points per lane group), into a deformation
+     *     {@code 6 + k}, derived from a deformation 2 (rotations keep unit normals).</li>
+     * <li>CoR: directly {@code 4 + 2.2 k} (two 8-float blends per influence, as LBS), into a
+     *     deformation {@code 6 + 2.2 k}, derived from a deformation 2 (its normal matrices are
+     *     rotations too).</li>
      * <li>The bone methods (bulge-free DQS, STBS, spline) take CoR's model: each costs more per
-     *     point than CoR does, on top of a frame derived as cheaply, so sharing pays for them
+     *     point than CoR does, on top of a deformation derived as cheaply, so sharing pays for them
      *     wherever it pays for CoR, and the model errs towards skinning every point.</li>
      * </ul>
-     * So the stormtrooper (5174 points on 3275 positions, 6 influences) shares for LBS (measured
-     * 61 against 81 µs) and, narrowly, for DQS (48 against 53 µs), the thesis' cowboy (4252 on
-     * 740) for both by far.
+     * So the stormtrooper (5174 points on 3275 positions, 6 influences) shares for LBS and,
+     * narrowly, for DQS, the thesis' cowboy (4252 on 740) for both by far.
      */
     static boolean pays(SkinningMethod method, int points, int positions, int influences) {
         double direct;
-        double frame;
+        double intoDeformation;
         double derived;
         if (method == SkinningMethod.LBS) {
             direct = 2 + 2.2 * influences;
-            frame = 3 + 1.75 * influences;
+            intoDeformation = 3 + 1.75 * influences;
             derived = 3.4;
         } else if (method == SkinningMethod.DQS) {
             direct = 4 + 1.1 * influences;
-            frame = 6 + influences;
+            intoDeformation = 6 + influences;
             derived = 2;
         } else {
             direct = 4 + 2.2 * influences;
-            frame = 6 + 2.2 * influences;
+            intoDeformation = 6 + 2.2 * influences;
             derived = 2;
         }
-        return positions * frame + points * derived < points * direct;
+        return positions * intoDeformation + points * derived < points * direct;
     }
 
     /**
      * The rest normals an expansion for this method and rule should read: for DQS and CoR under
-     * the exact rule they are scaled to unit length once here, since a frame without a scale part is a
-     * rotation, which keeps them unit, and the per-call renormalisation can then be skipped; the
-     * geometry's own array otherwise.
+     * the exact rule they are scaled to unit length once here, since the normal matrix of a
+     * deformation without a scale part is a rotation, which keeps them unit, and the per-call
+     * renormalisation can then be skipped; the geometry's own array otherwise.
      */
     static float[] expansionNormals(SkinningMethod method, NormalTransform rule, SkinnedGeometry geometry) {
         float[] n = geometry.normalArray();
@@ -105,11 +104,11 @@ final class SharedPositionSkinner extends AbstractSkinner {
 
     @Override
     public void skin(JointPalette palette, float[] outPositions, float[] outNormals, int from, int to) {
-        float[] f = frames.get();
+        float[] f = deformations.get();
         positionKernel.skinDeformations(palette, f, 0, positionCount);
-        // DQS and CoR frames without scale are rotations of unit normals (see expansionNormals);
-        // LBS's and STBS-on-LBS's are cofactors of blended matrices, never unit; spline frames are
-        // blends of rotations.
+        // DQS's and CoR's normal matrices without scale are rotations of unit normals (see
+        // expansionNormals); LBS's and STBS-on-LBS's are cofactors of blended matrices, never
+        // unit; spline's are blends of rotations.
         boolean normalise = normals == NormalTransform.INVERSE_TRANSPOSE && (method() == SkinningMethod.LBS
                 || method() == SkinningMethod.STBS_LBS || method() == SkinningMethod.SPLINE || palette.hasScale());
         expansion.expand(f, outPositions, outNormals, from, to, normalise);
@@ -117,7 +116,7 @@ final class SharedPositionSkinner extends AbstractSkinner {
 
     @Override
     public void skinDeformations(JointPalette palette, float[] outDeformations, int from, int to) {
-        float[] f = frames.get();
+        float[] f = deformations.get();
         positionKernel.skinDeformations(palette, f, 0, positionCount);
         for (int i = from; i < to; i++) {
             System.arraycopy(f, DEFORMATION_FLOATS * deformationOfPoint[i], outDeformations, DEFORMATION_FLOATS * i, DEFORMATION_FLOATS);

@@ -24,7 +24,7 @@ public interface Skinner {
     int DEFORMATION_FLOATS = 16;
 
     /**
-     * Deforms points {@code [from, to)} into <em>frames</em>, from which any number of render
+     * Deforms points {@code [from, to)} into <em>deformations</em>, from which any number of render
      * vertices sharing a point's position are derived ({@link DeformationExpansion}): per point 16 floats
      * at {@code 16 * point}, the columns of the normal matrix N and the deformed position p, each
      * padded to four: {@code N00 N10 N20 0, N01 N11 N21 0, px py pz 0, N02 N12 N22 0} (p before N's

@@ -113,9 +113,9 @@ class BulgeFreeDqsTest {
         }
     }
 
-    /** Shared positions skin through frames: the frame carries the pulled position, bit for bit. */
+    /** Shared positions skin through deformations: a deformation carries the pulled position, bit for bit. */
     @Test
-    void framesCarryThePulledPositions() throws Exception {
+    void deformationsCarryThePulledPositions() throws Exception {
         SkinnedModel skinned = SkinnedModel.of(ColladaImporter.read(TestPaths.asset("cylinders/cylinder-bend.dae")));
         SkinnedGeometry g = skinned.geometries().get(0);
         skinned.pose(4f, RotationInterpolation.SLERP);
@@ -123,11 +123,11 @@ class BulgeFreeDqsTest {
         Skinner scalar = new ScalarBulgeFreeDqsSkinner(g, NormalTransform.INVERSE_TRANSPOSE);
         float[] positions = new float[3 * g.pointCount()];
         scalar.skinAll(palette, positions, new float[positions.length]);
-        float[] frames = new float[Skinner.DEFORMATION_FLOATS * g.pointCount()];
-        scalar.skinDeformations(palette, frames, 0, g.pointCount());
+        float[] deformations = new float[Skinner.DEFORMATION_FLOATS * g.pointCount()];
+        scalar.skinDeformations(palette, deformations, 0, g.pointCount());
         for (int i = 0; i < g.pointCount(); i++) {
             for (int a = 0; a < 3; a++) {
-                assertEquals(positions[3 * i + a], frames[Skinner.DEFORMATION_FLOATS * i + 8 + a], "point " + i);
+                assertEquals(positions[3 * i + a], deformations[Skinner.DEFORMATION_FLOATS * i + 8 + a], "point " + i);
             }
         }
     }

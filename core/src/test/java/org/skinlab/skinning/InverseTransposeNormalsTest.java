@@ -86,7 +86,7 @@ class InverseTransposeNormalsTest {
         assertInverseTranspose(m, n);
     }
 
-    /** Skins with {@code method} directly and through frames and the scalar expansion; both must agree. */
+    /** Skins with {@code method} directly and through deformations and the scalar expansion; both must agree. */
     private static float[] normalsBothWays(SkinningMethod method, Matrix4f m) {
         SkinnedGeometry g = oneJoint();
         JointPalette palette = g.newPalette();
@@ -100,18 +100,18 @@ class InverseTransposeNormalsTest {
         float[] n = new float[NORMALS.length];
         k.skinAll(palette, p, n);
         int points = g.pointCount();
-        float[] frames = new float[Skinner.DEFORMATION_FLOATS * points];
-        k.skinDeformations(palette, frames, 0, points);
+        float[] deformations = new float[Skinner.DEFORMATION_FLOATS * points];
+        k.skinDeformations(palette, deformations, 0, points);
         int[] identity = new int[points];
         for (int i = 0; i < points; i++) {
             identity[i] = i;
         }
         float[] p2 = new float[NORMALS.length];
         float[] n2 = new float[NORMALS.length];
-        DeformationExpansion.scalar(identity, g.normalArray()).expand(frames, p2, n2, 0, points, true);
+        DeformationExpansion.scalar(identity, g.normalArray()).expand(deformations, p2, n2, 0, points, true);
         for (int i = 0; i < NORMALS.length; i++) {
-            assertEquals(p[i], p2[i], 1e-5f, method + ": position float " + i + " by frames");
-            assertEquals(n[i], n2[i], 1e-5f, method + ": normal float " + i + " by frames");
+            assertEquals(p[i], p2[i], 1e-5f, method + ": position float " + i + " by deformations");
+            assertEquals(n[i], n2[i], 1e-5f, method + ": normal float " + i + " by deformations");
         }
         return n;
     }
@@ -141,7 +141,7 @@ class InverseTransposeNormalsTest {
     }
 
     @Test
-    void framesCarryTheSameNormalsForOrdinaryJoints() {
+    void deformationsCarryTheSameNormalsForOrdinaryJoints() {
         Matrix4f m = new Matrix4f().rotateXYZ(0.7f, -0.4f, 1.1f).scale(2f, 1f, 0.5f).setTranslation(0.1f, 0.2f, 0.3f);
         for (SkinningMethod method : wholeMatrixMethods()) {
             assertInverseTranspose(m, normalsBothWays(method, m));

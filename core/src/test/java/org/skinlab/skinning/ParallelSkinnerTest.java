@@ -83,7 +83,7 @@ class ParallelSkinnerTest {
     /** A kernel that records the ranges it is given. */
     private static class Recorder implements Skinner {
         final List<int[]> ranges = Collections.synchronizedList(new ArrayList<>());
-        final List<int[]> frameRanges = Collections.synchronizedList(new ArrayList<>());
+        final List<int[]> deformationRanges = Collections.synchronizedList(new ArrayList<>());
         final SkinnedGeometry geometry;
         final int alignment;
         int throwAt = -1;
@@ -118,7 +118,7 @@ class ParallelSkinnerTest {
 
         @Override
         public void skinDeformations(JointPalette palette, float[] outDeformations, int from, int to) {
-            frameRanges.add(new int[] {from, to});
+            deformationRanges.add(new int[] {from, to});
         }
 
         @Override
@@ -133,15 +133,15 @@ class ParallelSkinnerTest {
     }
 
     @Test
-    void framesAreSplitLikePoints() {
+    void deformationsAreSplitLikePoints() {
         SkinnedGeometry g = geometry(10);
         Recorder k = new Recorder(g, 8);
         try (ParallelSkinner parallel = new ParallelSkinner(k, 2)) {
             parallel.skinDeformations(null, null, 3, 99_997);
         }
         assertTrue(k.ranges.isEmpty(), "skinDeformations must not call skin");
-        assertTrue(k.frameRanges.size() > 1, "the range is split");
-        List<int[]> sorted = new ArrayList<>(k.frameRanges);
+        assertTrue(k.deformationRanges.size() > 1, "the range is split");
+        List<int[]> sorted = new ArrayList<>(k.deformationRanges);
         sorted.sort((a, b) -> Integer.compare(a[0], b[0]));
         int next = 3;
         for (int[] r : sorted) {

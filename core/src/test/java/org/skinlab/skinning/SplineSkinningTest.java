@@ -215,7 +215,7 @@ class SplineSkinningTest {
 
     /**
      * Skinning each shared position once and expanding gives the points' own results, with unit
-     * normals (a spline frame blends rotations, so the expansion must renormalise).
+     * normals (a spline deformation's normal matrix blends rotations, so the expansion must renormalise).
      */
     @Test
     void sharedPositionsGiveThePointsOwnResults() throws Exception {

@@ -70,7 +70,7 @@ class StbsAssetTest {
         }
     }
 
-    /** Skinning each shared position once and expanding its frame gives what skinning every point does. */
+    /** Skinning each shared position once and expanding its deformation gives what skinning every point does. */
     @Test
     void sharedPositionsGiveTheSamePointsAndUnitNormals() throws Exception {
         SkinnedModel model = load("twist/arm-twist.dae");

@@ -92,10 +92,10 @@ final class CorLanes {
     /**
      * Blocks {@code [firstBlock, endBlock)}, in place in {@code first}: each point's motion
      * {@code p -> R p + T}, {@code T = A c - R c}, as the dual quaternion that
-     * {@link DqsLanes#rigidFrames} reads (component c at {@code 8 c}: the blended rotation
+     * {@link DqsLanes#rigidDeformations} reads (component c at {@code 8 c}: the blended rotation
      * quaternion as it is, then the dual part). For the unit quaternion r the dual part is
      * {@code d = T r / 2} (T as a pure quaternion), {@code d_v = (r_w T + T x r) / 2},
-     * {@code d_w = -(T . r) / 2}; it is stored times |blend| because rigidFrames divides both
+     * {@code d_w = -(T . r) / 2}; it is stored times |blend| because rigidDeformations divides both
      * parts by it.
      */
     static void asDualQuaternions(float[] first, float[] second, float[] centres, int firstBlock, int endBlock) {

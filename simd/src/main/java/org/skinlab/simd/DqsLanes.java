@@ -16,7 +16,7 @@ import jdk.incubator.vector.FloatVector;
  * The lane passes of {@link VectorDqsSkinner} on blocks of 8 points, each a loop of its own (so
  * C2 compiles it whole: see the skinner's "Passes"), meeting in the skinner's per-thread scratch:
  * blended dual quaternions transposed into lane vectors (component c of a block's 8 points at
- * {@code 64 (block - first) + 8 c}), then either applied to the points or turned into frames.
+ * {@code 64 (block - first) + 8 c}), then either applied to the points or turned into deformations.
  * {@code blk} is the skinner's block layout of rest positions and normals (48 floats per block:
  * px py pz nx ny nz, 8 lanes each).
  */
@@ -140,14 +140,14 @@ final class DqsLanes {
 
     /**
      * Per point of blocks {@code [firstBlock, endBlock)}: the blended dual quaternion of the
-     * scratch, normalised, as the point's frame ({@link org.skinlab.skinning.Skinner#skinDeformations}):
+     * scratch, normalised, as the point's deformation ({@link org.skinlab.skinning.Skinner#skinDeformations}):
      * the rotation R as N's columns and the deformed position {@code p' = R p + t}, with R from the
      * rotation quaternion and t = 2 (w d - d_w r + r x d), into {@code out} at
      * {@code 16 (point - outFirstPoint)}. The eight lane vectors of each half of the record are
      * transposed into eight points' rows by the network {@link #transpose} uses (a transpose is
      * its own inverse). The scale phase recovers t from p' ({@link MatrixPasses#compose}).
      */
-    static void rigidFrames(float[] s, float[] blk, float[] out, int firstBlock, int endBlock, int outFirstPoint) {
+    static void rigidDeformations(float[] s, float[] blk, float[] out, int firstBlock, int endBlock, int outFirstPoint) {
         final FloatVector one = FloatVector.broadcast(S, 1f);
         final FloatVector zero = FloatVector.zero(S);
         for (int b = firstBlock; b < endBlock; b++) {

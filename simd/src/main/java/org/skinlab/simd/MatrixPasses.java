@@ -15,7 +15,7 @@ import org.skinlab.skinning.Skinner;
  * Point-by-point passes on blended 3x4 matrices, one point per iteration with the matrix spread
  * over the 8 lanes as two vectors {@code [c0 | c1]}, {@code [c2 | c3]} (columns, c3 the
  * translation, row 3 zero): the blend of any number of influences, composing with a rigid
- * matrix, and applying the result to a point (positions and normals, or a frame record of
+ * matrix, and applying the result to a point (positions and normals, or a deformation of
  * {@link Skinner#skinDeformations}). Passes meet in a small scratch of {@link #CHUNK} matrices (16 floats
  * each) that stays in L1.
  *
@@ -205,9 +205,9 @@ final class MatrixPasses {
 
     /**
      * {@code acc_l = D_l acc_l} for {@code l < count}: each scratch matrix composed with the rigid
-     * motion {@code D = [R | t]} of the frame at the same place in {@code rigid} (frame records of
+     * motion {@code D = [R | t]} of the deformation at the same place in {@code rigid} (deformations of
      * points {@code firstPoint + l}, as {@link Skinner#skinDeformations} lays them out, N = R), t
-     * recovered as {@code p' - R p} from the frame's position and the point's rest position.
+     * recovered as {@code p' - R p} from the deformation's position and the point's rest position.
      * Column c of the product is {@code R s_c} (plus {@code t} for the translation column).
      */
     static void compose(float[] rigid, float[] positions, int firstPoint, float[] acc, int count) {
@@ -240,12 +240,12 @@ final class MatrixPasses {
     }
 
     /**
-     * Frame records ({@link Skinner#skinDeformations}) of points {@code [from, to)} from their matrices in
+     * Deformations ({@link Skinner#skinDeformations}) of points {@code [from, to)} from their matrices in
      * {@code acc} (from 0): the deformed position and, with {@code cofactor}, the matrix's cofactor
      * (times the sign of its determinant when {@code signed}: the palette mirrors), else its linear
      * part.
      */
-    static void frames(float[] acc, float[] positions, boolean cofactor, boolean signed, float[] out, int from,
+    static void deformations(float[] acc, float[] positions, boolean cofactor, boolean signed, float[] out, int from,
             int to) {
         final FloatVector one = FloatVector.broadcast(S, 1f);
         final float lo = signed ? -1f : 1f; // +1: the clamp below always gives 1

@@ -22,9 +22,9 @@ import org.skinlab.skinning.SkinnedGeometry;
  * benchmark's 64 joints in random order up to 4096). Per point, a signed dual quaternion is one
  * 8-lane load, so the blend is one load and one fused multiply-add per influence; then 8 points'
  * blends are transposed in registers (three stages of permute + blend, 48 operations) into lane
- * vectors. This replaced a transpose per influence, with the sign taken by a lane compare against
- * the transposed pivot (docs/benchmarks.md has both). Gathers cost about a cycle per lane on the
- * AMD machines we measured and were 7x slower.
+ * vectors: fewer operations than a transpose per influence with the sign taken by a lane compare
+ * against the transposed pivot (docs/benchmarks.md times both). Gathers cost about a cycle per
+ * lane on the AMD machines we measured, 7x slower.
  *
  * <p>Influences are padded to {@link MatrixPasses#paddedWidth} (weight 0 on the pivot adds +-0);
  * the padded joints and weights are public to the package so that the scale and matrix passes
@@ -119,7 +119,7 @@ final class SignedDqBlend {
      * per iteration with the 8 floats of a signed dual quaternion across the lanes (one load from
      * {@link #signedPairs}' table and one fused multiply-add per influence), then transposed
      * eight points at a time into the scratch's lane vectors (component c of the block's 8 points
-     * at {@code 64 (block - b) + 8 c}) for {@link DqsLanes#applyAndStore} and {@link DqsLanes#rigidFrames}.
+     * at {@code 64 (block - b) + 8 c}) for {@link DqsLanes#applyAndStore} and {@link DqsLanes#rigidDeformations}.
      */
     void blend(float[] tab, float[] s, int b, int e) {
         float[] rows = this.rows.get();

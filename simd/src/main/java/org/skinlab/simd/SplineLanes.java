@@ -453,10 +453,10 @@ final class SplineLanes {
     }
 
     /**
-     * The sums as frame records ({@code Skinner#skinDeformations}: the columns of N, then p, then N's
+     * The sums as deformations ({@code Skinner#skinDeformations}: the columns of N, then p, then N's
      * last column, each padded to four), 16 floats per point from {@code o}; plain stores.
      */
-    static void storeFrames(float[] acc, float[] out, int o) {
+    static void storeDeformations(float[] acc, float[] out, int o) {
         for (int l = 0; l < L; l++) {
             int f = o + 16 * l;
             out[f] = acc[3 * L + l];

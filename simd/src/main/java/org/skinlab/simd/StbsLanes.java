@@ -320,20 +320,20 @@ final class StbsLanes {
     }
 
     /**
-     * Block b's frame records ({@link org.skinlab.skinning.Skinner#skinDeformations}) on LBS: the blend
+     * Block b's deformations ({@link org.skinlab.skinning.Skinner#skinDeformations}) on LBS: the blend
      * as in {@link #linear}, N its linear part's cofactor (unsigned, as the scalar kernel: a blend
      * of rotations turns no normal inwards unless it degenerates) or that part itself, 16 lane
      * vectors into {@code f} (128 floats), transposed into the points' records at {@code 128 b}.
      */
-    static void linearFrames(float[] s, int o, float[] weights, float[] blk, int b, int width, int active,
+    static void linearDeformations(float[] s, int o, float[] weights, float[] blk, int b, int width, int active,
             boolean exact, float[] f, float[] outDeformations) {
         linearBlend(s, o, weights, b, width, active);
-        linearFrameLanes(s, o, blk, b, exact, f);
-        storeFrames(f, outDeformations, 128 * b);
+        linearDeformationLanes(s, o, blk, b, exact, f);
+        storeDeformations(f, outDeformations, 128 * b);
     }
 
     /** The record's 16 fields as lane vectors, field c at {@code f[8 c ..]} (fields 3, 7, 11, 15 zero). */
-    private static void linearFrameLanes(float[] s, int o, float[] blk, int b, boolean exact, float[] f) {
+    private static void linearDeformationLanes(float[] s, int o, float[] blk, int b, boolean exact, float[] f) {
         FloatVector b0 = FloatVector.fromArray(S, s, o);
         FloatVector b1 = FloatVector.fromArray(S, s, o + 8);
         FloatVector b2 = FloatVector.fromArray(S, s, o + 16);
@@ -383,7 +383,7 @@ final class StbsLanes {
      * The 16 lane vectors at {@code f} transposed in place ({@link DqsLanes#transpose}: fields 0..7
      * and 8..15 of the 8 points, 8 floats each), then copied into the records at {@code out[o ..]}.
      */
-    private static void storeFrames(float[] f, float[] out, int o) {
+    private static void storeDeformations(float[] f, float[] out, int o) {
         DqsLanes.transpose(f, f, 0, 2);
         for (int l = 0; l < 8; l++) {
             FloatVector.fromArray(S, f, 8 * l).intoArray(out, o + 16 * l);
@@ -392,14 +392,14 @@ final class StbsLanes {
     }
 
     /**
-     * Block b's frame records on DQS: the blend as in {@link #dualQuaternion}, into {@code f} from 0
-     * (64 floats: the layout of {@link DqsLanes}' scratch), then {@link DqsLanes#rigidFrames}, which
+     * Block b's deformations on DQS: the blend as in {@link #dualQuaternion}, into {@code f} from 0
+     * (64 floats: the layout of {@link DqsLanes}' scratch), then {@link DqsLanes#rigidDeformations}, which
      * normalises it and writes N = its rotation and p' = R p + t at {@code 128 b}.
      */
-    static void dualQuaternionFrames(float[] s, float[] weights, float[] blk, int b, int width, int active, float[] f,
+    static void dualQuaternionDeformations(float[] s, float[] weights, float[] blk, int b, int width, int active, float[] f,
             float[] outDeformations) {
         dualQuaternionBlend(s, f, 0, weights, b, width, active);
-        DqsLanes.rigidFrames(f, blk, outDeformations, b, b + 1, 0);
+        DqsLanes.rigidDeformations(f, blk, outDeformations, b, b + 1, 0);
     }
 
     /** The blend of the influences in {@code s} into {@code d[o ..]}: real part, then dual part, 4 lane vectors each. */

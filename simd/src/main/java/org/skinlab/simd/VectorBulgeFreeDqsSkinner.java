@@ -29,7 +29,7 @@ import org.skinlab.skinning.SkinningMethod;
  * loops meet in per-thread scratch, as {@link VectorDqsSkinner}'s passes do: the points' records
  * are loaded (one vector load each, the offset fixed at construction) and transposed in registers
  * into lane columns ({@link #transposeBones}); then per 8 points the lanes gather their DQS positions from
- * the output (stride 3, or 16 for frames), and the nearest point on the bone, the distance and
+ * the output (stride 3, or 16 for deformations), and the nearest point on the bone, the distance and
  * the smooth pull ({@link BulgeFreeBinding#pulledDistance}) run in lanes ({@link #pullLanes}); a
  * lane group with a pulled lane is written back through a scratch row and scalar stores (a lane
  * group with none is skipped). The last points of a range that fill no lane group take the
@@ -46,9 +46,9 @@ import org.skinlab.skinning.SkinningMethod;
  * joint matrix; docs/skinning.md), after the vector DQS. Normals are DQS's, as in the scalar kernel.
  */
 final class VectorBulgeFreeDqsSkinner extends AbstractSkinner {
-    /** Lane l's offset from the first point's x: points (3 floats) and frames (16). */
+    /** Lane l's offset from the first point's x: points (3 floats) and deformations (16). */
     private static final int[] POSITION_LANES = {0, 3, 6, 9, 12, 15, 18, 21};
-    private static final int[] FRAME_LANES = {0, 16, 32, 48, 64, 80, 96, 112};
+    private static final int[] DEFORMATION_LANES = {0, 16, 32, 48, 64, 80, 96, 112};
     /** Floats per joint in the bone table: head, bone vector, 1 / |bone|^2 and one of padding (a lane vector). */
     private static final int BONE_RECORD = 8;
     /** Points per chunk of the two passes of the pull: their bone columns stay in L1. */
@@ -159,7 +159,7 @@ final class VectorBulgeFreeDqsSkinner extends AbstractSkinner {
         }
         float[] columns = boneColumns.get();
         float[] pulled = pulledLanes.get();
-        int[] lanes = stride == 3 ? POSITION_LANES : FRAME_LANES;
+        int[] lanes = stride == 3 ? POSITION_LANES : DEFORMATION_LANES;
         int whole = from + (to - from) / S.length() * S.length();
         for (int k = from; k < whole; k += CHUNK) {
             int e = Math.min(whole, k + CHUNK);

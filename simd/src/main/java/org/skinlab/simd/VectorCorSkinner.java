@@ -27,8 +27,8 @@ import org.skinlab.skinning.SkinningMethod;
  * <p><b>Finish.</b> {@link #skin}: {@link CorLanes#applyAndStore} rotates and translates in lanes
  * and interleaves the results. {@link #skinDeformations} (the route of position sharing):
  * {@link CorLanes#asDualQuaternions} writes each point's motion {@code p -> R p + (A c - R c)} as
- * a dual quaternion into the DQS kernel's scratch layout, and {@link DqsLanes#rigidFrames} turns
- * those into frame records.
+ * a dual quaternion into the DQS kernel's scratch layout, and {@link DqsLanes#rigidDeformations} turns
+ * those into deformations.
  *
  * <p>Frames whose palette has a scale part ({@link JointPalette#hasScale()}) go through the scalar
  * kernel: there CoR runs DQS's scale phase first and moves the centre by the joints' rigid parts,
@@ -149,7 +149,7 @@ final class VectorCorSkinner extends AbstractSkinner {
             int e = Math.min(endBlock, b + CHUNK);
             blendLanes(tab, rows, lanesA, lanesB, b, e);
             CorLanes.asDualQuaternions(lanesA, lanesB, centreLanes, b, e);
-            DqsLanes.rigidFrames(lanesA, points, outDeformations, b, e, 0);
+            DqsLanes.rigidDeformations(lanesA, points, outDeformations, b, e, 0);
         }
         scalar.skinDeformations(palette, outDeformations, BLOCK * endBlock, to);
     }

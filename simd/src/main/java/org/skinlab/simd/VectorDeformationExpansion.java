@@ -10,10 +10,10 @@ import org.skinlab.skinning.Skinner;
 
 /**
  * {@link DeformationExpansion} on 8-lane vectors, one point per iteration. The rest normals are laid out
- * once as the operands the frame's halves {@code [N0 | N1]} and {@code [p | N2]} are multiplied by:
+ * once as the operands the deformation's halves {@code [N0 | N1]} and {@code [p | N2]} are multiplied by:
  * {@code [nx nx nx nx | ny ny ny ny]} and {@code [0 0 0 0 | nz nz nz nz]} (16 floats per point),
  * so a point costs four loads, a multiply, a fused multiply-add, one lane swap and an add; the
- * position is stored straight from the frame's second half. Both stores are 8 lanes wide and spill
+ * position is stored straight from the deformation's second half. Both stores are 8 lanes wide and spill
  * into the next points, which overwrite them; the last two points of a range are written float by
  * float with the same sums in the same order, so a range writes nothing outside itself and any
  * split gives the same bits. Exact normals are then renormalised eight at a time
@@ -38,7 +38,7 @@ final class VectorDeformationExpansion implements DeformationExpansion {
     }
 
     @Override
-    public void expand(float[] frames, float[] outPositions, float[] outNormals, int from, int to,
+    public void expand(float[] deformations, float[] outPositions, float[] outNormals, int from, int to,
             boolean normalise) {
         final int[] fop = deformationOfPoint;
         final float[] ops = operands;
@@ -46,8 +46,8 @@ final class VectorDeformationExpansion implements DeformationExpansion {
         for (int i = from; i < end; i++) {
             int f = Skinner.DEFORMATION_FLOATS * fop[i];
             int v = 3 * i;
-            FloatVector n01 = FloatVector.fromArray(S, frames, f);
-            FloatVector pn2 = FloatVector.fromArray(S, frames, f + 8);
+            FloatVector n01 = FloatVector.fromArray(S, deformations, f);
+            FloatVector pn2 = FloatVector.fromArray(S, deformations, f + 8);
             FloatVector t = n01.mul(FloatVector.fromArray(S, ops, 16 * i))
                     .add(pn2.mul(FloatVector.fromArray(S, ops, 16 * i + 8)));
             t.add(t.rearrange(SWAP)).intoArray(outNormals, v);
@@ -60,9 +60,9 @@ final class VectorDeformationExpansion implements DeformationExpansion {
             int o = 16 * i;
             float nx = ops[o], ny = ops[o + 4], nz = ops[o + 12];
             for (int c = 0; c < 3; c++) {
-                outNormals[v + c] = (frames[f + c] * nx + frames[f + 8 + c] * 0f)
-                        + (frames[f + 4 + c] * ny + frames[f + 12 + c] * nz);
-                outPositions[v + c] = frames[f + 8 + c];
+                outNormals[v + c] = (deformations[f + c] * nx + deformations[f + 8 + c] * 0f)
+                        + (deformations[f + 4 + c] * ny + deformations[f + 12 + c] * nz);
+                outPositions[v + c] = deformations[f + 8 + c];
             }
         }
         if (normalise) {

@@ -34,7 +34,7 @@ import org.skinlab.skinning.SkinningMethod;
  * the lanes back into x y z x y z ...
  *
  * <p><b>Scale.</b> When the palette has a scale part this frame ({@link JointPalette#hasScale()})
- * each point's blended dual quaternion becomes a rigid frame ({@link DqsLanes#rigidFrames}), which is
+ * each point's blended dual quaternion becomes a rigid frame ({@link DqsLanes#rigidDeformations}), which is
  * composed with the point's blended scale part and applied like an LBS matrix
  * ({@link MatrixPasses}): the two-phase split of the scalar kernel, {@code D (S p)}, with normals
  * by {@code R} times S's signed cofactor. Without scale both {@link NormalTransform}s rotate the
@@ -136,7 +136,7 @@ final class VectorDqsSkinner extends AbstractSkinner {
                 int p0 = BLOCK * b;
                 int p1 = BLOCK * e;
                 blend.blend(tab, s, b, e);
-                DqsLanes.rigidFrames(s, points, r, b, e, p0);
+                DqsLanes.rigidDeformations(s, points, r, b, e, p0);
                 MatrixPasses.blend(cs, blend.passJoints, blend.passWeights, blend.passWidth, p0, p1, acc);
                 MatrixPasses.compose(r, restPositions, p0, acc, p1 - p0);
                 // Spilling past p1 is fine when points follow: the next pass or the scalar tail
@@ -159,7 +159,7 @@ final class VectorDqsSkinner extends AbstractSkinner {
 
     /**
      * Deformations of points {@code [from, to)}: per point the rigid matrix of its blended dual
-     * quaternion ({@link DqsLanes#rigidFrames}), composed with its blended scale part when the palette
+     * quaternion ({@link DqsLanes#rigidDeformations}), composed with its blended scale part when the palette
      * has one, then applied to the rest position; N is the rotation, or the rotation times the
      * scale part's signed cofactor (exact rule) or linear part.
      */
@@ -189,12 +189,12 @@ final class VectorDqsSkinner extends AbstractSkinner {
             int p1 = BLOCK * e;
             blend.blend(tab, s, b, e);
             if (scaled) {
-                DqsLanes.rigidFrames(s, points, r, b, e, p0);
+                DqsLanes.rigidDeformations(s, points, r, b, e, p0);
                 MatrixPasses.blend(cs, blend.passJoints, blend.passWeights, blend.passWidth, p0, p1, acc);
                 MatrixPasses.compose(r, restPositions, p0, acc, p1 - p0);
-                MatrixPasses.frames(acc, restPositions, exact, mirror, outDeformations, p0, p1);
+                MatrixPasses.deformations(acc, restPositions, exact, mirror, outDeformations, p0, p1);
             } else {
-                DqsLanes.rigidFrames(s, points, outDeformations, b, e, 0);
+                DqsLanes.rigidDeformations(s, points, outDeformations, b, e, 0);
             }
         }
         scalar.skinDeformations(palette, outDeformations, BLOCK * endBlock, to);

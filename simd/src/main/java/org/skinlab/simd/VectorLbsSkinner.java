@@ -142,7 +142,7 @@ final class VectorLbsSkinner extends AbstractSkinner {
         for (int s = from; s < to; s += MatrixPasses.CHUNK) {
             int e = Math.min(to, s + MatrixPasses.CHUNK);
             blend(c, s, e, acc);
-            MatrixPasses.frames(acc, restPositions, cofactor, mirror, outDeformations, s, e);
+            MatrixPasses.deformations(acc, restPositions, cofactor, mirror, outDeformations, s, e);
         }
     }
 

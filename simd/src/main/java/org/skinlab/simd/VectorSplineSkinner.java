@@ -21,7 +21,7 @@ import org.skinlab.skinning.SplineBinding;
  *
  * <p>With joint scale, a second per-call table holds each curve's two scale parts, blended along
  * the curve per lane as in the scalar kernel. {@link #skinDeformations} (the route of position sharing)
- * writes the same sums as frame records. Frames with a mirroring joint under exact normals go
+ * writes the same sums as deformations. Frames with a mirroring joint under exact normals go
  * through the scalar kernel, as do points of a range outside whole blocks of 8.
  */
 final class VectorSplineSkinner extends AbstractSkinner {
@@ -236,7 +236,7 @@ final class VectorSplineSkinner extends AbstractSkinner {
         float[] acc = scratch.get();
         for (int b = firstBlock; b < endBlock; b++) {
             sums(palette, records, b, exact, acc);
-            SplineLanes.storeFrames(acc, outDeformations, DEFORMATION_FLOATS * BLOCK * b);
+            SplineLanes.storeDeformations(acc, outDeformations, DEFORMATION_FLOATS * BLOCK * b);
         }
         scalar.skinDeformations(palette, outDeformations, BLOCK * endBlock, to);
     }

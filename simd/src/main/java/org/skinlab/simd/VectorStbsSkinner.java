@@ -20,9 +20,9 @@ import org.skinlab.skinning.SkinningMethod;
  * outside whole blocks ({@link #rangeAlignment()}) go through the scalar kernel.
  *
  * <p>{@link #skinDeformations} (the route of position sharing) runs the same influence pass and blend,
- * then writes 8 points' frame records from lanes: on LBS the blend's position and its linear
- * part's cofactor (or that part), transposed ({@link StbsLanes#linearFrames}); on DQS through
- * the DQS kernel's {@link DqsLanes#rigidFrames}.
+ * then writes 8 points' deformations from lanes: on LBS the blend's position and its linear
+ * part's cofactor (or that part), transposed ({@link StbsLanes#linearDeformations}); on DQS through
+ * the DQS kernel's {@link DqsLanes#rigidDeformations}.
  */
 final class VectorStbsSkinner extends AbstractSkinner {
     static final int BLOCK = 8;
@@ -44,8 +44,8 @@ final class VectorStbsSkinner extends AbstractSkinner {
     private final ThreadLocal<float[]> jointScratch;
     /** Per thread the joints' data of the palette being applied ({@link StbsLanes#packJoints}). */
     private final ThreadLocal<float[]> jointTable;
-    /** Per thread one block's frame records in lanes ({@link #skinDeformations}): 16 fields, 8 lanes each. */
-    private final ThreadLocal<float[]> frameScratch = ThreadLocal.withInitial(() -> new float[DEFORMATION_FLOATS * BLOCK]);
+    /** Per thread one block's deformations in lanes ({@link #skinDeformations}): 16 fields, 8 lanes each. */
+    private final ThreadLocal<float[]> deformationScratch = ThreadLocal.withInitial(() -> new float[DEFORMATION_FLOATS * BLOCK]);
 
     VectorStbsSkinner(SkinningMethod method, SkinnedGeometry geometry, NormalTransform normals) {
         super(method, "vector-256", geometry, normals);
@@ -163,7 +163,7 @@ final class VectorStbsSkinner extends AbstractSkinner {
         float[] s = scratch.get();
         float[] t = jointScratch.get();
         float[] table = jointTable.get();
-        float[] f = frameScratch.get();
+        float[] f = deformationScratch.get();
         StbsLanes.packJoints(palette.boneRows(), palette.dualQuaternions(), jointCount, table);
         boolean exact = normals == NormalTransform.INVERSE_TRANSPOSE;
         int blend = StbsLanes.INFLUENCE_FLOATS * width;
@@ -171,9 +171,9 @@ final class VectorStbsSkinner extends AbstractSkinner {
             int active = Math.max(1, activeWidth[b]);
             StbsLanes.influences(table, rowIndex, points, b, width, active, s, t);
             if (dualQuaternions) {
-                StbsLanes.dualQuaternionFrames(s, weights, points, b, width, active, f, outDeformations);
+                StbsLanes.dualQuaternionDeformations(s, weights, points, b, width, active, f, outDeformations);
             } else {
-                StbsLanes.linearFrames(s, blend, weights, points, b, width, active, exact, f, outDeformations);
+                StbsLanes.linearDeformations(s, blend, weights, points, b, width, active, exact, f, outDeformations);
             }
         }
         scalar.skinDeformations(palette, outDeformations, BLOCK * endBlock, to);

@@ -17,7 +17,7 @@ import org.skinlab.skinning.SkinningMethod;
 /**
  * The vector bulge-free DQS kernel against the scalar one, as {@link VectorSkinnerTest} checks the
  * others: random points and poses (random rotations pull many points), every range on and off the
- * lane grid, frames, scaled palettes (the scalar pull after the vector DQS) and the humanoid.
+ * lane grid, deformations, scaled palettes (the scalar pull after the vector DQS) and the humanoid.
  * Tolerance as there, 2e-5 relative: the pull is continuous in the DQS position (at d = r it moves
  * nothing), so it carries DQS's float differences on, it does not amplify them.
  */
@@ -179,11 +179,11 @@ class VectorBulgeFreeDqsSkinnerTest {
             int point = i / Skinner.DEFORMATION_FLOATS;
             if (point < from || point >= to) {
                 if (!Float.isNaN(vf[i])) {
-                    fail("frame float " + i + " outside [" + from + ", " + to + ") was written");
+                    fail("deformation float " + i + " outside [" + from + ", " + to + ") was written");
                 }
                 continue;
             }
-            check("frame", i, vf[i], sf[i], from, to);
+            check("deformation", i, vf[i], sf[i], from, to);
         }
     }
 

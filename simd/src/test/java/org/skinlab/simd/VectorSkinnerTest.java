@@ -125,7 +125,7 @@ class VectorSkinnerTest {
         "LBS, INVERSE_TRANSPOSE, 12, true", "DQS, BLENDED_MATRIX, 2, false", "DQS, INVERSE_TRANSPOSE, 4, false",
         "DQS, INVERSE_TRANSPOSE, 6, false", "DQS, INVERSE_TRANSPOSE, 6, true", "DQS, BLENDED_MATRIX, 9, true",
         "COR, INVERSE_TRANSPOSE, 4, false", "COR, BLENDED_MATRIX, 6, false", "COR, INVERSE_TRANSPOSE, 9, false"})
-    void framesAgreeWithScalar(SkinningMethod method, NormalTransform normals, int width, boolean scaled) {
+    void deformationsAgreeWithScalar(SkinningMethod method, NormalTransform normals, int width, boolean scaled) {
         SkinnedGeometry g = Geometries.random(40 + width, 203, width, 16);
         JointPalette palette = Geometries.pose(g, 41, scaled);
         Skinner k = vector(method, g, normals);
@@ -185,11 +185,11 @@ class VectorSkinnerTest {
             int point = i / Skinner.DEFORMATION_FLOATS;
             if (point < from || point >= to) {
                 if (!Float.isNaN(vf[i])) {
-                    fail("frame float " + i + " outside [" + from + ", " + to + ") was written");
+                    fail("deformation float " + i + " outside [" + from + ", " + to + ") was written");
                 }
                 continue;
             }
-            check("frame", i, vf[i], sf[i], from, to, vector);
+            check("deformation", i, vf[i], sf[i], from, to, vector);
         }
     }
 

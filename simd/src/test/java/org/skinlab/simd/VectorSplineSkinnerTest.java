@@ -83,7 +83,7 @@ class VectorSplineSkinnerTest {
         vector.skinDeformations(palette, vf, from, to);
         scalar.skinDeformations(palette, sf, from, to);
         for (int i = Skinner.DEFORMATION_FLOATS * from; i < Skinner.DEFORMATION_FLOATS * to; i++) {
-            check(asset + " frame", i, vf[i], sf[i]);
+            check(asset + " deformation", i, vf[i], sf[i]);
         }
     }
 

@@ -109,7 +109,7 @@ class VectorStbsSkinnerTest {
     }
 
     /**
-     * {@link Skinner#skinDeformations} (the route of position sharing) against the scalar kernel's frames:
+     * {@link Skinner#skinDeformations} (the route of position sharing) against the scalar kernel's deformations:
      * the same records (N's columns, p, padding) for every range, nothing written outside it.
      */
     @ParameterizedTest
@@ -117,7 +117,7 @@ class VectorStbsSkinnerTest {
         "STBS_LBS, INVERSE_TRANSPOSE, 2, true", "STBS_LBS, BLENDED_MATRIX, 1, false",
         "STBS_DQS, INVERSE_TRANSPOSE, 4, true", "STBS_DQS, BLENDED_MATRIX, 3, false",
         "STBS_DQS, INVERSE_TRANSPOSE, 1, false", "STBS_DQS, BLENDED_MATRIX, 2, true"})
-    void framesAgreeWithScalarForEveryRange(SkinningMethod method, NormalTransform normals, int width, boolean scaled) {
+    void deformationsAgreeWithScalarForEveryRange(SkinningMethod method, NormalTransform normals, int width, boolean scaled) {
         SkinnedGeometry g = chain(width + 10, 203, width, 6);
         Skinner vector = new VectorSkinnerProvider().create(method, g, normals);
         assertTrue(vector instanceof VectorStbsSkinner, "the provider offers the vector kernel for " + method);
@@ -135,7 +135,7 @@ class VectorStbsSkinnerTest {
                         assertTrue(Float.isNaN(vf[i]), "float " + i + " outside the range was written");
                         continue;
                     }
-                    check(vector, "frame", i, vf[i], sf[i]);
+                    check(vector, "deformation", i, vf[i], sf[i]);
                 }
             }
         }
@@ -170,7 +170,7 @@ class VectorStbsSkinnerTest {
     @ParameterizedTest
     @CsvSource({"STBS_LBS, INVERSE_TRANSPOSE", "STBS_LBS, BLENDED_MATRIX", "STBS_DQS, INVERSE_TRANSPOSE",
         "STBS_DQS, BLENDED_MATRIX"})
-    void framesAllocateNothingOnceCompiled(SkinningMethod method, NormalTransform normals) {
+    void deformationsAllocateNothingOnceCompiled(SkinningMethod method, NormalTransform normals) {
         assumeTrue(Runtime.version().feature() >= 25, "JDK 17's C2 leaves some lane permutations to Java code");
         int calls = 2_000;
         SkinnedGeometry g = chain(7, 200, 4, 6);
