@@ -1,4 +1,4 @@
-package org.skinlab.desktop.cli;
+package org.skinlab.desktop.eval;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -175,7 +175,7 @@ final class EvalQualitySection implements EvalSection {
                 continue;
             }
             for (int j = 0; j < geometry.jointCount(); j++) {
-                int p = CompareCommand.parentInPalette(model, geometry, j);
+                int p = geometry.jointParent(j);
                 if (p < 0) {
                     continue;
                 }

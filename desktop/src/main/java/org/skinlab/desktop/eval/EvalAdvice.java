@@ -1,4 +1,4 @@
-package org.skinlab.desktop.cli;
+package org.skinlab.desktop.eval;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;

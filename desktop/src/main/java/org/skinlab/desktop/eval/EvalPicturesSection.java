@@ -1,4 +1,4 @@
-package org.skinlab.desktop.cli;
+package org.skinlab.desktop.eval;
 
 import java.awt.Color;
 import java.awt.Font;
@@ -66,6 +66,8 @@ final class EvalPicturesSection implements EvalSection {
 
     /** Each asset's panels (in {@link #PANELS} order) from the last {@link #measure}, by file name. */
     private final Map<String, BufferedImage[]> pictures = new HashMap<>();
+    /** Draws the pictures; the last {@link #measure}'s. */
+    private ViewerProcess viewer;
 
     @Override
     public String key() {
@@ -86,6 +88,7 @@ final class EvalPicturesSection implements EvalSection {
     @Override
     public void measure(EvalContext context, ObjectNode results) {
         pictures.clear();
+        viewer = context.viewer();
         boolean quick = context.quick();
         int width = quick ? 480 : 640;
         int height = quick ? 360 : 480;
@@ -189,7 +192,7 @@ final class EvalPicturesSection implements EvalSection {
     }
 
     /** LBS against DQS at the bind pose (time 0), where both place every point alike. */
-    private static void control(Path file, int width, int height, Path work, ObjectNode control) {
+    private void control(Path file, int width, int height, Path work, ObjectNode control) {
         control.put("file", file.getFileName().toString());
         control.put("time", 0);
         Model model = ModelFiles.load(file).model;
@@ -209,9 +212,9 @@ final class EvalPicturesSection implements EvalSection {
      * The viewer's picture, cut into its halves when {@code width} holds a split view's two; null
      * (and the reason in {@code node}'s "skipped") when the viewer wrote none.
      */
-    private static BufferedImage[] render(Path file, List<String> arguments, int width, int height, Path png,
+    private BufferedImage[] render(Path file, List<String> arguments, int width, int height, Path png,
             ObjectNode node) {
-        String failed = ViewerProcess.screenshot(file, arguments, width, height, png);
+        String failed = viewer.screenshot(file, arguments, width, height, png);
         BufferedImage image = null;
         if (failed == null) {
             try {
