@@ -349,6 +349,19 @@ final class EvalPicturesSection implements EvalSection {
             report.paragraph("Skipped: " + results.get("skipped").asText() + ".");
             return;
         }
+        introduce(results, report);
+        List<String> skipped = table(results, report);
+        report.line("");
+        for (String s : skipped) {
+            report.paragraph("Skipped " + s + ".");
+        }
+        controlParagraph(results.get("control"), report);
+        sheets(results, report);
+        pictures.clear();
+    }
+
+    /** What the pictures show and what is measured in them. */
+    private static void introduce(JsonNode results, EvalReport report) {
         report.paragraph("Each asset at its extreme pose, drawn by the viewer (`skinlab view --screenshot --hide-ui`,"
                 + " a panel of " + EvalReport.num(results, "/panelWidth") + " by " + EvalReport.num(results,
                         "/panelHeight") + " pixels): LBS, DQS, CoR, and the difference view. The pose is the time of"
@@ -364,6 +377,10 @@ final class EvalPicturesSection implements EvalSection {
                 + " share of each panel the model covers, and the share of the model's pixels (in either panel)"
                 + " whose colour differs by more than " + EvalReport.num(results, "/pixelTolerance") + " levels"
                 + " between LBS and DQS, and between DQS and CoR.");
+    }
+
+    /** One row per asset drawn; returns the assets skipped, each with why. */
+    private static List<String> table(JsonNode results, EvalReport report) {
         report.header("asset", "time (s)", "clip (s)", "max abs(LBS - DQS) %", "yaw (degrees)", "LBS cover %",
                 "DQS cover %",
                 "CoR cover %", "difference cover %", "LBS vs DQS pixels %", "DQS vs CoR pixels %");
@@ -388,11 +405,11 @@ final class EvalPicturesSection implements EvalSection {
                     EvalReport.numOrDash(results, p + "/lbsDqsPixelsPercent"),
                     EvalReport.numOrDash(results, p + "/dqsCorPixelsPercent"));
         }
-        report.line("");
-        for (String s : skipped) {
-            report.paragraph("Skipped " + s + ".");
-        }
-        JsonNode control = results.get("control");
+        return skipped;
+    }
+
+    /** The control: LBS against DQS at the bind pose, or why it was skipped. */
+    private static void controlParagraph(JsonNode control, EvalReport report) {
         if (control.has("lbsDqsPixelsPercent")) {
             report.paragraph("Control: `" + control.get("file").asText() + "` at time " + EvalReport.num(control,
                     "/time") + " (the bind pose), where LBS and DQS lie " + EvalReport.num(control, "/maxLbsDqsPercent")
@@ -402,6 +419,11 @@ final class EvalPicturesSection implements EvalSection {
         } else {
             report.paragraph("Control skipped: " + quoted(control.path("skipped").asText("no picture")) + ".");
         }
+    }
+
+    /** Each drawn asset's four panels as one figure. */
+    private void sheets(JsonNode results, EvalReport report) {
+        JsonNode assets = results.get("assets");
         for (int a = 0; a < assets.size(); a++) {
             JsonNode asset = assets.get(a);
             BufferedImage[] panels = pictures.get(asset.get("file").asText());
@@ -418,7 +440,6 @@ final class EvalPicturesSection implements EvalSection {
                             + EvalReport.format(asset.get("yawDegrees"))
                             + " degrees)", panels, labels(results)));
         }
-        pictures.clear();
     }
 
     /**
