@@ -78,10 +78,7 @@ final class EvalCrowdsSection implements EvalSection {
         results.put("threadCrowd", threadCrowd);
         results.put("compiledBytes", CrowdBench.COMPILED_BYTES);
         results.put("maxCharacters", counts[counts.length - 1]);
-        ArrayNode thesis = results.putArray("thesis");
-        for (double[] t : THESIS) {
-            thesis.addObject().put("meshes", (int) t[0]).put("dqsFps", t[1]).put("lbsFps", t[2]);
-        }
+        putThesis(results.putArray("thesis"));
         List<Path> files = files(context, results);
         boolean render = EvalCrowdsRender.display() != null;
         double cpuShare = render ? (quick ? 0.55 : 0.6) : 1;
@@ -118,10 +115,15 @@ final class EvalCrowdsSection implements EvalSection {
                 done = blockStart + block;
             }
         }
-        ObjectNode renderNode = results.putObject("render");
-        Path renderFile = files.get(files.size() - 1);
-        EvalCrowdsRender.measure(context, renderNode, renderFile, cpuShare);
+        EvalCrowdsRender.measure(context, results.putObject("render"), files.get(files.size() - 1), cpuShare);
         beside(results);
+    }
+
+    /** The thesis' frame rates per number of meshes, DQS and LBS. */
+    private static void putThesis(ArrayNode thesis) {
+        for (double[] t : THESIS) {
+            thesis.addObject().put("meshes", (int) t[0]).put("dqsFps", t[1]).put("lbsFps", t[2]);
+        }
     }
 
     /** The walker, and the thesis' cowboy when the shared corpus has it (else why not, in results and said). */
