@@ -64,7 +64,10 @@ public final class Evaluation {
         }
     }
 
-    /** Measures every section, then writes results.json, README.md and the figures; {@code args} is the command line. */
+    /**
+     * Measures every section, then writes results.json, README.md and the figures; {@code args} is
+     * the command line.
+     */
     public Written run(List<String> args) throws IOException {
         Files.createDirectories(out);
         ObjectMapper mapper = new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT);
