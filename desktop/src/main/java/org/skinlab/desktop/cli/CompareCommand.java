@@ -69,7 +69,7 @@ public final class CompareCommand implements Callable<Integer> {
             if (j < 0) {
                 continue;
             }
-            int p = parentInPalette(model, geometry, j);
+            int p = geometry.jointParent(j);
             if (p < 0) {
                 throw new CommandFailure(ExitCodes.USAGE, joint + " has no parent joint in its skin: no joint region"
                         + " to measure", null);
@@ -151,18 +151,6 @@ public final class CompareCommand implements Callable<Integer> {
                 Node n = model.node(node);
                 if (name.equals(n.name()) || name.equals(n.id()) || name.equals(n.sid())) {
                     return j;
-                }
-            }
-        }
-        return -1;
-    }
-
-    /** The palette index of the nearest ancestor of joint {@code j} that is in the palette, or -1. */
-    static int parentInPalette(Model model, SkinnedGeometry g, int j) {
-        for (int node = model.node(g.jointNode(j)).parent(); node >= 0; node = model.node(node).parent()) {
-            for (int k = 0; k < g.jointCount(); k++) {
-                if (g.jointNode(k) == node) {
-                    return k;
                 }
             }
         }

@@ -17,6 +17,7 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 
 import org.skinlab.desktop.CommandFailure;
 import org.skinlab.desktop.ExitCodes;
+import org.skinlab.desktop.JavaRuntime;
 import org.skinlab.desktop.ModelFileSearch;
 import org.skinlab.desktop.ModelFiles;
 import org.skinlab.desktop.bench.BenchCorpus;

@@ -12,6 +12,7 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 
 import org.skinlab.desktop.ExitCodes;
 import org.skinlab.desktop.ModelFileSearch;
+import org.skinlab.desktop.eval.InfluenceCapReport;
 import org.skinlab.model.Mesh;
 import org.skinlab.model.ImportException;
 import org.skinlab.model.Model;

@@ -18,6 +18,7 @@ import org.skinlab.desktop.CommandFailure;
 import org.skinlab.desktop.ExitCodes;
 import org.skinlab.desktop.ModelFileSearch;
 import org.skinlab.desktop.ModelFiles;
+import org.skinlab.desktop.eval.InfluenceCapReport;
 import org.skinlab.importer.ModelImporter;
 import org.skinlab.model.AnimationClip;
 import org.skinlab.model.ImportWarning;

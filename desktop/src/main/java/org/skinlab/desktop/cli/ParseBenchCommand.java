@@ -17,6 +17,7 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 
 import org.skinlab.desktop.CommandFailure;
 import org.skinlab.desktop.ExitCodes;
+import org.skinlab.desktop.JavaRuntime;
 import org.skinlab.desktop.bench.AssimpBaseline;
 import org.skinlab.desktop.bench.ParseTimer;
 import org.skinlab.desktop.bench.SyntheticCollada;

@@ -16,6 +16,7 @@ import com.fasterxml.jackson.databind.SerializationFeature;
 
 import org.skinlab.desktop.CommandFailure;
 import org.skinlab.desktop.ExitCodes;
+import org.skinlab.desktop.JavaRuntime;
 import org.skinlab.desktop.ModelFiles;
 import org.skinlab.desktop.bench.CrowdBench;
 import org.skinlab.desktop.bench.RenderBench;

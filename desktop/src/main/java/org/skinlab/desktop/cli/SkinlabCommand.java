@@ -7,6 +7,7 @@ import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import org.skinlab.desktop.CommandFailure;
 import org.skinlab.desktop.ExitCodes;
+import org.skinlab.desktop.JavaRuntime;
 
 /** The {@code skinlab} command and its subcommands. */
 @Command(name = "skinlab", mixinStandardHelpOptions = true, versionProvider = SkinlabCommand.Version.class,

@@ -9,6 +9,7 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 
 import org.skinlab.desktop.CommandFailure;
 import org.skinlab.desktop.ExitCodes;
+import org.skinlab.desktop.JavaRuntime;
 import org.skinlab.desktop.bench.SkinningTiming;
 import org.skinlab.desktop.bench.SyntheticSkinData;
 import org.skinlab.desktop.bench.ThesisSkinningBaseline;

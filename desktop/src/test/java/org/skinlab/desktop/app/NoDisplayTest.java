@@ -22,7 +22,7 @@ class NoDisplayTest {
     void aClearLineWhenNoWindowCanBeOpened() throws Exception {
         Path java = Path.of(System.getProperty("java.home"), "bin", "java");
         ProcessBuilder pb = new ProcessBuilder(List.of(java.toString(), "-cp", System.getProperty("java.class.path"),
-                "org.skinlab.desktop.SkinlabMain", "--exit-after-frames", "5"));
+                "org.skinlab.desktop.cli.SkinlabMain", "--exit-after-frames", "5"));
         pb.environment().remove("DISPLAY");
         pb.environment().remove("WAYLAND_DISPLAY");
         pb.redirectErrorStream(true);

@@ -22,7 +22,7 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.skinlab.collada.ColladaImporter;
-import org.skinlab.desktop.SkinlabMain;
+import org.skinlab.desktop.cli.SkinlabMain;
 import org.skinlab.model.AnimationClip;
 import org.skinlab.model.Mesh;
 import org.skinlab.model.Model;

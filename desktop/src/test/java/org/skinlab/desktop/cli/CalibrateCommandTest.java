@@ -15,6 +15,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.skinlab.ar.CameraIntrinsics;
 import org.skinlab.ar.GrayImage;
+import org.skinlab.desktop.Cli;
 import org.skinlab.desktop.ExitCodes;
 import org.skinlab.desktop.ar.CalibrationPhotos;
 import org.skinlab.desktop.ar.GrayImages;

@@ -11,6 +11,7 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.skinlab.collada.ColladaImporter;
+import org.skinlab.desktop.Cli;
 import org.skinlab.model.Mesh;
 import org.skinlab.skinning.CentresOfRotation;
 import org.skinlab.skinning.SkinnedGeometry;

@@ -11,6 +11,7 @@ import java.util.List;
 
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.skinlab.desktop.Cli;
 import org.skinlab.desktop.render.GlTestDisplay;
 import org.skinlab.skinning.SkinningGlsl;
 import org.skinlab.skinning.SkinningMethod;

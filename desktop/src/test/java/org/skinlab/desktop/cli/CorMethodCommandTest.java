@@ -12,6 +12,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.skinlab.animation.RotationInterpolation;
 import org.skinlab.collada.ColladaImporter;
+import org.skinlab.desktop.Cli;
 import org.skinlab.skinning.SkinnedModel;
 import org.skinlab.skinning.SkinningMethod;
 

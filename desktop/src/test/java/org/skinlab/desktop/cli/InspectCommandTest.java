@@ -9,6 +9,7 @@ import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 
 import org.junit.jupiter.api.Test;
+import org.skinlab.desktop.Cli;
 import org.skinlab.desktop.ExitCodes;
 
 /**

@@ -11,6 +11,7 @@ import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 
 import org.junit.jupiter.api.Test;
+import org.skinlab.desktop.Cli;
 import org.skinlab.desktop.ExitCodes;
 
 /** {@code skinlab bench parse FILE --json}: the keys ParseBenchCommand writes, with sane values. */

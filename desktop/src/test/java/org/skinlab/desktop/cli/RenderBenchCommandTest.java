@@ -12,6 +12,7 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.skinlab.desktop.Cli;
 import org.skinlab.desktop.bench.RenderBench;
 import org.skinlab.desktop.render.GlTestDisplay;
 

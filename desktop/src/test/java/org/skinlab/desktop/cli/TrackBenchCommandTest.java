@@ -13,6 +13,7 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.skinlab.ar.CameraIntrinsics;
+import org.skinlab.desktop.Cli;
 import org.skinlab.desktop.ExitCodes;
 import org.skinlab.desktop.ar.DemoVideo;
 import org.skinlab.desktop.ar.GrayImages;

@@ -18,6 +18,7 @@ import org.skinlab.ar.MarkerPattern;
 import org.skinlab.ar.synthetic.PlacedMarker;
 import org.skinlab.ar.synthetic.SceneOptions;
 import org.skinlab.ar.synthetic.SyntheticCamera;
+import org.skinlab.desktop.Cli;
 import org.skinlab.desktop.ExitCodes;
 import org.skinlab.desktop.ar.DemoVideo;
 import org.skinlab.desktop.ar.GrayImages;

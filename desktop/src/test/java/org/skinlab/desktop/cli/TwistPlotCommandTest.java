@@ -8,6 +8,7 @@ import java.nio.file.Path;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.skinlab.desktop.Cli;
 
 /** {@code skinlab twist-plot}: the table of twist and radius per ring, and the PNG. */
 class TwistPlotCommandTest {

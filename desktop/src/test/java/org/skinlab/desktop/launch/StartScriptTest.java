@@ -52,7 +52,7 @@ class StartScriptTest {
         assertEquals("fake-java", args.get(0), r::toString);
         assertEquals(List.of("--enable-native-access=ALL-UNNAMED", "--sun-misc-unsafe-memory-access=allow",
                 "--add-modules", "jdk.incubator.vector", "-classpath"), args.subList(1, 6), r::toString);
-        assertEquals(List.of("org.skinlab.desktop.SkinlabMain", "--version", "two words"),
+        assertEquals(List.of("org.skinlab.desktop.cli.SkinlabMain", "--version", "two words"),
                 args.subList(7, args.size()), r::toString);
         assertEquals("", r.err);
         // Probed once with the options it then ran with.

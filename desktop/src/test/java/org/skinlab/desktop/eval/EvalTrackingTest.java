@@ -1,4 +1,4 @@
-package org.skinlab.desktop.cli;
+package org.skinlab.desktop.eval;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;

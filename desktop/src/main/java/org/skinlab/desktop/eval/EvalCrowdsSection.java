@@ -1,4 +1,4 @@
-package org.skinlab.desktop.cli;
+package org.skinlab.desktop.eval;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -78,10 +78,7 @@ final class EvalCrowdsSection implements EvalSection {
         results.put("threadCrowd", threadCrowd);
         results.put("compiledBytes", CrowdBench.COMPILED_BYTES);
         results.put("maxCharacters", counts[counts.length - 1]);
-        ArrayNode thesis = results.putArray("thesis");
-        for (double[] t : THESIS) {
-            thesis.addObject().put("meshes", (int) t[0]).put("dqsFps", t[1]).put("lbsFps", t[2]);
-        }
+        putThesis(results.putArray("thesis"));
         List<Path> files = files(context, results);
         boolean render = EvalCrowdsRender.display() != null;
         double cpuShare = render ? (quick ? 0.55 : 0.6) : 1;
@@ -118,10 +115,15 @@ final class EvalCrowdsSection implements EvalSection {
                 done = blockStart + block;
             }
         }
-        ObjectNode renderNode = results.putObject("render");
-        Path renderFile = files.get(files.size() - 1);
-        EvalCrowdsRender.measure(context, renderNode, renderFile, cpuShare);
+        EvalCrowdsRender.measure(context, results.putObject("render"), files.get(files.size() - 1), cpuShare);
         beside(results);
+    }
+
+    /** The thesis' frame rates per number of meshes, DQS and LBS. */
+    private static void putThesis(ArrayNode thesis) {
+        for (double[] t : THESIS) {
+            thesis.addObject().put("meshes", (int) t[0]).put("dqsFps", t[1]).put("lbsFps", t[2]);
+        }
     }
 
     /** The walker, and the thesis' cowboy when the shared corpus has it (else why not, in results and said). */
@@ -185,6 +187,20 @@ final class EvalCrowdsSection implements EvalSection {
 
     @Override
     public void report(JsonNode results, EvalReport report) {
+        introduce(results, report);
+        if (results.has("cowboySkipped")) {
+            report.paragraph("The cowboy is skipped: `" + results.get("cowboySkipped").asText() + "`.");
+        }
+        threadsTable(results, report);
+        threadsFigure(results, report);
+        crowdTable(results, report);
+        charactersFigure(results, report);
+        EvalCrowdsRender.report(results.get("render"), "/render", results, report);
+        besideTable(results, report);
+    }
+
+    /** How a crowd is run and timed, and this machine's cores. */
+    private static void introduce(JsonNode results, EvalReport report) {
         report.paragraph("A crowd on the CPU: copies of a character, each playing its first clip from its own point"
                 + " (phases spread over the clip), every frame each copy sampled, posed and skinned, positions and"
                 + " exact normals (`bench frame`'s frame, the fastest kernels), the copies handed out to a fixed pool"
@@ -207,9 +223,10 @@ final class EvalCrowdsSection implements EvalSection {
                 + EvalReport.num(results, "/stopMillis") + " ms. Bytes per frame: what the crowd's threads allocated"
                 + " per timed frame; caller's share: the part of the copies the calling thread ran itself (1 / threads"
                 + " when every thread gets a core; near 1 when the machine gives the pool's threads none).");
-        if (results.has("cowboySkipped")) {
-            report.paragraph("The cowboy is skipped: `" + results.get("cowboySkipped").asText() + "`.");
-        }
+    }
+
+    /** A row per character, method and number of threads. */
+    private static void threadsTable(JsonNode results, EvalReport report) {
         report.header("character", "points per copy", "method", "threads", "copies", "frames", "median µs",
                 "min µs", "characters per frame", "caller's share", "bytes per frame");
         JsonNode models = results.get("models");
@@ -226,7 +243,11 @@ final class EvalCrowdsSection implements EvalSection {
             }
         }
         report.line("");
-        threadsFigure(results, report);
+    }
+
+    /** A row per character, method and crowd size at all threads. */
+    private static void crowdTable(JsonNode results, EvalReport report) {
+        JsonNode models = results.get("models");
         report.header("character", "method", "copies", "threads", "frames", "median µs", "fps", "caller's share",
                 "bytes per frame");
         for (int i = 0; i < models.size(); i++) {
@@ -241,9 +262,6 @@ final class EvalCrowdsSection implements EvalSection {
             }
         }
         report.line("");
-        charactersFigure(results, report);
-        EvalCrowdsRender.report(results.get("render"), "/render", results, report);
-        besideTable(results, report);
     }
 
     /** The warm-ups' lengths, per character and method. */

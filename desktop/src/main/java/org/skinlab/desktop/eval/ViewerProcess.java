@@ -1,4 +1,4 @@
-package org.skinlab.desktop.cli;
+package org.skinlab.desktop.eval;
 
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
@@ -9,8 +9,6 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.TimeUnit;
-
-import org.skinlab.desktop.SkinlabMain;
 
 /**
  * One picture by the viewer's own headless path, {@code skinlab view FILE --screenshot OUT.png
@@ -29,7 +27,11 @@ final class ViewerProcess {
     /** Lines of the child's output kept for the message of a failure. */
     private static final int KEPT_LINES = 3;
 
-    private ViewerProcess() {
+    /** The class whose {@code main} runs {@code skinlab}'s commands. */
+    private final Class<?> skinlabMain;
+
+    ViewerProcess(Class<?> skinlabMain) {
+        this.skinlabMain = skinlabMain;
     }
 
     /** Whether a window can be opened at all: an X or Wayland display is set. */
@@ -41,12 +43,12 @@ final class ViewerProcess {
      * Renders {@code file} with {@code viewArguments} (e.g. "--method", "lbs", "--time", "4")
      * at {@code width x height} into {@code png}; returns null when written, else why not (one line).
      */
-    static String screenshot(Path file, List<String> viewArguments, int width, int height, Path png) {
+    String screenshot(Path file, List<String> viewArguments, int width, int height, Path png) {
         List<String> command = new ArrayList<>();
         command.add(Paths.get(System.getProperty("java.home"), "bin", "java").toString());
         // A short-lived child: a small heap, the quick JIT tier, no parallel collector threads.
         command.addAll(List.of("-Xmx768m", "-XX:TieredStopAtLevel=1", "-XX:+UseSerialGC", "-cp",
-                System.getProperty("java.class.path"), SkinlabMain.class.getName(), "view", file.toString()));
+                System.getProperty("java.class.path"), skinlabMain.getName(), "view", file.toString()));
         command.addAll(viewArguments);
         command.addAll(List.of("--size", width + "x" + height, "--hide-ui", "--screenshot", png.toString()));
         Path log = null;

@@ -1,4 +1,4 @@
-package org.skinlab.desktop.cli;
+package org.skinlab.desktop.eval;
 
 import java.util.ArrayList;
 import java.util.Arrays;
@@ -131,20 +131,23 @@ final class EvalTrackingSection implements EvalSection {
                     frame++;
                     context.progress((warm + frame) / total);
                 }
-                int boofFound = boofHits[0];
-                boofAll += boofFound;
-                ObjectNode bin = table.addObject();
-                bin.put("distanceMin", DISTANCES[d]);
-                bin.put("distanceMax", DISTANCES[d + 1]);
-                bin.put("tiltMin", TILTS[t]);
-                bin.put("tiltMax", TILTS[t + 1]);
-                tally(bin, tally);
-                bin.put("boofFound", boofFound);
+                boofAll += boofHits[0];
+                putBin(table.addObject(), d, t, tally, boofHits[0]);
             }
         }
         putSummary(results, all, boofAll, aboutOneMetre, oursMs, boofMs);
 
         falseMarkers(context, results, sizes, ours, warm + frame, total);
+    }
+
+    /** Bin {@code d}, {@code t}: its distances and tilts, what our tracker found and what BoofCV's did. */
+    private static void putBin(ObjectNode bin, int d, int t, DetectionTally tally, int boofFound) {
+        bin.put("distanceMin", DISTANCES[d]);
+        bin.put("distanceMax", DISTANCES[d + 1]);
+        bin.put("tiltMin", TILTS[t]);
+        bin.put("tiltMax", TILTS[t + 1]);
+        tally(bin, tally);
+        bin.put("boofFound", boofFound);
     }
 
     /**
@@ -307,6 +310,20 @@ final class EvalTrackingSection implements EvalSection {
                 + " own seed. Found: detections with the marker's id; the errors are the found markers' medians"
                 + " against the rendered pose. BoofCV's own detector with its default settings ran on the same"
                 + " frames.");
+        binTable(results, report);
+        aboutOneMetreReport(results, report);
+        binFigure(results, "foundPercent", "found (%)", "tracking-found.png",
+                "Markers found against distance, a line per tilt band", Styler.LegendPosition.InsideSW, report);
+        binFigure(results, "medianPositionMm", "median position error (mm)", "tracking-position-error.png",
+                "Median position error against distance, a line per tilt band", Styler.LegendPosition.InsideNW, report);
+        binFigure(results, "medianRotationDegrees", "median rotation error (degrees)", "tracking-rotation-error.png",
+                "Median rotation error against distance, a line per tilt band", Styler.LegendPosition.InsideNW, report);
+        falseMarkersReport(results, report);
+        timeReport(results, report);
+    }
+
+    /** A row per bin of distance and tilt, and one of all frames. */
+    private static void binTable(JsonNode results, EvalReport report) {
         report.header("distance m", "tilt degrees", "found", "found %", "wrong ids", "median position error mm",
                 "median rotation error degrees", "BoofCV default found");
         JsonNode bins = results.get("bins");
@@ -324,6 +341,10 @@ final class EvalTrackingSection implements EvalSection {
                 EvalReport.numOrDash(results, "/all/medianPositionMm"),
                 EvalReport.numOrDash(results, "/all/medianRotationDegrees"), EvalReport.num(results, "/all/boofFound"));
         report.line("");
+    }
+
+    /** The frames at about 1 m against the tracker's goals. */
+    private static void aboutOneMetreReport(JsonNode results, EvalReport report) {
         report.paragraph("At about 1 m (" + EvalReport.num(results, "/aboutOneMetre/distanceMin") + "-"
                 + EvalReport.num(results, "/aboutOneMetre/distanceMax") + " m, tilts up to "
                 + EvalReport.num(results, "/aboutOneMetre/tiltMax") + " degrees, "
@@ -333,13 +354,10 @@ final class EvalTrackingSection implements EvalSection {
                 + EvalReport.numOrDash(results, "/aboutOneMetre/medianRotationDegrees") + " degrees (the tracker's"
                 + " goals, docs/ar.md: at most " + EvalReport.num(results, "/aboutOneMetre/goalPositionMm") + " mm and "
                 + EvalReport.num(results, "/aboutOneMetre/goalRotationDegrees") + " degrees).");
-        binFigure(results, "foundPercent", "found (%)", "tracking-found.png",
-                "Markers found against distance, a line per tilt band", Styler.LegendPosition.InsideSW, report);
-        binFigure(results, "medianPositionMm", "median position error (mm)", "tracking-position-error.png",
-                "Median position error against distance, a line per tilt band", Styler.LegendPosition.InsideNW, report);
-        binFigure(results, "medianRotationDegrees", "median rotation error (degrees)", "tracking-rotation-error.png",
-                "Median rotation error against distance, a line per tilt band", Styler.LegendPosition.InsideNW, report);
+    }
 
+    /** Markers reported on frames that show none: ours against BoofCV's. */
+    private static void falseMarkersReport(JsonNode results, EvalReport report) {
         report.heading(3, "False markers");
         report.paragraph("Markers reported on frames that show none of the dictionary's (`NegativeFrames`): "
                 + EvalReport.num(results, "/clutter/frames") + " frames of " + EvalReport.num(results, "/clutter/width")
@@ -356,7 +374,10 @@ final class EvalTrackingSection implements EvalSection {
         report.row("other codes, " + EvalReport.num(results, "/otherCodes/frames"),
                 EvalReport.num(results, "/otherCodes/ours"), EvalReport.num(results, "/otherCodes/boofDefault"));
         report.line("");
+    }
 
+    /** Both detectors' time per frame. */
+    private static void timeReport(JsonNode results, EvalReport report) {
         report.heading(3, "Time per frame");
         report.paragraph("Both detectors on the " + EvalReport.num(results, "/time/frames") + " frames above, one"
                 + " thread (BoofCV's pool off), each frame's time by the wall clock after "

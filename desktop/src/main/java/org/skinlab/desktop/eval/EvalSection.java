@@ -1,4 +1,4 @@
-package org.skinlab.desktop.cli;
+package org.skinlab.desktop.eval;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
@@ -6,7 +6,7 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 /**
  * One section of {@code skinlab eval}'s report: it measures into its node of results.json, then
  * writes its part of README.md and its figures from that node alone (so every number the report
- * prints is one results.json holds). A new section is a class listed in {@link EvalCommand#SECTIONS}.
+ * prints is one results.json holds). A new section is a class listed in {@link Evaluation#SECTIONS}.
  */
 interface EvalSection {
     /** The name {@code --only} selects it by, e.g. "load"; also its key in results.json. */

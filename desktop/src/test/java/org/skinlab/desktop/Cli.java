@@ -1,4 +1,4 @@
-package org.skinlab.desktop.cli;
+package org.skinlab.desktop;
 
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
@@ -9,11 +9,16 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Optional;
 
-/** Runs the command line in this JVM and keeps what it printed. */
-final class Cli {
-    final int status;
-    final String out;
-    final String err;
+import org.skinlab.desktop.cli.SkinlabCommand;
+
+/**
+ * Runs the command line in this JVM and keeps what it printed; where the repository and the shared
+ * fixtures are, for the tests of every package.
+ */
+public final class Cli {
+    public final int status;
+    public final String out;
+    public final String err;
 
     private Cli(int status, String out, String err) {
         this.status = status;
@@ -21,7 +26,7 @@ final class Cli {
         this.err = err;
     }
 
-    static Cli run(String... args) {
+    public static Cli run(String... args) {
         StringWriter out = new StringWriter();
         StringWriter err = new StringWriter();
         int status = SkinlabCommand.run(new PrintWriter(out), new PrintWriter(err), args);
@@ -29,14 +34,14 @@ final class Cli {
     }
 
     /** The field names of a JSON object, in order. */
-    static java.util.List<String> keys(com.fasterxml.jackson.databind.JsonNode object) {
+    public static java.util.List<String> keys(com.fasterxml.jackson.databind.JsonNode object) {
         java.util.List<String> keys = new java.util.ArrayList<>();
         object.fieldNames().forEachRemaining(keys::add);
         return keys;
     }
 
     /** The lines printed on stderr. */
-    String[] errLines() {
+    public String[] errLines() {
         return err.lines().toArray(String[]::new);
     }
 
@@ -49,7 +54,7 @@ final class Cli {
      * The repository root: the build passes {@code skinlab.root}; otherwise the folder above the
      * working directory that holds {@code settings.gradle}.
      */
-    static Path root() {
+    public static Path root() {
         String p = System.getProperty("skinlab.root");
         if (p != null) {
             return Path.of(p);
@@ -63,7 +68,7 @@ final class Cli {
     }
 
     /** The shared folder beside the repository: the build passes {@code skinlab.shared}. */
-    static Path shared() {
+    public static Path shared() {
         String p = System.getProperty("skinlab.shared");
         return p != null ? Path.of(p) : root().resolve("../shared").normalize();
     }
@@ -72,7 +77,7 @@ final class Cli {
      * The third-party corpus folder; aborts the calling test (reported as skipped, with the
      * reason) when it is absent.
      */
-    static Path corpusOrSkip() {
+    public static Path corpusOrSkip() {
         Path corpus = shared().resolve("corpus");
         assumeTrue(Files.isDirectory(corpus), () -> "shared corpus not found at " + corpus
                 + ": third-party corpus test skipped");
@@ -83,7 +88,7 @@ final class Cli {
      * One corpus file, or empty when the corpus is absent. Fails when the corpus is there but
      * lacks the file: a broken corpus must not pass for an absent one.
      */
-    static Optional<Path> corpusFile(String name) {
+    public static Optional<Path> corpusFile(String name) {
         Path corpus = shared().resolve("corpus");
         if (!Files.isDirectory(corpus)) {
             return Optional.empty();
@@ -94,13 +99,13 @@ final class Cli {
     }
 
     /** One corpus file; skips the calling test when the corpus is absent, fails when it lacks the file. */
-    static Path corpusFileOrSkip(String name) {
+    public static Path corpusFileOrSkip(String name) {
         corpusOrSkip();
         return corpusFile(name).orElseThrow();
     }
 
     /** The default asset, as an absolute path. */
-    static Path defaultAsset() {
+    public static Path defaultAsset() {
         return root().resolve("assets/characters/humanoid-walk.dae");
     }
 }

@@ -1,4 +1,4 @@
-package org.skinlab.desktop.cli;
+package org.skinlab.desktop.eval;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -193,6 +193,13 @@ final class EvalAdviceSection implements EvalSection {
 
     private static void scalingReport(JsonNode results, EvalReport report) {
         report.heading(3, "How the cost grows");
+        verticesReport(results, report);
+        influencesReport(results, report);
+        jointsReport(results, report);
+    }
+
+    /** Time per frame against vertices: the fitted lines and the vertices each fits into the budget. */
+    private static void verticesReport(JsonNode results, EvalReport report) {
         report.paragraph("Skinning alone (no pose), one thread, positions and exact normals, on the shared C++"
                 + " reference's synthetic data (" + EvalReport.num(results, "/vertices/joints") + " joints, "
                 + EvalReport.num(results, "/vertices/influences") + " influences per vertex), the median of "
@@ -216,6 +223,10 @@ final class EvalAdviceSection implements EvalSection {
         report.line("");
         report.figure("advice-vertices.png", "Time per frame against vertices, with the fitted lines",
                 verticesChart(results));
+    }
+
+    /** Time per vertex against influences per vertex. */
+    private static void influencesReport(JsonNode results, EvalReport report) {
         report.paragraph("Against the influences per vertex (" + EvalReport.num(results, "/influences/vertices")
                 + " vertices, the fastest kernels): the slope is the cost of one more influence per vertex.");
         report.header("method", "kernel name", "ns per vertex at each influence count", "ns per influence (slope)",
@@ -235,6 +246,10 @@ final class EvalAdviceSection implements EvalSection {
         }
         report.line("");
         report.figure("advice-influences.png", "ns per vertex against influences per vertex", influencesChart(results));
+    }
+
+    /** A frame's pose against the skin's joints, per file, and the fitted line when there is one. */
+    private static void jointsReport(JsonNode results, EvalReport report) {
         report.paragraph("Against the joints: the pose of a frame (sample the clip, evaluate the skeleton, the skinning"
                 + " matrices and dual quaternions) of each skinned file, against its skin's joints. The line through"
                 + " files of different skeletons and clips is rough; its slope is about what one more joint costs.");

@@ -1,4 +1,4 @@
-package org.skinlab.desktop.cli;
+package org.skinlab.desktop.eval;
 
 import java.io.PrintWriter;
 import java.nio.file.Files;
@@ -24,18 +24,20 @@ final class EvalContext {
     private final Path corpus;
     private final Path cts;
     private final PrintWriter log;
+    private final ViewerProcess viewer;
     private ProgressBar bar;
     private JsonNode measured;
     private long sectionStart;
     private long sectionLength;
 
-    EvalContext(boolean quick, Path root, PrintWriter log) {
+    EvalContext(boolean quick, Path root, PrintWriter log, ViewerProcess viewer) {
         this.quick = quick;
         this.root = root;
         this.corpus = BenchCorpus.sharedCorpus(root, Path.of(""));
         Path zip = root.resolve(SHARED_CTS).normalize();
         this.cts = Files.isRegularFile(zip) ? zip : null;
         this.log = log;
+        this.viewer = viewer;
     }
 
     boolean quick() {
@@ -64,6 +66,11 @@ final class EvalContext {
 
     Path ctsPlace() {
         return root.resolve(SHARED_CTS).normalize();
+    }
+
+    /** Draws the pictures by {@code skinlab view} in a child JVM. */
+    ViewerProcess viewer() {
+        return viewer;
     }
 
     /** Says something on stderr (above the bar). */

@@ -1,4 +1,4 @@
-package org.skinlab.desktop.cli;
+package org.skinlab.desktop.eval;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
@@ -179,21 +179,33 @@ final class EvalAdvice {
     private static void lowEnd(JsonNode in, JsonNode r, EvalReport report) {
         StringBuilder t = new StringBuilder("**Low-end phones.** ");
         JsonNode series = r.at("/vertices/series");
-        int lbs = -1;
-        int dqs = -1;
-        for (int i = 0; i < series.size(); i++) {
-            if (series.get(i).get("kernels").asText().equals("scalar")) {
-                if (series.get(i).get("method").asText().equals("lbs")) {
-                    lbs = i;
-                } else if (series.get(i).get("method").asText().equals("dqs")) {
-                    dqs = i;
-                }
-            }
-        }
+        int lbs = scalarSeries(series, "lbs");
+        int dqs = scalarSeries(series, "dqs");
         if (lbs < 0 || dqs < 0) {
             report.paragraph(t + "Not argued here: no scalar kernels' lines were measured.");
             return;
         }
+        lowEndBudget(r, lbs, dqs, t);
+        lowEndDrawn(in, r, t);
+        lowEndCap(in, r, t);
+        lowEndTracking(in, r, t);
+        report.paragraph(t.toString());
+    }
+
+    /** The index in {@code series} of the scalar kernels' line of {@code method}, or -1. */
+    private static int scalarSeries(JsonNode series, String method) {
+        int found = -1;
+        for (int i = 0; i < series.size(); i++) {
+            if (series.get(i).get("kernels").asText().equals("scalar")
+                    && series.get(i).get("method").asText().equals(method)) {
+                found = i;
+            }
+        }
+        return found;
+    }
+
+    /** The vertices the scalar lines {@code lbs} and {@code dqs} fit into the budget, and the GPU beyond. */
+    private static void lowEndBudget(JsonNode r, int lbs, int dqs, StringBuilder t) {
         t.append("In the scalar code a phone runs, the fitted lines put ")
                 .append(EvalReport.num(r, "/vertices/series/" + lbs + "/verticesInBudget")).append(" vertices (LBS) or ")
                 .append(EvalReport.num(r, "/vertices/series/" + dqs + "/verticesInBudget"))
@@ -209,15 +221,24 @@ final class EvalAdvice {
             }
         }
         t.append(". ");
-        if (in.has("drawn")) {
-            t.append("Drawn with GPU skinning, ").append(EvalReport.num(r, "/inputs/drawn/copies")).append(" copies of `")
-                    .append(in.at("/drawn/file").asText()).append("` run at ")
-                    .append(EvalReport.num(r, "/inputs/drawn/gpuDqsFps")).append(" fps with DQS on `")
-                    .append(in.at("/drawn/renderer").asText()).append("`")
-                    .append(in.at("/drawn/software").asBoolean() ? ", a software rasteriser on the CPU, not a GPU" : "")
-                    .append(" (the thesis' desktop, with CPU skinning: ").append(EvalReport.num(r, "/inputs/drawn/thesisDqsFps"))
-                    .append(" fps). ");
+    }
+
+    /** The drawn copies' frame rate with GPU skinning, when the crowds section drew them. */
+    private static void lowEndDrawn(JsonNode in, JsonNode r, StringBuilder t) {
+        if (!in.has("drawn")) {
+            return;
         }
+        t.append("Drawn with GPU skinning, ").append(EvalReport.num(r, "/inputs/drawn/copies")).append(" copies of `")
+                .append(in.at("/drawn/file").asText()).append("` run at ")
+                .append(EvalReport.num(r, "/inputs/drawn/gpuDqsFps")).append(" fps with DQS on `")
+                .append(in.at("/drawn/renderer").asText()).append("`")
+                .append(in.at("/drawn/software").asBoolean() ? ", a software rasteriser on the CPU, not a GPU" : "")
+                .append(" (the thesis' desktop, with CPU skinning: ").append(EvalReport.num(r, "/inputs/drawn/thesisDqsFps"))
+                .append(" fps). ");
+    }
+
+    /** What capping the influences to the GPU's costs, or that no file needed it. */
+    private static void lowEndCap(JsonNode in, JsonNode r, StringBuilder t) {
         if (in.has("cap")) {
             t.append("A GPU reads ").append(EvalReport.num(r, "/inputs/cap/cap"))
                     .append(" influences per vertex; capping `").append(in.at("/cap/file").asText())
@@ -229,6 +250,10 @@ final class EvalAdvice {
             t.append("(No file with more influences per vertex than a GPU reads was measured, so the cost of its cap is"
                     + " not shown here.)");
         }
+    }
+
+    /** The tracker's share of a frame, or that its section was not run. */
+    private static void lowEndTracking(JsonNode in, JsonNode r, StringBuilder t) {
         if (in.has("tracking")) {
             t.append(" The tracker's search of a whole ").append(EvalReport.num(r, "/inputs/tracking/width")).append("x")
                     .append(EvalReport.num(r, "/inputs/tracking/height")).append(" frame takes ")
@@ -242,7 +267,6 @@ final class EvalAdvice {
         } else {
             t.append(" The tracker's time per frame: the section `tracking` was not run (`--only`).");
         }
-        report.paragraph(t.toString());
     }
 
     private static String missing(String section) {

@@ -1,4 +1,4 @@
-package org.skinlab.desktop.cli;
+package org.skinlab.desktop.eval;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -96,7 +96,7 @@ final class EvalQualitySection implements EvalSection {
         Model model = ModelFiles.load(file).model;
         SkinnedModel skinned = new SkinnedModel(model, model.clips().isEmpty() ? null : model.clips().get(0),
                 NormalTransform.INVERSE_TRANSPOSE);
-        Measured measured = largestRegion(model, skinned);
+        Measured measured = largestRegion(skinned);
         if (measured == null) {
             asset.put("skipped", "no skinned geometry has a joint whose parent is in its skin");
             return;
@@ -106,10 +106,7 @@ final class EvalQualitySection implements EvalSection {
         int parent = measured.parent();
         JointArtifacts artifacts = measured.artifacts();
         SkinnedGeometry geometry = skinned.geometries().get(g);
-        asset.put("mesh", geometry.mesh() == null ? "?" : geometry.mesh().id());
-        asset.put("joint", name(model, geometry.jointNode(joint)));
-        asset.put("parent", name(model, geometry.jointNode(parent)));
-        asset.put("regionPoints", artifacts.regionSize());
+        putRegion(asset, model, geometry, measured);
         // The bulge in percent of the model's size (the distances' unit): model units rounded to 3
         // decimals would step the bend's curve in thousandths of a cylinder.
         double size = ArtifactMetrics.boundsDiagonal(geometry.positionArray(), geometry.vertexCount());
@@ -119,10 +116,7 @@ final class EvalQualitySection implements EvalSection {
         Map<SkinningMethod, ObjectNode> byMethod = methodNodes(asset.putObject("methods"));
         double lbsDqs = 0;
         double dqsCor = 0;
-        Map<SkinningMethod, float[]> posed = new EnumMap<>(SkinningMethod.class);
-        for (SkinningMethod m : SkinningMethod.values()) {
-            posed.put(m, new float[3 * geometry.pointCount()]);
-        }
+        Map<SkinningMethod, float[]> posed = posedPerMethod(geometry.pointCount());
         float[] normals = new float[3 * geometry.pointCount()];
         for (float time : times) {
             skinned.pose(time, RotationInterpolation.SLERP);
@@ -133,10 +127,7 @@ final class EvalQualitySection implements EvalSection {
             t.add(EvalReport.round(time));
             angles.add(EvalReport.round(Math.toDegrees(relativeAngle(matrices, parent, joint))));
             for (JointArtifacts.Report r : artifacts.report(posed, matrices)) {
-                ObjectNode node = byMethod.get(r.method());
-                add((ArrayNode) node.get("volume"), r.volume());
-                add((ArrayNode) node.get("ringRadius"), r.ringRadius());
-                add((ArrayNode) node.get("bulge"), size > 0 ? 100 * r.bulge() / size : r.bulge());
+                addSample(byMethod.get(r.method()), r, size);
                 if (r.method() == SkinningMethod.LBS) {
                     lbsDqs = Math.max(lbsDqs, r.distanceTo().get(SkinningMethod.DQS));
                 } else if (r.method() == SkinningMethod.DQS) {
@@ -144,16 +135,45 @@ final class EvalQualitySection implements EvalSection {
                 }
             }
         }
+        putExtremes(byMethod);
+        // Relative to the model's size: in percent, so that 3 decimals keep small differences.
+        asset.put("maxLbsDqsPercent", EvalReport.round(100 * lbsDqs));
+        asset.put("maxDqsCorPercent", EvalReport.round(100 * dqsCor));
+        caps(model, geometry, asset);
+    }
+
+    /** The measured joint region: its mesh, joint and parent by name, and its points. */
+    private static void putRegion(ObjectNode asset, Model model, SkinnedGeometry geometry, Measured measured) {
+        asset.put("mesh", geometry.mesh() == null ? "?" : geometry.mesh().id());
+        asset.put("joint", name(model, geometry.jointNode(measured.joint())));
+        asset.put("parent", name(model, geometry.jointNode(measured.parent())));
+        asset.put("regionPoints", measured.artifacts().regionSize());
+    }
+
+    /** A position array per method for {@code points} points. */
+    private static Map<SkinningMethod, float[]> posedPerMethod(int points) {
+        Map<SkinningMethod, float[]> posed = new EnumMap<>(SkinningMethod.class);
+        for (SkinningMethod m : SkinningMethod.values()) {
+            posed.put(m, new float[3 * points]);
+        }
+        return posed;
+    }
+
+    /** One sample of a method's region: volume, ring radius and bulge (in percent of {@code size} when known). */
+    private static void addSample(ObjectNode node, JointArtifacts.Report r, double size) {
+        add((ArrayNode) node.get("volume"), r.volume());
+        add((ArrayNode) node.get("ringRadius"), r.ringRadius());
+        add((ArrayNode) node.get("bulge"), size > 0 ? 100 * r.bulge() / size : r.bulge());
+    }
+
+    /** Each method's least volume and ring radius and its largest bulge over the samples. */
+    private static void putExtremes(Map<SkinningMethod, ObjectNode> byMethod) {
         for (SkinningMethod m : SkinningMethod.values()) {
             ObjectNode node = byMethod.get(m);
             extreme(node, "volume", "minVolume", false);
             extreme(node, "ringRadius", "minRingRadius", false);
             extreme(node, "bulge", "maxBulge", true);
         }
-        // Relative to the model's size: in percent, so that 3 decimals keep small differences.
-        asset.put("maxLbsDqsPercent", EvalReport.round(100 * lbsDqs));
-        asset.put("maxDqsCorPercent", EvalReport.round(100 * dqsCor));
-        caps(model, geometry, asset);
     }
 
     /** The joint measured in a file: its geometry, palette indices and the region it moves. */
@@ -164,7 +184,7 @@ final class EvalQualitySection implements EvalSection {
      * The joint with the largest region (of points it and its parent move) in the geometry with
      * the most points that has one; null when no joint's parent is in its skin.
      */
-    private static Measured largestRegion(Model model, SkinnedModel skinned) {
+    private static Measured largestRegion(SkinnedModel skinned) {
         int g = -1;
         int joint = -1;
         int parent = -1;
@@ -175,7 +195,7 @@ final class EvalQualitySection implements EvalSection {
                 continue;
             }
             for (int j = 0; j < geometry.jointCount(); j++) {
-                int p = CompareCommand.parentInPalette(model, geometry, j);
+                int p = geometry.jointParent(j);
                 if (p < 0) {
                     continue;
                 }

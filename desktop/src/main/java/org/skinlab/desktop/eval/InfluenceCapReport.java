@@ -1,4 +1,4 @@
-package org.skinlab.desktop.cli;
+package org.skinlab.desktop.eval;
 
 import java.util.ArrayList;
 import java.util.Collections;
@@ -21,31 +21,31 @@ import org.skinlab.skinning.SkinnedModel;
  * time it happens at. A mesh is measured through the first instance that places it with a skin
  * ({@code Model.instances()} order); a mesh no instance places with a skin has no report.
  */
-final class InfluenceCapReport {
+public final class InfluenceCapReport {
     static final int CAP_4 = 4;
     static final int CAP_8 = 8;
     private static final int[] CAPS = {CAP_4, CAP_8};
 
     /** The worst of one method over all clips; {@code clip} null when nothing moved (or no clip). */
-    record Worst(InfluenceCapError.Worst worst, String clip) {
+    public record Worst(InfluenceCapError.Worst worst, String clip) {
     }
 
     /** One cap of one mesh. */
-    record Cap(int cap, int cappedPositions, float maxDroppedWeight, Worst lbs, Worst dqs) {
+    public record Cap(int cap, int cappedPositions, float maxDroppedWeight, Worst lbs, Worst dqs) {
     }
 
     /**
      * One mesh: its influences per position, the rest size, the samples over all clips, the names
      * of the clips measured (empty: the rest pose alone) and one entry per cap.
      */
-    record MeshReport(int influences, double restSize, int samples, List<String> clips, List<Cap> caps) {
+    public record MeshReport(int influences, double restSize, int samples, List<String> clips, List<Cap> caps) {
     }
 
     private InfluenceCapReport() {
     }
 
     /** Per mesh of the model (by identity), for the meshes some instance places with a skin. */
-    static Map<Mesh, MeshReport> of(Model model) {
+    public static Map<Mesh, MeshReport> of(Model model) {
         Map<Mesh, Integer> instanceOf = new IdentityHashMap<>();
         List<MeshInstance> instances = model.instances();
         for (int g = 0; g < instances.size(); g++) {

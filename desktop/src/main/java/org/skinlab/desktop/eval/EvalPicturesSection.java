@@ -1,4 +1,4 @@
-package org.skinlab.desktop.cli;
+package org.skinlab.desktop.eval;
 
 import java.awt.Color;
 import java.awt.Font;
@@ -66,6 +66,8 @@ final class EvalPicturesSection implements EvalSection {
 
     /** Each asset's panels (in {@link #PANELS} order) from the last {@link #measure}, by file name. */
     private final Map<String, BufferedImage[]> pictures = new HashMap<>();
+    /** Draws the pictures; the last {@link #measure}'s. */
+    private ViewerProcess viewer;
 
     @Override
     public String key() {
@@ -86,6 +88,7 @@ final class EvalPicturesSection implements EvalSection {
     @Override
     public void measure(EvalContext context, ObjectNode results) {
         pictures.clear();
+        viewer = context.viewer();
         boolean quick = context.quick();
         int width = quick ? 480 : 640;
         int height = quick ? 360 : 480;
@@ -189,7 +192,7 @@ final class EvalPicturesSection implements EvalSection {
     }
 
     /** LBS against DQS at the bind pose (time 0), where both place every point alike. */
-    private static void control(Path file, int width, int height, Path work, ObjectNode control) {
+    private void control(Path file, int width, int height, Path work, ObjectNode control) {
         control.put("file", file.getFileName().toString());
         control.put("time", 0);
         Model model = ModelFiles.load(file).model;
@@ -209,9 +212,9 @@ final class EvalPicturesSection implements EvalSection {
      * The viewer's picture, cut into its halves when {@code width} holds a split view's two; null
      * (and the reason in {@code node}'s "skipped") when the viewer wrote none.
      */
-    private static BufferedImage[] render(Path file, List<String> arguments, int width, int height, Path png,
+    private BufferedImage[] render(Path file, List<String> arguments, int width, int height, Path png,
             ObjectNode node) {
-        String failed = ViewerProcess.screenshot(file, arguments, width, height, png);
+        String failed = viewer.screenshot(file, arguments, width, height, png);
         BufferedImage image = null;
         if (failed == null) {
             try {
@@ -346,6 +349,19 @@ final class EvalPicturesSection implements EvalSection {
             report.paragraph("Skipped: " + results.get("skipped").asText() + ".");
             return;
         }
+        introduce(results, report);
+        List<String> skipped = table(results, report);
+        report.line("");
+        for (String s : skipped) {
+            report.paragraph("Skipped " + s + ".");
+        }
+        controlParagraph(results.get("control"), report);
+        sheets(results, report);
+        pictures.clear();
+    }
+
+    /** What the pictures show and what is measured in them. */
+    private static void introduce(JsonNode results, EvalReport report) {
         report.paragraph("Each asset at its extreme pose, drawn by the viewer (`skinlab view --screenshot --hide-ui`,"
                 + " a panel of " + EvalReport.num(results, "/panelWidth") + " by " + EvalReport.num(results,
                         "/panelHeight") + " pixels): LBS, DQS, CoR, and the difference view. The pose is the time of"
@@ -361,6 +377,10 @@ final class EvalPicturesSection implements EvalSection {
                 + " share of each panel the model covers, and the share of the model's pixels (in either panel)"
                 + " whose colour differs by more than " + EvalReport.num(results, "/pixelTolerance") + " levels"
                 + " between LBS and DQS, and between DQS and CoR.");
+    }
+
+    /** One row per asset drawn; returns the assets skipped, each with why. */
+    private static List<String> table(JsonNode results, EvalReport report) {
         report.header("asset", "time (s)", "clip (s)", "max abs(LBS - DQS) %", "yaw (degrees)", "LBS cover %",
                 "DQS cover %",
                 "CoR cover %", "difference cover %", "LBS vs DQS pixels %", "DQS vs CoR pixels %");
@@ -385,11 +405,11 @@ final class EvalPicturesSection implements EvalSection {
                     EvalReport.numOrDash(results, p + "/lbsDqsPixelsPercent"),
                     EvalReport.numOrDash(results, p + "/dqsCorPixelsPercent"));
         }
-        report.line("");
-        for (String s : skipped) {
-            report.paragraph("Skipped " + s + ".");
-        }
-        JsonNode control = results.get("control");
+        return skipped;
+    }
+
+    /** The control: LBS against DQS at the bind pose, or why it was skipped. */
+    private static void controlParagraph(JsonNode control, EvalReport report) {
         if (control.has("lbsDqsPixelsPercent")) {
             report.paragraph("Control: `" + control.get("file").asText() + "` at time " + EvalReport.num(control,
                     "/time") + " (the bind pose), where LBS and DQS lie " + EvalReport.num(control, "/maxLbsDqsPercent")
@@ -399,6 +419,11 @@ final class EvalPicturesSection implements EvalSection {
         } else {
             report.paragraph("Control skipped: " + quoted(control.path("skipped").asText("no picture")) + ".");
         }
+    }
+
+    /** Each drawn asset's four panels as one figure. */
+    private void sheets(JsonNode results, EvalReport report) {
+        JsonNode assets = results.get("assets");
         for (int a = 0; a < assets.size(); a++) {
             JsonNode asset = assets.get(a);
             BufferedImage[] panels = pictures.get(asset.get("file").asText());
@@ -415,7 +440,6 @@ final class EvalPicturesSection implements EvalSection {
                             + EvalReport.format(asset.get("yawDegrees"))
                             + " degrees)", panels, labels(results)));
         }
-        pictures.clear();
     }
 
     /**

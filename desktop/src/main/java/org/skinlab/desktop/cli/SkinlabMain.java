@@ -1,9 +1,8 @@
-package org.skinlab.desktop;
+package org.skinlab.desktop.cli;
 
 import java.nio.file.Path;
 import java.util.Locale;
 
-import org.skinlab.desktop.cli.SkinlabCommand;
 import org.skinlab.skinning.CentresOfRotation;
 
 /** Entry point of the {@code skinlab} application. */

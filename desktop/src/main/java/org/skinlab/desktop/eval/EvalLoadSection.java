@@ -1,4 +1,4 @@
-package org.skinlab.desktop.cli;
+package org.skinlab.desktop.eval;
 
 import java.io.IOException;
 import java.io.InputStream;
@@ -179,9 +179,9 @@ final class EvalLoadSection implements EvalSection {
         g.put("slowestMillis", EvalReport.round(slowest));
         double[] m = medians.stream().mapToDouble(Double::doubleValue).sorted().toArray();
         if (m.length > 0) {
-            g.put("medianOfMediansMillis", EvalReport.round(m[m.length / 2]));
-            g.put("sumOfMediansMillis", EvalReport.round(Arrays.stream(m).sum()));
-        }
+        g.put("medianOfMediansMillis", EvalReport.round(m[m.length / 2]));
+        g.put("sumOfMediansMillis", EvalReport.round(Arrays.stream(m).sum()));
+    }
     }
 
     /** How many files assimp imported and refused, and the median file's assimp / ours. */
@@ -192,11 +192,11 @@ final class EvalLoadSection implements EvalSection {
         java.util.Map<String, Integer> messages = new java.util.TreeMap<>();
         for (JsonNode f : files) {
             if (f.has("assimpRatio")) {
-                imported++;
-                ratios.add(f.get("assimpRatio").asDouble());
+        imported++;
+        ratios.add(f.get("assimpRatio").asDouble());
             } else if (f.has("assimpError")) {
-                refused++;
-                messages.merge(f.get("assimpError").asText(), 1, Integer::sum);
+        refused++;
+        messages.merge(f.get("assimpError").asText(), 1, Integer::sum);
             }
         }
         if (imported + refused == 0) {
@@ -215,6 +215,35 @@ final class EvalLoadSection implements EvalSection {
     @Override
     public void report(JsonNode results, EvalReport report) {
         boolean assimp = results.has("assimpVersion");
+        introduce(results, assimp, report);
+        List<String[]> bars = new ArrayList<>();
+        JsonNode groups = results.get("groups");
+        for (int i = 0; i < groups.size(); i++) {
+            JsonNode g = groups.get(i);
+            String at = "/groups/" + i;
+            report.heading(3, capitalised(g.get("title").asText()));
+            if (g.has("skipped")) {
+                report.paragraph("Skipped: `" + g.get("skipped").asText() + "`.");
+                continue;
+            }
+            groupSummary(results, g, at, report);
+            if (g.has("assimpImported")) {
+        assimpSummary(results, g, at, report);
+    }
+    if (g.get("key").asText().equals("cts")) {
+        refusals(results, at, report);
+        ctsFigure(g, report);
+        continue;
+    }
+    fileTable(results, g, at, report, bars);
+}
+if (!bars.isEmpty()) {
+    filesFigure(bars, assimp, report);
+}
+    }
+
+    /** How the files are timed, the thesis' requirement, and assimp beside (or why it is absent). */
+    private static void introduce(JsonNode results, boolean assimp, EvalReport report) {
         report.paragraph("Each file is read into memory, then imported " + EvalReport.num(results, "/runsPerFile")
                 + " times after a shared warm-up of " + EvalReport.num(results, "/warmupSeconds")
                 + " s (files of the conformance suite " + EvalReport.num(results, "/ctsRunsPerFile")
@@ -226,68 +255,59 @@ final class EvalLoadSection implements EvalSection {
                         + " bytes right after ours, with the same protocol; assimp / ours above one means we are"
                         + " faster."
                         : "assimp is absent here (`" + results.get("assimpMissing").asText() + "`)."));
-        List<String[]> bars = new ArrayList<>();
-        JsonNode groups = results.get("groups");
-        for (int i = 0; i < groups.size(); i++) {
-            JsonNode g = groups.get(i);
-            String at = "/groups/" + i;
-            report.heading(3, capitalised(g.get("title").asText()));
-            if (g.has("skipped")) {
-                report.paragraph("Skipped: `" + g.get("skipped").asText() + "`.");
-                continue;
-            }
-            report.paragraph(EvalReport.num(results, at + "/underRequirement") + " of "
-                    + EvalReport.num(results, at + "/imported") + " imported files meet the requirement (the"
-                    + " slowest import: " + EvalReport.num(results, at + "/slowestMillis") + " ms); "
-                    + EvalReport.num(results, at + "/refused") + " of " + EvalReport.num(results, at + "/fileCount")
-                    + " refused" + (g.has("medianOfMediansMillis") ? "; the median file imports in "
-                            + EvalReport.num(results, at + "/medianOfMediansMillis") + " ms, all of them in "
-                            + EvalReport.num(results, at + "/sumOfMediansMillis") + " ms" : "") + "."
-                    + (results.has("ctsEvery") && g.get("key").asText().equals("cts")
-                            ? " Quick run: one file in " + EvalReport.num(results, "/ctsEvery") + " of the suite, in"
-                                    + " name order." : ""));
-            if (g.has("assimpImported")) {
-                report.paragraph("assimp imports " + EvalReport.num(results, at + "/assimpImported") + " of these files"
-                        + " and refuses " + EvalReport.num(results, at + "/assimpRefused")
-                        + (g.has("medianAssimpRatio") ? "; over the files both import, the median of assimp / ours is "
-                                + EvalReport.num(results, at + "/medianAssimpRatio") : "") + ".");
-                JsonNode why = g.get("assimpRefusals");
-                for (int k = 0; k < why.size(); k++) {
-                    report.line("- assimp refuses " + EvalReport.num(results, at + "/assimpRefusals/" + k + "/files")
-                            + " file(s) with `" + why.get(k).get("message").asText().replace('`', '\'') + "`");
-                }
-                if (why.size() > 0) {
-                    report.line("");
-                }
-            }
-            if (g.get("key").asText().equals("cts")) {
-                refusals(results, at, report);
-                ctsFigure(g, report);
-                continue;
-            }
-            report.header("file", "kB", "triangles", "median ms", "slowest ms", "assimp median ms", "assimp / ours");
-            JsonNode files = g.get("files");
-            for (int f = 0; f < files.size(); f++) {
-                String p = at + "/files/" + f;
-                JsonNode file = files.get(f);
-                if (file.has("error")) {
-                    report.row("`" + file.get("file").asText() + "`", EvalReport.num(results, p + "/kilobytes"),
-                            "refused", "-", "-", "-", "-");
-                    continue;
-                }
-                report.row("`" + file.get("file").asText() + "`", EvalReport.num(results, p + "/kilobytes"),
-                        EvalReport.num(results, p + "/triangles"), EvalReport.num(results, p + "/medianMillis"),
-                        EvalReport.num(results, p + "/slowestMillis"),
-                        file.has("assimpError") ? "refused" : EvalReport.numOrDash(results, p + "/assimpMedianMillis"),
-                        EvalReport.numOrDash(results, p + "/assimpRatio"));
-                bars.add(new String[] {file.get("file").asText(), file.get("medianMillis").asText(),
-                        file.path("assimpMedianMillis").asText("")});
-            }
+    }
+
+    /** Group {@code g} (at {@code at}): how many files meet the requirement, and its median file. */
+    private static void groupSummary(JsonNode results, JsonNode g, String at, EvalReport report) {
+        report.paragraph(EvalReport.num(results, at + "/underRequirement") + " of "
+                + EvalReport.num(results, at + "/imported") + " imported files meet the requirement (the"
+                + " slowest import: " + EvalReport.num(results, at + "/slowestMillis") + " ms); "
+                + EvalReport.num(results, at + "/refused") + " of " + EvalReport.num(results, at + "/fileCount")
+                + " refused" + (g.has("medianOfMediansMillis") ? "; the median file imports in "
+                        + EvalReport.num(results, at + "/medianOfMediansMillis") + " ms, all of them in "
+                        + EvalReport.num(results, at + "/sumOfMediansMillis") + " ms" : "") + "."
+                + (results.has("ctsEvery") && g.get("key").asText().equals("cts")
+                        ? " Quick run: one file in " + EvalReport.num(results, "/ctsEvery") + " of the suite, in"
+                                + " name order." : ""));
+    }
+
+    /** What assimp imports and refuses of group {@code g}, with its messages. */
+    private static void assimpSummary(JsonNode results, JsonNode g, String at, EvalReport report) {
+        report.paragraph("assimp imports " + EvalReport.num(results, at + "/assimpImported") + " of these files"
+                + " and refuses " + EvalReport.num(results, at + "/assimpRefused")
+                + (g.has("medianAssimpRatio") ? "; over the files both import, the median of assimp / ours is "
+                        + EvalReport.num(results, at + "/medianAssimpRatio") : "") + ".");
+        JsonNode why = g.get("assimpRefusals");
+        for (int k = 0; k < why.size(); k++) {
+            report.line("- assimp refuses " + EvalReport.num(results, at + "/assimpRefusals/" + k + "/files")
+                    + " file(s) with `" + why.get(k).get("message").asText().replace('`', '\'') + "`");
+        }
+        if (why.size() > 0) {
             report.line("");
         }
-        if (!bars.isEmpty()) {
-            filesFigure(bars, assimp, report);
+    }
+
+    /** One row per file of group {@code g}; adds each imported file's bar to {@code bars}. */
+    private static void fileTable(JsonNode results, JsonNode g, String at, EvalReport report, List<String[]> bars) {
+        report.header("file", "kB", "triangles", "median ms", "slowest ms", "assimp median ms", "assimp / ours");
+        JsonNode files = g.get("files");
+        for (int f = 0; f < files.size(); f++) {
+            String p = at + "/files/" + f;
+            JsonNode file = files.get(f);
+            if (file.has("error")) {
+                report.row("`" + file.get("file").asText() + "`", EvalReport.num(results, p + "/kilobytes"),
+                        "refused", "-", "-", "-", "-");
+                continue;
+            }
+            report.row("`" + file.get("file").asText() + "`", EvalReport.num(results, p + "/kilobytes"),
+                    EvalReport.num(results, p + "/triangles"), EvalReport.num(results, p + "/medianMillis"),
+                    EvalReport.num(results, p + "/slowestMillis"),
+                    file.has("assimpError") ? "refused" : EvalReport.numOrDash(results, p + "/assimpMedianMillis"),
+                    EvalReport.numOrDash(results, p + "/assimpRatio"));
+            bars.add(new String[] {file.get("file").asText(), file.get("medianMillis").asText(),
+                    file.path("assimpMedianMillis").asText("")});
         }
+        report.line("");
     }
 
     private static void refusals(JsonNode results, String at, EvalReport report) {

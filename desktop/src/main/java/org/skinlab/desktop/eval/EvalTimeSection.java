@@ -1,4 +1,4 @@
-package org.skinlab.desktop.cli;
+package org.skinlab.desktop.eval;
 
 import java.io.IOException;
 import java.nio.file.Files;
@@ -85,16 +85,7 @@ final class EvalTimeSection implements EvalSection {
         results.put("firstWarmupSeconds", firstWarmup);
         results.put("seconds", seconds);
         results.put("cap", CAP);
-        List<Path> files = files(context, results);
-        List<Model> models = new ArrayList<>();
-        List<Path> skinned = new ArrayList<>();
-        for (Path f : files) {
-            Model m = ModelFiles.load(f).model;
-            if (m.instances().stream().anyMatch(MeshInstance::isSkinned)) {
-                models.add(m);
-                skinned.add(f);
-            }
-        }
+        List<Skinned> models = skinned(files(context, results));
         int perAsset = 3 * EVERY_VARIANT.size() + SkinningMethod.values().length;
         int total = models.size() * perAsset;
         int done = 0;
@@ -102,7 +93,7 @@ final class EvalTimeSection implements EvalSection {
         ArrayNode assets = results.putArray("assets");
         for (int a = 0; a < models.size(); a++) {
             ObjectNode asset = assets.addObject();
-            asset.put("file", skinned.get(a).getFileName().toString());
+            asset.put("file", models.get(a).file.getFileName().toString());
             ArrayNode runs = asset.putArray("runs");
             for (int cap : new int[] {0, CAP}) {
                 if (cap != 0 && asset.get("influences").asInt() <= CAP) {
@@ -113,27 +104,15 @@ final class EvalTimeSection implements EvalSection {
                 for (int k = 0; k < 2; k++) {
                     boolean scalar = k == 1;
                     List<SkinningMethod> methods = cap == 0 && !scalar ? List.of(SkinningMethod.values()) : EVERY_VARIANT;
-                    FrameBench bench = new FrameBench(models.get(a), NormalTransform.INVERSE_TRANSPOSE,
+                    FrameBench bench = new FrameBench(models.get(a).model, NormalTransform.INVERSE_TRANSPOSE,
                             PositionSharing.AUTO, scalar, cap, methods);
-                    FrameBench.Shape shape = bench.shape();
                     if (cap == 0 && !scalar) {
-                        asset.put("positionsSkinned", shape.positionsSkinned());
-                        asset.put("renderVertices", shape.renderVertices());
-                        asset.put("joints", shape.joints());
-                        asset.put("influences", shape.influences());
+                        putShape(asset, bench.shape());
                     }
                     for (SkinningMethod m : methods) {
                         double w = warmed[k][m.ordinal()] ? warmup : firstWarmup;
                         warmed[k][m.ordinal()] = true;
-                        FrameBench.Timing t = bench.measure(m, w, seconds);
-                        ObjectNode r = runs.addObject();
-                        r.put("method", m.key());
-                        r.put("kernels", scalar ? "scalar" : "fastest");
-                        r.put("implementation", t.kernel());
-                        r.put("influences", cap == 0 ? "all" : "at most " + CAP);
-                        r.put("frames", t.frames());
-                        r.put("medianMicros", EvalReport.round(t.medianMicros()));
-                        r.put("minMicros", EvalReport.round(t.minMicros()));
+                        putRun(runs.addObject(), m, scalar, cap, bench.measure(m, w, seconds));
                         context.progress((double) ++done / total);
                     }
                 }
@@ -141,6 +120,41 @@ final class EvalTimeSection implements EvalSection {
         }
         thesis(results);
         reference(context, results.putObject("reference"));
+    }
+
+    /** A file with a skinned instance, and its model. */
+    private record Skinned(Path file, Model model) {
+    }
+
+    /** The files that have a skinned instance, loaded, in order. */
+    private static List<Skinned> skinned(List<Path> files) {
+        List<Skinned> skinned = new ArrayList<>();
+        for (Path f : files) {
+            Model m = ModelFiles.load(f).model;
+            if (m.instances().stream().anyMatch(MeshInstance::isSkinned)) {
+                skinned.add(new Skinned(f, m));
+            }
+        }
+        return skinned;
+    }
+
+    /** What one frame of the asset skins: positions, vertices drawn, joints, influences per position. */
+    private static void putShape(ObjectNode asset, FrameBench.Shape shape) {
+        asset.put("positionsSkinned", shape.positionsSkinned());
+        asset.put("renderVertices", shape.renderVertices());
+        asset.put("joints", shape.joints());
+        asset.put("influences", shape.influences());
+    }
+
+    /** One method's timing with the scalar or the fastest kernels, all influences or {@code cap}. */
+    private static void putRun(ObjectNode r, SkinningMethod m, boolean scalar, int cap, FrameBench.Timing t) {
+        r.put("method", m.key());
+        r.put("kernels", scalar ? "scalar" : "fastest");
+        r.put("implementation", t.kernel());
+        r.put("influences", cap == 0 ? "all" : "at most " + CAP);
+        r.put("frames", t.frames());
+        r.put("medianMicros", EvalReport.round(t.medianMicros()));
+        r.put("minMicros", EvalReport.round(t.minMicros()));
     }
 
     /** Our COLLADA assets, and the thesis' cowboy when the shared corpus has it (else why not, in results). */
@@ -204,29 +218,33 @@ final class EvalTimeSection implements EvalSection {
         results.put("oursSeconds", oursSeconds);
         ArrayNode rows = results.putArray("rows");
         for (CppSkinningReference.Result c : cpp) {
-            SkinningMethod method = SkinningMethod.fromKey(c.variant().substring(2));
-            SyntheticSkinData data = new SyntheticSkinData(c.vertices());
-            SkinnedGeometry geometry = data.geometry();
-            JointPalette palette = data.palette();
-            float[] positions = new float[3 * c.vertices()];
-            float[] normals = new float[3 * c.vertices()];
-            ObjectNode row = rows.addObject();
-            row.put("vertices", c.vertices());
-            row.put("method", method.key());
-            row.put("cppMedianNs", c.medianNs());
-            row.put("cppMinNs", c.minNs());
-            for (boolean scalar : new boolean[] {true, false}) {
-                Skinner kernel = scalar ? Skinners.scalar(method, geometry, NormalTransform.BLENDED_MATRIX)
-                        : Skinners.create(method, geometry, NormalTransform.BLENDED_MATRIX);
-                SkinningTiming t = SkinningTiming.measure(() -> kernel.skinAll(palette, positions, normals), positions,
-                        normals, c.vertices(), warmup, oursSeconds);
-                String k = scalar ? "scalar" : "fastest";
-                row.put(k + "Kernel", kernel.implementation());
-                row.put(k + "MedianNs", EvalReport.round(t.median()));
-                row.put(k + "Ratio", EvalReport.round(t.median() / c.medianNs()));
-                // Both sum the same outputs; float rounding differs only in the last digits.
-                row.put(k + "ChecksumAgrees", Math.abs(t.checksum - c.checksum()) <= 1e-4 * Math.abs(c.checksum()));
-            }
+            oursBeside(c, rows.addObject(), warmup, oursSeconds);
+        }
+    }
+
+    /** Our scalar and fastest kernels on the C++ run {@code c}'s data, into {@code row}. */
+    private static void oursBeside(CppSkinningReference.Result c, ObjectNode row, double warmup, double oursSeconds) {
+        SkinningMethod method = SkinningMethod.fromKey(c.variant().substring(2));
+        SyntheticSkinData data = new SyntheticSkinData(c.vertices());
+        SkinnedGeometry geometry = data.geometry();
+        JointPalette palette = data.palette();
+        float[] positions = new float[3 * c.vertices()];
+        float[] normals = new float[3 * c.vertices()];
+        row.put("vertices", c.vertices());
+        row.put("method", method.key());
+        row.put("cppMedianNs", c.medianNs());
+        row.put("cppMinNs", c.minNs());
+        for (boolean scalar : new boolean[] {true, false}) {
+            Skinner kernel = scalar ? Skinners.scalar(method, geometry, NormalTransform.BLENDED_MATRIX)
+                    : Skinners.create(method, geometry, NormalTransform.BLENDED_MATRIX);
+            SkinningTiming t = SkinningTiming.measure(() -> kernel.skinAll(palette, positions, normals), positions,
+                    normals, c.vertices(), warmup, oursSeconds);
+            String k = scalar ? "scalar" : "fastest";
+            row.put(k + "Kernel", kernel.implementation());
+            row.put(k + "MedianNs", EvalReport.round(t.median()));
+            row.put(k + "Ratio", EvalReport.round(t.median() / c.medianNs()));
+            // Both sum the same outputs; float rounding differs only in the last digits.
+            row.put(k + "ChecksumAgrees", Math.abs(t.checksum - c.checksum()) <= 1e-4 * Math.abs(c.checksum()));
         }
     }
 

@@ -1,0 +1,163 @@
+package org.skinlab.desktop.eval;
+
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Instant;
+import java.util.Collection;
+import java.util.List;
+import java.util.stream.Collectors;
+
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.SerializationFeature;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+
+import me.tongfei.progressbar.ProgressBar;
+import me.tongfei.progressbar.ProgressBarBuilder;
+import me.tongfei.progressbar.ProgressBarConsumer;
+import me.tongfei.progressbar.ProgressBarStyle;
+
+/**
+ * One run of the evaluation: each {@link EvalSection} measures into results.json, then README.md
+ * and the figures are written from those results alone. See docs/evaluation.md.
+ */
+public final class Evaluation {
+    /** The sections in report order; a new section is one entry here. */
+    static final List<EvalSection> SECTIONS = List.of(new EvalLoadSection(), new EvalTimeSection(),
+            new EvalCrowdsSection(), new EvalQualitySection(), new EvalPicturesSection(), new EvalTrackingSection(),
+            new EvalAdviceSection());
+
+    private final List<EvalSection> sections;
+    private final EvalContext context;
+    private final Path out;
+    private final PrintWriter err;
+
+    /**
+     * The sections named by {@code keys} (all when empty; see {@link #keys()}) of a run from
+     * repository {@code root} into folder {@code out}, saying what it skips and the progress bar on
+     * {@code err}; {@code skinlabMain} is the class whose {@code main} runs {@code skinlab}'s
+     * commands (the pictures are drawn by its {@code view} in a child JVM).
+     */
+    public Evaluation(Collection<String> keys, boolean quick, Path root, Path out, PrintWriter err,
+            Class<?> skinlabMain) {
+        this.sections = keys.isEmpty() ? SECTIONS
+                : SECTIONS.stream().filter(s -> keys.contains(s.key())).collect(Collectors.toList());
+        this.context = new EvalContext(quick, root, err, new ViewerProcess(skinlabMain));
+        this.out = out;
+        this.err = err;
+    }
+
+    /** The sections' keys, in report order. */
+    public static List<String> keys() {
+        return SECTIONS.stream().map(EvalSection::key).collect(Collectors.toList());
+    }
+
+    /** What a run wrote: the number of figures and the seconds it measured for. */
+    public static final class Written {
+        public final int figures;
+        public final double seconds;
+
+        Written(int figures, double seconds) {
+            this.figures = figures;
+            this.seconds = seconds;
+        }
+    }
+
+    /**
+     * Measures every section, then writes results.json, README.md and the figures; {@code args} is
+     * the command line.
+     */
+    public Written run(List<String> args) throws IOException {
+        Files.createDirectories(out);
+        ObjectMapper mapper = new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT);
+        ObjectNode results = mapper.createObjectNode();
+        EvalMachine.describe(results.putObject("machine"), args);
+        results.put("quick", context.quick());
+        results.put("started", Instant.now().toString());
+        long start = System.nanoTime();
+        measure(results.putObject("sections"));
+        results.put("seconds", EvalReport.round((System.nanoTime() - start) / 1e9));
+        mapper.writeValue(out.resolve("results.json").toFile(), results);
+        EvalReport report = new EvalReport(out, results.get("machine"));
+        header(report, results);
+        for (EvalSection s : sections) {
+            report.heading(2, s.title());
+            s.report(results.get("sections").get(s.key()), report);
+        }
+        Files.writeString(out.resolve("README.md"), report.markdown());
+        return new Written(report.figures().size(), results.get("seconds").asDouble());
+    }
+
+    /** Each section's measurements into its node of {@code bySection}, behind one progress bar. */
+    private void measure(ObjectNode bySection) {
+        long[] lengths = new long[sections.size()];
+        for (int i = 0; i < sections.size(); i++) {
+            lengths[i] = Math.max(1, Math.round(10 * sections.get(i).estimatedSeconds(context)));
+        }
+        context.useResults(bySection);
+        ProgressBarBuilder builder = new ProgressBarBuilder().setTaskName("eval").setInitialMax(total(lengths))
+                .setStyle(ProgressBarStyle.ASCII).setUnit("s", 10).setUpdateIntervalMillis(500);
+        if (System.console() == null) {
+            // A log or a pipe, not a terminal: a line every 10 s, on the command's error stream.
+            builder.setConsumer(new LineConsumer(err)).setUpdateIntervalMillis(10_000);
+        }
+        try (ProgressBar bar = builder.build()) {
+            context.useBar(bar);
+            for (int i = 0; i < sections.size(); i++) {
+                EvalSection s = sections.get(i);
+                context.startSection(s.key(), lengths[i]);
+                s.measure(context, bySection.putObject(s.key()));
+                context.progress(1);
+            }
+        }
+    }
+
+    private void header(EvalReport report, ObjectNode results) {
+        report.heading(1, "Evaluation");
+        report.paragraph("Generated by `" + results.at("/machine/command").asText() + "`"
+                + (results.get("quick").asBoolean() ? " (quick: fewer files and short measurements; not figures to"
+                        + " quote)" : "") + ", started `" + results.get("started").asText() + "`, in "
+                + EvalReport.num(results, "/seconds") + " s. Every number below is in `results.json`; how each is"
+                + " measured: docs/evaluation.md.");
+        for (String line : EvalMachine.lines(results.get("machine"))) {
+            report.line("- `" + line + "`");
+        }
+        report.line("");
+        report.paragraph("Sections: " + sections.stream().map(EvalSection::title).collect(Collectors.joining(", "))
+                + ".");
+    }
+
+    private static long total(long[] lengths) {
+        long t = 0;
+        for (long l : lengths) {
+            t += l;
+        }
+        return t;
+    }
+
+    /** The bar as whole lines on a writer, for logs. */
+    private static final class LineConsumer implements ProgressBarConsumer {
+        private final PrintWriter out;
+
+        LineConsumer(PrintWriter out) {
+            this.out = out;
+        }
+
+        @Override
+        public int getMaxRenderedLength() {
+            return 100;
+        }
+
+        @Override
+        public void accept(String rendered) {
+            out.println(rendered.trim());
+            out.flush();
+        }
+
+        @Override
+        public void close() {
+            out.flush();
+        }
+    }
+}
