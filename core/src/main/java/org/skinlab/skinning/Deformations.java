@@ -4,7 +4,9 @@ package org.skinlab.skinning;
  * The per-point records the scalar kernels write: the deformation of {@link Skinner#skinDeformations}
  * (16 floats: two columns of the normal matrix N, the deformed position, N's last column, each
  * padded to four) and the point of {@link Skinner#skin}. Both start from what every kernel computes
- * per point, its deformed position {@code d[0..3)} and normal matrix {@code d[3..12)}. Plain Java.
+ * per point, its deformed position {@code d[0..3)} and normal matrix {@code d[3..12)}, or for
+ * {@link ScalarLbsSkinner} from its blend's values ({@link #putCofactor}, {@link #putPointCofactor}).
+ * Plain Java.
  */
 final class Deformations {
     private Deformations() {
@@ -38,7 +40,7 @@ final class Deformations {
      * the row-major linear part {@code a}: with {@code cofactor}, its cofactor matrix, times the sign
      * of its determinant when {@code signed} (the palette mirrors: see
      * {@link JointPalette#mirrorsMatrices()}), otherwise {@code a} itself. For
-     * {@link ScalarLbsSkinner}, which keeps its blend in registers (its class comment says why):
+     * {@link ScalarLbsSkinner}, which keeps its blend in locals (its class comment says why):
      * {@link SkinningSteps#signedCofactor}'s formula on values.
      */
     static void putCofactor(float[] f, int o, boolean cofactor, boolean signed, float a00, float a01, float a02,
@@ -74,6 +76,39 @@ final class Deformations {
         f[o + 13] = a12;
         f[o + 14] = a22;
         f[o + 15] = 0f;
+    }
+
+    /**
+     * Writes the point at {@code v = 3 i}: position {@code (px, py, pz)} and the rest normal turned by
+     * the normal matrix of the row-major linear part {@code a}: with {@code cofactor}, its cofactor
+     * matrix (the columns of {@code a} crossed, {@link SkinningSteps#signedCofactor}'s formula),
+     * the normal renormalised and its sign that of the determinant when {@code signed} (the
+     * palette mirrors: see {@link JointPalette#mirrorsMatrices()}), otherwise {@code a} itself. For
+     * {@link ScalarLbsSkinner}, as {@link #putCofactor}.
+     */
+    static void putPointCofactor(float[] outPositions, float[] outNormals, int v, float[] restNormals,
+            boolean cofactor, boolean signed, float a00, float a01, float a02, float a10, float a11, float a12,
+            float a20, float a21, float a22, float px, float py, float pz) {
+        outPositions[v] = px;
+        outPositions[v + 1] = py;
+        outPositions[v + 2] = pz;
+        float nx = restNormals[v], ny = restNormals[v + 1], nz = restNormals[v + 2];
+        if (cofactor) {
+            float c00 = a11 * a22 - a21 * a12, c01 = a12 * a20 - a22 * a10, c02 = a10 * a21 - a20 * a11;
+            float rx = c00 * nx + c01 * ny + c02 * nz;
+            float ry = (a21 * a02 - a01 * a22) * nx + (a22 * a00 - a02 * a20) * ny + (a20 * a01 - a00 * a21) * nz;
+            float rz = (a01 * a12 - a11 * a02) * nx + (a02 * a10 - a12 * a00) * ny + (a00 * a11 - a10 * a01) * nz;
+            float len2 = rx * rx + ry * ry + rz * rz;
+            float det = signed ? a00 * c00 + a01 * c01 + a02 * c02 : 1f;
+            float inv = len2 > 0f ? Math.copySign((float) (1.0 / Math.sqrt(len2)), det) : 0f;
+            outNormals[v] = rx * inv;
+            outNormals[v + 1] = ry * inv;
+            outNormals[v + 2] = rz * inv;
+        } else {
+            outNormals[v] = a00 * nx + a01 * ny + a02 * nz;
+            outNormals[v + 1] = a10 * nx + a11 * ny + a12 * nz;
+            outNormals[v + 2] = a20 * nx + a21 * ny + a22 * nz;
+        }
     }
 
     /**
