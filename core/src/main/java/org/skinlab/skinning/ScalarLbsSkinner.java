@@ -5,14 +5,14 @@ package org.skinlab.skinning;
  * {@code M = sum_k w_k M_(j_k)}, {@code p' = M p}, and the normal by {@link NormalTransform}.
  * The portable kernel (Android) and the reference the SIMD kernels are tested against.
  *
- * <p>{@link #skin} and {@link #skinDeformations} share one loop ({@link #skinRange}): the blend
- * and {@code p'} once, then by a flag that does not change within the loop (C2 unswitches it into
- * two loops) either the point or the deformation. The blend is
- * {@link SkinningSteps#blendMatrices}'s formula and the normal matrix
- * {@link SkinningSteps#signedCofactor}'s, in the same order (so the same bits), written in locals:
- * LBS does so little per point that passing the 12 blended floats through a scratch array, as the
- * other kernels do, costs a measurable share of a frame, where in registers they cost nothing;
- * Java has no other way to return several values from a method.
+ * <p>{@link #skin} and {@link #skinDeformations} share the blend's and the normal matrix's
+ * formulas, {@link SkinningSteps#blendMatrices} and {@link SkinningSteps#signedCofactor}, in the
+ * same order (so the same bits); each writes the blend in locals in its own loop, and
+ * {@link #skinDeformations} its record through {@link Deformations#putCofactor}. LBS does so little per point that passing the
+ * 12 blended floats through a scratch array, as the other kernels do, costs a measurable share of
+ * a frame, where in registers they cost nothing (Java has no other way to return several values
+ * from a method); and one loop for both, choosing the output by a flag, leaves C2 one profile for
+ * the two: whichever output a JVM asks for second runs measurably slower.
  */
 public final class ScalarLbsSkinner extends AbstractSkinner {
     private final float[] positions;
@@ -32,21 +32,6 @@ public final class ScalarLbsSkinner extends AbstractSkinner {
 
     @Override
     public void skin(JointPalette palette, float[] outPositions, float[] outNormals, int from, int to) {
-        skinRange(palette, false, outPositions, outNormals, null, from, to);
-    }
-
-    @Override
-    public void skinDeformations(JointPalette palette, float[] outDeformations, int from, int to) {
-        skinRange(palette, true, null, null, outDeformations, from, to);
-    }
-
-    /**
-     * Points {@code [from, to)}: the blend {@code B = sum_k w_k M_(j_k)} and {@code p' = B p},
-     * then with {@code deformations} the deformation into {@code outDeformations}, else the
-     * position and normal into {@code outPositions} and {@code outNormals}.
-     */
-    private void skinRange(JointPalette palette, boolean deformations, float[] outPositions, float[] outNormals,
-            float[] outDeformations, int from, int to) {
         final float[] mat = palette.matrices();
         final boolean exactNormals = normals == NormalTransform.INVERSE_TRANSPOSE;
         final boolean mirror = exactNormals && palette.mirrorsMatrices();
@@ -75,16 +60,67 @@ public final class ScalarLbsSkinner extends AbstractSkinner {
             }
             int v = 3 * i;
             float px = positions[v], py = positions[v + 1], pz = positions[v + 2];
-            float x = b0 * px + b1 * py + b2 * pz + b3;
-            float y = b4 * px + b5 * py + b6 * pz + b7;
-            float z = b8 * px + b9 * py + b10 * pz + b11;
-            if (deformations) {
-                Deformations.putCofactor(outDeformations, DEFORMATION_FLOATS * i, exactNormals, mirror, b0, b1, b2, b4,
-                        b5, b6, b8, b9, b10, x, y, z);
+            outPositions[v] = b0 * px + b1 * py + b2 * pz + b3;
+            outPositions[v + 1] = b4 * px + b5 * py + b6 * pz + b7;
+            outPositions[v + 2] = b8 * px + b9 * py + b10 * pz + b11;
+            float nx = restNormals[v], ny = restNormals[v + 1], nz = restNormals[v + 2];
+            if (exactNormals) {
+                // Columns c0 = (b0 b4 b8), c1 = (b1 b5 b9), c2 = (b2 b6 b10); the inverse-transpose
+                // times det has columns c1 x c2, c2 x c0, c0 x c1.
+                float k00 = b5 * b10 - b9 * b6, k01 = b6 * b8 - b10 * b4, k02 = b4 * b9 - b8 * b5;
+                float rx = k00 * nx + k01 * ny + k02 * nz;
+                float ry = (b9 * b2 - b1 * b10) * nx + (b10 * b0 - b2 * b8) * ny + (b8 * b1 - b0 * b9) * nz;
+                float rz = (b1 * b6 - b5 * b2) * nx + (b2 * b4 - b6 * b0) * ny + (b0 * b5 - b4 * b1) * nz;
+                float len2 = rx * rx + ry * ry + rz * rz;
+                // The cofactor is det times the inverse-transpose: under a mirroring blend (det < 0)
+                // it would turn the normal inwards, so with a mirroring palette the sign of det goes
+                // into the scale.
+                float det = mirror ? b0 * k00 + b1 * k01 + b2 * k02 : 1f;
+                float inv = len2 > 0f ? Math.copySign((float) (1.0 / Math.sqrt(len2)), det) : 0f;
+                outNormals[v] = rx * inv;
+                outNormals[v + 1] = ry * inv;
+                outNormals[v + 2] = rz * inv;
             } else {
-                Deformations.putPointCofactor(outPositions, outNormals, v, restNormals, exactNormals, mirror, b0, b1,
-                        b2, b4, b5, b6, b8, b9, b10, x, y, z);
+                outNormals[v] = b0 * nx + b1 * ny + b2 * nz;
+                outNormals[v + 1] = b4 * nx + b5 * ny + b6 * nz;
+                outNormals[v + 2] = b8 * nx + b9 * ny + b10 * nz;
             }
+        }
+    }
+
+    @Override
+    public void skinDeformations(JointPalette palette, float[] outDeformations, int from, int to) {
+        final float[] mat = palette.matrices();
+        final boolean exactNormals = normals == NormalTransform.INVERSE_TRANSPOSE;
+        final boolean mirror = exactNormals && palette.mirrorsMatrices();
+        for (int i = from; i < to; i++) {
+            int o = width * i;
+            float w = weights[o];
+            int m = 12 * joints[o];
+            float b0 = w * mat[m], b1 = w * mat[m + 1], b2 = w * mat[m + 2], b3 = w * mat[m + 3];
+            float b4 = w * mat[m + 4], b5 = w * mat[m + 5], b6 = w * mat[m + 6], b7 = w * mat[m + 7];
+            float b8 = w * mat[m + 8], b9 = w * mat[m + 9], b10 = w * mat[m + 10], b11 = w * mat[m + 11];
+            for (int k = 1; k < width; k++) {
+                w = weights[o + k];
+                m = 12 * joints[o + k];
+                b0 += w * mat[m];
+                b1 += w * mat[m + 1];
+                b2 += w * mat[m + 2];
+                b3 += w * mat[m + 3];
+                b4 += w * mat[m + 4];
+                b5 += w * mat[m + 5];
+                b6 += w * mat[m + 6];
+                b7 += w * mat[m + 7];
+                b8 += w * mat[m + 8];
+                b9 += w * mat[m + 9];
+                b10 += w * mat[m + 10];
+                b11 += w * mat[m + 11];
+            }
+            int v = 3 * i;
+            float px = positions[v], py = positions[v + 1], pz = positions[v + 2];
+            Deformations.putCofactor(outDeformations, DEFORMATION_FLOATS * i, exactNormals, mirror, b0, b1, b2, b4, b5,
+                    b6, b8, b9, b10, b0 * px + b1 * py + b2 * pz + b3, b4 * px + b5 * py + b6 * pz + b7,
+                    b8 * px + b9 * py + b10 * pz + b11);
         }
     }
 }
