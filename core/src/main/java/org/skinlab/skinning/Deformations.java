@@ -38,41 +38,52 @@ final class Deformations {
      * the row-major linear part {@code a}: with {@code cofactor}, its cofactor matrix, times the sign
      * of its determinant when {@code signed} (the palette mirrors: see
      * {@link JointPalette#mirrorsMatrices()}), otherwise {@code a} itself. For
-     * {@link ScalarLbsSkinner}, which keeps its blend in registers (its class comment says why):
-     * {@link SkinningSteps#signedCofactor}'s formula on values.
+     * {@link ScalarLbsSkinner}, which keeps its blend in locals (its class comment says why):
+     * {@link SkinningSteps#signedCofactor}'s formula on values. Split in three so that each part
+     * stays within the bytecode size C2 inlines into a hot loop (325 bytes,
+     * {@code -XX:FreqInlineSize}): a call per point with 16 floats as arguments costs more than the
+     * point's stores.
      */
     static void putCofactor(float[] f, int o, boolean cofactor, boolean signed, float a00, float a01, float a02,
             float a10, float a11, float a12, float a20, float a21, float a22, float px, float py, float pz) {
         if (cofactor) {
-            float c00 = a11 * a22 - a21 * a12, c01 = a12 * a20 - a22 * a10, c02 = a10 * a21 - a20 * a11;
-            float c10 = a21 * a02 - a01 * a22, c11 = a22 * a00 - a02 * a20, c12 = a20 * a01 - a00 * a21;
-            float c20 = a01 * a12 - a11 * a02, c21 = a02 * a10 - a12 * a00, c22 = a00 * a11 - a10 * a01;
-            float s = signed ? Math.copySign(1f, a00 * c00 + a01 * c01 + a02 * c02) : 1f;
-            a00 = s * c00;
-            a01 = s * c01;
-            a02 = s * c02;
-            a10 = s * c10;
-            a11 = s * c11;
-            a12 = s * c12;
-            a20 = s * c20;
-            a21 = s * c21;
-            a22 = s * c22;
+            putSignedCofactor(f, o, signed, a00, a01, a02, a10, a11, a12, a20, a21, a22);
+        } else {
+            putNormalMatrix(f, o, a00, a01, a02, a10, a11, a12, a20, a21, a22);
         }
-        f[o] = a00;
-        f[o + 1] = a10;
-        f[o + 2] = a20;
-        f[o + 3] = 0f;
-        f[o + 4] = a01;
-        f[o + 5] = a11;
-        f[o + 6] = a21;
-        f[o + 7] = 0f;
         f[o + 8] = px;
         f[o + 9] = py;
         f[o + 10] = pz;
         f[o + 11] = 0f;
-        f[o + 12] = a02;
-        f[o + 13] = a12;
-        f[o + 14] = a22;
+    }
+
+    /** The normal matrix of {@link #putCofactor} with {@code cofactor}: a's signed cofactor matrix. */
+    private static void putSignedCofactor(float[] f, int o, boolean signed, float a00, float a01, float a02,
+            float a10, float a11, float a12, float a20, float a21, float a22) {
+        float c00 = a11 * a22 - a21 * a12, c01 = a12 * a20 - a22 * a10, c02 = a10 * a21 - a20 * a11;
+        float c10 = a21 * a02 - a01 * a22, c11 = a22 * a00 - a02 * a20, c12 = a20 * a01 - a00 * a21;
+        float c20 = a01 * a12 - a11 * a02, c21 = a02 * a10 - a12 * a00, c22 = a00 * a11 - a10 * a01;
+        float s = signed ? Math.copySign(1f, a00 * c00 + a01 * c01 + a02 * c02) : 1f;
+        putNormalMatrix(f, o, s * c00, s * c01, s * c02, s * c10, s * c11, s * c12, s * c20, s * c21, s * c22);
+    }
+
+    /**
+     * The row-major normal matrix n into the deformation at {@code f[o]}: its columns, each padded
+     * to four, at 0, 4 and 12 (the position's place, 8, is left to the caller).
+     */
+    private static void putNormalMatrix(float[] f, int o, float n00, float n01, float n02, float n10, float n11,
+            float n12, float n20, float n21, float n22) {
+        f[o] = n00;
+        f[o + 1] = n10;
+        f[o + 2] = n20;
+        f[o + 3] = 0f;
+        f[o + 4] = n01;
+        f[o + 5] = n11;
+        f[o + 6] = n21;
+        f[o + 7] = 0f;
+        f[o + 12] = n02;
+        f[o + 13] = n12;
+        f[o + 14] = n22;
         f[o + 15] = 0f;
     }
 

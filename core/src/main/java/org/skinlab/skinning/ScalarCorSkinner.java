@@ -30,9 +30,9 @@ public final class ScalarCorSkinner extends AbstractSkinner {
     private final float[] weights;
     private final int width;
     /**
-     * Offsets in the per-thread scratch, after p' (0..2) and the normal matrix (3..11): p1 and c1 of
-     * step 1 with scale, the blended rotation (8 floats, of which the real part is used), R with
-     * scale, the centre's translation t, and the blended matrix: the scale phase's S and its K, or LBS's blend.
+     * Offsets in the per-thread scratch, after p' (0..2) and the normal matrix (3..11), of the steps
+     * with scale: p1 and c1 of step 1, the blended rotation (8 floats, of which the real part is
+     * used), R, the centre's translation t, and the scale phase's S and its K.
      */
     private static final int P1 = 12, C1 = 15, ROTATION = 18, R = 26, T = 35, S = 38;
     private final ThreadLocal<float[]> scratch = ThreadLocal.withInitial(
@@ -53,22 +53,73 @@ public final class ScalarCorSkinner extends AbstractSkinner {
      * 3x3, to be applied to the rest normal) into {@code d[3..12)}, the steps of the class comment.
      */
     private void deform(JointPalette palette, int i, boolean exactNormals, float[] d) {
+        if (!palette.hasScale()) {
+            deformUnscaled(palette.dualQuaternions(), palette.matrices(), i, d);
+            return;
+        }
         int o = width * i;
         int v = 3 * i;
         float[] dq = palette.dualQuaternions();
         SkinningSteps.blendDualQuaternions(dq, joints, weights, o, width, d, ROTATION);
-        if (palette.hasScale()) {
-            SkinningSteps.rotationMatrix(d[ROTATION], d[ROTATION + 1], d[ROTATION + 2], d[ROTATION + 3], d, R);
-            scalePhase(palette, o, v, exactNormals, d);
-            moveScaledCentre(dq, o, d);
-            turnAboutCentre(d, R, d, P1, d, C1, d);
-            SkinningSteps.multiply3x3(d, R, d, S + 12, d, 3);
-        } else {
-            // Without scale the normal matrix is R itself.
-            SkinningSteps.rotationMatrix(d[ROTATION], d[ROTATION + 1], d[ROTATION + 2], d[ROTATION + 3], d, 3);
-            moveCentre(palette.matrices(), o, v, d);
-            turnAboutCentre(d, 3, positions, v, centres, v, d);
+        SkinningSteps.rotationMatrix(d[ROTATION], d[ROTATION + 1], d[ROTATION + 2], d[ROTATION + 3], d, R);
+        scalePhase(palette, o, v, exactNormals, d);
+        moveScaledCentre(dq, o, d);
+        turnAboutCentre(d, R, d, P1, d, C1, d);
+        SkinningSteps.multiply3x3(d, R, d, S + 12, d, 3);
+    }
+
+    /**
+     * Steps 2 to 4 without scale, in one pass over the influences: the rotations' blend q of
+     * {@link SkinningSteps#blendDualQuaternions} (its real part) beside the matrices' blend B of
+     * {@link SkinningSteps#blendMatrices}, then R of q as the normal matrix into {@code d[3..12)}
+     * and {@code p' = R (p - c) + B c} into {@code d[0..3)}. Written in locals (the steps'
+     * formulas in their order, so the same bits) because the two blends share the influences'
+     * loads and loop: as two steps through the scratch, with the dual part DQS blends too, a frame
+     * costs measurably more.
+     */
+    private void deformUnscaled(float[] dq, float[] mat, int i, float[] d) {
+        int o = width * i;
+        int j = joints[o];
+        float w = weights[o];
+        int q = 8 * j;
+        float p0 = dq[q], p1 = dq[q + 1], p2 = dq[q + 2], p3 = dq[q + 3];
+        float r0 = w * p0, r1 = w * p1, r2 = w * p2, r3 = w * p3;
+        int m = 12 * j;
+        float b0 = w * mat[m], b1 = w * mat[m + 1], b2 = w * mat[m + 2], b3 = w * mat[m + 3];
+        float b4 = w * mat[m + 4], b5 = w * mat[m + 5], b6 = w * mat[m + 6], b7 = w * mat[m + 7];
+        float b8 = w * mat[m + 8], b9 = w * mat[m + 9], b10 = w * mat[m + 10], b11 = w * mat[m + 11];
+        for (int k = 1; k < width; k++) {
+            j = joints[o + k];
+            w = weights[o + k];
+            q = 8 * j;
+            float s = Math.copySign(w, p0 * dq[q] + p1 * dq[q + 1] + p2 * dq[q + 2] + p3 * dq[q + 3] + 0f);
+            r0 += s * dq[q];
+            r1 += s * dq[q + 1];
+            r2 += s * dq[q + 2];
+            r3 += s * dq[q + 3];
+            m = 12 * j;
+            b0 += w * mat[m];
+            b1 += w * mat[m + 1];
+            b2 += w * mat[m + 2];
+            b3 += w * mat[m + 3];
+            b4 += w * mat[m + 4];
+            b5 += w * mat[m + 5];
+            b6 += w * mat[m + 6];
+            b7 += w * mat[m + 7];
+            b8 += w * mat[m + 8];
+            b9 += w * mat[m + 9];
+            b10 += w * mat[m + 10];
+            b11 += w * mat[m + 11];
         }
+        float inv = (float) (1.0 / Math.sqrt(r0 * r0 + r1 * r1 + r2 * r2 + r3 * r3));
+        // Without scale the normal matrix is R itself.
+        SkinningSteps.rotationMatrix(inv * r0, inv * r1, inv * r2, inv * r3, d, 3);
+        int v = 3 * i;
+        float cx = centres[v], cy = centres[v + 1], cz = centres[v + 2];
+        float ex = positions[v] - cx, ey = positions[v + 1] - cy, ez = positions[v + 2] - cz;
+        d[0] = d[3] * ex + d[4] * ey + d[5] * ez + (b0 * cx + b1 * cy + b2 * cz + b3);
+        d[1] = d[6] * ex + d[7] * ey + d[8] * ez + (b4 * cx + b5 * cy + b6 * cz + b7);
+        d[2] = d[9] * ex + d[10] * ey + d[11] * ez + (b8 * cx + b9 * cy + b10 * cz + b11);
     }
 
     /**
@@ -91,12 +142,6 @@ public final class ScalarCorSkinner extends AbstractSkinner {
                 S);
         SkinningSteps.transformAffine(d, S, positions, v, d, P1);
         SkinningSteps.transformAffine(d, S, centres, v, d, C1);
-    }
-
-    /** Step 3 without scale: D = M, so {@code t = (sum_k w_k M_(j_k)) c}, the blended matrix applied once. */
-    private void moveCentre(float[] matrices, int o, int v, float[] d) {
-        SkinningSteps.blendMatrices(matrices, joints, weights, o, width, d, S);
-        SkinningSteps.transformAffine(d, S, centres, v, d, T);
     }
 
     /**

@@ -5,12 +5,14 @@ package org.skinlab.skinning;
  * {@code M = sum_k w_k M_(j_k)}, {@code p' = M p}, and the normal by {@link NormalTransform}.
  * The portable kernel (Android) and the reference the SIMD kernels are tested against.
  *
- * <p>The one kernel that keeps its blend and cofactor written out instead of calling
- * {@link SkinningSteps#blendMatrices} and {@link SkinningSteps#signedCofactor} (the same formulas
- * in the same order, so the same bits): LBS does so little per point that passing the 12 blended
- * floats and the 9 of the cofactor through a scratch array, as the other kernels do, made a
- * frame measurably slower, where in registers they cost nothing; Java has no other way to return
- * several values from a method.
+ * <p>{@link #skin} and {@link #skinDeformations} share the blend's and the normal matrix's
+ * formulas, {@link SkinningSteps#blendMatrices} and {@link SkinningSteps#signedCofactor}, in the
+ * same order (so the same bits); each writes the blend in locals in its own loop, and
+ * {@link #skinDeformations} its record through {@link Deformations#putCofactor}. LBS does so little per point that passing the
+ * 12 blended floats through a scratch array, as the other kernels do, costs a measurable share of
+ * a frame, where in registers they cost nothing (Java has no other way to return several values
+ * from a method); and one loop for both, choosing the output by a flag, leaves C2 one profile for
+ * the two: whichever output a JVM asks for second runs measurably slower.
  */
 public final class ScalarLbsSkinner extends AbstractSkinner {
     private final float[] positions;
