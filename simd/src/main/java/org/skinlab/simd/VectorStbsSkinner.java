@@ -78,9 +78,9 @@ final class VectorStbsSkinner extends AbstractSkinner {
                 }
             }
         }
-        int size = StbsLanes.INFLUENCE_FLOATS * width + StbsLanes.BLEND_FLOATS;
+        int size = StbsInfluenceLanes.INFLUENCE_FLOATS * width + StbsLanes.BLEND_FLOATS;
         scratch = ThreadLocal.withInitial(() -> new float[size]);
-        jointScratch = ThreadLocal.withInitial(() -> new float[StbsLanes.JOINT_FLOATS * width]);
+        jointScratch = ThreadLocal.withInitial(() -> new float[StbsInfluenceLanes.JOINT_FLOATS * width]);
         int tableSize = JointPalette.BONE_FLOATS * jointCount;
         jointTable = ThreadLocal.withInitial(() -> new float[tableSize]);
     }
@@ -127,14 +127,14 @@ final class VectorStbsSkinner extends AbstractSkinner {
         float[] s = scratch.get();
         float[] t = jointScratch.get();
         float[] table = jointTable.get();
-        StbsLanes.packJoints(rows, dq, jointCount, table);
+        StbsInfluenceLanes.packJoints(rows, dq, jointCount, table);
         boolean exact = normals == NormalTransform.INVERSE_TRANSPOSE;
-        int blend = StbsLanes.INFLUENCE_FLOATS * width;
+        int blend = StbsInfluenceLanes.INFLUENCE_FLOATS * width;
         for (int b = firstBlock; b < endBlock; b++) {
             // Trailing slots without weight in the whole block (padding) are left out: each costs
             // 24 copied and transposed floats per lane and a sin and a cos.
             int active = Math.max(1, activeWidth[b]);
-            StbsLanes.influences(table, rowIndex, points, b, width, active, s, t);
+            StbsInfluenceLanes.influences(table, rowIndex, points, b, width, active, s, t);
             if (dualQuaternions) {
                 StbsLanes.dualQuaternion(s, blend, weights, points, b, width, active, exact, outPositions, outNormals);
             } else {
@@ -164,12 +164,12 @@ final class VectorStbsSkinner extends AbstractSkinner {
         float[] t = jointScratch.get();
         float[] table = jointTable.get();
         float[] f = deformationScratch.get();
-        StbsLanes.packJoints(palette.boneRows(), palette.dualQuaternions(), jointCount, table);
+        StbsInfluenceLanes.packJoints(palette.boneRows(), palette.dualQuaternions(), jointCount, table);
         boolean exact = normals == NormalTransform.INVERSE_TRANSPOSE;
-        int blend = StbsLanes.INFLUENCE_FLOATS * width;
+        int blend = StbsInfluenceLanes.INFLUENCE_FLOATS * width;
         for (int b = firstBlock; b < endBlock; b++) {
             int active = Math.max(1, activeWidth[b]);
-            StbsLanes.influences(table, rowIndex, points, b, width, active, s, t);
+            StbsInfluenceLanes.influences(table, rowIndex, points, b, width, active, s, t);
             if (dualQuaternions) {
                 StbsLanes.dualQuaternionDeformations(s, weights, points, b, width, active, f, outDeformations);
             } else {

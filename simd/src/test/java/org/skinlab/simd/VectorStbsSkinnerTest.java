@@ -212,7 +212,7 @@ class VectorStbsSkinnerTest {
                 a[l] = (float) (-Math.PI / 2 + Math.PI * (i + l) / 8000.0);
             }
             float[] scratch = Arrays.copyOf(a, 24);
-            StbsLanes.sinCos(scratch, 0, 8, 16);
+            StbsInfluenceLanes.sinCos(scratch, 0, 8, 16);
             float[] s = Arrays.copyOfRange(scratch, 8, 16);
             float[] c = Arrays.copyOfRange(scratch, 16, 24);
             for (int l = 0; l < 8; l++) {
