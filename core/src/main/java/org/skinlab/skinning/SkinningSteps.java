@@ -68,7 +68,7 @@ final class SkinningSteps {
         float d0 = w * dq[q + 4], d1 = w * dq[q + 5], d2 = w * dq[q + 6], d3 = w * dq[q + 7];
         for (int k = 1; k < width; k++) {
             q = 8 * joints[o + k];
-            w = Math.copySign(weights[o + k], p0 * dq[q] + p1 * dq[q + 1] + p2 * dq[q + 2] + p3 * dq[q + 3] + 0f);
+            w = hemisphereWeight(weights[o + k], p0, p1, p2, p3, dq, q);
             r0 += w * dq[q];
             r1 += w * dq[q + 1];
             r2 += w * dq[q + 2];
@@ -78,14 +78,29 @@ final class SkinningSteps {
             d2 += w * dq[q + 6];
             d3 += w * dq[q + 7];
         }
-        float inv = inverseLength(r0, r1, r2, r3);
-        put4(dest, d, inv, r0, r1, r2, r3);
-        put4(dest, d + 4, inv, d0, d1, d2, d3);
+        putNormalised(r0, r1, r2, r3, d0, d1, d2, d3, dest, d);
     }
 
-    /** {@code 1 / |(x, y, z, w)|}, the square root and the division in double. */
-    private static float inverseLength(float x, float y, float z, float w) {
-        return (float) (1.0 / Math.sqrt(x * x + y * y + z * z + w * w));
+    /**
+     * {@code copySign(w, p . q + 0)} for the rotation quaternion p of the first influence and the
+     * one at {@code dq[q]}: the weight of {@link #blendDualQuaternions}'s term, in a method of its
+     * own so that the blend stays within the bytecode size C2 inlines into a hot loop (325 bytes,
+     * {@code -XX:FreqInlineSize}).
+     */
+    private static float hemisphereWeight(float w, float p0, float p1, float p2, float p3, float[] dq, int q) {
+        return Math.copySign(w, p0 * dq[q] + p1 * dq[q + 1] + p2 * dq[q + 2] + p3 * dq[q + 3] + 0f);
+    }
+
+    /**
+     * The dual quaternion (real r, dual e) divided by |r| into {@code dest[d..d+8)}, {@code 1 / |r|}
+     * with the square root and the division in double; a method of its own for the reason
+     * {@link #hemisphereWeight} is.
+     */
+    private static void putNormalised(float r0, float r1, float r2, float r3, float e0, float e1, float e2, float e3,
+            float[] dest, int d) {
+        float inv = (float) (1.0 / Math.sqrt(r0 * r0 + r1 * r1 + r2 * r2 + r3 * r3));
+        put4(dest, d, inv, r0, r1, r2, r3);
+        put4(dest, d + 4, inv, e0, e1, e2, e3);
     }
 
     /**
