@@ -43,7 +43,7 @@ class PanelsLeaveTheModelVisibleTest {
     @CsvSource({"480, 400", "640, 480", "800, 600", "1280, 800"})
     void noPanelCoversTheModel(int width, int height) {
         AnimationConfig config = new AnimationConfig();
-        try (GlWindow window = new GlWindow("skinlab", width, height, false, false);
+        try (GlWindow window = GlTestDisplay.window("skinlab", width, height, false);
                 Viewer viewer = new Viewer(ModelLibrary.find(), config, false)) {
             assertNull(viewer.openAndWait(viewer.library().defaultModel()));
             viewer.current().mesh().step(0.0);

@@ -18,7 +18,7 @@ class GlDebugLogTest {
 
     @Test
     void countsErrorsAndNothingElse() {
-        try (GlWindow window = new GlWindow("test", 64, 64, false, true)) {
+        try (GlWindow window = GlTestDisplay.window("test", 64, 64, true)) {
             GlDebugLog log = GlDebugLog.install(window.capabilities());
             assertNotNull(log, "Mesa's llvmpipe has OpenGL 4.5 with KHR_debug");
             try (log) {
@@ -34,7 +34,7 @@ class GlDebugLogTest {
     /** Without a debug context: glGetError at a named place, every recorded error drained. */
     @Test
     void checkNamesThePlaceAndTheError() {
-        try (GlWindow window = new GlWindow("test", 64, 64, false, false)) {
+        try (GlWindow window = GlTestDisplay.window("test", 64, 64, false)) {
             assertTrue(!window.isDebugContext());
             GlDebugLog.check("a clear");
             glBindTexture(0x1234, 0);

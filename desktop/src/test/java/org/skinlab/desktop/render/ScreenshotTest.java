@@ -39,7 +39,7 @@ class ScreenshotTest {
     private static void context() {
         GlTestDisplay.assume();
         if (window == null) {
-            window = new GlWindow("ScreenshotTest", 64, 48, false, false);
+            window = GlTestDisplay.window("ScreenshotTest", 64, 48, false);
             int[] size = new int[2];
             window.framebufferSize(size);
             width = size[0];

@@ -33,7 +33,7 @@ class TextureCacheTest {
     @BeforeAll
     static void open() {
         GlTestDisplay.assume();
-        window = new GlWindow("TextureCacheTest", 32, 32, false, false);
+        window = GlTestDisplay.window("TextureCacheTest", 32, 32, false);
     }
 
     @AfterAll
