@@ -3,6 +3,8 @@ package org.skinlab.desktop.bench;
 import java.lang.management.ManagementFactory;
 import java.lang.management.ThreadMXBean;
 
+import org.skinlab.bench.Warmup;
+
 /**
  * A warm-up that waits for the JIT: frames for at least the given time, then on, a tenth of a
  * second at a time, until a frame allocates under {@value #COMPILED_BYTES} bytes on the calling
@@ -17,6 +19,9 @@ public final class JitWarmup {
     static final double MAX_EXTRA_SECONDS = 10;
 
     private static final com.sun.management.ThreadMXBean THREADS = threads();
+
+    /** This warm-up as core's benches take one. */
+    public static final Warmup WARMUP = JitWarmup::run;
 
     private JitWarmup() {
     }

@@ -15,14 +15,15 @@ import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
+import org.skinlab.bench.FrameBench;
 import org.skinlab.desktop.CommandFailure;
 import org.skinlab.desktop.ExitCodes;
 import org.skinlab.desktop.JavaRuntime;
 import org.skinlab.desktop.ModelFileSearch;
 import org.skinlab.desktop.ModelFiles;
 import org.skinlab.desktop.bench.BenchCorpus;
-import org.skinlab.desktop.bench.FrameBench;
 import org.skinlab.desktop.bench.FrameBenchTable;
+import org.skinlab.desktop.bench.JitWarmup;
 import org.skinlab.desktop.bench.PaletteBench;
 import org.skinlab.model.MeshInstance;
 import org.skinlab.model.Model;
@@ -151,7 +152,7 @@ public final class FrameBenchCommand implements Callable<Integer> {
                         warmupSeconds == null ? FIRST_WARMUP : warmup, timed));
                 continue;
             }
-            measureFile(out, input.name(), new FrameBench(model, rule, sharing, methods), methods, warmed, warmup,
+            measureFile(out, input.name(), new FrameBench(model, rule, sharing, methods, JitWarmup.WARMUP), methods, warmed, warmup,
                     timed, table);
         }
         return status;

@@ -13,10 +13,11 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 import org.knowm.xchart.CategoryChart;
 import org.knowm.xchart.CategoryChartBuilder;
 import org.knowm.xchart.style.Styler;
+import org.skinlab.bench.FrameBench;
 import org.skinlab.desktop.ModelFileSearch;
 import org.skinlab.desktop.ModelFiles;
 import org.skinlab.desktop.bench.CppSkinningReference;
-import org.skinlab.desktop.bench.FrameBench;
+import org.skinlab.desktop.bench.JitWarmup;
 import org.skinlab.desktop.bench.SkinningTiming;
 import org.skinlab.desktop.bench.SyntheticSkinData;
 import org.skinlab.model.MeshInstance;
@@ -105,7 +106,7 @@ final class EvalTimeSection implements EvalSection {
                     boolean scalar = k == 1;
                     List<SkinningMethod> methods = cap == 0 && !scalar ? List.of(SkinningMethod.values()) : EVERY_VARIANT;
                     FrameBench bench = new FrameBench(models.get(a).model, NormalTransform.INVERSE_TRANSPOSE,
-                            PositionSharing.AUTO, scalar, cap, methods);
+                            PositionSharing.AUTO, scalar, cap, methods, JitWarmup.WARMUP);
                     if (cap == 0 && !scalar) {
                         putShape(asset, bench.shape());
                     }

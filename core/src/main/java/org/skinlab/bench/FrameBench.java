@@ -1,4 +1,4 @@
-package org.skinlab.desktop.bench;
+package org.skinlab.bench;
 
 import java.util.Arrays;
 import java.util.LinkedHashSet;
@@ -22,7 +22,9 @@ import org.skinlab.skinning.SkinningMethod;
  * first clip (slerp), evaluate the skeleton, compute every geometry's skinning matrices (and, for
  * DQS, its dual quaternions), and skin every placed mesh, positions and normals, on one thread.
  * Each frame advances the clip by 1/60 s (looping), so the sampler's key search moves as it does
- * when playing. Warm-up, then timed frames for a given time (at least 5).
+ * when playing. Warm-up (the platform's {@link Warmup}), then timed frames for a given time (at
+ * least 5). The desktop's {@code bench frame} and {@code eval} and the Android app's measurement
+ * run this same frame.
  */
 public final class FrameBench {
     /** What one frame deforms, summed over the placed meshes (influences: the most per position). */
@@ -39,10 +41,12 @@ public final class FrameBench {
     private final float[][] positions;
     private final float[][] normals;
     private final Shape shape;
+    private final Warmup warmup;
 
-    /** A bench of {@code methods} (their skinners made here, the others never). */
-    public FrameBench(Model model, NormalTransform rule, PositionSharing sharing, List<SkinningMethod> methods) {
-        this(model, rule, sharing, false, 0, methods);
+    /** A bench of {@code methods} (their skinners made here, the others never), warmed up by {@code warmup}. */
+    public FrameBench(Model model, NormalTransform rule, PositionSharing sharing, List<SkinningMethod> methods,
+            Warmup warmup) {
+        this(model, rule, sharing, false, 0, methods, warmup);
     }
 
     /**
@@ -51,7 +55,8 @@ public final class FrameBench {
      * its heaviest ones, renormalised ({@link InfluenceView}, what a GPU's fixed slots see).
      */
     public FrameBench(Model model, NormalTransform rule, PositionSharing sharing, boolean scalar, int influenceCap,
-            List<SkinningMethod> methods) {
+            List<SkinningMethod> methods, Warmup warmup) {
+        this.warmup = warmup;
         skinned = new SkinnedModel(model, model.clips().isEmpty() ? null : model.clips().get(0), rule);
         int n = skinned.geometries().size();
         skinners = new Skinner[n][SkinningMethod.values().length];
@@ -126,7 +131,7 @@ public final class FrameBench {
      * once in the order of the geometries and joined by '+' (a SIMD kernel may decline a geometry);
      * "none" without geometries.
      */
-    String kernel(SkinningMethod method) {
+    public String kernel(SkinningMethod method) {
         Set<String> names = new LinkedHashSet<>();
         for (int g = 0; g < positions.length; g++) {
             names.add(skinners[g][method.ordinal()].implementation());
@@ -135,12 +140,12 @@ public final class FrameBench {
     }
 
     /**
-     * Warms up for at least {@code warmupSeconds} and until the JIT has compiled the kernels
-     * ({@link JitWarmup}), then times frames for {@code seconds} (at least 5 frames).
+     * Warms up for at least {@code warmupSeconds} (and as long as the bench's {@link Warmup} waits
+     * beyond), then times frames for {@code seconds} (at least 5 frames).
      */
     public Timing measure(SkinningMethod method, double warmupSeconds, double seconds) {
         long[] counter = {0};
-        JitWarmup.run(() -> step(method, counter[0]++), warmupSeconds);
+        warmup.run(() -> step(method, counter[0]++), warmupSeconds);
         long frame = counter[0];
         double[] micros = new double[1024];
         int n = 0;
@@ -164,11 +169,11 @@ public final class FrameBench {
     }
 
     /**
-     * One character's frame (what both this bench and {@link CrowdBench} time): sample its clip at
+     * One character's frame (what this bench and the desktop's crowd bench time): sample its clip at
      * {@code elapsed} seconds of playback (looping), pose, and skin each geometry {@code g} with
      * {@code skinners[g][method.ordinal()]} into {@code positions[g]} and {@code normals[g]}.
      */
-    static void frame(SkinnedModel skinned, Skinner[][] skinners, SkinningMethod method, double elapsed,
+    public static void frame(SkinnedModel skinned, Skinner[][] skinners, SkinningMethod method, double elapsed,
             float[][] positions, float[][] normals) {
         float t = skinned.sampler().clipTime(elapsed, WrapMode.LOOP);
         skinned.pose(t, RotationInterpolation.SLERP);
