@@ -15,9 +15,12 @@ import java.util.List;
 import javax.imageio.ImageIO;
 
 import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.node.ArrayNode;
+import com.fasterxml.jackson.databind.node.ObjectNode;
 
 import org.knowm.xchart.BitmapEncoder;
 import org.knowm.xchart.internal.chartpart.Chart;
+import org.skinlab.bench.Spread;
 
 /**
  * README.md of {@code skinlab eval}, built from results.json alone: sections add text, tables and
@@ -43,6 +46,25 @@ final class EvalReport {
     /** A double rounded to 3 decimals, as results.json stores every measured value. */
     static double round(double d) {
         return Math.round(d * 1000.0) / 1000.0;
+    }
+
+    /**
+     * A timing taken in several runs, as results.json keeps every one: {@code node.name} becomes
+     * {@code {"median", "min", "max", "q1", "q3", "runs": [...]}} (rounded; runs in the order they
+     * were taken). Returns the new node.
+     */
+    static ObjectNode putSpread(ObjectNode node, String name, Spread spread) {
+        ObjectNode s = node.putObject(name);
+        s.put("median", round(spread.median()));
+        s.put("min", round(spread.min()));
+        s.put("max", round(spread.max()));
+        s.put("q1", round(spread.lowerQuartile()));
+        s.put("q3", round(spread.upperQuartile()));
+        ArrayNode runs = s.putArray("runs");
+        for (double r : spread.runs()) {
+            runs.add(round(r));
+        }
+        return s;
     }
 
     /** The one rule: integers as they are, decimals without trailing zeros, never an exponent. */
