@@ -1,0 +1,106 @@
+package org.skinlab.desktop.eval;
+
+import java.awt.BasicStroke;
+import java.awt.Color;
+import java.util.List;
+import java.util.function.Function;
+
+import com.fasterxml.jackson.databind.JsonNode;
+
+import org.knowm.xchart.XYChart;
+import org.knowm.xchart.XYChartBuilder;
+import org.knowm.xchart.XYSeries;
+import org.knowm.xchart.style.Styler;
+import org.knowm.xchart.style.lines.SeriesLines;
+import org.knowm.xchart.style.markers.SeriesMarkers;
+
+/**
+ * The figure rules every section of {@code skinlab eval} follows, in one place: a timing is
+ * drawn at its median with a bar from its fastest to its slowest run (never a lone median); a
+ * logarithmic axis says so in its title; the legend sits outside the plot, so it hides no point;
+ * methods keep one colour in every figure.
+ */
+final class EvalCharts {
+    /** One colour per skinning method, in {@code SkinningMethod} order (LBS, DQS, CoR, BFDQS, STBS-LBS, STBS-DQS, spline). */
+    static final Color[] METHOD_COLOURS = {new Color(0x1f77b4), new Color(0xd62728), new Color(0x2ca02c),
+        new Color(0x9467bd), new Color(0xff7f0e), new Color(0x8c564b), new Color(0x17becf)};
+
+    /** What a figure with spread bars says about them (in its y axis' title). */
+    static final String SPREAD = "median; bars: fastest to slowest run";
+
+    private EvalCharts() {
+    }
+
+    /** A line or point chart of the report's size, its legend outside the plot on the right. */
+    static XYChart xy(String title, String xTitle, String yTitle) {
+        XYChart chart = new XYChartBuilder().width(1000).height(550).title(title).xAxisTitle(xTitle).yAxisTitle(yTitle)
+                .build();
+        chart.getStyler().setLegendPosition(Styler.LegendPosition.OutsideE);
+        chart.getStyler().setMarkerSize(7);
+        return chart;
+    }
+
+    /** A logarithmic x axis, said in its title. */
+    static void logX(XYChart chart) {
+        chart.getStyler().setXAxisLogarithmic(true);
+        chart.setXAxisTitle(chart.getXAxisTitle() + " (log scale)");
+    }
+
+    /** A logarithmic y axis, said in its title. */
+    static void logY(XYChart chart) {
+        chart.getStyler().setYAxisLogarithmic(true);
+        chart.setYAxisTitle(chart.getYAxisTitle() + " (log scale)");
+    }
+
+    /**
+     * Categories on the x axis: category i at x = i, labelled {@code labels.get(i)}; other ticks
+     * unlabelled. Points of several series at one category sit side by side ({@link #offset}).
+     */
+    static void categories(XYChart chart, List<String> labels) {
+        Function<Double, String> label = x -> {
+            long i = Math.round(x);
+            return Math.abs(x - i) < 1e-6 && i >= 0 && i < labels.size() ? labels.get((int) i) : " ";
+        };
+        chart.setCustomXAxisTickLabelsFormatter(label);
+        chart.getStyler().setXAxisMin(-0.5);
+        chart.getStyler().setXAxisMax(labels.size() - 0.5);
+        chart.getStyler().setXAxisTickMarkSpacingHint(40);
+    }
+
+    /** Where series {@code s} of {@code count} sits at category {@code category}: spread over 0.6 of a category. */
+    static double offset(int category, int s, int count) {
+        return count <= 1 ? category : category - 0.3 + 0.6 * s / (count - 1);
+    }
+
+    /**
+     * A series of medians at {@code x} with a bar from each timing's min to its max: {@code spreads}
+     * are results.json nodes written by {@link EvalReport#putSpread}. The bars are series of their
+     * own, hidden from the legend.
+     */
+    static XYSeries medians(XYChart chart, String name, List<Double> x, List<JsonNode> spreads, Color colour,
+            boolean line) {
+        double[] xs = new double[x.size()];
+        double[] ys = new double[x.size()];
+        for (int i = 0; i < xs.length; i++) {
+            xs[i] = x.get(i);
+            ys[i] = spreads.get(i).get("median").asDouble();
+        }
+        XYSeries series = chart.addSeries(name, xs, ys);
+        series.setMarkerColor(colour);
+        series.setLineColor(colour);
+        series.setMarker(SeriesMarkers.CIRCLE);
+        if (!line) {
+            series.setLineStyle(SeriesLines.NONE);
+        }
+        for (int i = 0; i < xs.length; i++) {
+            JsonNode s = spreads.get(i);
+            XYSeries bar = chart.addSeries(name + " spread " + i, new double[] {xs[i], xs[i]},
+                    new double[] {s.get("min").asDouble(), s.get("max").asDouble()});
+            bar.setShowInLegend(false);
+            bar.setMarker(SeriesMarkers.NONE);
+            bar.setLineColor(colour);
+            bar.setLineStyle(new BasicStroke(2f));
+        }
+        return series;
+    }
+}
