@@ -115,7 +115,7 @@ final class EvalAdviceSection implements EvalSection {
             for (JsonNode run : asset.get("runs")) {
                 if (run.get("influences").asText().equals("all")) {
                     ObjectNode k = object(c, run.get("kernels").asText());
-                    double micros = run.get("medianMicros").asDouble();
+                    double micros = run.at("/micros/median").asDouble();
                     k.put(run.get("method").asText() + "Micros", micros);
                     k.put(run.get("method").asText() + "PerFrame", (long) Math.floor(FRAME_MICROS / micros));
                 }
@@ -162,8 +162,8 @@ final class EvalAdviceSection implements EvalSection {
                 }
             } else if (file.equals(CHARACTER)) {
                 ObjectNode d = in.putObject("characterQuality");
-                d.put("maxLbsDqsPercent", asset.get("maxLbsDqsPercent").asDouble());
-                d.put("maxDqsCorPercent", asset.get("maxDqsCorPercent").asDouble());
+                d.put("maxLbsDqsPercent", pair(asset, "lbs", "dqs").get("maxPercent").asDouble());
+                d.put("maxDqsCorPercent", pair(asset, "dqs", "cor").get("maxPercent").asDouble());
             } else if (asset.get("influences").asInt() > InfluenceCapReport.CAP_4) {
                 ObjectNode cap = in.putObject("cap");
                 cap.put("file", file);
@@ -178,6 +178,16 @@ final class EvalAdviceSection implements EvalSection {
                 }
             }
         }
+    }
+
+    /** The quality section's comparison of methods {@code a} and {@code b} on an asset. */
+    static JsonNode pair(JsonNode asset, String a, String b) {
+        for (JsonNode p : asset.get("pairs")) {
+            if (p.get("a").asText().equals(a) && p.get("b").asText().equals(b)) {
+                return p;
+            }
+        }
+        throw new IllegalStateException("no pair " + a + " - " + b + " in " + asset.get("file"));
     }
 
     private static ObjectNode object(ObjectNode parent, String name) {

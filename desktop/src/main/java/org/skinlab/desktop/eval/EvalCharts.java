@@ -25,16 +25,36 @@ final class EvalCharts {
     static final Color[] METHOD_COLOURS = {new Color(0x1f77b4), new Color(0xd62728), new Color(0x2ca02c),
         new Color(0x9467bd), new Color(0xff7f0e), new Color(0x8c564b), new Color(0x17becf)};
 
+    /** One line style per skinning method, so that lines lying on each other stay told apart. */
+    static final BasicStroke[] METHOD_STROKES = {new BasicStroke(2.5f), dashes(9, 5), dashes(3, 4), dashes(12, 4, 3, 4),
+        dashes(6, 3), dashes(2, 2), dashes(14, 6)};
+
     /** What a figure with spread bars says about them (in its y axis' title). */
     static final String SPREAD = "median; bars: fastest to slowest run";
 
     private EvalCharts() {
     }
 
+    private static BasicStroke dashes(float... pattern) {
+        return new BasicStroke(2f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_ROUND, 10f, pattern, 0f);
+    }
+
+    /** Method {@code m}'s line (its colour and style), without markers. */
+    static void methodLine(XYSeries series, int m) {
+        series.setMarker(SeriesMarkers.NONE);
+        series.setLineColor(METHOD_COLOURS[m]);
+        series.setLineStyle(METHOD_STROKES[m]);
+    }
+
     /** A line or point chart of the report's size, its legend outside the plot on the right. */
     static XYChart xy(String title, String xTitle, String yTitle) {
-        XYChart chart = new XYChartBuilder().width(1000).height(550).title(title).xAxisTitle(xTitle).yAxisTitle(yTitle)
-                .build();
+        return xy(title, xTitle, yTitle, 550);
+    }
+
+    /** As {@link #xy(String, String, String)}, {@code height} pixels tall (a panel of a stacked figure). */
+    static XYChart xy(String title, String xTitle, String yTitle, int height) {
+        XYChart chart = new XYChartBuilder().width(1000).height(height).title(title).xAxisTitle(xTitle)
+                .yAxisTitle(yTitle).build();
         chart.getStyler().setLegendPosition(Styler.LegendPosition.OutsideE);
         chart.getStyler().setMarkerSize(7);
         return chart;
@@ -57,14 +77,23 @@ final class EvalCharts {
      * unlabelled. Points of several series at one category sit side by side ({@link #offset}).
      */
     static void categories(XYChart chart, List<String> labels) {
+        // XChart drops every tick label unless all of a step's labels differ: the unlabelled ticks
+        // get distinct invisible ones (zero-width spaces).
         Function<Double, String> label = x -> {
             long i = Math.round(x);
-            return Math.abs(x - i) < 1e-6 && i >= 0 && i < labels.size() ? labels.get((int) i) : " ";
+            return Math.abs(x - i) < 1e-6 && i >= 0 && i < labels.size() ? labels.get((int) i)
+                    : "\u200B".repeat((int) Math.round(8 * (x + 1)) + 1);
         };
         chart.setCustomXAxisTickLabelsFormatter(label);
+        chart.getStyler().setAxisTickLabelsFont(new java.awt.Font(java.awt.Font.SANS_SERIF, java.awt.Font.PLAIN, 11));
         chart.getStyler().setXAxisMin(-0.5);
         chart.getStyler().setXAxisMax(labels.size() - 0.5);
         chart.getStyler().setXAxisTickMarkSpacingHint(40);
+    }
+
+    /** An asset's name short enough for a category axis: no extension, no "cylinder-", no corpus prefix ("S01_"). */
+    static String shortName(String file) {
+        return file.replaceAll("\\.(dae|glb|gltf)$", "").replaceFirst("^cylinder-", "").replaceFirst("^[A-Z]\\d\\d_", "");
     }
 
     /** Where series {@code s} of {@code count} sits at category {@code category}: spread over 0.6 of a category. */

@@ -94,11 +94,8 @@ final class EvalPicturesSection implements EvalSection {
         int height = quick ? 360 : 480;
         results.put("panelWidth", width);
         results.put("panelHeight", height);
-        if (quick) {
-            results.put("samplesPerClip", EvalQualitySection.QUICK_SAMPLES);
-        } else {
-            results.put("samplesPerSecond", InfluenceCapError.SAMPLES_PER_SECOND);
-        }
+        results.put("samplesPerSecond", quick ? EvalQualitySection.QUICK_SAMPLES_PER_SECOND
+                : EvalQualitySection.SAMPLES_PER_SECOND);
         results.put("differenceFullPercent", EvalReport.round(100 * DrawSettings.DIFFERENCE_FULL));
         results.put("pixelTolerance", PanelPixels.TOLERANCE);
         if (!ViewerProcess.displayAvailable()) {
@@ -252,7 +249,8 @@ final class EvalPicturesSection implements EvalSection {
         float bestTime = start;
         double best = -1;
         List<MethodComparison> comparisons = comparisons(skinned);
-        for (float t : EvalQualitySection.times(start, end, quick)) {
+        for (float t : EvalQualitySection.times(start, end, quick
+                ? EvalQualitySection.QUICK_SAMPLES_PER_SECOND : EvalQualitySection.SAMPLES_PER_SECOND)) {
             double d = lbsDqs(skinned, comparisons, t);
             if (d > best) {
                 best = d;

@@ -1,56 +1,47 @@
 package org.skinlab.desktop.eval;
 
-import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Locale;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
-import org.knowm.xchart.CategoryChart;
-import org.knowm.xchart.CategoryChartBuilder;
-import org.knowm.xchart.style.Styler;
+import org.knowm.xchart.XYChart;
 import org.skinlab.bench.FrameBench;
+import org.skinlab.bench.FrameTimes;
+import org.skinlab.bench.Rounds;
+import org.skinlab.bench.Spread;
 import org.skinlab.desktop.ModelFileSearch;
 import org.skinlab.desktop.ModelFiles;
-import org.skinlab.desktop.bench.CppSkinningReference;
 import org.skinlab.desktop.bench.JitWarmup;
-import org.skinlab.desktop.bench.SkinningTiming;
-import org.skinlab.desktop.bench.SyntheticSkinData;
 import org.skinlab.model.MeshInstance;
 import org.skinlab.model.Model;
-import org.skinlab.skinning.JointPalette;
 import org.skinlab.skinning.NormalTransform;
 import org.skinlab.skinning.PositionSharing;
-import org.skinlab.skinning.SkinnedGeometry;
-import org.skinlab.skinning.Skinner;
-import org.skinlab.skinning.Skinners;
 import org.skinlab.skinning.SkinningMethod;
 
 /**
  * Section "time": the time of one frame per asset and method ({@link FrameBench}, the timing of
- * {@code bench frame}: sample, skinning matrices, skin, one thread, exact normals), with the
- * fastest kernels (SIMD where the JVM has the Vector API) and core's scalar ones, with all
- * influences and cut to 4 (only where a geometry has more), beside the thesis' table. The thesis'
- * assets are ours: its cylinders are rebuilt in assets/cylinders (assets/README.md), its cowboy is
- * S01_cowboy.dae of the shared corpus.
+ * {@code bench frame}: sample, skinning matrices, skin, one thread, exact normals), every method
+ * with the fastest kernels (SIMD where the JVM has the Vector API) and with core's scalar ones,
+ * with all influences and cut to 4 (where a geometry has more), each timing in interleaved rounds
+ * ({@link FrameTimes}, the protocol the Android app runs too); DQS over LBS per round; beside the
+ * thesis' table; then our kernels against the shared C++ reference ({@link EvalCppReference}).
+ * The assets: every skinned file of assets/, the thesis' cowboy and the stormtrooper of the shared
+ * corpus.
  */
 final class EvalTimeSection implements EvalSection {
-    /**
-     * The methods timed in every variant (scalar kernels, influences capped); the outlook methods
-     * (bulge-free DQS, stretchable and twistable bones, splines) only with the fastest kernels and
-     * every influence, their cost per vertex beside DQS's: in every variant they quadrupled the
-     * section's run (measured: `eval --quick` from 2.5 to 7.4 minutes).
-     */
-    static final List<SkinningMethod> EVERY_VARIANT = List.of(SkinningMethod.LBS, SkinningMethod.DQS,
-            SkinningMethod.COR);
+    /** The methods also timed with their influences capped (the files that have more than 4). */
+    static final List<SkinningMethod> CAPPED = List.of(SkinningMethod.LBS, SkinningMethod.DQS, SkinningMethod.COR);
 
     static final int CAP = 4;
-    /** The shared scalar C++ skinning reference, from the repository root. */
-    static final String CPP_REFERENCE = "../shared/perf/skin_ref.cpp";
+
+    /** The shared corpus' characters timed beside ours: the thesis' cowboy and the largest, the stormtrooper. */
+    static final List<String> CORPUS = List.of("S01_cowboy.dae", "S03_stormtrooper.dae");
 
     /** One row of the thesis' table: its asset, ours, and its DQS and LBS times in ms. */
     record ThesisRow(String thesisName, String file, double dqsMillis, double lbsMillis) {
@@ -60,6 +51,8 @@ final class EvalTimeSection implements EvalSection {
             new ThesisRow("cylinderYLow", "cylinder-twist-low.dae", 2.67, 3.00),
             new ThesisRow("cylinderXHigh", "cylinder-bend.dae", 5.43, 6.5),
             new ThesisRow("cylinderYHigh", "cylinder-twist-high.dae", 4.86, 6.37));
+
+    private static final String[] KERNELS = {"fastest", "scalar"};
 
     @Override
     public String key() {
@@ -73,70 +66,79 @@ final class EvalTimeSection implements EvalSection {
 
     @Override
     public double estimatedSeconds(EvalContext context) {
-        return context.quick() ? 28 : 130;
+        return context.quick() ? 45 : 420;
     }
 
     @Override
     public void measure(EvalContext context, ObjectNode results) {
         boolean quick = context.quick();
-        double firstWarmup = quick ? 1.0 : 2.0;
-        double warmup = quick ? 0.15 : 0.5;
-        double seconds = quick ? 0.25 : 2.0;
-        results.put("warmupSeconds", warmup);
-        results.put("firstWarmupSeconds", firstWarmup);
-        results.put("seconds", seconds);
+        FrameTimes.Protocol first = quick ? new FrameTimes.Protocol(Rounds.MIN_RUNS, 0.5, 0.01, 0.04)
+                : new FrameTimes.Protocol(Rounds.MIN_RUNS, 2.0, 0.05, 0.4);
+        FrameTimes.Protocol later = new FrameTimes.Protocol(first.rounds(), quick ? 0.05 : 0.3,
+                first.warmupSeconds(), first.seconds());
+        ObjectNode protocol = results.putObject("protocol");
+        protocol.put("rounds", first.rounds());
+        protocol.put("firstWarmupSeconds", first.firstWarmupSeconds());
+        protocol.put("assetWarmupSeconds", later.firstWarmupSeconds());
+        protocol.put("warmupSeconds", first.warmupSeconds());
+        protocol.put("seconds", first.seconds());
         results.put("cap", CAP);
-        List<Skinned> models = skinned(files(context, results));
-        int perAsset = 3 * EVERY_VARIANT.size() + SkinningMethod.values().length;
-        int total = models.size() * perAsset;
-        int done = 0;
-        boolean[][] warmed = new boolean[2][SkinningMethod.values().length];
+        List<Path> files = files(context, results);
+        List<SkinningMethod> all = List.of(SkinningMethod.values());
+        List<SkinningMethod> scalarMethods = quick ? CAPPED : all;
         ArrayNode assets = results.putArray("assets");
-        for (int a = 0; a < models.size(); a++) {
+        boolean[] warmed = new boolean[2];
+        for (int a = 0; a < files.size(); a++) {
+            Model model = ModelFiles.load(files.get(a)).model;
             ObjectNode asset = assets.addObject();
-            asset.put("file", models.get(a).file.getFileName().toString());
+            asset.put("file", files.get(a).getFileName().toString());
             ArrayNode runs = asset.putArray("runs");
             for (int cap : new int[] {0, CAP}) {
-                if (cap != 0 && asset.get("influences").asInt() <= CAP) {
-                    asset.put("capNoEffect", true);
-                    done += 2 * EVERY_VARIANT.size();
-                    continue;
-                }
-                for (int k = 0; k < 2; k++) {
+                for (int k = 0; k < KERNELS.length; k++) {
                     boolean scalar = k == 1;
-                    List<SkinningMethod> methods = cap == 0 && !scalar ? List.of(SkinningMethod.values()) : EVERY_VARIANT;
-                    FrameBench bench = new FrameBench(models.get(a).model, NormalTransform.INVERSE_TRANSPOSE,
-                            PositionSharing.AUTO, scalar, cap, methods, JitWarmup.WARMUP);
+                    List<SkinningMethod> methods = cap != 0 ? CAPPED : scalar ? scalarMethods : all;
+                    FrameBench bench = new FrameBench(model, NormalTransform.INVERSE_TRANSPOSE, PositionSharing.AUTO,
+                            scalar, cap, methods, JitWarmup.WARMUP);
                     if (cap == 0 && !scalar) {
                         putShape(asset, bench.shape());
+                    } else if (cap != 0 && bench.shape().influences() == asset.get("influences").asInt()) {
+                        asset.put("capNoEffect", true);
+                        break;
                     }
-                    for (SkinningMethod m : methods) {
-                        double w = warmed[k][m.ordinal()] ? warmup : firstWarmup;
-                        warmed[k][m.ordinal()] = true;
-                        putRun(runs.addObject(), m, scalar, cap, bench.measure(m, w, seconds));
-                        context.progress((double) ++done / total);
+                    for (FrameTimes.Result r : FrameTimes.measure(bench, methods, warmed[k] ? later : first)) {
+                        putRun(runs.addObject(), r, KERNELS[k], cap);
                     }
+                    warmed[k] = true;
                 }
             }
+            putDqsOverLbs(asset);
+            context.progress(0.85 * (a + 1) / files.size());
         }
         thesis(results);
-        reference(context, results.putObject("reference"));
+        EvalCppReference.measure(context, results.putObject("reference"));
     }
 
-    /** A file with a skinned instance, and its model. */
-    private record Skinned(Path file, Model model) {
-    }
-
-    /** The files that have a skinned instance, loaded, in order. */
-    private static List<Skinned> skinned(List<Path> files) {
-        List<Skinned> skinned = new ArrayList<>();
-        for (Path f : files) {
-            Model m = ModelFiles.load(f).model;
-            if (m.instances().stream().anyMatch(MeshInstance::isSkinned)) {
-                skinned.add(new Skinned(f, m));
+    /** Our skinned assets (assets/**.dae; each .glb twin holds the same scene: the load section checks it), and the corpus' characters. */
+    private static List<Path> files(EvalContext context, ObjectNode results) {
+        List<Path> files = new ArrayList<>();
+        for (ModelFileSearch.Entry e : ModelFileSearch.expand(List.of(context.root().resolve("assets")),
+                ModelFileSearch.COLLADA)) {
+            Model model = ModelFiles.load(e.path()).model;
+            if (model.instances().stream().anyMatch(MeshInstance::isSkinned) && !model.clips().isEmpty()) {
+                files.add(e.path());
             }
         }
-        return skinned;
+        ArrayNode skipped = results.putArray("corpusSkipped");
+        for (String name : CORPUS) {
+            Path f = context.corpus() == null ? null : context.corpus().resolve(name);
+            if (f != null && Files.isRegularFile(f)) {
+                files.add(f);
+            } else {
+                skipped.add(name + ": not in the shared corpus at " + context.corpusPlace());
+                context.say("time: " + name + " skipped: no shared corpus at " + context.corpusPlace());
+            }
+        }
+        return files;
     }
 
     /** What one frame of the asset skins: positions, vertices drawn, joints, influences per position. */
@@ -147,117 +149,58 @@ final class EvalTimeSection implements EvalSection {
         asset.put("influences", shape.influences());
     }
 
-    /** One method's timing with the scalar or the fastest kernels, all influences or {@code cap}. */
-    private static void putRun(ObjectNode r, SkinningMethod m, boolean scalar, int cap, FrameBench.Timing t) {
-        r.put("method", m.key());
-        r.put("kernels", scalar ? "scalar" : "fastest");
-        r.put("implementation", t.kernel());
+    /** One method's timing with the scalar or the fastest kernels, all influences or at most the cap. */
+    private static void putRun(ObjectNode r, FrameTimes.Result result, String kernels, int cap) {
+        r.put("method", result.method().key());
+        r.put("kernels", kernels);
+        r.put("implementation", result.kernel());
         r.put("influences", cap == 0 ? "all" : "at most " + CAP);
-        r.put("frames", t.frames());
-        r.put("medianMicros", EvalReport.round(t.medianMicros()));
-        r.put("minMicros", EvalReport.round(t.minMicros()));
-    }
-
-    /** Our COLLADA assets, and the thesis' cowboy when the shared corpus has it (else why not, in results). */
-    private static List<Path> files(EvalContext context, ObjectNode results) {
-        List<Path> files = new ArrayList<>();
-        Path assetsFolder = context.root().resolve("assets");
-        for (ModelFileSearch.Entry e : ModelFileSearch.expand(List.of(assetsFolder), ModelFileSearch.COLLADA)) {
-            files.add(e.path());
-        }
-        Path cowboy = context.corpus() == null ? null : context.corpus().resolve(THESIS.get(0).file());
-        if (cowboy != null && Files.isRegularFile(cowboy)) {
-            files.add(cowboy);
-        } else {
-            results.put("cowboySkipped", "no " + THESIS.get(0).file() + " in the shared corpus at "
-                    + context.corpusPlace());
-        }
-        return files;
+        r.put("frames", result.frames());
+        EvalReport.putSpread(r, "micros", result.micros());
     }
 
     /**
-     * Our kernels against the shared scalar C++ reference on its own synthetic data (4 influences,
-     * 64 joints, normals by the blended matrix as it computes them), compiled and run here right
-     * before ours; the checksums show both skinned the same data the same way.
+     * DQS's time over LBS's, per kernel and influence variant, round by round: the two were timed
+     * one right after the other in each round, so the ratio of a round cancels the machine's drift.
      */
-    private static void reference(EvalContext context, ObjectNode results) {
-        Path source = context.root().resolve(CPP_REFERENCE).normalize();
-        String compiler = CppSkinningReference.compiler();
-        if (!Files.isRegularFile(source)) {
-            results.put("skipped", "no " + source);
-            return;
-        }
-        if (compiler == null) {
-            results.put("skipped", "no C++ compiler (g++ or c++) on the PATH");
-            return;
-        }
-        boolean quick = context.quick();
-        List<Integer> sizes = quick ? List.of(10_000) : List.of(10_000, 100_000);
-        int rounds = quick ? 1 : 3;
-        double seconds = quick ? 0.3 : 0.7;
-        results.put("source", CPP_REFERENCE);
-        results.put("compiler", compiler + " -O3 -DNDEBUG -std=c++17");
-        results.put("joints", SyntheticSkinData.JOINTS);
-        results.put("influences", SyntheticSkinData.INFLUENCES);
-        results.put("rounds", rounds);
-        results.put("roundSeconds", seconds);
-        List<CppSkinningReference.Result> cpp;
-        Path dir = null;
-        try {
-            dir = Files.createTempDirectory("skinlab-eval-cpp");
-            cpp = CppSkinningReference.compile(compiler, source, dir).run(List.of("c-lbs", "c-dqs"), rounds, seconds,
-                    sizes);
-        } catch (IOException e) {
-            results.put("skipped", e.getMessage());
-            return;
-        } finally {
-            deleteQuietly(dir);
-        }
-        double warmup = quick ? 0.3 : 1.5;
-        double oursSeconds = rounds * seconds;
-        results.put("oursWarmupSeconds", warmup);
-        results.put("oursSeconds", oursSeconds);
-        ArrayNode rows = results.putArray("rows");
-        for (CppSkinningReference.Result c : cpp) {
-            oursBeside(c, rows.addObject(), warmup, oursSeconds);
+    private static void putDqsOverLbs(ObjectNode asset) {
+        ArrayNode ratios = asset.putArray("dqsOverLbs");
+        for (String kernels : KERNELS) {
+            for (String influences : new String[] {"all", "at most " + CAP}) {
+                JsonNode lbs = run(asset, SkinningMethod.LBS, kernels, influences);
+                JsonNode dqs = run(asset, SkinningMethod.DQS, kernels, influences);
+                if (lbs == null || dqs == null) {
+                    continue;
+                }
+                double[] per = new double[lbs.at("/micros/runs").size()];
+                for (int i = 0; i < per.length; i++) {
+                    per[i] = dqs.at("/micros/runs/" + i).asDouble() / lbs.at("/micros/runs/" + i).asDouble();
+                }
+                ObjectNode ratio = ratios.addObject().put("kernels", kernels).put("influences", influences);
+                EvalReport.putSpread(ratio, "ratio", Spread.of(per));
+            }
         }
     }
 
-    /** Our scalar and fastest kernels on the C++ run {@code c}'s data, into {@code row}. */
-    private static void oursBeside(CppSkinningReference.Result c, ObjectNode row, double warmup, double oursSeconds) {
-        SkinningMethod method = SkinningMethod.fromKey(c.variant().substring(2));
-        SyntheticSkinData data = new SyntheticSkinData(c.vertices());
-        SkinnedGeometry geometry = data.geometry();
-        JointPalette palette = data.palette();
-        float[] positions = new float[3 * c.vertices()];
-        float[] normals = new float[3 * c.vertices()];
-        row.put("vertices", c.vertices());
-        row.put("method", method.key());
-        row.put("cppMedianNs", c.medianNs());
-        row.put("cppMinNs", c.minNs());
-        for (boolean scalar : new boolean[] {true, false}) {
-            Skinner kernel = scalar ? Skinners.scalar(method, geometry, NormalTransform.BLENDED_MATRIX)
-                    : Skinners.create(method, geometry, NormalTransform.BLENDED_MATRIX);
-            SkinningTiming t = SkinningTiming.measure(() -> kernel.skinAll(palette, positions, normals), positions,
-                    normals, c.vertices(), warmup, oursSeconds);
-            String k = scalar ? "scalar" : "fastest";
-            row.put(k + "Kernel", kernel.implementation());
-            row.put(k + "MedianNs", EvalReport.round(t.median()));
-            row.put(k + "Ratio", EvalReport.round(t.median() / c.medianNs()));
-            // Both sum the same outputs; float rounding differs only in the last digits.
-            row.put(k + "ChecksumAgrees", Math.abs(t.checksum - c.checksum()) <= 1e-4 * Math.abs(c.checksum()));
+    /** The run of {@code method} with {@code kernels} and {@code influences} in an asset's results, or null. */
+    static JsonNode run(JsonNode asset, SkinningMethod method, String kernels, String influences) {
+        for (JsonNode r : asset.get("runs")) {
+            if (r.get("method").asText().equals(method.key()) && r.get("kernels").asText().equals(kernels)
+                    && r.get("influences").asText().equals(influences)) {
+                return r;
+            }
         }
+        return null;
     }
 
-    private static void deleteQuietly(Path dir) {
-        if (dir == null) {
-            return;
+    /** The asset named {@code file} in the section's results, or null. */
+    static JsonNode asset(JsonNode results, String file) {
+        for (JsonNode a : results.path("assets")) {
+            if (a.get("file").asText().equals(file)) {
+                return a;
+            }
         }
-        try (java.util.stream.Stream<Path> files = Files.walk(dir)) {
-            files.sorted(java.util.Comparator.reverseOrder()).forEach(f -> f.toFile().delete());
-        } catch (IOException e) {
-            // A temporary folder left behind is harmless.
-        }
+        return null;
     }
 
     /** The thesis' rows beside ours (fastest kernels, all influences): thesis / ours, how many times faster. */
@@ -269,70 +212,100 @@ final class EvalTimeSection implements EvalSection {
             row.put("file", t.file());
             row.put("thesisDqsMillis", t.dqsMillis());
             row.put("thesisLbsMillis", t.lbsMillis());
-            JsonNode dqs = ours(results, t.file(), "dqs");
-            JsonNode lbs = ours(results, t.file(), "lbs");
+            JsonNode asset = asset(results, t.file());
+            JsonNode dqs = asset == null ? null : run(asset, SkinningMethod.DQS, "fastest", "all");
+            JsonNode lbs = asset == null ? null : run(asset, SkinningMethod.LBS, "fastest", "all");
             if (dqs == null || lbs == null) {
                 row.put("missing", "not measured here");
                 continue;
             }
-            row.put("oursDqsMicros", dqs.get("medianMicros").asDouble());
-            row.put("oursLbsMicros", lbs.get("medianMicros").asDouble());
-            row.put("dqsRatio", EvalReport.round(t.dqsMillis() * 1000 / dqs.get("medianMicros").asDouble()));
-            row.put("lbsRatio", EvalReport.round(t.lbsMillis() * 1000 / lbs.get("medianMicros").asDouble()));
+            row.put("oursDqsMicros", dqs.at("/micros/median").asDouble());
+            row.put("oursLbsMicros", lbs.at("/micros/median").asDouble());
+            row.put("dqsRatio", EvalReport.round(t.dqsMillis() * 1000 / dqs.at("/micros/median").asDouble()));
+            row.put("lbsRatio", EvalReport.round(t.lbsMillis() * 1000 / lbs.at("/micros/median").asDouble()));
         }
-    }
-
-    private static JsonNode ours(ObjectNode results, String file, String method) {
-        for (JsonNode a : results.get("assets")) {
-            if (a.get("file").asText().equals(file)) {
-                for (JsonNode r : a.get("runs")) {
-                    if (r.get("method").asText().equals(method) && r.get("kernels").asText().equals("fastest")
-                            && r.get("influences").asText().equals("all")) {
-                        return r;
-                    }
-                }
-            }
-        }
-        return null;
     }
 
     @Override
     public void report(JsonNode results, EvalReport report) {
         report.paragraph("The time of one frame of the asset's first clip, one thread: sample the clip, the skinning"
-                + " matrices (and dual quaternions for DQS and CoR), skin every mesh, positions and exact normals"
-                + " (`bench frame`'s protocol). Per asset and method the median over "
-                + EvalReport.num(results, "/seconds") + " s of frames after " + EvalReport.num(results, "/warmupSeconds")
-                + " s of warm-up (" + EvalReport.num(results, "/firstWarmupSeconds") + " s for a kernel's first asset),"
-                + " in µs; with the fastest kernels here (SIMD where the Vector API is on; the kernel's name says"
-                + " which ran) and with core's scalar ones; with every influence, and cut to the "
+                + " matrices (and whatever else the method reads: dual quaternions, bones), skin every mesh,"
+                + " positions and exact normals (`bench frame`'s frame, `FrameBench`). Every method with the"
+                + " fastest kernels here (SIMD where the Vector API is on; the kernel's name says which ran) and with"
+                + " core's scalar ones, the code a phone runs; with every influence, and cut to the "
                 + EvalReport.num(results, "/cap") + " heaviest (renormalised, what a GPU's fixed slots see) where an"
                 + " asset has more (the cut geometry skins every render vertex, without sharing positions, so part of"
-                + " that difference is the sharing).");
-        report.header("asset", "influences", "method", "kernels", "kernel name", "influences used", "median µs",
-                "min µs");
+                + " that difference is the sharing). Each timing is " + EvalReport.num(results, "/protocol/rounds")
+                + " runs, interleaved across the methods (each round times every method once, starting one further"
+                + " along): a run is the median frame of " + EvalReport.num(results, "/protocol/seconds")
+                + " s after a warm-up of " + EvalReport.num(results, "/protocol/warmupSeconds") + " s ("
+                + EvalReport.num(results, "/protocol/firstWarmupSeconds") + " s for a kernel's first asset, "
+                + EvalReport.num(results, "/protocol/assetWarmupSeconds") + " s for a later asset's first round,"
+                + " each also until the JIT has compiled the kernels). The table gives the median run, the fastest"
+                + " and the slowest, in µs; the Android app's measurement (section \"phone\") runs the same"
+                + " protocol.");
+        for (JsonNode s : results.get("corpusSkipped")) {
+            report.paragraph("Skipped: `" + s.asText() + "`.");
+        }
+        timeTable(results, report);
+        ratioTable(results, report);
+        thesisTable(results, report);
+        figure(results, "fastest", report);
+        figure(results, "scalar", report);
+        EvalCppReference.report(results, report);
+    }
+
+    private static void timeTable(JsonNode results, EvalReport report) {
+        report.header("asset", "positions skinned", "joints", "influences", "method", "kernels", "kernel name",
+                "influences used", "median µs", "fastest µs", "slowest µs");
         JsonNode assets = results.get("assets");
         for (int a = 0; a < assets.size(); a++) {
             JsonNode asset = assets.get(a);
             JsonNode runs = asset.get("runs");
+            String p0 = "/assets/" + a;
             for (int r = 0; r < runs.size(); r++) {
-                String p = "/assets/" + a + "/runs/" + r;
+                String p = p0 + "/runs/" + r;
                 JsonNode run = runs.get(r);
-                report.row("`" + asset.get("file").asText() + "`", EvalReport.num(results, "/assets/" + a
-                        + "/influences"), run.get("method").asText().toUpperCase(java.util.Locale.ROOT),
-                        run.get("kernels").asText(), "`" + run.get("implementation").asText() + "`",
-                        run.get("influences").asText().equals("all") ? "all" : "heaviest " + EvalReport.num(results,
-                                "/cap"), EvalReport.num(results, p + "/medianMicros"),
-                        EvalReport.num(results, p + "/minMicros"));
+                report.row("`" + asset.get("file").asText() + "`", EvalReport.num(results, p0 + "/positionsSkinned"),
+                        EvalReport.num(results, p0 + "/joints"), EvalReport.num(results, p0 + "/influences"),
+                        upper(run.get("method")), run.get("kernels").asText(),
+                        "`" + run.get("implementation").asText() + "`",
+                        run.get("influences").asText().equals("all") ? "all"
+                                : "heaviest " + EvalReport.num(results, "/cap"),
+                        EvalReport.num(results, p + "/micros/median"), EvalReport.num(results, p + "/micros/min"),
+                        EvalReport.num(results, p + "/micros/max"));
             }
         }
         report.line("");
-        if (results.has("cowboySkipped")) {
-            report.paragraph("The cowboy is skipped: `" + results.get("cowboySkipped").asText() + "`.");
+    }
+
+    private static void ratioTable(JsonNode results, EvalReport report) {
+        report.heading(3, "DQS against LBS on each asset");
+        report.paragraph("The thesis found DQS faster than LBS. DQS's frame time over LBS's, per round (the two were"
+                + " timed one right after the other, so a round's ratio cancels the machine's drift): the median"
+                + " round and the range. Below 1, DQS is the faster. Why the ratio differs between kernels:"
+                + " \"DQS against LBS, per kernel\" below.");
+        report.header("asset", "influences", "kernels", "influences used", "DQS / LBS (median)", "lowest",
+                "highest");
+        JsonNode assets = results.get("assets");
+        for (int a = 0; a < assets.size(); a++) {
+            JsonNode ratios = assets.get(a).get("dqsOverLbs");
+            for (int i = 0; i < ratios.size(); i++) {
+                String p = "/assets/" + a + "/dqsOverLbs/" + i;
+                report.row("`" + assets.get(a).get("file").asText() + "`",
+                        EvalReport.num(results, "/assets/" + a + "/influences"), ratios.get(i).get("kernels").asText(),
+                        ratios.get(i).get("influences").asText(), EvalReport.num(results, p + "/ratio/median"),
+                        EvalReport.num(results, p + "/ratio/min"), EvalReport.num(results, p + "/ratio/max"));
+            }
         }
+        report.line("");
+    }
+
+    private static void thesisTable(JsonNode results, EvalReport report) {
         report.heading(3, "Beside the thesis");
         report.paragraph("The thesis' times per deformation (its table, ms) against ours (the fastest kernels, every"
-                + " influence; µs); thesis / ours is how many times faster this frame is. The thesis measured"
-                + " its own desktop computer, so the ratio mixes the code's and the machine's progress.");
+                + " influence, the median run; µs); thesis / ours is how many times faster this frame is. The thesis"
+                + " measured its own desktop computer, so the ratio mixes the code's and the machine's progress.");
         report.header("thesis asset", "ours", "thesis DQS ms", "ours DQS µs", "DQS thesis / ours", "thesis LBS ms",
                 "ours LBS µs", "LBS thesis / ours");
         JsonNode rows = results.get("thesis");
@@ -345,98 +318,40 @@ final class EvalTimeSection implements EvalSection {
                     EvalReport.numOrDash(results, p + "/oursLbsMicros"), EvalReport.numOrDash(results, p + "/lbsRatio"));
         }
         report.line("");
-        for (int a = 0; a < assets.size(); a++) {
-            assetFigure(assets.get(a), report);
-        }
-        referenceReport(results, report);
     }
 
-    private static void referenceReport(JsonNode results, EvalReport report) {
-        report.heading(3, "Against the scalar C++ reference");
-        JsonNode ref = results.path("reference");
-        if (ref.has("skipped")) {
-            report.paragraph("Not run: `" + ref.get("skipped").asText() + "`.");
-            return;
-        }
-        report.paragraph("The shared scalar C++ reference (`" + ref.get("source").asText() + "`, compiled here with `"
-                + ref.get("compiler").asText() + "`) on its own synthetic data (" + EvalReport.num(results, "/reference/joints")
-                + " joints, " + EvalReport.num(results, "/reference/influences") + " influences per vertex,"
-                + " normals by the blended matrix as it computes them), then our kernels on the same data, which"
-                + " core's generator reproduces bit for bit, in the same run: its " + EvalReport.num(results,
-                "/reference/rounds") + " round(s) of " + EvalReport.num(results, "/reference/roundSeconds")
-                + " s against ours, " + EvalReport.num(results, "/reference/oursSeconds") + " s after "
-                + EvalReport.num(results, "/reference/oursWarmupSeconds") + " s of warm-up. ns per vertex, medians;"
-                + " ours / C++ below one means we are faster; the checksums (the sum of the outputs) agree when both"
-                + " skinned the same data alike.");
-        report.header("vertices", "method", "C++ ns", "scalar Java ns", "scalar / C++", "fastest Java", "fastest ns",
-                "fastest / C++", "checksums agree");
-        JsonNode rows = ref.get("rows");
-        for (int i = 0; i < rows.size(); i++) {
-            String p = "/reference/rows/" + i;
-            JsonNode row = rows.get(i);
-            report.row(EvalReport.num(results, p + "/vertices"), row.get("method").asText().toUpperCase(java.util.Locale.ROOT),
-                    EvalReport.num(results, p + "/cppMedianNs"), EvalReport.num(results, p + "/scalarMedianNs"),
-                    EvalReport.num(results, p + "/scalarRatio"), "`" + row.get("fastestKernel").asText() + "`",
-                    EvalReport.num(results, p + "/fastestMedianNs"), EvalReport.num(results, p + "/fastestRatio"),
-                    row.get("scalarChecksumAgrees").asBoolean() && row.get("fastestChecksumAgrees").asBoolean()
-                            ? "yes" : "**no**");
-        }
-        report.line("");
-        CategoryChart chart = new CategoryChartBuilder().width(900).height(500)
-                .title("Against the scalar C++ reference (same data, same run)").xAxisTitle("method, vertices")
-                .yAxisTitle("ns per vertex (median)").build();
-        chart.getStyler().setLegendPosition(Styler.LegendPosition.InsideNW);
+    /** Every asset's frame per method with one kind of kernels, every influence: medians and their range. */
+    private static void figure(JsonNode results, String kernels, EvalReport report) {
+        JsonNode assets = results.get("assets");
         List<String> labels = new ArrayList<>();
-        List<Double> cpp = new ArrayList<>();
-        List<Double> scalar = new ArrayList<>();
-        List<Double> fastest = new ArrayList<>();
-        for (JsonNode row : rows) {
-            labels.add(row.get("method").asText().toUpperCase(java.util.Locale.ROOT) + ", " + row.get("vertices").asInt());
-            cpp.add(row.get("cppMedianNs").asDouble());
-            scalar.add(row.get("scalarMedianNs").asDouble());
-            fastest.add(row.get("fastestMedianNs").asDouble());
+        for (JsonNode a : assets) {
+            labels.add(EvalCharts.shortName(a.get("file").asText()));
         }
-        chart.addSeries("C++ scalar reference (g++ -O3)", labels, cpp);
-        chart.addSeries("Java, core's scalar kernel", labels, scalar);
-        chart.addSeries("Java, fastest kernel", labels, fastest);
-        report.figure("time-cpp-reference.png", "ns per vertex against the scalar C++ reference", chart);
-    }
-
-    /** One bar chart per asset: method on the axis, a bar per kernel and influence variant. */
-    private static void assetFigure(JsonNode asset, EvalReport report) {
-        String file = asset.get("file").asText();
-        CategoryChart chart = new CategoryChartBuilder().width(900).height(500)
-                .title("Time per frame: " + file).xAxisTitle("method").yAxisTitle("µs per frame (median)").build();
-        chart.getStyler().setLegendPosition(Styler.LegendPosition.InsideNW);
-        List<String> variants = new ArrayList<>();
-        for (JsonNode r : asset.get("runs")) {
-            String v = variant(r);
-            if (!variants.contains(v)) {
-                variants.add(v);
-            }
-        }
-        List<String> methods = new ArrayList<>();
-        for (SkinningMethod m : SkinningMethod.values()) {
-            methods.add(m.key().toUpperCase(java.util.Locale.ROOT));
-        }
-        for (String v : variants) {
-            List<Double> values = new ArrayList<>();
-            for (SkinningMethod m : SkinningMethod.values()) {
-                double value = 0;
-                for (JsonNode r : asset.get("runs")) {
-                    if (variant(r).equals(v) && r.get("method").asText().equals(m.key())) {
-                        value = r.get("medianMicros").asDouble();
-                    }
+        XYChart chart = EvalCharts.xy("Time per frame, " + kernels + " kernels, every influence", "asset",
+                "µs per frame (" + EvalCharts.SPREAD + ")");
+        EvalCharts.categories(chart, labels);
+        EvalCharts.logY(chart);
+        SkinningMethod[] methods = SkinningMethod.values();
+        for (int m = 0; m < methods.length; m++) {
+            List<Double> x = new ArrayList<>();
+            List<JsonNode> spreads = new ArrayList<>();
+            for (int a = 0; a < assets.size(); a++) {
+                JsonNode run = run(assets.get(a), methods[m], kernels, "all");
+                if (run != null) {
+                    x.add(EvalCharts.offset(a, m, methods.length));
+                    spreads.add(run.get("micros"));
                 }
-                values.add(value);
             }
-            chart.addSeries(v, methods, values);
+            if (!x.isEmpty()) {
+                EvalCharts.medians(chart, methods[m].key().toUpperCase(Locale.ROOT), x, spreads,
+                        EvalCharts.METHOD_COLOURS[m], false);
+            }
         }
-        String png = "time-" + file.replaceAll("\\.dae$", "").replaceAll("[^A-Za-z0-9_-]", "_") + ".png";
-        report.figure(png, "Time per frame, " + file, chart);
+        report.figure("time-" + kernels + ".png", "Time per frame per asset and method, " + kernels + " kernels",
+                chart);
     }
 
-    private static String variant(JsonNode run) {
-        return run.get("kernels").asText() + " kernels, " + run.get("influences").asText() + " influences";
+    private static String upper(JsonNode text) {
+        return text.asText().toUpperCase(Locale.ROOT);
     }
 }
