@@ -385,6 +385,16 @@ final class EvalQualitySection implements EvalSection {
         }
     }
 
+    /** The comparison of methods {@code a} and {@code b} (keys, in {@code SkinningMethod} order) on an asset of the results. */
+    static JsonNode pair(JsonNode asset, String a, String b) {
+        for (JsonNode p : asset.get("pairs")) {
+            if (p.get("a").asText().equals(a) && p.get("b").asText().equals(b)) {
+                return p;
+            }
+        }
+        throw new IllegalStateException("no pair " + a + " - " + b + " in " + asset.get("file"));
+    }
+
     private static double zeroIfNaN(double d) {
         return Double.isNaN(d) ? 0 : d;
     }

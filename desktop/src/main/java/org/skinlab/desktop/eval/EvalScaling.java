@@ -1,12 +1,15 @@
 package org.skinlab.desktop.eval;
 
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.function.DoubleConsumer;
 
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
+import org.skinlab.bench.Rounds;
+import org.skinlab.bench.Spread;
 import org.skinlab.desktop.ModelFiles;
 import org.skinlab.desktop.bench.PaletteBench;
 import org.skinlab.desktop.bench.SkinningTiming;
@@ -24,10 +27,10 @@ import org.skinlab.skinning.SkinningMethod;
 /**
  * How the cost of a frame grows, for {@code skinlab eval}'s advice: skinning time against the
  * vertex count and against the influences per vertex (the reference's synthetic data, one thread,
- * exact normals as the apps use them, the fastest and the scalar kernels: the scalar ones are what
- * a phone runs, as Android's runtime has no Vector API), and the pose's time against the joints of
- * real characters. Each series gets a least-squares line; its slope is the cost per vertex,
- * influence or joint.
+ * exact normals as the apps use them, the fastest and the scalar kernels), and the pose's time
+ * against the joints of real characters. Every point is {@link Rounds#MIN_RUNS} runs interleaved
+ * across what is compared at it (methods and kernels; files). The fits are {@link EvalFits}':
+ * only where their model describes the points, with residuals.
  */
 final class EvalScaling {
     /**
@@ -36,129 +39,133 @@ final class EvalScaling {
      * no rig has; their cost per vertex is timed on the assets (eval's time section, bench frame).
      */
     static final List<SkinningMethod> METHODS = List.of(SkinningMethod.LBS, SkinningMethod.DQS, SkinningMethod.COR);
+    private static final String[] KERNELS = {"fastest", "scalar"};
 
     private static final NormalTransform NORMALS = NormalTransform.INVERSE_TRANSPOSE;
 
     private EvalScaling() {
     }
 
-    /** A least-squares line y = intercept + slope x, with its coefficient of determination. */
-    record Line(double intercept, double slope, double r2) {
-        static Line fit(double[] x, double[] y) {
-            int n = x.length;
-            double mx = 0;
-            double my = 0;
-            for (int i = 0; i < n; i++) {
-                mx += x[i] / n;
-                my += y[i] / n;
-            }
-            double sxx = 0;
-            double sxy = 0;
-            double syy = 0;
-            for (int i = 0; i < n; i++) {
-                sxx += (x[i] - mx) * (x[i] - mx);
-                sxy += (x[i] - mx) * (y[i] - my);
-                syy += (y[i] - my) * (y[i] - my);
-            }
-            double slope = sxx == 0 ? 0 : sxy / sxx;
-            double r2 = syy == 0 || sxx == 0 ? 1 : sxy * sxy / (sxx * syy);
-            return new Line(my - slope * mx, slope, r2);
-        }
-    }
-
     /**
-     * Time per frame (µs) against the vertex count, per method and kernel, with the fitted line:
-     * slope in ns per vertex, intercept in µs.
+     * Time per frame (µs) against the vertex count, per method and kernel, each point in
+     * interleaved runs, with the proportional fit ({@link EvalFits#proportional}): ns per vertex.
      */
     static void vertices(List<Integer> sizes, double warmup, double seconds, ObjectNode out, DoubleConsumer progress) {
         out.put("joints", SyntheticSkinData.JOINTS);
         out.put("influences", SyntheticSkinData.INFLUENCES);
         ArrayNode xs = out.putArray("vertices");
         sizes.forEach(xs::add);
-        ArrayNode series = out.putArray("series");
-        int total = sizes.size() * 2 * METHODS.size();
-        int done = 0;
-        for (boolean scalar : new boolean[] {false, true}) {
-            for (SkinningMethod m : METHODS) {
-                ObjectNode s = series.addObject();
-                s.put("method", m.key());
-                s.put("kernels", scalar ? "scalar" : "fastest");
-                ArrayNode micros = s.putArray("medianMicros");
-                double[] x = new double[sizes.size()];
-                double[] y = new double[sizes.size()];
-                String kernel = null;
-                for (int i = 0; i < sizes.size(); i++) {
-                    int v = sizes.get(i);
-                    SyntheticSkinData data = new SyntheticSkinData(v);
-                    Skinner k = kernel(m, data.geometry(), scalar);
-                    kernel = k.implementation();
-                    x[i] = v;
-                    y[i] = EvalReport.round(time(k, data.palette(), v, warmup, seconds) * v / 1000);
-                    micros.add(y[i]);
-                    progress.accept((double) ++done / total);
-                }
-                s.put("kernel", kernel);
-                putLine(s, Line.fit(x, y), "nsPerVertex", 1000, "interceptMicros");
+        int series = KERNELS.length * METHODS.size();
+        Spread[][] micros = new Spread[series][sizes.size()];
+        String[] names = new String[series];
+        for (int i = 0; i < sizes.size(); i++) {
+            int v = sizes.get(i);
+            SyntheticSkinData data = new SyntheticSkinData(v);
+            Skinner[] kernels = new Skinner[series];
+            for (int s = 0; s < series; s++) {
+                kernels[s] = kernel(METHODS.get(s % METHODS.size()), data.geometry(), s >= METHODS.size());
+                names[s] = kernels[s].implementation();
             }
+            Spread[] nsPerVertex = Rounds.interleaved(series, Rounds.MIN_RUNS,
+                    (s, round) -> time(kernels[s], data.palette(), v, round == 0 ? warmup : 0.02, seconds));
+            for (int s = 0; s < series; s++) {
+                micros[s][i] = scaled(nsPerVertex[s], v / 1000.0);
+            }
+            progress.accept((double) (i + 1) / sizes.size());
+        }
+        ArrayNode out2 = out.putArray("series");
+        for (int s = 0; s < series; s++) {
+            ObjectNode node = out2.addObject();
+            node.put("method", METHODS.get(s % METHODS.size()).key());
+            node.put("kernels", KERNELS[s / METHODS.size()]);
+            node.put("kernel", names[s]);
+            ArrayNode points = node.putArray("points");
+            double[] x = new double[sizes.size()];
+            double[] y = new double[sizes.size()];
+            for (int i = 0; i < sizes.size(); i++) {
+                EvalReport.putSpread(points.addObject().put("vertices", sizes.get(i)), "micros", micros[s][i]);
+                x[i] = sizes.get(i);
+                y[i] = micros[s][i].median();
+            }
+            EvalFits.proportional(x, y).put(node.putObject("fit"), 1000);
         }
     }
 
-    /** ns per vertex against the influences per vertex, per method (fastest kernels), with the line. */
+    /** ns per vertex against the influences per vertex, per method (fastest kernels), interleaved, with the line. */
     static void influences(int vertices, List<Integer> counts, double warmup, double seconds, ObjectNode out,
             DoubleConsumer progress) {
         out.put("vertices", vertices);
         ArrayNode xs = out.putArray("influences");
         counts.forEach(xs::add);
+        Spread[][] ns = new Spread[METHODS.size()][counts.size()];
+        String[] names = new String[METHODS.size()];
+        for (int i = 0; i < counts.size(); i++) {
+            SyntheticSkinData data = new SyntheticSkinData(vertices, SyntheticSkinData.SEED, counts.get(i));
+            Skinner[] kernels = new Skinner[METHODS.size()];
+            for (int m = 0; m < kernels.length; m++) {
+                kernels[m] = kernel(METHODS.get(m), data.geometry(), false);
+                names[m] = kernels[m].implementation();
+            }
+            Spread[] spreads = Rounds.interleaved(kernels.length, Rounds.MIN_RUNS,
+                    (m, round) -> time(kernels[m], data.palette(), vertices, round == 0 ? warmup : 0.02, seconds));
+            for (int m = 0; m < kernels.length; m++) {
+                ns[m][i] = spreads[m];
+            }
+            progress.accept((double) (i + 1) / counts.size());
+        }
         ArrayNode series = out.putArray("series");
-        int total = counts.size() * METHODS.size();
-        int done = 0;
-        for (SkinningMethod m : METHODS) {
+        for (int m = 0; m < METHODS.size(); m++) {
             ObjectNode s = series.addObject();
-            s.put("method", m.key());
-            ArrayNode ns = s.putArray("nsPerVertex");
+            s.put("method", METHODS.get(m).key());
+            s.put("kernel", names[m]);
+            ArrayNode points = s.putArray("points");
             double[] x = new double[counts.size()];
             double[] y = new double[counts.size()];
             for (int i = 0; i < counts.size(); i++) {
-                SyntheticSkinData data = new SyntheticSkinData(vertices, SyntheticSkinData.SEED, counts.get(i));
-                Skinner k = kernel(m, data.geometry(), false);
+                EvalReport.putSpread(points.addObject().put("influences", counts.get(i)), "nsPerVertex", ns[m][i]);
                 x[i] = counts.get(i);
-                y[i] = EvalReport.round(time(k, data.palette(), vertices, warmup, seconds));
-                ns.add(y[i]);
-                s.put("kernel", k.implementation());
-                progress.accept((double) ++done / total);
+                y[i] = ns[m][i].median();
             }
-            putLine(s, Line.fit(x, y), "nsPerInfluence", 1, "interceptNs");
+            EvalFits.line(x, y).put(s.putObject("fit"), 1);
         }
     }
 
     /**
-     * The pose's time per frame (sample, evaluate, skinning matrices, dual quaternions) against the
-     * joints of each skinned file, with the line: slope in µs per joint.
+     * The pose's time per frame (sample, evaluate, skinning matrices, dual quaternions) of each
+     * skinned file, in runs interleaved across the files, against its joints, with the line.
      */
     static void joints(List<Path> files, double warmup, double seconds, ObjectNode out, DoubleConsumer progress) {
-        ArrayNode rows = out.putArray("files");
-        int n = 0;
-        double[] x = new double[files.size()];
-        double[] y = new double[files.size()];
+        List<String> names = new ArrayList<>();
+        List<SkinnedModel> models = new ArrayList<>();
         for (Path f : files) {
             Model model = ModelFiles.load(f).model;
-            if (model.instances().stream().noneMatch(MeshInstance::isSkinned) || model.clips().isEmpty()) {
-                continue;
+            if (model.instances().stream().anyMatch(MeshInstance::isSkinned) && !model.clips().isEmpty()) {
+                names.add(f.getFileName().toString());
+                models.add(new SkinnedModel(model, model.clips().get(0), NORMALS));
             }
-            SkinnedModel skinned = new SkinnedModel(model, model.clips().get(0), NORMALS);
-            PaletteBench.Samples s = PaletteBench.measure(skinned, warmup, seconds);
-            ObjectNode row = rows.addObject();
-            row.put("file", f.getFileName().toString());
-            row.put("joints", s.joints());
-            row.put("nodes", skinned.skeleton().nodeCount());
-            row.put("medianMicros", EvalReport.round(s.medianTotal()));
-            x[n] = s.joints();
-            y[n++] = s.medianTotal();
-            progress.accept((double) n / files.size());
         }
-        if (n >= 2) {
-            putLine(out, Line.fit(java.util.Arrays.copyOf(x, n), java.util.Arrays.copyOf(y, n)), "microsPerJoint", 1,
-                    "interceptMicros");
+        int[] joints = new int[models.size()];
+        int[] done = {0};
+        Spread[] micros = Rounds.interleaved(models.size(), Rounds.MIN_RUNS, (i, round) -> {
+            PaletteBench.Samples s = PaletteBench.measure(models.get(i), round == 0 ? warmup : 0.02, seconds);
+            joints[i] = s.joints();
+            progress.accept((double) ++done[0] / (models.size() * Rounds.MIN_RUNS));
+            return s.medianTotal();
+        });
+        ArrayNode rows = out.putArray("files");
+        double[] x = new double[models.size()];
+        double[] y = new double[models.size()];
+        for (int i = 0; i < models.size(); i++) {
+            ObjectNode row = rows.addObject();
+            row.put("file", names.get(i));
+            row.put("joints", joints[i]);
+            row.put("nodes", models.get(i).skeleton().nodeCount());
+            EvalReport.putSpread(row, "micros", micros[i]);
+            x[i] = joints[i];
+            y[i] = micros[i].median();
+        }
+        if (models.size() >= 3) {
+            EvalFits.line(x, y).put(out.putObject("fit"), 1);
         }
     }
 
@@ -166,7 +173,7 @@ final class EvalScaling {
         return scalar ? Skinners.scalar(m, geometry, NORMALS) : Skinners.create(m, geometry, NORMALS);
     }
 
-    /** Median ns per vertex of skinning every vertex, the reference's protocol. */
+    /** Median ns per vertex of skinning every vertex in one run, the reference's protocol. */
     private static double time(Skinner kernel, JointPalette palette, int vertices, double warmup, double seconds) {
         float[] positions = new float[3 * vertices];
         float[] normals = new float[3 * vertices];
@@ -174,10 +181,11 @@ final class EvalScaling {
                 warmup, seconds).median();
     }
 
-    /** Stores the line: its slope times {@code scale} and its intercept under the names given. */
-    private static void putLine(ObjectNode node, Line line, String slopeName, double scale, String interceptName) {
-        node.put(slopeName, EvalReport.round(line.slope() * scale));
-        node.put(interceptName, EvalReport.round(line.intercept()));
-        node.put("r2", EvalReport.round(line.r2()));
+    private static Spread scaled(Spread s, double factor) {
+        double[] runs = s.runs();
+        for (int i = 0; i < runs.length; i++) {
+            runs[i] *= factor;
+        }
+        return Spread.of(runs);
     }
 }

@@ -21,6 +21,14 @@ interface EvalSection {
     /** Measures, writing every number into {@code results}; reports progress through the context. */
     void measure(EvalContext context, ObjectNode results);
 
+    /**
+     * Whether the section sums up the others (measured after them, from their results, and
+     * written first in the report).
+     */
+    default boolean summary() {
+        return false;
+    }
+
     /** Its part of the report and its figures, from its results only. */
     void report(JsonNode results, EvalReport report);
 }
