@@ -43,9 +43,13 @@ class EvaluationTest {
         assertTrue(timed.contains("humanoid-walk.dae") && timed.contains("humanoid-walk.glb"), timed.toString());
 
         List<String> linked = EvalReportCheck.figuresAndNumbers(dir, results, readme);
-        assertTrue(linked.contains("load-files.png") && linked.contains("time-cylinder-bend.png"), linked.toString());
-        // At least one figure per section.
+        assertTrue(linked.contains("load-files.png") && linked.contains("time-fastest.png")
+                && linked.contains("time-scalar.png"), linked.toString());
+        // At least one figure per section that draws (the claims are a table).
         for (EvalSection s : Evaluation.SECTIONS) {
+            if (s.summary()) {
+                continue;
+            }
             assertTrue(linked.stream().anyMatch(f -> f.startsWith(s.key() + "-")) || results.at("/sections/"
                     + s.key()).has("skipped"), "no figure of " + s.key() + ": " + linked);
         }
@@ -80,8 +84,8 @@ class EvaluationTest {
         EvalQuickRun run = EvalQuickRun.get();
         JsonNode results = run.results;
         List<String> linked = EvalReportCheck.linked(run.readme);
-        assertTrue(linked.containsAll(List.of("quality-twist-ring.png", "quality-bend-bulge.png",
-                "quality-volume-cylinder-twist-high.png", "quality-volume-humanoid-walk.png")), linked.toString());
+        assertTrue(linked.containsAll(List.of("quality-angle-cylinder-twist-high.png", "quality-angle-cylinder-bend.png",
+                "quality-volume-humanoid-walk.png")), linked.toString());
         JsonNode twist = asset(results, "cylinder-twist-high.dae");
         JsonNode angles = twist.get("angleDegrees");
         int last = angles.size() - 1;
@@ -97,7 +101,12 @@ class EvaluationTest {
         assertEquals(0.3569 / 0.3902, bend.at("/methods/lbs/minVolume").asDouble(), 0.01);
         assertTrue(bend.at("/methods/dqs/maxBulge").asDouble() > bend.at("/methods/lbs/maxBulge").asDouble(),
                 "DQS bulges more than LBS at a bent joint: " + bend);
-        assertTrue(twist.get("maxLbsDqsPercent").asDouble() > 1, "LBS and DQS differ under twist");
+        assertTrue(EvalQualitySection.pair(twist, "lbs", "dqs").get("maxPercent").asDouble() > 1,
+                "LBS and DQS differ under twist");
+        // A smooth blend turns the joint ring by half the joint's angle: 85 degrees at 170.
+        JsonNode at170 = EvalAdviceInputs.atAngle(twist, 170);
+        assertEquals(85, at170.at("/methods/dqs/ringTurnDegrees/0").asDouble(), 0.05);
+        assertEquals(170, at170.get("angleDegrees").asDouble());
         // Two influences per point: capping at 4 or 8 changes nothing.
         for (JsonNode cap : twist.get("caps")) {
             assertEquals(0, cap.get("cappedPositions").asInt());
@@ -112,6 +121,42 @@ class EvaluationTest {
             }
         }
         throw new AssertionError("no " + file + " in " + results);
+    }
+
+    /**
+     * Every timing of the quick run keeps at least 5 runs and its median is its runs' median;
+     * every asset's frame is timed with every method; the claims table answers every claim.
+     */
+    @Test
+    void everyTimingIsRepeatedAndEveryMethodTimed() {
+        JsonNode results = EvalQuickRun.get().results;
+        List<JsonNode> spreads = new java.util.ArrayList<>();
+        CommittedReportTest.collectSpreads(results.get("sections"), spreads);
+        assertTrue(spreads.size() > 50, "only " + spreads.size() + " timings with runs");
+        for (JsonNode s : spreads) {
+            assertTrue(s.get("runs").size() >= org.skinlab.bench.Rounds.MIN_RUNS, s.toString());
+            double[] runs = new double[s.get("runs").size()];
+            for (int i = 0; i < runs.length; i++) {
+                runs[i] = s.get("runs").get(i).asDouble();
+            }
+            assertEquals(org.skinlab.bench.Spread.of(runs).median(), s.get("median").asDouble(), 0.0015, s.toString());
+        }
+        for (JsonNode asset : results.at("/sections/time/assets")) {
+            for (org.skinlab.skinning.SkinningMethod m : org.skinlab.skinning.SkinningMethod.values()) {
+                assertTrue(EvalTimeSection.run(asset, m, "fastest", "all") != null, asset.get("file") + " " + m);
+            }
+        }
+        assertTrue(results.at("/noise/timings").asInt() == spreads.size(), results.get("noise").toString());
+        for (JsonNode claim : results.at("/sections/claims/claims")) {
+            assertTrue(List.of(EvalClaimsSection.HOLDS, EvalClaimsSection.FAILS, EvalClaimsSection.MIXED,
+                    EvalClaimsSection.UNMEASURED).contains(claim.get("verdict").asText()), claim.toString());
+            if (claim.has("missing")) {
+                assertEquals(EvalClaimsSection.UNMEASURED, claim.get("verdict").asText(), claim.toString());
+            }
+        }
+        String readme = EvalQuickRun.get().readme;
+        assertTrue(readme.indexOf("## The thesis' claims, answered") < readme.indexOf("## Load: import time"),
+                "the claims come first");
     }
 
     @Test
