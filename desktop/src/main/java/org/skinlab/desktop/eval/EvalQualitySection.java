@@ -27,8 +27,8 @@ import org.skinlab.skinning.SkinningMethod;
 /**
  * Section "quality": what each method does to the shape, over the first clip of every skinned
  * asset of ours and the corpus' characters, every method. At one joint of the largest geometry
- * (the largest region, points weighted on it and its parent, among the joints that move: {@code
- * Joint.choose}): the volume kept, the joint
+ * (the largest region, points weighted on it and its parent, among the joints that move: {@link
+ * MeasuredJoint#choose}): the volume kept, the joint
  * ring's distance from the bones and its turn about the joint's axis ({@link RingTurn}), the bulge
  * beyond the rest distance ({@link JointArtifacts}, as {@code skinlab compare} measures), each
  * against the joint's unwrapped angle ({@link JointAngle}), so that a twist or bend to 360
@@ -71,7 +71,7 @@ final class EvalQualitySection implements EvalSection {
         results.put("cap4", InfluenceCapReport.CAP_4);
         results.put("cap8", InfluenceCapReport.CAP_8);
         results.put("angleToleranceDegrees", ANGLE_TOLERANCE);
-        results.put("movingDegrees", Joint.MOVING_DEGREES);
+        results.put("movingDegrees", MeasuredJoint.MOVING_DEGREES);
         ArrayNode quoted = results.putArray("quotedDegrees");
         for (double d : QUOTED_DEGREES) {
             quoted.add(d);
@@ -132,7 +132,7 @@ final class EvalQualitySection implements EvalSection {
         asset.put("sizeMetres", EvalReport.round(size));
         asset.put("clipSeconds", EvalReport.round(skinned.sampler().end() - start));
         MethodPairs pairs = new MethodPairs(new PhoneView(bounds[0], bounds[1]), posed.points());
-        Joint joint = Joint.choose(skinned, times);
+        MeasuredJoint joint = MeasuredJoint.choose(skinned, times);
         if (joint == null) {
             asset.put("skipped", "no skinned geometry has a joint whose parent is in its skin");
         } else {
@@ -166,106 +166,8 @@ final class EvalQualitySection implements EvalSection {
         }
     }
 
-    /** The joint measured in an asset: its geometry, palette indices, region, angle and ring. */
-    private static final class Joint {
-        final int geometry;
-        final int joint;
-        final int parent;
-        final JointArtifacts artifacts;
-        final JointAngle angle;
-        final RingTurn ring;
-        final double bindSize;
-        /** A joint that turns less than this over a clip is passed over when another turns more. */
-        static final double MOVING_DEGREES = 20;
-
-        Joint(SkinnedGeometry g, int geometry, int joint, int parent, JointArtifacts artifacts) {
-            this.geometry = geometry;
-            this.joint = joint;
-            this.parent = parent;
-            this.artifacts = artifacts;
-            angle = new JointAngle(parent, joint);
-            ring = new RingTurn(g, joint, parent);
-            bindSize = ArtifactMetrics.boundsDiagonal(g.positionArray(), g.vertexCount());
-        }
-
-        /**
-         * The joint measured: among the joints whose parent is in the same skin and whose region
-         * (points weighted on both) is not empty, in the geometry with the most points that has
-         * one, the largest region among those that turn at least {@value #MOVING_DEGREES} degrees
-         * from the bind pose over the clip's {@code times} (a joint that stays still shows no
-         * method's artefacts), else the one that turns most; null when there is none.
-         */
-        static Joint choose(SkinnedModel skinned, float[] times) {
-            int g = -1;
-            for (int k = 0; k < skinned.geometries().size(); k++) {
-                if (hasRegion(skinned.geometries().get(k))
-                        && (g < 0 || skinned.geometries().get(k).pointCount() > skinned.geometries().get(g).pointCount())) {
-                    g = k;
-                }
-            }
-            if (g < 0) {
-                return null;
-            }
-            SkinnedGeometry geometry = skinned.geometries().get(g);
-            double[] turned = new double[geometry.jointCount()];
-            for (float t : times) {
-                skinned.pose(t, org.skinlab.animation.RotationInterpolation.SLERP);
-                float[] m = skinned.palette(g).matrices();
-                for (int j = 0; j < turned.length; j++) {
-                    if (geometry.jointParent(j) >= 0) {
-                        turned[j] = Math.max(turned[j], JointAngle.degrees(m, geometry.jointParent(j), j));
-                    }
-                }
-            }
-            Joint best = null;
-            double bestTurn = -1;
-            for (int j = 0; j < turned.length; j++) {
-                int p = geometry.jointParent(j);
-                if (p < 0) {
-                    continue;
-                }
-                JointArtifacts a = new JointArtifacts(geometry, j, p);
-                if (a.regionSize() == 0) {
-                    continue;
-                }
-                boolean moving = turned[j] >= MOVING_DEGREES;
-                boolean bestMoving = bestTurn >= MOVING_DEGREES;
-                if (best == null || (moving && !bestMoving)
-                        || (moving == bestMoving && (moving ? a.regionSize() > best.artifacts.regionSize()
-                                : turned[j] > bestTurn))) {
-                    best = new Joint(geometry, g, j, p, a);
-                    bestTurn = turned[j];
-                }
-            }
-            return best;
-        }
-
-        private static boolean hasRegion(SkinnedGeometry geometry) {
-            for (int j = 0; j < geometry.jointCount(); j++) {
-                int p = geometry.jointParent(j);
-                if (p >= 0 && new JointArtifacts(geometry, j, p).regionSize() > 0) {
-                    return true;
-                }
-            }
-            return false;
-        }
-
-        /** This pose's volume, ring radius, bulge (in percent of the geometry's size) and ring turn per method. */
-        void measure(PosedMethods posed, float[] matrices, Map<SkinningMethod, ObjectNode> byMethod) {
-            double[] axis = angle.axis();
-            for (JointArtifacts.Report r : artifacts.report(posed.geometry(geometry), matrices)) {
-                ObjectNode node = byMethod.get(r.method());
-                add((ArrayNode) node.get("volume"), r.volume());
-                add((ArrayNode) node.get("ringRadius"), r.ringRadius());
-                add((ArrayNode) node.get("bulge"), bindSize > 0 ? 100 * r.bulge() / bindSize : r.bulge());
-                add((ArrayNode) node.get("ringTurnDegrees"), axis == null || !ring.measurable() ? 0
-                        : ring.degrees(posed.geometry(geometry).get(r.method()), matrices, axis));
-            }
-        }
-    }
-
     /** The measured joint and region: mesh, joint and parent by name, and the region's points. */
-    private static void putJoint(ObjectNode asset, Model model, SkinnedModel skinned, Joint joint) {
+    private static void putJoint(ObjectNode asset, Model model, SkinnedModel skinned, MeasuredJoint joint) {
         SkinnedGeometry geometry = skinned.geometries().get(joint.geometry);
         asset.put("mesh", geometry.mesh() == null ? "?" : geometry.mesh().id());
         asset.put("joint", name(model, geometry.jointNode(joint.joint)));
@@ -278,7 +180,7 @@ final class EvalQualitySection implements EvalSection {
      * The measures at each quoted angle the clip reaches, at the clip time where the joint's
      * unwrapped angle is that angle (bisection between the two samples around its first crossing).
      */
-    private static void atAngles(ObjectNode asset, SkinnedModel skinned, PosedMethods posed, Joint joint,
+    private static void atAngles(ObjectNode asset, SkinnedModel skinned, PosedMethods posed, MeasuredJoint joint,
             float[] times, Map<SkinningMethod, ObjectNode> byMethod) {
         JsonNode angles = asset.get("angleDegrees");
         ArrayNode out = asset.putArray("atAngles");

@@ -159,6 +159,20 @@ final class EvalReport {
         return this;
     }
 
+    /**
+     * Links a figure already in the report's folder (written by an earlier run of the section,
+     * when the report is written again from results.json alone); says so when it is not there.
+     */
+    EvalReport existing(String file, String caption) {
+        if (java.nio.file.Files.isRegularFile(dir.resolve(file))) {
+            figures.add(file);
+            md.append("![").append(caption).append("](").append(file).append(")\n\n");
+        } else {
+            paragraph("(" + caption + ": not drawn in this run.)");
+        }
+        return this;
+    }
+
     /** The PNG files written so far. */
     List<String> figures() {
         return List.copyOf(figures);
