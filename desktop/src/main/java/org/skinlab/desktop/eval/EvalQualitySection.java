@@ -24,6 +24,7 @@ import org.skinlab.skinning.InfluenceCapError;
 import org.skinlab.skinning.ArtifactMetrics;
 import org.skinlab.skinning.JointArtifacts;
 import org.skinlab.skinning.NormalTransform;
+import org.skinlab.skinning.RestPose;
 import org.skinlab.skinning.SkinnedGeometry;
 import org.skinlab.skinning.SkinnedModel;
 import org.skinlab.skinning.SkinningMethod;
@@ -189,6 +190,7 @@ final class EvalQualitySection implements EvalSection {
         int joint = -1;
         int parent = -1;
         JointArtifacts artifacts = null;
+        RestPose rest = RestPose.of(skinned);
         for (int k = 0; k < skinned.geometries().size(); k++) {
             SkinnedGeometry geometry = skinned.geometries().get(k);
             if (g >= 0 && geometry.pointCount() <= skinned.geometries().get(g).pointCount()) {
@@ -199,7 +201,7 @@ final class EvalQualitySection implements EvalSection {
                 if (p < 0) {
                     continue;
                 }
-                JointArtifacts a = new JointArtifacts(geometry, j, p);
+                JointArtifacts a = new JointArtifacts(rest, k, j, p);
                 if (a.regionSize() > 0 && (artifacts == null || k != g || a.regionSize() > artifacts.regionSize())) {
                     g = k;
                     joint = j;
