@@ -43,6 +43,17 @@ that exercises what a skinned character can use, one group of features per file:
                               embedded): 1 x 2 facing +Z, its upper half on a joint at y = 1 whose
                               clip moves it 0.5 along +X by t = 1 (the phone's and the viewer's
                               textured-and-skinned check)
+  scaled-parts.gltf           a character of many parts as FBX and Sketchfab exports make them: a
+                              Z-up root turned Y-up, an armature scaled by 0.01 (centimetres),
+                              joints hips, spine, head; skinned parts under nodes with their own
+                              scales, each skin's inverse bind matrices taken against its mesh
+                              node (so the rest pose places a part by that node): a closed body
+                              column (uniform scale 2), a helmet (non-uniform scale, turned) and
+                              the same helmet mesh again under a mirroring node with a skin of its
+                              own, an open cloak, a boot cut into two meshes by material (each
+                              open, closed together), and a static crate; a clip that scales the
+                              spine by 1.25 at t = 1 and twists it by 170 degrees at t = 2, at
+                              rest at t = 0 and 3
 
 Run from the repository root (Python 3 standard library; the validation needs Node and
 `npm ci` in bench/threejs):
@@ -845,9 +856,126 @@ def skin_textured():
     return write(doc, glb=True)
 
 
+def prism(zs, half, centre=(0.0, 0.0), bottom=True, top=True):
+    """Square rings about the local Z axis at heights zs, corners counter-clockwise seen from +Z,
+    side faces and the chosen caps wound outward (a box for two rings and both caps)."""
+    cx, cy = centre
+    pos = [(cx + sx * half, cy + sy * half, z) for z in zs for sx, sy in [(-1, -1), (1, -1), (1, 1), (-1, 1)]]
+    tris = []
+    for r in range(len(zs) - 1):
+        for c in range(4):
+            a, b = 4 * r + c, 4 * r + (c + 1) % 4
+            tris += [a, b, b + 4, a, b + 4, a + 4]
+    if bottom:
+        tris += [0, 2, 1, 0, 3, 2]
+    if top:
+        t = 4 * (len(zs) - 1)
+        tris += [t, t + 1, t + 2, t, t + 2, t + 3]
+    return pos, tris
+
+
+def signed_volume(pos, tris):
+    v = 0.0
+    for i in range(0, len(tris), 3):
+        a, b, c = (pos[k] for k in tris[i:i + 3])
+        v += (a[0] * (b[1] * c[2] - b[2] * c[1]) + a[1] * (b[2] * c[0] - b[0] * c[2])
+              + a[2] * (b[0] * c[1] - b[1] * c[0])) / 6
+    return v
+
+
+def reindexed(pos, tris):
+    """The vertices the triangles use, in first-use order, and the triangles on them."""
+    order = {}
+    for i in tris:
+        order.setdefault(i, len(order))
+    return [pos[i] for i in order], [order[i] for i in tris]
+
+
+def scaled_parts():
+    doc = Doc("scaled-parts.gltf")
+    j = doc.json
+    root = doc.node(name="Sketchfab_model", rotation=list(quat_axis_angle((1, 0, 0), -90)))
+    armature = doc.node(name="Armature", scale=[0.01, 0.01, 0.01])
+    j["nodes"][root]["children"] = [armature]
+    hips = doc.node(name="hips")
+    spine = doc.node(name="spine", translation=[0.0, 0.0, 100.0])
+    head = doc.node(name="head", translation=[0.0, 0.0, 100.0])
+    j["nodes"][hips]["children"] = [spine]
+    j["nodes"][spine]["children"] = [head]
+    joints = [hips, spine, head]
+    j["materials"] = [{"name": name, "pbrMetallicRoughness": {"baseColorFactor": colour}}
+                      for name, colour in [("skin", [0.8, 0.6, 0.5, 1.0]), ("cloth", [0.3, 0.3, 0.6, 1.0]),
+                                           ("leather", [0.4, 0.25, 0.1, 1.0]), ("sole", [0.1, 0.1, 0.1, 1.0]),
+                                           ("metal", [0.7, 0.7, 0.75, 1.0])]]
+
+    def part(name, pos, tris, weights, material):
+        """A mesh of one primitive; weights(position) gives (joints, weights) in skin order."""
+        jw = [weights(p) for p in pos]
+        prim = {"attributes": {"POSITION": doc.accessor(pos, FLOAT, "VEC3", minmax=True, target=ARRAY_BUFFER),
+                               "JOINTS_0": doc.accessor([x[0] for x in jw], UBYTE, "VEC4", target=ARRAY_BUFFER),
+                               "WEIGHTS_0": doc.accessor([x[1] for x in jw], FLOAT, "VEC4", target=ARRAY_BUFFER)},
+                "indices": doc.accessor(tris, USHORT, "SCALAR", target=ELEMENT_ARRAY_BUFFER, vertex=False),
+                "material": material}
+        return mesh_of(doc, [prim], name=name)
+
+    def along_spine(p):
+        # Local z 0..100 on a node of scale 2: the hips below 25, the spine above 75, half and
+        # half on the ring at the joint (z = 50).
+        if p[2] < 40:
+            return (0, 0, 0, 0), (1.0, 0.0, 0.0, 0.0)
+        if p[2] > 60:
+            return (1, 0, 0, 0), (1.0, 0.0, 0.0, 0.0)
+        return (0, 1, 0, 0), (0.5, 0.5, 0.0, 0.0)
+
+    def on(joint):
+        return lambda p: ((joint, 0, 0, 0), (1.0, 0.0, 0.0, 0.0))
+
+    rings = [0.0, 25.0, 50.0, 75.0, 100.0]
+    body_mesh = part("body", *prism(rings, 12.5), along_spine, 0)
+    cloak_mesh = part("cloak", *prism(rings, 15.0, bottom=False), along_spine, 1)
+    # The boot: one box, its faces in two meshes by material, each mesh its own vertices.
+    box, faces = prism([2.5, 22.5], 10.0, centre=(37.5, 0.0))
+    for closed in [prism(rings, 12.5), (box, faces), prism([-0.5, 0.5], 0.5)]:
+        assert signed_volume(*closed) > 0, "wound outward"
+    sides = [faces[6 * f:6 * f + 6] for f in range(6)]  # four sides, then bottom and top
+    upper_mesh = part("boot-upper", *reindexed(box, sides[0] + sides[1] + sides[5]), on(0), 2)
+    lower_mesh = part("boot-lower", *reindexed(box, sides[2] + sides[3] + sides[4]), on(0), 3)
+    helmet_mesh = part("helmet", *prism([-0.5, 0.5], 0.5), on(2), 4)
+    crate, crate_tris = prism([-0.5, 0.5], 0.5)
+    crate_mesh = mesh_of(doc, [{"attributes": {"POSITION": doc.accessor(crate, FLOAT, "VEC3", minmax=True,
+                                                                        target=ARRAY_BUFFER)},
+                                "indices": doc.accessor(crate_tris, USHORT, "SCALAR", target=ELEMENT_ARRAY_BUFFER,
+                                                        vertex=False),
+                                "material": 2}], name="crate")
+    two = [2.0, 2.0, 2.0]
+    body = doc.node(name="body", mesh=body_mesh, scale=two)
+    cloak = doc.node(name="cloak", mesh=cloak_mesh, scale=two)
+    upper = doc.node(name="boot-upper", mesh=upper_mesh, scale=two)
+    lower = doc.node(name="boot-lower", mesh=lower_mesh, scale=two)
+    helmet = doc.node(name="helmet", mesh=helmet_mesh, translation=[0.0, 0.0, 250.0],
+                      rotation=list(quat_axis_angle((0, 0, 1), 30)), scale=[40.0, 30.0, 50.0])
+    badge = doc.node(name="badge", mesh=helmet_mesh, translation=[60.0, 0.0, 250.0], scale=[-20.0, 15.0, 25.0])
+    prop = doc.node(name="crate", mesh=crate_mesh, translation=[-150.0, 0.0, 0.0], scale=[30.0, 30.0, 30.0])
+    j["nodes"][armature]["children"] = [hips, body, cloak, upper, lower, helmet, badge, prop]
+    j["scenes"][0]["nodes"] = [root]
+    # Each skin's inverse bind matrices against its mesh node's world: at rest a part stands where
+    # its node puts it, scale and mirror included.
+    parents = parent_map(doc)
+    for skinned, s in [(body, 0), (cloak, 0), (upper, 0), (lower, 0), (helmet, 1), (badge, 2)]:
+        if s == len(j["skins"]):
+            skin(doc, joints, skeleton=hips, extra=world_of(doc, skinned, parents))
+        j["nodes"][skinned]["skin"] = s
+    a = animation(doc, "grow-and-twist")
+    # Keys inside the clip (it ends at rest at t = 3), so a looping player reaches each of them.
+    channel(doc, a, spine, "scale", [0.0, 1.0, 2.0, 3.0], [(1, 1, 1), (1.25, 1.25, 1.25), (1, 1, 1), (1, 1, 1)])
+    channel(doc, a, spine, "rotation", [0.0, 1.0, 2.0, 3.0],
+            [(0, 0, 0, 1), (0, 0, 0, 1), quat_axis_angle((0, 0, 1), 170), (0, 0, 0, 1)])
+    return write(doc)
+
+
 FIXTURES = [skin_component_types, skin_interleaved, skin_sparse, skin_quantized, skin_strip_fan,
             skin_eight_influences, skin_no_ibm, anim_interpolation, morph_skin, materials,
-            skin_textured]
+            skin_textured, scaled_parts]
 
 
 def check():

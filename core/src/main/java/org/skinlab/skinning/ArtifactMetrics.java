@@ -4,9 +4,10 @@ import org.joml.Vector3f;
 import org.joml.Vector3fc;
 
 /**
- * Numbers for the artifacts the thesis could only show: how much volume a closed mesh keeps, and
+ * Numbers for the artifacts the thesis could only show: the volume a closed mesh encloses, and
  * how far a ring of vertices around a joint stays from the bone (LBS's "candy wrapper" collapses
- * it toward the axis under twist). All sums in double.
+ * it toward the axis under twist). All sums in double. Volumes relative to a model's rest pose
+ * are {@link RestPose}'s.
  */
 public final class ArtifactMetrics {
     private ArtifactMetrics() {
@@ -56,44 +57,17 @@ public final class ArtifactMetrics {
     }
 
     /**
-     * Whether a geometry's mesh is closed: every triangle edge, taken between POSITION entries
-     * (so UV seams and hard edges do not open it), is shared by exactly two triangles. Only then
-     * is {@link #signedVolume} a volume.
+     * Whether a geometry's mesh is closed in bind space ({@link ClosedSurfaces}' rule: corners at
+     * the same point joined, so UV seams and hard edges do not open it; every edge walked once each
+     * way). Only then is {@link #signedVolume} a volume. A model's parts are judged in its rest pose
+     * instead ({@link RestPose}), where parts can close each other.
      */
     public static boolean isClosed(SkinnedGeometry geometry) {
-        if (geometry.mesh() == null || geometry.mesh().triangleCount() == 0) {
+        if (geometry.mesh() == null) {
             return false;
         }
-        int[] triangles = geometry.mesh().triangles();
-        int[] positionOf = geometry.mesh().vertexPositions();
-        java.util.Map<Long, Integer> edges = new java.util.HashMap<>(4 * triangles.length);
-        for (int t = 0; t < triangles.length; t += 3) {
-            for (int c = 0; c < 3; c++) {
-                long a = positionOf[triangles[t + c]];
-                long b = positionOf[triangles[t + (c + 1) % 3]];
-                if (a == b) {
-                    return false;
-                }
-                long key = Math.min(a, b) << 32 | Math.max(a, b);
-                edges.merge(key, 1, Integer::sum);
-            }
-        }
-        for (int count : edges.values()) {
-            if (count != 2) {
-                return false;
-            }
-        }
-        return true;
-    }
-
-    /** Deformed volume over rest volume of a geometry's closed mesh. */
-    public static double relativeVolume(SkinnedGeometry geometry, float[] deformedPoints) {
-        if (geometry.mesh() == null) {
-            throw new IllegalArgumentException("relative volume needs a mesh's triangles; " + geometry
-                    + " has none (use signedVolume with your own triangles)");
-        }
-        int[] triangles = geometry.mesh().triangles();
-        return signedVolume(deformedPoints, triangles) / signedVolume(geometry.positionArray(), triangles);
+        int[] corners = new ClosedSurfaces().corners(geometry.positionArray(), geometry.mesh().triangles());
+        return ClosedSurfaces.closed(corners);
     }
 
     /**

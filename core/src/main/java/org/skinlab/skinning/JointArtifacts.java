@@ -9,28 +9,52 @@ import org.joml.Matrix4f;
 import org.joml.Vector3f;
 
 /**
- * Where each skinning method wins, at one joint of one geometry in one pose: per method the
- * volume kept (closed meshes), how the joint ring keeps its distance from the bones (the candy
- * wrapper collapses it), how far the joint region stands out beyond its rest distance from the
- * bones (the bulge of DQS at bent joints), and how far the method places points from every other
- * method's. The evaluation tabulates these (docs/skinning.md).
+ * Where each skinning method wins, at one joint of one part of a model in one pose: per method
+ * the part's volume kept (a part closed by itself), how the joint ring keeps its distance from the
+ * bones (the candy wrapper collapses it), how far the joint region stands out beyond its rest
+ * distance from the bones (the bulge of DQS at bent joints), and how far the method places points
+ * from every other method's relative to the model's size. The evaluation tabulates these
+ * (docs/skinning.md).
  *
  * <p><b>The joint region.</b> A joint J with a parent P in the same palette; the bones are, in
  * bind space, the segment from P's origin to J's origin and the segment from J's origin on by the
  * same length in the same direction (J's own bone, whose tip a palette does not record). The
  * region is every point with weight on both P and J; the ring is the region's points nearest the
- * plane through J's origin perpendicular to P's bone. In the pose, P's segment moves with P's
+ * plane through J's origin perpendicular to P's bone. In a pose, P's segment moves with P's
  * skinning matrix and J's with J's.
+ *
+ * <p><b>Against the rest pose.</b> Every rest quantity (the ring, the region's distances from the
+ * bones, the volume, the size) is taken from the model's {@link RestPose}: the points and the
+ * bones moved by the rest pose's skinning matrices exactly as a pose moves them, so that both are
+ * in the document's frame and units whatever the node scales, and every measure is neutral at the
+ * rest pose. Bulges are in the document's units.
  */
 public final class JointArtifacts {
-    /** One method's numbers. */
+    /**
+     * One method's numbers.
+     *
+     * @param volume     the part's volume over its rest volume; NaN unless the part is closed by
+     *                   itself ({@link RestPose#partNote} says why)
+     * @param ringRadius the joint ring's distance from the posed bones over its rest distance; NaN
+     *                   without a region (no point weighted on both joints)
+     * @param bulge      how far the region stands out beyond its rest distance from the bones at
+     *                   most, in the document's units; NaN without a region
+     * @param distanceTo per other method, the largest distance between the two methods' points over
+     *                   the model's size ({@link RestPose#size()})
+     */
     public record Report(SkinningMethod method, double volume, double ringRadius, double bulge,
             Map<SkinningMethod, Double> distanceTo) {
     }
 
+    /** The ring's points lie within this much of the model's size from the plane of its nearest point. */
+    private static final double RING_TOLERANCE = 5e-5;
+
+    private final RestPose rest;
+    private final int part;
     private final SkinnedGeometry geometry;
     private final int joint;
     private final int parent;
+    /** The bones' ends in bind space: P's origin, J's origin, J's tip. */
     private final Vector3f base = new Vector3f();
     private final Vector3f origin = new Vector3f();
     private final Vector3f tip = new Vector3f();
@@ -39,11 +63,15 @@ public final class JointArtifacts {
     private final double[] restDistance;
 
     /**
+     * @param rest   the model's rest pose
+     * @param part   the part measured (a {@link RestPose#geometries()} index)
      * @param joint  palette index of J
      * @param parent palette index of P (J's parent bone)
      */
-    public JointArtifacts(SkinnedGeometry geometry, int joint, int parent) {
-        this.geometry = geometry;
+    public JointArtifacts(RestPose rest, int part, int joint, int parent) {
+        this.rest = rest;
+        this.part = part;
+        this.geometry = rest.geometries().get(part);
         this.joint = joint;
         this.parent = parent;
         float[] bind = geometry.bindMatrixArray();
@@ -66,28 +94,32 @@ public final class JointArtifacts {
             }
         }
         region = found.stream().mapToInt(Integer::intValue).toArray();
-        float[] rest = geometry.positionArray();
+        float[] points = rest.positions(part);
+        float[] matrices = rest.matrices(part);
+        Vector3f b = transform(matrices, parent, base);
+        Vector3f o = transform(matrices, joint, origin);
+        Vector3f t = transform(matrices, joint, tip);
         restDistance = new double[region.length];
         for (int r = 0; r < region.length; r++) {
-            restDistance[r] = distanceToBones(rest, region[r], base, origin, tip);
+            restDistance[r] = distanceToBones(points, region[r], b, o, t);
         }
-        ring = ringOf(rest);
+        ring = ringOf(points, b, o, RING_TOLERANCE * rest.size());
     }
 
-    /** The region's points nearest the plane through the joint across the parent's bone. */
-    private int[] ringOf(float[] rest) {
+    /** The region's points nearest the plane through the joint across the parent's bone, at rest. */
+    private int[] ringOf(float[] points, Vector3f base, Vector3f origin, double tolerance) {
         Vector3f axis = new Vector3f(origin).sub(base).normalize();
         double nearest = Double.POSITIVE_INFINITY;
         double[] plane = new double[region.length];
         for (int r = 0; r < region.length; r++) {
             int i = region[r];
-            plane[r] = Math.abs((rest[3 * i] - origin.x) * axis.x + (rest[3 * i + 1] - origin.y) * axis.y
-                    + (rest[3 * i + 2] - origin.z) * axis.z);
+            plane[r] = Math.abs((points[3 * i] - origin.x) * axis.x + (points[3 * i + 1] - origin.y) * axis.y
+                    + (points[3 * i + 2] - origin.z) * axis.z);
             nearest = Math.min(nearest, plane[r]);
         }
         List<Integer> found = new ArrayList<>();
         for (int r = 0; r < region.length; r++) {
-            if (plane[r] <= nearest + 1e-4) {
+            if (plane[r] <= nearest + tolerance) {
                 found.add(r);
             }
         }
@@ -120,8 +152,7 @@ public final class JointArtifacts {
         Vector3f b = transform(skinningMatrices, parent, base);
         Vector3f o = transform(skinningMatrices, joint, origin);
         Vector3f t = transform(skinningMatrices, joint, tip);
-        boolean closed = ArtifactMetrics.isClosed(geometry);
-        double size = ArtifactMetrics.boundsDiagonal(geometry.positionArray(), geometry.vertexCount());
+        double size = rest.size();
         List<Report> reports = new ArrayList<>();
         for (Map.Entry<SkinningMethod, float[]> e : posed.entrySet()) {
             float[] p = e.getValue();
@@ -149,7 +180,7 @@ public final class JointArtifacts {
                 }
                 distances.put(other.getKey(), size > 0 ? most / size : most);
             }
-            reports.add(new Report(e.getKey(), closed ? ArtifactMetrics.relativeVolume(geometry, p) : Double.NaN,
+            reports.add(new Report(e.getKey(), rest.relativeVolume(part, p),
                     ring.length == 0 || ringRest == 0 ? Double.NaN : ringPosed / ringRest,
                     region.length == 0 ? Double.NaN : bulge, distances));
         }

@@ -4,17 +4,22 @@ import org.joml.Matrix4f;
 import org.skinlab.animation.AnimationHelper;
 
 /**
- * LBS and DQS side by side on one geometry and one pose: where the two methods place each point
- * apart, the largest distance relative to the model's size, and the volume each keeps (for a
- * closed mesh). What the desktop's difference view colours and prints.
+ * LBS and DQS side by side on one part of a model in one pose: where the two methods place each
+ * point apart, the largest distance relative to the model's size, and the volume each keeps (for
+ * a part that is closed by itself). Both against the model's {@link RestPose}: the size is the
+ * whole placed model's in the document's units, the distances' units; the volume is the part's
+ * own rest volume measured by the same kernel in the same space. What the desktop's difference
+ * view colours and prints (summed over the parts by {@link RestPose#relativeVolume(float[][])}).
  *
  * <p>The pose comes as the skinning matrices a {@code Frame} carries (12 floats per joint,
  * row-major 3x4); the dual quaternions and scale parts are derived from them by the same
  * {@link JointPalette} code the simulation uses, so both methods run exactly as the simulation
- * would run them. Both skins use core's scalar kernels ({@link Skinners#scalar}). One instance per geometry;
+ * would run them. Both skins use core's scalar kernels ({@link Skinners#scalar}). One instance per part;
  * {@link #compare} allocates nothing; not thread-safe.
  */
 public final class MethodComparison {
+    private final RestPose rest;
+    private final int part;
     private final SkinnedGeometry geometry;
     private final JointPalette palette;
     private final Skinner lbs;
@@ -24,15 +29,15 @@ public final class MethodComparison {
     private final float[] normals;
     private final float[] distances;
     private final Matrix4f matrix = new Matrix4f();
-    private final int[] triangles;
-    private final double restVolume;
-    private final double size;
     private double maxDistance;
     private double lbsVolume = Double.NaN;
     private double dqsVolume = Double.NaN;
 
-    public MethodComparison(SkinnedGeometry geometry) {
-        this.geometry = geometry;
+    /** Compares part {@code part} (a {@link RestPose#geometries()} index) of the model at rest in {@code rest}. */
+    public MethodComparison(RestPose rest, int part) {
+        this.rest = rest;
+        this.part = part;
+        this.geometry = rest.geometries().get(part);
         palette = geometry.newPalette();
         // Core's scalar kernels: a probe that runs a few times a second never gets the JIT to
         // compile SIMD kernels (which allocate until it has), and needs no threads.
@@ -43,10 +48,6 @@ public final class MethodComparison {
         dqsPositions = new float[3 * n];
         normals = new float[3 * n];
         distances = new float[n];
-        boolean closed = ArtifactMetrics.isClosed(geometry);
-        triangles = closed ? geometry.mesh().triangles() : null;
-        restVolume = closed ? ArtifactMetrics.signedVolume(geometry.positionArray(), triangles) : Double.NaN;
-        size = ArtifactMetrics.boundsDiagonal(geometry.positionArray(), geometry.vertexCount());
     }
 
     /**
@@ -73,19 +74,17 @@ public final class MethodComparison {
             max = Math.max(max, d);
         }
         maxDistance = max;
-        if (triangles != null && restVolume != 0) {
-            lbsVolume = ArtifactMetrics.signedVolume(lbsPositions, triangles) / restVolume;
-            dqsVolume = ArtifactMetrics.signedVolume(dqsPositions, triangles) / restVolume;
-        }
+        lbsVolume = rest.relativeVolume(part, lbsPositions);
+        dqsVolume = rest.relativeVolume(part, dqsPositions);
     }
 
     public SkinnedGeometry geometry() {
         return geometry;
     }
 
-    /** The model's size: the diagonal of its bind-pose bounding box (render vertices). */
+    /** The model's size: the diagonal of its rest pose's bounds over every part ({@link RestPose#size()}). */
     public double size() {
-        return size;
+        return rest.size();
     }
 
     /** The largest |LBS - DQS| over the points, in model units. */
@@ -95,7 +94,7 @@ public final class MethodComparison {
 
     /** {@link #maxDistance()} over {@link #size()}; 0 for a model of no size. */
     public double maxRelative() {
-        return size > 0 ? maxDistance / size : 0;
+        return rest.size() > 0 ? maxDistance / rest.size() : 0;
     }
 
     /** Per point, |LBS - DQS|. Read-only; overwritten by the next compare. */
@@ -111,18 +110,18 @@ public final class MethodComparison {
         return dqsPositions;
     }
 
-    /** LBS's volume over the rest volume; NaN when the mesh is not closed. */
+    /** LBS's volume of the part over its rest volume; NaN unless the part is closed by itself. */
     public double lbsVolume() {
         return lbsVolume;
     }
 
-    /** DQS's volume over the rest volume; NaN when the mesh is not closed. */
+    /** DQS's volume of the part over its rest volume; NaN unless the part is closed by itself. */
     public double dqsVolume() {
         return dqsVolume;
     }
 
-    /** Whether the mesh is closed, so that volumes mean something. */
+    /** Whether the part is closed by itself ({@link RestPose.PartVolume#CLOSED}), so that its volumes are numbers. */
     public boolean closed() {
-        return triangles != null;
+        return rest.partVolume(part) == RestPose.PartVolume.CLOSED;
     }
 }

@@ -37,7 +37,7 @@ class BulgeFreeDqsTest {
         SkinnedGeometry g = skinned.geometries().get(0);
         int lower = model.skins().get(0).jointNames().indexOf("lower");
         int upper = model.skins().get(0).jointNames().indexOf("upper");
-        JointArtifacts artifacts = new JointArtifacts(g, upper, lower);
+        JointArtifacts artifacts = new JointArtifacts(RestPose.of(skinned), 0, upper, lower);
         // Keys at 0..4 s; the upper half bends to 90 degrees at 2 s and to 170 at 4 s.
         float[] times = {2f, 4f};
         double[] angles = {90, 170};

@@ -26,6 +26,7 @@ class CandyWrapperTest {
     private static Model model;
     private static SkinnedModel skinned;
     private static SkinnedGeometry geometry;
+    private static RestPose rest;
     private static Vector3f joint;
     private static Vector3f axis;
     private static int[] ring;
@@ -36,6 +37,7 @@ class CandyWrapperTest {
         model = ColladaImporter.read(TestPaths.asset("cylinders/cylinder-twist-low.dae"));
         skinned = SkinnedModel.of(model);
         geometry = skinned.geometries().get(0);
+        rest = RestPose.of(skinned);
         // The joint ring sits where "upper" starts; the axis runs from "lower" to "upper".
         Matrix4f m = new Matrix4f();
         Vector3f lower = skinned.pose().world(model.nodeById("Armature_lower").orElseThrow().index(), m)
@@ -61,14 +63,14 @@ class CandyWrapperTest {
         assertEquals(64, ring.length, "the two rings next to the joint");
         assertEquals(0.3902, ArtifactMetrics.signedVolume(geometry.positionArray(),
                 geometry.mesh().triangles()), 5e-4, "rest volume (check_assets.py: 0.3902 m^3)");
-        assertEquals(1.0, ArtifactMetrics.relativeVolume(geometry, deform(0f, SkinningMethod.LBS)), 1e-6,
+        assertEquals(1.0, rest.relativeVolume(0, deform(0f, SkinningMethod.LBS)), 1e-6,
                 "untwisted key keeps the rest shape");
     }
 
     @Test
     void twistOf172DegreesCollapsesTheLbsJointAndLosesVolume() {
         float[] lbs = deform(4f, SkinningMethod.LBS);
-        double volume = ArtifactMetrics.relativeVolume(geometry, lbs);
+        double volume = rest.relativeVolume(0, lbs);
         double radius = ArtifactMetrics.meanDistanceFromAxis(lbs, ring, joint, axis) / restRadius;
         System.out.printf("LBS at 172 degrees: volume %.3f of rest, joint ring radius %.3f of rest%n", volume,
                 radius);
@@ -97,7 +99,7 @@ class CandyWrapperTest {
     @Test
     void twistOf172DegreesKeepsTheDqsJointRingAndVolume() {
         float[] dqs = deform(4f, SkinningMethod.DQS);
-        double volume = ArtifactMetrics.relativeVolume(geometry, dqs);
+        double volume = rest.relativeVolume(0, dqs);
         double radius = ArtifactMetrics.meanDistanceFromAxis(dqs, ring, joint, axis) / restRadius;
         System.out.printf("DQS at 172 degrees: volume %.3f of rest, joint ring radius %.3f of rest%n", volume,
                 radius);
@@ -110,7 +112,7 @@ class CandyWrapperTest {
     void lbsVolumeLossGrowsWithTheTwist() {
         double previous = 1.0;
         for (float t = 1; t <= 4; t++) {
-            double v = ArtifactMetrics.relativeVolume(geometry, deform(t, SkinningMethod.LBS));
+            double v = rest.relativeVolume(0, deform(t, SkinningMethod.LBS));
             assertTrue(v < previous, "more twist, less volume: " + v + " after " + previous);
             previous = v;
         }

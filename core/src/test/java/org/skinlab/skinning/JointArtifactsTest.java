@@ -21,7 +21,7 @@ class JointArtifactsTest {
         SkinnedGeometry g = skinned.geometries().get(0);
         int lower = model.skins().get(0).jointNames().indexOf("lower");
         int upper = model.skins().get(0).jointNames().indexOf("upper");
-        JointArtifacts artifacts = new JointArtifacts(g, upper, lower);
+        JointArtifacts artifacts = new JointArtifacts(RestPose.of(skinned), 0, upper, lower);
         assertTrue(artifacts.regionSize() > 100, "region " + artifacts.regionSize());
         skinned.pose(time, RotationInterpolation.SLERP);
         Map<SkinningMethod, float[]> posed = new EnumMap<>(SkinningMethod.class);

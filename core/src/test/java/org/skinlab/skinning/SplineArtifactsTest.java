@@ -24,7 +24,7 @@ class SplineArtifactsTest {
         SkinnedGeometry g = skinned.geometries().get(0);
         int lower = model.skins().get(0).jointNames().indexOf("lower");
         int upper = model.skins().get(0).jointNames().indexOf("upper");
-        JointArtifacts artifacts = new JointArtifacts(g, upper, lower);
+        JointArtifacts artifacts = new JointArtifacts(RestPose.of(skinned), 0, upper, lower);
         skinned.pose(time, RotationInterpolation.SLERP);
         Map<SkinningMethod, float[]> posed = new EnumMap<>(SkinningMethod.class);
         for (SkinningMethod m : COMPARED) {
@@ -97,6 +97,7 @@ class SplineArtifactsTest {
             SkinnedGeometry g = skinned.geometries().get(0);
             List<String> names = model.skins().get(0).jointNames();
             SplineBinding binding = SplineBinding.of(g);
+            RestPose rest = RestPose.of(skinned);
             int n = g.pointCount();
             int width = g.influencesPerPoint();
             double size = ArtifactMetrics.boundsDiagonal(g.positionArray(), g.vertexCount());
@@ -117,8 +118,8 @@ class SplineArtifactsTest {
                     skinned.skin(0, m, posed.get(m), normals);
                 }
                 float[] spline = posed.get(SkinningMethod.SPLINE);
-                double splineVolume = ArtifactMetrics.relativeVolume(g, spline);
-                double dqsVolume = ArtifactMetrics.relativeVolume(g, posed.get(SkinningMethod.DQS));
+                double splineVolume = rest.relativeVolume(0, spline);
+                double dqsVolume = rest.relativeVolume(0, posed.get(SkinningMethod.DQS));
                 volumes[0] = Math.min(volumes[0], splineVolume);
                 volumes[1] = Math.max(volumes[1], splineVolume);
                 volumes[2] = Math.min(volumes[2], dqsVolume);

@@ -4,44 +4,47 @@ import java.util.List;
 
 import org.skinlab.simulation.Frame;
 import org.skinlab.skinning.MethodComparison;
+import org.skinlab.skinning.RestPose;
 
 /**
  * The numbers beside the difference view: LBS against DQS on the frame shown (core's
- * {@link MethodComparison}, one per geometry), measured at most {@value #PER_SECOND} times a
+ * {@link MethodComparison}, one per part, against the model's {@link RestPose}): the largest
+ * distance over every part relative to the placed model's size, and the model's volume (its
+ * counted parts summed, each against its own rest), measured at most {@value #PER_SECOND} times a
  * second, since they skin the model twice on the window's thread.
  */
 final class DifferenceProbe {
     static final int PER_SECOND = 10;
 
+    private final RestPose rest;
     private final MethodComparison[] comparisons;
-    private final int volumeGeometry;
-    private final double size;
+    /** Per part, the comparison's LBS and DQS points (the same arrays every measure). */
+    private final float[][] lbsPoints;
+    private final float[][] dqsPoints;
+    private final String volumeNote;
     private long measuredAt;
     private boolean measured;
     private double maxRelative = Double.NaN;
     private double lbsVolume = Double.NaN;
     private double dqsVolume = Double.NaN;
 
-    /** @param comparisons one per geometry, made off the window's thread ({@code LoadedModel}) */
-    DifferenceProbe(List<MethodComparison> made) {
+    /** @param made one per part of {@code rest}, in its order, made off the window's thread ({@code LoadedModel}) */
+    DifferenceProbe(RestPose rest, List<MethodComparison> made) {
+        this.rest = rest;
         comparisons = made.toArray(new MethodComparison[0]);
-        double largest = 0;
-        int volume = -1;
+        lbsPoints = new float[comparisons.length][];
+        dqsPoints = new float[comparisons.length][];
         for (int g = 0; g < comparisons.length; g++) {
-            largest = Math.max(largest, comparisons[g].size());
-            // The volume shown is the largest closed mesh's (a character's body, not its eyes).
-            if (comparisons[g].closed() && (volume < 0
-                    || comparisons[g].geometry().pointCount() > comparisons[volume].geometry().pointCount())) {
-                volume = g;
-            }
+            lbsPoints[g] = comparisons[g].lbsPositions();
+            dqsPoints[g] = comparisons[g].dqsPositions();
         }
-        size = largest;
-        volumeGeometry = volume;
+        String note = rest.volumeNote();
+        volumeNote = note.isEmpty() ? "" : "volume: " + note;
     }
 
-    /** The model's size in its own units (the diagonal of its bind-pose bounds), what distances are relative to. */
+    /** The placed model's size in the document's units (its rest pose's bounds), what distances are relative to. */
     double size() {
-        return size;
+        return rest.size();
     }
 
     /** Measures the frame, unless it measured less than 1/{@value #PER_SECOND} s ago. */
@@ -57,22 +60,29 @@ final class DifferenceProbe {
             comparisons[g].compare(frame.skinningMatrices(g));
             max = Math.max(max, comparisons[g].maxDistance());
         }
-        maxRelative = size > 0 ? max / size : 0;
-        if (volumeGeometry >= 0) {
-            lbsVolume = comparisons[volumeGeometry].lbsVolume();
-            dqsVolume = comparisons[volumeGeometry].dqsVolume();
-        }
+        maxRelative = rest.size() > 0 ? max / rest.size() : 0;
+        lbsVolume = rest.relativeVolume(lbsPoints);
+        dqsVolume = rest.relativeVolume(dqsPoints);
     }
 
     double maxRelative() {
         return maxRelative;
     }
 
+    /** LBS's volume of the model over its rest volume; NaN before the first measure or when no part counts. */
     double lbsVolume() {
         return lbsVolume;
     }
 
     double dqsVolume() {
         return dqsVolume;
+    }
+
+    /**
+     * Which parts the volume holds or why there is none ("volume: 3 of 3 skinned parts open"),
+     * made once; empty for a model of one closed skinned part.
+     */
+    String volumeNote() {
+        return volumeNote;
     }
 }

@@ -31,6 +31,7 @@ final class MutableSceneReadout implements SceneReadout {
     double differenceFull = Double.NaN;
     double lbsVolume = Double.NaN;
     double dqsVolume = Double.NaN;
+    String volumeNote = "";
 
     @Override
     public LiveStats stats() {
@@ -120,5 +121,10 @@ final class MutableSceneReadout implements SceneReadout {
     @Override
     public double dqsVolume() {
         return dqsVolume;
+    }
+
+    @Override
+    public String volumeNote() {
+        return volumeNote;
     }
 }

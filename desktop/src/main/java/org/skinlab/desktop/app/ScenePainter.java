@@ -105,6 +105,7 @@ final class ScenePainter implements AutoCloseable {
         info.maxDifference = Double.NaN;
         info.lbsVolume = Double.NaN;
         info.dqsVolume = Double.NaN;
+        info.volumeNote = "";
         info.stats.clear();
         textures.clear();
         if (current != null) {
@@ -131,7 +132,8 @@ final class ScenePainter implements AutoCloseable {
         draw.model.set(shown.framing().upright());
         // Both methods' volumes are live numbers in every view; the difference view adds the distance.
         if (difference == null) {
-            difference = new DifferenceProbe(shown.comparisons());
+            difference = new DifferenceProbe(shown.rest(), shown.comparisons());
+            info.volumeNote = difference.volumeNote();
         }
         difference.measure(frame);
         info.maxDifference = difference.maxRelative();
@@ -191,7 +193,7 @@ final class ScenePainter implements AutoCloseable {
         draw.method = method;
         draw.view = viewer.settings().drawView();
         draw.selectedNode = viewer.selectedJointNode();
-        // Distances in the shader are in the file's units, as the probe's size is.
+        // Distances in the shader are in the document's units, as the probe's size is.
         draw.scalarFull = draw.view == DrawSettings.View.DIFFERENCE
                 ? (float) (DrawSettings.DIFFERENCE_FULL * difference.size()) : 1f;
         draw.instances = instances;

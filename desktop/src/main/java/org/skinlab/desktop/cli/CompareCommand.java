@@ -17,6 +17,7 @@ import org.skinlab.model.Model;
 import org.skinlab.model.Node;
 import org.skinlab.skinning.JointArtifacts;
 import org.skinlab.skinning.NormalTransform;
+import org.skinlab.skinning.RestPose;
 import org.skinlab.skinning.SkinnedGeometry;
 import org.skinlab.skinning.SkinnedModel;
 import org.skinlab.skinning.SkinningMethod;
@@ -29,9 +30,12 @@ import picocli.CommandLine.Model.CommandSpec;
 
 /**
  * {@code skinlab compare FILE --joint NAME [--time T,...] [--method KEY,...|all]}: where each
- * skinning method wins at one joint of a user's file, as a markdown table per time: volume, joint
- * ring, bulge, and the distance to every other method compared ({@code JointArtifacts},
- * docs/skinning.md). Every method by default, or the ones named, in {@link SkinningMethod}'s order.
+ * skinning method wins at one joint of a user's file, as a markdown table per time and per part
+ * whose points the joint and its parent share: the part's volume, joint ring, bulge, and the
+ * distance to every other method compared ({@code JointArtifacts}, docs/skinning.md), all against
+ * the model's rest pose ({@link RestPose}); each part says why its volume is missing, and parts
+ * with no such point are named on one line. Every method by default, or the ones named, in
+ * {@link SkinningMethod}'s order.
  */
 @Command(name = "compare", mixinStandardHelpOptions = true,
         description = {"The skinning methods at one joint: volume kept, joint ring, bulge, distance between the methods "
@@ -62,7 +66,11 @@ public final class CompareCommand implements Callable<Integer> {
         SkinnedModel skinned = new SkinnedModel(model, model.clips().isEmpty() ? null : model.clips().get(0),
                 NormalTransform.INVERSE_TRANSPOSE);
         PrintWriter out = spec.commandLine().getOut();
+        RestPose rest = RestPose.of(skinned);
         int found = 0;
+        int measured = 0;
+        List<String> without = new ArrayList<>();
+        String parentName = null;
         for (int g = 0; g < skinned.geometries().size(); g++) {
             SkinnedGeometry geometry = skinned.geometries().get(g);
             int j = paletteIndex(model, geometry, joint);
@@ -75,29 +83,48 @@ public final class CompareCommand implements Callable<Integer> {
                         + " to measure", null);
             }
             found++;
-            JointArtifacts artifacts = new JointArtifacts(geometry, j, p);
-            out.printf(Locale.ROOT, "%s, mesh %s: joint %s with parent %s, %d points in the joint region%n",
-                    file.getFileName(), geometry.mesh() == null ? "?" : geometry.mesh().id(), joint,
-                    name(model, geometry.jointNode(p)), artifacts.regionSize());
-            float start = skinned.sampler().start();
-            float end = skinned.sampler().end();
-            List<Float> at = times != null ? times : List.of(start, (start + end) / 2, end);
-            for (float t : at) {
-                skinned.pose(skinned.sampler().clamp(t), RotationInterpolation.SLERP);
-                Map<SkinningMethod, float[]> posed = new EnumMap<>(SkinningMethod.class);
-                for (SkinningMethod m : compared) {
-                    float[] points = new float[3 * geometry.pointCount()];
-                    skinned.skin(g, m, points, new float[points.length]);
-                    posed.put(m, points);
-                }
-                table(out, t, compared, artifacts.report(posed, skinned.palette(g).matrices()));
+            parentName = name(model, geometry.jointNode(p));
+            JointArtifacts artifacts = new JointArtifacts(rest, g, j, p);
+            if (artifacts.regionSize() == 0) {
+                without.add(part(model, geometry));
+                continue;
             }
+            out.printf(Locale.ROOT, "%s%s, %s: joint %s with parent %s, %d points in the joint region%n",
+                    measured++ > 0 ? "\n" : "", file.getFileName(), part(model, geometry), joint, parentName,
+                    artifacts.regionSize());
+            out.printf(Locale.ROOT, "volume: %s; distances over the model's size, %.4g (its rest pose's bounds)%n",
+                    rest.partVolume(g) == RestPose.PartVolume.CLOSED ? "the part's, against its own rest"
+                            : "- (the part is " + rest.partNote(g) + ")", rest.size());
+            tables(out, skinned, g, artifacts, compared);
         }
         if (found == 0) {
             throw new CommandFailure(ExitCodes.USAGE, file + ": no skin has a joint named " + joint, null);
         }
+        if (!without.isEmpty()) {
+            out.printf(Locale.ROOT, "%sno point of %s is weighted on both %s and %s: no joint region%n",
+                    measured > 0 ? "\n" : "", String.join(", ", without), joint, parentName);
+        }
         out.flush();
         return ExitCodes.OK;
+    }
+
+    /** Part g's table at each time: every compared method's numbers at the joint. */
+    private void tables(PrintWriter out, SkinnedModel skinned, int g, JointArtifacts artifacts,
+            List<SkinningMethod> compared) {
+        float start = skinned.sampler().start();
+        float end = skinned.sampler().end();
+        List<Float> at = times != null ? times : List.of(start, (start + end) / 2, end);
+        int points = skinned.geometries().get(g).pointCount();
+        for (float t : at) {
+            skinned.pose(skinned.sampler().clamp(t), RotationInterpolation.SLERP);
+            Map<SkinningMethod, float[]> posed = new EnumMap<>(SkinningMethod.class);
+            for (SkinningMethod m : compared) {
+                float[] positions = new float[3 * points];
+                skinned.skin(g, m, positions, new float[positions.length]);
+                posed.put(m, positions);
+            }
+            table(out, t, compared, artifacts.report(posed, skinned.palette(g).matrices()));
+        }
     }
 
     /** The methods --method names, each once, in the enum's order. */
@@ -142,6 +169,17 @@ public final class CompareCommand implements Callable<Integer> {
         }
         Node n = model.node(node);
         return n.name() != null ? n.name() : n.id();
+    }
+
+    /** A part by its mesh and, when it has one, the name of the node that places it. */
+    private static String part(Model model, SkinnedGeometry geometry) {
+        if (geometry.instance() == null) {
+            return "mesh ?";
+        }
+        Node node = model.node(geometry.instance().node());
+        String mesh = geometry.mesh().name() != null ? geometry.mesh().name() : geometry.mesh().id();
+        boolean sameName = node.name() == null || node.name().equals(mesh);
+        return sameName ? "mesh " + mesh : "mesh " + mesh + " (node " + node.name() + ")";
     }
 
     private static int paletteIndex(Model model, SkinnedGeometry g, String name) {

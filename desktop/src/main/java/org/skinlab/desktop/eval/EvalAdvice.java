@@ -85,7 +85,7 @@ final class EvalAdvice {
                 .append(EvalReport.num(r, b + "/lbsVolume")).append(" of its volume with LBS (the elbow collapses), ")
                 .append(EvalReport.num(r, b + "/dqsVolume")).append(" with DQS and ")
                 .append(EvalReport.num(r, b + "/corVolume")).append(" with CoR; there the joint bulges by ")
-                .append(EvalReport.num(r, b + "/dqsBulge")).append(" % of the mesh's size with DQS, ")
+                .append(EvalReport.num(r, b + "/dqsBulge")).append(" % of the model's size with DQS, ")
                 .append(EvalReport.num(r, b + "/corBulge")).append(" with CoR and ")
                 .append(EvalReport.num(r, b + "/lbsBulge")).append(" with LBS. Over the whole bend the largest bulges are ")
                 .append(EvalReport.num(r, b + "/dqsMaxBulge")).append(" (DQS, at ")

@@ -342,7 +342,7 @@ final class EvalClaims {
                     + num(r, p, "lowVolume") + " with few rings there (twist-low); LBS " + num(r, p, "lbsHighVolume")
                     + ".";
             case "dqs-bulge" -> "At " + num(r, p, "angleDegrees") + " degrees of bend the joint stands out "
-                    + num(r, p, "dqsBulge") + " % of the mesh's size beyond its rest distance with DQS, "
+                    + num(r, p, "dqsBulge") + " % of the model's size beyond its rest distance with DQS, "
                     + num(r, p, "lbsBulge") + " % with LBS.";
             case "phone" -> num(r, p, "devices") + " phone(s) added: section \"phone\".";
             default -> "";

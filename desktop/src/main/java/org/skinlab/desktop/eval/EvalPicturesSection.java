@@ -31,6 +31,7 @@ import org.skinlab.model.Model;
 import org.skinlab.skinning.InfluenceCapError;
 import org.skinlab.skinning.MethodComparison;
 import org.skinlab.skinning.NormalTransform;
+import org.skinlab.skinning.RestPose;
 import org.skinlab.skinning.SkinnedModel;
 
 /**
@@ -310,8 +311,9 @@ final class EvalPicturesSection implements EvalSection {
 
     private static List<MethodComparison> comparisons(SkinnedModel skinned) {
         List<MethodComparison> comparisons = new ArrayList<>();
+        RestPose rest = RestPose.of(skinned);
         for (int g = 0; g < skinned.geometries().size(); g++) {
-            comparisons.add(new MethodComparison(skinned.geometries().get(g)));
+            comparisons.add(new MethodComparison(rest, g));
         }
         return comparisons;
     }

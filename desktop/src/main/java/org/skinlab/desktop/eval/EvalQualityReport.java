@@ -25,7 +25,7 @@ final class EvalQualityReport {
     private static final String[][] MEASURES = {{"volume", "volume", "volume / rest"},
         {"ringRadius", "ring radius", "joint ring radius / rest"},
         {"ringTurnDegrees", "ring turn", "joint ring's turn (degrees)"},
-        {"bulge", "bulge", "bulge (% of the mesh's size)"}};
+        {"bulge", "bulge", "bulge (% of the model's size)"}};
 
     private EvalQualityReport() {
     }
@@ -42,7 +42,7 @@ final class EvalQualityReport {
                 + " stated angle (those follow). A dash: not measured (an open mesh has no volume).");
         extremes(results, "minVolume", "Least volume over rest", report);
         extremes(results, "minRingRadius", "Least joint ring radius over rest", report);
-        extremes(results, "maxBulge", "Largest bulge, % of the mesh's size", report);
+        extremes(results, "maxBulge", "Largest bulge, % of the model's size", report);
         JsonNode assets = results.get("assets");
         for (int a = 0; a < assets.size(); a++) {
             if (assets.get(a).has("atAngles")) {

@@ -6,8 +6,8 @@ import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
 import org.skinlab.animation.RotationInterpolation;
-import org.skinlab.skinning.ArtifactMetrics;
 import org.skinlab.skinning.JointArtifacts;
+import org.skinlab.skinning.RestPose;
 import org.skinlab.skinning.SkinnedGeometry;
 import org.skinlab.skinning.SkinnedModel;
 import org.skinlab.skinning.SkinningMethod;
@@ -25,18 +25,19 @@ final class MeasuredJoint {
     final JointArtifacts artifacts;
     final JointAngle angle;
     final RingTurn ring;
-    final double bindSize;
+    /** The placed model's size ({@link RestPose#size}), what the bulge is in percent of. */
+    final double size;
     /** A joint that turns less than this over a clip is passed over when another turns more. */
     static final double MOVING_DEGREES = 20;
 
-    MeasuredJoint(SkinnedGeometry g, int geometry, int joint, int parent, JointArtifacts artifacts) {
+    MeasuredJoint(SkinnedGeometry g, int geometry, int joint, int parent, JointArtifacts artifacts, double size) {
         this.geometry = geometry;
         this.joint = joint;
         this.parent = parent;
         this.artifacts = artifacts;
         angle = new JointAngle(parent, joint);
         ring = new RingTurn(g, joint, parent);
-        bindSize = ArtifactMetrics.boundsDiagonal(g.positionArray(), g.vertexCount());
+        this.size = size;
     }
 
     /**
@@ -47,9 +48,10 @@ final class MeasuredJoint {
      * method's artefacts), else the one that turns most; null when there is none.
      */
     static MeasuredJoint choose(SkinnedModel skinned, float[] times) {
+        RestPose rest = RestPose.of(skinned);
         int g = -1;
         for (int k = 0; k < skinned.geometries().size(); k++) {
-            if (hasRegion(skinned.geometries().get(k))
+            if (hasRegion(rest, k)
                     && (g < 0 || skinned.geometries().get(k).pointCount() > skinned.geometries().get(g).pointCount())) {
                 g = k;
             }
@@ -75,7 +77,7 @@ final class MeasuredJoint {
             if (p < 0) {
                 continue;
             }
-            JointArtifacts a = new JointArtifacts(geometry, j, p);
+            JointArtifacts a = new JointArtifacts(rest, g, j, p);
             if (a.regionSize() == 0) {
                 continue;
             }
@@ -84,31 +86,32 @@ final class MeasuredJoint {
             if (best == null || (moving && !bestMoving)
                     || (moving == bestMoving && (moving ? a.regionSize() > best.artifacts.regionSize()
                             : turned[j] > bestTurn))) {
-                best = new MeasuredJoint(geometry, g, j, p, a);
+                best = new MeasuredJoint(geometry, g, j, p, a, rest.size());
                 bestTurn = turned[j];
             }
         }
         return best;
     }
 
-    private static boolean hasRegion(SkinnedGeometry geometry) {
+    private static boolean hasRegion(RestPose rest, int part) {
+        SkinnedGeometry geometry = rest.geometries().get(part);
         for (int j = 0; j < geometry.jointCount(); j++) {
             int p = geometry.jointParent(j);
-            if (p >= 0 && new JointArtifacts(geometry, j, p).regionSize() > 0) {
+            if (p >= 0 && new JointArtifacts(rest, part, j, p).regionSize() > 0) {
                 return true;
             }
         }
         return false;
     }
 
-    /** This pose's volume, ring radius, bulge (in percent of the geometry's size) and ring turn per method. */
+    /** This pose's volume, ring radius, bulge (in percent of the model's size) and ring turn per method. */
     void measure(PosedMethods posed, float[] matrices, Map<SkinningMethod, ObjectNode> byMethod) {
         double[] axis = angle.axis();
         for (JointArtifacts.Report r : artifacts.report(posed.geometry(geometry), matrices)) {
             ObjectNode node = byMethod.get(r.method());
             add((ArrayNode) node.get("volume"), r.volume());
             add((ArrayNode) node.get("ringRadius"), r.ringRadius());
-            add((ArrayNode) node.get("bulge"), bindSize > 0 ? 100 * r.bulge() / bindSize : r.bulge());
+            add((ArrayNode) node.get("bulge"), size > 0 ? 100 * r.bulge() / size : r.bulge());
             add((ArrayNode) node.get("ringTurnDegrees"), axis == null || !ring.measurable() ? 0
                     : ring.degrees(posed.geometry(geometry).get(r.method()), matrices, axis));
         }

@@ -54,9 +54,16 @@ public interface SceneReadout {
     /** The value at the top of the difference colour map, relative to the model's size. */
     double differenceFull();
 
-    /** LBS's volume relative to the rest shape's; NaN when the mesh is not closed. */
+    /** LBS's volume of the model relative to its rest pose's; NaN when no part counts (see {@link #volumeNote()}). */
     double lbsVolume();
 
-    /** DQS's volume relative to the rest shape's; NaN when the mesh is not closed. */
+    /** DQS's volume of the model relative to its rest pose's; NaN when no part counts. */
     double dqsVolume();
+
+    /**
+     * Which parts the volumes hold, or why there are none ("volume: the mesh is not closed",
+     * "volume: 3 of 3 skinned parts open", "volume: no skinned part"); empty when there is
+     * nothing to say.
+     */
+    String volumeNote();
 }

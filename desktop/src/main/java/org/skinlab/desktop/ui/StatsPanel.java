@@ -16,13 +16,16 @@ import imgui.flag.ImGuiWindowFlags;
 /**
  * The live numbers beside the scene, each with a small rolling plot of its last
  * {@value LiveStats#SAMPLES} frames: fps and frame time, skinning time, vertices skinned per
- * second, and in the difference view the largest LBS-DQS distance and both methods' volumes.
+ * second, the model's volume under LBS and DQS (or why it has none), and in the difference view
+ * the largest LBS-DQS distance.
  */
 final class StatsPanel {
     /** The panel's window title. */
     static final String TITLE = "Numbers";
     /** Seconds of history the plots show. */
     private static final float WINDOW_SECONDS = 10f;
+    /** The plots' width, which the volume's note wraps at. */
+    private static final float PLOT_WIDTH = 300f;
 
     private final float[] xs = new float[LiveStats.SAMPLES];
     private final float[] ys = new float[LiveStats.SAMPLES];
@@ -98,8 +101,11 @@ final class StatsPanel {
             ImGui.textUnformatted(lbsVolume.of(scene.lbsVolume()));
             ImGui.textUnformatted(dqsVolume.of(scene.dqsVolume()));
             plot("##volume", stats.lbsVolume, stats.dqsVolume);
-        } else {
-            Widgets.dim("volume: the mesh is not closed");
+        }
+        if (!scene.volumeNote().isEmpty()) {
+            ImGui.pushTextWrapPos(ImGui.getCursorPosX() + PLOT_WIDTH);
+            Widgets.dim(scene.volumeNote());
+            ImGui.popTextWrapPos();
         }
     }
 
@@ -112,7 +118,7 @@ final class StatsPanel {
         a.copyTo(xs, ys);
         float last = xs[n - 1];
         ImPlot.setNextAxisLimits(ImPlotAxis.X1, last - WINDOW_SECONDS, last, ImPlotCond.Always);
-        if (ImPlot.beginPlot(id, 300f, 80f, ImPlotFlags.NoLegend | ImPlotFlags.NoMenus | ImPlotFlags.NoBoxSelect
+        if (ImPlot.beginPlot(id, PLOT_WIDTH, 80f, ImPlotFlags.NoLegend | ImPlotFlags.NoMenus | ImPlotFlags.NoBoxSelect
                 | ImPlotFlags.NoMouseText)) {
             ImPlot.setupAxes(null, null, ImPlotAxisFlags.NoTickLabels, ImPlotAxisFlags.AutoFit);
             ImPlot.plotLine(a.name(), xs, ys, n);

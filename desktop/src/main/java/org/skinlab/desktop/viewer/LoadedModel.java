@@ -8,6 +8,7 @@ import org.skinlab.model.Model;
 import org.skinlab.scene.ModelFraming;
 import org.skinlab.simulation.SkeletalAnimatedMesh;
 import org.skinlab.skinning.MethodComparison;
+import org.skinlab.skinning.RestPose;
 
 /**
  * A model the viewer shows: the file, the imported {@link Model}, the clip it plays, its
@@ -20,17 +21,19 @@ public final class LoadedModel implements AutoCloseable {
     private final int clip;
     private final SkeletalAnimatedMesh mesh;
     private final ModelFraming framing;
+    private final RestPose rest;
     private final List<MethodComparison> comparisons;
     private final double loadMillis;
 
     LoadedModel(Path file, String displayName, Model model, int clip, SkeletalAnimatedMesh mesh, ModelFraming framing,
-            List<MethodComparison> comparisons, double loadMillis) {
+            RestPose rest, List<MethodComparison> comparisons, double loadMillis) {
         this.file = file;
         this.displayName = displayName;
         this.model = model;
         this.clip = clip;
         this.mesh = mesh;
         this.framing = framing;
+        this.rest = rest;
         this.comparisons = List.copyOf(comparisons);
         this.loadMillis = loadMillis;
     }
@@ -64,7 +67,12 @@ public final class LoadedModel implements AutoCloseable {
         return framing;
     }
 
-    /** LBS against DQS per geometry (the difference view's numbers), made when the model was loaded. */
+    /** The model's parts in its rest pose, what the difference view's numbers are relative to. */
+    public RestPose rest() {
+        return rest;
+    }
+
+    /** LBS against DQS per part (the difference view's numbers), made when the model was loaded. */
     public List<MethodComparison> comparisons() {
         return comparisons;
     }

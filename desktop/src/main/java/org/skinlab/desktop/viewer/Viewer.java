@@ -11,6 +11,7 @@ import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicReference;
 
+import org.skinlab.animation.Skeleton;
 import org.skinlab.desktop.render.DrawSettings;
 import org.skinlab.importer.ModelImporter;
 import org.skinlab.model.ImportException;
@@ -20,6 +21,7 @@ import org.skinlab.simulation.AnimationConfig;
 import org.skinlab.simulation.Frame;
 import org.skinlab.simulation.SkeletalAnimatedMesh;
 import org.skinlab.skinning.MethodComparison;
+import org.skinlab.skinning.RestPose;
 import org.skinlab.skinning.SkinnedGeometry;
 
 /**
@@ -175,12 +177,13 @@ public final class Viewer implements AutoCloseable {
             try (Frame frame = mesh.acquire()) {
                 framing = ModelFraming.of(model.asset(), mesh.geometries(), frame);
             }
-            // The difference probe's skinners and closed-mesh check, here rather than on the window's thread.
+            // The difference probe's rest pose, closed parts and skinners, here rather than on the window's thread.
+            RestPose rest = RestPose.of(Skeleton.of(model), mesh.geometries());
             List<MethodComparison> comparisons = new ArrayList<>();
-            for (SkinnedGeometry g : mesh.geometries()) {
-                comparisons.add(new MethodComparison(g));
+            for (int g = 0; g < mesh.geometries().size(); g++) {
+                comparisons.add(new MethodComparison(rest, g));
             }
-            return new LoadedModel(path, name, model, clipIndex, mesh, framing, comparisons,
+            return new LoadedModel(path, name, model, clipIndex, mesh, framing, rest, comparisons,
                     (System.nanoTime() - t0) / 1e6);
         } catch (ImportException e) {
             close(mesh);
