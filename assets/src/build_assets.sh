@@ -43,7 +43,7 @@ run_blender() {
 
 mkdir -p assets/cylinders assets/characters assets/creatures assets/stretch assets/twist "$REF"
 
-for variant in twist-low twist-high bend; do
+for variant in twist-low twist-high bend twist-full bend-full; do
   echo "--- cylinder-$variant"
   rm -f "assets/cylinders/cylinder-$variant.dae" "$REF/cylinder-$variant.json"
   run_blender "cylinder-$variant" "$SRC/make_cylinder.py" "$variant" \
@@ -88,6 +88,8 @@ if [ "$PREVIEWS" = 1 ]; then
   run_blender p6 "$SRC/render_preview.py" assets/cylinders/cylinder-bend.dae "$SRC/previews/cylinder-bend.png" side 0 1 2 3 4
   run_blender p7 "$SRC/render_preview.py" assets/stretch/limb-stretch.dae "$SRC/previews/limb-stretch.png" front 0 0.5 1
   run_blender p8 "$SRC/render_preview.py" assets/twist/arm-twist.dae "$SRC/previews/arm-twist.png" front 0 0.5 0.875 1
+  run_blender p9 "$SRC/render_preview.py" assets/cylinders/cylinder-twist-full.dae "$SRC/previews/cylinder-twist-full.png" front 0 1.5 2.75 3.25 4.5 6
+  run_blender p10 "$SRC/render_preview.py" assets/cylinders/cylinder-bend-full.dae "$SRC/previews/cylinder-bend-full.png" side 0 1.5 2.75 3.25 4.5 6
 fi
 
 echo "all assets built and checked"

@@ -39,6 +39,13 @@ EXPECT = {
     "cylinders/cylinder-bend.dae": dict(
         joints=(2, 2), triangles=(1900, 2200), closed=True, min_keys=5,
         motion=("upper", "X", 160.0, 179.0), passes_through=[("upper", 90.0)]),
+    # a whole turn, 15 degrees per key, back at rest at the last key (so the clip loops)
+    "cylinders/cylinder-twist-full.dae": dict(
+        joints=(2, 2), triangles=(1900, 2200), closed=True, min_keys=25, loop=True, duration=(5.9, 6.1),
+        turn=("upper", "Y", 15.0, 360.0)),
+    "cylinders/cylinder-bend-full.dae": dict(
+        joints=(2, 2), triangles=(1900, 2200), closed=True, min_keys=25, loop=True, duration=(5.9, 6.1),
+        turn=("upper", "X", 15.0, 360.0)),
     "characters/humanoid-walk.dae": dict(
         joints=(15, 64), triangles=(1000, 2000), closed=True, min_keys=5, loop=True,
         duration=(0.8, 1.2)),
@@ -368,6 +375,61 @@ def check_stretch(rel, spec, nodes, order, channels, joint_nodes):
     check(worst_child < 1e-4, "%s: %s inherits the stretch (world scale off by %.1e)" % (rel, child, worst_child))
 
 
+def check_turn(rel, spec, nodes, joint_nodes, channels):
+    """A whole turn of one joint about one of its local axes, starting at rest: every step between
+    consecutive keys rotates about that axis, in the positive sense, by the same angle; the other
+    joints' keys are their rest matrices. Returns the angle at each key unwrapped (the sum of the
+    steps), which one key matrix cannot give past 180 degrees (a matrix of 195 is one of -165)."""
+    sid, axis_name, step, total = spec
+    nid = [j for j in joint_nodes if nodes[j]["sid"] == sid][0]
+    c = channels[nid]
+    a = "XYZ".index(axis_name)
+    start, _ = relative_rotation(nodes[nid]["matrix"], c["mats"][0])
+    check(start < 1e-3, "%s: %s's first key is %.4f deg from its rest pose" % (rel, sid, start))
+    unwrapped = [start]
+    worst_step, worst_axis = 0.0, 0.0
+    for k in range(1, len(c["mats"])):
+        angle, axis = relative_rotation(c["mats"][k - 1], c["mats"][k])
+        worst_step = max(worst_step, abs(angle - step))
+        worst_axis = max(worst_axis, max(abs(axis[i]) for i in range(3) if i != a), 1.0 - axis[a])
+        unwrapped.append(unwrapped[-1] + math.copysign(angle, axis[a]))
+    # the angle from key 0 that each key matrix alone gives: the unwrapped angle folded into [0, 180]
+    folded = [relative_rotation(c["mats"][0], m)[0] for m in c["mats"]]
+    worst_fold = max(abs(f - min(u % 360.0, 360.0 - u % 360.0)) for f, u in zip(folded, unwrapped))
+    print("  %s: steps of %g deg about local %s (largest deviation %.1e deg, axis off by %.1e), unwrapped "
+          "angle per key %s deg; from key 0 as one matrix tells it %s"
+          % (sid, step, axis_name, worst_step, worst_axis, " ".join("%.2f" % u for u in unwrapped),
+             " ".join("%.1f" % f for f in folded)))
+    check(worst_step < 1e-3, "%s: a step of %s is %.2e deg off %g" % (rel, sid, worst_step, step))
+    check(worst_axis < 1e-4, "%s: a step of %s is not about +%s (off by %.2e)" % (rel, sid, axis_name, worst_axis))
+    check(abs(unwrapped[-1] - total) < 1e-3, "%s: %s turns %.4f deg in all, not %g" % (rel, sid, unwrapped[-1], total))
+    check(worst_fold < 1e-3, "%s: %s's angles from key 0 are not the unwrapped ones folded" % (rel, sid))
+    for other, oc in channels.items():
+        if other != nid and other in joint_nodes:
+            off = max(max_abs_diff(m, nodes[other]["matrix"]) for m in oc["mats"])
+            check(off < 1e-6, "%s: %s moves (%.2e from its rest matrix)" % (rel, nodes[other]["sid"], off))
+    return unwrapped
+
+
+def max_abs_diff(m0, m1):
+    return max(abs(m0[i][j] - m1[i][j]) for i in range(4) for j in range(4))
+
+
+def check_turn_volumes(rel, unwrapped, vols, vol0):
+    """LBS volume at 90, 180, 270 and 360 degrees of the turn; at 360 the mesh is back at rest.
+    The volumes at a and 360 - a differ a little although the points are mirror images (a key
+    of 360 - a is one of -a, the rings and weights are symmetric under y -> -y): every quad's
+    diagonal leans the same way around the cylinder, so the triangulated surface is not."""
+    at = {round(u): v for u, v in zip(unwrapped, vols)}
+    print("  LBS volume at 90/180/270/360 deg: %s m^3 (rest %.5f; %s)"
+          % (" ".join("%.5f" % at[a] for a in (90, 180, 270, 360)), vol0,
+             " ".join("%+.1f%%" % (100.0 * (at[a] / vol0 - 1.0)) for a in (90, 180, 270, 360))))
+    worst = max(abs(at[a] - at[360 - a]) for a in at if 360 - a in at) / vol0
+    print("  LBS volume at a vs 360 - a: largest difference %.1e of the rest volume (the triangles' diagonals)"
+          % worst)
+    check(abs(at[360] - vol0) < 1e-5 * vol0, "%s: LBS volume at 360 deg %.6f, rest %.6f" % (rel, at[360], vol0))
+
+
 # ---------------------------------------------------------------- per file
 def check_file(path, rel, ref_dir):
     exp = EXPECT.get(rel, {})
@@ -527,6 +589,7 @@ def check_file(path, rel, ref_dir):
         check(got[peak] >= least, "%s: %s never turns %g deg" % (rel, sid, least))
     if "stretch" in exp:
         check_stretch(rel, exp["stretch"], nodes, order, channels, joint_nodes)
+    unwrapped = check_turn(rel, exp["turn"], nodes, joint_nodes, channels) if "turn" in exp else None
 
     # linear blend skinning from the file alone, against Blender's own deformation
     ref_path = os.path.join(ref_dir, os.path.splitext(os.path.basename(rel))[0] + ".json")
@@ -557,6 +620,8 @@ def check_file(path, rel, ref_dir):
             hi = [max(p[a] for p in pts) for a in range(3)]
             worst = max(worst, max(abs(a - b) for a, b in zip(lo + hi, rk["bbox_min"] + rk["bbox_max"])))
     print("  LBS volume per key (m^3, rest %.5f): %s" % (vol0, " ".join("%.5f" % v for v in vols)))
+    if unwrapped is not None and len(unwrapped) == len(vols):
+        check_turn_volumes(rel, unwrapped, vols, vol0)
     if ref is not None:
         print("  LBS from the file vs Blender's deformation (%s): max deviation %.2e m" % (os.path.basename(ref_path), worst))
         check(worst < 1e-4, "%s: LBS from the file deviates %.2e m from Blender's deformation" % (rel, worst))

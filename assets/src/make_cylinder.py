@@ -3,7 +3,8 @@
 Usage (from the repository root):
   blender --background --factory-startup --python-exit-code 1 \
       --python assets/src/make_cylinder.py -- VARIANT OUT.dae [REFERENCE.json]
-VARIANT is one of twist-low, twist-high, bend.
+VARIANT is one of twist-low, twist-high, bend (keys 1 s apart, never a half turn) or twist-full,
+bend-full (a whole turn, 0 to 360 degrees, 25 keys 0.25 s apart).
 
 Geometry: a closed cylinder along +Z (Blender's up axis) from z=0 to z=2, radius 0.25, 32 vertices
 per ring, 32-gon caps (the exporter triangulates each into 30 triangles). Triangles:
@@ -28,6 +29,8 @@ HEIGHT = 2.0
 RADIUS = 0.25
 SEGMENTS_AROUND = 32
 JOINT_Z = 1.0
+VARIANTS = ("twist-low", "twist-high", "bend", "twist-full", "bend-full")
+FULL_TURN_STEP_FRAMES = 6   # 0.25 s at 24 fps
 
 
 def rings_even(segments):
@@ -76,25 +79,27 @@ def build_cylinder_mesh(name, ring_heights):
 
 def main():
     args = common.script_args()
-    if len(args) not in (2, 3) or args[0] not in ("twist-low", "twist-high", "bend"):
-        raise SystemExit("usage: make_cylinder.py -- twist-low|twist-high|bend OUT.dae [REFERENCE.json]")
+    if len(args) not in (2, 3) or args[0] not in VARIANTS:
+        raise SystemExit("usage: make_cylinder.py -- %s OUT.dae [REFERENCE.json]" % "|".join(VARIANTS))
     variant, out = args[:2]
     reference = args[2] if len(args) == 3 else None
 
-    if variant == "twist-low":
-        heights = rings_even(17)
+    heights = rings_even(17) if variant == "twist-low" else rings_dense_at_joint(31)
+    if variant in ("twist-low", "twist-high"):
         # upper bone twists about the height axis (bone Y = world +Z); keys 1 s apart
         keys = [(0, 0.0), (24, 45.0), (48, 90.0), (72, 135.0), (96, 172.0)]
         axis = 1
-    elif variant == "twist-high":
-        heights = rings_dense_at_joint(31)
-        keys = [(0, 0.0), (24, 45.0), (48, 90.0), (72, 135.0), (96, 172.0)]
-        axis = 1
-    else:
-        heights = rings_dense_at_joint(31)
+    elif variant == "bend":
         # upper bone bends about its local X axis (= world X): 90 degrees at 2 s, 170 at 4 s
         keys = [(0, 0.0), (24, 45.0), (48, 90.0), (72, 130.0), (96, 170.0)]
         axis = 0
+    else:
+        # a whole turn about bone Y (twist-full) or local X (bend-full): 15 degrees every 6 frames
+        # (0.25 s), so 60 t degrees; every step is far below 180, so a reader interpolating
+        # between two keys has one shortest way. 360 at 6 s is the rest pose again.
+        keys = [(FULL_TURN_STEP_FRAMES * i, 15.0 * i) for i in range(25)]
+        axis = 1 if variant == "twist-full" else 0
+    spacing = keys[1][0]   # frames between keys: the exporters sample exactly the keys
 
     common.reset_scene(frame_end=keys[-1][0])
     mesh = build_cylinder_mesh("Cylinder", heights)
@@ -123,8 +128,8 @@ def main():
     print("cylinder %s: %d rings, %d vertices, %d triangles, ring heights %s" % (
         variant, len(heights), len(mesh.vertices), tris, " ".join("%.3f" % z for z in heights)))
     common.write_reference(mesh_obj, [k[0] for k in keys], reference)
-    common.export_dae(out, sampling_rate=24)
-    common.export_glb(out, frame_step=24)
+    common.export_dae(out, sampling_rate=spacing)
+    common.export_glb(out, frame_step=spacing)
 
 
 main()

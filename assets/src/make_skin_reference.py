@@ -5,7 +5,7 @@ Usage (from the repository root):
   blender -t 1 --background --factory-startup --python-exit-code 1 \
       --python assets/src/make_skin_reference.py -- ASSETS_DIR [NAME.dae ...]
 
-For each .dae (default: the seven assets in ASSETS) it re-imports the committed file into an empty
+For each .dae (default: the nine assets in ASSETS) it re-imports the committed file into an empty
 scene with Blender's COLLADA importer (so the reference is Blender's reading of the very file the
 Java code reads) and, at every key time of the file (the union of its samplers' INPUT arrays), sets
 the frame (time * 24 fps, with a subframe if needed), evaluates the mesh through the depsgraph with
@@ -50,6 +50,8 @@ ASSETS = [
     "cylinders/cylinder-twist-low.dae",
     "cylinders/cylinder-twist-high.dae",
     "cylinders/cylinder-bend.dae",
+    "cylinders/cylinder-twist-full.dae",
+    "cylinders/cylinder-bend-full.dae",
     "characters/humanoid-walk.dae",
     "creatures/tentacle-wave.dae",
     "stretch/limb-stretch.dae",

@@ -8,6 +8,7 @@ import java.nio.file.Path;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
+import org.junit.jupiter.params.provider.ValueSource;
 import org.skinlab.model.AnimationClip;
 import org.skinlab.model.Mesh;
 import org.skinlab.model.Model;
@@ -45,6 +46,22 @@ class OwnAssetsImportTest {
         assertEquals(1148, read("cylinders/cylinder-twist-low.dae").meshes().get(0).triangleCount());
         assertEquals(2044, read("cylinders/cylinder-twist-high.dae").meshes().get(0).triangleCount());
         assertEquals(2044, read("cylinders/cylinder-bend.dae").meshes().get(0).triangleCount());
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @ValueSource(strings = {"cylinders/cylinder-twist-full.dae", "cylinders/cylinder-bend-full.dae"})
+    void wholeTurnCylindersHaveTheTwistHighMeshAndTwentyFiveKeysOverSixSeconds(String asset) throws Exception {
+        Model m = read(asset);
+        Mesh mesh = m.meshes().get(0);
+        assertEquals(1024, mesh.positionCount());
+        assertEquals(2044, mesh.triangleCount());
+        Skin skin = m.skins().get(0);
+        assertEquals(2, skin.jointCount());
+        assertEquals(2, skin.maxInfluences());
+        AnimationClip clip = m.clips().get(0);
+        assertEquals(6.0f, clip.duration(), 1e-6f);
+        assertTrue(clip.channels().stream().allMatch(c -> c.track().keyCount() == 25));
+        assertEquals(0, m.warnings().size(), () -> m.warnings().toString());
     }
 
     @ParameterizedTest(name = "{0}")

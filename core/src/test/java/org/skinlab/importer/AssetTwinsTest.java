@@ -43,8 +43,9 @@ class AssetTwinsTest {
 
     @ParameterizedTest(name = "{0}")
     @CsvSource({"cylinders/cylinder-twist-low, 1.0", "cylinders/cylinder-twist-high, 1.0",
-        "cylinders/cylinder-bend, 1.0", "characters/humanoid-walk, 0.125", "creatures/tentacle-wave, 0.125",
-        "stretch/limb-stretch, 0.25", "twist/arm-twist, 0.125"})
+        "cylinders/cylinder-bend, 1.0", "cylinders/cylinder-twist-full, 0.25", "cylinders/cylinder-bend-full, 0.25",
+        "characters/humanoid-walk, 0.125", "creatures/tentacle-wave, 0.125", "stretch/limb-stretch, 0.25",
+        "twist/arm-twist, 0.125"})
     void glbPosesLikeItsDaeWithEveryMethodAtAndBetweenKeys(String asset, double keySpacing)
             throws IOException, ImportException {
         Model dae = ModelImporter.read(TestPaths.asset(asset + ".dae"));

@@ -35,8 +35,8 @@ class BlenderReferenceTest {
     private static final double TOLERANCE = 1e-4;
 
     @ParameterizedTest
-    @ValueSource(strings = {"cylinder-twist-low", "cylinder-twist-high", "cylinder-bend", "humanoid-walk",
-            "tentacle-wave", "limb-stretch", "arm-twist"})
+    @ValueSource(strings = {"cylinder-twist-low", "cylinder-twist-high", "cylinder-bend", "cylinder-twist-full",
+            "cylinder-bend-full", "humanoid-walk", "tentacle-wave", "limb-stretch", "arm-twist"})
     void lbsAndDqsAgreeWithBlenderOnEveryVertexAtEveryKey(String name) throws IOException, ColladaException {
         JsonNode ref = new ObjectMapper().readTree(
                 Files.readString(TestPaths.root().resolve("assets/reference/skinning/" + name + ".json")));
