@@ -74,7 +74,8 @@ final class EvalQualityReport {
                 + " bulge (how far the joint region stands out beyond its rest distance, in percent of the mesh's"
                 + " size), and the joint ring's turn about the joint's axis seen from the parent bone (a smooth"
                 + " blend turns it by about half the joint's angle; a method that reads a rotation past a half turn"
-                + " the short way round turns it back). The joint's angle is its rotation from the bind pose"
+                + " the short way round turns it back; left out within " + EvalReport.num(results, "/halfTurnDegrees")
+                + " degrees of a half turn, where the rotation has no sign). The joint's angle is its rotation from the bind pose"
                 + " relative to its parent, signed about the first axis it turned about and unwrapped from sample"
                 + " to sample, so that a full turn reads as one, not as a turn there and back.");
     }

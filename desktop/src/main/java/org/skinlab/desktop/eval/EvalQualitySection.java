@@ -72,6 +72,7 @@ final class EvalQualitySection implements EvalSection {
         results.put("cap8", InfluenceCapReport.CAP_8);
         results.put("angleToleranceDegrees", ANGLE_TOLERANCE);
         results.put("movingDegrees", MeasuredJoint.MOVING_DEGREES);
+        results.put("halfTurnDegrees", MeasuredJoint.HALF_TURN_DEGREES);
         ArrayNode quoted = results.putArray("quotedDegrees");
         for (double d : QUOTED_DEGREES) {
             quoted.add(d);
@@ -153,7 +154,7 @@ final class EvalQualitySection implements EvalSection {
                 unwrapped = i == 0 ? s : JointAngle.continued(unwrapped, signed, s);
                 signed = s;
                 angles.add(EvalReport.round(unwrapped));
-                joint.measure(posed, matrices, byMethod);
+                joint.measure(posed, matrices, unwrapped, byMethod);
             }
         }
         pairs.put(asset.putArray("pairs"), size);
@@ -211,7 +212,7 @@ final class EvalQualitySection implements EvalSection {
             posed.pose((float) t);
             Map<SkinningMethod, ObjectNode> at = methodNodes(out.addObject().put("angleDegrees", target)
                     .put("time", EvalReport.round(t - start)).putObject("methods"));
-            joint.measure(posed, skinned.palette(joint.geometry).matrices(), at);
+            joint.measure(posed, skinned.palette(joint.geometry).matrices(), target, at);
         }
     }
 

@@ -27,6 +27,8 @@ final class MeasuredJoint {
     final RingTurn ring;
     /** The placed model's size ({@link RestPose#size}), what the bulge is in percent of. */
     final double size;
+    /** How near a half turn (degrees) the ring's turn is left out: the rotation's sign is undefined there. */
+    static final double HALF_TURN_DEGREES = 0.5;
     /** A joint that turns less than this over a clip is passed over when another turns more. */
     static final double MOVING_DEGREES = 20;
 
@@ -104,9 +106,15 @@ final class MeasuredJoint {
         return false;
     }
 
-    /** This pose's volume, ring radius, bulge (in percent of the model's size) and ring turn per method. */
-    void measure(PosedMethods posed, float[] matrices, Map<SkinningMethod, ObjectNode> byMethod) {
+    /**
+     * This pose's volume, ring radius, bulge (in percent of the model's size) and ring turn per
+     * method; the joint is at {@code angleDegrees} (unwrapped).
+     */
+    void measure(PosedMethods posed, float[] matrices, double angleDegrees, Map<SkinningMethod, ObjectNode> byMethod) {
         double[] axis = angle.axis();
+        // Within a hair of a half turn the rotation has no sign, and the ring's turn none either.
+        double offHalfTurn = Math.abs(Math.IEEEremainder(angleDegrees - 180, 360));
+        boolean turnDefined = axis != null && ring.measurable() && offHalfTurn > HALF_TURN_DEGREES;
         for (JointArtifacts.Report r : artifacts.report(posed.geometry(geometry), matrices)) {
             ObjectNode node = byMethod.get(r.method());
             add((ArrayNode) node.get("volume"), r.volume());
