@@ -18,6 +18,9 @@ public interface FrameSource extends AutoCloseable {
     /** How many frames per second it delivers (files: played at this rate; cameras: nominal). */
     double framesPerSecond();
 
+    /** The frames before it loops (a file's), or 0 for a camera's endless stream. */
+    int frameCount();
+
     /**
      * Fills {@code into} (of this source's size) with the next frame (files loop at their end);
      * IOException or IllegalArgumentException naming the file when one cannot be read.

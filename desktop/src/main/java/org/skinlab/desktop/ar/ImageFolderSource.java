@@ -44,6 +44,11 @@ public final class ImageFolderSource implements FrameSource {
     }
 
     @Override
+    public int frameCount() {
+        return files.size();
+    }
+
+    @Override
     public void next(CameraImage into) {
         Path file = files.get(index);
         index = (index + 1) % files.size();

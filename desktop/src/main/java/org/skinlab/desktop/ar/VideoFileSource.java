@@ -29,6 +29,7 @@ public final class VideoFileSource implements FrameSource {
     private final int width;
     private final int height;
     private final YCbCr colour;
+    private final int frameCount;
     private SeekableByteChannel channel;
     private FrameGrab grab;
 
@@ -52,6 +53,7 @@ public final class VideoFileSource implements FrameSource {
         }
         width = first.getCroppedWidth();
         height = first.getCroppedHeight();
+        frameCount = grab.getVideoTrack().getMeta().getTotalFrames();
         try {
             colour = colourOf(grab.getVideoTrack().getMeta().getCodecPrivate());
         } catch (RuntimeException e) {
@@ -118,6 +120,12 @@ public final class VideoFileSource implements FrameSource {
     @Override
     public double framesPerSecond() {
         return fps;
+    }
+
+    /** The frames the container lists. */
+    @Override
+    public int frameCount() {
+        return frameCount;
     }
 
     /** The video's colour matrix and range. */

@@ -63,6 +63,11 @@ public final class WebcamSource implements FrameSource {
     }
 
     @Override
+    public int frameCount() {
+        return 0;
+    }
+
+    @Override
     public void next(CameraImage into) {
         BufferedImage image = webcam.getImage();
         if (image == null) {
