@@ -19,6 +19,7 @@ import org.skinlab.desktop.ExitCodes;
 import org.skinlab.desktop.ar.DemoVideo;
 import org.skinlab.desktop.ar.GrayImages;
 import org.skinlab.desktop.ar.IntrinsicsFile;
+import org.skinlab.desktop.bench.ArFrameChecks;
 import org.skinlab.desktop.bench.RenderBench;
 import org.skinlab.desktop.render.GlTestDisplay;
 
@@ -32,8 +33,6 @@ import org.skinlab.desktop.render.GlTestDisplay;
  * the model drawn in every frame of the demo video, and the renderer named.
  */
 class ArFrameBenchCommandTest {
-    private static final double ROUNDING = 0.0031;
-
     @Test
     void theDemoVideoTimedPerStageForEachMethodAndSkinning(@TempDir Path dir) throws Exception {
         GlTestDisplay.assume();
@@ -49,7 +48,7 @@ class ArFrameBenchCommandTest {
         List<String> keys = new ArrayList<>();
         doc.get("variants").forEach(v -> keys.add(v.get("key").asText()));
         assertEquals(List.of("lbs-cpu", "lbs-gpu", "dqs-cpu", "dqs-gpu"), keys);
-        checkBookkeeping(doc);
+        ArFrameChecks.bookkeeping(doc);
         for (JsonNode v : doc.get("variants")) {
             for (JsonNode shown : v.get("modelFrames")) {
                 assertEquals(4, shown.asInt(), "the demo marker is found and the model drawn in every frame: " + v);
@@ -82,60 +81,8 @@ class ArFrameBenchCommandTest {
         assertTrue(doc.get("source").asText().startsWith("3 images of frames (320x240"), doc.get("source").asText());
         assertEquals(6, doc.get("runs").asInt());
         assertEquals(1, doc.get("variants").size());
-        checkBookkeeping(doc);
+        ArFrameChecks.bookkeeping(doc);
         assertEquals(3, doc.at("/variants/0/modelFrames/0").asInt(), doc.toString());
-    }
-
-    /** Runs, sums, medians and the stages' work, as the class comment says. */
-    static void checkBookkeeping(JsonNode doc) {
-        int runs = doc.get("runs").asInt();
-        assertTrue(runs >= 5);
-        assertEquals(16.667, doc.get("budgetMs").asDouble(), 0);
-        for (JsonNode v : doc.get("variants")) {
-            JsonNode stages = v.get("stages");
-            assertEquals(List.of("decode", "track", "pose", "skin", "draw"), Cli.keys(stages));
-            double medians = 0;
-            for (JsonNode s : stages) {
-                checkTiming(s, runs, v);
-                medians += s.get("medianMs").asDouble();
-            }
-            checkTiming(v.get("frame"), runs, v);
-            for (int i = 0; i < runs; i++) {
-                double sum = 0;
-                for (JsonNode s : stages) {
-                    sum += s.get("runs").get(i).asDouble();
-                }
-                assertEquals(v.at("/frame/runs/" + i).asDouble(), sum, ROUNDING, "run " + i + "'s stages: " + v);
-            }
-            assertEquals(v.get("stageMediansMs").asDouble(), medians, ROUNDING, v.toString());
-            double percent = 100 * v.get("stageMediansMs").asDouble() / (1000.0 / 60);
-            assertEquals(percent, v.get("budgetPercent").asDouble(), 1e-4 * percent + 0.001, v.toString());
-            boolean gpu = v.get("skinning").asText().equals("gpu");
-            for (int i = 0; i < runs; i++) {
-                for (String worked : new String[] {"decode", "track", "pose", "draw"}) {
-                    assertTrue(stages.get(worked).get("runs").get(i).asDouble() > 0, worked + " did work: " + v);
-                }
-                double skin = stages.get("skin").get("runs").get(i).asDouble();
-                // LBS and DQS have shader code: with GPU skinning the CPU skins nothing.
-                assertTrue(gpu ? skin == 0 : skin > 0, "skin, " + v.get("skinning").asText() + ": " + v);
-            }
-            assertEquals(stages.at("/decode/medianMs").asDouble() + stages.at("/track/medianMs").asDouble(),
-                    v.at("/threads/feedMs").asDouble(), ROUNDING);
-            assertEquals(stages.at("/draw/medianMs").asDouble(), v.at("/threads/windowMs").asDouble(), 0);
-        }
-    }
-
-    private static void checkTiming(JsonNode t, int runs, JsonNode where) {
-        assertEquals(runs, t.get("runs").size(), where.toString());
-        double min = Double.POSITIVE_INFINITY;
-        double max = Double.NEGATIVE_INFINITY;
-        for (JsonNode r : t.get("runs")) {
-            min = Math.min(min, r.asDouble());
-            max = Math.max(max, r.asDouble());
-        }
-        assertEquals(min, t.get("minMs").asDouble(), 0, where.toString());
-        assertEquals(max, t.get("maxMs").asDouble(), 0, where.toString());
-        assertTrue(t.get("medianMs").asDouble() >= min && t.get("medianMs").asDouble() <= max, where.toString());
     }
 
     @Test
