@@ -3,10 +3,17 @@ package org.skinlab.desktop.eval;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.io.File;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.List;
+import java.util.concurrent.TimeUnit;
 
 import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 import org.skinlab.desktop.bench.ArFrameChecks;
 import org.skinlab.desktop.bench.RenderBench;
 
@@ -53,5 +60,26 @@ class EvalArFrameTest {
         assertTrue(EvalReportCheck.linked(run.readme).contains("ar-frame-stages.png"), run.readme);
         assertTrue(section.contains("| **stage medians summed** (share of " + EvalReport.format(s.get("budgetMs"))
                 + " ms, 60 Hz) |"), section);
+    }
+
+    /** Run in a JVM of its own without DISPLAY and WAYLAND_DISPLAY: skipped, saying why, in both files. */
+    @Test
+    void withoutADisplayItIsSkippedWithTheReason(@TempDir Path dir) throws Exception {
+        Path java = Path.of(System.getProperty("java.home"), "bin", "java");
+        ProcessBuilder pb = new ProcessBuilder(List.of(java.toString(), "-cp", System.getProperty("java.class.path"),
+                "org.skinlab.desktop.cli.SkinlabMain", "eval", "--quick", "--only", "ar-frame", "--out", dir.toString()));
+        pb.environment().remove("DISPLAY");
+        pb.environment().remove("WAYLAND_DISPLAY");
+        pb.redirectErrorStream(true);
+        pb.directory(new File(System.getProperty("skinlab.root", "..")));
+        Process p = pb.start();
+        assertTrue(p.waitFor(120, TimeUnit.SECONDS), "eval did not end within two minutes");
+        String output = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+        assertEquals(0, p.exitValue(), output);
+        JsonNode s = new ObjectMapper().readTree(dir.resolve("results.json").toFile()).at("/sections/ar-frame");
+        String why = s.get("skipped").asText();
+        assertTrue(why.startsWith("no display"), s.toString());
+        assertTrue(Files.readString(dir.resolve("README.md")).contains("Skipped: `" + why + "`"), output);
+        assertTrue(output.contains("ar-frame skipped: " + why), output);
     }
 }
