@@ -51,12 +51,14 @@ import org.skinlab.skinning.SkinningMethod;
  * decodes, tracks and poses the same frames; a stage's value in a run is its mean time per frame
  * (so a run's stages add up to its frame time exactly). Runs of several variants are interleaved
  * (run 1 of each, then run 2 of each, the order turned by one each run), so that a slow spell of a
- * shared machine falls on all of them. A warm-up of at least the given time, every variant in turn,
- * comes first and is not counted.
+ * shared machine falls on all of them. A warm-up of at least the given time, every variant in turn
+ * (passes of up to 20 frames), comes first and is not counted.
  */
 public final class ArFrameBench implements AutoCloseable {
     /** The time of one 60 Hz display frame, in milliseconds: the budget a frame's stages share. */
     public static final double FRAME_BUDGET_MS = 1000.0 / 60;
+    /** Frames per variant in each pass of the warm-up, which repeats until its time is up. */
+    private static final int WARMUP_FRAMES = 20;
     /** Playback time per frame (s): the animation advances as on a 60 Hz display. */
     private static final double STEP_SECONDS = 1.0 / 60;
 
@@ -240,7 +242,7 @@ public final class ArFrameBench implements AutoCloseable {
             long warmEnd = System.nanoTime() + (long) (warmupSeconds * 1e9);
             do {
                 for (Player p : players) {
-                    play(p, framesPerRun, null, null);
+                    play(p, Math.min(framesPerRun, WARMUP_FRAMES), null, null);
                 }
             } while (System.nanoTime() < warmEnd);
 
