@@ -37,6 +37,8 @@ final class EvalArFrameSection implements EvalSection {
     private static final int QUICK_DEMO_FRAMES = 8;
     private static final int FULL_DEMO_FRAMES = 60;
     private static final int RUNS = 5;
+    /** A quick run plays at most this many frames of a real video per run. */
+    private static final int QUICK_REAL_FRAMES = 30;
     /** The real video's markers' size, unknown: it scales the model on them, not the times. */
     private static final double REAL_MARKER_METRES = 0.10;
 
@@ -66,7 +68,7 @@ final class EvalArFrameSection implements EvalSection {
         if (!ViewerProcess.displayAvailable()) {
             return 1;
         }
-        return context.quick() ? 12 : context.arVideo() != null ? 150 : 60;
+        return context.quick() ? (context.arVideo() != null ? 20 : 12) : context.arVideo() != null ? 150 : 60;
     }
 
     @Override
@@ -121,7 +123,8 @@ final class EvalArFrameSection implements EvalSection {
             throws IOException {
         try (ArFrameBench bench = ArFrameBench.open(input.name(), input.frames(), input.camera(), input.tracking(),
                 model)) {
-            ArFrameBench.Result result = bench.run(plan.variants(), RUNS, input.frameCount(), plan.warmupSeconds(),
+            int frames = context.quick() ? Math.min(input.frameCount(), QUICK_REAL_FRAMES) : input.frameCount();
+            ArFrameBench.Result result = bench.run(plan.variants(), RUNS, frames, plan.warmupSeconds(),
                     f -> context.progress(0.2 + 0.8 * f));
             ArFrameJson.write(result, results);
         }
