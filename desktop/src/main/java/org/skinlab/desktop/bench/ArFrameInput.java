@@ -23,11 +23,10 @@ import org.skinlab.desktop.ar.VideoFileSource;
  * @param frameCount   frames before the source loops
  * @param camera       the camera, of the frames' size
  * @param tracking     the marker dictionary, size and target id
- * @param synthetic    whether the frames are the demo video's
  * @param written      a file this input wrote (the demo MP4), or null
  */
 public record ArFrameInput(String name, ArFrameBench.Frames frames, int frameCount, CameraIntrinsics camera,
-        TrackerConfig tracking, boolean synthetic, Path written) implements AutoCloseable {
+        TrackerConfig tracking, Path written) implements AutoCloseable {
     /** The demo video's frame rate in its MP4. */
     public static final int DEMO_FPS = 30;
 
@@ -42,7 +41,7 @@ public record ArFrameInput(String name, ArFrameBench.Frames frames, int frameCou
         new DemoVideo(k, count).writeMp4(mp4, DEMO_FPS);
         return new ArFrameInput(count + " frames of the synthetic demo video (skinlab ar-demo's, 640x480,"
                 + " H.264 by JCodec's encoder)", () -> new VideoFileSource(mp4, DEMO_FPS), count, k,
-                TrackerConfig.defaults(DemoVideo.MARKER_METRES), true, mp4);
+                TrackerConfig.defaults(DemoVideo.MARKER_METRES), mp4);
     }
 
     /**
@@ -72,7 +71,7 @@ public record ArFrameInput(String name, ArFrameBench.Frames frames, int frameCou
                 : CameraIntrinsics.fromHorizontalFov(width, height, fovDegrees);
         String name = count + (folder ? " images of " : " frames of ") + file.getFileName() + " (" + width + "x" + height
                 + (folder ? "" : ", H.264") + ")";
-        return new ArFrameInput(name, frames, count, k, tracking, false, null);
+        return new ArFrameInput(name, frames, count, k, tracking, null);
     }
 
     @Override
