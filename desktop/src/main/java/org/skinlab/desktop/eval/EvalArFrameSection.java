@@ -267,8 +267,8 @@ final class EvalArFrameSection implements EvalSection {
                     + " stage), the draw changes by " + EvalReport.num(results, at + "/drawChangeMs") + " ms ("
                     + EvalReport.num(results, at + "/drawCpuMs") + " to " + EvalReport.num(results, at + "/drawGpuMs")
                     + ") and the stages' sum by " + EvalReport.num(results, at + "/stageMediansChangeMs") + " ms."
-                    + (results.get("softwareRenderer").asBoolean() ? " On this software rasteriser the shader runs on"
-                            + " the CPU too; on a GPU the draw would take the skinning almost for free." : ""));
+                    + (results.get("softwareRenderer").asBoolean() ? " On this software rasteriser the vertex shader"
+                            + " runs on the CPU cores too, so this is not what a GPU would make of it." : ""));
         }
     }
 }
