@@ -101,6 +101,7 @@ public final class Frame implements AutoCloseable {
     private SkinningMethod method;
     private RotationInterpolation interpolation;
     private long skinningNanos;
+    private long meshSkinningNanos;
     private boolean skinnedMesh;
 
     /**
@@ -187,7 +188,7 @@ public final class Frame implements AutoCloseable {
     }
 
     void describe(long sequence, double playbackTime, float clipTime, SkinningMethod method,
-            RotationInterpolation interpolation, boolean skinnedMesh, long skinningNanos) {
+            RotationInterpolation interpolation, boolean skinnedMesh, long skinningNanos, long meshSkinningNanos) {
         this.sequence = sequence;
         this.playbackTime = playbackTime;
         this.clipTime = clipTime;
@@ -195,6 +196,7 @@ public final class Frame implements AutoCloseable {
         this.interpolation = interpolation;
         this.skinnedMesh = skinnedMesh;
         this.skinningNanos = skinningNanos;
+        this.meshSkinningNanos = meshSkinningNanos;
     }
 
     /** Number of geometries, in {@link SkeletalAnimatedMesh#geometries()} order. */
@@ -334,6 +336,15 @@ public final class Frame implements AutoCloseable {
      */
     public long skinningNanos() {
         return skinningNanos;
+    }
+
+    /**
+     * The part of {@link #skinningNanos()} the skinning kernels took to deform the mesh (positions
+     * and normals of every geometry): 0 in a palette-only frame. The rest posed the skeleton and
+     * prepared the palette, which GPU skinning needs too.
+     */
+    public long meshSkinningNanos() {
+        return meshSkinningNanos;
     }
 
     /**

@@ -41,6 +41,7 @@ final class FrameWriter {
         // A method the shaders cannot skin is skinned here whatever the switch says (SkinningGlsl.hasCode).
         boolean cpuSkinned = s.cpuSkinning() || !SkinningGlsl.hasCode(s.method());
         long t0 = System.nanoTime();
+        long meshSkinningNanos = 0;
         skinned.pose(clipTime, s.interpolation());
         for (int g = 0; g < f.geometryCount(); g++) {
             // Dual quaternions and bone rows whatever the method: a split view may draw two methods from one frame.
@@ -50,10 +51,12 @@ final class FrameWriter {
                 f.copyRestShape(g, geometry.positionArray(), geometry.normalArray());
             }
             if (cpuSkinned) {
+                long k0 = System.nanoTime();
                 skinned.skin(g, s.method(), f.positionsForWriting(g), f.normalsForWriting(g));
+                meshSkinningNanos += System.nanoTime() - k0;
             }
         }
         long nanos = System.nanoTime() - t0;
-        f.describe(sequence, playback, clipTime, s.method(), s.interpolation(), cpuSkinned, nanos);
+        f.describe(sequence, playback, clipTime, s.method(), s.interpolation(), cpuSkinned, nanos, meshSkinningNanos);
     }
 }

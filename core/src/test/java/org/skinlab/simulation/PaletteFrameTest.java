@@ -70,6 +70,9 @@ class PaletteFrameTest {
                         e.getMessage());
                 assertThrows(IllegalStateException.class, () -> f.normals(0));
                 assertTrue(f.toString().contains("palette only"), f.toString());
+                // Posing and the palette took time; no kernel deformed a mesh.
+                assertEquals(0, f.meshSkinningNanos());
+                assertTrue(f.skinningNanos() > 0);
             }
             // Stopped mesh updates publish nothing in palette mode either.
             config.stopMeshUpdates();
@@ -84,6 +87,9 @@ class PaletteFrameTest {
                 assertTrue(f.hasSkinnedMesh());
                 assertEquals(2.0f, f.clipTime(), 1e-6f);
                 assertNull(checker.problem(f));
+                // The kernels' time is part of the step's, which also posed the skeleton.
+                assertTrue(f.meshSkinningNanos() > 0 && f.meshSkinningNanos() < f.skinningNanos(),
+                        f.meshSkinningNanos() + " of " + f.skinningNanos() + " ns");
             }
         }
     }
@@ -101,6 +107,7 @@ class PaletteFrameTest {
                 try (Frame f = mesh.acquire()) {
                     assertEquals(m, f.method());
                     assertEquals(!SkinningGlsl.hasCode(m), f.hasSkinnedMesh(), m.key());
+                    assertEquals(!SkinningGlsl.hasCode(m), f.meshSkinningNanos() > 0, m.key());
                     assertNull(checker.problem(f), m.key());
                 }
                 cpuOnly += SkinningGlsl.hasCode(m) ? 0 : 1;

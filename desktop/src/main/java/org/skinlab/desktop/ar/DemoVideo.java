@@ -1,5 +1,7 @@
 package org.skinlab.desktop.ar;
 
+import java.io.IOException;
+import java.nio.file.Path;
 import java.util.List;
 
 import org.skinlab.ar.CameraIntrinsics;
@@ -60,5 +62,18 @@ public final class DemoVideo {
     public GrayImage frame(int i) {
         SceneOptions options = SceneOptions.camera(i).withClutter(i % 4 == 0 ? 6 : 0);
         return camera.render(List.of(marker(i)), options);
+    }
+
+    /**
+     * The whole video as an MP4 file (H.264, JCodec's encoder: {@link Mp4Writer}) played at
+     * {@code fps}, so that a decoder has real work: a camera's video as {@code skinlab ar --video}
+     * and {@code skinlab bench ar-frame} read it.
+     */
+    public void writeMp4(Path file, int fps) throws IOException {
+        try (Mp4Writer mp4 = new Mp4Writer(file, intrinsics().width(), intrinsics().height(), fps)) {
+            for (int i = 0; i < frames; i++) {
+                mp4.write(frame(i));
+            }
+        }
     }
 }

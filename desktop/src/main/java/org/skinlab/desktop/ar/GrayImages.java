@@ -43,6 +43,14 @@ public final class GrayImages {
      * it is not an image, is damaged or cannot be read.
      */
     public static GrayImage read(Path file) {
+        return of(decode(file));
+    }
+
+    /**
+     * An image file decoded by ImageIO; IllegalArgumentException naming the file when it is not an
+     * image, is damaged or cannot be read.
+     */
+    public static BufferedImage decode(Path file) {
         BufferedImage image;
         try {
             image = ImageIO.read(file.toFile());
@@ -53,10 +61,18 @@ public final class GrayImages {
         if (image == null) {
             throw new IllegalArgumentException(file + ": not an image ImageIO can read");
         }
-        return of(image);
+        return image;
     }
 
-    /** The luminance of a decoded image. */
+    /**
+     * The luminance the tracker reads of a colour (0-255 each): Rec. 601's weights, rounded. The
+     * one rule for every colour camera frame on the desktop ({@link CameraImages} too).
+     */
+    static int luminance(int r, int g, int b) {
+        return (299 * r + 587 * g + 114 * b + 500) / 1000;
+    }
+
+    /** The luminance of a decoded image (an 8-bit gray image's own values). */
     public static GrayImage of(BufferedImage image) {
         int w = image.getWidth();
         int h = image.getHeight();
@@ -70,8 +86,7 @@ public final class GrayImages {
                 image.getRGB(0, y, w, 1, row, 0, w);
                 for (int x = 0; x < w; x++) {
                     int c = row[x];
-                    int r = c >> 16 & 0xFF, g = c >> 8 & 0xFF, b = c & 0xFF;
-                    pixels[y * w + x] = (byte) ((299 * r + 587 * g + 114 * b + 500) / 1000);
+                    pixels[y * w + x] = (byte) luminance(c >> 16 & 0xFF, c >> 8 & 0xFF, c & 0xFF);
                 }
             }
         }

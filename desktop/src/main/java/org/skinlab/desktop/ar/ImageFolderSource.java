@@ -1,12 +1,11 @@
 package org.skinlab.desktop.ar;
 
+import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.List;
 
-import org.skinlab.ar.GrayImage;
-
-/** The images of a folder in name order, decoded one at a time, looping. */
+/** The images of a folder in name order, decoded one at a time, looping; colour as the files hold it. */
 public final class ImageFolderSource implements FrameSource {
     private final Path dir;
     private final List<Path> files;
@@ -19,9 +18,9 @@ public final class ImageFolderSource implements FrameSource {
         this.dir = dir;
         this.files = GrayImages.list(dir);
         this.fps = fps;
-        GrayImage first = GrayImages.read(files.get(0));
-        this.width = first.width();
-        this.height = first.height();
+        BufferedImage first = GrayImages.decode(files.get(0));
+        this.width = first.getWidth();
+        this.height = first.getHeight();
     }
 
     @Override
@@ -45,15 +44,20 @@ public final class ImageFolderSource implements FrameSource {
     }
 
     @Override
-    public GrayImage next() throws IOException {
+    public int frameCount() {
+        return files.size();
+    }
+
+    @Override
+    public void next(CameraImage into) {
         Path file = files.get(index);
         index = (index + 1) % files.size();
-        GrayImage image = GrayImages.read(file);
-        if (image.width() != width || image.height() != height) {
-            throw new IllegalArgumentException(file + " is " + image.width() + "x" + image.height() + ", the folder's first image "
-                    + width + "x" + height + ": one camera, one size");
+        BufferedImage image = GrayImages.decode(file);
+        if (image.getWidth() != width || image.getHeight() != height) {
+            throw new IllegalArgumentException(file + " is " + image.getWidth() + "x" + image.getHeight()
+                    + ", the folder's first image " + width + "x" + height + ": one camera, one size");
         }
-        return image;
+        CameraImages.fill(image, into, file.toString());
     }
 
     @Override

@@ -5,8 +5,6 @@ import java.awt.image.BufferedImage;
 
 import com.github.sarxos.webcam.Webcam;
 
-import org.skinlab.ar.GrayImage;
-
 /**
  * The default webcam at 640x480 (webcam-capture; on Linux its native grabber needs libv4l2, Debian's
  * {@code libv4l-0}); a clear error when there is none.
@@ -65,12 +63,17 @@ public final class WebcamSource implements FrameSource {
     }
 
     @Override
-    public GrayImage next() {
+    public int frameCount() {
+        return 0;
+    }
+
+    @Override
+    public void next(CameraImage into) {
         BufferedImage image = webcam.getImage();
         if (image == null) {
             throw new IllegalStateException("the webcam " + webcam.getName() + " delivered no image");
         }
-        return GrayImages.of(image);
+        CameraImages.fill(image, into, "the webcam " + webcam.getName());
     }
 
     @Override

@@ -13,6 +13,7 @@ import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
 import org.skinlab.ar.CameraIntrinsics;
+import org.skinlab.ar.GrayImage;
 import org.skinlab.ar.LensDistortion;
 import org.skinlab.ar.MarkerDetection;
 import org.skinlab.ar.synthetic.PlacedMarker;
@@ -21,6 +22,8 @@ import org.skinlab.desktop.ExitCodes;
 import org.skinlab.desktop.ar.DemoVideo;
 import org.skinlab.desktop.ar.GrayImages;
 import org.skinlab.desktop.ar.IntrinsicsFile;
+import org.skinlab.desktop.ar.Mp4Writer;
+import org.skinlab.desktop.bench.ArFrameInput;
 
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
@@ -33,7 +36,7 @@ import picocli.CommandLine.Spec;
  * {@code intrinsics.json} (the camera) and {@code poses.json} (each frame's true marker pose and
  * corners, in {@code skinlab track}'s format without the time, and the marker's size), so {@code skinlab ar --images OUT --intrinsics OUT/intrinsics.json}
  * runs on any machine. With {@code --distortion} the frames are filmed through that lens (and the
- * corners are where it puts them).
+ * corners are where it puts them); with {@code --mp4} the frames are also one H.264 video.
  */
 @Command(name = "ar-demo", mixinStandardHelpOptions = true,
         description = "Write a synthetic camera video of the printed marker (PNG frames, intrinsics.json, poses.json).")
@@ -58,6 +61,10 @@ public final class ArDemoCommand implements Callable<Integer> {
                     + " intrinsics.json then has it")
     String distortion;
 
+    @Option(names = "--mp4", description = "also write the frames as demo.mp4 (H.264 through JCodec's encoder, BT.601,"
+            + " 30 fps), for skinlab ar --video and skinlab bench ar-frame --video")
+    boolean mp4;
+
     @Override
     public Integer call() throws IOException {
         CameraIntrinsics k;
@@ -81,15 +88,27 @@ public final class ArDemoCommand implements Callable<Integer> {
         ObjectNode root = mapper.createObjectNode();
         root.put("markerSizeMetres", DemoVideo.MARKER_METRES);
         ArrayNode list = root.putArray("frames");
-        for (int i = 0; i < frames; i++) {
-            String name = String.format(Locale.ROOT, "frame-%04d.png", i);
-            GrayImages.writePng(video.frame(i), out.resolve(name));
-            PlacedMarker m = video.marker(i);
-            TrackJson.addFrame(list, name, Double.NaN, List.of(new MarkerDetection(m.pattern().id(), video.corners(i),
-                    m.rotation(), m.translation(), 0)));
+        if (mp4 && (k.width() % 2 != 0 || k.height() % 2 != 0)) {
+            throw new CommandFailure(ExitCodes.USAGE, "--mp4 needs an even width and height (H.264's 4:2:0 chroma): "
+                    + size, null);
+        }
+        try (Mp4Writer writer = mp4 ? new Mp4Writer(out.resolve("demo.mp4"), k.width(), k.height(),
+                ArFrameInput.DEMO_FPS) : null) {
+            for (int i = 0; i < frames; i++) {
+                String name = String.format(Locale.ROOT, "frame-%04d.png", i);
+                GrayImage frame = video.frame(i);
+                GrayImages.writePng(frame, out.resolve(name));
+                if (writer != null) {
+                    writer.write(frame);
+                }
+                PlacedMarker m = video.marker(i);
+                TrackJson.addFrame(list, name, Double.NaN, List.of(new MarkerDetection(m.pattern().id(), video.corners(i),
+                        m.rotation(), m.translation(), 0)));
+            }
         }
         Files.writeString(out.resolve("poses.json"), mapper.writeValueAsString(root) + "\n");
-        spec.commandLine().getOut().println("wrote " + frames + " frames, intrinsics.json and poses.json to " + out);
+        spec.commandLine().getOut().println("wrote " + frames + " frames, intrinsics.json" + (mp4 ? ", demo.mp4" : "")
+                + " and poses.json to " + out);
         spec.commandLine().getOut().flush();
         return ExitCodes.OK;
     }

@@ -7,7 +7,7 @@ import picocli.CommandLine.Command;
 @Command(name = "bench", mixinStandardHelpOptions = true,
         description = "Benchmarks (measured in this process, with warm-up; compare ratios, not absolute times).",
         subcommands = {ParseBenchCommand.class, SkinningBenchCommand.class, FrameBenchCommand.class,
-                TrackBenchCommand.class})
+                TrackBenchCommand.class, ArFrameBenchCommand.class})
 public final class BenchCommand implements Runnable {
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;

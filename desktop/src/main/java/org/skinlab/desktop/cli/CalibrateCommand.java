@@ -17,6 +17,7 @@ import org.skinlab.ar.LensDistortion;
 import org.skinlab.desktop.CommandFailure;
 import org.skinlab.desktop.ExitCodes;
 import org.skinlab.desktop.ar.CameraCalibration;
+import org.skinlab.desktop.ar.CameraImage;
 import org.skinlab.desktop.ar.GrayImages;
 import org.skinlab.desktop.ar.IntrinsicsFile;
 import org.skinlab.desktop.ar.TargetDetector;
@@ -172,15 +173,16 @@ public final class CalibrateCommand implements Callable<Integer> {
         long start = System.nanoTime();
         long lastTry = 0;
         long lastHint = start;
+        CameraImage frame = new CameraImage(camera.width(), camera.height());
         try {
             while (collector.views().size() < wantedViews && System.nanoTime() - start < maxSeconds * 1_000_000_000L) {
-                GrayImage frame = camera.next();
+                camera.next(frame);
                 long now = System.nanoTime();
                 if (now - lastTry < 1_000_000_000L) {
                     continue;
                 }
                 lastTry = now;
-                ViewCollector.Offer offer = collector.offer(frame);
+                ViewCollector.Offer offer = collector.offer(frame.gray());
                 if (offer.kept()) {
                     o.println("  view " + collector.views().size() + " of " + wantedViews + " taken");
                     lastHint = now;

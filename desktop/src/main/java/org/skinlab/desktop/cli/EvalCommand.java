@@ -18,6 +18,9 @@ import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
 import org.skinlab.desktop.CommandFailure;
 import org.skinlab.desktop.ExitCodes;
+import org.skinlab.ar.MarkerDictionary;
+import org.skinlab.ar.TrackerConfig;
+import org.skinlab.desktop.bench.ArFrameInput;
 import org.skinlab.desktop.bench.BenchCorpus;
 import org.skinlab.desktop.eval.Evaluation;
 
@@ -34,7 +37,8 @@ import org.skinlab.desktop.eval.Evaluation;
                 + " over each clip, joint ring against twist, bulge against bend, largest distance between methods, the"
                 + " error of capping influences), pictures (the viewer's screenshots of each method at each asset's"
                 + " extreme pose, and the difference view), tracking (markers found and pose error per distance and"
-                + " tilt, false markers, time per frame beside BoofCV's detector), advice (what it means for AR on a"
+                + " tilt, false markers, time per frame beside BoofCV's detector), ar-frame (an AR frame end to end per stage:"
+                + " decode, track, pose, skin, draw, against 60 Hz; on --ar-video or the synthetic demo video), advice (what it means for AR on a"
                 + " phone: time against vertices, influences and joints with fitted lines; a recommendation per use"
                 + " drawn from the other sections).",
             "Run it from the repository (it reads assets/ and ../shared), under xvfb-run -a without a display (the pictures"
@@ -49,8 +53,20 @@ public final class EvalCommand implements Callable<Integer> {
 
     @Option(names = "--only", paramLabel = "SECTION", split = ",",
             description = "only these sections (comma-separated), of: load, time, crowds, quality, pictures, tracking,"
-                    + " advice")
+                    + " ar-frame, advice")
     List<String> only = new ArrayList<>();
+
+    @Option(names = "--ar-video", paramLabel = "FILE", description = "a real camera video (MP4 with H.264 that JCodec"
+            + " decodes, or a folder of frames) for the ar-frame section (default: the synthetic demo video)")
+    Path arVideo;
+
+    @Option(names = "--ar-intrinsics", paramLabel = "FILE", description = "--ar-video's camera: our JSON, OpenCV's or"
+            + " BoofCV's calibration (default: a 60 degree field of view)")
+    Path arIntrinsics;
+
+    @Option(names = "--ar-dictionary", paramLabel = "NAME", description = "--ar-video's marker dictionary (default:"
+            + " aruco_mip_36h12)")
+    String arDictionary;
 
     @Spec
     CommandSpec spec;
@@ -66,15 +82,51 @@ public final class EvalCommand implements Callable<Integer> {
         if (Files.exists(out) && !Files.isDirectory(out)) {
             throw usage("--out: not a folder: " + out);
         }
+        String dictionary = arVideo();
         PrintWriter err = spec.commandLine().getErr();
-        Evaluation.Written written = new Evaluation(sections, quick, root, out, err, SkinlabMain.class)
-                .run(spec.commandLine().getParseResult().originalArgs());
+        Evaluation evaluation = new Evaluation(sections, quick, root, out, err, SkinlabMain.class);
+        if (arVideo != null) {
+            evaluation.withArVideo(arVideo, arIntrinsics, dictionary);
+        }
+        Evaluation.Written written = evaluation.run(spec.commandLine().getParseResult().originalArgs());
         PrintWriter o = spec.commandLine().getOut();
         o.printf(Locale.ROOT, "eval: %s and %d figure%s in %s (%s)%n", "README.md, results.json",
                 written.figures, written.figures == 1 ? "" : "s", out,
                 Duration.ofSeconds(Math.round(written.seconds)).toString().substring(2).toLowerCase(Locale.ROOT));
         o.flush();
         return ExitCodes.OK;
+    }
+
+    /**
+     * Checks --ar-video and its options before anything is measured (the video's first frame is
+     * decoded, the camera read): a usage error for a missing file or an option without
+     * --ar-video, an unreadable video or camera file is status 3. Returns the dictionary's key.
+     */
+    private String arVideo() {
+        if (arVideo == null) {
+            if (arIntrinsics != null || arDictionary != null) {
+                throw usage("--ar-intrinsics and --ar-dictionary describe --ar-video, which is not given");
+            }
+            return null;
+        }
+        if (!Files.exists(arVideo)) {
+            throw usage("--ar-video: no such file or folder: " + arVideo);
+        }
+        if (arIntrinsics != null && !Files.isRegularFile(arIntrinsics)) {
+            throw usage("--ar-intrinsics: no such file: " + arIntrinsics);
+        }
+        MarkerDictionary dictionary;
+        try {
+            dictionary = arDictionary == null ? MarkerDictionary.DEFAULT : MarkerDictionary.byName(arDictionary);
+        } catch (IllegalArgumentException e) {
+            throw usage("--ar-dictionary: " + e.getMessage());
+        }
+        try {
+            ArFrameInput.file(arVideo, arIntrinsics, 60, TrackerConfig.defaults(0.1)).close();
+            return dictionary.key();
+        } catch (IllegalArgumentException | IOException e) {
+            throw new CommandFailure(ExitCodes.INVALID_FILE, "eval: " + e.getMessage(), e);
+        }
     }
 
     /** The section keys --only names; empty (all) without it. */

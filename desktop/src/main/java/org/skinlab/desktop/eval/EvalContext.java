@@ -25,6 +25,10 @@ final class EvalContext {
     private final Path cts;
     private final PrintWriter log;
     private final ViewerProcess viewer;
+    /** The real AR video the "ar-frame" section plays (null: the synthetic one), its camera and marker dictionary. */
+    private Path arVideo;
+    private Path arIntrinsics;
+    private String arDictionary;
     private ProgressBar bar;
     private JsonNode measured;
     private long sectionStart;
@@ -66,6 +70,28 @@ final class EvalContext {
 
     Path ctsPlace() {
         return root.resolve(SHARED_CTS).normalize();
+    }
+
+    /** Plays {@code video} (seen through {@code intrinsics}, or null; markers of {@code dictionary}) in "ar-frame". */
+    void useArVideo(Path video, Path intrinsics, String dictionary) {
+        this.arVideo = video;
+        this.arIntrinsics = intrinsics;
+        this.arDictionary = dictionary;
+    }
+
+    /** The real AR video, or null for the synthetic demo video. */
+    Path arVideo() {
+        return arVideo;
+    }
+
+    /** The real AR video's camera file, or null (a 60 degree guess). */
+    Path arIntrinsics() {
+        return arIntrinsics;
+    }
+
+    /** The real AR video's marker dictionary. */
+    String arDictionary() {
+        return arDictionary;
     }
 
     /** Draws the pictures by {@code skinlab view} in a child JVM. */

@@ -30,7 +30,7 @@ public final class Evaluation {
      */
     static final List<EvalSection> SECTIONS = List.of(new EvalLoadSection(), new EvalTimeSection(),
             new EvalCrowdsSection(), new EvalQualitySection(), new EvalPicturesSection(), new EvalTrackingSection(),
-            new EvalAdviceSection(), new EvalClaimsSection());
+            new EvalArFrameSection(), new EvalAdviceSection(), new EvalClaimsSection());
 
     private final List<EvalSection> sections;
     private final EvalContext context;
@@ -50,6 +50,16 @@ public final class Evaluation {
         this.context = new EvalContext(quick, root, err, new ViewerProcess(skinlabMain));
         this.out = out;
         this.err = err;
+    }
+
+    /**
+     * The real video (an MP4 JCodec decodes, or a folder of frames) that the "ar-frame" section
+     * times, seen through {@code intrinsics} (or null), its markers of {@code dictionary}; without
+     * this call, the synthetic demo video.
+     */
+    public Evaluation withArVideo(Path video, Path intrinsics, String dictionary) {
+        context.useArVideo(video, intrinsics, dictionary);
+        return this;
     }
 
     /** The sections' keys, in report order. */

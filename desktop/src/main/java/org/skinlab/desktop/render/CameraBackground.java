@@ -8,12 +8,11 @@ import java.nio.FloatBuffer;
 import org.joml.Matrix4fc;
 import org.lwjgl.system.MemoryUtil;
 import org.skinlab.ar.CameraIntrinsics;
-import org.skinlab.ar.GrayImage;
 import org.skinlab.ar.LensGlsl;
 
 /**
- * The camera image behind the AR scene ({@code skinlab ar}): an 8-bit texture refilled from each
- * new gray frame (one reused upload buffer: nothing allocated per frame), drawn as a quad through
+ * The camera image behind the AR scene ({@code skinlab ar}): an 8-bit RGB texture refilled from
+ * each new colour frame (one reused upload buffer: nothing allocated per frame), drawn as a quad through
  * {@code ArCamera.imageToViewport}, so it lines up with the projection the model is drawn with.
  * Through a distorted camera the quad shows the ideal pinhole image: its fragment shader samples
  * the frame where the lens put each pixel's ray ({@link LensGlsl}), so straight edges are straight
@@ -68,27 +67,29 @@ public final class CameraBackground implements AutoCloseable {
         glBindTexture(GL_TEXTURE_2D, 0);
     }
 
-    /** Uploads a camera frame (its size may change: the texture follows). */
-    public void upload(GrayImage image) {
-        int w = image.width();
-        int h = image.height();
-        if (upload.capacity() < w * h) {
+    /**
+     * Uploads a camera frame of {@code w x h} pixels, {@code rgb} holding R, G, B bytes per pixel,
+     * rows top first, no padding (its size may change: the texture follows).
+     */
+    public void upload(int w, int h, byte[] rgb) {
+        int bytes = 3 * w * h;
+        if (rgb.length < bytes) {
+            throw new IllegalArgumentException(w + "x" + h + " RGB needs " + bytes + " bytes, has " + rgb.length);
+        }
+        if (upload.capacity() < bytes) {
             MemoryUtil.memFree(upload);
-            upload = MemoryUtil.memAlloc(w * h);
+            upload = MemoryUtil.memAlloc(bytes);
         }
         upload.clear();
-        for (int y = 0; y < h; y++) {
-            upload.put(image.pixels(), y * image.rowStride(), w);
-        }
-        upload.flip();
+        upload.put(rgb, 0, bytes).flip();
         glBindTexture(GL_TEXTURE_2D, texture);
         glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
         if (w != width || h != height) {
-            glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, w, h, 0, GL_RED, GL_UNSIGNED_BYTE, upload);
+            glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB8, w, h, 0, GL_RGB, GL_UNSIGNED_BYTE, upload);
             width = w;
             height = h;
         } else {
-            glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, w, h, GL_RED, GL_UNSIGNED_BYTE, upload);
+            glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, w, h, GL_RGB, GL_UNSIGNED_BYTE, upload);
         }
         glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
         glBindTexture(GL_TEXTURE_2D, 0);

@@ -60,6 +60,58 @@ class ArWindowTest {
     }
 
     /**
+     * The camera image in colour: a 320x240 frame of 8x8-pixel blocks of random colours over a
+     * gradient, played through {@code skinlab ar --images} with the model off (following marker 99)
+     * at the frame's own size, so that each screen pixel samples its image pixel's centre. Every
+     * pixel of the picture, block edges included, is the frame's colour within 2 levels per
+     * channel (the lens shader's float arithmetic may move a sample by a hair, never by a pixel:
+     * a half-pixel shift would blend neighbouring blocks and miss by tens of levels). Its luminance
+     * alone, the old gray background, misses the saturated colours by over 100 levels.
+     */
+    @Test
+    void theBackgroundShowsTheFramesColours(@TempDir Path dir) throws Exception {
+        int w = 320;
+        int h = 240;
+        BufferedImage frame = new BufferedImage(w, h, BufferedImage.TYPE_3BYTE_BGR);
+        java.util.Random random = new java.util.Random(42);
+        int[] blocks = new int[(w / 8) * (h / 8)];
+        for (int i = 0; i < blocks.length; i++) {
+            blocks[i] = random.nextInt(0x1000000);
+        }
+        for (int y = 0; y < h; y++) {
+            for (int x = 0; x < w; x++) {
+                int b = blocks[(y / 8) * (w / 8) + x / 8];
+                // Every other block a smooth gradient, the rest flat random colours.
+                int c = ((x / 8 + y / 8) % 2 == 0) ? (x * 255 / w) << 16 | (y * 255 / h) << 8 | 128 : b;
+                frame.setRGB(x, y, c);
+            }
+        }
+        Path frames = Files.createDirectories(dir.resolve("frames"));
+        ImageIO.write(frame, "png", frames.resolve("colour.png").toFile());
+        Path shot = dir.resolve("shot.png");
+        ViewerWindowTest.Run r = ViewerWindowTest.skinlab("ar", "--images", frames.toString(), "--id", "99", "--hide-ui",
+                "--size", w + "x" + h, "--screenshot", shot.toString());
+        assertEquals(0, r.status(), r.toString());
+        BufferedImage seen = ImageIO.read(shot.toFile());
+        assertEquals(w, seen.getWidth());
+        int worst = 0;
+        int grayWorst = 0;
+        for (int y = 0; y < h; y++) {
+            for (int x = 0; x < w; x++) {
+                int want = frame.getRGB(x, y);
+                int got = seen.getRGB(x, y);
+                int gray = (299 * (want >> 16 & 0xFF) + 587 * (want >> 8 & 0xFF) + 114 * (want & 0xFF) + 500) / 1000;
+                for (int shift = 0; shift <= 16; shift += 8) {
+                    worst = Math.max(worst, Math.abs((want >> shift & 0xFF) - (got >> shift & 0xFF)));
+                    grayWorst = Math.max(grayWorst, Math.abs((want >> shift & 0xFF) - gray));
+                }
+            }
+        }
+        assertTrue(worst <= 2, "the background's colours are the frame's: worst channel " + worst + " levels off");
+        assertTrue(grayWorst > 100, "the frame is colourful enough to tell: " + grayWorst);
+    }
+
+    /**
      * The model drawn in {@code with} (against {@code without}, the same frame with the model off)
      * stands on the marker: over 200 pixels change, none outside the screen box of |x|, |y| <= 0.1 m,
      * 0 <= z <= 0.155 m over the marker, and one within 12 px of its centre (the feet), projected by

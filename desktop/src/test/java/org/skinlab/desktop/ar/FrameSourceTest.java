@@ -38,9 +38,12 @@ class FrameSourceTest {
         try (ImageFolderSource s = new ImageFolderSource(dir, 30)) {
             assertEquals(32, s.width());
             assertEquals(24, s.height());
+            CameraImage frame = new CameraImage(32, 24);
             int[] expected = {10, 20, 30, 10};
             for (int v : expected) {
-                assertEquals(v, s.next().get(0, 0));
+                s.next(frame);
+                assertEquals(v, frame.gray().get(0, 0));
+                assertEquals(v, frame.rgb()[0] & 0xFF, "a gray file's colour is its gray");
             }
         }
     }
@@ -53,10 +56,11 @@ class FrameSourceTest {
         GrayImages.writePng(flat(16, 24, 0), dir.resolve("b.png"));
         Files.writeString(dir.resolve("c.png"), "not a png");
         try (ImageFolderSource s = new ImageFolderSource(dir, 30)) {
-            s.next();
-            IllegalArgumentException size = assertThrows(IllegalArgumentException.class, s::next);
+            CameraImage frame = new CameraImage(32, 24);
+            s.next(frame);
+            IllegalArgumentException size = assertThrows(IllegalArgumentException.class, () -> s.next(frame));
             assertTrue(size.getMessage().contains("b.png") && size.getMessage().contains("16x24"), size.getMessage());
-            IllegalArgumentException broken = assertThrows(IllegalArgumentException.class, s::next);
+            IllegalArgumentException broken = assertThrows(IllegalArgumentException.class, () -> s.next(frame));
             assertTrue(broken.getMessage().contains("c.png"), broken.getMessage());
         }
     }
@@ -77,8 +81,10 @@ class FrameSourceTest {
             assertEquals(64, s.width());
             assertEquals(48, s.height());
             int[] seen = new int[4];
+            CameraImage frame = new CameraImage(64, 48);
             for (int i = 0; i < 4; i++) {
-                seen[i] = s.next().get(32, 24);
+                s.next(frame);
+                seen[i] = frame.gray().get(32, 24);
                 // RGB to YUV (video range) and H.264 move a gray level by up to ~10%.
                 assertEquals(levels[i % 3], seen[i], 0.12 * levels[i % 3] + 8, "frame " + i);
             }
@@ -161,20 +167,71 @@ class FrameSourceTest {
         assertTrue(lines[0].startsWith("skinlab: ") && lines[0].contains("webcam"), lines[0]);
     }
 
+    /**
+     * The feed at 240 fps while the test thread takes shots as a window would: every shot's picture,
+     * colour and luminance, is whole and is the frame its number says (frame n is file (n - 1) mod 6),
+     * and its pose is that frame's, for a few hundred shots taken while the feed refills the other
+     * two images.
+     */
     @Test
     void theFeedPublishesEachImageWithItsOwnPose(@TempDir Path dir) throws Exception {
         CameraIntrinsics k = CameraIntrinsics.fromHorizontalFov(320, 240, 60);
         DemoVideo video = new DemoVideo(k, 6);
+        GrayImage[] frames = new GrayImage[6];
         for (int i = 0; i < 6; i++) {
-            GrayImages.writePng(video.frame(i), dir.resolve(String.format("f%02d.png", i)));
+            frames[i] = video.frame(i);
+            GrayImages.writePng(frames[i], dir.resolve(String.format("f%02d.png", i)));
         }
         org.skinlab.ar.ArSession session = org.skinlab.ar.ArSession.of(new org.skinlab.ar.FiducialTracker(
                 org.skinlab.ar.TrackerConfig.defaults(0.1), k));
-        try (ArFeed feed = new ArFeed(new ImageFolderSource(dir, 60), session)) {
+        try (ArFeed feed = new ArFeed(new ImageFolderSource(dir, 240), session)) {
             assertTrue(feed.awaitFirst(10_000), "a first frame");
-            ArFeed.Shot shot = feed.latest();
-            assertTrue(shot.pose().visible(), "the demo marker is tracked");
-            assertEquals(shot.number(), shot.pose().frameNumber(), "the shot's image and pose are one frame's");
+            long last = 0;
+            int distinct = 0;
+            long end = System.nanoTime() + 3_000_000_000L;
+            while (distinct < 200 && System.nanoTime() < end) {
+                ArFeed.Shot shot = feed.newest();
+                if (shot.number() == last) {
+                    Thread.onSpinWait();
+                    continue;
+                }
+                assertTrue(shot.number() > last, "shots only move forward");
+                last = shot.number();
+                distinct++;
+                assertTrue(shot.pose().visible(), "the demo marker is tracked");
+                assertEquals(shot.number(), shot.pose().frameNumber(), "the shot's image and pose are one frame's");
+                GrayImage expected = frames[(int) ((shot.number() - 1) % 6)];
+                byte[] rgb = shot.image().rgb();
+                for (int i = 0; i < expected.pixels().length; i++) {
+                    if (shot.image().gray().pixels()[i] != expected.pixels()[i] || rgb[3 * i] != expected.pixels()[i]
+                            || rgb[3 * i + 2] != expected.pixels()[i]) {
+                        throw new AssertionError("shot " + shot.number() + " differs from its frame at pixel " + i);
+                    }
+                }
+            }
+            assertTrue(distinct >= 20, "shots taken: " + distinct);
+        }
+    }
+
+    @Test
+    void aSecondThreadTakingShotsIsRefused(@TempDir Path dir) throws Exception {
+        GrayImages.writePng(flat(32, 24, 50), dir.resolve("a.png"));
+        org.skinlab.ar.ArSession session = org.skinlab.ar.ArSession.of(new org.skinlab.ar.FiducialTracker(
+                org.skinlab.ar.TrackerConfig.defaults(0.1), CameraIntrinsics.fromHorizontalFov(32, 24, 60)));
+        try (ArFeed feed = new ArFeed(new ImageFolderSource(dir, 60), session)) {
+            assertTrue(feed.awaitFirst(10_000));
+            assertEquals(50, feed.newest().image().gray().get(0, 0));
+            Throwable[] thrown = new Throwable[1];
+            Thread other = new Thread(() -> {
+                try {
+                    feed.newest();
+                } catch (IllegalStateException e) {
+                    thrown[0] = e;
+                }
+            }, "second-window");
+            other.start();
+            other.join();
+            assertTrue(thrown[0] != null && thrown[0].getMessage().contains("second-window"), String.valueOf(thrown[0]));
         }
     }
 }

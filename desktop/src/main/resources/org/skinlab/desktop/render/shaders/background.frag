@@ -1,7 +1,7 @@
 #version 330 core
 // The camera image as the ideal pinhole image the model is projected into (lens.glsl): each
 // fragment samples the camera's frame where the lens put its ray; beyond the frame, black.
-uniform sampler2D uImage;   // one 8-bit channel: the camera's luminance
+uniform sampler2D uImage;   // the camera's colour, 8-bit RGB
 uniform vec2 uSize;         // the camera image in pixels
 uniform vec4 uPinhole;      // fx, fy, cx, cy
 uniform vec3 uRadial;       // k1, k2, k3
@@ -17,6 +17,5 @@ void main() {
         color = vec4(0.0, 0.0, 0.0, 1.0);
         return;
     }
-    float v = texture(uImage, st).r;
-    color = vec4(v, v, v, 1.0);
+    color = vec4(texture(uImage, st).rgb, 1.0);
 }
