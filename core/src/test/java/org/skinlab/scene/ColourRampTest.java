@@ -68,7 +68,8 @@ class ColourRampTest {
         int found = 0;
         while (m.find()) {
             int i = Integer.parseInt(m.group(1));
-            float[] written = {Float.parseFloat(m.group(2)), Float.parseFloat(m.group(3)), Float.parseFloat(m.group(4))};
+            float[] written = {Float.parseFloat(m.group(2)), Float.parseFloat(m.group(3)),
+                Float.parseFloat(m.group(4))};
             // Written exactly: the literal parses to the very float the Java side mixes.
             assertArrayEquals(rgb(i / 4.0), written, 0f, "c" + i);
             found++;

@@ -62,8 +62,8 @@ class BindPoseFrameTest {
             float[] posed = frame.positions(g);
             for (int p = 0; p < m.positionCount(); p++) {
                 int point = geometry.pointOfPosition(p);
-                double d = Math.sqrt(sq(posed[3 * point] - expected[3 * p]) + sq(posed[3 * point + 1] - expected[3 * p + 1])
-                        + sq(posed[3 * point + 2] - expected[3 * p + 2]));
+                double d = Math.sqrt(sq(posed[3 * point] - expected[3 * p])
+                        + sq(posed[3 * point + 1] - expected[3 * p + 1]) + sq(posed[3 * point + 2] - expected[3 * p + 2]));
                 worst = Math.max(worst, d / size);
             }
         }

@@ -43,7 +43,8 @@ class LargestDifferenceTest {
         assertTrue(rest.relative() < 1e-6, "at rest: " + rest.relative());
         Thread.currentThread().interrupt();
         try {
-            LargestDifference stopped = LargestDifference.over(model, model.clips().get(0), RotationInterpolation.SLERP);
+            LargestDifference stopped = LargestDifference.over(model, model.clips().get(0),
+                    RotationInterpolation.SLERP);
             assertEquals(0, stopped.samples());
         } finally {
             Thread.interrupted();
