@@ -28,6 +28,12 @@ for m in lbs dqs cor; do
     --script docs/images/methods-bend.txt
   mv docs/images/methods-bend.png "docs/images/methods-bend-$m.png"
 done
+# The checker view: LBS and DQS at 172 degrees of twist, and the bend cylinder's fold at 170 degrees
+# from its side and above (docs/desktop.md).
+run "$skinlab" view assets/cylinders/cylinder-twist-high.dae --time 4 --method lbs --split dqs --view checker \
+  --hide-ui --size 720x480 --screenshot docs/images/checker.png
+run "$skinlab" view assets/cylinders/cylinder-bend.dae --time 4 --yaw 90 --pitch 40 --method lbs --split dqs \
+  --view checker --hide-ui --size 720x400 --screenshot docs/images/bend-checker-pitch.png
 # Bulge-free DQS against DQS on the bend cylinder at 90 and 170 degrees (docs/skinning.md).
 for m in dqs bfdqs; do
   run "$skinlab" view assets/cylinders/cylinder-bend.dae --method "$m" --hide-ui --size 360x540 \

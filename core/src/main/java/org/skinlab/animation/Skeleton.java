@@ -141,6 +141,16 @@ public final class Skeleton {
      * {@link TransformElement#multiply}.
      */
     public void evaluate(Pose pose) {
+        evaluate(pose, null, null);
+    }
+
+    /**
+     * As {@link #evaluate(Pose)}, except that each node {@code i} with {@code given[i]} takes
+     * {@code givenWorlds[16 i ..]} (column-major) as its world matrix instead of its parent's times
+     * its own transforms; the nodes below it build on that ({@link BindPose}). Null arrays give
+     * no node.
+     */
+    void evaluate(Pose pose, boolean[] given, float[] givenWorlds) {
         float[] values = pose.values();
         float[] world = pose.worldArray();
         Matrix4f local = pose.local;
@@ -148,6 +158,10 @@ public final class Skeleton {
         for (int i = 0; i < parents.length; i++) {
             int w = 16 * i;
             int p = parents[i];
+            if (given != null && given[i]) {
+                System.arraycopy(givenWorlds, w, world, w, 16);
+                continue;
+            }
             if (singleMatrix[i]) {
                 // The values are the local matrix, row-major (bottom row taken as 0 0 0 1).
                 int o = valueOffsets[elementStart[i]];

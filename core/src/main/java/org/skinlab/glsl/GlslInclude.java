@@ -8,14 +8,17 @@ import java.nio.charset.StandardCharsets;
 /**
  * One GLSL file in core's resources that shaders pull in with an {@code #include "name"} line
  * alone on its line (GLSL has no includes; the desktop's and the Android app's shader texts are
- * expanded before they are compiled). Plain text: no GL here. A leaf package, so that every
- * package holding shader formulas ({@code skinning}, {@code ar}) can use it.
+ * expanded before they are compiled), or one text made in Java under such a name
+ * ({@link #generated}: constants whose one home is a Java class). Plain text: no GL here. A leaf
+ * package, so that every package holding shader formulas ({@code skinning}, {@code ar}) can use it.
  */
 public final class GlslInclude {
     private final String name;
     private final String resource;
     private final String what;
     private final String line;
+    /** The text of a {@link #generated} include; null for a resource. */
+    private final String generatedText;
 
     /**
      * @param resource the file's absolute classpath name, e.g. {@code /org/skinlab/ar/lens.glsl};
@@ -23,13 +26,35 @@ public final class GlslInclude {
      * @param what     what the file holds, for error messages, e.g. "the lens shader's formulas"
      */
     public GlslInclude(String resource, String what) {
+        this(checkedResource(resource), resource.substring(resource.lastIndexOf('/') + 1), what, null);
+    }
+
+    private GlslInclude(String resource, String name, String what, String generatedText) {
+        this.resource = resource;
+        this.name = name;
+        this.what = what;
+        this.line = "#include \"" + name + "\"";
+        this.generatedText = generatedText;
+    }
+
+    private static String checkedResource(String resource) {
         if (!resource.startsWith("/") || resource.endsWith("/")) {
             throw new IllegalArgumentException("not an absolute resource file name: " + resource);
         }
-        this.resource = resource;
-        this.name = resource.substring(resource.lastIndexOf('/') + 1);
-        this.what = what;
-        this.line = "#include \"" + name + "\"";
+        return resource;
+    }
+
+    /**
+     * An include whose text is given rather than read: GLSL generated from a Java definition, so
+     * that a shader and Java code (a legend, a test) read the same numbers from one place.
+     *
+     * @param name the name the include line quotes, e.g. {@code colour-ramp.glsl}
+     */
+    public static GlslInclude generated(String name, String text) {
+        if (name.isEmpty() || name.contains("/") || name.contains("\"")) {
+            throw new IllegalArgumentException("not an include name: " + name);
+        }
+        return new GlslInclude(null, name, name, text);
     }
 
     /** The line of a shader that {@link #expand} replaces with the file's text. */
@@ -68,8 +93,14 @@ public final class GlslInclude {
         return -1;
     }
 
-    /** The file's text, read from the resource on each call (once per program a renderer builds). */
+    /**
+     * The file's text, read from the resource on each call (once per program a renderer builds),
+     * or the generated text.
+     */
     public String text() {
+        if (generatedText != null) {
+            return generatedText;
+        }
         // Read by hand: InputStream.readAllBytes needs Android 13, and the app runs from Android 8.
         try (InputStream in = GlslInclude.class.getResourceAsStream(resource)) {
             if (in == null) {

@@ -50,16 +50,19 @@ public final class AnimationConfig {
      *                           only, for a renderer that skins on the GPU (palette-only mode)
      * @param followCamera       whether the presenter turns the model toward the camera (AR app)
      * @param wrapMode           what playback does at the clip's ends
+     * @param bindPose           whether frames show the bind pose ({@code SkinnedModel.poseBind}:
+     *                           every joint at its bind frame) instead of the clip at the playback
+     *                           time, which keeps running underneath
      */
     public record Settings(double speed, SkinningMethod method, RotationInterpolation interpolation,
             boolean animationRunning, boolean meshUpdatesRunning, boolean cpuSkinning, boolean followCamera,
-            WrapMode wrapMode) {
+            WrapMode wrapMode, boolean bindPose) {
         /**
          * Speed 1, LBS, SLERP, animation and mesh updates running, skinned on the CPU, no camera
-         * following, looping.
+         * following, looping, the clip (not the bind pose) shown.
          */
         public static final Settings DEFAULT = new Settings(1.0, SkinningMethod.LBS, RotationInterpolation.SLERP,
-                true, true, true, false, WrapMode.LOOP);
+                true, true, true, false, WrapMode.LOOP, false);
 
         public Settings {
             Objects.requireNonNull(method, "method");
@@ -74,42 +77,47 @@ public final class AnimationConfig {
 
         public Settings withSpeed(double speed) {
             return new Settings(speed, method, interpolation, animationRunning, meshUpdatesRunning, cpuSkinning,
-                    followCamera, wrapMode);
+                    followCamera, wrapMode, bindPose);
         }
 
         public Settings withMethod(SkinningMethod method) {
             return new Settings(speed, method, interpolation, animationRunning, meshUpdatesRunning, cpuSkinning,
-                    followCamera, wrapMode);
+                    followCamera, wrapMode, bindPose);
         }
 
         public Settings withInterpolation(RotationInterpolation interpolation) {
             return new Settings(speed, method, interpolation, animationRunning, meshUpdatesRunning, cpuSkinning,
-                    followCamera, wrapMode);
+                    followCamera, wrapMode, bindPose);
         }
 
         public Settings withAnimationRunning(boolean animationRunning) {
             return new Settings(speed, method, interpolation, animationRunning, meshUpdatesRunning, cpuSkinning,
-                    followCamera, wrapMode);
+                    followCamera, wrapMode, bindPose);
         }
 
         public Settings withMeshUpdatesRunning(boolean meshUpdatesRunning) {
             return new Settings(speed, method, interpolation, animationRunning, meshUpdatesRunning, cpuSkinning,
-                    followCamera, wrapMode);
+                    followCamera, wrapMode, bindPose);
         }
 
         public Settings withCpuSkinning(boolean cpuSkinning) {
             return new Settings(speed, method, interpolation, animationRunning, meshUpdatesRunning, cpuSkinning,
-                    followCamera, wrapMode);
+                    followCamera, wrapMode, bindPose);
         }
 
         public Settings withFollowCamera(boolean followCamera) {
             return new Settings(speed, method, interpolation, animationRunning, meshUpdatesRunning, cpuSkinning,
-                    followCamera, wrapMode);
+                    followCamera, wrapMode, bindPose);
         }
 
         public Settings withWrapMode(WrapMode wrapMode) {
             return new Settings(speed, method, interpolation, animationRunning, meshUpdatesRunning, cpuSkinning,
-                    followCamera, wrapMode);
+                    followCamera, wrapMode, bindPose);
+        }
+
+        public Settings withBindPose(boolean bindPose) {
+            return new Settings(speed, method, interpolation, animationRunning, meshUpdatesRunning, cpuSkinning,
+                    followCamera, wrapMode, bindPose);
         }
     }
 
@@ -277,6 +285,19 @@ public final class AnimationConfig {
     public void setWrapMode(WrapMode mode) {
         Objects.requireNonNull(mode, "mode");
         update(s -> s.withWrapMode(mode));
+    }
+
+    public boolean isBindPose() {
+        return settings().bindPose();
+    }
+
+    /**
+     * Whether steps pose the model in its bind pose (every joint at its bind frame: the skins'
+     * rest shapes) instead of the clip; the playback time goes on as before. Takes effect from the
+     * next step.
+     */
+    public void setBindPose(boolean bindPose) {
+        update(s -> s.withBindPose(bindPose));
     }
 
     @Override

@@ -34,7 +34,8 @@ final class FrameWriter {
 
     /**
      * Poses the model at {@code playback} (seconds since the clip's start, brought into the clip as
-     * {@code s.wrapMode()} says) and fills {@code f} as step {@code sequence} under {@code s}.
+     * {@code s.wrapMode()} says), or in its bind pose when {@code s.bindPose()}, and fills
+     * {@code f} as step {@code sequence} under {@code s}.
      */
     void write(Frame f, double playback, AnimationConfig.Settings s, long sequence) {
         float clipTime = skinned.sampler().clipTime(playback, s.wrapMode());
@@ -42,7 +43,11 @@ final class FrameWriter {
         boolean cpuSkinned = s.cpuSkinning() || !SkinningGlsl.hasCode(s.method());
         long t0 = System.nanoTime();
         long meshSkinningNanos = 0;
-        skinned.pose(clipTime, s.interpolation());
+        if (s.bindPose()) {
+            skinned.poseBind();
+        } else {
+            skinned.pose(clipTime, s.interpolation());
+        }
         for (int g = 0; g < f.geometryCount(); g++) {
             // Dual quaternions and bone rows whatever the method: a split view may draw two methods from one frame.
             f.copyPalette(g, skinned.prepareBones(g));

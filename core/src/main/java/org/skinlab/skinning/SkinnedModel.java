@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 
 import org.skinlab.animation.AnimationSampler;
+import org.skinlab.animation.BindPose;
 import org.skinlab.animation.MorphWeightSampler;
 import org.skinlab.animation.Pose;
 import org.skinlab.animation.RotationInterpolation;
@@ -29,6 +30,7 @@ public final class SkinnedModel {
     private final Model model;
     private final Skeleton skeleton;
     private final AnimationSampler sampler;
+    private final BindPose bindPose;
     private final Pose pose;
     private final List<SkinnedGeometry> geometries;
     private final JointPalette[] palettes;
@@ -39,6 +41,8 @@ public final class SkinnedModel {
     private final MorphWeightSampler morphSampler;
     /** Per geometry, its morph's weights in the current pose where they animate, else null. */
     private final float[][] morphWeights;
+    /** Per geometry, its morph's weights as the file gives them where they animate (the bind pose's), else null. */
+    private final float[][] fileMorphWeights;
     /** Per geometry, its per-frame rest shape where its weights animate, else null. */
     private final MorphedRestShape[] morphed;
 
@@ -51,9 +55,11 @@ public final class SkinnedModel {
         this.normals = normals;
         this.skeleton = Skeleton.of(model);
         this.sampler = clip == null ? AnimationSampler.rest(skeleton) : new AnimationSampler(skeleton, clip);
+        this.bindPose = BindPose.of(model);
         this.pose = skeleton.newPose();
         this.morphSampler = new MorphWeightSampler(model, clip);
         this.morphWeights = morphSampler.newWeights();
+        this.fileMorphWeights = morphSampler.newWeights();
         this.morphed = new MorphedRestShape[model.instances().size()];
         List<SkinnedGeometry> list = new ArrayList<>();
         for (MeshInstance instance : model.instances()) {
@@ -94,9 +100,11 @@ public final class SkinnedModel {
         this.normals = template.normals;
         this.skeleton = template.skeleton;
         this.sampler = template.sampler;
+        this.bindPose = template.bindPose;
         this.pose = skeleton.newPose();
         this.morphSampler = template.morphSampler;
         this.morphWeights = morphSampler.newWeights();
+        this.fileMorphWeights = template.fileMorphWeights;
         this.morphed = new MorphedRestShape[template.morphed.length];
         List<SkinnedGeometry> list = new ArrayList<>(template.geometries);
         int n = list.size();
@@ -226,17 +234,40 @@ public final class SkinnedModel {
         skeleton.evaluate(pose);
         if (morphSampler.animatesAny()) {
             morphSampler.sample(clipTime, morphWeights);
-            for (int g = 0; g < morphed.length; g++) {
-                if (morphed[g] != null) {
-                    morphed[g].apply(morphWeights[g]);
-                    for (Skinner s : skinners[g]) {
-                        if (s != null) {
-                            s.restShapeChanged();
-                        }
+            morphRestShapes(morphWeights);
+        }
+        fillPalettes();
+    }
+
+    /**
+     * Poses the model in its bind pose ({@link BindPose}: every joint at the frame its inverse
+     * bind matrix implies, whatever the clip), with the file's morph weights, and fills every
+     * palette: each skinned mesh then deforms to its bind shape.
+     */
+    public void poseBind() {
+        bindPose.apply(skeleton, pose);
+        if (morphSampler.animatesAny()) {
+            morphRestShapes(fileMorphWeights);
+        }
+        fillPalettes();
+    }
+
+    /** Morphs the rest shape of every mesh whose weights the clip animates, to {@code weights}. */
+    private void morphRestShapes(float[][] weights) {
+        for (int g = 0; g < morphed.length; g++) {
+            if (morphed[g] != null) {
+                morphed[g].apply(weights[g]);
+                for (Skinner s : skinners[g]) {
+                    if (s != null) {
+                        s.restShapeChanged();
                     }
                 }
             }
         }
+    }
+
+    /** Every geometry's skinning matrices from the pose just evaluated. */
+    private void fillPalettes() {
         for (int g = 0; g < palettes.length; g++) {
             SkinnedGeometry geometry = geometries.get(g);
             skeleton.skinningMatrices(pose, geometry.jointNodeArray(), geometry.bindMatrixArray(),

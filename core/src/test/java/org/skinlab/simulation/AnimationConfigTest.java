@@ -66,9 +66,11 @@ class AnimationConfigTest {
         c.setFollowCamera(true);
         c.setWrapMode(WrapMode.CLAMP);
         c.setCpuSkinning(false);
+        c.setBindPose(true);
         assertEquals(new AnimationConfig.Settings(1.0, SkinningMethod.DQS, RotationInterpolation.LERP, false, false,
-                false, true, WrapMode.CLAMP), c.settings());
+                false, true, WrapMode.CLAMP, true), c.settings());
         assertFalse(c.isCpuSkinning());
+        assertTrue(c.isBindPose());
         // Every method in the enum's order, then LBS again.
         SkinningMethod[] all = SkinningMethod.values();
         for (int i = 2; i <= all.length; i++) {

@@ -132,7 +132,7 @@ class WholeTurnSkinningTest {
 
     /** The joint's numbers (JointArtifacts) at 90, 165, 180, 195, 270 and 360 degrees, for docs and issues. */
     private static void printArtifacts(String asset, SkinnedModel skinned, SkinnedGeometry g, int lower, int upper) {
-        JointArtifacts artifacts = new JointArtifacts(g, upper, lower);
+        JointArtifacts artifacts = new JointArtifacts(RestPose.of(skinned), 0, upper, lower);
         assertTrue(artifacts.regionSize() > 0, "a joint region");
         for (float t : new float[] {1.5f, 2.75f, 3f, 3.25f, 4.5f, 6f}) {
             skinned.pose(t, RotationInterpolation.SLERP);

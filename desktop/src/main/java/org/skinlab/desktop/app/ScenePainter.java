@@ -137,7 +137,7 @@ final class ScenePainter implements AutoCloseable {
         }
         difference.measure(frame);
         info.maxDifference = difference.maxRelative();
-        info.differenceFull = DrawSettings.DIFFERENCE_FULL;
+        info.differenceFull = viewer.differenceFull();
         info.lbsVolume = difference.lbsVolume();
         info.dqsVolume = difference.dqsVolume();
         boolean cpuFrame = frame.hasSkinnedMesh();
@@ -193,9 +193,10 @@ final class ScenePainter implements AutoCloseable {
         draw.method = method;
         draw.view = viewer.settings().drawView();
         draw.selectedNode = viewer.selectedJointNode();
-        // Distances in the shader are in the document's units, as the probe's size is.
-        draw.scalarFull = draw.view == DrawSettings.View.DIFFERENCE
-                ? (float) (DrawSettings.DIFFERENCE_FULL * difference.size()) : 1f;
+        // Distances in the shader are in the document's units, as the probe's size is; so is the checker.
+        draw.scalarFull = draw.view == DrawSettings.View.DIFFERENCE ? (float) (info.differenceFull * difference.size())
+                : 1f;
+        draw.checkerCell = (float) Math.max(1e-9, difference.size() / DrawSettings.CHECKER_SQUARES);
         draw.instances = instances;
         draw.gridColumns = columns;
         draw.spacing = shown.framing().gridSpacing();

@@ -12,6 +12,7 @@ import java.time.format.DateTimeFormatter;
 
 import org.lwjgl.system.MemoryUtil;
 import org.skinlab.desktop.ExitCodes;
+import org.skinlab.desktop.render.DrawSettings;
 import org.skinlab.desktop.render.GlDebugLog;
 import org.skinlab.desktop.render.GlWindow;
 import org.skinlab.desktop.render.Screenshot;
@@ -34,6 +35,8 @@ import org.skinlab.simulation.Frame;
  */
 public final class SkinlabApp implements AutoCloseable {
     private static final float[] BACKGROUND = {0.17f, 0.18f, 0.21f};
+    /** How long a picture waits for the auto difference scale's measure of the clip, at most. */
+    private static final long AUTO_SCALE_SECONDS = 600;
 
     private final GlWindow window;
     private final PrintWriter out;
@@ -62,12 +65,15 @@ public final class SkinlabApp implements AutoCloseable {
         config.setMethod(options.method());
         config.setInterpolation(options.interpolation());
         config.setCpuSkinning(!options.gpuSkinning());
+        config.setBindPose(options.bindPose());
         if (options.time() != null) {
             config.stopAnimation();
         }
         viewer = new Viewer(ModelLibrary.find(), config, !options.headless());
         viewer.camera().setHomeYaw((float) Math.toRadians(options.yawDegrees()));
+        viewer.camera().setHomePitch((float) Math.toRadians(options.pitchDegrees()));
         viewer.settings().setView(options.view());
+        viewer.settings().setDifferenceScale(options.differenceScale());
         viewer.settings().setSplit(options.splitMethod() != null);
         debugLog = options.glDebug() ? GlDebugLog.install(window.capabilities()) : null;
         if (options.glDebug() && debugLog == null) {
@@ -140,6 +146,9 @@ public final class SkinlabApp implements AutoCloseable {
             return ExitCodes.INVALID_FILE;
         }
         LoadedModel model = viewer.current();
+        if (options.view() == DrawSettings.View.DIFFERENCE) {
+            viewer.awaitDifferenceScale(AUTO_SCALE_SECONDS);
+        }
         String noFrame = ar == null ? null : ar.awaitCameraFrame();
         if (noFrame != null) {
             err.println("skinlab: " + noFrame);

@@ -22,6 +22,7 @@ import org.skinlab.desktop.ar.IntrinsicsFile;
 import org.skinlab.desktop.ar.VideoFileSource;
 import org.skinlab.desktop.ar.WebcamSource;
 import org.skinlab.desktop.render.DrawSettings;
+import org.skinlab.desktop.viewer.DifferenceScale;
 
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
@@ -115,7 +116,8 @@ public final class ArCommand implements Callable<Integer> {
         FiducialTracker.runOnCallingThread();
         ArFeed feed = new ArFeed(frames, ArSession.of(new FiducialTracker(config, k)));
         AppOptions options = new AppOptions(file, window.method, RotationInterpolation.SLERP, true,
-                DrawSettings.View.SHADED, null, null, 0, window.screenshot, window.size.width(), window.size.height(),
+                DrawSettings.View.SHADED, DifferenceScale.DEFAULT, null, null, false, 0,
+                AppOptions.DEFAULT_PITCH_DEGREES, window.screenshot, window.size.width(), window.size.height(),
                 window.hideUi, window.script, exitAfterFrames, false);
         return SkinlabApp.run(options, new ArSetup(feed, k, markerSizeMm / 1000), spec.commandLine().getOut(),
                 spec.commandLine().getErr());

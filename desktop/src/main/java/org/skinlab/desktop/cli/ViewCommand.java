@@ -9,6 +9,7 @@ import org.skinlab.desktop.ExitCodes;
 import org.skinlab.desktop.app.AppOptions;
 import org.skinlab.desktop.app.SkinlabApp;
 import org.skinlab.desktop.render.DrawSettings;
+import org.skinlab.desktop.viewer.DifferenceScale;
 import org.skinlab.skinning.SkinningGlsl;
 import org.skinlab.skinning.SkinningMethod;
 
@@ -53,16 +54,31 @@ public final class ViewCommand implements Callable<Integer> {
     @Option(names = "--cpu", description = "skin on the CPU and stream the mesh to the GPU")
     boolean cpu;
 
-    @Option(names = "--view", paramLabel = "shaded|weights|difference", converter = ViewConverter.class,
-            description = "what colours show (default: shaded)")
+    @Option(names = "--view", paramLabel = "shaded|weights|difference|checker", converter = ViewConverter.class,
+            description = "what colours show (default: shaded); checker: shaded with a checker fixed to the rest shape,"
+                    + " so that twist and stretch show")
     DrawSettings.View view = DrawSettings.View.SHADED;
+
+    @Option(names = "--difference-scale", paramLabel = "PERCENT|auto", converter = DifferenceScaleConverter.class,
+            description = "the difference view's red: this percentage of the model's size or more (default: 5),"
+                    + " or auto: the largest LBS-DQS distance over the clip")
+    DifferenceScale differenceScale = DifferenceScale.DEFAULT;
 
     @Option(names = "--time", paramLabel = "SECONDS", description = "show this playback time, paused")
     Double time;
 
+    @Option(names = "--bind-pose", description = "show the bind pose (every joint at its bind frame, the skins' rest"
+            + " shapes) instead of the clip")
+    boolean bindPose;
+
     @Option(names = "--yaw", paramLabel = "DEGREES",
             description = "the camera's angle around the model: 0 from the front (+z, the default), 90 from +x")
     double yaw;
+
+    @Option(names = "--pitch", paramLabel = "DEGREES",
+            description = "the camera's elevation: 0 level with the model's centre, 90 from straight above"
+                    + " (at most 85); default 12")
+    double pitch = AppOptions.DEFAULT_PITCH_DEGREES;
 
     @Option(names = "--exit-after-frames", paramLabel = "N",
             description = "close after N frames; exit status 1 when the last frame drew nothing")
@@ -93,9 +109,12 @@ public final class ViewCommand implements Callable<Integer> {
         if (!Double.isFinite(yaw)) {
             throw new CommandFailure(ExitCodes.USAGE, "--yaw needs a finite angle (degrees)", null);
         }
-        AppOptions options = new AppOptions(file, window.method, interpolation, !cpu, view, split, time, yaw,
-                window.screenshot, window.size.width(), window.size.height(), window.hideUi, window.script,
-                exitAfterFrames, glDebug);
+        if (!(Math.abs(pitch) <= 90)) {
+            throw new CommandFailure(ExitCodes.USAGE, "--pitch needs an angle from -90 to 90 (degrees)", null);
+        }
+        AppOptions options = new AppOptions(file, window.method, interpolation, !cpu, view, differenceScale, split,
+                time, bindPose, yaw, pitch, window.screenshot, window.size.width(), window.size.height(), window.hideUi,
+                window.script, exitAfterFrames, glDebug);
         return SkinlabApp.run(options, spec.commandLine().getOut(), spec.commandLine().getErr());
     }
 
@@ -107,8 +126,19 @@ public final class ViewCommand implements Callable<Integer> {
                     return v;
                 }
             }
-            throw new CommandLine.TypeConversionException("'" + value + "' is not a view (expected shaded, weights or "
-                    + "difference)");
+            throw new CommandLine.TypeConversionException("'" + value + "' is not a view (expected shaded, weights, "
+                    + "difference or checker)");
+        }
+    }
+
+    static final class DifferenceScaleConverter implements CommandLine.ITypeConverter<DifferenceScale> {
+        @Override
+        public DifferenceScale convert(String value) {
+            try {
+                return DifferenceScale.parse(value);
+            } catch (IllegalArgumentException e) {
+                throw new CommandLine.TypeConversionException(e.getMessage());
+            }
         }
     }
 }

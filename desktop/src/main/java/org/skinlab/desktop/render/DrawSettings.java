@@ -18,11 +18,21 @@ public final class DrawSettings {
         /** Colour by the weight of {@link DrawSettings#selectedNode}. */
         WEIGHTS,
         /** Colour by the distance between the LBS and the DQS position of each vertex. */
-        DIFFERENCE
+        DIFFERENCE,
+        /**
+         * As {@link #SHADED}, darkened on every other square of a 3-D checker fixed to each
+         * vertex's rest position, so that twist and stretch show in the pattern.
+         */
+        CHECKER
     }
 
-    /** The top (red) of the difference view's colour map: this share of the model's size. */
+    /**
+     * The top (red) of the difference view's colour map unless the user chooses another: this
+     * share of the model's size.
+     */
     public static final float DIFFERENCE_FULL = 0.05f;
+    /** The checker view's squares across the model's size (the diagonal of its bind-pose bounds). */
+    public static final float CHECKER_SQUARES = 12f;
 
     public final Matrix4f viewProjection = new Matrix4f();
     /** Upright and unit fix and placement (ModelFraming). */
@@ -43,6 +53,8 @@ public final class DrawSettings {
     public int selectedNode = -1;
     /** The value at the top of the colour map: weight 1, or a distance in model units. */
     public float scalarFull = 1f;
+    /** The checker view's square side, in the rest shape's units. */
+    public float checkerCell = 1f;
     public int instances = 1;
     /** The grid cell of the first instance drawn (copies with poses of their own are drawn one by one). */
     public int firstInstance;

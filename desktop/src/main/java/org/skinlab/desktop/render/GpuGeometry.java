@@ -21,7 +21,8 @@ import org.skinlab.skinning.SkinnedGeometry;
  * coordinates, vertex colours (when the mesh has them) and the 4- or 8-influence view (for skinning in the vertex shader), a second pair of
  * position and normal buffers the CPU-skinned frames are streamed into, the triangles, and the
  * palette. Two vertex arrays share everything but positions and normals: one reads the bind pose
- * (GPU skinning), one the streamed pose (CPU skinning).
+ * (GPU skinning), one the streamed pose (CPU skinning); both also read the bind-space positions
+ * as the rest position (attribute 9) that the checker view's pattern is fixed to.
  */
 final class GpuGeometry implements AutoCloseable {
     /** At most this many influences reach the shader; heavier skins are cut (InfluenceView). */
@@ -133,6 +134,9 @@ final class GpuGeometry implements AutoCloseable {
             // No centres until CoR is drawn: the shader reads (0, 0, 0) and only CoR uses them.
             glDisableVertexAttribArray(7);
             glVertexAttrib3f(7, 0f, 0f, 0f);
+            // The rest position for patterns fixed to the rest shape (the checker view), in both
+            // arrays: the GPU-skinned one reads it as its position too, the CPU one only here.
+            attribute(9, bindPositions, 3);
             if (vertexColors != null) {
                 attribute(8, colors, 4);
             } else {

@@ -155,6 +155,7 @@ public final class ModelRenderer implements AutoCloseable {
         boolean weights = s.view == DrawSettings.View.WEIGHTS;
         glUniform1i(shader.viewMode, s.view.ordinal());
         glUniform1f(shader.scalarFull, s.scalarFull);
+        glUniform1f(shader.checkerCell, s.checkerCell);
         glUniform1i(shader.columns, s.columns());
         glUniform1i(shader.firstInstance, s.firstInstance);
         glUniform1f(shader.spacing, s.spacing);

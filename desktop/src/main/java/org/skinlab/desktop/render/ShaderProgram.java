@@ -8,6 +8,7 @@ import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
 
 import org.skinlab.ar.LensGlsl;
+import org.skinlab.scene.ColourRamp;
 import org.skinlab.scene.MaterialGlsl;
 import org.skinlab.skinning.SkinningGlsl;
 
@@ -15,8 +16,9 @@ import org.skinlab.skinning.SkinningGlsl;
  * A linked GLSL program built from shader resources next to this class
  * ({@code shaders/NAME.vert}, {@code shaders/NAME.frag}), the skinning formulas put in for a line
  * {@code #include "skinning.glsl"} ({@link SkinningGlsl}), the lens' for
- * {@code #include "lens.glsl"} ({@link LensGlsl}) and the materials' for
- * {@code #include "material.glsl"} ({@link MaterialGlsl}). Compile and link failures throw with
+ * {@code #include "lens.glsl"} ({@link LensGlsl}), the materials' for
+ * {@code #include "material.glsl"} ({@link MaterialGlsl}) and the data views' colour map for
+ * {@code #include "colour-ramp.glsl"} ({@link ColourRamp}). Compile and link failures throw with
  * the resource name and the driver's log, so a broken shader says where it broke.
  */
 public final class ShaderProgram implements AutoCloseable {
@@ -61,7 +63,8 @@ public final class ShaderProgram implements AutoCloseable {
     }
 
     private static int compile(int type, String resource) {
-        String source = MaterialGlsl.expand(LensGlsl.expand(SkinningGlsl.expand(read("shaders/" + resource))));
+        String source = ColourRamp.expand(MaterialGlsl.expand(LensGlsl.expand(SkinningGlsl.expand(
+                read("shaders/" + resource)))));
         int shader = glCreateShader(type);
         glShaderSource(shader, source);
         glCompileShader(shader);

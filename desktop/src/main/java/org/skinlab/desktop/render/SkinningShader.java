@@ -28,6 +28,7 @@ public final class SkinningShader implements AutoCloseable {
     final int selectedJoint;
     final int viewMode;
     final int scalarFull;
+    final int checkerCell;
     final int columns;
     final int spacing;
     final int firstInstance;
@@ -57,6 +58,7 @@ public final class SkinningShader implements AutoCloseable {
         selectedJoint = program.uniform("uSelectedJoint");
         viewMode = program.uniform("uViewMode");
         scalarFull = program.uniform("uScalarFull");
+        checkerCell = program.uniform("uCheckerCell");
         columns = program.uniform("uColumns");
         spacing = program.uniform("uSpacing");
         firstInstance = program.uniform("uFirstInstance");

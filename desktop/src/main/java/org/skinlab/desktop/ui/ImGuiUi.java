@@ -87,7 +87,7 @@ public final class ImGuiUi implements UserInterface {
         return scale > 0 ? scale : 1f;
     }
 
-    /** Names the method of each view in the row under it (the split view's two halves). */
+    /** Names the method of each view in the row under it (the split view's two halves), and the bind pose. */
     private static void labelViews(SceneReadout s) {
         if (!s.drewMesh()) {
             return;
@@ -98,7 +98,8 @@ public final class ImGuiUi implements UserInterface {
         float bottom = (s.height() - area.y()) / scale;
         float viewWidth = area.width() / scale / s.views();
         for (int v = 0; v < s.views(); v++) {
-            String label = VIEW_LABELS[s.viewMethod(v).ordinal()][s.viewOnCpu(v) ? 1 : 0];
+            boolean bind = s.viewer().config().isBindPose();
+            String label = VIEW_LABELS[s.viewMethod(v).ordinal()][(s.viewOnCpu(v) ? 1 : 0) + (bind ? 2 : 0)];
             float x = left + v * viewWidth + (viewWidth - ImGui.calcTextSizeX(label)) / 2;
             float y = bottom + (PanelLayout.labelRow(ImGui.getFrameHeight()) - ImGui.getFontSize()) / 2;
             ImGui.getForegroundDrawList().addText(x, y, 0xFFFFFFFF, label);
@@ -112,7 +113,8 @@ public final class ImGuiUi implements UserInterface {
         String[][] labels = new String[methods.length][];
         for (SkinningMethod m : methods) {
             String name = m.key().toUpperCase(java.util.Locale.ROOT);
-            labels[m.ordinal()] = new String[] {name + " (GPU)", name + " (CPU)"};
+            labels[m.ordinal()] = new String[] {name + " (GPU)", name + " (CPU)", name + " (GPU), bind pose",
+                name + " (CPU), bind pose"};
         }
         return labels;
     }

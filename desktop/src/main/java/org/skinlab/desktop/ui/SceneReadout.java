@@ -51,7 +51,10 @@ public interface SceneReadout {
     /** Largest |LBS - DQS| over the model relative to its size; NaN when not measured. */
     double maxDifference();
 
-    /** The value at the top of the difference colour map, relative to the model's size. */
+    /**
+     * The value at the top (red) of the difference colour map, relative to the model's size: the
+     * viewer's difference scale, fixed or the clip's largest difference.
+     */
     double differenceFull();
 
     /** LBS's volume of the model relative to its rest pose's; NaN when no part counts (see {@link #volumeNote()}). */

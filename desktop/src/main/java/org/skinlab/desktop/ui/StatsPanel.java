@@ -36,7 +36,7 @@ final class StatsPanel {
     private final CachedText vertices = new CachedText("%.3g M vertices skinned per second");
     private final CachedText drawn = new CachedText("%.0f vertices per instance");
     private final CachedText difference = new CachedText("largest |LBS - DQS|: %.2f %% of the model's size");
-    private final CachedText full = new CachedText("red: %.0f %% of the size or more");
+    private final CachedText full = new CachedText("red: %.3g %% of the size or more");
     private final CachedText lbsVolume = new CachedText("LBS volume %.4f of rest");
     private final CachedText dqsVolume = new CachedText("DQS volume %.4f of rest");
     private long refreshedAt = -1;

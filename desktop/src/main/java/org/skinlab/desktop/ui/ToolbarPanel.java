@@ -2,17 +2,22 @@ package org.skinlab.desktop.ui;
 
 import org.skinlab.animation.RotationInterpolation;
 import org.skinlab.desktop.render.DrawSettings;
+import org.skinlab.desktop.viewer.DifferenceScale;
 import org.skinlab.desktop.viewer.LoadedModel;
 import org.skinlab.desktop.viewer.Viewer;
 import org.skinlab.desktop.viewer.ViewerAction;
 import org.skinlab.desktop.viewer.ViewerSettings;
 import org.skinlab.model.AnimationClip;
 import org.skinlab.model.Model;
+import org.skinlab.scene.ColourRamp;
 import org.skinlab.simulation.AnimationConfig;
+import org.skinlab.skinning.LargestDifference;
 import org.skinlab.skinning.SkinningMethod;
 
+import imgui.ImDrawList;
 import imgui.ImGui;
 import imgui.flag.ImGuiCond;
+import imgui.flag.ImGuiSliderFlags;
 import imgui.flag.ImGuiWindowFlags;
 
 /**
@@ -30,6 +35,13 @@ final class ToolbarPanel {
     private static final int METHODS_PER_ROW = 4;
     /** Per method its button's text (the key in capitals) with its enum name as the ImGui id scripts find. */
     private static final String[] METHOD_LABELS = methodLabels();
+    /** The difference scale's slider: red at this many percent of the model's size (a logarithmic slider). */
+    private static final float SLIDER_MIN_PERCENT = 0.1f;
+    private static final float SLIDER_MAX_PERCENT = 50f;
+    /** The colour map's stops as ImGui colours (ABGR), for the legend. */
+    private static final int[] RAMP_STOPS = rampStops();
+    private static final float LEGEND_WIDTH = 200f;
+    private static final float LEGEND_HEIGHT = 10f;
 
     private final Widgets widgets;
     private final float[] timeline = new float[1];
@@ -37,6 +49,9 @@ final class ToolbarPanel {
     private final CachedText instances = new CachedText("%.0f");
     private final CachedText influences = new CachedText("%.0f influences per vertex in the shader");
     private final CachedText capped = new CachedText("%.0f vertices capped (weights renormalised)");
+    private final float[] redPercent = {100 * DrawSettings.DIFFERENCE_FULL};
+    private final CachedText legendTop = new CachedText("red: %.3g %% of the model's size or more");
+    private final CachedText largestAt = new CachedText("the clip's largest, at %.2f s");
     private boolean scrubbing;
     private LoadedModel namedModel;
     private int namedJoint = -1;
@@ -109,6 +124,8 @@ final class ToolbarPanel {
         widgets.action(ViewerAction.STEP_BACK);
         ImGui.sameLine();
         widgets.action(ViewerAction.STEP_FORWARD);
+        ImGui.sameLine();
+        widgets.toggle(ViewerAction.TOGGLE_BIND_POSE, "Bind pose", config.isBindPose());
     }
 
     private void interpolations(AnimationConfig config) {
@@ -150,6 +167,11 @@ final class ToolbarPanel {
         widgets.radio(ViewerAction.VIEW_WEIGHTS, s.drawView() == DrawSettings.View.WEIGHTS);
         ImGui.sameLine();
         widgets.radio(ViewerAction.VIEW_DIFFERENCE, s.drawView() == DrawSettings.View.DIFFERENCE);
+        ImGui.sameLine();
+        widgets.radio(ViewerAction.VIEW_CHECKER, s.drawView() == DrawSettings.View.CHECKER);
+        if (s.drawView() == DrawSettings.View.DIFFERENCE) {
+            differenceScale(viewer, s);
+        }
         if (s.drawView() == DrawSettings.View.WEIGHTS) {
             widgets.action(ViewerAction.PREVIOUS_JOINT);
             ImGui.sameLine();
@@ -166,6 +188,61 @@ final class ToolbarPanel {
         widgets.action(ViewerAction.MORE_INSTANCES);
         ImGui.sameLine();
         ImGui.textUnformatted(instances.of(s.instances()));
+    }
+
+    /**
+     * The difference view's scale: auto (the clip's largest difference is red) or red at a share of
+     * the model's size (a logarithmic slider), and the colour map as a legend from blue (none) to
+     * red.
+     */
+    private void differenceScale(Viewer viewer, ViewerSettings s) {
+        DifferenceScale scale = s.differenceScale();
+        if (ImGui.checkbox("Auto scale", scale.auto())) {
+            s.setDifferenceScale(scale.auto() ? DifferenceScale.percent(redPercent[0]) : DifferenceScale.AUTO);
+        }
+        widgets.remember("Auto scale");
+        if (ImGui.isItemHovered()) {
+            ImGui.setTooltip("red at the largest LBS-DQS distance over the clip (measured when chosen)");
+        }
+        if (scale.auto()) {
+            LargestDifference d = viewer.clipLargestDifference();
+            ImGui.sameLine();
+            Widgets.dim(d == null ? "measuring the clip ..." : largestAt.of(d.clipTime()));
+        } else {
+            redPercent[0] = (float) (100 * scale.fraction());
+            if (ImGui.sliderFloat("Red at", redPercent, SLIDER_MIN_PERCENT, SLIDER_MAX_PERCENT, "%.2f %%",
+                    ImGuiSliderFlags.Logarithmic | ImGuiSliderFlags.AlwaysClamp)) {
+                s.setDifferenceScale(DifferenceScale.percent(redPercent[0]));
+            }
+            widgets.remember("Red at");
+        }
+        legend();
+        Widgets.dim(legendTop.of(100 * viewer.differenceFull()));
+    }
+
+    /** The colour map from 0 (left) to the scale's top (right), one gradient per pair of stops. */
+    private static void legend() {
+        ImDrawList draw = ImGui.getWindowDrawList();
+        float x = ImGui.getCursorScreenPosX();
+        float y = ImGui.getCursorScreenPosY();
+        int segments = RAMP_STOPS.length - 1;
+        float step = LEGEND_WIDTH / segments;
+        for (int i = 0; i < segments; i++) {
+            int a = RAMP_STOPS[i];
+            int b = RAMP_STOPS[i + 1];
+            draw.addRectFilledMultiColor(x + i * step, y, x + (i + 1) * step, y + LEGEND_HEIGHT, a, b, b, a);
+        }
+        ImGui.dummy(LEGEND_WIDTH, LEGEND_HEIGHT);
+    }
+
+    private static int[] rampStops() {
+        int[] stops = new int[ColourRamp.stopCount()];
+        for (int i = 0; i < stops.length; i++) {
+            int rgb = ColourRamp.colour(i / (double) (stops.length - 1));
+            // ImGui's colours are ABGR.
+            stops[i] = 0xFF000000 | (rgb & 0xFF) << 16 | (rgb & 0xFF00) | (rgb >> 16 & 0xFF);
+        }
+        return stops;
     }
 
     /** What the window does: camera, picture, help, quit. */

@@ -13,7 +13,10 @@ import org.skinlab.scene.ModelFraming;
 public final class OrbitCamera {
     /** Vertical field of view in radians. */
     public static final float FOV_Y = (float) Math.toRadians(40);
-    private static final float MAX_PITCH = (float) Math.toRadians(85);
+    /** The steepest the camera looks down or up (radians): short of the vertical, where yaw would turn the view. */
+    public static final float MAX_PITCH = (float) Math.toRadians(85);
+    /** The pitch {@link #frame} looks from unless told otherwise: a little above, the floor in view. */
+    public static final float DEFAULT_PITCH = (float) Math.toRadians(12);
     private static final float RADIANS_PER_PIXEL = 0.008f;
     private static final float ZOOM_PER_STEP = 1.15f;
 
@@ -24,7 +27,9 @@ public final class OrbitCamera {
     private float yaw;
     /** The yaw {@link #frame} looks from: 0 from the front (+z), positive towards +x. */
     private float homeYaw;
-    private float pitch = (float) Math.toRadians(12);
+    /** The pitch {@link #frame} looks from: positive from above. */
+    private float homePitch = DEFAULT_PITCH;
+    private float pitch = DEFAULT_PITCH;
     private float distance = 3f;
     private float radius = 1f;
     /**
@@ -35,14 +40,14 @@ public final class OrbitCamera {
     private boolean fitting;
 
     /**
-     * Looks at the sphere from the front (or the {@link #setHomeYaw home yaw}), slightly above, so
-     * that it fills the view's height.
+     * Looks at the sphere from the front (or the {@link #setHomeYaw home yaw}), slightly above (or
+     * at the {@link #setHomePitch home pitch}), so that it fills the view's height.
      */
     public void frame(Vector3f centre, float sphereRadius) {
         target.set(centre);
         radius = Math.max(ModelFraming.MIN_RADIUS, sphereRadius);
         yaw = homeYaw;
-        pitch = (float) Math.toRadians(12);
+        pitch = homePitch;
         distance = radius / (float) Math.sin(FOV_Y / 2) * 1.1f;
         fitting = true;
     }
@@ -50,6 +55,14 @@ public final class OrbitCamera {
     /** The angle (radians) around the vertical axis that framing looks from: 0 from +z, pi/2 from +x. */
     public void setHomeYaw(float radians) {
         homeYaw = radians;
+    }
+
+    /**
+     * The angle (radians) above the horizontal that framing looks from: 0 level with the target,
+     * positive from above, negative from below; clamped to +-{@link #MAX_PITCH}.
+     */
+    public void setHomePitch(float radians) {
+        homePitch = Math.max(-MAX_PITCH, Math.min(MAX_PITCH, radians));
     }
 
     public void frame(ModelFraming framing) {

@@ -13,6 +13,7 @@ import java.util.concurrent.atomic.AtomicReference;
 
 import org.skinlab.animation.Skeleton;
 import org.skinlab.desktop.render.DrawSettings;
+import org.skinlab.animation.RotationInterpolation;
 import org.skinlab.importer.ModelImporter;
 import org.skinlab.model.ImportException;
 import org.skinlab.model.Model;
@@ -20,6 +21,7 @@ import org.skinlab.scene.ModelFraming;
 import org.skinlab.simulation.AnimationConfig;
 import org.skinlab.simulation.Frame;
 import org.skinlab.simulation.SkeletalAnimatedMesh;
+import org.skinlab.skinning.LargestDifference;
 import org.skinlab.skinning.MethodComparison;
 import org.skinlab.skinning.RestPose;
 import org.skinlab.skinning.SkinnedGeometry;
@@ -55,6 +57,8 @@ public final class Viewer implements AutoCloseable {
     /** The file of the newest load asked for (previous/next mesh step from it while it loads). */
     private Path requested;
     private LoadedModel current;
+    /** The auto difference scale's measure of the model shown, on the loader thread. */
+    private final ClipMeasure clipMeasure = new ClipMeasure(loader);
     private String status = "";
     private boolean quit;
 
@@ -135,6 +139,8 @@ public final class Viewer implements AutoCloseable {
         status = "loading " + name + " ...";
         long request = ++newestRequest;
         requested = path;
+        // A measure of the model shown would hold the loader up: the next model is measured if it needs it.
+        clipMeasure.cancel();
         inFlight = loader.submit(() -> {
             // Pressing "next mesh" five times shows the fifth model, not all five in turn.
             if (request != newestRequest) {
@@ -223,8 +229,16 @@ public final class Viewer implements AutoCloseable {
         return s == null ? "" : s.replaceAll("\\s+", " ").trim();
     }
 
-    /** Takes a finished load, if any (window thread, once per frame; allocates nothing otherwise). */
+    /**
+     * Takes a finished load, if any, and starts or takes the measure the auto difference scale
+     * needs (window thread, once per frame; allocates nothing otherwise).
+     */
     public void update() {
+        takeLoad();
+        measureForAutoScale();
+    }
+
+    private void takeLoad() {
         Object done = finished.getAndSet(null);
         if (done == null) {
             return;
@@ -261,6 +275,41 @@ public final class Viewer implements AutoCloseable {
     public int jointCount() {
         return current == null || current.mesh().geometries().isEmpty() ? 0
                 : current.mesh().geometries().get(0).jointCount();
+    }
+
+    // ------------------------------------------------------------------------ difference scale
+
+    /** With the auto difference scale, measures the clip of the model shown (once per model), off this thread. */
+    private void measureForAutoScale() {
+        if (settings.differenceScale().auto()) {
+            clipMeasure.update(current, config.interpolation());
+        }
+    }
+
+    /**
+     * The clip's largest LBS-DQS difference of the model shown (relative to its size, and when),
+     * as the auto difference scale measured it; null while it is measured, or when the scale is
+     * not auto.
+     */
+    public LargestDifference clipLargestDifference() {
+        return settings.differenceScale().auto() ? clipMeasure.result(current) : null;
+    }
+
+    /**
+     * The top (red) of the difference view's colour scale as a share of the model's size:
+     * {@link DifferenceScale#fractionFor} the clip's largest difference where measured.
+     */
+    public double differenceFull() {
+        LargestDifference d = clipLargestDifference();
+        return settings.differenceScale().fractionFor(d == null ? Double.NaN : d.relative());
+    }
+
+    /** Headless pictures: with the auto scale, waits until the model shown is measured (at most {@code seconds}). */
+    public void awaitDifferenceScale(long seconds) {
+        measureForAutoScale();
+        if (settings.differenceScale().auto()) {
+            clipMeasure.await(seconds);
+        }
     }
 
     // ------------------------------------------------------------------------------ actions
@@ -312,6 +361,9 @@ public final class Viewer implements AutoCloseable {
                 return true;
             case TOGGLE_GPU_SKINNING:
                 config.setCpuSkinning(!config.isCpuSkinning());
+                return true;
+            case TOGGLE_BIND_POSE:
+                config.setBindPose(!config.isBindPose());
                 return true;
             default:
                 return false;
@@ -371,6 +423,9 @@ public final class Viewer implements AutoCloseable {
                 return true;
             case VIEW_DIFFERENCE:
                 settings.setView(DrawSettings.View.DIFFERENCE);
+                return true;
+            case VIEW_CHECKER:
+                settings.setView(DrawSettings.View.CHECKER);
                 return true;
             case PREVIOUS_JOINT:
                 settings.selectJoint(settings.selectedJoint() - 1, jointCount());

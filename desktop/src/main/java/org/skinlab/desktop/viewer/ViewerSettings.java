@@ -4,14 +4,15 @@ import org.skinlab.desktop.render.DrawSettings;
 
 /**
  * The viewer's own switches, beyond the simulation's {@link org.skinlab.simulation.AnimationConfig}:
- * what colours show, the split view, overlays, the instance grid, the selected joint. Used on the
- * window's thread only.
+ * what colours show and the difference view's scale, the split view, overlays, the instance grid,
+ * the selected joint. Used on the window's thread only.
  */
 public final class ViewerSettings {
     /** The instance counts the grid steps through (the thesis' fps-against-meshes figure). */
     static final int[] INSTANCE_STEPS = {1, 2, 4, 8, 12, 16, 24, 32, 48, 64, 96, 128, 192, 256};
 
     private DrawSettings.View view = DrawSettings.View.SHADED;
+    private DifferenceScale differenceScale = DifferenceScale.DEFAULT;
     private boolean split;
     private boolean skeleton;
     private boolean wireframe;
@@ -25,6 +26,14 @@ public final class ViewerSettings {
 
     public void setView(DrawSettings.View view) {
         this.view = view;
+    }
+
+    public DifferenceScale differenceScale() {
+        return differenceScale;
+    }
+
+    public void setDifferenceScale(DifferenceScale scale) {
+        this.differenceScale = java.util.Objects.requireNonNull(scale, "scale");
     }
 
     public boolean split() {

@@ -60,8 +60,10 @@ class ViewerWindowTest {
     void everyViewMethodAndSwitchRunsWithoutGlErrors(@TempDir Path dir) throws IOException {
         Path s = script(dir, "action skeleton", "action wireframe", "action more-instances", "wait 2",
                 "action view-weights", "action next-joint", "wait 2", "action view-difference", "action split view",
-                "wait 3", "action toggle-gpu-skinning", "wait 5", "action next-method", "action next-interpolation",
-                "action next-method", "expect method COR", "wait 3", "action toggle-gpu-skinning", "wait 3",
+                "wait 3", "click Auto scale", "wait 3", "click Auto scale", "click Red at", "wait 2",
+                "action view-checker", "action toggle-bind-pose", "wait 3", "action toggle-bind-pose",
+                "action view-difference", "wait 2", "action toggle-gpu-skinning", "wait 5", "action next-method",
+                "action next-interpolation", "action next-method", "expect method COR", "wait 3", "action toggle-gpu-skinning", "wait 3",
                 "action toggle-mesh-updates", "wait 2", "action toggle-animation", "action step-forward", "wait 2",
                 "action help", "action centre-camera", "drag 600 300 650 320", "scroll 2", "wait 2",
                 "screenshot all.png", "quit");

@@ -1,5 +1,6 @@
 package org.skinlab.desktop.viewer;
 
+import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.joml.Matrix4f;
@@ -38,6 +39,29 @@ class OrbitCameraTest {
         c.frame(new Vector3f(), 1f);
         Vector3f eye = c.eye(new Vector3f());
         assertTrue(eye.x > 1f && Math.abs(eye.z) < 1e-5f, eye.toString());
+    }
+
+    /**
+     * {@code skinlab view --pitch}: framing looks from the home pitch, 90 degrees of yaw and 60 of
+     * pitch put the eye at elevation 60 degrees over +x (sin 60 = 0.866 of the distance up);
+     * the pole is refused.
+     */
+    @Test
+    void framingLooksFromTheHomePitch() {
+        OrbitCamera c = new OrbitCamera();
+        c.setHomeYaw((float) Math.toRadians(90));
+        c.setHomePitch((float) Math.toRadians(60));
+        c.frame(new Vector3f(), 1f);
+        c.orbit(0, 200);
+        c.frame(new Vector3f(), 1f);
+        Vector3f eye = c.eye(new Vector3f());
+        float d = c.distance();
+        assertEquals(Math.sin(Math.toRadians(60)) * d, eye.y, 1e-4 * d);
+        assertEquals(Math.cos(Math.toRadians(60)) * d, eye.x, 1e-4 * d);
+        assertEquals(0, eye.z, 1e-4 * d);
+        c.setHomePitch((float) Math.toRadians(90));
+        c.frame(new Vector3f(), 1f);
+        assertEquals(Math.sin(OrbitCamera.MAX_PITCH) * c.distance(), c.eye(new Vector3f()).y, 1e-4 * c.distance());
     }
 
     @Test

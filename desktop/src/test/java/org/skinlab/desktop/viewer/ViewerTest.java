@@ -102,6 +102,10 @@ class ViewerTest {
             assertEquals(2, v.settings().instances());
             v.perform(ViewerAction.VIEW_DIFFERENCE);
             assertEquals(DrawSettings.View.DIFFERENCE, v.settings().drawView());
+            v.perform(ViewerAction.VIEW_CHECKER);
+            assertEquals(DrawSettings.View.CHECKER, v.settings().drawView());
+            v.perform(ViewerAction.TOGGLE_BIND_POSE);
+            assertTrue(c.isBindPose());
             v.perform(ViewerAction.PREVIOUS_JOINT);
             assertEquals(v.jointCount() - 1, v.settings().selectedJoint());
             double before = v.current().mesh().playbackTime();
@@ -117,6 +121,57 @@ class ViewerTest {
                 }
             }
         }
+    }
+
+    /**
+     * The auto difference scale is the clip's largest LBS-DQS difference, measured off the
+     * window's thread: on the twist cylinder 0.25 (1 - cos 86 deg) over its diagonal 2.1213
+     * (LargestDifferenceTest has the derivation) at the clip's end; a fixed scale is what it says,
+     * and a model shown later is measured anew.
+     */
+    @Test
+    void theAutoDifferenceScaleIsTheClipsLargest() throws Exception {
+        try (Viewer v = viewer(false)) {
+            assertEquals(DrawSettings.DIFFERENCE_FULL, v.differenceFull(), 1e-9, "the default");
+            v.settings().setDifferenceScale(DifferenceScale.percent(8));
+            assertNull(v.openAndWait(asset("cylinders/cylinder-twist-high.dae")));
+            assertEquals(0.08, v.differenceFull(), 1e-12);
+            assertNull(v.clipLargestDifference(), "a fixed scale measures nothing");
+            v.settings().setDifferenceScale(DifferenceScale.AUTO);
+            v.awaitDifferenceScale(60);
+            double byHand = 0.25 * (1 - Math.cos(Math.toRadians(86))) / Math.sqrt(0.5 * 0.5 + 0.5 * 0.5 + 2 * 2);
+            assertEquals(byHand, v.differenceFull(), 0.01 * byHand);
+            assertEquals(4f, v.clipLargestDifference().clipTime(), 1e-6f);
+            // The walk: another model, another measure (its methods differ far less than the twist's).
+            assertNull(v.openAndWait(asset("characters/humanoid-walk.dae")));
+            v.awaitDifferenceScale(60);
+            assertTrue(v.differenceFull() > 0 && v.differenceFull() < 0.5 * byHand, "walk: " + v.differenceFull());
+        }
+    }
+
+    @Test
+    void differenceScalesParseAsTheCommandLineWritesThem() {
+        assertEquals(DifferenceScale.AUTO, DifferenceScale.parse(" Auto "));
+        assertEquals(0.125, DifferenceScale.parse("12.5").fraction(), 1e-12);
+        assertEquals(0.02, DifferenceScale.parse("2 %").fraction(), 1e-12);
+        for (String bad : new String[] {"", "five", "0", "-3", "101", "NaN"}) {
+            IllegalArgumentException e = org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class,
+                    () -> DifferenceScale.parse(bad), bad);
+            assertTrue(e.getMessage().contains("'" + bad + "'"), e.getMessage());
+        }
+        assertEquals(0.3, DifferenceScale.AUTO.fractionFor(0.3), 0);
+        assertEquals(DrawSettings.DIFFERENCE_FULL, DifferenceScale.AUTO.fractionFor(Double.NaN), 1e-9,
+                "while measuring: the default");
+        assertEquals(DrawSettings.DIFFERENCE_FULL, DifferenceScale.AUTO.fractionFor(0), 1e-9, "methods that agree");
+        assertEquals(0.08, DifferenceScale.percent(8).fractionFor(0.3), 1e-12);
+    }
+
+    private static Path asset(String relative) {
+        return Path.of(System.getProperty("skinlab.root", "..")).resolve("assets").resolve(relative);
+    }
+
+    private static void assertNull(Object o, String message) {
+        assertEquals(null, o, message);
     }
 
     private static void assertNull(Object o) {

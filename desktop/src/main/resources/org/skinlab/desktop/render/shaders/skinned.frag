@@ -1,6 +1,7 @@
 #version 330 core
 // The material's surface (core's material.glsl) lit by Lambert with a camera-side key light, a
-// fill from below and a little specular, plus its emission; or a colour map for the weight and
+// fill from below and a little specular, plus its emission; in the checker view darkened on every
+// other square of a 3-D checker fixed to the rest shape; or a colour map for the weight and
 // difference views; or one flat colour (wireframe overlay).
 
 in vec3 vWorld;
@@ -8,30 +9,32 @@ in vec3 vNormal;
 in vec2 vUv;
 in vec4 vColor;
 in float vScalar;
+in vec3 vRest;
 
-uniform int uViewMode;        // 0 shaded, 1 weights, 2 difference
+uniform int uViewMode;        // DrawSettings.View's order: 0 shaded, 1 weights, 2 difference, 3 checker
 uniform vec3 uEye;
 uniform float uScalarFull;    // the scalar shown as the top of the colour map
+uniform float uCheckerCell;   // checker view: a square's side, in the rest shape's units
 uniform bool uFlat;
 uniform vec4 uFlatColor;
 
 out vec4 fragColor;
 
-// Blue, cyan, green, yellow, red: readable without a legend's fine print.
-vec3 ramp(float x) {
-    x = clamp(x, 0.0, 1.0);
-    vec3 c0 = vec3(0.10, 0.20, 0.75);
-    vec3 c1 = vec3(0.10, 0.75, 0.85);
-    vec3 c2 = vec3(0.20, 0.80, 0.20);
-    vec3 c3 = vec3(0.95, 0.85, 0.15);
-    vec3 c4 = vec3(0.90, 0.15, 0.10);
-    float s = x * 4.0;
-    if (s < 1.0) return mix(c0, c1, s);
-    if (s < 2.0) return mix(c1, c2, s - 1.0);
-    if (s < 3.0) return mix(c2, c3, s - 2.0);
-    return mix(c3, c4, s - 3.0);
+// The dark squares' share of the light ones' brightness.
+const float CHECKER_DARK = 0.45;
+
+// A 3-D checker of unit cells: 1 on light cells, 0 on dark ones, box-filtered over the fragment's
+// footprint (the integral of each axis' square wave, Quilez's filtered checkerboard) so that small
+// or distant squares fade to grey instead of aliasing. A quarter cell off the origin: faces at a
+// model's round coordinates (a cylinder's cap at 0) do not lie on a cell's boundary.
+float checker(vec3 p) {
+    p += 0.25;
+    vec3 w = max(fwidth(p), vec3(1e-4));
+    vec3 i = 2.0 * (abs(fract((p - 0.5 * w) * 0.5) - 0.5) - abs(fract((p + 0.5 * w) * 0.5) - 0.5)) / w;
+    return 0.5 + 0.5 * i.x * i.y * i.z;
 }
 
+#include "colour-ramp.glsl"
 #include "material.glsl"
 
 void main() {
@@ -51,7 +54,10 @@ void main() {
         n = -n;
     }
     bool colourMap = uViewMode == 1 || uViewMode == 2;
-    vec4 c = colourMap ? vec4(ramp(vScalar / uScalarFull), 1.0) : surfaceBase(vUv, vColor);
+    vec4 c = colourMap ? vec4(colourRamp(vScalar / uScalarFull), 1.0) : surfaceBase(vUv, vColor);
+    if (uViewMode == 3) {
+        c.rgb *= mix(CHECKER_DARK, 1.0, checker(vRest / uCheckerCell));
+    }
     if (!colourMap && uUnlit) {
         fragColor = c;
         return;
@@ -62,7 +68,7 @@ void main() {
     float diffuse = max(dot(n, key), 0.0) * 0.75 + max(dot(n, fill), 0.0) * 0.15;
     float ambient = 0.25 + 0.1 * n.y;
     vec3 h = normalize(key + v);
-    float specular = uViewMode == 0 ? pow(max(dot(n, h), 0.0), 32.0) * 0.15 : 0.0;
+    float specular = !colourMap ? pow(max(dot(n, h), 0.0), 32.0) * 0.15 : 0.0;
     vec3 emission = colourMap ? vec3(0.0) : surfaceEmission(vUv);
     fragColor = vec4(base * (ambient + diffuse) + vec3(specular) + emission, c.a);
 }

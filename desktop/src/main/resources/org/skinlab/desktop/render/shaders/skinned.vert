@@ -12,6 +12,7 @@ layout(location = 5) in uvec4 aJoints1;   // influences 5-8 (zero weights with a
 layout(location = 6) in vec4 aWeights1;
 layout(location = 7) in vec3 aCentre;     // CoR skinning: the point's centre of rotation (bind space)
 layout(location = 8) in vec4 aColor;      // the vertex colour (white when the mesh has none)
+layout(location = 9) in vec3 aRest;       // the rest position (bind space), whichever way the mesh is skinned
 
 uniform samplerBuffer uMatrices;      // 3 texels per joint: the rows of a 3x4 affine matrix
 uniform samplerBuffer uDualQuaternions; // 2 texels per joint: rotation (x y z w), dual part
@@ -34,6 +35,7 @@ out vec3 vNormal;
 out vec2 vUv;
 out vec4 vColor;
 out float vScalar;            // weight view: weight; difference view: |LBS - DQS|
+out vec3 vRest;               // checker view: where the pattern is fixed
 out vec3 vPosed;              // for transform feedback: the skinned position before uModel
 
 // The palette as skinning.glsl reads it: matrices, dual quaternions and scale parts each in
@@ -100,5 +102,6 @@ void main() {
     vNormal = mat3(uModel) * normal;
     vUv = aUv;
     vColor = aColor;
+    vRest = aRest;
     gl_Position = uViewProjection * world;
 }
