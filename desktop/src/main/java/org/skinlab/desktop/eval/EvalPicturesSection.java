@@ -427,11 +427,16 @@ final class EvalPicturesSection implements EvalSection {
         for (int a = 0; a < assets.size(); a++) {
             JsonNode asset = assets.get(a);
             BufferedImage[] panels = pictures.get(asset.get("file").asText());
-            if (panels == null || !asset.has("coveragePercent")) {
+            if (!asset.has("coveragePercent")) {
                 continue;
             }
             String file = asset.get("file").asText();
             String base = file.replaceAll("\\.dae$", "").replaceAll("[^A-Za-z0-9_-]", "_");
+            if (panels == null) {
+                // Written from results.json alone: the figure the measuring run drew, if it is there.
+                report.keep("pictures-" + base + ".png", "LBS, DQS, CoR and the LBS-DQS difference, " + file);
+                continue;
+            }
             report.image("pictures-" + base + ".png", "LBS, DQS, CoR and the LBS-DQS difference, " + file,
                     sheet(file + " at " + EvalReport.format(asset.get("time")) + " s of "
                             + EvalReport.format(asset.get("clipSeconds")) + " s: LBS and DQS up to "

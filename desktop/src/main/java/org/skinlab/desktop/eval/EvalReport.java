@@ -8,6 +8,7 @@ import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.math.BigDecimal;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -159,7 +160,21 @@ final class EvalReport {
         return this;
     }
 
-    /** The PNG files written so far. */
+    /**
+     * Links {@code file}, a figure an earlier run drew that this report cannot draw again from the
+     * results alone (a picture measure() kept in memory), when its PNG is in the folder; returns
+     * whether it was there. The file is left as it is.
+     */
+    boolean keep(String file, String caption) {
+        if (!Files.isRegularFile(dir.resolve(file))) {
+            return false;
+        }
+        figures.add(file);
+        md.append("![").append(caption).append("](").append(file).append(")\n\n");
+        return true;
+    }
+
+    /** The PNG files written (or kept) so far. */
     List<String> figures() {
         return List.copyOf(figures);
     }
