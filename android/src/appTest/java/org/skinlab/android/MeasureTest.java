@@ -69,6 +69,8 @@ public class MeasureTest {
         File file = new File(folder, DeviceResultsJson.FILE_NAME);
         String status = app.awaitStatus("the file written", s -> s.contains("measure (quick): wrote "));
         assertTrue(status, status.contains("wrote " + file.getPath()));
+        assertTrue("the status line says the GPU part is missing: " + status,
+                status.contains("; the GPU part was not measured: the GL view drew no frame"));
         assertNotNull("done: the button starts again", app.button("Measure"));
 
         DeviceResults r = DeviceResultsReader.read(Files.readAllBytes(file.toPath()), file.getName());

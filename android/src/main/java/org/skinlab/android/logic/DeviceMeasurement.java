@@ -152,8 +152,9 @@ public final class DeviceMeasurement {
                     drawing.gpu(), new DeviceResults.Protocol(protocol.name(), protocol.times()), times, skipped, drawn);
             File file = write(results);
             written = file;
-            status = prefix + ": wrote " + file.getPath() + " (" + seconds() + ")";
-        } catch (CancellationException | InterruptedException e) {
+            status = prefix + ": wrote " + file.getPath() + " (" + seconds() + ")" + (drawn.measured() ? ""
+                    : "; the GPU part was not measured: " + drawn.unavailable());
+        } catch (CancellationException e) {
             status = prefix + ": stopped";
         } catch (Throwable e) { // errors too: a measurement must never end the app
             status = prefix + ": failed: " + (e.getMessage() != null ? e.getMessage() : e.getClass().getSimpleName());
@@ -207,7 +208,7 @@ public final class DeviceMeasurement {
      * Frames per second of 1, 4, 8 and 12 copies of {@code model} drawn with each of
      * {@link MeasureProtocol#DRAWN_METHODS}, in interleaved rounds; or why it could not be drawn.
      */
-    private DeviceResults.Drawn drawn(String name, Model model, double refreshHz) throws InterruptedException {
+    private DeviceResults.Drawn drawn(String name, Model model, double refreshHz) {
         List<Integer> copies = MeasureProtocol.COPIES;
         List<SkinningMethod> methods = MeasureProtocol.DRAWN_METHODS;
         int points = copies.size() * methods.size();

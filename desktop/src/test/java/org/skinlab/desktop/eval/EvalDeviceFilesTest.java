@@ -5,8 +5,11 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.OutputStream;
+import java.io.PrintWriter;
+import java.io.StringWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -16,6 +19,7 @@ import java.util.stream.Stream;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.node.ObjectNode;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -33,8 +37,9 @@ import org.skinlab.skinning.SkinningMethod;
  * {@link DeviceResultsJson}), added to a copy of the shared quick run's report, whose README then
  * shows its numbers, every one a value of results.json, with every figure (the pictures kept as
  * the measuring run drew them) and nothing else changed; the same phone and app version replace
- * their earlier file; and bad files are refused naming the file and the JSON pointer, leaving
- * results.json as it was. Before any phone, the quick run's report says what no phone measured.
+ * their earlier file; a new run keeps the phones of the results it replaces; and bad files are
+ * refused naming the file and the JSON pointer, leaving results.json as it was. Before any phone,
+ * the quick run's report says what no phone measured.
  */
 class EvalDeviceFilesTest {
     private static final ObjectMapper JSON = new ObjectMapper();
@@ -161,6 +166,27 @@ class EvalDeviceFilesTest {
                 "--out", report.toString());
         assertEquals(ExitCodes.OK, other.status, other.toString());
         assertEquals(2, JSON.readTree(report.resolve("results.json").toFile()).at("/sections/phone/devices").size());
+    }
+
+    @Test
+    void aNewRunKeepsThePhonesAddedToTheResultsItReplaces() throws Exception {
+        ObjectNode earlier = JSON.createObjectNode();
+        ObjectNode phone = earlier.putObject("phone");
+        EvalPhoneSection.prepare(phone, null);
+        ByteArrayOutputStream file = new ByteArrayOutputStream();
+        DeviceResultsJson.write(phone("SM-G935F", "0.1.0", true), file);
+        EvalPhoneSection.addDevice(phone, (ObjectNode) JSON.readTree(file.toByteArray()), "results-android.json",
+                "2025-03-02T09:00:00Z");
+        StringWriter log = new StringWriter();
+        EvalContext context = new EvalContext(true, Cli.root(), new PrintWriter(log), new ViewerProcess(Object.class));
+        context.useResults(JSON.createObjectNode());
+        context.useEarlier(earlier);
+        ObjectNode results = JSON.createObjectNode();
+        new EvalPhoneSection().measure(context, results);
+        assertEquals(phone.get("devices"), results.get("devices"));
+        assertFalse(results.has("figureSkipped"), "the kept phone drew copies");
+        assertEquals("the time section was not run", results.get("hereMissing").asText());
+        assertTrue(log.toString().contains("phone: kept 1 phone(s)"), log.toString());
     }
 
     @Test
