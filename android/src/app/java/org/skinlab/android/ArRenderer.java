@@ -17,6 +17,7 @@ import android.opengl.GLES11Ext;
 import android.opengl.GLSurfaceView;
 
 import org.joml.Matrix4f;
+import org.skinlab.android.logic.DrawnCopies;
 import org.skinlab.android.logic.FpsCounter;
 import org.skinlab.android.logic.GlesShaders;
 import org.skinlab.android.logic.ModelLoader;
@@ -29,12 +30,10 @@ import org.skinlab.ar.CameraFollow;
 import org.skinlab.ar.CameraIntrinsics;
 import org.skinlab.ar.LensGlsl;
 import org.skinlab.ar.MarkerScene;
-import org.skinlab.scene.BlendOrder;
 import org.skinlab.scene.ModelFraming;
 import org.skinlab.simulation.AnimationConfig;
 import org.skinlab.simulation.Frame;
 import org.skinlab.simulation.SkeletalAnimatedMesh;
-import org.skinlab.skinning.SkinningGlsl;
 
 /**
  * Draws one AR frame on the GL thread: the camera image (the preview's SurfaceTexture) across the
@@ -46,6 +45,7 @@ import org.skinlab.skinning.SkinningGlsl;
 final class ArRenderer implements GLSurfaceView.Renderer {
     private final AnimationConfig config;
     private final Consumer<SurfaceTexture> onSurfaceReady;
+    private final DrawnCopies copies;
     private final FpsCounter fps = new FpsCounter();
     private final CameraFollow follow = new CameraFollow();
     private final Matrix4f projection = new Matrix4f();
@@ -69,9 +69,9 @@ final class ArRenderer implements GLSurfaceView.Renderer {
     private SkeletalAnimatedMesh meshOnGpu;
     private List<ModelGl> models = new ArrayList<>();
     private TexturesGl textures = new TexturesGl(ModelTextures.NONE);
-    private MaterialUniforms materials;
-    private BlendOrder blendOrder = new BlendOrder(0);
-    private final Matrix4f clip = new Matrix4f();
+    /** Draws the AR model, and the measurement's copies; made with the program, in each new context. */
+    private SkinnedModelDraw modelDraw;
+    private CopiesDrawer copiesDrawer;
     private ModelFraming framing;
     private SurfaceTexture preview;
     private int previewTexture;
@@ -85,11 +85,13 @@ final class ArRenderer implements GLSurfaceView.Renderer {
      * {@code onSurfaceReady} hears, on the GL thread, each time the view's surface is ready (at
      * start, after every resume, after a lost context), the camera preview's texture of the current
      * context: the camera may stream into it from then on. A new context makes a new texture; the
-     * listener releases the old one once the camera has let go of it.
+     * listener releases the old one once the camera has let go of it. While a measurement asks
+     * for copies ({@code copies}), frames draw them instead of the camera image and the model.
      */
-    ArRenderer(AnimationConfig config, Consumer<SurfaceTexture> onSurfaceReady) {
+    ArRenderer(AnimationConfig config, Consumer<SurfaceTexture> onSurfaceReady, DrawnCopies copies) {
         this.config = config;
         this.onSurfaceReady = onSurfaceReady;
+        this.copies = copies;
     }
 
     void setSession(ArSession session, CameraIntrinsics intrinsics, int imageRotationDegrees,
@@ -123,12 +125,18 @@ final class ArRenderer implements GLSurfaceView.Renderer {
 
     @Override
     public void onSurfaceCreated(GL10 unused, EGLConfig eglConfig) {
+        copies.glStrings(glGetString(GL_RENDERER), glGetString(GL_VENDOR), glGetString(GL_VERSION));
+        // The EGL context is new: whatever was on the GPU is gone, the drawers' buffers too.
+        modelDraw = null;
+        copiesDrawer = null;
         try {
             background = GlProgram.link(GlesShaders.BACKGROUND_VERTEX, GlesShaders.backgroundFragment());
             skinned = GlProgram.link(GlesShaders.skinnedVertex(), GlesShaders.skinnedFragment());
             glUseProgram(skinned);
-            materials = new MaterialUniforms(skinned);
+            MaterialUniforms materials = new MaterialUniforms(skinned);
             glUseProgram(0);
+            modelDraw = new SkinnedModelDraw(skinned, materials);
+            copiesDrawer = new CopiesDrawer(new SkinnedModelDraw(skinned, materials));
             glProblem = null;
         } catch (IllegalStateException e) {
             // A driver that refuses our GLSL ES: say why in the status line instead of crashing.
@@ -172,6 +180,19 @@ final class ArRenderer implements GLSurfaceView.Renderer {
     @Override
     public void onDrawFrame(GL10 unused) {
         fps.frame(System.nanoTime());
+        DrawnCopies.Request request = copies.current();
+        if (request != null) {
+            if (glProblem != null) {
+                copies.undrawable(request, "the GL driver refused the app's shaders: " + glProblem);
+                return;
+            }
+            copiesDrawer.draw(request, width, height);
+            copies.drawn(request, System.nanoTime());
+            return;
+        }
+        if (copiesDrawer != null && !copies.measuring()) {
+            copiesDrawer.release();
+        }
         glClearColor(0.1f, 0.1f, 0.12f, 1f);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         CameraIntrinsics k = intrinsics;
@@ -214,7 +235,7 @@ final class ArRenderer implements GLSurfaceView.Renderer {
             scene.place(pose, follow, config.isFollowCamera(), framing, markerView, model);
             markerView.mul(model, modelView);
             ArCamera.projection(k, 0.01f, 20f, width, height, imageRotation, false, projection);
-            drawModel(frame);
+            modelDraw.draw(models, frame, projection, modelView);
         }
     }
 
@@ -235,67 +256,9 @@ final class ArRenderer implements GLSurfaceView.Renderer {
                 blended += p.material().blended() ? 1 : 0;
             }
         }
-        blendOrder = new BlendOrder(blended);
+        modelDraw.blendedParts(blended);
         framing = ModelFraming.of(m.model().asset(), m.geometries(), frame);
         meshOnGpu = m;
         follow.reset();
     }
-
-    /**
-     * The model of {@code frame}: opaque and masked parts, then blended parts farthest first (as
-     * the desktop viewer draws them); depth writes stay on.
-     */
-    private void drawModel(Frame frame) {
-        glEnable(GL_DEPTH_TEST);
-        glEnable(GL_BLEND);
-        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-        glUseProgram(skinned);
-        glUniformMatrix4fv(glGetUniformLocation(skinned, "uProjection"), 1, false, projection.get(matrix), 0);
-        glUniformMatrix4fv(glGetUniformLocation(skinned, "uModelView"), 1, false, modelView.get(matrix), 0);
-        // A frame with a CPU-skinned mesh (a method without shader code) is drawn as it is: code 0.
-        glUniform1i(glGetUniformLocation(skinned, "uMethod"),
-                frame.hasSkinnedMesh() ? 0 : SkinningGlsl.methodCode(frame.method()));
-        glUniform1i(glGetUniformLocation(skinned, "uPalette"), GlesShaders.PALETTE_UNIT);
-        glVertexAttrib4f(GlesShaders.COLOR, 1f, 1f, 1f, 1f); // geometries without vertex colours
-        boolean viewMirrors = modelView.determinant3x3() < 0f;
-        projection.mul(modelView, clip);
-        blendOrder.clear();
-        for (int g = 0; g < models.size(); g++) {
-            ModelGl model = models.get(g);
-            paletteOf(frame, g);
-            ModelGl.Part[] parts = model.parts();
-            for (int i = 0; i < parts.length; i++) {
-                if (!parts[i].material().blended()) {
-                    model.draw(parts[i], materials, viewMirrors);
-                } else {
-                    float distance = i < model.centredParts() ? BlendOrder.distance(clip, model.posedCentres(), i) : 0f;
-                    blendOrder.add(g, i, distance);
-                }
-            }
-        }
-        int bound = -1;
-        for (int k = 0; k < blendOrder.size(); k++) {
-            int g = blendOrder.geometry(k);
-            if (g != bound) {
-                paletteOf(frame, g);
-                bound = g;
-            }
-            models.get(g).draw(models.get(g).parts()[blendOrder.part(k)], materials, viewMirrors);
-        }
-        glDisable(GL_CULL_FACE);
-        glDisable(GL_BLEND);
-    }
-
-    /**
-     * Geometry {@code g}'s shape (CPU-skinned, or morphed rest shape when its weights animate),
-     * palette and per-geometry uniforms.
-     */
-    private void paletteOf(Frame frame, int g) {
-        models.get(g).shape(frame, g);
-        models.get(g).palette(frame, g);
-        glUniform1i(glGetUniformLocation(skinned, "uHasScale"), frame.hasScale(g) ? 1 : 0);
-        glUniform1i(glGetUniformLocation(skinned, "uMatricesMirror"), frame.mirrorsMatrices(g) ? 1 : 0);
-        glUniform1i(glGetUniformLocation(skinned, "uScalesMirror"), frame.mirrorsScales(g) ? 1 : 0);
-    }
-
 }

@@ -9,6 +9,7 @@ import java.util.Map;
 
 import android.Manifest;
 import android.app.Activity;
+import android.content.Intent;
 import android.content.pm.PackageManager;
 import android.content.res.Configuration;
 import android.graphics.Color;
@@ -31,7 +32,9 @@ import android.widget.LinearLayout;
 import android.widget.TextView;
 
 import org.skinlab.android.logic.AppActions;
+import org.skinlab.android.logic.DrawnCopies;
 import org.skinlab.android.logic.MarkerSize;
+import org.skinlab.android.logic.MeasureProtocol;
 import org.skinlab.android.logic.ModelLoader;
 import org.skinlab.android.logic.ModelCatalog;
 import org.skinlab.android.logic.PermissionFlow;
@@ -50,22 +53,30 @@ import org.skinlab.skinning.CentresOfRotation;
  * The AR app's one Activity: the camera image with the animated character standing on the printed
  * marker (docs/marker: ArUco MIP_36h12 id 0, 100 mm by default; a button steps through other
  * printed sizes), a status line, and a button for every user function of the thesis
- * ({@link AppActions}).
+ * ({@link AppActions}), and "Measure" ({@link MeasureControl}): the bundled models timed on this
+ * phone into {@code results-android.json}. The launch intent's extra {@value MeasureProtocol#EXTRA}
+ * = "quick" makes that a quick measurement (seconds; not figures to quote).
  *
  * <p>Threads: the UI thread (this class; it never waits on another thread), the GL thread
  * ({@link ArRenderer}), the camera and tracking threads (made here, used by each
- * {@link CameraSource}), the simulation thread ({@link SkeletalAnimatedMesh}) and one loader
- * thread for models. onPause closes the camera and stops the simulation; onResume starts both
- * again, the camera once the renderer's surface is ready. onDestroy ends every thread it started.
+ * {@link CameraSource}), the simulation thread ({@link SkeletalAnimatedMesh}), one loader
+ * thread for models, and a measurement's threads. onPause closes the camera, stops the simulation
+ * and a measurement; onResume starts the first two again, the camera once the renderer's surface
+ * is ready. While a measurement runs it holds the camera and the simulation off and the GL thread
+ * draws its copies. onDestroy ends every thread it started.
  */
 public final class SkinlabActivity extends Activity {
     private static final int CAMERA_REQUEST = 1;
+    private static final int SAVE_REQUEST = 2;
 
     private final AnimationConfig config = new AnimationConfig(AnimationConfig.Settings.DEFAULT.withCpuSkinning(false));
     private final Handler ui = new Handler(Looper.getMainLooper());
     private final ModelLoader models = new ModelLoader(name -> getAssets().open("models/" + name), config,
             new BitmapDecoder(), model -> ui.post(() -> swapIn(model)));
     private final List<Button> buttons = new ArrayList<>();
+    /** The measurement's GPU part: the GL thread draws the copies it asks for. */
+    private final DrawnCopies drawnCopies = new DrawnCopies(DrawnCopies.NO_FRAME_SECONDS);
+    private MeasureControl measure;
     /** The printed marker's size (docs/marker's 100 mm unless the user taps another). */
     private final MarkerSize markerSize = new MarkerSize(metres -> ui.post(this::onMarkerSize));
     private PermissionFlow permission;
@@ -100,8 +111,10 @@ public final class SkinlabActivity extends Activity {
             String model = models.loading() ? catalog.current() + " (loading)" : catalog.current();
             String line = StatusLine.format(renderer.fps(), s == null ? null : s.current(), config.settings(), model);
             String gl = renderer.problem();
+            String[] measured = measure.statusLines();
             status.setText(StatusLine.withProblems(line, gl == null ? "" : "OpenGL ES: " + gl, cameraProblem,
-                    models.problem()));
+                    models.problem(), measured[0], measured[1]));
+            measure.poll();
             for (int i = 0; i < buttons.size(); i++) {
                 buttons.get(i).setText(actions.get(i).label().get());
             }
@@ -124,6 +137,9 @@ public final class SkinlabActivity extends Activity {
         catalog.select(choices.model());
         markerSize.select(choices.markerMillimetres());
         permission = PermissionFlow.restore(choices.permission());
+        measure = new MeasureControl(this, SAVE_REQUEST, catalog.names(),
+                MeasureProtocol.named(getIntent().getStringExtra(MeasureProtocol.EXTRA)), drawnCopies,
+                this::holdForMeasurement, this::releaseAfterMeasurement);
         cameraThread = new HandlerThread("camera");
         cameraThread.start();
         trackingThread = new HandlerThread("tracking");
@@ -137,7 +153,7 @@ public final class SkinlabActivity extends Activity {
         glView = new GLSurfaceView(this);
         glView.setEGLContextClientVersion(3);
         glView.setPreserveEGLContextOnPause(true);
-        renderer = new ArRenderer(config, texture -> ui.post(() -> onSurfaceReady(texture)));
+        renderer = new ArRenderer(config, texture -> ui.post(() -> onSurfaceReady(texture)), drawnCopies);
         glView.setRenderer(renderer);
         glView.setRenderMode(GLSurfaceView.RENDERMODE_CONTINUOUSLY);
         root.addView(glView);
@@ -150,7 +166,7 @@ public final class SkinlabActivity extends Activity {
 
         LinearLayout row = new LinearLayout(this);
         row.setOrientation(LinearLayout.HORIZONTAL);
-        actions = AppActions.of(config, this::nextModel, markerSize);
+        actions = AppActions.of(config, this::nextModel, markerSize, measure);
         for (AppActions.Action a : actions) {
             Button b = new Button(this);
             b.setAllCaps(false);
@@ -213,7 +229,7 @@ public final class SkinlabActivity extends Activity {
         }
         showScreen();
         SkeletalAnimatedMesh m = mesh;
-        if (m != null && !m.isClosed()) {
+        if (m != null && !m.isClosed() && !measure.holding()) {
             m.start();
         }
         maybeOpenCamera();
@@ -225,6 +241,7 @@ public final class SkinlabActivity extends Activity {
     @Override
     protected void onPause() {
         resumed = false;
+        measure.stop();
         // The GL context may be lost while paused: the camera waits for the renderer's next surface.
         previewReady = false;
         ui.removeCallbacks(statusUpdate);
@@ -249,6 +266,7 @@ public final class SkinlabActivity extends Activity {
     protected void onDestroy() {
         closeCamera();
         models.close();
+        measure.close();
         SkeletalAnimatedMesh m = mesh;
         if (m != null) {
             m.close();
@@ -277,6 +295,13 @@ public final class SkinlabActivity extends Activity {
         }
         showScreen();
         maybeOpenCamera();
+    }
+
+    @Override
+    protected void onActivityResult(int requestCode, int resultCode, Intent data) {
+        if (!measure.onActivityResult(requestCode, resultCode, data)) {
+            super.onActivityResult(requestCode, resultCode, data);
+        }
     }
 
     @Override
@@ -345,7 +370,8 @@ public final class SkinlabActivity extends Activity {
     }
 
     private void maybeOpenCamera() {
-        if (!resumed || camera != null || !previewReady || !permission.cameraAllowed() || isDestroyed()) {
+        if (!resumed || camera != null || !previewReady || !permission.cameraAllowed() || isDestroyed()
+                || measure.holding()) {
             return;
         }
         cameraProblem = "";
@@ -432,6 +458,24 @@ public final class SkinlabActivity extends Activity {
         return Math.floorMod(-clockwise, 360);
     }
 
+    /** A measurement starts: the camera and the simulation take no time from it. */
+    private void holdForMeasurement() {
+        closeCamera();
+        SkeletalAnimatedMesh m = mesh;
+        if (m != null) {
+            m.stop();
+        }
+    }
+
+    /** The measurement ended: the camera and the simulation come back (if the Activity is in front). */
+    private void releaseAfterMeasurement() {
+        SkeletalAnimatedMesh m = mesh;
+        if (resumed && m != null && !m.isClosed()) {
+            m.start();
+        }
+        maybeOpenCamera();
+    }
+
     private void nextModel() {
         models.load(catalog.next());
     }
@@ -449,7 +493,7 @@ public final class SkinlabActivity extends Activity {
         SkeletalAnimatedMesh old = mesh;
         mesh = next;
         renderer.setModel(model);
-        if (resumed) {
+        if (resumed && !measure.holding()) {
             next.start();
         }
         if (old != null) {

@@ -92,12 +92,17 @@ final class AppDriver {
 
     /** Starts the Activity (create, start, resume) with the camera permission granted or not. */
     AppDriver start(boolean cameraGranted) {
+        return start(cameraGranted, null);
+    }
+
+    /** As {@link #start(boolean)}, launched by {@code intent} (its extras), or as the launcher does for null. */
+    AppDriver start(boolean cameraGranted, Intent intent) {
         if (cameraGranted) {
             shadowOf(app()).grantPermissions(Manifest.permission.CAMERA);
         } else {
             shadowOf(app()).denyPermissions(Manifest.permission.CAMERA);
         }
-        controller = Robolectric.buildActivity(SkinlabActivity.class).setup();
+        controller = Robolectric.buildActivity(SkinlabActivity.class, intent).setup();
         idle();
         return this;
     }
@@ -320,11 +325,12 @@ final class AppDriver {
         return null;
     }
 
-    /** The live threads the app starts (camera, tracking, model loader, simulation). */
+    /** The live threads the app starts (camera, tracking, model loader, simulation, measuring, saving). */
     static Set<Thread> appThreads() {
         return Thread.getAllStackTraces().keySet().stream().filter(Thread::isAlive)
                 .filter(t -> t.getName().equals("camera") || t.getName().equals("tracking")
-                        || t.getName().equals("model-loader") || t.getName().startsWith("skinlab-simulation"))
+                        || t.getName().equals("model-loader") || t.getName().startsWith("skinlab-simulation")
+                        || t.getName().equals("measure") || t.getName().equals("save-results"))
                 .collect(Collectors.toSet());
     }
 }

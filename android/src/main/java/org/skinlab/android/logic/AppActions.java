@@ -8,13 +8,24 @@ import org.skinlab.simulation.AnimationConfig;
 
 /**
  * The on-screen buttons of the AR app, one per {@link AnimationConfig} function of the thesis plus
- * the mesh switch: each has a label that shows the current state and an action. The Activity only
- * lays them out and calls {@link Action#run()} on a tap (from the UI thread; AnimationConfig may be
- * changed from any thread).
+ * the mesh switch, the marker's size and the measurement ({@link DeviceMeasurement}): each has a
+ * label that shows the current state and an action. The Activity only lays them out and calls
+ * {@link Action#run()} on a tap (from the UI thread; AnimationConfig may be changed from any thread).
  */
 public final class AppActions {
     /** One button. */
     public record Action(String id, Supplier<String> label, Runnable run) {
+    }
+
+    /** The measurement's buttons: start or stop it, and save a copy of its file where the user chooses. */
+    public interface Measuring {
+        boolean running();
+
+        /** Starts a measurement, or stops the one running. */
+        void toggle();
+
+        /** Asks where to save a copy of the last measurement's file. */
+        void saveCopy();
     }
 
     private AppActions() {
@@ -22,9 +33,10 @@ public final class AppActions {
 
     /**
      * The buttons over {@code config}; {@code nextMesh} switches to the next bundled model,
-     * {@code marker} is the printed marker's size (measured by the user: the poses scale with it).
+     * {@code marker} is the printed marker's size (measured by the user: the poses scale with it),
+     * {@code measuring} the measurement.
      */
-    public static List<Action> of(AnimationConfig config, Runnable nextMesh, MarkerSize marker) {
+    public static List<Action> of(AnimationConfig config, Runnable nextMesh, MarkerSize marker, Measuring measuring) {
         return List.of(
                 new Action("mesh-updates", () -> config.isMeshUpdatesRunning() ? "Stop mesh" : "Start mesh",
                         () -> config.setMeshUpdatesRunning(!config.isMeshUpdatesRunning())),
@@ -38,6 +50,8 @@ public final class AppActions {
                 new Action("slower", () -> "Slower", config::slower),
                 new Action("faster", () -> "Faster", config::faster),
                 new Action("next-mesh", () -> "Next mesh", nextMesh),
-                new Action("marker-size", marker::label, marker::next));
+                new Action("marker-size", marker::label, marker::next),
+                new Action("measure", () -> measuring.running() ? "Stop measuring" : "Measure", measuring::toggle),
+                new Action("save-results", () -> "Save results", measuring::saveCopy));
     }
 }

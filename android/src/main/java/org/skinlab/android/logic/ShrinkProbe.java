@@ -17,15 +17,20 @@ import org.skinlab.ar.TrackerConfig;
 import org.skinlab.ar.synthetic.PlacedMarker;
 import org.skinlab.ar.synthetic.SceneOptions;
 import org.skinlab.ar.synthetic.SyntheticCamera;
+import org.skinlab.bench.DeviceResults;
+import org.skinlab.bench.DeviceResultsReader;
+import org.skinlab.bench.FrameTimes;
+import org.skinlab.bench.Rounds;
 import org.skinlab.importer.ModelImporter;
 import org.skinlab.simulation.AnimationConfig;
 import org.skinlab.simulation.Frame;
 import org.skinlab.simulation.SkeletalAnimatedMesh;
 import org.skinlab.skinning.CentresOfRotation;
+import org.skinlab.skinning.SkinningMethod;
 
 /**
  * Runs the app's core paths (import, simulation, CoR's centres and their cache, the skinning
- * shader's text with core's formulas, marker tracking) on a desktop JVM after R8 has shrunk them
+ * shader's text with core's formulas, marker tracking, the measurement and its file) on a desktop JVM after R8 has shrunk them
  * with the APK's rules ({@code gradle :android:checkShrunk}): the APK cannot be run here, but this
  * shows that shrinking left BoofCV, JOML and core working (nothing they reach by reflection or as
  * a resource was removed). Exits 0 and prints "shrunk app paths work" on success.
@@ -44,6 +49,9 @@ public final class ShrinkProbe {
             throw new IllegalStateException("the shrunk app's skinning shader lacks the shared formulas");
         }
         probeTracker();
+        if (args.length > 0) {
+            probeMeasurement(Path.of(args[0]));
+        }
         System.out.println("shrunk app paths work");
     }
 
@@ -71,6 +79,34 @@ public final class ShrinkProbe {
             Files.delete(files.get(0));
         }
         Files.delete(cache);
+    }
+
+    /**
+     * "Measure" on one model, briefly and without a GL thread: the frame timings, the device file
+     * written by jackson-core's generator, and read back.
+     */
+    private static void probeMeasurement(Path model) throws Exception {
+        Path folder = Files.createTempDirectory("skinlab-measure");
+        MeasureProtocol brief = new MeasureProtocol("probe", new FrameTimes.Protocol(Rounds.MIN_RUNS, 0.01, 0.001,
+                0.001), 0.01, 1, 1);
+        DeviceMeasurement m = new DeviceMeasurement(name -> Files.newInputStream(model.resolveSibling(name)),
+                List.of(model.getFileName().toString()), brief, new DrawnCopies(0.05),
+                new DeviceResults.App("org.skinlab.android", "probe", 1), () -> new DeviceResults.Device("probe",
+                        "probe", "probe", "0", 26, List.of("probe"), new DeviceResults.Cpu(1, null, null), 60),
+                folder.toFile());
+        m.start();
+        while (m.running()) {
+            Thread.sleep(10);
+        }
+        if (m.written() == null) {
+            throw new IllegalStateException("the shrunk measurement wrote nothing: " + m.status());
+        }
+        DeviceResults r = DeviceResultsReader.read(Files.readAllBytes(m.written().toPath()), "probe");
+        if (r.models().size() != 1 || r.models().get(0).methods().size() != SkinningMethod.values().length) {
+            throw new IllegalStateException("the shrunk measurement's file lacks timings: " + r);
+        }
+        Files.delete(m.written().toPath());
+        Files.delete(folder);
     }
 
     /** A calibrated camera with a lens: the tracker's lens path as it ships. */

@@ -30,9 +30,11 @@ class AndroidLogicTest {
         AtomicInteger next = new AtomicInteger();
         double[] told = new double[1];
         MarkerSize marker = new MarkerSize(m -> told[0] = m);
-        List<AppActions.Action> actions = AppActions.of(config, next::incrementAndGet, marker);
+        FakeMeasuring measuring = new FakeMeasuring();
+        List<AppActions.Action> actions = AppActions.of(config, next::incrementAndGet, marker, measuring);
         assertEquals(List.of("mesh-updates", "animation", "follow-camera", "method", "interpolation", "slower", "faster",
-                "next-mesh", "marker-size"), actions.stream().map(AppActions.Action::id).toList());
+                "next-mesh", "marker-size", "measure", "save-results"),
+                actions.stream().map(AppActions.Action::id).toList());
         assertEquals("Marker 100 mm", actions.get(8).label().get(), "docs/marker's default");
         actions.get(8).run().run();
         assertEquals(0.15, told[0], 1e-12);
@@ -65,6 +67,35 @@ class AndroidLogicTest {
         assertEquals(1 / AnimationConfig.SPEED_STEP, config.speed(), 1e-12);
         actions.get(7).run().run();
         assertEquals(1, next.get());
+        assertEquals("Measure", actions.get(9).label().get());
+        actions.get(9).run().run();
+        assertEquals("Stop measuring", actions.get(9).label().get(), "a second tap stops it");
+        actions.get(9).run().run();
+        assertEquals("Measure", actions.get(9).label().get());
+        assertEquals("Save results", actions.get(10).label().get());
+        actions.get(10).run().run();
+        assertEquals(1, measuring.saves);
+    }
+
+    /** A measurement that runs between two taps. */
+    private static final class FakeMeasuring implements AppActions.Measuring {
+        boolean running;
+        int saves;
+
+        @Override
+        public boolean running() {
+            return running;
+        }
+
+        @Override
+        public void toggle() {
+            running = !running;
+        }
+
+        @Override
+        public void saveCopy() {
+            saves++;
+        }
     }
 
     @Test
@@ -152,7 +183,8 @@ class AndroidLogicTest {
     @Test
     void theMethodButtonOffersEveryMethodAndTheChoiceOfEachIsSaved() {
         AnimationConfig config = new AnimationConfig();
-        AppActions.Action method = AppActions.of(config, () -> { }, new MarkerSize(m -> { })).get(3);
+        AppActions.Action method = AppActions.of(config, () -> { }, new MarkerSize(m -> { }),
+                new FakeMeasuring()).get(3);
         java.util.Set<SkinningMethod> offered = java.util.EnumSet.noneOf(SkinningMethod.class);
         for (SkinningMethod m : SkinningMethod.values()) {
             assertEquals(m, config.method());

@@ -22,6 +22,7 @@ import org.skinlab.ar.MarkerDictionary;
 import org.skinlab.ar.TrackerConfig;
 import org.skinlab.desktop.bench.ArFrameInput;
 import org.skinlab.desktop.bench.BenchCorpus;
+import org.skinlab.desktop.eval.EvalDeviceFiles;
 import org.skinlab.desktop.eval.Evaluation;
 
 /**
@@ -32,7 +33,8 @@ import org.skinlab.desktop.eval.Evaluation;
         description = {"The evaluation: measures every section and writes DIR/README.md, one PNG per figure and"
                 + " DIR/results.json with every number. Sections: load (import time: our assets, the shared"
                 + " corpus, the conformance suite, assimp beside), time (time per deformation: LBS, DQS, CoR; SIMD and"
-                + " scalar; 4 influences and all; beside the thesis' table), crowds (characters per frame against threads"
+                + " scalar; 4 influences and all; beside the thesis' table), phone (phones added with --add-device beside the"
+                + " thesis' Galaxy S7 and this machine's scalar kernels), crowds (characters per frame against threads"
                 + " and characters on the CPU, drawn fps against copies with CPU and GPU skinning), quality (volume kept"
                 + " over each clip, joint ring against twist, bulge against bend, largest distance between methods, the"
                 + " error of capping influences), pictures (the viewer's screenshots of each method at each asset's"
@@ -42,7 +44,9 @@ import org.skinlab.desktop.eval.Evaluation;
                 + " phone: time against vertices, influences and joints with fitted lines; a recommendation per use"
                 + " drawn from the other sections).",
             "Run it from the repository (it reads assets/ and ../shared), under xvfb-run -a without a display (the pictures"
-                + " and the drawn crowds need one). The full run takes about 10 minutes on 2 cores; --quick under 3."})
+                + " and the drawn crowds need one). The full run takes about 10 minutes on 2 cores; --quick under 3.",
+            "--add-device FILE measures nothing: it adds a phone's results-android.json (the Android app's Measure) to"
+                + " DIR/results.json's phone section and writes DIR/README.md and the figures again from results.json."})
 public final class EvalCommand implements Callable<Integer> {
     @Option(names = "--out", paramLabel = "DIR", description = "where the report goes (default: ${DEFAULT-VALUE})")
     Path out = Path.of("docs/evaluation");
@@ -52,8 +56,8 @@ public final class EvalCommand implements Callable<Integer> {
     boolean quick;
 
     @Option(names = "--only", paramLabel = "SECTION", split = ",",
-            description = "only these sections (comma-separated), of: load, time, crowds, quality, pictures, tracking,"
-                    + " ar-frame, advice")
+            description = "only these sections (comma-separated), of: load, time, phone, crowds, quality, pictures,"
+                    + " tracking, ar-frame, advice, claims")
     List<String> only = new ArrayList<>();
 
     @Option(names = "--ar-video", paramLabel = "FILE", description = "a real camera video (MP4 with H.264 that JCodec"
@@ -68,11 +72,18 @@ public final class EvalCommand implements Callable<Integer> {
             + " aruco_mip_36h12)")
     String arDictionary;
 
+    @Option(names = "--add-device", paramLabel = "FILE", description = "add a phone's results-android.json (the"
+            + " Android app's Measure) to DIR/results.json and write the report again from it, measuring nothing")
+    Path addDevice;
+
     @Spec
     CommandSpec spec;
 
     @Override
     public Integer call() throws IOException {
+        if (addDevice != null) {
+            return addDevice();
+        }
         Set<String> sections = selected();
         Path root = BenchCorpus.repositoryRoot(Path.of(""));
         if (root == null) {
@@ -127,6 +138,23 @@ public final class EvalCommand implements Callable<Integer> {
         } catch (IllegalArgumentException | IOException e) {
             throw new CommandFailure(ExitCodes.INVALID_FILE, "eval: " + e.getMessage(), e);
         }
+    }
+
+    /** --add-device: the phone's file into the report, nothing measured. */
+    private int addDevice() throws IOException {
+        if (quick || !only.isEmpty() || arVideo != null) {
+            throw usage("--add-device measures nothing: it takes no --quick, --only or --ar-video");
+        }
+        if (!Files.isDirectory(out)) {
+            throw usage("--out: no report folder at " + out + " (skinlab eval writes one)");
+        }
+        EvalDeviceFiles.Added added = EvalDeviceFiles.add(out, addDevice);
+        PrintWriter o = spec.commandLine().getOut();
+        o.printf(Locale.ROOT, "eval: %s %s in %s; README.md and %d figure%s written from it%n",
+                added.replaced() ? "replaced the earlier file of" : "added", added.device(), out.resolve("results.json"),
+                added.written().figures, added.written().figures == 1 ? "" : "s");
+        o.flush();
+        return ExitCodes.OK;
     }
 
     /** The section keys --only names; empty (all) without it. */

@@ -1,5 +1,7 @@
 package org.skinlab.desktop.eval;
 
+import java.util.function.Function;
+
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
@@ -41,21 +43,26 @@ final class EvalClaimsSection implements EvalSection {
 
     @Override
     public void measure(EvalContext context, ObjectNode results) {
+        derive(context::measured, results);
+    }
+
+    @Override
+    public void derive(Function<String, JsonNode> sections, ObjectNode results) {
         results.put("requirementsChapter", 4.2).put("resultsChapter", 6).put("deformationChapter", 5.8);
         ArrayNode claims = results.putArray("claims");
-        EvalClaims.load(context.measured("load"), claims.addObject());
-        EvalClaims.playback(context.measured("crowds"), claims.addObject());
+        EvalClaims.load(sections.apply("load"), claims.addObject());
+        EvalClaims.playback(sections.apply("crowds"), claims.addObject());
         for (String kernels : new String[] {"scalar", "fastest"}) {
-            EvalClaims.dqsFasterOnAssets(context.measured("time"), kernels, claims.addObject());
+            EvalClaims.dqsFasterOnAssets(sections.apply("time"), kernels, claims.addObject());
         }
-        EvalClaims.dqsFasterInCpp(context.measured("time"), claims.addObject());
-        EvalClaims.meshes(context.measured("crowds"), 1, claims.addObject());
-        EvalClaims.meshes(context.measured("crowds"), EvalCrowdsSection.THESIS_MESHES, claims.addObject());
-        EvalClaims.lbsLosesVolume(context.measured("quality"), claims.addObject());
-        EvalClaims.dqsKeepsVolume(context.measured("quality"), claims.addObject());
-        EvalClaims.dqsBulges(context.measured("quality"), claims.addObject());
-        EvalClaims.phone(context.measured("phone"), claims.addObject());
-        EvalClaims.whyItFlips(context.measured("advice"), results.putObject("flip"));
+        EvalClaims.dqsFasterInCpp(sections.apply("time"), claims.addObject());
+        EvalClaims.meshes(sections.apply("crowds"), 1, claims.addObject());
+        EvalClaims.meshes(sections.apply("crowds"), EvalCrowdsSection.THESIS_MESHES, claims.addObject());
+        EvalClaims.lbsLosesVolume(sections.apply("quality"), claims.addObject());
+        EvalClaims.dqsKeepsVolume(sections.apply("quality"), claims.addObject());
+        EvalClaims.dqsBulges(sections.apply("quality"), claims.addObject());
+        EvalClaims.phone(sections.apply("phone"), claims.addObject());
+        EvalClaims.whyItFlips(sections.apply("advice"), results.putObject("flip"));
     }
 
     @Override

@@ -31,6 +31,7 @@ final class EvalContext {
     private String arDictionary;
     private ProgressBar bar;
     private JsonNode measured;
+    private JsonNode earlier;
     private long sectionStart;
     private long sectionLength;
 
@@ -113,6 +114,19 @@ final class EvalContext {
     /** The results of section {@code key} measured earlier in this run, or null when it was not run. */
     JsonNode measured(String key) {
         return measured == null || !measured.has(key) ? null : measured.get(key);
+    }
+
+    /** The sections of the results.json this run replaces (null when there was none, or it was not readable). */
+    void useEarlier(JsonNode bySection) {
+        this.earlier = bySection;
+    }
+
+    /**
+     * Section {@code key}'s results in the results.json this run replaces, or null: what a section
+     * that measures nothing itself keeps (the phones added to the report).
+     */
+    JsonNode earlier(String key) {
+        return earlier == null || !earlier.has(key) ? null : earlier.get(key);
     }
 
     void useBar(ProgressBar bar) {

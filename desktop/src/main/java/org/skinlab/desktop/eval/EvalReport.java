@@ -8,6 +8,7 @@ import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.math.BigDecimal;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -173,7 +174,7 @@ final class EvalReport {
         return this;
     }
 
-    /** The PNG files written so far. */
+    /** The PNG files written (or linked) so far. */
     List<String> figures() {
         return List.copyOf(figures);
     }

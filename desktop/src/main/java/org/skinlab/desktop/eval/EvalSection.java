@@ -29,6 +29,14 @@ interface EvalSection {
         return false;
     }
 
+    /**
+     * A summary's results derived again from the other sections' results ({@code sections}: key
+     * to results, null when not run), measuring nothing; what {@link #measure} of a summary does.
+     */
+    default void derive(java.util.function.Function<String, JsonNode> sections, ObjectNode results) {
+        throw new UnsupportedOperationException(key() + " measures; only a summary is derived");
+    }
+
     /** Its part of the report and its figures, from its results only. */
     void report(JsonNode results, EvalReport report);
 }

@@ -9,6 +9,7 @@ import java.util.Collection;
 import java.util.List;
 import java.util.stream.Collectors;
 
+import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.SerializationFeature;
 import com.fasterxml.jackson.databind.node.ObjectNode;
@@ -17,10 +18,13 @@ import me.tongfei.progressbar.ProgressBar;
 import me.tongfei.progressbar.ProgressBarBuilder;
 import me.tongfei.progressbar.ProgressBarConsumer;
 import me.tongfei.progressbar.ProgressBarStyle;
+import org.skinlab.desktop.CommandFailure;
+import org.skinlab.desktop.ExitCodes;
 
 /**
  * One run of the evaluation: each {@link EvalSection} measures into results.json, then README.md
- * and the figures are written from those results alone. See docs/evaluation.md.
+ * and the figures are written from those results alone ({@link #write}; {@link #rewrite} writes
+ * them again from a results.json on disk). See docs/evaluation.md.
  */
 public final class Evaluation {
     /**
@@ -29,8 +33,12 @@ public final class Evaluation {
      * A new section is one entry here.
      */
     static final List<EvalSection> SECTIONS = List.of(new EvalLoadSection(), new EvalTimeSection(),
-            new EvalCrowdsSection(), new EvalQualitySection(), new EvalPicturesSection(), new EvalTrackingSection(),
-            new EvalArFrameSection(), new EvalAdviceSection(), new EvalClaimsSection());
+            new EvalPhoneSection(), new EvalCrowdsSection(), new EvalQualitySection(), new EvalPicturesSection(),
+            new EvalTrackingSection(), new EvalArFrameSection(), new EvalAdviceSection(), new EvalClaimsSection());
+
+    /** The results' file in the report's folder. */
+    static final String RESULTS = "results.json";
+    private static final ObjectMapper MAPPER = new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT);
 
     private final List<EvalSection> sections;
     private final EvalContext context;
@@ -62,7 +70,7 @@ public final class Evaluation {
         return this;
     }
 
-    /** The sections' keys, in report order. */
+    /** The sections' keys, in the order they measure. */
     public static List<String> keys() {
         return SECTIONS.stream().map(EvalSection::key).collect(Collectors.toList());
     }
@@ -79,13 +87,13 @@ public final class Evaluation {
     }
 
     /**
-     * Measures every section, then writes results.json, README.md and the figures; {@code args} is
-     * the command line.
+     * Measures every section, then writes results.json, README.md and the figures ({@link #write});
+     * {@code args} is the command line.
      */
     public Written run(List<String> args) throws IOException {
         Files.createDirectories(out);
-        ObjectMapper mapper = new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT);
-        ObjectNode results = mapper.createObjectNode();
+        context.useEarlier(earlierSections(out));
+        ObjectNode results = MAPPER.createObjectNode();
         EvalMachine.describe(results.putObject("machine"), args, context.root());
         results.put("quick", context.quick());
         results.put("started", Instant.now().toString());
@@ -94,15 +102,81 @@ public final class Evaluation {
         results.put("seconds", EvalReport.round((System.nanoTime() - start) / 1e9));
         EvalNoise.summarise(results.get("sections"), results.at("/machine/loadAverageStart").asDouble(),
                 results.putObject("noise"));
-        mapper.writeValue(out.resolve("results.json").toFile(), results);
+        return write(out, results);
+    }
+
+    /**
+     * Writes {@code results} as {@code out}/results.json, and README.md and the figures from them
+     * alone, measuring nothing: the sections the results hold, the summaries first (derived again
+     * from the others' results: an added phone changes the claims). A figure that a section cannot
+     * draw again from its results (the pictures) is kept as the run that measured drew it, when its
+     * PNG is in the folder ({@link EvalReport#existing}); nothing is deleted.
+     */
+    static Written write(Path out, ObjectNode results) throws IOException {
+        Files.createDirectories(out);
+        ObjectNode bySection = (ObjectNode) results.get("sections");
+        List<EvalSection> written = new java.util.ArrayList<>();
+        for (EvalSection s : SECTIONS) {
+            if (s.summary() && bySection.has(s.key())) {
+                s.derive(bySection::get, bySection.putObject(s.key()));
+                written.add(s);
+            }
+        }
+        SECTIONS.stream().filter(s -> !s.summary() && bySection.has(s.key())).forEach(written::add);
+        MAPPER.writeValue(out.resolve(RESULTS).toFile(), results);
         EvalReport report = new EvalReport(out, results.get("machine"));
-        header(report, results);
-        for (EvalSection s : reportOrder()) {
+        header(report, results, written);
+        for (EvalSection s : written) {
             report.heading(2, s.title());
             s.report(results.get("sections").get(s.key()), report);
         }
         Files.writeString(out.resolve("README.md"), report.markdown());
         return new Written(report.figures().size(), results.get("seconds").asDouble());
+    }
+
+    /**
+     * Writes README.md and the figures again from {@code out}/results.json alone, measuring
+     * nothing ({@link #write}).
+     *
+     * @throws CommandFailure (usage) when the folder holds no readable results.json
+     */
+    public static Written rewrite(Path out) throws IOException {
+        return write(out, readResults(out));
+    }
+
+    /**
+     * {@code out}/results.json, as an earlier run wrote it.
+     *
+     * @throws CommandFailure (usage) naming the file when it is missing, not JSON or not a run's results
+     */
+    static ObjectNode readResults(Path out) {
+        Path file = out.resolve(RESULTS);
+        if (!Files.isRegularFile(file)) {
+            throw new CommandFailure(ExitCodes.USAGE, file + ": not found (skinlab eval writes it)", null);
+        }
+        JsonNode tree;
+        try {
+            tree = MAPPER.readTree(file.toFile());
+        } catch (IOException e) {
+            throw new CommandFailure(ExitCodes.USAGE, file + ": not readable as JSON: " + e.getMessage(), e);
+        }
+        for (String field : new String[] {"machine", "sections", "seconds", "quick", "started"}) {
+            if (tree == null || !tree.isObject() || !tree.has(field)) {
+                throw new CommandFailure(ExitCodes.USAGE, file + ": /" + field + ": missing (not the results of"
+                        + " skinlab eval)", null);
+            }
+        }
+        return (ObjectNode) tree;
+    }
+
+    /** The sections of the results.json already in {@code out}, or null when there is none or it is not readable. */
+    private static JsonNode earlierSections(Path out) {
+        try {
+            JsonNode earlier = MAPPER.readTree(out.resolve(RESULTS).toFile());
+            return earlier != null && earlier.path("sections").isObject() ? earlier.get("sections") : null;
+        } catch (IOException e) {
+            return null; // none, or not ours: this run replaces it
+        }
     }
 
     /** Each section's measurements into its node of {@code bySection}, behind one progress bar. */
@@ -129,15 +203,7 @@ public final class Evaluation {
         }
     }
 
-    /** The run's sections as the report orders them: the summaries first. */
-    private List<EvalSection> reportOrder() {
-        List<EvalSection> order = new java.util.ArrayList<>();
-        sections.stream().filter(EvalSection::summary).forEach(order::add);
-        sections.stream().filter(s -> !s.summary()).forEach(order::add);
-        return order;
-    }
-
-    private void header(EvalReport report, ObjectNode results) {
+    private static void header(EvalReport report, ObjectNode results, List<EvalSection> sections) {
         report.heading(1, "Evaluation");
         report.paragraph("Generated by `" + results.at("/machine/command").asText() + "` at commit `"
                 + results.at("/machine/commit").asText() + "`" + (results.at("/machine/uncommittedChanges").asBoolean()
@@ -150,9 +216,11 @@ public final class Evaluation {
             report.line("- `" + line + "`");
         }
         report.line("");
-        report.paragraph("Sections: " + reportOrder().stream().map(EvalSection::title).collect(Collectors.joining(", "))
+        report.paragraph("Sections: " + sections.stream().map(EvalSection::title).collect(Collectors.joining(", "))
                 + ".");
-        report.paragraph(EvalNoise.paragraph(results));
+        if (results.has("noise")) {
+            report.paragraph(EvalNoise.paragraph(results));
+        }
     }
 
     private static long total(long[] lengths) {
