@@ -33,23 +33,20 @@ final class EvalAdvice {
                 c.put("crowd", crowds.get("threadCrowd").asInt());
                 for (JsonNode p : m.get("threads")) {
                     if (p.get("threads").asInt() == crowds.get("cores").asInt()) {
-                        c.put(p.get("method").asText() + "PerFrame", Math.round(p.get("charactersPerFrame").asDouble()));
+                        c.put(p.get("method").asText() + "PerFrame",
+                                Math.round(p.at("/charactersPerFrame/median").asDouble()));
                     }
                 }
             }
-            JsonNode render = crowds.path("render");
-            if (render.has("renderer")) {
-                for (JsonNode row : crowds.path("atTwelve")) {
-                    if (row.get("what").asText().equals("render-gpu") && row.get("method").asText().equals("dqs")) {
-                        ObjectNode d = in.putObject("drawn");
-                        d.put("file", row.get("file").asText());
-                        d.put("renderer", render.get("renderer").asText());
-                        d.put("software", render.path("software").asBoolean(false));
-                        d.put("copies", EvalCrowdsSection.THESIS_MESHES);
-                        d.put("gpuDqsFps", row.get("fps").asDouble());
-                        d.put("thesisDqsFps", row.get("thesisFps").asDouble());
-                    }
-                }
+            JsonNode dqs = crowds.at("/atTwelve/drawn/shader/dqs");
+            if (dqs.has("fps")) {
+                ObjectNode d = in.putObject("drawn");
+                d.put("file", crowds.at("/atTwelve/file").asText());
+                d.put("renderer", crowds.at("/atTwelve/renderer").asText());
+                d.put("software", crowds.at("/atTwelve/software").asBoolean());
+                d.put("copies", crowds.at("/atTwelve/copies").asInt());
+                d.put("gpuDqsFps", dqs.at("/fps/median").asDouble());
+                d.put("thesisDqsFps", dqs.get("thesisFps").asDouble());
             }
         }
         JsonNode tracking = context.measured("tracking");
