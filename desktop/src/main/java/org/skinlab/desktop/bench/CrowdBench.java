@@ -30,6 +30,10 @@ public final class CrowdBench {
     public static final double FRAME_MILLIS = 1000.0 / 60;
     /** Most timed frames per run. */
     static final int MAX_FRAMES = 1 << 16;
+    /** Fewest timed frames per run. */
+    public static final int MIN_FRAMES = 5;
+    /** Fewest frames of a run's warm-up (the caches, after another crowd's run). */
+    public static final int MIN_WARMUP_FRAMES = 2;
     /** Bytes a frame below which the kernels count as compiled (a frame of an uncompiled one allocates megabytes). */
     public static final int COMPILED_BYTES = 1024;
 
@@ -112,8 +116,8 @@ public final class CrowdBench {
      * Times each crowd in {@code protocol.rounds()} runs, interleaved ({@link Rounds}: each round
      * runs every crowd once, each round starting one further along the list), so that the
      * machine's drift falls on every crowd alike. A run is frames for the protocol's warm-up (its
-     * first round's warm-up for round 0; at least 2 frames: the caches, after another crowd's run),
-     * then timed frames for {@code protocol.seconds()} (at least 5, at most {@value #MAX_FRAMES});
+     * first round's warm-up for round 0; at least {@value #MIN_WARMUP_FRAMES} frames), then timed
+     * frames for {@code protocol.seconds()} ({@value #MIN_FRAMES} to {@value #MAX_FRAMES});
      * its value is the median frame. {@code afterRun} runs after each run (progress). Results in the
      * order of {@code crowds}. The JIT is expected warm ({@link #warmUp}).
      */
@@ -145,13 +149,13 @@ public final class CrowdBench {
         return timings;
     }
 
-    /** One run of a crowd: frames for {@code warmupSeconds} (at least 2), then timed frames for {@code seconds}. */
+    /** One run of a crowd: frames for {@code warmupSeconds}, then timed frames for {@code seconds}. */
     private Run run(Crowd crowd, double warmupSeconds, double seconds) {
         int count = crowd.characters();
         method = crowd.method();
         try (CrowdThreads pool = new CrowdThreads(crowd.threads(), this::character)) {
             long warmupEnd = System.nanoTime() + (long) (warmupSeconds * 1e9);
-            for (int f = 0; f < 2 || System.nanoTime() < warmupEnd; f++) {
+            for (int f = 0; f < MIN_WARMUP_FRAMES || System.nanoTime() < warmupEnd; f++) {
                 step(pool, count);
             }
             long[] ids = pool.threadIds(Thread.currentThread());
@@ -161,7 +165,7 @@ public final class CrowdBench {
             long workerItems = pool.workerItems();
             int n = 0;
             long end = System.nanoTime() + (long) (seconds * 1e9);
-            while (n < MAX_FRAMES && (n < 5 || System.nanoTime() < end)) {
+            while (n < MAX_FRAMES && (n < MIN_FRAMES || System.nanoTime() < end)) {
                 long t0 = System.nanoTime();
                 step(pool, count);
                 micros[n++] = (System.nanoTime() - t0) / 1e3;

@@ -31,7 +31,7 @@ import org.skinlab.skinning.SkinningMethod;
  * simulation stepped every frame on the render thread (so CPU skinning skins every copy, as the
  * thesis' meshes were) and drawn with its own palette, in an off-screen window without vsync.
  * A run of a {@link Scene} is frames of warm-up (at least {@value #MIN_WARMUP_FRAMES}), then
- * frames for a given time (at least 5), timed between two {@code glFinish}es (so the time is the
+ * frames for a given time (at least {@value #MIN_FRAMES}), timed between two {@code glFinish}es (so the time is the
  * frames' mean, with the renderer's queue drained), with the bytes the render thread allocated
  * per timed frame. {@link #measure(Model, List, int, FrameTimes.Protocol, Runnable)} runs several
  * scenes in interleaved rounds.
@@ -41,7 +41,9 @@ public final class RenderBench implements AutoCloseable {
     private static final List<String> SOFTWARE = List.of("llvmpipe", "softpipe", "swrast", "swiftshader",
             "lavapipe", "software rasterizer", "software renderer");
     /** Fewest frames of a run's warm-up (the first uploads and a drained queue). */
-    static final int MIN_WARMUP_FRAMES = 3;
+    public static final int MIN_WARMUP_FRAMES = 2;
+    /** Fewest timed frames of a run. */
+    public static final int MIN_FRAMES = 5;
     /** The warm-up of a single {@link #measure(Model, boolean, SkinningMethod, int, double)}. */
     private static final double WARMUP_SECONDS = 0.1;
 
@@ -239,7 +241,7 @@ public final class RenderBench implements AutoCloseable {
 
         /**
          * Frames for {@code warmupSeconds} (at least {@value #MIN_WARMUP_FRAMES}), then timed frames
-         * for {@code seconds} (at least 5).
+         * for {@code seconds} (at least {@value #MIN_FRAMES}).
          */
         Run run(double warmupSeconds, double seconds) {
             com.sun.management.ThreadMXBean threads = (com.sun.management.ThreadMXBean) ManagementFactory
@@ -256,7 +258,7 @@ public final class RenderBench implements AutoCloseable {
             long bytesAtStart = threads.getThreadAllocatedBytes(thread);
             int frames = 0;
             long end = start + (long) (seconds * 1e9);
-            while (frames < 5 || System.nanoTime() < end) {
+            while (frames < MIN_FRAMES || System.nanoTime() < end) {
                 frame();
                 frames++;
             }

@@ -20,12 +20,18 @@ import org.skinlab.skinning.SkinningMethod;
  * The drawn part of {@link EvalCrowdsSection}: {@code bench-render}'s frames per second against
  * copies ({@link RenderBench}, in this process), each copy skinned by our CPU kernels or in the
  * vertex shader, each method, with the renderer's name; skipped, with the reason, without a
- * display. Each count's six series run in interleaved rounds. A software rasteriser (Mesa's
+ * display. Each count's series run in interleaved rounds. A software rasteriser (Mesa's
  * llvmpipe under Xvfb) runs the vertex shader on the CPU too: then no text, title or label calls
  * it a GPU ({@link #skinningLabel}).
  */
 final class EvalCrowdsRender {
     static final List<Integer> QUICK_STEPS = List.of(1, 12);
+    /**
+     * {@code --quick}'s methods: the thesis' pair. A drawn run takes at least 7 frames, which a busy
+     * machine stretches (12 copies took 250 ms a frame under a load of 24 on 2 cores), so CoR's
+     * series, a third of the drawing, are the full run's only.
+     */
+    static final List<SkinningMethod> QUICK_METHODS = List.of(SkinningMethod.LBS, SkinningMethod.DQS);
     static final int MAX_INSTANCES = 64;
     static final int WIDTH = 640;
     static final int HEIGHT = 480;
@@ -50,11 +56,12 @@ final class EvalCrowdsRender {
     /** Measures into {@code results}; the progress runs from {@code start} to 1 of the section. */
     static void measure(EvalContext context, ObjectNode results, Path file, double start) {
         boolean quick = context.quick();
-        double seconds = quick ? 0.08 : 0.3;
-        double runWarmup = quick ? 0.03 : 0.1;
+        double seconds = quick ? 0.05 : 0.3;
+        double runWarmup = quick ? 0.02 : 0.1;
         double warmup = quick ? 0.5 : 2.0;
         double minFps = quick ? 0 : 10;
         List<Integer> steps = quick ? QUICK_STEPS : RenderBench.steps(MAX_INSTANCES);
+        List<SkinningMethod> methods = quick ? QUICK_METHODS : CrowdBench.METHODS;
         results.put("file", file.getFileName().toString());
         if (display() == null) {
             skip(context, results, "no display (neither DISPLAY nor WAYLAND_DISPLAY is set): run eval under"
@@ -67,11 +74,15 @@ final class EvalCrowdsRender {
         results.put("runs", EvalCrowdsSection.RUNS);
         results.put("seconds", seconds);
         results.put("runWarmupSeconds", runWarmup);
+        results.put("runWarmupFrames", RenderBench.MIN_WARMUP_FRAMES);
+        results.put("minFrames", RenderBench.MIN_FRAMES);
         results.put("warmupSeconds", warmup);
         results.put("minFps", minFps);
         results.put("maxInstances", steps.get(steps.size() - 1));
         ArrayNode stepsNode = results.putArray("steps");
         steps.forEach(stepsNode::add);
+        ArrayNode methodsNode = results.putArray("methods");
+        methods.forEach(m -> methodsNode.add(m.key()));
         Model model = ModelFiles.load(file).model;
         RenderBench bench;
         try {
@@ -87,7 +98,7 @@ final class EvalCrowdsRender {
             bench.warmUp(model, warmup);
             List<RenderBench.Series> series = new ArrayList<>();
             for (boolean shader : new boolean[] {false, true}) {
-                for (SkinningMethod method : CrowdBench.METHODS) {
+                for (SkinningMethod method : methods) {
                     series.add(new RenderBench.Series(shader, method));
                 }
             }
@@ -149,6 +160,14 @@ final class EvalCrowdsRender {
                 : "skinned in the vertex shader (on the GPU)";
     }
 
+    /** The drawn methods, e.g. "LBS, DQS and COR". */
+    private static String methodsText(JsonNode render) {
+        List<String> names = new ArrayList<>();
+        render.get("methods").forEach(m -> names.add(EvalCrowdsSection.upper(m)));
+        return names.size() == 1 ? names.get(0) : String.join(", ", names.subList(0, names.size() - 1)) + " and "
+                + names.get(names.size() - 1);
+    }
+
     /** Which copies were drawn: the steps, and where the sweep stops. */
     private static String stepsText(JsonNode render, String at, JsonNode results) {
         List<String> steps = new ArrayList<>();
@@ -169,16 +188,18 @@ final class EvalCrowdsRender {
         }
         boolean software = render.get("software").asBoolean();
         report.paragraph("`bench-render`'s loop in this process: a grid of copies of `" + render.get("file").asText()
-                + "`, each its own simulation stepped every frame, " + skinningLabel(render, CPU, true) + " (every copy"
-                + " skinned on the render thread, as the thesis' meshes were skinned) or "
-                + skinningLabel(render, SHADER, true) + " (each copy's palette uploaded), drawn "
+                + "`, each its own simulation stepped every frame and either " + skinningLabel(render, CPU, true)
+                + " on the render thread, as the thesis' meshes were skinned, or " + skinningLabel(render, SHADER, true)
+                + " from its uploaded palette; drawn "
                 + EvalReport.num(results, at + "/width") + "x" + EvalReport.num(results, at + "/height")
                 + " off-screen without vsync. After a warm-up of " + EvalReport.num(results, at + "/warmupSeconds")
-                + " s per method, each count's six series (two skinnings, three methods) are timed in "
+                + " s per method, each count's series (each skinning with " + methodsText(render) + ") are timed in "
                 + EvalReport.num(results, at + "/runs") + " interleaved runs of "
-                + EvalReport.num(results, at + "/runWarmupSeconds") + " s of frames (at least 3) and a window of "
-                + EvalReport.num(results, at + "/seconds") + " s (at least 5 frames); a run's value is the window's"
-                + " mean frame, timed between two `glFinish`; " + stepsText(render, at, results)
+                + EvalReport.num(results, at + "/runWarmupSeconds") + " s of frames (at least "
+                + EvalReport.num(results, at + "/runWarmupFrames") + ") and a window of "
+                + EvalReport.num(results, at + "/seconds") + " s (at least "
+                + EvalReport.num(results, at + "/minFrames") + " frames); a run's value is the window's mean frame,"
+                + " timed between two `glFinish`; " + stepsText(render, at, results)
                 + ". Renderer: `" + render.get("renderer").asText() + "`, OpenGL `" + render.get("version").asText()
                 + "`." + (software ? " **This is a software rasteriser**: the drawing and the vertex shader run on"
                 + " this machine's CPU cores, beside our kernels, so both series measure this machine's CPU, not a"

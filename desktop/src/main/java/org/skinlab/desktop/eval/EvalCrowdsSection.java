@@ -51,8 +51,8 @@ final class EvalCrowdsSection implements EvalSection {
     @Override
     public double estimatedSeconds(EvalContext context) {
         // Measured on the project's 2-core machine while other work ran (warm-ups then take longer).
-        double render = EvalCrowdsRender.display() == null ? 0 : context.quick() ? 10 : 150;
-        return (context.quick() ? 20 : 150) + render;
+        double render = EvalCrowdsRender.display() == null ? 0 : context.quick() ? 9 : 150;
+        return (context.quick() ? 14 : 130) + render;
     }
 
     @Override
@@ -61,11 +61,11 @@ final class EvalCrowdsSection implements EvalSection {
         int cores = Runtime.getRuntime().availableProcessors();
         int[] counts = quick ? QUICK_CHARACTERS : CHARACTERS;
         int threadCrowd = quick ? 64 : 256;
-        double firstWarmup = quick ? 0.4 : 2.0;
+        double firstWarmup = quick ? 0.3 : 2.0;
         double maxWarmup = quick ? 3 : 10;
-        double runWarmup = quick ? 0.01 : 0.05;
-        double seconds = quick ? 0.03 : 0.2;
-        double threadSeconds = quick ? 0.05 : 0.4;
+        double runWarmup = quick ? 0.005 : 0.05;
+        double seconds = quick ? 0.02 : 0.15;
+        double threadSeconds = quick ? 0.03 : 0.3;
         results.put("cores", cores);
         results.put("runs", RUNS);
         results.put("frameBudgetMillis", EvalReport.round(CrowdBench.FRAME_MILLIS));
@@ -74,6 +74,8 @@ final class EvalCrowdsSection implements EvalSection {
         results.put("firstWarmupSeconds", firstWarmup);
         results.put("maxWarmupSeconds", maxWarmup);
         results.put("runWarmupSeconds", runWarmup);
+        results.put("runWarmupFrames", CrowdBench.MIN_WARMUP_FRAMES);
+        results.put("minFrames", CrowdBench.MIN_FRAMES);
         results.put("seconds", seconds);
         results.put("threadSeconds", threadSeconds);
         results.put("threadCrowd", threadCrowd);
@@ -202,13 +204,16 @@ final class EvalCrowdsSection implements EvalSection {
                 + " of threads (the caller's included) one at a time; the copies share the mesh and the kernels and"
                 + " own their poses and outputs; nothing is drawn, so these are skinning-only rates, not comparable"
                 + " with frames that are drawn (the drawn ones follow). Crowds run LBS, DQS and CoR; the outlook"
-                + " methods (bulge-free DQS, stretchable and twistable bones, splines) are timed per frame in the time section."
+                + " methods (bulge-free DQS, stretchable and twistable bones, splines) are timed per frame in the time"
+                + " section."
                 + " This machine has " + EvalReport.num(results, "/cores") + " cores.");
         report.paragraph("**Every timing is " + EvalReport.num(results, "/runs") + " runs**, interleaved: each"
                 + " round runs every method (in the threads sweep every method at every thread count) once, each"
                 + " round starting one further along, so that the machine's drift falls on all of them alike. A run"
-                + " is " + EvalReport.num(results, "/runWarmupSeconds") + " s of frames (at least 2; the caches"
-                + " after another method's run), then frames for a window; its value is the window's median frame."
+                + " is " + EvalReport.num(results, "/runWarmupSeconds") + " s of frames (at least "
+                + EvalReport.num(results, "/runWarmupFrames") + "; the caches after another method's run), then"
+                + " frames for a window (at least " + EvalReport.num(results, "/minFrames") + "); its value is the"
+                + " window's median frame."
                 + " The tables give the runs' median and, in brackets, their fastest and slowest; the figures draw"
                 + " the median with a bar from the fastest to the slowest run. First the threads: a crowd of "
                 + EvalReport.num(results, "/threadCrowd") + " copies, windows of "

@@ -128,9 +128,9 @@ final class EvalCrowdsThesis {
         boolean software = render.get("software").asBoolean();
         t.append(" Ours are `").append(render.get("file").asText()).append("` drawn by `")
                 .append(render.get("renderer").asText()).append("`");
-        t.append(software ? ", **a software rasteriser: the drawing ran on this machine's CPU cores**, the thesis'"
-                + " on its graphics hardware; its fps bound what this machine draws without one, not what a"
-                + " graphics processor would." : ".");
+        t.append(software ? ", **a software rasteriser: our drawing ran on this machine's CPU cores**, the thesis'"
+                + " on its graphics hardware, so ours say what this machine draws without graphics hardware, not"
+                + " what a graphics processor would." : ".");
         t.append(" Each cell: the median of our runs and, in brackets, the slowest and fastest run (fps).");
         report.paragraph(t.toString());
         report.header("copies", "thesis DQS fps", "thesis LBS fps", "ours DQS, CPU kernels", "ours LBS, CPU kernels",
