@@ -127,11 +127,12 @@ final class EvalCrowdsCharts {
         List<String> labels = new ArrayList<>();
         categories.forEach(c -> labels.add(Integer.toString(c)));
         categories(chart, labels, WIDE_LEGEND_PLOT);
-        int seriesCount = EvalCrowdsThesis.SKINNINGS.size() * CrowdBench.METHODS.size()
-                + EvalCrowdsThesis.METHODS.size();
+        List<SkinningMethod> methods = new ArrayList<>();
+        render.get("methods").forEach(m -> methods.add(SkinningMethod.fromKey(m.asText())));
+        int seriesCount = EvalCrowdsThesis.SKINNINGS.size() * methods.size() + EvalCrowdsThesis.METHODS.size();
         int s = 0;
         for (String skinning : EvalCrowdsThesis.SKINNINGS) {
-            for (SkinningMethod method : CrowdBench.METHODS) {
+            for (SkinningMethod method : methods) {
                 List<Double> x = new ArrayList<>();
                 List<JsonNode> spreads = new ArrayList<>();
                 for (JsonNode p : of(render.get("points"), method)) {
