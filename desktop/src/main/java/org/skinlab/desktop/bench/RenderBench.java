@@ -12,7 +12,6 @@ import java.util.Locale;
 import org.skinlab.bench.FrameTimes;
 import org.skinlab.bench.Rounds;
 import org.skinlab.bench.Spread;
-
 import org.skinlab.desktop.render.DrawSettings;
 import org.skinlab.desktop.render.GlWindow;
 import org.skinlab.desktop.render.ModelRenderer;
@@ -31,9 +30,9 @@ import org.skinlab.skinning.SkinningMethod;
  * simulation stepped every frame on the render thread (so CPU skinning skins every copy, as the
  * thesis' meshes were) and drawn with its own palette, in an off-screen window without vsync.
  * A run of a {@link Scene} is frames of warm-up (at least {@value #MIN_WARMUP_FRAMES}), then
- * frames for a given time (at least {@value #MIN_FRAMES}), timed between two {@code glFinish}es (so the time is the
- * frames' mean, with the renderer's queue drained), with the bytes the render thread allocated
- * per timed frame. {@link #measure(Model, List, int, FrameTimes.Protocol, Runnable)} runs several
+ * frames for a given time (at least {@value #MIN_FRAMES}), timed between two {@code glFinish}es
+ * (so the time is the frames' mean, with the renderer's queue drained), with the bytes the render
+ * thread allocated per timed frame. {@link #measure(Model, List, int, FrameTimes.Protocol, Runnable)} runs several
  * scenes in interleaved rounds.
  */
 public final class RenderBench implements AutoCloseable {

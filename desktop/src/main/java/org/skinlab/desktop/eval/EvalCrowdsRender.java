@@ -106,14 +106,15 @@ final class EvalCrowdsRender {
                     seconds);
             int total = steps.size() * series.size() * protocol.rounds();
             int[] done = {0};
-            // Each count's series interleaved; the sweep ends after the first count at which a series' median is
-            // below the lowest rate.
+            // Each count's series interleaved; from the thesis' 12 meshes on (they are compared whatever the
+            // rate), the sweep ends after the first count at which a series' median is below the lowest rate.
             List<RenderBench.Timing> timings = new ArrayList<>();
             for (int n : steps) {
                 List<RenderBench.Timing> atN = bench.measure(model, series, n, protocol,
                         () -> context.progress(start + (1 - start) * ++done[0] / total));
                 timings.addAll(atN);
-                if (atN.stream().anyMatch(t -> 1000 / t.msPerFrame().median() < minFps)) {
+                if (n >= EvalCrowdsThesis.THESIS_MESHES && atN.stream().anyMatch(t -> 1000 / t.msPerFrame().median()
+                        < minFps)) {
                     break;
                 }
             }
@@ -175,8 +176,9 @@ final class EvalCrowdsRender {
             steps.add(EvalReport.num(results, at + "/steps/" + i));
         }
         String text = "copies " + String.join(", ", steps);
-        return render.get("minFps").asDouble() > 0 ? text + "; the sweep stops after the first count at which a"
-                + " series' median is below " + EvalReport.num(results, at + "/minFps") + " fps" : text;
+        return render.get("minFps").asDouble() > 0 ? text + "; from " + EvalReport.num(results, "/atTwelve/copies")
+                + " copies on, the sweep stops after the first count at which a series' median is below "
+                + EvalReport.num(results, at + "/minFps") + " fps" : text;
     }
 
     /** Its part of the report; {@code at} is the pointer of {@code render} below {@code results}. */

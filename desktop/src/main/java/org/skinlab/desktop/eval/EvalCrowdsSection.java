@@ -115,8 +115,8 @@ final class EvalCrowdsSection implements EvalSection {
                 double copiesTimesBudget = threadCrowd * CrowdBench.FRAME_MILLIS * 1000;
                 EvalReport.putSpread(p, "charactersPerFrame", reciprocal(timing.frameMicros(), copiesTimesBudget));
             }
-            // Characters: the methods interleaved at each crowd size; the sweep ends after the first
-            // size at which a method's median frame is over the stop.
+            // Characters: the methods interleaved at each crowd size; from the thesis' 12 meshes on, the
+            // sweep ends after the first size at which a method's median frame is over the stop.
             List<CrowdBench.Timing> sweep = new ArrayList<>();
             for (int n : counts) {
                 List<CrowdBench.Crowd> atN = new ArrayList<>();
@@ -125,8 +125,8 @@ final class EvalCrowdsSection implements EvalSection {
                 }
                 List<CrowdBench.Timing> timings = bench.measure(atN, crowdRuns, progress);
                 sweep.addAll(timings);
-                if (timings.stream().anyMatch(t -> t.frameMicros().median() > STOP_BUDGETS * CrowdBench.FRAME_MILLIS
-                        * 1000)) {
+                if (n >= EvalCrowdsThesis.THESIS_MESHES && timings.stream().anyMatch(t -> t.frameMicros().median()
+                        > STOP_BUDGETS * CrowdBench.FRAME_MILLIS * 1000)) {
                     break;
                 }
             }
@@ -221,8 +221,9 @@ final class EvalCrowdsSection implements EvalSection {
                 + EvalReport.num(results, "/frameBudgetMillis") + " ms frame (copies times the budget over each run's"
                 + " median frame); then the crowd's size at all threads, windows of "
                 + EvalReport.num(results, "/seconds") + " s, up to " + EvalReport.num(results, "/maxCharacters")
-                + " copies or until a method's median frame takes more than " + EvalReport.num(results, "/stopMillis")
-                + " ms. Before a character's first run, each method runs its crowd at least "
+                + " copies or, from " + EvalReport.num(results, "/atTwelve/copies") + " copies on, until a method's"
+                + " median frame takes more than " + EvalReport.num(results, "/stopMillis") + " ms. Before a"
+                + " character's first run, each method runs its crowd at least "
                 + EvalReport.num(results, "/firstWarmupSeconds") + " s and on until its threads allocate under "
                 + EvalReport.num(results, "/compiledBytes") + " bytes a frame (the JIT has compiled the kernels; the"
                 + " Vector API allocates until it has), at most " + EvalReport.num(results, "/maxWarmupSeconds")
