@@ -108,8 +108,8 @@ final class EvalCrowdsCharts {
 
     /**
      * Drawn frames per second against copies: ours per skinning and method, and the thesis' drawn
-     * DQS and LBS points at 1, 4, 8 and 12 meshes. The copies are categories (the thesis' counts
-     * among ours), the series side by side within each.
+     * DQS and LBS points at 1, 4, 8 and 12 meshes. The copies are categories (the counts drawn, up
+     * to where the sweep stopped, and the thesis' counts), the series side by side within each.
      */
     static XYChart render(JsonNode render, JsonNode results) {
         boolean software = render.get("software").asBoolean();
@@ -117,8 +117,8 @@ final class EvalCrowdsCharts {
                 + (software ? " (on the CPU)" : "") + " and the thesis'", "copies of "
                 + render.get("file").asText(), "frames per second (" + EvalCharts.SPREAD + ")");
         TreeSet<Integer> counts = new TreeSet<>();
-        for (JsonNode n : render.get("steps")) {
-            counts.add(n.asInt());
+        for (JsonNode p : render.get("points")) {
+            counts.add(p.get("instances").asInt());
         }
         for (JsonNode t : results.get("thesis")) {
             counts.add(t.get("meshes").asInt());
