@@ -129,8 +129,8 @@ final class EvalCrowdsThesis {
         t.append(" Ours are `").append(render.get("file").asText()).append("` drawn by `")
                 .append(render.get("renderer").asText()).append("`");
         t.append(software ? ", **a software rasteriser: our drawing ran on this machine's CPU cores**, the thesis'"
-                + " on its graphics hardware, so ours say what this machine draws without graphics hardware, not"
-                + " what a graphics processor would." : ".");
+                + " on its desktop's OpenGL (the thesis does not name its hardware), so ours say what this machine"
+                + " draws without graphics hardware, not what a graphics processor would." : ".");
         t.append(" Each cell: the median of our runs and, in brackets, the slowest and fastest run (fps).");
         report.paragraph(t.toString());
         report.header("copies", "thesis DQS fps", "thesis LBS fps", "ours DQS, CPU kernels", "ours LBS, CPU kernels",
@@ -166,7 +166,7 @@ final class EvalCrowdsThesis {
         }
         report.paragraph("At " + EvalReport.num(results, "/atTwelve/copies") + " copies, ours / thesis (of the"
                 + " median)" + (render.get("software").asBoolean() ? ", ours drawn by a software rasteriser on this"
-                + " machine's CPU, the thesis' on its graphics hardware:" : ":"));
+                + " machine's CPU, the thesis' by its desktop's OpenGL:" : ":"));
         report.header("skinning", "method", "thesis fps", "our fps, median (min–max)", "ours / thesis");
         StringBuilder verdicts = new StringBuilder();
         for (String skinning : SKINNINGS) {
