@@ -1,10 +1,14 @@
 package org.skinlab.desktop.bench;
 
 import java.lang.management.ManagementFactory;
+import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 
 import org.skinlab.bench.FrameBench;
+import org.skinlab.bench.FrameTimes;
+import org.skinlab.bench.Rounds;
+import org.skinlab.bench.Spread;
 import org.skinlab.model.Model;
 import org.skinlab.skinning.SkinnedGeometry;
 import org.skinlab.skinning.SkinnedModel;
@@ -18,24 +22,36 @@ import org.skinlab.skinning.SkinningMethod;
  * ({@link FrameBench#frame}, the fastest kernels), the copies shared among a fixed pool of threads
  * ({@link CrowdThreads}). The copies share the geometries and skinners
  * ({@link SkinnedModel#newCharacter()}) and own their poses, palettes and outputs, as a crowd of
- * one character would; nothing is allocated per frame.
+ * one character would; nothing is allocated per frame. Crowds are timed in interleaved runs
+ * ({@link #measure}), after a warm-up that waits for the JIT ({@link #warmUp}).
  */
 public final class CrowdBench {
     /** A frame's budget at 60 Hz, in ms: what "characters per frame" divides. */
     public static final double FRAME_MILLIS = 1000.0 / 60;
-    /** Most timed frames per measurement. */
+    /** Most timed frames per run. */
     static final int MAX_FRAMES = 1 << 16;
+    /** Fewest timed frames per run. */
+    public static final int MIN_FRAMES = 5;
+    /** Fewest frames of a run's warm-up (the caches, after another crowd's run). */
+    public static final int MIN_WARMUP_FRAMES = 2;
     /** Bytes a frame below which the kernels count as compiled (a frame of an uncompiled one allocates megabytes). */
     public static final int COMPILED_BYTES = 1024;
 
+    /** A crowd to time: {@code characters} copies, each skinned with {@code method}, on {@code threads} threads. */
+    public record Crowd(SkinningMethod method, int characters, int threads) {
+    }
+
     /**
-     * Frames of a crowd: the median and fastest frame in ms, the bytes the crowd's threads
-     * allocated per timed frame (0 once the JIT has compiled the kernels), and the share of the
-     * copies the calling thread ran itself (1 on one thread; near 1 / threads when the pool's
-     * threads get cores).
+     * A crowd's frames over several runs: each run's median frame in µs ({@code frameMicros}, in
+     * run order), the frames timed in all runs, the bytes the crowd's threads allocated per timed
+     * frame (0 once the JIT has compiled the kernels), and the share of the copies the calling
+     * thread ran itself (1 on one thread; near 1 / threads when the pool's threads get cores).
      */
-    public record Timing(SkinningMethod method, int characters, int threads, int frames, double medianMillis,
-            double minMillis, double bytesPerFrame, double callerShare) {
+    public record Timing(Crowd crowd, Spread frameMicros, int frames, double bytesPerFrame, double callerShare) {
+    }
+
+    /** One run's numbers, summed by {@link #measure} over the runs of one crowd. */
+    private record Run(double medianMicros, int frames, long bytes, long callerItems) {
     }
 
     /**
@@ -54,8 +70,8 @@ public final class CrowdBench {
     private final float[][][] positions;
     private final float[][][] normals;
     private final int points;
-    /** The timed frames' times, in ms (preallocated: the timing loop allocates nothing). */
-    private final double[] millis = new double[MAX_FRAMES];
+    /** A run's timed frames' times, in µs (preallocated: the timing loop allocates nothing). */
+    private final double[] micros = new double[MAX_FRAMES];
 
     // The frame being run, written before CrowdThreads.run hands the copies out.
     private SkinningMethod method;
@@ -91,27 +107,57 @@ public final class CrowdBench {
         }
     }
 
-    int maxCharacters() {
-        return characters.length;
-    }
-
     /** The points one copy skins per frame (its render vertices and any unused positions). */
     public int pointsPerCharacter() {
         return points;
     }
 
     /**
-     * {@code count} copies on {@code threads} threads: frames for {@code warmupSeconds}, then timed
-     * frames for {@code seconds} (at least 5, at most {@value #MAX_FRAMES}).
+     * Times each crowd in {@code protocol.rounds()} runs, interleaved ({@link Rounds}: each round
+     * runs every crowd once, each round starting one further along the list), so that the
+     * machine's drift falls on every crowd alike. A run is frames for the protocol's warm-up (its
+     * first round's warm-up for round 0; at least {@value #MIN_WARMUP_FRAMES} frames), then timed
+     * frames for {@code protocol.seconds()} ({@value #MIN_FRAMES} to {@value #MAX_FRAMES});
+     * its value is the median frame. {@code afterRun} runs after each run (progress). Results in the
+     * order of {@code crowds}. The JIT is expected warm ({@link #warmUp}).
      */
-    public Timing measure(SkinningMethod m, int count, int threads, double warmupSeconds, double seconds) {
-        check(count);
-        method = crowdMethod(m);
-        try (CrowdThreads pool = new CrowdThreads(threads, this::character)) {
+    public List<Timing> measure(List<Crowd> crowds, FrameTimes.Protocol protocol, Runnable afterRun) {
+        for (Crowd c : crowds) {
+            check(c.characters());
+            crowdMethod(c.method());
+        }
+        int n = crowds.size();
+        int[] frames = new int[n];
+        long[] bytes = new long[n];
+        long[] callerItems = new long[n];
+        long[] items = new long[n];
+        Spread[] spreads = Rounds.interleaved(n, protocol.rounds(), (i, round) -> {
+            Crowd c = crowds.get(i);
+            Run run = run(c, round == 0 ? protocol.firstWarmupSeconds() : protocol.warmupSeconds(), protocol.seconds());
+            frames[i] += run.frames();
+            bytes[i] += run.bytes();
+            callerItems[i] += run.callerItems();
+            items[i] += (long) run.frames() * c.characters();
+            afterRun.run();
+            return run.medianMicros();
+        });
+        List<Timing> timings = new ArrayList<>(n);
+        for (int i = 0; i < n; i++) {
+            timings.add(new Timing(crowds.get(i), spreads[i], frames[i], bytes[i] / (double) frames[i],
+                    callerItems[i] / (double) items[i]));
+        }
+        return timings;
+    }
+
+    /** One run of a crowd: frames for {@code warmupSeconds}, then timed frames for {@code seconds}. */
+    private Run run(Crowd crowd, double warmupSeconds, double seconds) {
+        int count = crowd.characters();
+        method = crowd.method();
+        try (CrowdThreads pool = new CrowdThreads(crowd.threads(), this::character)) {
             long warmupEnd = System.nanoTime() + (long) (warmupSeconds * 1e9);
-            do {
+            for (int f = 0; f < MIN_WARMUP_FRAMES || System.nanoTime() < warmupEnd; f++) {
                 step(pool, count);
-            } while (System.nanoTime() < warmupEnd);
+            }
             long[] ids = pool.threadIds(Thread.currentThread());
             long bytesBefore = allocated(ids);
             // What counting costs itself (its result arrays), taken off the frames' bytes.
@@ -119,17 +165,15 @@ public final class CrowdBench {
             long workerItems = pool.workerItems();
             int n = 0;
             long end = System.nanoTime() + (long) (seconds * 1e9);
-            while (n < MAX_FRAMES && (n < 5 || System.nanoTime() < end)) {
+            while (n < MAX_FRAMES && (n < MIN_FRAMES || System.nanoTime() < end)) {
                 long t0 = System.nanoTime();
                 step(pool, count);
-                millis[n++] = (System.nanoTime() - t0) / 1e6;
+                micros[n++] = (System.nanoTime() - t0) / 1e3;
             }
-            long bytes = allocated(ids) - bytesBefore - 2 * counting;
-            double callerShare = 1 - (double) (pool.workerItems() - workerItems) / ((long) n * count);
-            double[] sorted = Arrays.copyOf(millis, n);
-            Arrays.sort(sorted);
-            return new Timing(m, count, threads, n, sorted[n / 2], sorted[0], Math.max(0, bytes) / (double) n,
-                    callerShare);
+            long bytes = Math.max(0, allocated(ids) - bytesBefore - 2 * counting);
+            long callerItems = (long) n * count - (pool.workerItems() - workerItems);
+            Arrays.sort(micros, 0, n);
+            return new Run(micros[n / 2], n, bytes, callerItems);
         }
     }
 
@@ -188,7 +232,6 @@ public final class CrowdBench {
     private void character(int c) {
         FrameBench.frame(characters[c], skinners, method, phases[c] + frame / 60.0, positions[c], normals[c]);
     }
-
 
     private static SkinningMethod crowdMethod(SkinningMethod m) {
         if (!METHODS.contains(m)) {

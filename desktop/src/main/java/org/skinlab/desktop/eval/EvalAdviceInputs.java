@@ -196,7 +196,8 @@ final class EvalAdviceInputs {
             c.put("crowd", crowds.get("threadCrowd").asInt());
             for (JsonNode p : m.get("threads")) {
                 if (p.get("threads").asInt() == crowds.get("cores").asInt()) {
-                    c.put(p.get("method").asText() + "PerFrame", Math.round(p.get("charactersPerFrame").asDouble()));
+                    c.put(p.get("method").asText() + "PerFrame",
+                            Math.round(p.at("/charactersPerFrame/median").asDouble()));
                 }
             }
         }
