@@ -138,7 +138,7 @@ final class EvalClaims {
     /** The thesis' desktop: copies drawn with CPU skinning, DQS and LBS frames per second. */
     static void meshes(JsonNode crowds, int copies, ObjectNode c) {
         c.put("id", "meshes-" + copies).put("copies", copies);
-        for (double[] t : EvalCrowdsSection.THESIS) {
+        for (double[] t : EvalCrowdsThesis.THESIS) {
             if (t[0] == copies) {
                 c.put("thesisDqsFps", t[1]).put("thesisLbsFps", t[2]);
             }

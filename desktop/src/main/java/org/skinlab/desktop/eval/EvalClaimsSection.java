@@ -57,7 +57,7 @@ final class EvalClaimsSection implements EvalSection {
         }
         EvalClaims.dqsFasterInCpp(sections.apply("time"), claims.addObject());
         EvalClaims.meshes(sections.apply("crowds"), 1, claims.addObject());
-        EvalClaims.meshes(sections.apply("crowds"), EvalCrowdsSection.THESIS_MESHES, claims.addObject());
+        EvalClaims.meshes(sections.apply("crowds"), EvalCrowdsThesis.THESIS_MESHES, claims.addObject());
         EvalClaims.lbsLosesVolume(sections.apply("quality"), claims.addObject());
         EvalClaims.dqsKeepsVolume(sections.apply("quality"), claims.addObject());
         EvalClaims.dqsBulges(sections.apply("quality"), claims.addObject());

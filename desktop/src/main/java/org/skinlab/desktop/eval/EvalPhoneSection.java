@@ -71,7 +71,7 @@ final class EvalPhoneSection implements EvalSection {
         phone.put("dqsFps", THESIS_PHONE_DQS_FPS);
         phone.put("undeformedFps", THESIS_PHONE_UNDEFORMED_FPS);
         ArrayNode desktop = results.putArray("thesisDesktop");
-        for (double[] t : EvalCrowdsSection.THESIS) {
+        for (double[] t : EvalCrowdsThesis.THESIS) {
             desktop.addObject().put("meshes", (int) t[0]).put("dqsFps", t[1]).put("lbsFps", t[2]);
         }
         ArrayNode copies = results.putArray("copies");
