@@ -55,7 +55,7 @@ final class EvalAdvice {
         JsonNode tracking = context.measured("tracking");
         if (tracking != null && tracking.has("time")) {
             ObjectNode k = in.putObject("tracking");
-            k.put("detectMedianMs", tracking.at("/time/oursMedianMs").asDouble());
+            k.put("detectMedianMs", tracking.at("/time/detectMs/median").asDouble());
             k.put("width", tracking.at("/camera/width").asInt());
             k.put("height", tracking.at("/camera/height").asInt());
             k.put("fullFrameEvery", FiducialTracker.FULL_FRAME_EVERY);
