@@ -420,9 +420,14 @@ final class EvalLoadSection implements EvalSection {
     /** The .glb twins against their .dae files: a row per pair, the largest distance a column. */
     private static void twinReport(JsonNode results, EvalReport report) {
         JsonNode twins = results.get("twins");
-        report.paragraph("**The glTF twins.** Each `.glb` of our assets holds the scene of the `.dae` beside it"
-                + " (assets/README.md): the same triangles, skin joints and clip length, and the same points where LBS"
-                + " puts them at " + fractions(twins) + " of the first clip, each file imported and skinned by core"
+        if (twins.get("pairs").isEmpty()) {
+            report.paragraph("**The glTF twins.** No `.glb` of our assets has a `.dae` of the same name beside it.");
+            return;
+        }
+        report.paragraph("**The glTF twins.** Each `.glb` of our assets is to hold the scene of the `.dae` beside it"
+                + " (assets/README.md), checked here: the same triangles, skin joints and clip length, and the same"
+                + " points where LBS puts them at " + fractions(results) + " of the first clip, each file imported"
+                + " and skinned by core"
                 + " and brought to Y-up metres by its own up axis. A .glb point is paired with the .dae point at its"
                 + " bind position (within " + EvalReport.num(results, "/twins/samePositionPpm") + " millionth of the"
                 + " model's size); the column is the largest distance between paired points over those times, in"
@@ -458,10 +463,10 @@ final class EvalLoadSection implements EvalSection {
         report.line("");
     }
 
-    private static String fractions(JsonNode twins) {
+    private static String fractions(JsonNode results) {
         List<String> f = new ArrayList<>();
-        for (JsonNode x : twins.get("clipFractions")) {
-            f.add(EvalReport.format(x));
+        for (int i = 0; i < results.at("/twins/clipFractions").size(); i++) {
+            f.add(EvalReport.num(results, "/twins/clipFractions/" + i));
         }
         return String.join(", ", f);
     }

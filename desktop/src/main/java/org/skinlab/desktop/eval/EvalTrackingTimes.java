@@ -97,8 +97,10 @@ final class EvalTrackingTimes {
     /** The times' text, table and figure. */
     static void report(JsonNode results, EvalReport report) {
         report.heading(3, "Time per frame");
-        report.paragraph("The first " + EvalReport.num(results, "/time/frames") + " frames of `skinlab ar-demo`'s"
-                + " synthetic video (a loop of " + EvalReport.num(results, "/time/loopFrames") + " frames of "
+        boolean loop = results.at("/time/frames").asInt() == results.at("/time/loopFrames").asInt();
+        report.paragraph((loop ? "The " : "The first ") + EvalReport.num(results, "/time/frames") + " frames of"
+                + " `skinlab ar-demo`'s synthetic video (" + (loop ? "one loop" : "of a loop of "
+                        + EvalReport.num(results, "/time/loopFrames") + " frames") + ", "
                 + EvalReport.num(results, "/time/width") + "x" + EvalReport.num(results, "/time/height") + ": the"
                 + " default marker on a desk, a hand-held camera circling it at about half a metre, blur, noise,"
                 + " uneven light, clutter on every fourth frame) in order, with `skinlab bench track`'s protocol:"
