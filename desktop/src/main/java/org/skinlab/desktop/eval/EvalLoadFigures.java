@@ -86,7 +86,8 @@ final class EvalLoadFigures {
         XYChart chart = EvalCharts.xy("Conformance suite: import time per file, each tool's files sorted by their"
                 + " median run", "files, fastest first", "ms, " + EvalCharts.SPREAD);
         EvalCharts.logY(chart);
-        EvalCharts.medians(chart, "skinlab (" + ours.size() + " files imported)", ranks(ours.size()), ours, OURS, false);
+        EvalCharts.medians(chart, "skinlab (" + ours.size() + " files imported)", ranks(ours.size()), ours, OURS,
+                false);
         List<JsonNode> theirs = sorted(group, "assimpMs");
         if (!theirs.isEmpty()) {
             EvalCharts.medians(chart, "assimp (" + theirs.size() + " files imported)", ranks(theirs.size()), theirs,
@@ -96,7 +97,10 @@ final class EvalLoadFigures {
                 + " fastest to the slowest run)", chart);
     }
 
-    /** The files' spreads of {@code field}, sorted by median; a log axis has no zero, so runs under the rounding are left out. */
+    /**
+     * The files' spreads of {@code field}, sorted by median; a log axis has no zero, so runs under
+     * the rounding are left out.
+     */
     private static List<JsonNode> sorted(JsonNode group, String field) {
         List<JsonNode> spreads = new ArrayList<>();
         for (JsonNode f : group.get("files")) {

@@ -394,7 +394,8 @@ final class EvalLoadSection implements EvalSection {
             report.row(name, EvalReport.num(results, p + "/kilobytes"), EvalReport.num(results, p + "/triangles"),
                     EvalReport.num(results, p + "/oursMs/median"), range(results, p + "/oursMs"),
                     EvalReport.num(results, p + "/slowestImportMs"),
-                    theirs ? EvalReport.num(results, p + "/assimpMs/median") : file.has("assimpError") ? "refused" : "-",
+                    theirs ? EvalReport.num(results, p + "/assimpMs/median")
+                            : file.has("assimpError") ? "refused" : "-",
                     theirs ? range(results, p + "/assimpMs") : "-", EvalReport.numOrDash(results, p + "/assimpRatio"));
             rows.add(new EvalLoadFigures.Row(file.get("file").asText(), file.get("oursMs"), file.get("assimpMs")));
         }

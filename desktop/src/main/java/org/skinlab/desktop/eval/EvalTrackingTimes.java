@@ -122,7 +122,8 @@ final class EvalTrackingTimes {
                 range(results, "/time/detectOverBoofRuns"), EvalReport.num(results, "/time/frames"));
         report.row("`track`", EvalReport.num(results, "/time/trackMs/median"), range(results, "/time/trackMs"),
                 "track / detect: " + EvalReport.num(results, "/time/trackPercentOfDetect") + " %",
-                range(results, "/time/trackPercentOfDetectRuns") + " %", EvalReport.num(results, "/time/trackSameIdsAsDetect"));
+                range(results, "/time/trackPercentOfDetectRuns") + " %",
+                EvalReport.num(results, "/time/trackSameIdsAsDetect"));
         report.line("");
         report.paragraph("Our whole-frame search takes " + EvalReport.num(results, "/time/detectOverBoof")
                 + " times BoofCV's default per frame (rounds: " + range(results, "/time/detectOverBoofRuns")
@@ -130,7 +131,8 @@ final class EvalTrackingTimes {
                 + " markers takes " + EvalReport.num(results, "/time/trackPercentOfDetect") + " % of `detect`'s time"
                 + " per frame (rounds: " + range(results, "/time/trackPercentOfDetectRuns") + " %), "
                 + EvalReport.num(results, "/time/detectOverTrack") + " times faster, with `detect`'s ids in "
-                + EvalReport.num(results, "/time/trackSameIdsAsDetect") + " of " + EvalReport.num(results, "/time/frames")
+                + EvalReport.num(results, "/time/trackSameIdsAsDetect") + " of "
+                + EvalReport.num(results, "/time/frames")
                 + " frames; it found every marker near the last ones in "
                 + EvalReport.num(results, "/time/trackInRegionPercent") + " % of its frames.");
         figure(results, report);
@@ -152,7 +154,8 @@ final class EvalTrackingTimes {
         String[] spreads = {"/time/boofDefaultMs", "/time/detectMs", "/time/trackMs"};
         Color[] colours = {BOOF, DETECT, TRACK};
         for (int i = 0; i < names.length; i++) {
-            EvalCharts.medians(chart, names[i], List.of((double) i), List.of(results.at(spreads[i])), colours[i], false);
+            EvalCharts.medians(chart, names[i], List.of((double) i), List.of(results.at(spreads[i])), colours[i],
+                    false);
         }
         report.figure("tracking-time.png", "Time per frame of the video: median run, bars from the fastest to the"
                 + " slowest run", chart);
