@@ -69,7 +69,7 @@ final class EvalTrackingSection implements EvalSection {
     }
 
     private static Sizes sizes(boolean quick) {
-        return quick ? new Sizes(4, 100, 9, 12, 0) : new Sizes(30, 1000, 90, VIDEO_LOOP, 2);
+        return quick ? new Sizes(4, 100, 9, 10, 0) : new Sizes(30, 1000, 90, VIDEO_LOOP, 2);
     }
 
     @Override

@@ -19,9 +19,9 @@ import org.junit.jupiter.api.Test;
  * 1 m within 1.5 times the goals. The times per frame (a video: BoofCV's default, detect, track)
  * are checked as every timing of the report is ({@link SpreadCheck}): at least 5 runs each, the
  * stored medians the runs' own, the ratios those of the stored medians; and track found detect's
- * marker in every frame of the video. The tracking section is about 17 s of the shared quick run on
- * the project's 2-core machine at a load of 4, 25-40 s when it is busier (rendering the frames is
- * nearly all of it); run alone ({@code --only tracking}) the test took 17-29 s.
+ * marker in every frame of the video. The tracking section took 26 s of a quick run on the
+ * project's 2-core machine at a load of 4, 49 s at 7 (rendering the frames is most of it; 22 and
+ * 36 s before the video was timed).
  */
 class EvalTrackingTest {
     @Test
