@@ -10,9 +10,10 @@ import java.util.List;
 import java.util.Locale;
 import java.util.function.IntConsumer;
 
+import org.skinlab.bench.Rounds;
+import org.skinlab.bench.Spread;
 import org.skinlab.desktop.CommandFailure;
 import org.skinlab.desktop.ExitCodes;
-import org.skinlab.desktop.bench.AssimpBaseline;
 import org.skinlab.importer.ModelImporter;
 import org.skinlab.model.ImportException;
 import org.skinlab.model.Mesh;
@@ -20,13 +21,18 @@ import org.skinlab.model.Model;
 
 /**
  * The import timing of {@code skinlab bench parse} and {@code skinlab eval}'s load section: files
- * already in memory, a shared warm-up over the small ones, then each file imported {@code runs}
- * times (5 when 10 MB or more, each after a GC, after one untimed import) and, when compared,
- * assimp on the same bytes right after ours with the same protocol and a warm-up of the same
- * length.
+ * already in memory, a shared warm-up over the small ones, then per file {@code rounds} runs of
+ * {@code importsPerRound} imports each (a file of 10 MB or more: {@value #LARGE_IMPORTS} imports
+ * in all, spread over the rounds, each after a GC, after one untimed import). When compared,
+ * assimp imports the same bytes with the same protocol after a warm-up of the same length, its
+ * runs interleaved with ours ({@link Rounds#interleaved}: ours first in one round, assimp first in
+ * the next), so that a drift of the machine falls on both. A run's value is the median of its
+ * imports; every import's time is kept too (the slowest import is what a requirement judges).
  */
 public final class ParseTimer {
     static final int LARGE_BYTES = 10_000_000;
+    /** Timed imports of a file of {@link #LARGE_BYTES} or more, in all rounds together. */
+    static final int LARGE_IMPORTS = 5;
 
     /** One file to time: its name in reports, its bytes and where it lives (for relative URLs). */
     public record Input(String name, byte[] bytes, Path location) {
@@ -37,51 +43,51 @@ public final class ParseTimer {
         public final String name;
         public final long bytes;
         public final long triangles;
+        /** Every timed import of ours, in the order taken (empty when refused). */
         public final double[] millis;
+        /** Each run's median import, in run order (null when refused). */
+        public final Spread runs;
         /** Why our importer refused the file (tolerant timing only), else null; then millis is empty. */
         public String error;
-        /** assimp's times, or null when not compared or when assimp failed. */
+        /** assimp's imports, or null when not compared or when assimp failed. */
         public double[] assimpMillis;
+        /** assimp's runs, interleaved with ours, or null as {@link #assimpMillis}. */
+        public Spread assimpRuns;
         public long assimpTriangles;
         /** assimp's message when it refused the file, else null. */
         public String assimpError;
 
-        Result(String name, long bytes, long triangles, double[] millis) {
+        Result(String name, long bytes, long triangles, double[] millis, Spread runs) {
             this.name = name;
             this.bytes = bytes;
             this.triangles = triangles;
             this.millis = millis;
+            this.runs = runs;
         }
 
+        /** The fastest import. */
         public double min() {
-            return min(millis);
+            return Arrays.stream(millis).min().orElse(Double.NaN);
         }
 
+        /** The median of the runs (with one run, the median import). */
         public double median() {
-            return median(millis);
+            return runs == null ? Double.NaN : runs.median();
         }
 
+        /** The slowest import. */
         public double max() {
             return Arrays.stream(millis).max().orElse(Double.NaN);
         }
 
-        public static double min(double[] millis) {
-            return Arrays.stream(millis).min().orElse(Double.NaN);
+        /** assimp's fastest import. */
+        public double assimpMin() {
+            return Arrays.stream(assimpMillis).min().orElse(Double.NaN);
         }
 
-        public static double median(double[] millis) {
-            if (millis.length == 0) {
-                return Double.NaN;
-            }
-            double[] s = millis.clone();
-            Arrays.sort(s);
-            int n = s.length;
-            return n % 2 == 1 ? s[n / 2] : (s[n / 2 - 1] + s[n / 2]) / 2;
-        }
-
-        /** assimp median / our median: how many times faster we are. */
+        /** assimp median / our median (of the runs): how many times faster we are. */
         public double assimpRatio() {
-            return median(assimpMillis) / median();
+            return assimpRuns.median() / median();
         }
 
         public double mbPerSecond() {
@@ -101,7 +107,8 @@ public final class ParseTimer {
     }
 
     private final double warmupSeconds;
-    private final int runs;
+    private final int rounds;
+    private final int importsPerRound;
     /** assimp's flags, or -1 not to compare. */
     private final int assimpFlags;
     /** Whether a file our importer refuses is a result (with its error) rather than a failure. */
@@ -111,9 +118,18 @@ public final class ParseTimer {
     private final String logPrefix;
     private IntConsumer progress = i -> { };
 
-    public ParseTimer(double warmupSeconds, int runs, int assimpFlags, boolean tolerant, PrintWriter log, String logPrefix) {
+    /**
+     * @param rounds          runs per file (and per tool), interleaved
+     * @param importsPerRound timed imports per run of a file under 10 MB
+     */
+    public ParseTimer(double warmupSeconds, int rounds, int importsPerRound, int assimpFlags, boolean tolerant,
+            PrintWriter log, String logPrefix) {
+        if (rounds < 1 || importsPerRound < 1) {
+            throw new IllegalArgumentException("need a run and an import: " + rounds + " x " + importsPerRound);
+        }
         this.warmupSeconds = warmupSeconds;
-        this.runs = runs;
+        this.rounds = rounds;
+        this.importsPerRound = importsPerRound;
         this.assimpFlags = assimpFlags;
         this.tolerant = tolerant;
         this.log = log;
@@ -151,14 +167,10 @@ public final class ParseTimer {
             }
             List<Result> results = new ArrayList<>();
             for (int i = 0; i < inputs.size(); i++) {
-                Result r = refused[i] ? refusedResult(inputs.get(i), errors[i]) : measureOne(inputs.get(i));
+                Result r = refused[i] ? refusedResult(inputs.get(i), errors[i])
+                        : measureOne(inputs.get(i), assimp.isEmpty() ? null : assimp.get(i));
                 results.add(r);
-                if (!assimp.isEmpty()) {
-                    measureAssimp(assimp.get(i), inputs.get(i).bytes().length >= LARGE_BYTES,
-                            Math.max(1, r.millis.length), r);
-                } else if (log != null) {
-                    log.printf(Locale.ROOT, logPrefix + "%s %.2f ms%n", r.name, r.median());
-                }
+                log(r);
                 progress.accept(i + 1);
             }
             return results;
@@ -166,6 +178,20 @@ public final class ParseTimer {
             for (AssimpFile a : assimp) {
                 a.assimp.close();
             }
+        }
+    }
+
+    private void log(Result r) {
+        if (log == null) {
+            return;
+        }
+        if (r.assimpRuns != null) {
+            log.printf(Locale.ROOT, logPrefix + "%s %.2f ms, assimp %.2f ms (%.1fx)%n", r.name, r.median(),
+                    r.assimpRuns.median(), r.median() > 0 ? r.assimpRatio() : Double.NaN);
+        } else if (r.assimpError != null) {
+            log.printf(Locale.ROOT, logPrefix + "%s %.2f ms, assimp failed: %s%n", r.name, r.median(), r.assimpError);
+        } else {
+            log.printf(Locale.ROOT, logPrefix + "%s %.2f ms%n", r.name, r.median());
         }
     }
 
@@ -182,30 +208,58 @@ public final class ParseTimer {
     }
 
     private static Result refusedResult(Input in, String error) {
-        Result r = new Result(in.name(), in.bytes().length, 0, new double[0]);
+        Result r = new Result(in.name(), in.bytes().length, 0, new double[0], null);
         r.error = error;
         return r;
     }
 
-    private Result measureOne(Input in) {
+    /**
+     * Our runs of one file and, when {@code assimp} is given and imports it, assimp's, interleaved
+     * round by round.
+     */
+    private Result measureOne(Input in, AssimpFile assimp) {
         boolean large = in.bytes().length >= LARGE_BYTES;
+        int perRound = large ? Math.max(1, LARGE_IMPORTS / rounds) : importsPerRound;
+        boolean compared = assimp != null && assimp.failure == null;
+        Model[] model = new Model[1];
         if (large) {
             System.gc();
-            importOnce(in);
-        }
-        int n = large ? 5 : runs;
-        double[] millis = new double[n];
-        Model model = null;
-        for (int r = 0; r < n; r++) {
-            if (large) {
+            model[0] = importOnce(in);
+            if (compared) {
                 System.gc();
+                assimp.assimp.importOnce(assimpFlags);
             }
-            long t0 = System.nanoTime();
-            model = importOnce(in);
-            millis[r] = (System.nanoTime() - t0) / 1e6;
         }
-        long triangles = model.meshes().stream().mapToLong(Mesh::triangleCount).sum();
-        return new Result(in.name(), in.bytes().length, triangles, millis);
+        double[][] millis = new double[2][rounds * perRound];
+        Spread[] runs = Rounds.interleaved(compared ? 2 : 1, rounds, (tool, round) -> {
+            double[] times = new double[perRound];
+            for (int k = 0; k < perRound; k++) {
+                if (large) {
+                    System.gc();
+                }
+                long t0 = System.nanoTime();
+                if (tool == 0) {
+                    model[0] = importOnce(in);
+                } else {
+                    assimp.assimp.importOnce(assimpFlags);
+                }
+                times[k] = (System.nanoTime() - t0) / 1e6;
+            }
+            System.arraycopy(times, 0, millis[tool], round * perRound, perRound);
+            return Spread.of(times).median();
+        });
+        long triangles = model[0].meshes().stream().mapToLong(Mesh::triangleCount).sum();
+        Result r = new Result(in.name(), in.bytes().length, triangles, millis[0], runs[0]);
+        if (assimp != null) {
+            if (compared) {
+                r.assimpTriangles = assimp.triangles;
+                r.assimpMillis = millis[1];
+                r.assimpRuns = runs[1];
+            } else {
+                r.assimpError = assimp.failure;
+            }
+        }
+        return r;
     }
 
     /**
@@ -228,37 +282,6 @@ public final class ParseTimer {
                 }
             }
         } while (System.nanoTime() < warmupEnd);
-    }
-
-    /** assimp on one file: the same protocol as ours (one untimed import first when large). */
-    private void measureAssimp(AssimpFile f, boolean large, int n, Result result) {
-        if (f.failure != null) {
-            result.assimpError = f.failure;
-            if (log != null) {
-                log.printf(Locale.ROOT, logPrefix + "%s %.2f ms, assimp failed: %s%n", result.name, result.median(),
-                        result.assimpError);
-            }
-            return;
-        }
-        result.assimpTriangles = f.triangles;
-        if (large) {
-            System.gc();
-            f.assimp.importOnce(assimpFlags);
-        }
-        double[] millis = new double[n];
-        for (int r = 0; r < n; r++) {
-            if (large) {
-                System.gc();
-            }
-            long t0 = System.nanoTime();
-            f.assimp.importOnce(assimpFlags);
-            millis[r] = (System.nanoTime() - t0) / 1e6;
-        }
-        result.assimpMillis = millis;
-        if (log != null) {
-            log.printf(Locale.ROOT, logPrefix + "%s %.2f ms, assimp %.2f ms (%.1fx)%n", result.name, result.median(),
-                    Result.median(millis), result.median() > 0 ? result.assimpRatio() : Double.NaN);
-        }
     }
 
     private static Model importOnce(Input in) {

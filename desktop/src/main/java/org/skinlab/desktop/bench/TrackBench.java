@@ -1,6 +1,7 @@
 package org.skinlab.desktop.bench;
 
 import java.io.IOException;
+import java.io.UncheckedIOException;
 import java.lang.management.ManagementFactory;
 import java.lang.management.ThreadMXBean;
 import java.nio.file.Path;
@@ -18,14 +19,18 @@ import org.skinlab.ar.GrayImage;
 import org.skinlab.ar.MarkerDetection;
 import org.skinlab.ar.MarkerDictionary;
 import org.skinlab.ar.TrackerConfig;
+import org.skinlab.bench.Rounds;
+import org.skinlab.bench.Spread;
 
 /**
  * The timing of {@code skinlab bench track}: BoofCV's squareHamming detector with its default
  * settings (detection and each marker's pose), our {@link FiducialTracker#detect} (whole frame),
  * our {@link FiducialTracker#track} (the frames in order, near the last markers first) and, when
- * python3 has cv2, OpenCV's ArUco ({@link OpenCvAruco}). After a shared warm-up and one pass each
- * that records the ids found, each round runs every contender once over all frames, one after the
- * other, so that they share the machine's state; at least 3 rounds, and on for the time given.
+ * python3 has cv2, OpenCV's ArUco ({@link OpenCvAruco}). After one pass each that records the ids
+ * found and a shared warm-up, each round runs every contender once over all frames, one after the
+ * other, so that they share the machine's state, each round starting one contender further along
+ * ({@link Rounds#interleaved}); at least the rounds asked for, more while the time given lasts. A
+ * contender's run is its median frame of a round.
  */
 public final class TrackBench {
     /**
@@ -35,12 +40,13 @@ public final class TrackBench {
      * @param ids         per contender and frame, the ids it found (sorted)
      * @param median      the median of its per-frame milliseconds over all rounds
      * @param mean        their mean
+     * @param runs        per contender, its median frame of each round, in round order
      * @param rounds      how many rounds ran
      * @param regionShare the share of frames in which track found every marker near the last ones
      * @param opencv      OpenCV's version, or why it did not run
      */
     public record Result(List<String> names, List<List<List<Integer>>> ids, double[] median, double[] mean,
-            int rounds, double regionShare, String opencv) {
+            Spread[] runs, int rounds, double regionShare, String opencv) {
     }
 
     /** One contender's pass over the frames: its per-frame milliseconds to {@code ms}, the ids found to {@code ids}. */
@@ -63,52 +69,69 @@ public final class TrackBench {
     /**
      * Times every contender on {@code video}'s frames.
      *
-     * @param clock {@code wall} or {@code cpu} (the thread's CPU time, on a machine shared with other work)
-     * @param work  a folder for OpenCV's copy of the frames
+     * @param opencvScript OpenCV's contender, or null to leave it out
+     * @param work         a folder for OpenCV's copy of the frames
+     * @param clock        {@code wall} or {@code cpu} (the thread's CPU time, on a machine shared with other work)
+     * @param minRounds    the fewest timed rounds
+     * @param seconds      timed rounds go on until they have taken about this long
      */
     public static Result measure(TrackBenchVideo video, MarkerDictionary dict, double markerSizeMm, Path opencvScript,
-            Path work, String clock, double warmupSeconds, double seconds) throws IOException {
+            Path work, String clock, double warmupSeconds, int minRounds, double seconds) throws IOException {
         return new TrackBench(video.frames(), clock).run(video.camera(), dict, markerSizeMm / 1000, opencvScript, work,
-                warmupSeconds, seconds);
+                warmupSeconds, minRounds, seconds);
     }
 
     private Result run(CameraIntrinsics k, MarkerDictionary dict, double markerMetres, Path opencvScript, Path work,
-            double warmupSeconds, double seconds) throws IOException {
+            double warmupSeconds, int minRounds, double seconds) throws IOException {
         List<String> names = new ArrayList<>(List.of("BoofCV squareHamming, default settings",
                 "skinlab detect (whole frame)", "skinlab track (near the last markers first)"));
         FiducialTracker ours = new FiducialTracker(TrackerConfig.of(dict, markerMetres), k);
         List<Pass> passes = new ArrayList<>(List.of(boofPass(BoofSquareHamming.defaults(dict, markerMetres, k)),
                 detectPass(ours), trackPass(ours)));
         OpenCvAruco.Failure why = new OpenCvAruco.Failure();
-        OpenCvAruco opencv = OpenCvAruco.start(opencvScript, work, frames, k, dict, markerMetres, clock, why);
+        why.reason = "not compared";
+        OpenCvAruco opencv = opencvScript == null ? null
+                : OpenCvAruco.start(opencvScript, work, frames, k, dict, markerMetres, clock, why);
         try {
             if (opencv != null) {
                 names.add("OpenCV " + opencv.version() + " ArUco, default parameters");
                 passes.add(opencvPass(opencv));
             }
-            warmUp(passes, warmupSeconds);
             List<List<List<Integer>>> ids = new ArrayList<>();
+            long idsStart = System.nanoTime();
             for (Pass p : passes) {
                 List<List<Integer>> found = new ArrayList<>();
                 p.run(new double[n], found);
                 ids.add(found);
             }
+            double roundSeconds = (System.nanoTime() - idsStart) * 1e-9;
+            warmUp(passes, warmupSeconds);
             foundInRegion = 0;
-            List<double[]> times = new ArrayList<>();
-            int rounds = timedRounds(passes, seconds, times);
             int c = passes.size();
+            int rounds = Math.max(minRounds, (int) Math.ceil(seconds / roundSeconds));
+            double[][] times = new double[c][rounds * n];
+            Spread[] runs;
+            try {
+                runs = Rounds.interleaved(c, rounds, (i, round) -> {
+                    double[] ms = new double[n];
+                    try {
+                        passes.get(i).run(ms, null);
+                    } catch (IOException e) {
+                        throw new UncheckedIOException(e);
+                    }
+                    System.arraycopy(ms, 0, times[i], round * n, n);
+                    return Spread.of(ms).median();
+                });
+            } catch (UncheckedIOException e) {
+                throw e.getCause();
+            }
             double[] median = new double[c];
             double[] mean = new double[c];
             for (int i = 0; i < c; i++) {
-                double[] all = new double[rounds * n];
-                for (int r = 0; r < rounds; r++) {
-                    System.arraycopy(times.get(r * c + i), 0, all, r * n, n);
-                }
-                Arrays.sort(all);
-                median[i] = all[all.length / 2];
-                mean[i] = Arrays.stream(all).average().orElse(0);
+                median[i] = Spread.of(times[i]).median();
+                mean[i] = Arrays.stream(times[i]).average().orElse(0);
             }
-            return new Result(names, ids, median, mean, rounds, foundInRegion / (double) (rounds * n),
+            return new Result(names, ids, median, mean, runs, rounds, foundInRegion / (double) (rounds * n),
                     opencv != null ? opencv.version() : why.reason);
         } finally {
             if (opencv != null) {
@@ -117,29 +140,15 @@ public final class TrackBench {
         }
     }
 
+    /** Every pass, over and over, for {@code warmupSeconds} (none for 0). */
     private void warmUp(List<Pass> passes, double warmupSeconds) throws IOException {
         double[] scratch = new double[n];
         long warmEnd = System.nanoTime() + (long) (warmupSeconds * 1e9);
-        do {
+        while (System.nanoTime() < warmEnd) {
             for (Pass p : passes) {
                 p.run(scratch, null);
             }
-        } while (System.nanoTime() < warmEnd);
-    }
-
-    /** Rounds of every pass, each's times appended to {@code times} (round by round); returns the count. */
-    private int timedRounds(List<Pass> passes, double seconds, List<double[]> times) throws IOException {
-        int rounds = 0;
-        long end = System.nanoTime() + (long) (seconds * 1e9);
-        do {
-            for (Pass p : passes) {
-                double[] ms = new double[n];
-                p.run(ms, null);
-                times.add(ms);
-            }
-            rounds++;
-        } while (System.nanoTime() < end || rounds < 3);
-        return rounds;
+        }
     }
 
     private Pass boofPass(BoofSquareHamming boof) {

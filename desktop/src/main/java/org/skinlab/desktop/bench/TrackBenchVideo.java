@@ -21,15 +21,27 @@ import org.skinlab.desktop.ar.IntrinsicsFile;
  */
 public record TrackBenchVideo(String name, List<GrayImage> frames, CameraIntrinsics camera) {
 
-    /** {@code count} frames of {@link DemoVideo} at 640x480 with a 60 degree field of view. */
+    /** {@code count} frames of {@link DemoVideo} at 640x480 with a 60 degree field of view: one loop. */
     public static TrackBenchVideo synthetic(int count) {
+        return synthetic(count, count);
+    }
+
+    /**
+     * The first {@code count} frames of a {@link DemoVideo} loop of {@code loop} frames (at least
+     * {@code count}): a shorter run with the camera moving as fast as in the whole loop.
+     */
+    public static TrackBenchVideo synthetic(int count, int loop) {
+        if (count > loop) {
+            throw new IllegalArgumentException(count + " frames of a loop of " + loop);
+        }
         CameraIntrinsics k = CameraIntrinsics.fromHorizontalFov(640, 480, 60);
-        DemoVideo demo = new DemoVideo(k, count);
+        DemoVideo demo = new DemoVideo(k, loop);
         List<GrayImage> frames = new ArrayList<>(count);
         for (int i = 0; i < count; i++) {
             frames.add(demo.frame(i));
         }
-        return new TrackBenchVideo(count + " synthetic 640x480 frames (skinlab ar-demo's video)", frames, k);
+        return new TrackBenchVideo((count == loop ? count + "" : "the first " + count + " of " + loop)
+                + " synthetic 640x480 frames (skinlab ar-demo's video)", frames, k);
     }
 
     /**

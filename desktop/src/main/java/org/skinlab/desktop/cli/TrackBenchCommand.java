@@ -19,6 +19,7 @@ import boofcv.concurrency.BoofConcurrency;
 import org.skinlab.ar.BoofSquareHamming;
 import org.skinlab.ar.FiducialTracker;
 import org.skinlab.ar.MarkerDictionary;
+import org.skinlab.bench.Rounds;
 import org.skinlab.desktop.CommandFailure;
 import org.skinlab.desktop.ExitCodes;
 import org.skinlab.desktop.bench.OpenCvAruco;
@@ -75,7 +76,7 @@ public final class TrackBenchCommand implements Callable<Integer> {
     @Option(names = "--warmup-seconds", paramLabel = "S", description = "warm-up before timing (default: ${DEFAULT-VALUE})")
     double warmupSeconds = 2.0;
 
-    @Option(names = "--seconds", paramLabel = "S", description = "timed rounds for this long (default: ${DEFAULT-VALUE})")
+    @Option(names = "--seconds", paramLabel = "S", description = "timed rounds (at least 5) for about this long (default: ${DEFAULT-VALUE})")
     double seconds = 6.0;
 
     @Option(names = "--clock", paramLabel = "wall|cpu",
@@ -123,7 +124,7 @@ public final class TrackBenchCommand implements Callable<Integer> {
 
     private Integer run(TrackBenchVideo video, MarkerDictionary dict, Path work) throws IOException {
         TrackBench.Result r = TrackBench.measure(video, dict, markerSizeMm, opencvScript, work, clock, warmupSeconds,
-                seconds);
+                Rounds.MIN_RUNS, seconds);
         Agreement agreement = Agreement.of(r.ids(), video.frames().size());
         PrintWriter out = spec.commandLine().getOut();
         if (json) {

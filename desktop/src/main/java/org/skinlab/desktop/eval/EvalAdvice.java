@@ -221,8 +221,10 @@ final class EvalAdvice {
                     .append(" % of a frame at ").append(EvalReport.num(r, "/frameRateHz"))
                     .append(" Hz; in video it searches the whole frame only every ")
                     .append(EvalReport.num(r, "/inputs/tracking/fullFrameEvery"))
-                    .append("th frame and when it loses a marker, and otherwise only near the last markers (the"
-                            + " tracking section times both).");
+                    .append("th frame and when it loses a marker, and otherwise only near the last markers: ")
+                    .append(EvalReport.num(r, "/inputs/tracking/trackMedianMs")).append(" ms a frame, ")
+                    .append(EvalReport.num(r, "/inputs/tracking/detectOverTrack"))
+                    .append(" times faster (the tracking section's video).");
         } else {
             t.append(" The tracker's time per frame: the section `tracking` was not run (`--only`).");
         }

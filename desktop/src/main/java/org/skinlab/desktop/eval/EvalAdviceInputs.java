@@ -3,7 +3,6 @@ package org.skinlab.desktop.eval;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
-import org.skinlab.ar.FiducialTracker;
 import org.skinlab.skinning.SkinningMethod;
 
 /**
@@ -209,10 +208,12 @@ final class EvalAdviceInputs {
             return;
         }
         ObjectNode k = in.putObject("tracking");
-        k.put("detectMedianMs", tracking.at("/time/oursMedianMs").asDouble());
-        k.put("width", tracking.at("/camera/width").asInt());
-        k.put("height", tracking.at("/camera/height").asInt());
-        k.put("fullFrameEvery", FiducialTracker.FULL_FRAME_EVERY);
+        k.put("detectMedianMs", tracking.at("/time/detectMs/median").asDouble());
+        k.put("trackMedianMs", tracking.at("/time/trackMs/median").asDouble());
+        k.put("detectOverTrack", tracking.at("/time/detectOverTrack").asDouble());
+        k.put("width", tracking.at("/time/width").asInt());
+        k.put("height", tracking.at("/time/height").asInt());
+        k.put("fullFrameEvery", tracking.at("/time/fullFrameEvery").asInt());
         k.put("framePercent", EvalReport.round(100 * k.get("detectMedianMs").asDouble() * 1000
                 / EvalAdviceSection.FRAME_MICROS));
     }

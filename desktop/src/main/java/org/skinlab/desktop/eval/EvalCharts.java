@@ -3,7 +3,6 @@ package org.skinlab.desktop.eval;
 import java.awt.BasicStroke;
 import java.awt.Color;
 import java.util.List;
-import java.util.function.Function;
 
 import com.fasterxml.jackson.databind.JsonNode;
 
@@ -73,22 +72,39 @@ final class EvalCharts {
     }
 
     /**
-     * Categories on the x axis: category i at x = i, labelled {@code labels.get(i)}; other ticks
-     * unlabelled. Points of several series at one category sit side by side ({@link #offset}).
+     * A categorical x axis XChart labels dependably: category k at x = k, labelled
+     * {@code labels.get(k)}, every category a point of a hidden series added before the others,
+     * at {@code level} (a value inside the plotted range, positive on a log axis). Points of several
+     * series at one category sit side by side ({@link #offset}).
+     *
+     * <p>Why so: XChart labels an axis through a formatter by one of two searches. When the x
+     * values of all series, in the order they were added, are equally spaced, it labels every
+     * value, or every second, third ... one until the labels are unique and fit: dependable, so
+     * the hidden series puts every category there first. Otherwise it searches numeric tick steps,
+     * and a formatter that names only whole positions there either gets no labels at all (when
+     * the axis' two ends format alike) or, when they differ, can loop without end looking for
+     * labels that are all different. A position between categories gets {@code " "}: the same
+     * blank for each, so a subset holding two of them is never taken.
      */
-    static void categories(XYChart chart, List<String> labels) {
-        // XChart drops every tick label unless all of a step's labels differ: the unlabelled ticks
-        // get distinct invisible ones (zero-width spaces).
-        Function<Double, String> label = x -> {
-            long i = Math.round(x);
-            return Math.abs(x - i) < 1e-6 && i >= 0 && i < labels.size() ? labels.get((int) i)
-                    : "\u200B".repeat((int) Math.round(8 * (x + 1)) + 1);
-        };
-        chart.setCustomXAxisTickLabelsFormatter(label);
-        chart.getStyler().setAxisTickLabelsFont(new java.awt.Font(java.awt.Font.SANS_SERIF, java.awt.Font.PLAIN, 11));
+    static void categories(XYChart chart, List<String> labels, double level, int rotation) {
+        double[] x = new double[labels.size()];
+        double[] y = new double[labels.size()];
+        for (int k = 0; k < x.length; k++) {
+            x[k] = k;
+            y[k] = level;
+        }
+        XYSeries slots = chart.addSeries(" ", x, y);
+        slots.setShowInLegend(false);
+        slots.setMarker(SeriesMarkers.NONE);
+        slots.setLineStyle(SeriesLines.NONE);
+        chart.setCustomXAxisTickLabelsFormatter(value -> {
+            long k = Math.round(value);
+            return k >= 0 && k < labels.size() && Math.abs(value - k) < 1e-6 ? labels.get((int) k) : " ";
+        });
+        chart.getStyler().setXAxisLabelRotation(rotation);
+        chart.getStyler().setXAxisTickMarkSpacingHint(12);
         chart.getStyler().setXAxisMin(-0.5);
         chart.getStyler().setXAxisMax(labels.size() - 0.5);
-        chart.getStyler().setXAxisTickMarkSpacingHint(40);
     }
 
     /** An asset's name short enough for a category axis: no extension, no "cylinder-", no corpus prefix ("S01_"). */

@@ -210,7 +210,7 @@ final class EvalCppReference {
         }
         XYChart chart = EvalCharts.xy("Against the scalar C++ reference (same data, interleaved rounds)", "method",
                 "ns per vertex (" + EvalCharts.SPREAD + ")");
-        EvalCharts.categories(chart, labels);
+        EvalCharts.categories(chart, labels, rows.get(0).at("/fastestNs/median").asDouble(), 0);
         String[] keys = {"cppNs", "scalarNs", "fastestNs"};
         String[] names = {"C++ scalar reference (g++ -O3)", "Java, core's scalar kernel", "Java, fastest kernel"};
         java.awt.Color[] colours = {java.awt.Color.DARK_GRAY, EvalCharts.METHOD_COLOURS[0], EvalCharts.METHOD_COLOURS[1]};

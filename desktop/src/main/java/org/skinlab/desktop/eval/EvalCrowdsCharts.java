@@ -31,9 +31,6 @@ final class EvalCrowdsCharts {
     /** A character's line: the walker's solid, the cowboy's dashed (in the drawn figure, the vertex shader's). */
     private static final BasicStroke[] LINES = {new BasicStroke(1.5f), new BasicStroke(1.5f, BasicStroke.CAP_BUTT,
         BasicStroke.JOIN_MITER, 10f, new float[] {6f, 4f}, 0f)};
-    /** About how wide the plot is beside the legend, in pixels, with short legend entries and with long ones. */
-    private static final int NARROW_LEGEND_PLOT = 760;
-    private static final int WIDE_LEGEND_PLOT = 560;
 
     private EvalCrowdsCharts() {
     }
@@ -49,8 +46,14 @@ final class EvalCrowdsCharts {
         for (int t = 1; t <= cores; t++) {
             labels.add(Integer.toString(t));
         }
-        categories(chart, labels, NARROW_LEGEND_PLOT);
         JsonNode models = results.get("models");
+        double least = Double.MAX_VALUE;
+        for (JsonNode m : models) {
+            for (JsonNode p : m.get("threads")) {
+                least = Math.min(least, p.at("/charactersPerFrame/median").asDouble());
+            }
+        }
+        EvalCharts.categories(chart, labels, least, 0);
         int count = models.size() * CrowdBench.METHODS.size();
         int s = 0;
         for (int i = 0; i < models.size(); i++) {
@@ -126,7 +129,11 @@ final class EvalCrowdsCharts {
         List<Integer> categories = new ArrayList<>(counts);
         List<String> labels = new ArrayList<>();
         categories.forEach(c -> labels.add(Integer.toString(c)));
-        categories(chart, labels, WIDE_LEGEND_PLOT);
+        double least = Double.MAX_VALUE;
+        for (JsonNode t : results.get("thesis")) {
+            least = Math.min(least, Math.min(t.get("dqsFps").asDouble(), t.get("lbsFps").asDouble()));
+        }
+        EvalCharts.categories(chart, labels, least, 0);
         List<SkinningMethod> methods = new ArrayList<>();
         render.get("methods").forEach(m -> methods.add(SkinningMethod.fromKey(m.asText())));
         int seriesCount = EvalCrowdsThesis.SKINNINGS.size() * methods.size() + EvalCrowdsThesis.METHODS.size();
@@ -165,24 +172,6 @@ final class EvalCrowdsCharts {
             s++;
         }
         return chart;
-    }
-
-    /**
-     * Categories on the x axis as {@link EvalCharts#categories} puts them (category i at x = i),
-     * with tick labels XChart keeps: it drops every tick label when two read alike, as the blank
-     * ones between and beyond the categories do, so a position that is no category gets an
-     * invisible label of its own (zero-width spaces, as many as its hundredths of a category), and
-     * the ticks are asked for about one category apart (three quarters of {@code plotWidth} over
-     * the categories).
-     */
-    private static void categories(XYChart chart, List<String> labels, int plotWidth) {
-        EvalCharts.categories(chart, labels);
-        chart.setCustomXAxisTickLabelsFormatter(x -> {
-            long i = Math.round(x);
-            return Math.abs(x - i) < 1e-6 && i >= 0 && i < labels.size() ? labels.get((int) i)
-                    : "\u200B".repeat(1 + (int) Math.min(100_000, Math.abs(Math.round((x + 1) * 100))));
-        });
-        chart.getStyler().setXAxisTickMarkSpacingHint(Math.max(10, 3 * plotWidth / (4 * labels.size())));
     }
 
     /** The points of one method, in their order. */

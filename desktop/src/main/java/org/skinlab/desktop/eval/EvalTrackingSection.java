@@ -1,7 +1,6 @@
 package org.skinlab.desktop.eval;
 
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.List;
 import java.util.Random;
 
@@ -13,8 +12,6 @@ import boofcv.concurrency.BoofConcurrency;
 import georegression.struct.se.Se3_F64;
 
 import org.knowm.xchart.XYChart;
-import org.knowm.xchart.XYChartBuilder;
-import org.knowm.xchart.style.Styler;
 import org.skinlab.ar.BoofSquareHamming;
 import org.skinlab.ar.CameraIntrinsics;
 import org.skinlab.ar.FiducialTracker;
@@ -35,8 +32,9 @@ import org.skinlab.ar.synthetic.NegativeFrames;
  * position and rotation errors of the found; how many markers it and BoofCV's own detector with
  * its default settings ({@link BoofSquareHamming}) report on frames without one
  * ({@link NegativeFrames}: clutter, other dictionaries' codes; FarTiltedDetectionTest's and
- * TrackerEvaluationTest's sets); and the time per frame of both on the same frames, one thread.
- * Each bin draws from its own seed, so a quick run's frames are the first of a full run's.
+ * TrackerEvaluationTest's sets); and the time per frame of both, and of our video search, on a
+ * video ({@link EvalTrackingTimes}). Each bin draws from its own seed, so a quick run's frames are
+ * the first of a full run's.
  */
 final class EvalTrackingSection implements EvalSection {
     static final double HORIZONTAL_FOV = 60;
@@ -59,11 +57,19 @@ final class EvalTrackingSection implements EvalSection {
     static final long MIXED_SEED = 505;
     private static final long BIN_SEED = 1900;
 
-    private record Sizes(int perBin, int clutter, int mixed, double warmupSeconds) {
+    /** The timed video: a loop of this many frames (bench track's default), of which a run times the first. */
+    static final int VIDEO_LOOP = 60;
+
+    /**
+     * @param perBin             frames of each bin of distance and tilt
+     * @param videoFrames        the timed video's frames, the first of its loop
+     * @param videoWarmupSeconds its warm-up after a first pass (the accuracy's frames warmed detect up)
+     */
+    private record Sizes(int perBin, int clutter, int mixed, int videoFrames, double videoWarmupSeconds) {
     }
 
     private static Sizes sizes(boolean quick) {
-        return quick ? new Sizes(4, 100, 9, 1) : new Sizes(30, 1000, 90, 3);
+        return quick ? new Sizes(4, 100, 9, 10, 0) : new Sizes(30, 1000, 90, VIDEO_LOOP, 2);
     }
 
     @Override
@@ -78,7 +84,7 @@ final class EvalTrackingSection implements EvalSection {
 
     @Override
     public double estimatedSeconds(EvalContext context) {
-        return context.quick() ? 20 : 240;
+        return context.quick() ? 30 : 280;
     }
 
     @Override
@@ -96,20 +102,15 @@ final class EvalTrackingSection implements EvalSection {
     private void measure(EvalContext context, ObjectNode results, Sizes sizes) {
         putSetup(results, sizes);
         int bins = (DISTANCES.length - 1) * (TILTS.length - 1);
-        // Progress in about a positive frame's time: a clutter frame is smaller, a mixed one has 4x4 rays.
-        double warm = 4 * sizes.warmupSeconds();
-        double total = warm + bins * sizes.perBin() + sizes.clutter() * 0.3 + sizes.mixed() * 2;
+        // Progress in about a positive frame's time: a clutter frame is smaller, a mixed one has 4x4
+        // rays, a video frame is rendered once and searched whole 12 times.
+        double video = sizes.videoFrames() * 3 + 10 * sizes.videoWarmupSeconds();
+        double total = bins * sizes.perBin() + video + sizes.clutter() * 0.3 + sizes.mixed() * 2;
 
         FiducialTracker ours = new FiducialTracker(TrackerConfig.defaults(MARKER_METRES), CAMERA);
         BoofSquareHamming boof = BoofSquareHamming.defaults(MarkerDictionary.DEFAULT, MARKER_METRES, CAMERA);
         MarkerShots shots = MarkerShots.central(CAMERA, MarkerDictionary.DEFAULT, MARKER_METRES);
         Se3_F64 pose = new Se3_F64();
-        warmUp(shots, ours, boof, pose, sizes.warmupSeconds());
-        results.put("warmupSeconds", sizes.warmupSeconds());
-        context.progress(warm / total);
-
-        double[] oursMs = new double[bins * sizes.perBin()];
-        double[] boofMs = new double[oursMs.length];
         int frame = 0;
         DetectionTally all = new DetectionTally();
         DetectionTally aboutOneMetre = new DetectionTally();
@@ -119,25 +120,30 @@ final class EvalTrackingSection implements EvalSection {
             for (int t = 0; t + 1 < TILTS.length; t++) {
                 Random random = new Random(BIN_SEED + 100 * d + t);
                 DetectionTally tally = new DetectionTally();
-                int[] boofHits = {0};
+                int boofFound = 0;
                 for (int i = 0; i < sizes.perBin(); i++) {
                     MarkerShot shot = shots.shot(random, DISTANCES[d], DISTANCES[d + 1], TILTS[t], TILTS[t + 1]);
-                    List<MarkerDetection> found = race(shot, frame, ours, boof, pose, oursMs, boofMs, boofHits);
+                    List<MarkerDetection> found = ours.detect(shot.image());
+                    boofFound += boofFinds(boof, shot, pose);
                     tally.add(shot.marker(), found);
                     all.add(shot.marker(), found);
                     if (d == ABOUT_ONE_METRE && TILTS[t + 1] <= GOAL_TILT) {
                         aboutOneMetre.add(shot.marker(), found);
                     }
                     frame++;
-                    context.progress((warm + frame) / total);
+                    context.progress(frame / total);
                 }
-                boofAll += boofHits[0];
-                putBin(table.addObject(), d, t, tally, boofHits[0]);
+                boofAll += boofFound;
+                putBin(table.addObject(), d, t, tally, boofFound);
             }
         }
-        putSummary(results, all, boofAll, aboutOneMetre, oursMs, boofMs);
+        putSummary(results, all, boofAll, aboutOneMetre);
 
-        falseMarkers(context, results, sizes, ours, warm + frame, total);
+        EvalTrackingTimes.measure(results.putObject("time"), sizes.videoFrames(), VIDEO_LOOP,
+                sizes.videoWarmupSeconds());
+        context.progress((frame + video) / total);
+
+        falseMarkers(context, results, sizes, ours, frame + video, total);
     }
 
     /** Bin {@code d}, {@code t}: its distances and tilts, what our tracker found and what BoofCV's did. */
@@ -150,30 +156,13 @@ final class EvalTrackingSection implements EvalSection {
         bin.put("boofFound", boofFound);
     }
 
-    /**
-     * Both detectors on one shot, alternating who goes first so that neither always meets the
-     * other's caches: their times to {@code oursMs[frame]} and {@code boofMs[frame]}, BoofCV's finds
-     * of the shot's marker added to {@code boofHits[0]}; returns our detections.
-     */
-    private static List<MarkerDetection> race(MarkerShot shot, int frame, FiducialTracker ours, BoofSquareHamming boof,
-            Se3_F64 pose, double[] oursMs, double[] boofMs, int[] boofHits) {
-        List<MarkerDetection> found = null;
-        for (int k = 0; k < 2; k++) {
-            if ((k == 0) == (frame % 2 == 0)) {
-                long start = System.nanoTime();
-                found = ours.detect(shot.image());
-                oursMs[frame] = (System.nanoTime() - start) * 1e-6;
-            } else {
-                long start = System.nanoTime();
-                int n = boof.detect(shot.image());
-                for (int m = 0; m < n; m++) {
-                    boof.pose(m, pose);
-                }
-                boofMs[frame] = (System.nanoTime() - start) * 1e-6;
-                for (int m = 0; m < n; m++) {
-                    boofHits[0] += boof.id(m) == shot.marker().pattern().id() ? 1 : 0;
-                }
-            }
+    /** How often BoofCV's default finds the shot's marker (with each marker's pose, as it is timed). */
+    private static int boofFinds(BoofSquareHamming boof, MarkerShot shot, Se3_F64 pose) {
+        int n = boof.detect(shot.image());
+        int found = 0;
+        for (int m = 0; m < n; m++) {
+            boof.pose(m, pose);
+            found += boof.id(m) == shot.marker().pattern().id() ? 1 : 0;
         }
         return found;
     }
@@ -190,9 +179,8 @@ final class EvalTrackingSection implements EvalSection {
         results.put("framesPerBin", sizes.perBin());
     }
 
-    /** Detection over all bins and about a metre away, and both detectors' times per frame. */
-    private static void putSummary(ObjectNode results, DetectionTally all, int boofAll, DetectionTally aboutOneMetre,
-            double[] oursMs, double[] boofMs) {
+    /** Detection over all bins and about a metre away. */
+    private static void putSummary(ObjectNode results, DetectionTally all, int boofAll, DetectionTally aboutOneMetre) {
         ObjectNode overall = results.putObject("all");
         tally(overall, all);
         overall.put("boofFound", boofAll);
@@ -203,14 +191,6 @@ final class EvalTrackingSection implements EvalSection {
         one.put("goalPositionMm", GOAL_POSITION_MM);
         one.put("goalRotationDegrees", GOAL_ROTATION_DEGREES);
         tally(one, aboutOneMetre);
-
-        ObjectNode timing = results.putObject("time");
-        timing.put("frames", oursMs.length);
-        timing.put("oursMedianMs", EvalReport.round(median(oursMs)));
-        timing.put("boofMedianMs", EvalReport.round(median(boofMs)));
-        timing.put("oursMeanMs", EvalReport.round(Arrays.stream(oursMs).average().orElse(0)));
-        timing.put("boofMeanMs", EvalReport.round(Arrays.stream(boofMs).average().orElse(0)));
-        timing.put("ratio", EvalReport.round(median(oursMs) / median(boofMs)));
     }
 
     /**
@@ -246,26 +226,6 @@ final class EvalTrackingSection implements EvalSection {
         negatives(results.putObject("otherCodes"), CAMERA, sizes.mixed(), falseMarkers);
     }
 
-    /** Runs both detectors over a few frames for about {@code seconds}: the JIT compiles before timing. */
-    private static void warmUp(MarkerShots shots, FiducialTracker ours, BoofSquareHamming boof, Se3_F64 pose,
-            double seconds) {
-        Random random = new Random(BIN_SEED - 1);
-        List<GrayImage> frames = new ArrayList<>();
-        for (int i = 0; i < 4; i++) {
-            frames.add(shots.shot(random, DISTANCES[0], DISTANCES[DISTANCES.length - 1], 0, 60).image());
-        }
-        long end = System.nanoTime() + (long) (seconds * 1e9);
-        do {
-            for (GrayImage image : frames) {
-                ours.detect(image);
-                int n = boof.detect(image);
-                for (int m = 0; m < n; m++) {
-                    boof.pose(m, pose);
-                }
-            }
-        } while (System.nanoTime() < end);
-    }
-
     private static void tally(ObjectNode node, DetectionTally t) {
         node.put("frames", t.frames());
         node.put("found", t.found());
@@ -291,12 +251,6 @@ final class EvalTrackingSection implements EvalSection {
         node.put("boofDefault", falseMarkers[1]);
     }
 
-    private static double median(double[] values) {
-        double[] sorted = values.clone();
-        Arrays.sort(sorted);
-        return sorted[sorted.length / 2];
-    }
-
     @Override
     public void report(JsonNode results, EvalReport report) {
         report.paragraph("Our tracker (`FiducialTracker.detect`, the whole frame) on synthetic frames of known pose"
@@ -313,13 +267,13 @@ final class EvalTrackingSection implements EvalSection {
         binTable(results, report);
         aboutOneMetreReport(results, report);
         binFigure(results, "foundPercent", "found (%)", "tracking-found.png",
-                "Markers found against distance, a line per tilt band", Styler.LegendPosition.InsideSW, report);
+                "Markers found against distance, a line per tilt band", report);
         binFigure(results, "medianPositionMm", "median position error (mm)", "tracking-position-error.png",
-                "Median position error against distance, a line per tilt band", Styler.LegendPosition.InsideNW, report);
+                "Median position error against distance, a line per tilt band", report);
         binFigure(results, "medianRotationDegrees", "median rotation error (degrees)", "tracking-rotation-error.png",
-                "Median rotation error against distance, a line per tilt band", Styler.LegendPosition.InsideNW, report);
+                "Median rotation error against distance, a line per tilt band", report);
         falseMarkersReport(results, report);
-        timeReport(results, report);
+        EvalTrackingTimes.report(results, report);
     }
 
     /** A row per bin of distance and tilt, and one of all frames. */
@@ -376,27 +330,10 @@ final class EvalTrackingSection implements EvalSection {
         report.line("");
     }
 
-    /** Both detectors' time per frame. */
-    private static void timeReport(JsonNode results, EvalReport report) {
-        report.heading(3, "Time per frame");
-        report.paragraph("Both detectors on the " + EvalReport.num(results, "/time/frames") + " frames above, one"
-                + " thread (BoofCV's pool off), each frame's time by the wall clock after "
-                + EvalReport.num(results, "/warmupSeconds") + " s of warm-up, who goes first alternating from frame"
-                + " to frame; both include each marker's pose. Ours: median "
-                + EvalReport.num(results, "/time/oursMedianMs") + " ms (mean " + EvalReport.num(results, "/time/oursMeanMs")
-                + "); BoofCV's default: median " + EvalReport.num(results, "/time/boofMedianMs") + " ms (mean "
-                + EvalReport.num(results, "/time/boofMeanMs") + "); ours / BoofCV's: "
-                + EvalReport.num(results, "/time/ratio") + ". The video search near the last markers"
-                + " (`FiducialTracker.track`) is faster still: `skinlab bench track`.");
-    }
-
     /** A bin measure against the distance bins' middles, one line per tilt band. */
     private static void binFigure(JsonNode results, String measure, String axis, String png, String caption,
-            Styler.LegendPosition legend, EvalReport report) {
-        XYChart chart = new XYChartBuilder().width(900).height(500).title(caption).xAxisTitle("distance (m)")
-                .yAxisTitle(axis).build();
-        chart.getStyler().setLegendPosition(legend);
-        chart.getStyler().setMarkerSize(8);
+            EvalReport report) {
+        XYChart chart = EvalCharts.xy(caption, "distance (m)", axis);
         List<Double> bands = new ArrayList<>();
         for (JsonNode bin : results.get("bins")) {
             if (!bands.contains(bin.get("tiltMin").asDouble())) {
