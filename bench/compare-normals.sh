@@ -4,8 +4,9 @@
 # with-normals calibration) and `skinlab bench skinning` with the scalar and the vector kernels,
 # normals none, blended (the reference's rule) and exact, on the reference's synthetic data.
 # Interleaved and repeated: each round runs every variant once, in the same order; the tables give
-# per variant the median over the rounds of each run's median ns per vertex, with the smallest and
-# largest of those medians, and the DQS/LBS ratio of the medians.
+# per variant the median over the rounds of each run's median and of each run's minimum ns per
+# vertex, with the smallest and largest, and the DQS/LBS ratios (on a busy machine the minimum is
+# the less disturbed figure).
 #
 # usage: bench/compare-normals.sh [--rounds R] [--seconds S] [--warmup-seconds W] [--sizes "V..."]
 #                                 [--influences "K..."] [--sweep-size V] [--out FILE]
@@ -16,9 +17,10 @@
 #   --influences "K..."  influence counts of the sweep (default "1 2 4 8"; "" for none)
 #   --sweep-size V       vertex count of the sweep (default 100000)
 #   --out FILE           keep the raw lines (C++ output and our JSON) there
+#   --report FILE        only print the tables of raw lines kept with --out
 # Needs g++ (builds both programs in a temporary folder), python3 and the installed skinlab
 # (gradle -q installDist); ours runs on the start script's Java (the newest JDK >= 17 installed, or
-# SKINLAB_JAVA_HOME=DIR). About 4 minutes per round with the defaults.
+# SKINLAB_JAVA_HOME=DIR). About 4 minutes per round with the defaults on a quiet machine.
 set -eu
 
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -29,6 +31,7 @@ sizes="10000 100000"
 influences="1 2 4 8"
 sweep=100000
 out=
+report=
 while [ $# -gt 0 ]; do
     case "$1" in
         --rounds) rounds=$2; shift 2 ;;
@@ -38,10 +41,86 @@ while [ $# -gt 0 ]; do
         --influences) influences=$2; shift 2 ;;
         --sweep-size) sweep=$2; shift 2 ;;
         --out) out=$2; shift 2 ;;
-        -h|--help) sed -n '2,22p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+        --report) report=$2; shift 2 ;;
+        -h|--help) sed -n '2,24p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
         *) echo "compare-normals: unknown argument $1" >&2; exit 2 ;;
     esac
 done
+
+report() { # raw lines -> tables
+python3 - "$1" <<'PY'
+import json, re, statistics, sys
+runs = {}   # (table, kernel, normals, method, V, K) -> [(min ns, median ns)] per run
+checks = {}
+java = set()
+for line in open(sys.argv[1]):
+    m = re.match(r'cpp (\w+) (\d+) V=(\d+)\s+(\S+)\s+min\s+([\d.]+)\s+median\s+([\d.]+).*checksum ([-\d.]+)', line)
+    if m:
+        table, k, v, variant = m[1], int(m[2]), int(m[3]), m[4]
+        method = variant.split('-')[1]
+        if variant in ('c-lbs', 'c-dqs'):
+            key = (table, 'C++ skin_ref', 'blended', method, v, k)
+        elif variant.endswith('-nrm'):
+            key = (table, 'C++ ours', 'blended', method, v, k)
+        else:
+            key = (table, 'C++ ours', 'none', method, v, k)
+        runs.setdefault(key, []).append((float(m[5]), float(m[6])))
+        checks[key] = m[7]
+        continue
+    m = re.match(r'java (\w+) (\{.*\})', line)
+    if m:
+        j = json.loads(m[2])
+        java.add(f"Java {j['java']} ({j['javaVendor']})")
+        key = (m[1], 'Java ' + j['implementation'], j['normals'], j['method'], j['vertices'], j['influences'])
+        runs.setdefault(key, []).append((j['minNsPerVertex'], j['medianNsPerVertex']))
+        checks[key] = f"{j['checksum']:.6f}"
+sizes = sorted({k[4] for k in runs if k[0] == 'main'})
+ks = sorted({k[5] for k in runs if k[0] == 'sweep'})
+sweeps = sorted({k[4] for k in runs if k[0] == 'sweep'})
+kernels = ['C++ skin_ref', 'C++ ours', 'Java scalar', 'Java vector-256']
+def stat(key, which):
+    xs = [r[which] for r in runs.get(key, [])]
+    return (statistics.median(xs), min(xs), max(xs)) if xs else None
+def text(s):
+    return f'{s[0]:.2f} ({s[1]:.2f}-{s[2]:.2f})' if s else ''
+def ratio(a, b):
+    return f'{b[0] / a[0]:.2f}' if a and b else ''
+rounds = max(len(x) for x in runs.values())
+print(f"ours on {', '.join(sorted(java))}; {rounds} rounds. Per run its median and its minimum ns per vertex;")
+print("a cell gives the median over the rounds (the smallest and largest in brackets).\n")
+for v in sizes:
+    print(f'V = {v}, 4 influences:\n')
+    print('| kernel | normals | LBS median | DQS median | DQS / LBS | LBS min | DQS min | DQS / LBS (min) | checksums LBS, DQS |')
+    print('|---|---|---:|---:|---:|---:|---:|---:|---|')
+    for kern in kernels:
+        for n in ['none', 'blended', 'exact']:
+            key = lambda method: ('main', kern, n, method, v, 4)
+            lm, dm, ln, dn = stat(key('lbs'), 1), stat(key('dqs'), 1), stat(key('lbs'), 0), stat(key('dqs'), 0)
+            if not lm and not dm:
+                continue
+            print(f"| {kern} | {n} | {text(lm)} | {text(dm)} | {ratio(lm, dm)} | {text(ln)} | {text(dn)} | "
+                  f"{ratio(ln, dn)} | {checks.get(key('lbs'), '')}, {checks.get(key('dqs'), '')} |")
+    print()
+for v in sweeps:
+    print(f'DQS / LBS by influences, V = {v}: the ratio of the medians, then of the minima, and LBS and DQS by the minima in ns per vertex:\n')
+    print('| kernel | normals | ' + ' | '.join(f'{k} influences' for k in ks) + ' |')
+    print('|---|---|' + '---:|' * len(ks))
+    for kern in ['C++ ours', 'Java scalar', 'Java vector-256']:
+        for n in ['none', 'blended']:
+            cells = []
+            for k in ks:
+                lm, dm = stat(('sweep', kern, n, 'lbs', v, k), 1), stat(('sweep', kern, n, 'dqs', v, k), 1)
+                ln, dn = stat(('sweep', kern, n, 'lbs', v, k), 0), stat(('sweep', kern, n, 'dqs', v, k), 0)
+                cells.append(f'{ratio(lm, dm)}, {ratio(ln, dn)} ({ln[0]:.1f}, {dn[0]:.1f})' if ln and dn else '')
+            print(f'| {kern} | {n} | ' + ' | '.join(cells) + ' |')
+    print()
+PY
+}
+
+if [ -n "$report" ]; then
+    report "$report"
+    exit 0
+fi
 
 cd "$root"
 skinlab=desktop/build/install/skinlab/bin/skinlab
@@ -85,65 +164,4 @@ while [ "$r" -le "$rounds" ]; do
     r=$((r + 1))
 done
 [ -z "$out" ] || cp "$raw" "$out"
-python3 - "$raw" "$sizes" "$influences" "$sweep" <<'PY'
-import json, re, statistics, sys
-raw, sizes, ks, sweep = sys.argv[1], [int(s) for s in sys.argv[2].split()], [int(k) for k in sys.argv[3].split()], int(sys.argv[4])
-runs = {}   # (table, kernel, normals, method, V, K) -> [median ns]
-checks = {}
-java = set()
-for line in open(raw):
-    m = re.match(r'cpp (\w+) (\d+) V=(\d+)\s+(\S+)\s+min\s+([\d.]+)\s+median\s+([\d.]+).*checksum ([-\d.]+)', line)
-    if m:
-        table, k, v, variant, med = m[1], int(m[2]), int(m[3]), m[4], float(m[6])
-        method = variant.split('-')[1]
-        if variant in ('c-lbs', 'c-dqs'):
-            key = (table, 'C++ skin_ref', 'blended', method, v, k)
-        elif variant.endswith('-nrm'):
-            key = (table, 'C++ ours', 'blended', method, v, k)
-        else:
-            key = (table, 'C++ ours', 'none', method, v, k)
-        runs.setdefault(key, []).append(med)
-        checks[key] = m[7]
-        continue
-    m = re.match(r'java (\w+) (\{.*\})', line)
-    if m:
-        j = json.loads(m[2])
-        java.add(f"Java {j['java']} ({j['javaVendor']})")
-        key = (m[1], 'Java ' + j['implementation'], j['normals'], j['method'], j['vertices'], j['influences'])
-        runs.setdefault(key, []).append(j['medianNsPerVertex'])
-        checks[key] = f"{j['checksum']:.6f}"
-kernels = ['C++ skin_ref', 'C++ ours', 'Java scalar', 'Java vector-256']
-order = ['none', 'blended', 'exact']
-def cell(key):
-    xs = runs.get(key)
-    if not xs:
-        return None, ''
-    med = statistics.median(xs)
-    return med, f'{med:.2f} ({min(xs):.2f}-{max(xs):.2f})'
-print(f"ours on {', '.join(sorted(java))}; medians over {max(len(x) for x in runs.values())} rounds (min-max of the rounds' medians), ns per vertex\n")
-for v in sizes:
-    print(f'V = {v}, 4 influences:\n')
-    print('| kernel | normals | LBS | DQS | DQS / LBS | checksums LBS, DQS |')
-    print('|---|---|---:|---:|---:|---|')
-    for kern in kernels:
-        for n in order:
-            (l, lt), (d, dt) = cell(('main', kern, n, 'lbs', v, 4)), cell(('main', kern, n, 'dqs', v, 4))
-            if l is None and d is None:
-                continue
-            ratio = f'{d / l:.2f}' if l and d else ''
-            print(f"| {kern} | {n} | {lt} | {dt} | {ratio} | {checks.get(('main', kern, n, 'lbs', v, 4), '')}, "
-                  f"{checks.get(('main', kern, n, 'dqs', v, 4), '')} |")
-    print()
-if ks:
-    print(f'DQS / LBS by influences, V = {sweep} (the medians, LBS and DQS ns per vertex in brackets):\n')
-    print('| kernel | normals | ' + ' | '.join(f'{k} influences' for k in ks) + ' |')
-    print('|---|---|' + '---:|' * len(ks))
-    for kern in ['C++ ours', 'Java scalar', 'Java vector-256']:
-        for n in ['none', 'blended']:
-            cells = []
-            for k in ks:
-                l, _ = cell(('sweep', kern, n, 'lbs', sweep, k))
-                d, _ = cell(('sweep', kern, n, 'dqs', sweep, k))
-                cells.append(f'{d / l:.2f} ({l:.1f}, {d:.1f})' if l and d else '')
-            print(f'| {kern} | {n} | ' + ' | '.join(cells) + ' |')
-PY
+report "$raw"
