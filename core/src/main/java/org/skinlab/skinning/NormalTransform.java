@@ -26,10 +26,5 @@ public enum NormalTransform {
      * refuses it with an {@link IllegalArgumentException}, and {@link Skinner#skinDeformations}
      * (whose records are normal matrices) is refused too.
      */
-    NONE;
-
-    /** Whether a skinner under this rule writes normals (every rule but {@link #NONE}). */
-    public boolean writesNormals() {
-        return this != NONE;
-    }
+    NONE
 }

@@ -115,7 +115,8 @@ class PositionsOnlySkinningTest {
                     fail(what + ": float " + i + " outside [" + from + ", " + to + ") was written");
                 }
             } else if (Float.floatToRawIntBits(actual[i]) != Float.floatToRawIntBits(expected[i])) {
-                fail(what + ": float " + i + " (point " + i / 3 + ") is " + actual[i] + ", with normals " + expected[i]);
+                fail(what + ": float " + i + " (point " + i / 3 + ") is " + actual[i] + ", with normals "
+                        + expected[i]);
             }
         }
     }

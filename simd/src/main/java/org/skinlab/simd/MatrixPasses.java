@@ -16,8 +16,8 @@ import org.skinlab.skinning.Skinner;
  * over the 8 lanes as two vectors {@code [c0 | c1]}, {@code [c2 | c3]} (columns, c3 the
  * translation, row 3 zero): the blend of any number of influences, composing with a rigid
  * matrix, and applying the result to a point (positions and normals, positions alone, or a
- * deformation of {@link Skinner#skinDeformations}). Passes meet in a small scratch of {@link #CHUNK} matrices (16 floats
- * each) that stays in L1.
+ * deformation of {@link Skinner#skinDeformations}). Passes meet in a small scratch of
+ * {@link #CHUNK} matrices (16 floats each) that stays in L1.
  *
  * <p><b>Sign of a determinant</b> (exact normals): {@code clamp(d * 1e30, -1, 1)}, two lane-wise
  * min/max and a multiply, written out in each loop. A compare and a masked blend would say it

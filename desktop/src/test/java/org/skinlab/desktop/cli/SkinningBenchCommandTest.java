@@ -77,8 +77,8 @@ class SkinningBenchCommandTest {
         }
         Cli text = Cli.run("bench", "skinning", "--vertices", "300", "--method", "dqs", "--normals", "none",
                 "--influences", "2", "--warmup-seconds", "0", "--seconds", "0");
-        assertTrue(text.out.startsWith("skinning dqs, 300 vertices, 2 influences, 1 thread, vector-256, positions only,"),
-                text::toString);
+        assertTrue(text.out.startsWith("skinning dqs, 300 vertices, 2 influences, 1 thread, vector-256,"
+                + " positions only,"), text::toString);
     }
 
     @Test
@@ -104,7 +104,8 @@ class SkinningBenchCommandTest {
                 "--seconds", "0");
         assertEquals(ExitCodes.OK, r.status, r::toString);
         String[] lines = r.out.split("\n");
-        assertEquals("skinning lbs, 300 vertices, 4 influences, 1 thread, vector-256, normals by the blended matrix, Java "
+        assertEquals("skinning lbs, 300 vertices, 4 influences, 1 thread, vector-256, normals by the blended matrix,"
+                + " Java "
                 + System.getProperty("java.version") + " (" + System.getProperty("java.vendor") + ")", lines[0]);
         assertTrue(lines[1].matches("min [0-9.]+ ns/vertex, median [0-9.]+ ns/vertex \\([0-9]+ runs\\), checksum "
                 + "-?[0-9.]+"), lines[1]);
