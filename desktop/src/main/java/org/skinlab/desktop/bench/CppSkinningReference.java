@@ -114,7 +114,7 @@ public final class CppSkinningReference {
 
     /**
      * As {@link #run(List, int, double, List)} with {@code influences} joints per vertex
-     * ({@code INFLUENCES=K}, 1 to 8): our positions-only program draws them as
+     * ({@code INFLUENCES=K}, 1 to 16): our positions-only program draws them as
      * {@link SyntheticSkinData#SyntheticSkinData(int, long, int)} does; the shared reference
      * ignores it and always has 4.
      */
