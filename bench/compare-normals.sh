@@ -20,7 +20,7 @@
 #   --report FILE        only print the tables of raw lines kept with --out
 # Needs g++ (builds both programs in a temporary folder), python3 and the installed skinlab
 # (gradle -q installDist); ours runs on the start script's Java (the newest JDK >= 17 installed, or
-# SKINLAB_JAVA_HOME=DIR). About 4 minutes per round with the defaults on a quiet machine.
+# SKINLAB_JAVA_HOME=DIR). About 3 minutes per round for the tables and 7 for the sweep here.
 set -eu
 
 root=$(cd "$(dirname "$0")/.." && pwd)
