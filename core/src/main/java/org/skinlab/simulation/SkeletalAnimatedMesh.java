@@ -135,7 +135,17 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
         this(model, clip, config, NormalTransform.INVERSE_TRANSPOSE);
     }
 
+    /**
+     * @param normals how frames' normals are made: {@link NormalTransform#INVERSE_TRANSPOSE} or
+     *                {@link NormalTransform#BLENDED_MATRIX}; frames carry normals for rendering and
+     *                the switches may pick any method, so {@link NormalTransform#NONE} is refused
+     *                (skin positions only with a {@link org.skinlab.skinning.SkinnedModel} or a skinner)
+     */
     public SkeletalAnimatedMesh(Model model, AnimationClip clip, AnimationConfig config, NormalTransform normals) {
+        if (normals == NormalTransform.NONE) {
+            throw new IllegalArgumentException("SkeletalAnimatedMesh: frames carry normals and any method may be"
+                    + " switched on, so NormalTransform.NONE (positions only, lbs and dqs) is not taken here");
+        }
         this.model = Objects.requireNonNull(model, "model");
         this.clip = clip;
         this.config = Objects.requireNonNull(config, "config");

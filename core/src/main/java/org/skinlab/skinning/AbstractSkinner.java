@@ -3,7 +3,9 @@ package org.skinlab.skinning;
 /**
  * What every skinner holds besides its kernel: the method, the geometry it reads, how it moves
  * normals, and a name for reports. Subclasses (scalar here, SIMD in the desktop's simd module)
- * add only their data layout and {@link #skin}.
+ * add only their data layout and {@link #skin}. The one place that refuses
+ * {@link NormalTransform#NONE} for a method without positions-only kernels, so no kernel can be
+ * made that would write normals its caller did not ask for.
  */
 public abstract class AbstractSkinner implements Skinner {
     private final SkinningMethod method;
@@ -13,6 +15,10 @@ public abstract class AbstractSkinner implements Skinner {
 
     protected AbstractSkinner(SkinningMethod method, String implementation, SkinnedGeometry geometry,
             NormalTransform normals) {
+        if (normals == NormalTransform.NONE && !method.skinsPositionsOnly()) {
+            throw new IllegalArgumentException(method.key() + " skinning has no positions-only kernel"
+                    + " (NormalTransform.NONE): it is for lbs and dqs; use BLENDED_MATRIX or INVERSE_TRANSPOSE");
+        }
         this.method = method;
         this.implementation = implementation;
         this.geometry = geometry;
@@ -37,5 +43,14 @@ public abstract class AbstractSkinner implements Skinner {
     @Override
     public final String implementation() {
         return implementation;
+    }
+
+    /**
+     * For {@link #skinDeformations} under {@link NormalTransform#NONE}: a deformation's record is
+     * mostly its normal matrix, which positions-only skinning does not compute.
+     */
+    protected final UnsupportedOperationException noDeformationsWithoutNormals() {
+        return new UnsupportedOperationException(method.key() + " skinner (" + implementation
+                + ") with NormalTransform.NONE skins positions only: skinDeformations needs a normal rule");
     }
 }

@@ -180,25 +180,23 @@ public final class InfluenceCapError {
         return geometry.positionCount() == 0 ? 0 : Math.sqrt(sum);
     }
 
-    /** One geometry with its two scalar skinners and output arrays (normals are computed, not compared). */
+    /** One geometry with its two scalar skinners, positions only, and their output array. */
     private static final class Side {
         final Skinner[] skinners;
         final float[] positions;
-        final float[] normals;
 
         Side(SkinnedGeometry geometry) {
             // The per-point scalar kernels on both sides (never the shared-position route, which
             // the capped side, built from arrays, cannot take): equal inputs give equal bits.
             skinners = new Skinner[] {
-                new ScalarLbsSkinner(geometry, NormalTransform.BLENDED_MATRIX),
-                new ScalarDqsSkinner(geometry, NormalTransform.BLENDED_MATRIX)};
+                new ScalarLbsSkinner(geometry, NormalTransform.NONE),
+                new ScalarDqsSkinner(geometry, NormalTransform.NONE)};
             positions = new float[3 * geometry.pointCount()];
-            normals = new float[3 * geometry.pointCount()];
         }
 
         /** Method 0 LBS, 1 DQS (the palette's dual quaternions prepared). */
         void skin(int method, JointPalette palette) {
-            skinners[method].skinAll(palette, positions, normals);
+            skinners[method].skinAll(palette, positions, null);
         }
     }
 

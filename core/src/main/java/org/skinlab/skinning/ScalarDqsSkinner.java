@@ -16,6 +16,9 @@ package org.skinlab.skinning;
  *     INVERSE_TRANSPOSE the normal is then scaled to unit length, as LBS's is.</li>
  * </ol>
  * The SIMD kernels flip the same terms (a dot of -0 included) and are tested against this one.
+ * Positions only ({@link NormalTransform#NONE}) take a loop of their own, {@link #skinPositions},
+ * chosen once per call: the same steps without the normal's (the scale phase's blend of S without
+ * its cofactor), so the same bits.
  */
 public final class ScalarDqsSkinner extends AbstractSkinner {
     private final float[] positions;
@@ -42,6 +45,10 @@ public final class ScalarDqsSkinner extends AbstractSkinner {
 
     @Override
     public void skin(JointPalette palette, float[] outPositions, float[] outNormals, int from, int to) {
+        if (normals == NormalTransform.NONE) {
+            skinPositions(palette, outPositions, from, to);
+            return;
+        }
         final float[] dq = palette.dualQuaternions();
         final float[] sc = palette.scales();
         final boolean scaled = palette.hasScale();
@@ -80,6 +87,29 @@ public final class ScalarDqsSkinner extends AbstractSkinner {
         }
     }
 
+    /** {@link #skin} without normals: the scale phase's {@code S p} where joints scale, then the blend applied. */
+    private void skinPositions(JointPalette palette, float[] outPositions, int from, int to) {
+        final float[] dq = palette.dualQuaternions();
+        final float[] sc = palette.scales();
+        final boolean scaled = palette.hasScale();
+        final float[] b = blended.get();
+        for (int i = from; i < to; i++) {
+            int o = width * i;
+            SkinningSteps.blendDualQuaternions(dq, joints, weights, o, width, b, 0);
+            int v = 3 * i;
+            float[] p = positions;
+            int pv = v;
+            if (scaled) {
+                SkinningSteps.blendMatrices(sc, joints, weights, o, width, b, 8);
+                SkinningSteps.transformAffine(b, 8, positions, v, b, 29);
+                p = b;
+                pv = 29;
+            }
+            SkinningSteps.transformPoint(b[0], b[1], b[2], b[3], b[4], b[5], b[6], b[7], p[pv], p[pv + 1], p[pv + 2],
+                    outPositions, v);
+        }
+    }
+
     /**
      * The scale phase's point: {@code S p} into {@code b[29..32)} and {@code K n} into
      * {@code b[32..35)}, S and K from {@code b[8..29)}; under the exact rule K n is scaled to unit
@@ -105,6 +135,9 @@ public final class ScalarDqsSkinner extends AbstractSkinner {
 
     @Override
     public void skinDeformations(JointPalette palette, float[] outDeformations, int from, int to) {
+        if (normals == NormalTransform.NONE) {
+            throw noDeformationsWithoutNormals();
+        }
         final float[] dq = palette.dualQuaternions();
         final float[] sc = palette.scales();
         final boolean scaled = palette.hasScale();

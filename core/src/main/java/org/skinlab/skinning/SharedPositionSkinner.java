@@ -9,22 +9,37 @@ package org.skinlab.skinning;
  * of a range's points are not a contiguous range. So split a frame over threads at the level of
  * the position kernel, not by wrapping this skinner in a {@link ParallelSkinner} (which would
  * repeat the position work per chunk). The deformations live in a per-thread scratch array.
+ *
+ * <p>Positions only ({@link NormalTransform#NONE}) need no deformation: the kernel skins the
+ * positions into the scratch and each point copies its position's three floats, the same bits as
+ * skinning the point (its position and influences are its position's).
  */
 final class SharedPositionSkinner extends AbstractSkinner {
     private final Skinner positionKernel;
     private final DeformationExpansion expansion;
     private final int[] deformationOfPoint;
     private final int positionCount;
+    /** Per thread, the positions' deformations, or their skinned positions under {@link NormalTransform#NONE}. */
     private final ThreadLocal<float[]> deformations;
+    /** ns per point to copy its skinned position (positions only; see {@link #pays}). */
+    static final double COPY_NS = 1;
 
+    /**
+     * @param expansion how points are derived from deformations; null for a positions-only kernel
+     *                  ({@link NormalTransform#NONE}), whose points copy their positions
+     */
     SharedPositionSkinner(SkinnedGeometry geometry, Skinner positionKernel, DeformationExpansion expansion) {
         super(positionKernel.method(), positionKernel.implementation() + ", each position once ("
-                + expansion.implementation() + " expansion)", geometry, positionKernel.normalTransform());
+                + (expansion == null ? "positions copied" : expansion.implementation() + " expansion") + ")", geometry,
+                positionKernel.normalTransform());
+        if ((expansion == null) != (normals == NormalTransform.NONE)) {
+            throw new IllegalArgumentException("an expansion is needed exactly when normals are skinned");
+        }
         this.positionKernel = positionKernel;
         this.expansion = expansion;
         this.deformationOfPoint = geometry.deformationOfPointArray();
         this.positionCount = positionKernel.geometry().pointCount();
-        int size = DEFORMATION_FLOATS * positionCount;
+        int size = (expansion == null ? 3 : DEFORMATION_FLOATS) * positionCount;
         this.deformations = ThreadLocal.withInitial(() -> new float[size]);
     }
 
@@ -53,8 +68,12 @@ final class SharedPositionSkinner extends AbstractSkinner {
      * </ul>
      * So the stormtrooper (5174 points on 3275 positions, 6 influences) shares for LBS and,
      * narrowly, for DQS, the thesis' cowboy (4252 on 740) for both by far.
+     *
+     * <p>Positions only ({@link NormalTransform#NONE}): a position costs what skinning a point
+     * directly costs, and a point then copies three floats, {@link #COPY_NS}; so sharing pays from
+     * about 1.3 points per position (the stormtrooper's 1.58 shares).
      */
-    static boolean pays(SkinningMethod method, int points, int positions, int influences) {
+    static boolean pays(SkinningMethod method, NormalTransform rule, int points, int positions, int influences) {
         double direct;
         double intoDeformation;
         double derived;
@@ -70,6 +89,9 @@ final class SharedPositionSkinner extends AbstractSkinner {
             direct = 4 + 2.2 * influences;
             intoDeformation = 6 + 2.2 * influences;
             derived = 2;
+        }
+        if (rule == NormalTransform.NONE) {
+            return positions * direct + points * COPY_NS < points * direct;
         }
         return positions * intoDeformation + points * derived < points * direct;
     }
@@ -105,6 +127,13 @@ final class SharedPositionSkinner extends AbstractSkinner {
     @Override
     public void skin(JointPalette palette, float[] outPositions, float[] outNormals, int from, int to) {
         float[] f = deformations.get();
+        if (expansion == null) {
+            positionKernel.skin(palette, f, null, 0, positionCount);
+            for (int i = from; i < to; i++) {
+                System.arraycopy(f, 3 * deformationOfPoint[i], outPositions, 3 * i, 3);
+            }
+            return;
+        }
         positionKernel.skinDeformations(palette, f, 0, positionCount);
         // DQS's and CoR's normal matrices without scale are rotations of unit normals (see
         // expansionNormals); LBS's and STBS-on-LBS's are cofactors of blended matrices, never

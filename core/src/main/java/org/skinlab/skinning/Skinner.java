@@ -15,8 +15,9 @@ public interface Skinner {
 
     /**
      * Deforms points {@code [from, to)}: writes 3 floats per point into {@code outPositions} and
-     * {@code outNormals} at {@code 3 * point}. For DQS the palette must have been through
-     * {@link JointPalette#prepareDualQuaternions()} this frame.
+     * {@code outNormals} at {@code 3 * point}. Under {@link NormalTransform#NONE} only positions
+     * are written and {@code outNormals} is not touched (it may be null). For DQS the palette must
+     * have been through {@link JointPalette#prepareDualQuaternions()} this frame.
      */
     void skin(JointPalette palette, float[] outPositions, float[] outNormals, int from, int to);
 
@@ -33,6 +34,8 @@ public interface Skinner {
      * under {@link NormalTransform#BLENDED_MATRIX}. Under INVERSE_TRANSPOSE N is the cofactor matrix
      * of the blended linear part times the sign of its determinant, so a mirroring transform keeps
      * normals outward; the geometry's normals are not read. Same threading rules as {@link #skin}.
+     *
+     * @throws UnsupportedOperationException under {@link NormalTransform#NONE} (positions only)
      */
     void skinDeformations(JointPalette palette, float[] outDeformations, int from, int to);
 

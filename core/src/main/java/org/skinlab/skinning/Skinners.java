@@ -40,9 +40,10 @@ public final class Skinners {
     /** As {@link #create(SkinningMethod, SkinnedGeometry, NormalTransform)} with a choice of sharing. */
     public static Skinner create(SkinningMethod method, SkinnedGeometry geometry, NormalTransform normals,
             PositionSharing sharing) {
-        SkinnedGeometry shared = shared(method, geometry, sharing);
+        SkinnedGeometry shared = shared(method, normals, geometry, sharing);
         if (shared != null) {
-            return new SharedPositionSkinner(geometry, create(method, shared, normals), expansion(
+            Skinner positions = create(method, shared, normals);
+            return new SharedPositionSkinner(geometry, positions, normals == NormalTransform.NONE ? null : expansion(
                     geometry.deformationOfPointArray(), SharedPositionSkinner.expansionNormals(method, normals, geometry)));
         }
         for (SkinnerProvider p : PROVIDERS) {
@@ -60,12 +61,13 @@ public final class Skinners {
     }
 
     /** The geometry's positions when they are to be skinned once, else null. */
-    private static SkinnedGeometry shared(SkinningMethod method, SkinnedGeometry geometry, PositionSharing sharing) {
+    private static SkinnedGeometry shared(SkinningMethod method, NormalTransform normals, SkinnedGeometry geometry,
+            PositionSharing sharing) {
         SkinnedGeometry shared = geometry.sharedPositions();
         if (shared == null || sharing == PositionSharing.NEVER) {
             return null;
         }
-        return sharing == PositionSharing.ALWAYS || SharedPositionSkinner.pays(method, geometry.pointCount(),
+        return sharing == PositionSharing.ALWAYS || SharedPositionSkinner.pays(method, normals, geometry.pointCount(),
                 shared.pointCount(), geometry.influencesPerPoint()) ? shared : null;
     }
 
@@ -106,10 +108,12 @@ public final class Skinners {
     /** As {@link #scalar(SkinningMethod, SkinnedGeometry, NormalTransform)} with a choice of sharing. */
     public static Skinner scalar(SkinningMethod method, SkinnedGeometry geometry, NormalTransform normals,
             PositionSharing sharing) {
-        SkinnedGeometry shared = shared(method, geometry, sharing);
+        SkinnedGeometry shared = shared(method, normals, geometry, sharing);
         if (shared != null) {
-            return new SharedPositionSkinner(geometry, scalar(method, shared, normals), DeformationExpansion.scalar(
-                    geometry.deformationOfPointArray(), SharedPositionSkinner.expansionNormals(method, normals, geometry)));
+            Skinner positions = scalar(method, shared, normals);
+            return new SharedPositionSkinner(geometry, positions, normals == NormalTransform.NONE ? null
+                    : DeformationExpansion.scalar(geometry.deformationOfPointArray(),
+                            SharedPositionSkinner.expansionNormals(method, normals, geometry)));
         }
         switch (method) {
             case LBS:

@@ -52,6 +52,14 @@ public enum SkinningMethod {
         return this == BFDQS || this == STBS_LBS || this == STBS_DQS || this == SPLINE;
     }
 
+    /**
+     * Whether the method's kernels skin positions only ({@link NormalTransform#NONE}): LBS and DQS,
+     * scalar and SIMD. The others refuse that rule.
+     */
+    public boolean skinsPositionsOnly() {
+        return this == LBS || this == DQS;
+    }
+
     /** Whether the method reads the palette's dual quaternions ({@link JointPalette#prepareDualQuaternions()}). */
     public boolean usesDualQuaternions() {
         return this != LBS;

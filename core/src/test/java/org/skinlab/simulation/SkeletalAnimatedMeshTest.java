@@ -20,6 +20,7 @@ import org.skinlab.animation.RotationInterpolation;
 import org.skinlab.animation.WrapMode;
 import org.skinlab.collada.Fixtures;
 import org.skinlab.model.Model;
+import org.skinlab.skinning.NormalTransform;
 import org.skinlab.skinning.SkinnedGeometry;
 import org.skinlab.skinning.SkinningMethod;
 
@@ -54,6 +55,13 @@ class SkeletalAnimatedMeshTest {
                 assertNull(FrameChecker.ribbon(RIBBON).problem(f));
             }
         }
+    }
+
+    @Test
+    void positionsOnlyIsRefusedSinceFramesCarryNormals() {
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> new SkeletalAnimatedMesh(
+                RIBBON, RIBBON.clips().get(0), new AnimationConfig(), NormalTransform.NONE));
+        assertTrue(e.getMessage().contains("NormalTransform.NONE"), e.getMessage());
     }
 
     @Test

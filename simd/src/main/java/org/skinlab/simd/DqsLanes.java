@@ -27,6 +27,8 @@ final class DqsLanes {
     static final int SCRATCH = 64;
     /** Floats per block of the rest positions and normals. */
     static final int BLOCK_FLOATS = 48;
+    /** Floats per block of the rest positions alone (positions-only skinning): px py pz, 8 lanes each. */
+    static final int POSITION_BLOCK_FLOATS = 24;
 
     private DqsLanes() {
     }
@@ -139,6 +141,52 @@ final class DqsLanes {
     }
 
     /**
+     * {@link #applyAndStore} without the normal (positions-only skinning): the same operations on
+     * the position, from blocks of {@link #POSITION_BLOCK_FLOATS}. Written out again rather than
+     * shared through a method, which C2 would not inline into both loops (see the skinner's
+     * "Passes").
+     */
+    static void applyPositions(float[] s, float[] blk, float[] outPositions, int firstBlock, int endBlock) {
+        final FloatVector one = FloatVector.broadcast(S, 1f);
+        for (int b = firstBlock; b < endBlock; b++) {
+            int so = SCRATCH * (b - firstBlock);
+            int fo = POSITION_BLOCK_FLOATS * b;
+            FloatVector x0 = FloatVector.fromArray(S, s, so);
+            FloatVector x1 = FloatVector.fromArray(S, s, so + 8);
+            FloatVector x2 = FloatVector.fromArray(S, s, so + 16);
+            FloatVector x3 = FloatVector.fromArray(S, s, so + 24);
+            FloatVector inv = one.div(x0.mul(x0).add(x1.mul(x1)).add(x2.mul(x2)).add(x3.mul(x3)).sqrt());
+            FloatVector rx = x0.mul(inv);
+            FloatVector ry = x1.mul(inv);
+            FloatVector rz = x2.mul(inv);
+            FloatVector rw = x3.mul(inv);
+            FloatVector dx = FloatVector.fromArray(S, s, so + 32).mul(inv);
+            FloatVector dy = FloatVector.fromArray(S, s, so + 40).mul(inv);
+            FloatVector dz = FloatVector.fromArray(S, s, so + 48).mul(inv);
+            FloatVector dw = FloatVector.fromArray(S, s, so + 56).mul(inv);
+            FloatVector tx = rw.mul(dx).sub(dw.mul(rx)).add(ry.mul(dz).sub(rz.mul(dy)));
+            FloatVector ty = rw.mul(dy).sub(dw.mul(ry)).add(rz.mul(dx).sub(rx.mul(dz)));
+            FloatVector tz = rw.mul(dz).sub(dw.mul(rz)).add(rx.mul(dy).sub(ry.mul(dx)));
+            FloatVector px = FloatVector.fromArray(S, blk, fo);
+            FloatVector py = FloatVector.fromArray(S, blk, fo + 8);
+            FloatVector pz = FloatVector.fromArray(S, blk, fo + 16);
+            FloatVector cx = ry.mul(pz).sub(rz.mul(py)).add(rw.mul(px));
+            FloatVector cy = rz.mul(px).sub(rx.mul(pz)).add(rw.mul(py));
+            FloatVector cz = rx.mul(py).sub(ry.mul(px)).add(rw.mul(pz));
+            FloatVector ex = ry.mul(cz).sub(rz.mul(cy));
+            FloatVector ey = rz.mul(cx).sub(rx.mul(cz));
+            FloatVector ez = rx.mul(cy).sub(ry.mul(cx));
+            FloatVector ox = px.add(ex.add(ex)).add(tx.add(tx));
+            FloatVector oy = py.add(ey.add(ey)).add(ty.add(ty));
+            FloatVector oz = pz.add(ez.add(ez)).add(tz.add(tz));
+            int out = 3 * BLOCK * b;
+            ox.rearrange(Lanes.X0).blend(oy.rearrange(Lanes.Y0), Lanes.MY0).blend(oz.rearrange(Lanes.Z0), Lanes.MZ0).intoArray(outPositions, out);
+            ox.rearrange(Lanes.X1).blend(oy.rearrange(Lanes.Y1), Lanes.MY1).blend(oz.rearrange(Lanes.Z1), Lanes.MZ1).intoArray(outPositions, out + 8);
+            ox.rearrange(Lanes.X2).blend(oy.rearrange(Lanes.Y2), Lanes.MY2).blend(oz.rearrange(Lanes.Z2), Lanes.MZ2).intoArray(outPositions, out + 16);
+        }
+    }
+
+    /**
      * Per point of blocks {@code [firstBlock, endBlock)}: the blended dual quaternion of the
      * scratch, normalised, as the point's deformation ({@link org.skinlab.skinning.Skinner#skinDeformations}):
      * the rotation R as N's columns and the deformed position {@code p' = R p + t}, with R from the
@@ -148,6 +196,12 @@ final class DqsLanes {
      * its own inverse). The scale phase recovers t from p' ({@link MatrixPasses#compose}).
      */
     static void rigidDeformations(float[] s, float[] blk, float[] out, int firstBlock, int endBlock, int outFirstPoint) {
+        rigidDeformations(s, blk, BLOCK_FLOATS, out, firstBlock, endBlock, outFirstPoint);
+    }
+
+    /** As above, the rest positions in blocks of {@code blockFloats} (48, or 24 for positions only). */
+    static void rigidDeformations(float[] s, float[] blk, int blockFloats, float[] out, int firstBlock, int endBlock,
+            int outFirstPoint) {
         final FloatVector one = FloatVector.broadcast(S, 1f);
         final FloatVector zero = FloatVector.zero(S);
         for (int b = firstBlock; b < endBlock; b++) {
@@ -180,7 +234,7 @@ final class DqsLanes {
             FloatVector r02 = xz.add(yw).mul(2f);
             FloatVector r12 = yz.sub(xw).mul(2f);
             FloatVector r22 = one.sub(xx.add(yy).mul(2f));
-            int fo = BLOCK_FLOATS * b;
+            int fo = blockFloats * b;
             FloatVector px = FloatVector.fromArray(S, blk, fo);
             FloatVector py = FloatVector.fromArray(S, blk, fo + 8);
             FloatVector pz = FloatVector.fromArray(S, blk, fo + 16);

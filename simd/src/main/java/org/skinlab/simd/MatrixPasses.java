@@ -15,9 +15,9 @@ import org.skinlab.skinning.Skinner;
  * Point-by-point passes on blended 3x4 matrices, one point per iteration with the matrix spread
  * over the 8 lanes as two vectors {@code [c0 | c1]}, {@code [c2 | c3]} (columns, c3 the
  * translation, row 3 zero): the blend of any number of influences, composing with a rigid
- * matrix, and applying the result to a point (positions and normals, or a deformation of
- * {@link Skinner#skinDeformations}). Passes meet in a small scratch of {@link #CHUNK} matrices (16 floats
- * each) that stays in L1.
+ * matrix, and applying the result to a point (positions and normals, positions alone, or a
+ * deformation of {@link Skinner#skinDeformations}). Passes meet in a small scratch of
+ * {@link #CHUNK} matrices (16 floats each) that stays in L1.
  *
  * <p><b>Sign of a determinant</b> (exact normals): {@code clamp(d * 1e30, -1, 1)}, two lane-wise
  * min/max and a multiply, written out in each loop. A compare and a masked blend would say it
@@ -333,6 +333,36 @@ final class MatrixPasses {
                 FloatVector n = a.mul(nxy).add(b.mul(nz0));
                 n.add(n.rearrange(SWAP)).intoArray(outNormals, v + normalShift);
             }
+        }
+    }
+
+    /**
+     * {@link #points} without normals ({@link org.skinlab.skinning.NormalTransform#NONE}): the
+     * positions of points {@code [from, to)}, the same operations, the same spill rule.
+     */
+    static void positions(float[] acc, float[] positions, float[] outPositions, int from, int to, float[] tmp,
+            boolean spillOk) {
+        int end = spillOk ? to : Math.max(from, to - 2);
+        positions(acc, positions, outPositions, from, from, end, 0);
+        for (int i = end; i < to; i++) {
+            int v = 3 * i;
+            positions(acc, positions, tmp, from, i, i + 1, -v);
+            System.arraycopy(tmp, 0, outPositions, v, 3);
+        }
+    }
+
+    private static void positions(float[] acc, float[] positions, float[] outPositions, int base, int from, int end,
+            int positionShift) {
+        final FloatVector one = FloatVector.broadcast(S, 1f);
+        for (int i = from; i < end; i++) {
+            int o = 16 * (i - base);
+            FloatVector a = FloatVector.fromArray(S, acc, o);
+            FloatVector b = FloatVector.fromArray(S, acc, o + 8);
+            int v = 3 * i;
+            FloatVector pxy = FloatVector.broadcast(S, positions[v]).blend(FloatVector.broadcast(S, positions[v + 1]), HI);
+            FloatVector pz1 = FloatVector.broadcast(S, positions[v + 2]).blend(one, HI);
+            FloatVector p = a.mul(pxy).add(b.mul(pz1));
+            p.add(p.rearrange(SWAP)).intoArray(outPositions, v + positionShift);
         }
     }
 

@@ -40,6 +40,12 @@ import org.skinlab.skinning.SkinningMethod;
  * by {@code R} times S's signed cofactor. Without scale both {@link NormalTransform}s rotate the
  * normal; INVERSE_TRANSPOSE then scales it to unit length. {@link #skinDeformations} takes the matrix route always.
  *
+ * <p><b>Positions only</b> ({@link NormalTransform#NONE}): blocks of positions alone
+ * ({@link DqsLanes#POSITION_BLOCK_FLOATS}), {@link DqsLanes#applyPositions} instead of
+ * {@link DqsLanes#applyAndStore} and {@link MatrixPasses#positions} instead of
+ * {@link MatrixPasses#points}, chosen once per pass; the same operations on the positions, so
+ * the same bits as with normals.
+ *
  * <p><b>Influences.</b> Any number: written-out blends for up to 4, 6 and 8, then one scratch pass
  * per influence beyond the eighth.
  */
@@ -62,7 +68,10 @@ final class VectorDqsSkinner extends AbstractSkinner {
     private final ThreadLocal<float[]> rigid = ThreadLocal.withInitial(() -> new float[16 * MatrixPasses.CHUNK]);
     private final ThreadLocal<float[]> blended = ThreadLocal.withInitial(() -> new float[16 * MatrixPasses.CHUNK]);
     private final ThreadLocal<float[]> lastPoints = ThreadLocal.withInitial(() -> new float[16]);
+    /** Rest positions and normals in blocks of 8 points, or positions alone under {@link NormalTransform#NONE}. */
     private final float[] points;
+    /** Floats per block of {@link #points}. */
+    private final int blockFloats;
     private final int jointCount;
     private final ThreadLocal<float[]> scratch = ThreadLocal.withInitial(() -> new float[CHUNK * SCRATCH]);
 
@@ -74,20 +83,30 @@ final class VectorDqsSkinner extends AbstractSkinner {
         this.restNormals = geometry.normalArray();
         int points = geometry.pointCount();
         blockCount = points / BLOCK;
-        this.points = new float[BLOCK_FLOATS * blockCount];
+        blockFloats = normals == NormalTransform.NONE ? DqsLanes.POSITION_BLOCK_FLOATS : BLOCK_FLOATS;
+        this.points = new float[blockFloats * blockCount];
         restShapeChanged();
         blend = new SignedDqBlend(geometry);
         int size = 16 * jointCount;
         scaleColumns = ThreadLocal.withInitial(() -> new float[size]);
     }
 
-    /** Copies the rest positions and normals (unit under the exact rule) into the blocks. */
+    /**
+     * Copies the rest positions and normals (unit under the exact rule; none under
+     * {@link NormalTransform#NONE}) into the blocks.
+     */
     @Override
     public void restShapeChanged() {
         float[] pos = restPositions;
         float[] nrm = restNormals;
         for (int i = 0, n = BLOCK * blockCount; i < n; i++) {
-            int o = BLOCK_FLOATS * (i / BLOCK) + i % BLOCK;
+            int o = blockFloats * (i / BLOCK) + i % BLOCK;
+            if (blockFloats == DqsLanes.POSITION_BLOCK_FLOATS) {
+                for (int c = 0; c < 3; c++) {
+                    points[o + BLOCK * c] = pos[3 * i + c];
+                }
+                continue;
+            }
             // Exact normals are unit: normalised here once, a rotation keeps them so (the scalar
             // kernel, for points outside whole blocks, normalises after rotating).
             float nx = nrm[3 * i], ny = nrm[3 * i + 1], nz = nrm[3 * i + 2];
@@ -114,7 +133,8 @@ final class VectorDqsSkinner extends AbstractSkinner {
             scalar.skin(palette, outPositions, outNormals, from, to);
             return;
         }
-        if (outPositions.length < 3 * BLOCK * endBlock || outNormals.length < 3 * BLOCK * endBlock) {
+        boolean positionsOnly = normals == NormalTransform.NONE;
+        if (outPositions.length < 3 * BLOCK * endBlock || !positionsOnly && outNormals.length < 3 * BLOCK * endBlock) {
             throw new IndexOutOfBoundsException("output arrays shorter than " + 3 * BLOCK * endBlock);
         }
         scalar.skin(palette, outPositions, outNormals, from, BLOCK * firstBlock);
@@ -136,13 +156,17 @@ final class VectorDqsSkinner extends AbstractSkinner {
                 int p0 = BLOCK * b;
                 int p1 = BLOCK * e;
                 blend.blend(tab, s, b, e);
-                DqsLanes.rigidDeformations(s, points, r, b, e, p0);
+                DqsLanes.rigidDeformations(s, points, blockFloats, r, b, e, p0);
                 MatrixPasses.blend(cs, blend.passJoints, blend.passWeights, blend.passWidth, p0, p1, acc);
                 MatrixPasses.compose(r, restPositions, p0, acc, p1 - p0);
                 // Spilling past p1 is fine when points follow: the next pass or the scalar tail
                 // overwrites them.
-                MatrixPasses.points(acc, restPositions, restNormals, exact, mirror, outPositions, outNormals, p0, p1,
-                        tmp, to - p1 >= 2);
+                if (positionsOnly) {
+                    MatrixPasses.positions(acc, restPositions, outPositions, p0, p1, tmp, to - p1 >= 2);
+                } else {
+                    MatrixPasses.points(acc, restPositions, restNormals, exact, mirror, outPositions, outNormals, p0,
+                            p1, tmp, to - p1 >= 2);
+                }
             }
             if (exact) {
                 MatrixPasses.normalise(outNormals, BLOCK * firstBlock, BLOCK * endBlock);
@@ -151,7 +175,11 @@ final class VectorDqsSkinner extends AbstractSkinner {
             for (int b = firstBlock; b < endBlock; b += CHUNK) {
                 int e = Math.min(endBlock, b + CHUNK);
                 blend.blend(tab, s, b, e);
-                DqsLanes.applyAndStore(s, points, outPositions, outNormals, b, e);
+                if (positionsOnly) {
+                    DqsLanes.applyPositions(s, points, outPositions, b, e);
+                } else {
+                    DqsLanes.applyAndStore(s, points, outPositions, outNormals, b, e);
+                }
             }
         }
         scalar.skin(palette, outPositions, outNormals, BLOCK * endBlock, to);
@@ -165,6 +193,9 @@ final class VectorDqsSkinner extends AbstractSkinner {
      */
     @Override
     public void skinDeformations(JointPalette palette, float[] outDeformations, int from, int to) {
+        if (normals == NormalTransform.NONE) {
+            throw noDeformationsWithoutNormals();
+        }
         checkPalette(palette);
         int firstBlock = (from + BLOCK - 1) / BLOCK;
         int endBlock = Math.min(to / BLOCK, blockCount);

@@ -40,6 +40,11 @@ import org.skinlab.skinning.SkinningMethod;
  * fused loops below; more influences, and {@link #skinDeformations}, go through {@link MatrixPasses}
  * (a blend pass written out for 4 or 8 influences, then the application to the points).
  *
+ * <p>Positions only ({@link NormalTransform#NONE}): the stream holds 7 floats per point
+ * ({@code px py pz w0 w1 w2 w3}) and {@link #positions} is the fused loop without the normal, or
+ * the passes end in {@link MatrixPasses#positions}; the same blend and position operations, so the
+ * same bits as with normals.
+ *
  * <p>When the palette mirrors ({@link JointPalette#mirrorsMatrices()}), exact normals carry the sign
  * of the blended matrix's determinant (a mirroring blend would otherwise turn them inwards), as in
  * the scalar kernel; such palettes take the passes, whose loops have that sign, and the fused
@@ -49,6 +54,8 @@ final class VectorLbsSkinner extends AbstractSkinner {
     static final int INFLUENCES = 4;
     /** Floats per point in {@link #points}. */
     private static final int STRIDE = 10;
+    /** Floats per point in {@link #points} under {@link NormalTransform#NONE}: px py pz w0 w1 w2 w3. */
+    private static final int POSITION_STRIDE = 7;
 
 
     /** Up to 4 influences: the fused loops' stream (null otherwise). */
@@ -58,6 +65,9 @@ final class VectorLbsSkinner extends AbstractSkinner {
     /** The weights the blend pass reads: {@link #points} (fused) or {@link #passWidth} per point. */
     private final float[] passWeights;
     private final boolean fused;
+    /** The stream's floats per point and where in them the weights start. */
+    private final int stride;
+    private final int weightOffset;
     private final int passWidth;
     private final float[] restPositions;
     private final float[] restNormals;
@@ -77,16 +87,18 @@ final class VectorLbsSkinner extends AbstractSkinner {
         float[] weights = geometry.weightArray();
         this.fused = width <= INFLUENCES;
         this.passWidth = MatrixPasses.paddedWidth(width);
+        this.stride = normals == NormalTransform.NONE ? POSITION_STRIDE : STRIDE;
+        this.weightOffset = stride - INFLUENCES;
         if (fused) {
-            points = new float[STRIDE * n];
+            points = new float[stride * n];
             this.joints = new char[INFLUENCES * n];
             passWeights = points;
             restShapeChanged();
             for (int i = 0; i < n; i++) {
-                int o = STRIDE * i;
+                int o = stride * i;
                 for (int k = 0; k < INFLUENCES; k++) {
                     // Padding: weight 0 on the first joint adds exactly nothing.
-                    points[o + 6 + k] = k < width ? weights[width * i + k] : 0f;
+                    points[o + weightOffset + k] = k < width ? weights[width * i + k] : 0f;
                     this.joints[INFLUENCES * i + k] = (char) joints[width * i + (k < width ? k : 0)];
                 }
             }
@@ -105,7 +117,10 @@ final class VectorLbsSkinner extends AbstractSkinner {
         columns = ThreadLocal.withInitial(() -> new float[size]);
     }
 
-    /** Copies the rest positions and normals into the fused layout (the unfused one reads them in place). */
+    /**
+     * Copies the rest positions and normals (positions only under {@link NormalTransform#NONE})
+     * into the fused layout (the unfused one reads them in place).
+     */
     @Override
     public void restShapeChanged() {
         if (!fused) {
@@ -114,10 +129,13 @@ final class VectorLbsSkinner extends AbstractSkinner {
         float[] pos = restPositions;
         float[] nrm = restNormals;
         for (int i = 0, n = pos.length / 3; i < n; i++) {
-            int o = STRIDE * i;
+            int o = stride * i;
             points[o] = pos[3 * i];
             points[o + 1] = pos[3 * i + 1];
             points[o + 2] = pos[3 * i + 2];
+            if (stride == POSITION_STRIDE) {
+                continue;
+            }
             points[o + 3] = nrm[3 * i];
             points[o + 4] = nrm[3 * i + 1];
             points[o + 5] = nrm[3 * i + 2];
@@ -127,7 +145,7 @@ final class VectorLbsSkinner extends AbstractSkinner {
     /** Blends points [from, to) into the scratch (16 floats per point from 0). */
     private void blend(float[] c, int from, int to, float[] acc) {
         if (fused) {
-            MatrixPasses.blend4(c, joints, passWeights, 6, STRIDE, from, to, acc);
+            MatrixPasses.blend4(c, joints, passWeights, weightOffset, stride, from, to, acc);
         } else {
             MatrixPasses.blend(c, joints, passWeights, passWidth, from, to, acc);
         }
@@ -135,6 +153,9 @@ final class VectorLbsSkinner extends AbstractSkinner {
 
     @Override
     public void skinDeformations(JointPalette palette, float[] outDeformations, int from, int to) {
+        if (normals == NormalTransform.NONE) {
+            throw noDeformationsWithoutNormals();
+        }
         float[] c = columnMajor(palette);
         float[] acc = scratch.get();
         boolean cofactor = normals == NormalTransform.INVERSE_TRANSPOSE;
@@ -149,6 +170,10 @@ final class VectorLbsSkinner extends AbstractSkinner {
     @Override
     public void skin(JointPalette palette, float[] outPositions, float[] outNormals, int from, int to) {
         float[] c = columnMajor(palette);
+        if (normals == NormalTransform.NONE) {
+            skinPositions(c, outPositions, from, to);
+            return;
+        }
         boolean exact = normals == NormalTransform.INVERSE_TRANSPOSE;
         boolean mirror = exact && palette.mirrorsMatrices();
         // The fused loops leave out the determinant's sign, which only a mirroring palette needs.
@@ -177,6 +202,29 @@ final class VectorLbsSkinner extends AbstractSkinner {
         }
         if (normals == NormalTransform.INVERSE_TRANSPOSE) {
             MatrixPasses.normalise(outNormals, from, to);
+        }
+    }
+
+    /** {@link #skin} under {@link NormalTransform#NONE}: the fused loop or the passes, positions only. */
+    private void skinPositions(float[] c, float[] outPositions, int from, int to) {
+        if (!fused) {
+            float[] acc = scratch.get();
+            float[] tmp = lastPointScratch.get();
+            for (int s = from; s < to; s += MatrixPasses.CHUNK) {
+                int e = Math.min(to, s + MatrixPasses.CHUNK);
+                blend(c, s, e, acc);
+                MatrixPasses.positions(acc, restPositions, outPositions, s, e, tmp, to - e >= 2);
+            }
+            return;
+        }
+        int end = Math.max(from, to - 2);
+        positions(c, outPositions, from, end, 0);
+        float[] tmp = lastPointScratch.get();
+        for (int i = end; i < to; i++) {
+            // As lastPoint: the loop's store into a scratch copy, so nothing spills past the range.
+            int v = 3 * i;
+            positions(c, tmp, i, i + 1, -v);
+            System.arraycopy(tmp, 0, outPositions, v, 3);
         }
     }
 
@@ -250,6 +298,40 @@ final class VectorLbsSkinner extends AbstractSkinner {
             FloatVector n = a.mul(nxy).add(b.mul(nz0));
             p.add(p.rearrange(SWAP)).intoArray(outPositions, 3 * i + positionShift);
             n.add(n.rearrange(SWAP)).intoArray(outNormals, 3 * i + normalShift);
+        }
+    }
+
+    /**
+     * {@link #blendedNormals} without the normal, on the positions-only stream; point i's position
+     * goes to {@code 3 i + positionShift}.
+     */
+    private void positions(float[] c, float[] outPositions, int from, int end, int positionShift) {
+        final float[] pts = points;
+        final char[] off = joints;
+        final FloatVector one = FloatVector.broadcast(S, 1f);
+        for (int i = from; i < end; i++) {
+            int o = POSITION_STRIDE * i;
+            int q = INFLUENCES * i;
+            int m0 = off[q] << 4;
+            int m1 = off[q + 1] << 4;
+            int m2 = off[q + 2] << 4;
+            int m3 = off[q + 3] << 4;
+            FloatVector w0 = FloatVector.broadcast(S, pts[o + 3]);
+            FloatVector w1 = FloatVector.broadcast(S, pts[o + 4]);
+            FloatVector w2 = FloatVector.broadcast(S, pts[o + 5]);
+            FloatVector w3 = FloatVector.broadcast(S, pts[o + 6]);
+            FloatVector a = FloatVector.fromArray(S, c, m0).mul(w0);
+            FloatVector b = FloatVector.fromArray(S, c, m0 + 8).mul(w0);
+            a = FloatVector.fromArray(S, c, m1).fma(w1, a);
+            b = FloatVector.fromArray(S, c, m1 + 8).fma(w1, b);
+            a = FloatVector.fromArray(S, c, m2).fma(w2, a);
+            b = FloatVector.fromArray(S, c, m2 + 8).fma(w2, b);
+            a = FloatVector.fromArray(S, c, m3).fma(w3, a);
+            b = FloatVector.fromArray(S, c, m3 + 8).fma(w3, b);
+            FloatVector pxy = FloatVector.broadcast(S, pts[o]).blend(FloatVector.broadcast(S, pts[o + 1]), HI);
+            FloatVector pz1 = FloatVector.broadcast(S, pts[o + 2]).blend(one, HI);
+            FloatVector p = a.mul(pxy).add(b.mul(pz1));
+            p.add(p.rearrange(SWAP)).intoArray(outPositions, 3 * i + positionShift);
         }
     }
 

@@ -2,14 +2,14 @@ package org.skinlab.desktop.bench;
 
 import java.util.Arrays;
 
-import org.skinlab.desktop.bench.SyntheticSkinData;
-
 /**
  * The timing protocol of the shared C++ skinning reference ({@code ../shared/perf/skin_ref.cpp}),
  * one home for {@code bench skinning} and {@code eval}: one untimed run on zeroed outputs for the
  * checksum, a warm-up (at least the given time and until the JIT has compiled the kernel:
  * {@link JitWarmup}), then timed runs of the whole mesh for a given time (at least 5), each
  * sample in ns per vertex; the minimum and the upper median, as the reference reports them.
+ * Normals null: a positions-only frame ({@link org.skinlab.skinning.NormalTransform#NONE}), whose
+ * checksum is the positions' sum.
  */
 public final class SkinningTiming {
     public final double[] nsPerVertex;
@@ -23,7 +23,9 @@ public final class SkinningTiming {
     public static SkinningTiming measure(Runnable frame, float[] positions, float[] normals, int vertices,
             double warmupSeconds, double seconds) {
         Arrays.fill(positions, 0f);
-        Arrays.fill(normals, 0f);
+        if (normals != null) {
+            Arrays.fill(normals, 0f);
+        }
         frame.run();
         double checksum = SyntheticSkinData.checksum(positions, normals);
         JitWarmup.run(frame, warmupSeconds);

@@ -190,14 +190,20 @@ public final class SyntheticSkinData {
         return palette;
     }
 
-    /** The reference's checksum: sum of the output positions plus half the sum of the normals, in double. */
+    /**
+     * The reference's checksum: sum of the output positions plus half the sum of the normals, in
+     * double; {@code outNormals} null for positions-only skinning (the sum of the positions, as
+     * {@code bench/cpp/skin_positions.cpp} reports it).
+     */
     public static double checksum(float[] outPositions, float[] outNormals) {
         double s = 0;
         for (float x : outPositions) {
             s += x;
         }
-        for (float x : outNormals) {
-            s += 0.5 * x;
+        if (outNormals != null) {
+            for (float x : outNormals) {
+                s += 0.5 * x;
+            }
         }
         return s;
     }

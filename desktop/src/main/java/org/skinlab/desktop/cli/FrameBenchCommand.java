@@ -76,8 +76,9 @@ public final class FrameBenchCommand implements Callable<Integer> {
                     + " for several)")
     String method;
 
-    @Option(names = "--normals", paramLabel = "exact|blended",
-            description = "normal rule: renormalised inverse-transpose or the blended matrix (default: ${DEFAULT-VALUE})")
+    @Option(names = "--normals", paramLabel = "exact|blended|none",
+            description = "normal rule: renormalised inverse-transpose, the blended matrix, or none: positions only"
+                    + " (lbs and dqs) (default: ${DEFAULT-VALUE})")
     String normals = "exact";
 
     @Option(names = "--warmup-seconds", paramLabel = "S",
@@ -122,6 +123,11 @@ public final class FrameBenchCommand implements Callable<Integer> {
         }
         List<Input> inputs = inputs();
         List<SkinningMethod> methods = parseMethods(inputs.size());
+        for (SkinningMethod m : methods) {
+            if (rule == NormalTransform.NONE && !m.skinsPositionsOnly()) {
+                throw usage("--normals none: " + m.key() + " has no positions-only kernel (lbs and dqs have)");
+            }
+        }
         boolean single = inputs.size() == 1 && methods.size() == 1;
         double warmup = secondsOption("--warmup-seconds", warmupSeconds, single ? FIRST_WARMUP : 0.5);
         double timed = secondsOption("--seconds", seconds, single ? 3.0 : 1.0);
@@ -285,8 +291,10 @@ public final class FrameBenchCommand implements Callable<Integer> {
                 return NormalTransform.INVERSE_TRANSPOSE;
             case "blended":
                 return NormalTransform.BLENDED_MATRIX;
+            case "none":
+                return NormalTransform.NONE;
             default:
-                throw usage("unknown normal rule \"" + normals + "\" (expected exact or blended)");
+                throw usage("unknown normal rule \"" + normals + "\" (expected exact, blended or none)");
         }
     }
 

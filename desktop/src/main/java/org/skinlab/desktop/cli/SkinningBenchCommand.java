@@ -34,6 +34,9 @@ import picocli.CommandLine.Model.CommandSpec;
  * default the work is the reference's: normals by the blended matrix
  * ({@link NormalTransform#BLENDED_MATRIX}), the joint matrices straight from the data, DQS's dual
  * quaternions derived from them once per frame by the palette, influences in the order drawn.
+ * {@code --normals none} skins positions only (LBS and DQS; {@code bench/cpp/skin_positions.cpp} is
+ * its C++ counterpart), {@code --influences} draws another number of joints per vertex the same
+ * way (the reference's data has 4).
  */
 @Command(name = "skinning", mixinStandardHelpOptions = true,
         description = "Skinning speed on the synthetic data of the shared C++ reference (ns per vertex).")
@@ -51,10 +54,15 @@ public final class SkinningBenchCommand implements Callable<Integer> {
             description = "kernel: the fastest available, core's scalar one, or the Vector API one (default: ${DEFAULT-VALUE})")
     String implementation = "auto";
 
-    @Option(names = "--normals", paramLabel = "blended|exact",
-            description = "normal rule: the blended matrix (the C++ reference's) or the renormalised inverse-transpose"
-                    + " (default: ${DEFAULT-VALUE})")
+    @Option(names = "--normals", paramLabel = "blended|exact|none",
+            description = "normal rule: the blended matrix (the C++ reference's), the renormalised inverse-transpose,"
+                    + " or none: positions only, lbs and dqs (default: ${DEFAULT-VALUE})")
     String normals = "blended";
+
+    @Option(names = "--influences", paramLabel = "K",
+            description = "joints per vertex, 1 to " + SyntheticSkinData.JOINTS + " (default: ${DEFAULT-VALUE}, the"
+                    + " reference's data; others are drawn the same way)")
+    int influences = SyntheticSkinData.INFLUENCES;
 
     @Option(names = "--warmup-seconds", paramLabel = "S", description = "warm-up before timing (default: ${DEFAULT-VALUE})")
     double warmupSeconds = 2.0;
@@ -89,14 +97,23 @@ public final class SkinningBenchCommand implements Callable<Integer> {
         if (baseline != null && m == SkinningMethod.COR) {
             throw usage("the thesis baseline skins with LBS or DQS only");
         }
-        SyntheticSkinData data = new SyntheticSkinData(vertices);
+        if (rule == NormalTransform.NONE && !m.skinsPositionsOnly()) {
+            throw usage("--normals none: " + m.key() + " has no positions-only kernel (lbs and dqs have)");
+        }
+        if (baseline != null && rule == NormalTransform.NONE) {
+            throw usage("the thesis baseline writes normals: time it with --normals blended");
+        }
+        if (influences < 1 || influences > SyntheticSkinData.JOINTS) {
+            throw usage("--influences must be 1 to " + SyntheticSkinData.JOINTS);
+        }
+        SyntheticSkinData data = new SyntheticSkinData(vertices, SyntheticSkinData.SEED, influences);
         SkinnedGeometry geometry = data.geometry();
         JointPalette palette = data.palette();
         Skinner kernel = kernel(m, geometry, rule);
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         float[] positions = new float[3 * vertices];
-        float[] normalsOut = new float[3 * vertices];
+        float[] normalsOut = rule == NormalTransform.NONE ? null : new float[3 * vertices];
         SkinningTiming ours;
         String name;
         try (ParallelSkinner skinner = new ParallelSkinner(kernel, threads)) {
@@ -111,9 +128,9 @@ public final class SkinningBenchCommand implements Callable<Integer> {
         if (json) {
             out.println(toJson(m, name, ours, thesis));
         } else {
-            out.printf(Locale.ROOT, "skinning %s, %d vertices, %d thread%s, %s, normals %s, %s%n", m.key(), vertices,
-                    threads, threads == 1 ? "" : "s", name, rule == NormalTransform.BLENDED_MATRIX
-                            ? "by the blended matrix" : "by the inverse-transpose", JavaRuntime.describe());
+            out.printf(Locale.ROOT, "skinning %s, %d vertices, %d influences, %d thread%s, %s, %s, %s%n", m.key(),
+                    vertices, influences, threads, threads == 1 ? "" : "s", name, describe(rule),
+                    JavaRuntime.describe());
             out.printf(Locale.ROOT, "min %.3f ns/vertex, median %.3f ns/vertex (%d runs), checksum %.6f%n",
                     ours.min(), ours.median(), ours.nsPerVertex.length, ours.checksum);
             if (thesis != null) {
@@ -156,6 +173,8 @@ public final class SkinningBenchCommand implements Callable<Integer> {
         root.put("method", m.key());
         root.put("vertices", vertices);
         root.put("threads", threads);
+        root.put("influences", influences);
+        root.put("normals", normals.toLowerCase(Locale.ROOT));
         root.put("minNsPerVertex", round(ours.min()));
         root.put("medianNsPerVertex", round(ours.median()));
         root.put("checksum", ours.checksum);
@@ -196,8 +215,21 @@ public final class SkinningBenchCommand implements Callable<Integer> {
                 return NormalTransform.BLENDED_MATRIX;
             case "exact":
                 return NormalTransform.INVERSE_TRANSPOSE;
+            case "none":
+                return NormalTransform.NONE;
             default:
-                throw usage("unknown normal rule \"" + normals + "\" (expected blended or exact)");
+                throw usage("unknown normal rule \"" + normals + "\" (expected blended, exact or none)");
+        }
+    }
+
+    private static String describe(NormalTransform rule) {
+        switch (rule) {
+            case BLENDED_MATRIX:
+                return "normals by the blended matrix";
+            case INVERSE_TRANSPOSE:
+                return "normals by the inverse-transpose";
+            default:
+                return "positions only";
         }
     }
 

@@ -210,6 +210,23 @@ class FrameBenchCommandTest {
     }
 
     @Test
+    void positionsOnlyFramesForLbsAndDqs() throws Exception {
+        Path bend = Cli.root().resolve("assets/cylinders/cylinder-bend.dae");
+        for (String share : new String[] {"never", "always"}) {
+            Cli r = bench(bend.toString(), "--json", "--normals", "none", "--method", "both", "--share-positions",
+                    share);
+            assertEquals(ExitCodes.OK, r.status, r::toString);
+            List<JsonNode> lines = jsonLines(r);
+            assertEquals(2, lines.size(), r::toString);
+            for (JsonNode j : lines) {
+                assertEquals("none", j.get("normals").asText());
+                assertEquals(share.equals("always"), j.get("implementation").asText().contains("positions copied"),
+                        j::toString);
+            }
+        }
+    }
+
+    @Test
     void allCorpusMeasuresOurCharactersAndTheSkinnedCorpusFilesAndGoesOnAfterABrokenOne() throws Exception {
         Path corpus = Files.createDirectories(dir.resolve("corpus"));
         Files.copy(Cli.root().resolve("assets/cylinders/cylinder-bend.dae"), corpus.resolve("b-skinned.dae"));
@@ -272,7 +289,8 @@ class FrameBenchCommandTest {
         assertEquals("", r.out, "nothing measured");
         for (String[] bad : new String[][] {{"--method", "xyz"}, {"--normals", "flat"}, {"--seconds", "-1"},
             {"--warmup-seconds", "NaN"}, {"--all-corpus", "--corpus", dir.resolve("absent").toString()},
-            {"--share-positions", "sometimes"}}) {
+            {"--share-positions", "sometimes"}, {"--normals", "none", "--method", "cor"},
+            {"--normals", "none", "--method", "all"}}) {
             List<String> args = new ArrayList<>(List.of(Cli.defaultAsset().toString()));
             args.addAll(List.of(bad));
             r = Cli.run(concat(List.of("bench", "frame"), args));
