@@ -44,6 +44,22 @@ class FrameTimesTest {
         assertEquals(2, bench.shape().influences());
     }
 
+    /** The platform's warm-up (the desktop's waits for the JIT) runs once per method; later rounds warm up for the time. */
+    @Test
+    void theBenchWarmupRunsOncePerMethod() throws Exception {
+        Model model = ColladaImporter.read(TestPaths.asset("cylinders/cylinder-twist-low.dae"));
+        List<SkinningMethod> methods = List.of(SkinningMethod.LBS, SkinningMethod.DQS);
+        int[] calls = {0};
+        Warmup counting = (step, seconds) -> {
+            calls[0]++;
+            return Warmup.FOR_TIME.run(step, seconds);
+        };
+        FrameBench bench = new FrameBench(model, NormalTransform.INVERSE_TRANSPOSE, PositionSharing.AUTO, true, 0,
+                methods, counting);
+        FrameTimes.measure(bench, methods, new FrameTimes.Protocol(Rounds.MIN_RUNS, 0.01, 0.005, 0.01));
+        assertEquals(methods.size(), calls[0]);
+    }
+
     @Test
     void aProtocolWithoutTimeIsRefused() {
         assertThrows(IllegalArgumentException.class, () -> new FrameTimes.Protocol(5, 1, 0.1, 0));

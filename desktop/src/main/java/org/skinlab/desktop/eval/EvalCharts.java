@@ -72,34 +72,30 @@ final class EvalCharts {
     }
 
     /**
-     * A categorical x axis XChart labels dependably: category k at x = k, labelled
-     * {@code labels.get(k)}, every category a point of a hidden series added before the others,
-     * at {@code level} (a value inside the plotted range, positive on a log axis). Points of several
-     * series at one category sit side by side ({@link #offset}).
+     * A categorical x axis: category k at x = k, labelled {@code labels.get(k)} (unique names),
+     * the axis from -0.5 to {@code labels.size() - 0.5}. Points of several series at one category
+     * sit side by side ({@link #offset}).
      *
-     * <p>Why so: XChart labels an axis through a formatter by one of two searches. When the x
-     * values of all series, in the order they were added, are equally spaced, it labels every
-     * value, or every second, third ... one until the labels are unique and fit: dependable, so
-     * the hidden series puts every category there first. Otherwise it searches numeric tick steps,
-     * and a formatter that names only whole positions there either gets no labels at all (when
-     * the axis' two ends format alike) or, when they differ, can loop without end looking for
-     * labels that are all different. A position between categories gets {@code " "}: the same
-     * blank for each, so a subset holding two of them is never taken.
+     * <p>How XChart labels it: with a formatter it draws no ticks at all when the axis' two ends
+     * format alike; otherwise it tries numeric tick steps, finest first, and takes the first whose
+     * labels, from one step below the axis to two above, are all different and fit their spacing.
+     * The formatter names the whole positions of the categories and gives every other position
+     * between them one blank, so a step finer than 1 (several blanks alike) is passed over; the
+     * positions beyond the categories, the axis' ends among them, get blanks of a length of their
+     * own, so a step of 1 is taken when the labels fit (else 2, labelling every second category).
+     * A rotation of 90 degrees fits any number of categories.
      */
-    static void categories(XYChart chart, List<String> labels, double level, int rotation) {
-        double[] x = new double[labels.size()];
-        double[] y = new double[labels.size()];
-        for (int k = 0; k < x.length; k++) {
-            x[k] = k;
-            y[k] = level;
-        }
-        XYSeries slots = chart.addSeries(" ", x, y);
-        slots.setShowInLegend(false);
-        slots.setMarker(SeriesMarkers.NONE);
-        slots.setLineStyle(SeriesLines.NONE);
+    static void categories(XYChart chart, List<String> labels, int rotation) {
+        int last = labels.size() - 1;
         chart.setCustomXAxisTickLabelsFormatter(value -> {
             long k = Math.round(value);
-            return k >= 0 && k < labels.size() && Math.abs(value - k) < 1e-6 ? labels.get((int) k) : " ";
+            if (value < 0 || value > last) {
+                // Beyond the categories (the axis' ends among them): blanks of a length per position,
+                // even below and odd above, so that the two ends differ and a step of 1 has no two alike.
+                double beyond = value < 0 ? -value : value - last;
+                return " ".repeat((int) (2 * Math.ceil(2 * beyond) + (value < 0 ? 0 : 1)));
+            }
+            return Math.abs(value - k) > 1e-6 ? " " : labels.get((int) k);
         });
         chart.getStyler().setXAxisLabelRotation(rotation);
         chart.getStyler().setXAxisTickMarkSpacingHint(12);

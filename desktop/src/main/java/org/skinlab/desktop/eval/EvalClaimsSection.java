@@ -56,6 +56,7 @@ final class EvalClaimsSection implements EvalSection {
             EvalClaims.dqsFasterOnAssets(sections.apply("time"), kernels, claims.addObject());
         }
         EvalClaims.dqsFasterInCpp(sections.apply("time"), claims.addObject());
+        EvalClaims.dqsFasterWithoutNormals(sections.apply("time"), claims.addObject());
         EvalClaims.meshes(sections.apply("crowds"), 1, claims.addObject());
         EvalClaims.meshes(sections.apply("crowds"), EvalCrowdsThesis.THESIS_MESHES, claims.addObject());
         EvalClaims.lbsLosesVolume(sections.apply("quality"), claims.addObject());

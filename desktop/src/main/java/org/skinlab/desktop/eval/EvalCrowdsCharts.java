@@ -47,13 +47,7 @@ final class EvalCrowdsCharts {
             labels.add(Integer.toString(t));
         }
         JsonNode models = results.get("models");
-        double least = Double.MAX_VALUE;
-        for (JsonNode m : models) {
-            for (JsonNode p : m.get("threads")) {
-                least = Math.min(least, p.at("/charactersPerFrame/median").asDouble());
-            }
-        }
-        EvalCharts.categories(chart, labels, least, 0);
+        EvalCharts.categories(chart, labels, 0);
         int count = models.size() * CrowdBench.METHODS.size();
         int s = 0;
         for (int i = 0; i < models.size(); i++) {
@@ -129,11 +123,7 @@ final class EvalCrowdsCharts {
         List<Integer> categories = new ArrayList<>(counts);
         List<String> labels = new ArrayList<>();
         categories.forEach(c -> labels.add(Integer.toString(c)));
-        double least = Double.MAX_VALUE;
-        for (JsonNode t : results.get("thesis")) {
-            least = Math.min(least, Math.min(t.get("dqsFps").asDouble(), t.get("lbsFps").asDouble()));
-        }
-        EvalCharts.categories(chart, labels, least, 0);
+        EvalCharts.categories(chart, labels, 0);
         List<SkinningMethod> methods = new ArrayList<>();
         render.get("methods").forEach(m -> methods.add(SkinningMethod.fromKey(m.asText())));
         int seriesCount = EvalCrowdsThesis.SKINNINGS.size() * methods.size() + EvalCrowdsThesis.METHODS.size();

@@ -49,7 +49,7 @@ final class EvalLoadFigures {
                 labels.add(" ");
             }
         }
-        EvalCharts.categories(chart, labels, Math.max(1e-3, rows.get(0).ours().get("median").asDouble()), 90);
+        EvalCharts.categories(chart, labels, 90);
         series(chart, "skinlab", rows, 0, per, OURS, false);
         if (assimp) {
             series(chart, "assimp", rows, 1, per, ASSIMP, true);

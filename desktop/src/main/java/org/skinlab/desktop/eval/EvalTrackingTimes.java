@@ -147,8 +147,7 @@ final class EvalTrackingTimes {
         XYChart chart = EvalCharts.xy("Marker tracking: time per frame of the video, one thread", "contender",
                 "ms, " + EvalCharts.SPREAD);
         EvalCharts.logY(chart);
-        EvalCharts.categories(chart, List.of("BoofCV default", "detect", "track"),
-                results.at("/time/detectMs/median").asDouble(), 0);
+        EvalCharts.categories(chart, List.of("BoofCV default", "detect", "track"), 0);
         String[] names = {"BoofCV squareHamming, default settings", "skinlab detect (whole frame)",
             "skinlab track (near the last markers)"};
         String[] spreads = {"/time/boofDefaultMs", "/time/detectMs", "/time/trackMs"};
