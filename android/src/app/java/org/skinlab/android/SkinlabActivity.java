@@ -2,7 +2,6 @@ package org.skinlab.android;
 
 import java.io.File;
 import java.io.IOException;
-import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
@@ -12,7 +11,6 @@ import android.app.Activity;
 import android.content.Intent;
 import android.content.pm.PackageManager;
 import android.content.res.Configuration;
-import android.graphics.Color;
 import android.graphics.SurfaceTexture;
 import android.hardware.camera2.CameraManager;
 import android.hardware.display.DisplayManager;
@@ -21,15 +19,8 @@ import android.os.Bundle;
 import android.os.Handler;
 import android.os.HandlerThread;
 import android.os.Looper;
-import android.view.Gravity;
 import android.view.Surface;
 import android.view.View;
-import android.view.WindowInsets;
-import android.widget.Button;
-import android.widget.FrameLayout;
-import android.widget.HorizontalScrollView;
-import android.widget.LinearLayout;
-import android.widget.TextView;
 
 import org.skinlab.android.logic.AppActions;
 import org.skinlab.android.logic.DrawnCopies;
@@ -53,7 +44,7 @@ import org.skinlab.skinning.CentresOfRotation;
  * The AR app's one Activity: the camera image with the animated character standing on the printed
  * marker (docs/marker: ArUco MIP_36h12 id 0, 100 mm by default; a button steps through other
  * printed sizes), a status line, and a button for every user function of the thesis
- * ({@link AppActions}), and "Measure" ({@link MeasureControl}): the bundled models timed on this
+ * ({@link AppActions}; the views are {@link ArControls}), and "Measure" ({@link MeasureControl}): the bundled models timed on this
  * phone into {@code results-android.json}. The launch intent's extra {@value MeasureProtocol#EXTRA}
  * = "quick" makes that a quick measurement (seconds; not figures to quote).
  *
@@ -73,22 +64,16 @@ public final class SkinlabActivity extends Activity {
     private final Handler ui = new Handler(Looper.getMainLooper());
     private final ModelLoader models = new ModelLoader(name -> getAssets().open("models/" + name), config,
             new BitmapDecoder(), model -> ui.post(() -> swapIn(model)));
-    private final List<Button> buttons = new ArrayList<>();
     /** The measurement's GPU part: the GL thread draws the copies it asks for. */
     private final DrawnCopies drawnCopies = new DrawnCopies(DrawnCopies.NO_FRAME_SECONDS);
     private MeasureControl measure;
     /** The printed marker's size (docs/marker's 100 mm unless the user taps another). */
     private final MarkerSize markerSize = new MarkerSize(metres -> ui.post(this::onMarkerSize));
     private PermissionFlow permission;
-    private List<AppActions.Action> actions;
     private ModelCatalog catalog;
     private GLSurfaceView glView;
     private ArRenderer renderer;
-    private TextView status;
-    private HorizontalScrollView buttonRow;
-    private LinearLayout explanation;
-    private TextView explanationText;
-    private Button retry;
+    private ArControls controls;
     private HandlerThread cameraThread;
     private HandlerThread trackingThread;
     /** The open camera, or null; package-private: the tests feed camera frames through it. */
@@ -112,12 +97,9 @@ public final class SkinlabActivity extends Activity {
             String line = StatusLine.format(renderer.fps(), s == null ? null : s.current(), config.settings(), model);
             String gl = renderer.problem();
             String[] measured = measure.statusLines();
-            status.setText(StatusLine.withProblems(line, gl == null ? "" : "OpenGL ES: " + gl, cameraProblem,
+            controls.refresh(StatusLine.withProblems(line, gl == null ? "" : "OpenGL ES: " + gl, cameraProblem,
                     models.problem(), measured[0], measured[1]));
             measure.poll();
-            for (int i = 0; i < buttons.size(); i++) {
-                buttons.get(i).setText(actions.get(i).label().get());
-            }
             ui.postDelayed(this, 250);
         }
     };
@@ -149,74 +131,20 @@ public final class SkinlabActivity extends Activity {
     }
 
     private View layout() {
-        FrameLayout root = new FrameLayout(this);
         glView = new GLSurfaceView(this);
         glView.setEGLContextClientVersion(3);
         glView.setPreserveEGLContextOnPause(true);
         renderer = new ArRenderer(config, texture -> ui.post(() -> onSurfaceReady(texture)), drawnCopies);
         glView.setRenderer(renderer);
         glView.setRenderMode(GLSurfaceView.RENDERMODE_CONTINUOUSLY);
-        root.addView(glView);
-
-        status = new TextView(this);
-        status.setTextColor(Color.WHITE);
-        status.setBackgroundColor(0x88000000);
-        root.addView(status, new FrameLayout.LayoutParams(FrameLayout.LayoutParams.MATCH_PARENT,
-                FrameLayout.LayoutParams.WRAP_CONTENT, Gravity.TOP));
-
-        LinearLayout row = new LinearLayout(this);
-        row.setOrientation(LinearLayout.HORIZONTAL);
-        actions = AppActions.of(config, this::nextModel, markerSize, measure);
-        for (AppActions.Action a : actions) {
-            Button b = new Button(this);
-            b.setAllCaps(false);
-            b.setText(a.label().get());
-            b.setOnClickListener(v -> {
-                a.run().run();
-                b.setText(a.label().get());
-            });
-            buttons.add(b);
-            row.addView(b);
-        }
-        buttonRow = new HorizontalScrollView(this);
-        buttonRow.setBackgroundColor(0x66000000);
-        buttonRow.addView(row);
-        root.addView(buttonRow, new FrameLayout.LayoutParams(FrameLayout.LayoutParams.MATCH_PARENT,
-                FrameLayout.LayoutParams.WRAP_CONTENT, Gravity.BOTTOM));
-
-        explanation = new LinearLayout(this);
-        explanation.setOrientation(LinearLayout.VERTICAL);
-        explanation.setGravity(Gravity.CENTER);
-        explanation.setBackgroundColor(0xEE202024);
-        explanation.setPadding(48, 48, 48, 48);
-        explanationText = new TextView(this);
-        explanationText.setTextColor(Color.WHITE);
-        explanation.addView(explanationText);
-        retry = new Button(this);
-        retry.setText("Allow the camera");
-        retry.setOnClickListener(v -> {
+        List<AppActions.Action> actions = AppActions.of(config, this::nextModel, markerSize, measure);
+        controls = new ArControls(this, glView, actions, () -> {
             if (permission.onRetry()) {
                 requestCamera();
             }
             showScreen();
         });
-        explanation.addView(retry);
-        root.addView(explanation, new FrameLayout.LayoutParams(FrameLayout.LayoutParams.MATCH_PARENT,
-                FrameLayout.LayoutParams.MATCH_PARENT));
-        // From target SDK 35 on, the window reaches under the system bars and the display cutout:
-        // the camera image may, the status line and the buttons keep clear of them.
-        root.setOnApplyWindowInsetsListener((v, insets) -> {
-            padInsets(status, insets, true);
-            padInsets(buttonRow, insets, false);
-            return insets;
-        });
-        return root;
-    }
-
-    @SuppressWarnings("deprecation") // getSystemWindowInset*: their successors need API 30 (min is 26)
-    private static void padInsets(View v, WindowInsets insets, boolean top) {
-        v.setPadding(16 + insets.getSystemWindowInsetLeft(), top ? 8 + insets.getSystemWindowInsetTop() : 0,
-                16 + insets.getSystemWindowInsetRight(), top ? 8 : insets.getSystemWindowInsetBottom());
+        return controls.root;
     }
 
     @Override
@@ -335,15 +263,7 @@ public final class SkinlabActivity extends Activity {
     }
 
     private void showScreen() {
-        PermissionFlow.Screen screen = permission.screen();
-        boolean explain = screen == PermissionFlow.Screen.EXPLAIN_AND_RETRY
-                || screen == PermissionFlow.Screen.EXPLAIN_SETTINGS;
-        explanation.setVisibility(explain ? View.VISIBLE : View.GONE);
-        retry.setVisibility(screen == PermissionFlow.Screen.EXPLAIN_AND_RETRY ? View.VISIBLE : View.GONE);
-        explanationText.setText(screen == PermissionFlow.Screen.EXPLAIN_SETTINGS
-                ? PermissionFlow.EXPLANATION + "\n\nAllow the camera for skinlab AR in Android's settings (Apps, "
-                        + "skinlab AR, Permissions), then come back."
-                : PermissionFlow.EXPLANATION);
+        controls.show(permission.screen());
     }
 
     /**

@@ -232,7 +232,8 @@ final class EvalTimeSection implements EvalSection {
                 + " matrices (and whatever else the method reads: dual quaternions, bones), skin every mesh,"
                 + " positions and exact normals (`bench frame`'s frame, `FrameBench`). Every method with the"
                 + " fastest kernels here (SIMD where the Vector API is on; the kernel's name says which ran) and with"
-                + " core's scalar ones, the code a phone runs; with every influence, and cut to the "
+                + " core's scalar ones, the code the Android app runs (there on ART, not on this JVM: section"
+                + " \"phone\" holds a phone's own times); with every influence, and cut to the "
                 + EvalReport.num(results, "/cap") + " heaviest (renormalised, what a GPU's fixed slots see) where an"
                 + " asset has more (the cut geometry skins every render vertex, without sharing positions, so part of"
                 + " that difference is the sharing). Each timing is " + EvalReport.num(results, "/protocol/rounds")
