@@ -14,7 +14,7 @@ import org.skinlab.model.Model;
 
 /**
  * Reads a model file in whichever format it is, so callers need not know the formats: a binary
- * glTF by its magic ({@code glTF}), else by content: the first non-blank byte {@code {} is glTF
+ * glTF by its magic ({@code glTF}), else by content: the first non-blank byte <code>&#123;</code> is glTF
  * JSON, {@code <} COLLADA XML; the name's extension ({@code .gltf}, {@code .glb}, {@code .dae})
  * decides only when the content does not.
  */
