@@ -6,7 +6,6 @@ import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
-import org.skinlab.skinning.SkinningMethod;
 
 /**
  * Section "claims": the thesis' claims (its chapters 4.2 and 6, /work/shared/seed/DIGEST.md)
@@ -94,10 +93,5 @@ final class EvalClaimsSection implements EvalSection {
             return FAILS;
         }
         return "within the spread";
-    }
-
-    /** The key of a method, for the claims' node names. */
-    static String key(SkinningMethod m) {
-        return m.key();
     }
 }
