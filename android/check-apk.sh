@@ -46,7 +46,7 @@ listing=$(unzip -l "$apk")
 grep -q 'boofcv/factory/fiducial/aruco_mip_36h12.txt' <<<"$listing" || fail "BoofCV's dictionary resources missing"
 grep -q ' org/skinlab/skinning/skinning.glsl$' <<<"$listing" || fail "the skinning shader's formulas (core's skinning.glsl) missing"
 grep -q ' org/skinlab/ar/lens.glsl$' <<<"$listing" || fail "the background shader's lens formulas (core's lens.glsl) missing"
-grep -q ' org/skinlab/scene/material.glsl$' <<<"$listing" || fail "the model shader's material formulas (core's material.glsl) missing"
+grep -q ' org/skinlab/internal/scene/material.glsl$' <<<"$listing" || fail "the model shader's material formulas (core's material.glsl) missing"
 grep -q 'assets/models/humanoid-walk.dae' <<<"$listing" || fail "the default model is not bundled"
 grep -q 'assets/models/humanoid-walk.glb' <<<"$listing" || fail "the default model's .glb twin is not bundled"
 grep -q '^Lorg/skinlab/gltf/' <<<"$classes" || fail "dex lacks core's glTF importer (org.skinlab.gltf)"

@@ -40,7 +40,7 @@ public final class Play {
             try (Frame frame = mesh.acquire()) {
                 float[] p = frame.positions(0);
                 System.out.printf("played: clip time %.3f s, vertex 0 at (%.4f, %.4f, %.4f), %d joints%n",
-                        frame.clipTime(), p[0], p[1], p[2], frame.jointCount(0));
+                        frame.clipTime(), p[0], p[1], p[2], frame.palette(0).jointCount());
             }
         }
 

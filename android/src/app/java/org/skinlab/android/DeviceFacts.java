@@ -14,7 +14,7 @@ import android.content.pm.PackageManager;
 import android.os.Build;
 
 import org.skinlab.android.logic.CpuName;
-import org.skinlab.bench.DeviceResults;
+import org.skinlab.internal.bench.DeviceResults;
 
 /**
  * What the device file says about the phone and the app, as Android reports it: {@code Build}'s

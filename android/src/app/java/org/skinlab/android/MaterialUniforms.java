@@ -3,8 +3,8 @@ package org.skinlab.android;
 import static android.opengl.GLES30.*;
 
 import org.skinlab.android.logic.GlesShaders;
-import org.skinlab.scene.MaterialGlsl;
-import org.skinlab.scene.PartMaterial;
+import org.skinlab.internal.scene.MaterialGlsl;
+import org.skinlab.internal.scene.PartMaterial;
 
 /** The skinned program's material uniforms (core's material.glsl), looked up once per program. */
 final class MaterialUniforms {

@@ -18,7 +18,7 @@ import org.skinlab.android.logic.AppActions;
 import org.skinlab.android.logic.DeviceMeasurement;
 import org.skinlab.android.logic.DrawnCopies;
 import org.skinlab.android.logic.MeasureProtocol;
-import org.skinlab.bench.DeviceResultsJson;
+import org.skinlab.internal.bench.DeviceResultsJson;
 
 /**
  * The Activity's "Measure" and "Save results" (UI thread): starts a {@link DeviceMeasurement} of

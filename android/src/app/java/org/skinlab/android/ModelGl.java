@@ -16,8 +16,8 @@ import org.skinlab.model.Image;
 import org.skinlab.model.Mesh;
 import org.skinlab.model.MeshPart;
 import org.skinlab.model.Texture;
-import org.skinlab.scene.PartCentres;
-import org.skinlab.scene.PartMaterial;
+import org.skinlab.internal.scene.PartCentres;
+import org.skinlab.internal.scene.PartMaterial;
 import org.skinlab.simulation.Frame;
 import org.skinlab.skinning.InfluenceView;
 import org.skinlab.skinning.SkinnedGeometry;
@@ -191,7 +191,7 @@ final class ModelGl {
         glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, PaletteTexture.TEXELS_PER_JOINT, joints, GL_RGBA, GL_FLOAT,
                 paletteBuffer);
         glActiveTexture(GL_TEXTURE0);
-        float[] m = frame.skinningMatrices(g);
+        float[] m = frame.palette(g).matrices();
         mirrored = geometry.windingMirrored() ^ PartCentres.firstJointMirrors(m);
         for (int i = 0; i < centres.partCount(); i++) {
             centres.posed(i, m, posedCentres);

@@ -7,7 +7,7 @@ import java.util.List;
 import org.joml.Matrix4f;
 import org.joml.Matrix4fc;
 import org.skinlab.android.logic.GlesShaders;
-import org.skinlab.scene.BlendOrder;
+import org.skinlab.internal.scene.BlendOrder;
 import org.skinlab.simulation.Frame;
 import org.skinlab.skinning.SkinningGlsl;
 
@@ -84,8 +84,8 @@ final class SkinnedModelDraw {
     private void paletteOf(List<ModelGl> models, Frame frame, int g) {
         models.get(g).shape(frame, g);
         models.get(g).palette(frame, g);
-        glUniform1i(glGetUniformLocation(program, "uHasScale"), frame.hasScale(g) ? 1 : 0);
-        glUniform1i(glGetUniformLocation(program, "uMatricesMirror"), frame.mirrorsMatrices(g) ? 1 : 0);
-        glUniform1i(glGetUniformLocation(program, "uScalesMirror"), frame.mirrorsScales(g) ? 1 : 0);
+        glUniform1i(glGetUniformLocation(program, "uHasScale"), frame.palette(g).hasScale() ? 1 : 0);
+        glUniform1i(glGetUniformLocation(program, "uMatricesMirror"), frame.palette(g).mirrorsMatrices() ? 1 : 0);
+        glUniform1i(glGetUniformLocation(program, "uScalesMirror"), frame.palette(g).mirrorsScales() ? 1 : 0);
     }
 }

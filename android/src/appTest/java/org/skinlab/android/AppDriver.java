@@ -42,9 +42,9 @@ import org.skinlab.ar.CameraIntrinsics;
 import org.skinlab.ar.GrayImage;
 import org.skinlab.ar.MarkerDictionary;
 import org.skinlab.ar.MarkerPattern;
-import org.skinlab.ar.synthetic.PlacedMarker;
-import org.skinlab.ar.synthetic.SceneOptions;
-import org.skinlab.ar.synthetic.SyntheticCamera;
+import org.skinlab.internal.synthetic.PlacedMarker;
+import org.skinlab.internal.synthetic.SceneOptions;
+import org.skinlab.internal.synthetic.SyntheticCamera;
 
 /**
  * Drives the real {@link SkinlabActivity} in Robolectric as a user and a phone would: the

@@ -28,11 +28,11 @@ import org.robolectric.RobolectricTestRunner;
 import org.robolectric.annotation.Config;
 import org.robolectric.shadows.ShadowActivity;
 import org.skinlab.android.logic.MeasureProtocol;
-import org.skinlab.bench.DeviceResults;
-import org.skinlab.bench.DeviceResultsJson;
-import org.skinlab.bench.DeviceResultsReader;
-import org.skinlab.bench.FrameTimes;
-import org.skinlab.bench.Rounds;
+import org.skinlab.internal.bench.DeviceResults;
+import org.skinlab.internal.bench.DeviceResultsJson;
+import org.skinlab.internal.bench.DeviceResultsReader;
+import org.skinlab.internal.bench.FrameTimes;
+import org.skinlab.internal.bench.Rounds;
 import org.skinlab.skinning.SkinningMethod;
 
 /**

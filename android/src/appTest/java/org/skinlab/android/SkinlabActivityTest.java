@@ -23,7 +23,7 @@ import org.junit.runner.RunWith;
 import org.robolectric.RobolectricTestRunner;
 import org.robolectric.annotation.Config;
 import org.robolectric.shadows.ShadowActivity;
-import org.skinlab.scene.DefaultAsset;
+import org.skinlab.internal.scene.DefaultAsset;
 
 /**
  * The real Activity on the framework's classes (Robolectric), at minSdk and targetSdk: the camera

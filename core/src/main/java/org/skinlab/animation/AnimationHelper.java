@@ -33,6 +33,10 @@ public final class AnimationHelper {
      * zero scale) falls back to Gram-Schmidt on its non-zero columns, each kept on its own axis;
      * an all-zero one gives the identity. Allocates a few JOML temporaries; meant for offline work and per-joint (not
      * per-vertex) use.
+     *
+     * @param m the matrix; only its upper 3x3 is read, the translation column and bottom row are ignored
+     * @param dest receives the rotation, a unit quaternion
+     * @return {@code dest}
      */
     public static Quaternionf rotationOf(Matrix4fc m, Quaternionf dest) {
         Matrix3d a = new Matrix3d(m.m00(), m.m01(), m.m02(), m.m10(), m.m11(), m.m12(), m.m20(), m.m21(), m.m22());
@@ -143,6 +147,11 @@ public final class AnimationHelper {
      * {@code m = T * R * S} ({@link #compose}). The rotation is {@link #rotationOf}; the scale is
      * the diagonal of {@code R^T M}, so column noise does not leak into it and a reflection shows
      * as negative scales. Shear has no place in T*R*S and is dropped.
+     *
+     * @param m the affine matrix to split; its bottom row is ignored
+     * @param translation receives the translation column of {@code m}
+     * @param rotation receives the rotation R, a unit quaternion
+     * @param scale receives the per-axis scale along R's axes, negative on a reflection
      */
     public static void decompose(Matrix4fc m, Vector3f translation, Quaternionf rotation, Vector3f scale) {
         m.getTranslation(translation);
@@ -171,6 +180,12 @@ public final class AnimationHelper {
      * {@code w^2 + x^2 - y^2 - z^2}), which equals the usual one for unit quaternions and scales
      * by {@code |q|^2} otherwise, so an un-normalised {@link RotationInterpolation#LERP} result
      * shows as the shrinking it is rather than as a shear.
+     *
+     * @param translation the translation T
+     * @param rotation the rotation R; unit for a pure rotation, otherwise it scales by {@code |rotation|^2}
+     * @param scale the per-axis scale S, applied first, along the local axes
+     * @param dest receives the affine matrix; all 16 entries are overwritten
+     * @return {@code dest}
      */
     public static Matrix4f compose(Vector3fc translation, Quaternionfc rotation, Vector3fc scale, Matrix4f dest) {
         rotationMatrix(rotation, dest);
@@ -187,6 +202,19 @@ public final class AnimationHelper {
      * {@link #compose} written as a row-major 4x4 matrix (the layout of a COLLADA
      * {@code <matrix>}, bottom row 0 0 0 1) at {@code dest[offset]}, with the same operations, so
      * the same values to the bit. For the per-frame path, which has its values in locals.
+     *
+     * @param tx the x of the translation T
+     * @param ty the y of the translation T
+     * @param tz the z of the translation T
+     * @param qx the x of the rotation quaternion R (unit for a pure rotation, as in {@link #compose})
+     * @param qy the y of the rotation quaternion R
+     * @param qz the z of the rotation quaternion R
+     * @param qw the w (real part) of the rotation quaternion R
+     * @param sx the scale S along the local x axis
+     * @param sy the scale S along the local y axis
+     * @param sz the scale S along the local z axis
+     * @param dest receives the 16 floats of the matrix, row by row, at {@code dest[offset .. offset + 15]}
+     * @param offset the index in {@code dest} of the first (top-left) entry
      */
     public static void composeRowMajor(float tx, float ty, float tz, float qx, float qy, float qz, float qw,
             float sx, float sy, float sz, float[] dest, int offset) {
@@ -213,7 +241,13 @@ public final class AnimationHelper {
         dest[o + 15] = 1f;
     }
 
-    /** The rotation matrix of {@code q} in homogeneous form: {@code |q|^2} times that of q/|q|. */
+    /**
+     * The rotation matrix of {@code q} in homogeneous form: {@code |q|^2} times that of q/|q|.
+     *
+     * @param q the rotation quaternion, not necessarily unit
+     * @param dest receives the matrix; all 16 entries are overwritten, the translation becomes zero
+     * @return {@code dest}
+     */
     public static Matrix4f rotationMatrix(Quaternionfc q, Matrix4f dest) {
         return TransformElement.quaternionMatrix(q.x(), q.y(), q.z(), q.w(), dest);
     }
@@ -221,6 +255,10 @@ public final class AnimationHelper {
     /**
      * Writes the affine part of {@code m} as a row-major 3x4 matrix (r00 r01 r02 tx, r10 ...) at
      * {@code dest[offset]}: the layout of COLLADA's rows and of the skinning kernels' joints.
+     *
+     * @param m the matrix; its bottom row is not written (taken as 0 0 0 1)
+     * @param dest receives 12 floats at {@code dest[offset .. offset + 11]}
+     * @param offset the index in {@code dest} of the first entry (r00)
      */
     public static void putRowMajor3x4(Matrix4fc m, float[] dest, int offset) {
         dest[offset] = m.m00();
@@ -240,6 +278,11 @@ public final class AnimationHelper {
     /**
      * Writes the affine part of the column-major 4x4 matrix at {@code src[srcOffset]} (16 floats,
      * JOML's and OpenGL's layout) as a row-major 3x4 matrix at {@code dest[offset]}.
+     *
+     * @param src holds the column-major 4x4 matrix; only its first three rows are read
+     * @param srcOffset the index in {@code src} of the matrix's first entry (m00)
+     * @param dest receives 12 floats at {@code dest[offset .. offset + 11]}
+     * @param offset the index in {@code dest} of the first entry (r00)
      */
     public static void putRowMajor3x4(float[] src, int srcOffset, float[] dest, int offset) {
         for (int r = 0; r < 3; r++) {
@@ -250,7 +293,14 @@ public final class AnimationHelper {
         }
     }
 
-    /** Reads a row-major 3x4 matrix from {@code src[offset]} into {@code dest} (bottom row 0 0 0 1). */
+    /**
+     * Reads a row-major 3x4 matrix from {@code src[offset]} into {@code dest} (bottom row 0 0 0 1).
+     *
+     * @param src holds the 12 floats of the matrix, row by row, as {@link #putRowMajor3x4} writes them
+     * @param offset the index in {@code src} of the first entry (r00)
+     * @param dest receives the matrix; all 16 entries are overwritten
+     * @return {@code dest}
+     */
     public static Matrix4f getRowMajor3x4(float[] src, int offset, Matrix4f dest) {
         float[] a = src;
         int o = offset;
@@ -258,7 +308,16 @@ public final class AnimationHelper {
                 a[o + 2], a[o + 6], a[o + 10], 0f, a[o + 3], a[o + 7], a[o + 11], 1f);
     }
 
-    /** Interpolates from {@code a} (t = 0) to {@code b} (t = 1) the way {@code mode} says. */
+    /**
+     * Interpolates from {@code a} (t = 0) to {@code b} (t = 1) the way {@code mode} says.
+     *
+     * @param mode which of {@link #lerp}, {@link #nlerp} or {@link #slerp} to use
+     * @param a the rotation at t = 0
+     * @param b the rotation at t = 1
+     * @param t the interpolation parameter, normally in [0, 1]
+     * @param dest receives the interpolated rotation
+     * @return {@code dest}
+     */
     public static Quaternionf interpolate(RotationInterpolation mode, Quaternionfc a, Quaternionfc b, float t,
             Quaternionf dest) {
         switch (mode) {
@@ -273,7 +332,16 @@ public final class AnimationHelper {
         }
     }
 
-    /** Component-wise blend along the shortest arc, not renormalised. */
+    /**
+     * Component-wise blend along the shortest arc, not renormalised.
+     *
+     * @param a the rotation at t = 0
+     * @param b the rotation at t = 1; negated first when it lies in the other hemisphere from {@code a}
+     * @param t the interpolation parameter, normally in [0, 1]
+     * @param dest receives {@code (1 - t) a + t b}, shorter than unit length between two distinct rotations; may be
+     *     {@code a} or {@code b}
+     * @return {@code dest}
+     */
     public static Quaternionf lerp(Quaternionfc a, Quaternionfc b, float t, Quaternionf dest) {
         float s = 1 - t;
         // copySign rather than a branch: same result, and the sign of a dot of exactly 0 (90
@@ -282,7 +350,15 @@ public final class AnimationHelper {
         return dest.set(s * a.x() + u * b.x(), s * a.y() + u * b.y(), s * a.z() + u * b.z(), s * a.w() + u * b.w());
     }
 
-    /** {@link #lerp}, then normalised. */
+    /**
+     * {@link #lerp}, then normalised.
+     *
+     * @param a the rotation at t = 0, unit
+     * @param b the rotation at t = 1, unit
+     * @param t the interpolation parameter, normally in [0, 1]
+     * @param dest receives the unit result; a copy of {@code a} in the degenerate case where the blend is zero
+     * @return {@code dest}
+     */
     public static Quaternionf nlerp(Quaternionfc a, Quaternionfc b, float t, Quaternionf dest) {
         lerp(a, b, t, dest);
         float len = (float) Math.sqrt(dest.lengthSquared());
@@ -294,6 +370,13 @@ public final class AnimationHelper {
      * with O the angle between a and b (Shoemake 1985). Falls back to {@link #nlerp} when
      * |a.b| > 0.9999999 (keys less than about 0.05 degrees of rotation apart), where sin O loses
      * its precision.
+     *
+     * @param a the rotation at t = 0, unit
+     * @param b the rotation at t = 1, unit
+     * @param t the interpolation parameter, normally in [0, 1]
+     * @param dest receives the interpolated rotation, unit when {@code a} and {@code b} are; may be {@code a} or
+     *     {@code b}
+     * @return {@code dest}
      */
     public static Quaternionf slerp(Quaternionfc a, Quaternionfc b, float t, Quaternionf dest) {
         double dot = (double) a.x() * b.x() + (double) a.y() * b.y() + (double) a.z() * b.z() + (double) a.w() * b.w();
@@ -315,6 +398,10 @@ public final class AnimationHelper {
      * the translation column. Exact for rigid matrices; for others it keeps the rotation and
      * translation and drops scale (use the two-phase split of the DQS skinner for those).
      * Allocates (through {@link #rotationOf}).
+     *
+     * @param m the matrix; its upper 3x3 gives the rotation and its translation column the translation
+     * @param dest receives the unit dual quaternion
+     * @return {@code dest}
      */
     public static DualQuaternion toDualQuaternion(Matrix4fc m, DualQuaternion dest) {
         Quaternionf r = rotationOf(m, new Quaternionf());

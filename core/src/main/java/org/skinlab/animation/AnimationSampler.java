@@ -47,6 +47,14 @@ public final class AnimationSampler {
     private final AnimationClip clip;
     private final Channel[] channels;
 
+    /**
+     * A sampler of {@code clip} for poses of {@code skeleton}. Resolves every channel to its place in the
+     * pose's value array and pre-decomposes whole-matrix keys, so it allocates; build it once per clip.
+     *
+     * @param skeleton the skeleton of the model the clip belongs to; its nodes are what the channels name
+     * @param clip the clip to sample
+     * @throws IndexOutOfBoundsException when a channel names a node or transform element the skeleton lacks
+     */
     public AnimationSampler(Skeleton skeleton, AnimationClip clip) {
         this.clip = clip;
         List<AnimationChannel> list = clip.channels();
@@ -78,21 +86,39 @@ public final class AnimationSampler {
         return times;
     }
 
-    /** A sampler over no channels: every pose stays at rest. */
+    /**
+     * A sampler over no channels: every pose stays at rest.
+     *
+     * @param skeleton the skeleton whose poses it samples
+     * @return a sampler of an empty clip named "rest", from 0 to 0 seconds
+     */
     public static AnimationSampler rest(Skeleton skeleton) {
         return new AnimationSampler(skeleton, new AnimationClip(null, "rest", 0f, 0f, List.of()));
     }
 
+    /**
+     * The clip this sampler plays.
+     *
+     * @return the clip given to the constructor
+     */
     public AnimationClip clip() {
         return clip;
     }
 
-    /** Clip start (seconds). */
+    /**
+     * Clip start (seconds).
+     *
+     * @return the clip's start time in seconds, on the timeline of its keys
+     */
     public float start() {
         return clip.start();
     }
 
-    /** Clip end (seconds). */
+    /**
+     * Clip end (seconds).
+     *
+     * @return the clip's end time in seconds, never before {@link #start()}
+     */
     public float end() {
         return clip.end();
     }
@@ -102,6 +128,10 @@ public final class AnimationSampler {
      * into {@code [start, end)} for {@link WrapMode#LOOP} (negative elapsed time plays backwards
      * from the end), held at the ends for {@link WrapMode#CLAMP}. A clip of zero length is
      * always at its start.
+     *
+     * @param elapsed seconds of playback since the clip's start, any sign
+     * @param mode how time past either end is brought back into the clip
+     * @return the clip time in seconds, in [{@link #start()}, {@link #end()}], for {@link #sample}
      */
     public float clipTime(double elapsed, WrapMode mode) {
         return (float) Math.min(clip.start() + wrapElapsed(elapsed, mode), clip.end());
@@ -111,6 +141,10 @@ public final class AnimationSampler {
      * Playback time brought back into the clip, measured from its start: {@code [0, duration)}
      * for {@link WrapMode#LOOP}, {@code [0, duration]} for {@link WrapMode#CLAMP}, 0 for a clip of
      * zero length. A player keeps its clock in this form so it never grows without bound.
+     *
+     * @param elapsed seconds of playback since the clip's start, any sign
+     * @param mode how time past either end is brought back into the clip
+     * @return the seconds since the clip's start, in the range {@code mode} gives
      */
     public double wrapElapsed(double elapsed, WrapMode mode) {
         double duration = (double) clip.end() - clip.start();
@@ -127,7 +161,12 @@ public final class AnimationSampler {
         return Math.max(0, Math.min(duration, elapsed));
     }
 
-    /** Time {@code t} clamped to the clip: what the command line's times mean. */
+    /**
+     * Time {@code t} clamped to the clip: what the command line's times mean.
+     *
+     * @param t a clip time in seconds
+     * @return {@code t} limited to [{@link #start()}, {@link #end()}]
+     */
     public float clamp(float t) {
         return Math.max(clip.start(), Math.min(clip.end(), t));
     }
@@ -136,6 +175,12 @@ public final class AnimationSampler {
      * Writes every channel's value at clip time {@code time} into {@code pose.values()}. Values no
      * channel drives are left as they are (at rest for a fresh or reset pose). Allocation-free.
      * Call {@link Skeleton#evaluate} afterwards.
+     *
+     * @param time the clip time in seconds (the keys' timeline, not time since {@link #start()}); before the
+     *     first key a channel holds that key, after the last the last
+     * @param rotations how rotations of whole-matrix and quaternion channels are blended between LINEAR keys
+     * @param pose a pose of the skeleton this sampler was made for; its values are written
+     * @throws IllegalArgumentException when {@code time} is NaN
      */
     public void sample(float time, RotationInterpolation rotations, Pose pose) {
         if (Float.isNaN(time)) {

@@ -30,7 +30,12 @@ public final class BindPose {
         this.worlds = worlds;
     }
 
-    /** The bind pose of {@code model}'s nodes (those of {@link Skeleton#of(Model)}). */
+    /**
+     * The bind pose of {@code model}'s nodes (those of {@link Skeleton#of(Model)}).
+     *
+     * @param model the model whose skins' inverse bind matrices give the joints' bind frames
+     * @return a new bind pose, to {@link #apply} to poses of that model's skeleton
+     */
     public static BindPose of(Model model) {
         int n = model.nodes().size();
         boolean[] bound = new boolean[n];
@@ -58,7 +63,12 @@ public final class BindPose {
         return new BindPose(bound, worlds);
     }
 
-    /** Whether node {@code node} is placed by a skin's bind frame (else by its parent and its own transforms). */
+    /**
+     * Whether node {@code node} is placed by a skin's bind frame (else by its parent and its own transforms).
+     *
+     * @param node the node index, in [0, {@link Skeleton#nodeCount()})
+     * @return true for a joint of some skin with an invertible inverse bind matrix
+     */
     public boolean bound(int node) {
         return bound[node];
     }
@@ -66,6 +76,10 @@ public final class BindPose {
     /**
      * Sets {@code pose} to the bind pose of {@code skeleton} (the skeleton of the model this was
      * made from): the transform values back at rest, then every world matrix.
+     *
+     * @param skeleton the skeleton of the model this bind pose was made from
+     * @param pose a pose of {@code skeleton}; its values and world matrices are overwritten
+     * @throws IllegalArgumentException when {@code skeleton} has another number of nodes than the model
      */
     public void apply(Skeleton skeleton, Pose pose) {
         if (skeleton.nodeCount() != bound.length) {

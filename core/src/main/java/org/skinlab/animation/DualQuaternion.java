@@ -14,23 +14,41 @@ import org.joml.Vector3fc;
  * skinning with approximate dual quaternion blending", section 3.
  */
 public final class DualQuaternion {
+    /** The x component of the real part r (the rotation quaternion). */
     public float rx;
+    /** The y component of the real part r (the rotation quaternion). */
     public float ry;
+    /** The z component of the real part r (the rotation quaternion). */
     public float rz;
+    /** The w (scalar) component of the real part r (the rotation quaternion); 1 for the identity. */
     public float rw = 1f;
+    /** The x component of the dual part d, which encodes the translation ({@code d = t r / 2}). */
     public float dx;
+    /** The y component of the dual part d, which encodes the translation ({@code d = t r / 2}). */
     public float dy;
+    /** The z component of the dual part d, which encodes the translation ({@code d = t r / 2}). */
     public float dz;
+    /** The w (scalar) component of the dual part d, which encodes the translation ({@code d = t r / 2}). */
     public float dw;
 
     /** The identity transform. */
     public DualQuaternion() {
     }
 
+    /**
+     * A copy of {@code other}.
+     *
+     * @param other the dual quaternion whose eight components are copied
+     */
     public DualQuaternion(DualQuaternion other) {
         set(other);
     }
 
+    /**
+     * Sets this to the identity transform: r = (0, 0, 0, 1), d = 0.
+     *
+     * @return this
+     */
     public DualQuaternion identity() {
         rx = ry = rz = 0f;
         rw = 1f;
@@ -38,6 +56,12 @@ public final class DualQuaternion {
         return this;
     }
 
+    /**
+     * Copies the eight components of {@code o} into this.
+     *
+     * @param o the dual quaternion to copy
+     * @return this
+     */
     public DualQuaternion set(DualQuaternion o) {
         rx = o.rx;
         ry = o.ry;
@@ -50,13 +74,30 @@ public final class DualQuaternion {
         return this;
     }
 
-    /** Rotation {@code rotation} (unit) followed by translation {@code translation}. */
+    /**
+     * Rotation {@code rotation} (unit) followed by translation {@code translation}.
+     *
+     * @param rotation the rotation, a unit quaternion; it becomes the real part
+     * @param translation the translation, applied after the rotation
+     * @return this
+     */
     public DualQuaternion set(Quaternionfc rotation, Vector3fc translation) {
         return set(rotation.x(), rotation.y(), rotation.z(), rotation.w(), translation.x(), translation.y(),
                 translation.z());
     }
 
-    /** Rotation (x, y, z, w), unit, followed by translation (tx, ty, tz): d = (t, 0) r / 2. */
+    /**
+     * Rotation (x, y, z, w), unit, followed by translation (tx, ty, tz): d = (t, 0) r / 2.
+     *
+     * @param x the x of the unit rotation quaternion
+     * @param y the y of the unit rotation quaternion
+     * @param z the z of the unit rotation quaternion
+     * @param w the w (scalar) of the unit rotation quaternion
+     * @param tx the x of the translation, applied after the rotation
+     * @param ty the y of the translation, applied after the rotation
+     * @param tz the z of the translation, applied after the rotation
+     * @return this
+     */
     public DualQuaternion set(float x, float y, float z, float w, float tx, float ty, float tz) {
         rx = x;
         ry = y;
@@ -69,7 +110,13 @@ public final class DualQuaternion {
         return this;
     }
 
-    /** The 8 components r.x, r.y, r.z, r.w, d.x, d.y, d.z, d.w from {@code src} at {@code offset}. */
+    /**
+     * The 8 components r.x, r.y, r.z, r.w, d.x, d.y, d.z, d.w from {@code src} at {@code offset}.
+     *
+     * @param src holds the components at {@code src[offset .. offset + 7]}
+     * @param offset the index in {@code src} of r.x
+     * @return this
+     */
     public DualQuaternion set(float[] src, int offset) {
         rx = src[offset];
         ry = src[offset + 1];
@@ -82,7 +129,13 @@ public final class DualQuaternion {
         return this;
     }
 
-    /** Writes the 8 components in the order of {@link #set(float[], int)}. */
+    /**
+     * Writes the 8 components in the order of {@link #set(float[], int)}.
+     *
+     * @param dest receives the components at {@code dest[offset .. offset + 7]}
+     * @param offset the index in {@code dest} for r.x
+     * @return {@code dest}
+     */
     public float[] get(float[] dest, int offset) {
         dest[offset] = rx;
         dest[offset + 1] = ry;
@@ -95,12 +148,24 @@ public final class DualQuaternion {
         return dest;
     }
 
-    /** Dot product of the real parts: negative when the rotations lie in opposite hemispheres. */
+    /**
+     * Dot product of the real parts: negative when the rotations lie in opposite hemispheres.
+     *
+     * @param o the other dual quaternion
+     * @return the 4D dot product of this real part and {@code o}'s
+     */
     public float realDot(DualQuaternion o) {
         return rx * o.rx + ry * o.ry + rz * o.rz + rw * o.rw;
     }
 
-    /** {@code this += weight * o}, the blending step of DLB (Kavan et al. 2008, eq. 6). */
+    /**
+     * {@code this += weight * o}, the blending step of DLB (Kavan et al. 2008, eq. 6).
+     *
+     * @param weight the factor for {@code o}, typically a skinning weight, negated by the caller for an
+     *     opposite-hemisphere rotation
+     * @param o the dual quaternion to add; not modified
+     * @return this, not normalised
+     */
     public DualQuaternion addScaled(float weight, DualQuaternion o) {
         rx += weight * o.rx;
         ry += weight * o.ry;
@@ -113,7 +178,12 @@ public final class DualQuaternion {
         return this;
     }
 
-    /** Multiplies all eight components by {@code s}. */
+    /**
+     * Multiplies all eight components by {@code s}.
+     *
+     * @param s the factor
+     * @return this
+     */
     public DualQuaternion scale(float s) {
         rx *= s;
         ry *= s;
@@ -130,6 +200,8 @@ public final class DualQuaternion {
      * Makes this a unit dual quaternion: divides both parts by |r| and removes the part of d
      * along r, so that {@code r . d = 0} holds exactly (Kavan et al. 2008, section 3.1). The
      * zero dual quaternion (blend weights cancelling out) becomes the identity.
+     *
+     * @return this
      */
     public DualQuaternion normalize() {
         float len = (float) Math.sqrt(rx * rx + ry * ry + rz * rz + rw * rw);
@@ -153,7 +225,13 @@ public final class DualQuaternion {
         return this;
     }
 
-    /** {@code dest = this * o}: apply o first, then this. */
+    /**
+     * {@code dest = this * o}: apply o first, then this.
+     *
+     * @param o the right-hand factor, the transform applied first
+     * @param dest receives the product; may be this or {@code o}
+     * @return {@code dest}
+     */
     public DualQuaternion mul(DualQuaternion o, DualQuaternion dest) {
         float nrx = rw * o.rx + rx * o.rw + ry * o.rz - rz * o.ry;
         float nry = rw * o.ry - rx * o.rz + ry * o.rw + rz * o.rx;
@@ -175,7 +253,11 @@ public final class DualQuaternion {
         return dest;
     }
 
-    /** The inverse of a unit dual quaternion: its quaternion conjugate (both parts conjugated). */
+    /**
+     * The inverse of a unit dual quaternion: its quaternion conjugate (both parts conjugated). Modifies this.
+     *
+     * @return this
+     */
     public DualQuaternion conjugate() {
         rx = -rx;
         ry = -ry;
@@ -189,6 +271,9 @@ public final class DualQuaternion {
     /**
      * The translation of a unit dual quaternion: {@code t = 2 d r*}, written out as
      * {@code 2 (r.w d.xyz - d.w r.xyz + r.xyz x d.xyz)}.
+     *
+     * @param dest receives the translation
+     * @return {@code dest}
      */
     public Vector3f getTranslation(Vector3f dest) {
         return dest.set(2 * (rw * dx - dw * rx + (ry * dz - rz * dy)),
@@ -196,7 +281,12 @@ public final class DualQuaternion {
                 2 * (rw * dz - dw * rz + (rx * dy - ry * dx)));
     }
 
-    /** Transforms a point of a unit dual quaternion: rotate by r, then translate. */
+    /**
+     * Transforms a point of a unit dual quaternion: rotate by r, then translate.
+     *
+     * @param v the point, transformed in place
+     * @return {@code v}
+     */
     public Vector3f transformPosition(Vector3f v) {
         float tx = 2 * (rw * dx - dw * rx + (ry * dz - rz * dy));
         float ty = 2 * (rw * dy - dw * ry + (rz * dx - rx * dz));
@@ -205,7 +295,12 @@ public final class DualQuaternion {
         return v.add(tx, ty, tz);
     }
 
-    /** Rotates a direction by the real part (unit): {@code v + 2 r x (r x v + w v)}. */
+    /**
+     * Rotates a direction by the real part (unit): {@code v + 2 r x (r x v + w v)}. The translation is ignored.
+     *
+     * @param v the direction, rotated in place
+     * @return {@code v}
+     */
     public Vector3f transformDirection(Vector3f v) {
         float cx = ry * v.z - rz * v.y + rw * v.x;
         float cy = rz * v.x - rx * v.z + rw * v.y;
@@ -216,6 +311,11 @@ public final class DualQuaternion {
     /**
      * Dual quaternion linear blending between this (t = 0) and {@code o} (t = 1) along the
      * shortest arc, normalised: DLB of two transforms (Kavan et al. 2008, eq. 6).
+     *
+     * @param o the transform at t = 1
+     * @param t the blend parameter, normally in [0, 1]
+     * @param dest receives the normalised blend; may be this or {@code o}
+     * @return {@code dest}
      */
     public DualQuaternion blend(DualQuaternion o, float t, DualQuaternion dest) {
         float wo = Math.copySign(t, realDot(o));

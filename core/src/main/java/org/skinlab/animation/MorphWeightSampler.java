@@ -22,7 +22,13 @@ public final class MorphWeightSampler {
     private final int[] instanceOfChannel;
     private final AnimationSampler.Channel[] channels;
 
-    /** @param clip the clip, or null for none (nothing animated) */
+    /**
+     * A sampler of {@code clip}'s morph weight channels for the mesh instances of {@code model}.
+     *
+     * @param model the model the clip belongs to; its {@link Model#instances()} are what the channels name
+     * @param clip the clip, or null for none (nothing animated)
+     * @throws IllegalArgumentException when a channel animates an instance that draws no morph
+     */
     public MorphWeightSampler(Model model, AnimationClip clip) {
         instanceCount = model.instances().size();
         morphs = new Morph[instanceCount];
@@ -40,17 +46,31 @@ public final class MorphWeightSampler {
         }
     }
 
-    /** Whether the clip animates the weights of instance {@code instance}. */
+    /**
+     * Whether the clip animates the weights of instance {@code instance}.
+     *
+     * @param instance an index into the model's {@link Model#instances()}
+     * @return true when at least one channel drives a weight of that instance's morph
+     */
     public boolean animates(int instance) {
         return morphs[instance] != null;
     }
 
-    /** Whether the clip animates any weights. */
+    /**
+     * Whether the clip animates any weights.
+     *
+     * @return true when the clip has at least one morph weight channel; false also for a null clip
+     */
     public boolean animatesAny() {
         return channels.length > 0;
     }
 
-    /** The morph whose weights instance {@code instance} animates, or null. */
+    /**
+     * The morph whose weights instance {@code instance} animates, or null.
+     *
+     * @param instance an index into the model's {@link Model#instances()}
+     * @return the instance's morph, or null when the clip animates none of its weights
+     */
     public Morph morph(int instance) {
         return morphs[instance];
     }
@@ -58,6 +78,9 @@ public final class MorphWeightSampler {
     /**
      * Per instance, an array of its morph's weights (the file's) where the clip animates them, else
      * null: the state {@link #sample} updates.
+     *
+     * @return a new array, one entry per mesh instance; each non-null entry is a fresh copy of the morph's
+     *     weights in target order, owned by the caller
      */
     public float[][] newWeights() {
         float[][] w = new float[instanceCount][];
@@ -67,7 +90,13 @@ public final class MorphWeightSampler {
         return w;
     }
 
-    /** Writes every animated weight at clip time {@code time} into {@code weights} (from {@link #newWeights}). */
+    /**
+     * Writes every animated weight at clip time {@code time} into {@code weights} (from {@link #newWeights}).
+     *
+     * @param time the clip time in seconds, on the keys' timeline as for {@link AnimationSampler#sample}
+     * @param weights per instance its weights, as made by {@link #newWeights}; only animated weights are written
+     * @throws IllegalArgumentException when {@code time} is NaN
+     */
     public void sample(float time, float[][] weights) {
         if (Float.isNaN(time)) {
             throw new IllegalArgumentException("sample time is NaN");

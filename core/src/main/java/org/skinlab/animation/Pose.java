@@ -27,6 +27,11 @@ public final class Pose {
         this.world = new float[16 * skeleton.nodeCount()];
     }
 
+    /**
+     * The skeleton this pose belongs to; its arrays are laid out for that skeleton only.
+     *
+     * @return the skeleton that made this pose
+     */
     public Skeleton skeleton() {
         return skeleton;
     }
@@ -34,17 +39,30 @@ public final class Pose {
     /**
      * The transform values, laid out per node and element as {@link Skeleton#valueOffset} says,
      * each element in its {@link org.skinlab.model.TransformElement} layout. Animation writes here.
+     *
+     * @return the live array (not a copy), {@link Skeleton#valueCount()} floats
      */
     public float[] values() {
         return values;
     }
 
-    /** World matrices, 16 floats column-major per node. Valid after {@link Skeleton#evaluate}. */
+    /**
+     * World matrices, 16 floats column-major per node. Valid after {@link Skeleton#evaluate}.
+     *
+     * @return the live array (not a copy), 16 times {@link Skeleton#nodeCount()} floats; node i's matrix starts
+     *     at {@code 16 i}
+     */
     public float[] worldArray() {
         return world;
     }
 
-    /** Node {@code node}'s world matrix. */
+    /**
+     * Node {@code node}'s world matrix.
+     *
+     * @param node the node index, in [0, {@link Skeleton#nodeCount()})
+     * @param dest receives the world matrix as of the last {@link Skeleton#evaluate}
+     * @return {@code dest}
+     */
     public Matrix4f world(int node, Matrix4f dest) {
         return dest.set(world, 16 * node);
     }

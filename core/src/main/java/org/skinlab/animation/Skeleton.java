@@ -80,30 +80,62 @@ public final class Skeleton {
         }
     }
 
-    /** The skeleton of a model's visual scene. */
+    /**
+     * The skeleton of a model's visual scene.
+     *
+     * @param model the model whose {@link Model#nodes() nodes} become the skeleton's, in the same order
+     * @return a new skeleton, its rest values copied from the nodes' transform elements
+     */
     public static Skeleton of(Model model) {
         return new Skeleton(model.nodes());
     }
 
+    /**
+     * Number of nodes, joints or not: the size of {@link Model#nodes()}.
+     *
+     * @return the node count; node indices run from 0 to this minus 1
+     */
     public int nodeCount() {
         return parents.length;
     }
 
-    /** Parent of node {@code i}, -1 for a root. */
+    /**
+     * Parent of node {@code i}, -1 for a root.
+     *
+     * @param i the node index, in [0, {@link #nodeCount()})
+     * @return the parent's node index, always less than {@code i}, or -1 for a root
+     */
     public int parent(int i) {
         return parents[i];
     }
 
+    /**
+     * Node {@code i} of the model, as imported.
+     *
+     * @param i the node index, in [0, {@link #nodeCount()})
+     * @return the node, with its name, ids and rest transform elements
+     */
     public Node node(int i) {
         return nodes.get(i);
     }
 
-    /** Number of floats in a pose's value array. */
+    /**
+     * Number of floats in a pose's value array.
+     *
+     * @return the length of {@link Pose#values()}: the sizes of all nodes' transform elements summed
+     */
     public int valueCount() {
         return restValues.length;
     }
 
-    /** Where the values of transform element {@code transformIndex} of node {@code node} start. */
+    /**
+     * Where the values of transform element {@code transformIndex} of node {@code node} start.
+     *
+     * @param node the node index, in [0, {@link #nodeCount()})
+     * @param transformIndex the index of the element in the node's transform stack ({@link Node#transforms()})
+     * @return the index in {@link Pose#values()} of the element's first value; {@link #kind} says how many follow
+     * @throws IndexOutOfBoundsException when the node has no such element or there is no such node
+     */
     public int valueOffset(int node, int transformIndex) {
         int e = elementStart[node] + transformIndex;
         if (transformIndex < 0 || e >= elementStart[node + 1]) {
@@ -112,19 +144,35 @@ public final class Skeleton {
         return valueOffsets[e];
     }
 
-    /** The kind of transform element {@code transformIndex} of node {@code node}. */
+    /**
+     * The kind of transform element {@code transformIndex} of node {@code node}.
+     *
+     * @param node the node index, in [0, {@link #nodeCount()})
+     * @param transformIndex the index of the element in the node's transform stack, in
+     *     [0, {@code node(node).transforms().size()}); not checked against the node's own stack
+     * @return the element's kind, which fixes the number and layout of its values
+     */
     public TransformElement.Kind kind(int node, int transformIndex) {
         return kinds[elementStart[node] + transformIndex];
     }
 
-    /** A new pose at rest (values as written in the file), already evaluated. */
+    /**
+     * A new pose at rest (values as written in the file), already evaluated.
+     *
+     * @return a new pose of this skeleton, with its own value and world arrays
+     */
     public Pose newPose() {
         Pose pose = new Pose(this);
         evaluate(pose);
         return pose;
     }
 
-    /** Sets all transform values of the pose back to the rest values. */
+    /**
+     * Sets all transform values of the pose back to the rest values. The world matrices are left
+     * as they were until the next {@link #evaluate}.
+     *
+     * @param pose a pose of this skeleton
+     */
     public void reset(Pose pose) {
         System.arraycopy(restValues, 0, pose.values(), 0, restValues.length);
     }
@@ -139,6 +187,8 @@ public final class Skeleton {
      * <p>The products are written out on the arrays (see {@link #mulAffine}); a node whose stack
      * is one {@code <matrix>} is read straight from its values, others go through
      * {@link TransformElement#multiply}.
+     *
+     * @param pose a pose of this skeleton; its transform values are read, its world matrices overwritten
      */
     public void evaluate(Pose pose) {
         evaluate(pose, null, null);
@@ -242,6 +292,12 @@ public final class Skeleton {
      * node (identity world, the bind-shape pseudo-joint). Bind matrices are affine (their bottom
      * rows are not read). Written as row-major 3x4 matrices, 12 floats per joint, the layout
      * skinning kernels read. The pose must have been evaluated.
+     *
+     * @param pose an evaluated pose of this skeleton, whose world matrices are read
+     * @param jointNodes per joint of the palette, its node index, or -1 for the identity world
+     * @param bindMatrices per joint, its bind matrix as 16 floats column-major at {@code 16 j}
+     * @param dest receives per joint a row-major 3x4 matrix at {@code 12 j}; at least {@code 12 * jointNodes.length}
+     *     floats
      */
     public void skinningMatrices(Pose pose, int[] jointNodes, float[] bindMatrices, float[] dest) {
         float[] world = pose.worldArray();

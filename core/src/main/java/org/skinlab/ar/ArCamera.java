@@ -27,7 +27,18 @@ public final class ArCamera {
     private ArCamera() {
     }
 
-    /** The projection that fills normalised device coordinates with the image (viewport of the image's aspect). */
+    /**
+     * The projection that fills normalised device coordinates with the image (viewport of the image's aspect).
+     *
+     * @param k    the camera's intrinsics; its pinhole only (fx, fy, cx, cy, size): the lens'
+     *             distortion cannot be expressed in a matrix and is ignored
+     * @param near the distance to the near clipping plane, in the unit of the model-view's
+     *             translation (metres for {@link #markerModelView} of a tracked pose); positive
+     * @param far  the distance to the far clipping plane, in the same unit; greater than {@code near}
+     * @param dest the matrix to overwrite with the projection
+     * @return {@code dest}, a column-major OpenGL projection from the eye frame to clip space
+     * @throws IllegalArgumentException unless {@code 0 < near < far}
+     */
     public static Matrix4f projection(CameraIntrinsics k, float near, float far, Matrix4f dest) {
         if (!(near > 0) || !(far > near)) {
             throw new IllegalArgumentException("need 0 < near < far: " + near + ", " + far);
@@ -48,6 +59,21 @@ public final class ArCamera {
      * The projection for a viewport of {@code viewportWidth x viewportHeight} pixels showing the image
      * turned by {@code rotationDegrees} (0, 90, 180, 270; counter-clockwise on screen) and scaled to
      * fill the viewport (cropping) or, with {@code fit}, to fit inside it (bars).
+     *
+     * @param k               the camera's intrinsics (pinhole only, as
+     *                        {@link #projection(CameraIntrinsics, float, float, Matrix4f)})
+     * @param near            the distance to the near clipping plane, in the model-view's unit; positive
+     * @param far             the distance to the far clipping plane, in the same unit; greater than {@code near}
+     * @param viewportWidth   the viewport's width in pixels, positive
+     * @param viewportHeight  the viewport's height in pixels, positive
+     * @param rotationDegrees how far the image is turned on screen, counter-clockwise, in degrees: a
+     *                        multiple of 90 (negative and larger values wrap around)
+     * @param fit             true to fit the whole image inside the viewport (bars), false to fill
+     *                        the viewport with it (cropping)
+     * @param dest            the matrix to overwrite with the projection
+     * @return {@code dest}: {@link #imageToViewport} times the image's projection, column-major
+     * @throws IllegalArgumentException unless {@code 0 < near < far}, or when {@code rotationDegrees}
+     *                                  is not a multiple of 90
      */
     public static Matrix4f projection(CameraIntrinsics k, float near, float far, int viewportWidth, int viewportHeight,
             int rotationDegrees, boolean fit, Matrix4f dest) {
@@ -62,6 +88,19 @@ public final class ArCamera {
      * the turned image, at its own aspect, fills (or with {@code fit}, fits inside) a viewport of
      * {@code viewportWidth x viewportHeight}. Draw the background quad's corners (-1, -1) .. (1, 1)
      * through it as well.
+     *
+     * @param imageWidth      the camera image's width in pixels, positive (only the aspect counts)
+     * @param imageHeight     the camera image's height in pixels, positive
+     * @param viewportWidth   the viewport's width in pixels, positive
+     * @param viewportHeight  the viewport's height in pixels, positive
+     * @param rotationDegrees how far the image is turned on screen, counter-clockwise, in degrees: a
+     *                        multiple of 90 (negative and larger values wrap around)
+     * @param fit             true to fit the whole image inside the viewport (bars), false to fill
+     *                        the viewport with it (cropping)
+     * @param dest            the matrix to overwrite with the map
+     * @return {@code dest}: a scale of x and y times a turn about z, column-major; z and w pass
+     *         through unchanged
+     * @throws IllegalArgumentException when {@code rotationDegrees} is not a multiple of 90
      */
     public static Matrix4f imageToViewport(int imageWidth, int imageHeight, int viewportWidth, int viewportHeight,
             int rotationDegrees, boolean fit, Matrix4f dest) {
@@ -86,6 +125,14 @@ public final class ArCamera {
     /**
      * The OpenGL model-view of a marker pose {@code X_cam = R X_marker + t} (R row-major): the
      * camera frame's y and z flipped into OpenGL's eye frame, {@code diag(1, -1, -1) [R | t]}.
+     *
+     * @param r    the rotation R from the marker's frame to the camera's, row-major: 9 elements
+     *             (only the first 9 are read)
+     * @param t    the translation t, the marker's origin in the camera frame (x right, y down, z
+     *             forward): 3 elements, in the unit the projection's near and far use (metres for a
+     *             tracked {@link ArPose})
+     * @param dest the matrix to overwrite with the model-view
+     * @return {@code dest}, column-major, from the marker's frame to OpenGL's eye frame
      */
     public static Matrix4f markerModelView(double[] r, double[] t, Matrix4f dest) {
         return dest.set(

@@ -25,18 +25,41 @@ public final class ArSession {
     private final AtomicReference<Thread> feeder = new AtomicReference<>();
     private long frames;
 
+    /**
+     * A session over any detector; both are used only from the thread that feeds frames.
+     *
+     * @param detector finds the markers in one frame (of any id, possibly none; never null), e.g.
+     *                 {@code tracker::track}; it may keep state between frames
+     * @param tracking follows one marker over the frames; owned by this session from now on
+     * @throws NullPointerException when either is null
+     */
     public ArSession(Function<GrayImage, List<MarkerDetection>> detector, MarkerTracking tracking) {
         this.detector = Objects.requireNonNull(detector, "detector");
         this.tracking = Objects.requireNonNull(tracking, "tracking");
     }
 
-    /** A session over a tracker's video search and the default tracking (any id, 0.5 s hold). */
+    /**
+     * A session over a tracker's video search and the default tracking (any id, 0.5 s hold).
+     *
+     * @param tracker the detector, {@link FiducialTracker#track} each frame; its config's target id (-1 for any)
+     *                is the marker followed
+     * @return a new session, SEARCHING until the first frame
+     */
     public static ArSession of(FiducialTracker tracker) {
         return new ArSession(tracker::track, new MarkerTracking(tracker.config().targetId(),
                 MarkerTracking.DEFAULT_HOLD_NANOS));
     }
 
-    /** Tracks one camera frame taken at {@code timeNanos} and publishes the result, which it returns. */
+    /**
+     * Tracks one camera frame taken at {@code timeNanos} and publishes the result, which it returns.
+     *
+     * @param image     the frame's gray (luminance) image, handed to the detector during this call; the session
+     *                  keeps no reference to it
+     * @param timeNanos the frame's timestamp in nanoseconds, on one monotonic clock for all frames (the camera's
+     *                  sensor timestamp, or {@link System#nanoTime()}); it goes into the pose unchanged
+     * @return the new pose, the one {@link #current()} returns from now on
+     * @throws IllegalStateException when called from a thread other than the one that fed the first frame
+     */
     public ArPose onCameraFrame(GrayImage image, long timeNanos) {
         Thread me = Thread.currentThread();
         // compareAndSet, not compareAndExchange: the latter is Android 13+ (core runs on Android 8).
@@ -57,7 +80,11 @@ public final class ArSession {
         return pose;
     }
 
-    /** The latest published pose; from any thread. */
+    /**
+     * The latest published pose; from any thread.
+     *
+     * @return the pose of the last frame tracked, or {@link ArPose#NONE} before the first
+     */
     public ArPose current() {
         return current;
     }

@@ -17,13 +17,23 @@ public final class CameraFollow {
 
     private double yaw;
 
-    /** The yaw that faces the camera of pose (R, t), or the last one when the camera is overhead. */
+    /**
+     * The yaw that faces the camera of pose (R, t), or the last one when the camera is overhead.
+     *
+     * @param r the marker's rotation R, 3x3 row-major ({@code X_cam = R X_marker + t}); read only
+     * @param t the marker's translation t in metres; read only
+     * @return the new current yaw in radians ({@link #yawTowardCamera}), also kept for {@link #yaw()}
+     */
     public double update(double[] r, double[] t) {
         yaw = yawTowardCamera(r, t, yaw);
         return yaw;
     }
 
-    /** The current yaw in radians. */
+    /**
+     * The current yaw in radians.
+     *
+     * @return the yaw the last {@link #update} returned, in [-pi, pi], or 0 before any (or after {@link #reset()})
+     */
     public double yaw() {
         return yaw;
     }
@@ -37,6 +47,11 @@ public final class CameraFollow {
      * The yaw (radians, about the marker's +z, counter-clockwise seen from above) that turns the
      * model's front toward the camera of pose (R row-major, t), or {@code fallback} when the
      * camera is within {@link #OVERHEAD_DEGREES} of the marker's normal (or behind its plane's edge-on).
+     *
+     * @param r        the marker's rotation R, 3x3 row-major ({@code X_cam = R X_marker + t}); read only
+     * @param t        the marker's translation t in metres; read only
+     * @param fallback the yaw in radians to return when the camera is overhead (usually the last one)
+     * @return the yaw in radians, in [-pi, pi] ({@code atan2(c_x, -c_y)}), or {@code fallback}
      */
     public static double yawTowardCamera(double[] r, double[] t, double fallback) {
         // c = -R^T t: the camera centre in the marker frame.

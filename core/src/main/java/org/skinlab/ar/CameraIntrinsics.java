@@ -22,6 +22,20 @@ package org.skinlab.ar;
 public record CameraIntrinsics(int width, int height, double fx, double fy, double cx, double cy,
         LensDistortion distortion) {
 
+    /**
+     * Checks the components; see the record's comment for what each one means.
+     *
+     * @param width      image width in pixels
+     * @param height     image height in pixels
+     * @param fx         focal length along x, in pixels
+     * @param fy         focal length along y, in pixels
+     * @param cx         principal point x, in pixels (pixel-centre-at-integer convention)
+     * @param cy         principal point y, in pixels
+     * @param distortion the lens, {@link LensDistortion#NONE} for none; not null
+     * @throws IllegalArgumentException when the image size is not positive, a focal length is not
+     *                                  positive and finite, the principal point is not finite, or
+     *                                  {@code distortion} is null
+     */
     public CameraIntrinsics {
         if (width <= 0 || height <= 0) {
             throw new IllegalArgumentException("image size must be positive: " + width + "x" + height);
@@ -37,22 +51,50 @@ public record CameraIntrinsics(int width, int height, double fx, double fy, doub
         }
     }
 
-    /** A pinhole camera without distortion. */
+    /**
+     * A pinhole camera without distortion ({@link LensDistortion#NONE}).
+     *
+     * @param width  image width in pixels, positive
+     * @param height image height in pixels, positive
+     * @param fx     focal length along x, in pixels, positive
+     * @param fy     focal length along y, in pixels, positive
+     * @param cx     principal point x, in pixels (pixel-centre-at-integer convention)
+     * @param cy     principal point y, in pixels
+     * @throws IllegalArgumentException as the canonical constructor
+     */
     public CameraIntrinsics(int width, int height, double fx, double fy, double cx, double cy) {
         this(width, height, fx, fy, cx, cy, LensDistortion.NONE);
     }
 
-    /** The same pinhole with {@code d} as its lens. */
+    /**
+     * The same pinhole with {@code d} as its lens.
+     *
+     * @param d the lens' distortion, in normalised coordinates; {@link LensDistortion#NONE} for none
+     * @return new intrinsics with this size, focal lengths and principal point
+     * @throws IllegalArgumentException when {@code d} is null
+     */
     public CameraIntrinsics withDistortion(LensDistortion d) {
         return new CameraIntrinsics(width, height, fx, fy, cx, cy, d);
     }
 
-    /** Whether the image is distorted (the lens has a term that is not zero). */
+    /**
+     * Whether the image is distorted (the lens has a term that is not zero).
+     *
+     * @return false for {@link LensDistortion#NONE}, true otherwise
+     */
     public boolean isDistorted() {
         return !distortion.isNone();
     }
 
-    /** The pixel where the camera-frame point (x, y, z), z > 0, appears, into {@code out[0..1]}. */
+    /**
+     * The pixel where the camera-frame point (x, y, z), z > 0, appears, into {@code out[0..1]}.
+     *
+     * @param x   camera-frame x (right), in any unit: only x / z counts
+     * @param y   camera-frame y (down), in the unit of {@code x}
+     * @param z   camera-frame z (forward, depth), in the unit of {@code x}; must be positive (not checked)
+     * @param out receives the pixel (u, v) in {@code out[0]} and {@code out[1]} (distorted, as the
+     *            image shows it); at least 2 long, other elements untouched
+     */
     public void toPixel(double x, double y, double z, double[] out) {
         distortion.distort(x / z, y / z, out);
         out[0] = fx * out[0] + cx;
@@ -62,6 +104,12 @@ public record CameraIntrinsics(int width, int height, double fx, double fy, doub
     /**
      * The ideal normalised coordinates (x / z, y / z) of what appears at pixel (u, v), into
      * {@code out[0..1]}; false where the lens model cannot be inverted ({@link LensDistortion#undistort}).
+     *
+     * @param u   pixel x, in pixels (pixel-centre-at-integer convention)
+     * @param v   pixel y, in pixels
+     * @param out receives (x / z, y / z) in {@code out[0]} and {@code out[1]}: the ray through the
+     *            pixel, undistorted; at least 2 long; unspecified when this returns false
+     * @return true when {@code out} holds the point, false where the lens cannot be inverted
      */
     public boolean toNormalized(double u, double v, double[] out) {
         return distortion.undistort((u - cx) / fx, (v - cy) / fy, out);
@@ -71,6 +119,14 @@ public record CameraIntrinsics(int width, int height, double fx, double fy, doub
      * Intrinsics estimated from a horizontal field of view: square pixels, principal point at the
      * image centre. Good enough for a phone whose calibration is unknown; poses then carry the
      * error of the field-of-view guess mostly in depth.
+     *
+     * @param width                image width in pixels, positive
+     * @param height               image height in pixels, positive
+     * @param horizontalFovDegrees the angle the image's width spans, in degrees, in (1, 179)
+     * @return intrinsics with fx = fy, the principal point at ((width - 1) / 2, (height - 1) / 2)
+     *         and no distortion
+     * @throws IllegalArgumentException when the field of view is outside (1, 179) degrees (or NaN),
+     *                                  or the image size is not positive
      */
     public static CameraIntrinsics fromHorizontalFov(int width, int height, double horizontalFovDegrees) {
         if (!(horizontalFovDegrees > 1 && horizontalFovDegrees < 179)) {
@@ -81,7 +137,16 @@ public record CameraIntrinsics(int width, int height, double fx, double fy, doub
         return new CameraIntrinsics(width, height, f, f, (width - 1) / 2.0, (height - 1) / 2.0);
     }
 
-    /** The same camera at another resolution (a preview stream scaled from the sensor's). */
+    /**
+     * The same camera at another resolution (a preview stream scaled from the sensor's).
+     *
+     * @param newWidth  the new image width in pixels, positive; scales fx and cx
+     * @param newHeight the new image height in pixels, positive; scales fy and cy (an aspect other
+     *                  than this one's stretches the image, with fx and fy scaled apart)
+     * @return new intrinsics mapping pixel edges to pixel edges, with the same lens distortion
+     *         (which is in normalised coordinates and so holds at any resolution)
+     * @throws IllegalArgumentException when the new size is not positive
+     */
     public CameraIntrinsics scaledTo(int newWidth, int newHeight) {
         double sx = (double) newWidth / width;
         double sy = (double) newHeight / height;
@@ -90,7 +155,12 @@ public record CameraIntrinsics(int width, int height, double fx, double fy, doub
                 (cx + 0.5) * sx - 0.5, (cy + 0.5) * sy - 0.5, distortion);
     }
 
-    /** Horizontal field of view in degrees. */
+    /**
+     * Horizontal field of view in degrees.
+     *
+     * @return the angle {@code 2 atan(width / (2 fx))}, in degrees, from the pinhole alone (as if
+     *         the principal point were centred, lens distortion ignored)
+     */
     public double horizontalFovDegrees() {
         return Math.toDegrees(2 * Math.atan(0.5 * width / fx));
     }

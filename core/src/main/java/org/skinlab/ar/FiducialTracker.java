@@ -12,6 +12,7 @@ import boofcv.factory.distort.LensDistortionFactory;
 import boofcv.struct.image.GrayU8;
 import georegression.struct.se.Se3_F64;
 import georegression.struct.shapes.Quadrilateral_F64;
+import org.skinlab.internal.ar.BoofCameras;
 
 /**
  * Finds square fiducials (BoofCV's {@code squareHamming} detector: ArUco and AprilTag codes) in
@@ -87,6 +88,15 @@ public final class FiducialTracker {
     private boolean lastFromRegion;
     private int framesSinceFullSearch;
 
+    /**
+     * A tracker for one camera; every image it is given must have the camera's size.
+     *
+     * @param config     what to look for: dictionary, printed size (the poses' scale), target id, bit-error limit and
+     *                   whether {@link #track} searches near the last markers first
+     * @param intrinsics the camera that takes the images, in the pixel convention of {@link CameraIntrinsics}; with
+     *                   a distorted lens the corners are reported where they appear in the image, and the poses
+     *                   account for the lens
+     */
     public FiducialTracker(TrackerConfig config, CameraIntrinsics intrinsics) {
         this.config = config;
         this.intrinsics = intrinsics;
@@ -119,15 +129,35 @@ public final class FiducialTracker {
         BoofConcurrency.USE_CONCURRENT = false;
     }
 
+    /**
+     * What this tracker looks for.
+     *
+     * @return the config it was made with
+     */
     public TrackerConfig config() {
         return config;
     }
 
+    /**
+     * The camera whose images this tracker reads.
+     *
+     * @return the intrinsics it was made with; images must be {@code width x height} of these
+     */
     public CameraIntrinsics intrinsics() {
         return intrinsics;
     }
 
-    /** Every marker in the whole image (of the target id, if the config names one). */
+    /**
+     * Every marker in the whole image (of the target id, if the config names one).
+     *
+     * <p>Also remembers them as the last frame's markers for the next {@link #track}.
+     *
+     * @param image a camera image of the intrinsics' width and height; read during this call only (wrapped, not
+     *              copied)
+     * @return a new, modifiable list of the markers found, possibly empty, in no particular order; an id may occur
+     *         more than once when several copies of one marker are in view
+     * @throws IllegalArgumentException when the image's size is not the camera's
+     */
     public List<MarkerDetection> detect(GrayImage image) {
         wrap(image);
         List<MarkerDetection> found = new ArrayList<>(2);
@@ -145,6 +175,12 @@ public final class FiducialTracker {
      * regions are merged); the whole frame is searched instead when a marker of the last frame is
      * not found again, when the regions would cover more than half the frame, and every
      * {@link #FULL_FRAME_EVERY}th frame (markers coming into view).
+     *
+     * @param image the next video frame, of the intrinsics' width and height; read during this call only (wrapped,
+     *              not copied)
+     * @return a new, modifiable list of the markers found, possibly empty, in no particular order (as
+     *         {@link #detect})
+     * @throws IllegalArgumentException when the image's size is not the camera's
      */
     public List<MarkerDetection> track(GrayImage image) {
         if (!config.searchNearLastPose() || lastCount == 0 || framesSinceFullSearch + 1 >= FULL_FRAME_EVERY) {
@@ -275,6 +311,9 @@ public final class FiducialTracker {
     /**
      * Whether the last call found its markers in the region around the previous frame's, without a
      * whole-frame search ({@link #track}'s fast path; the benchmark reports how often).
+     *
+     * @return true when the last {@link #track} searched only the regions, false after a whole-frame search
+     *         (any {@link #detect}) or before the first call
      */
     public boolean lastFoundInRegion() {
         return lastFromRegion;

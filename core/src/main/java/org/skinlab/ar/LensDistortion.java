@@ -25,6 +25,16 @@ public record LensDistortion(double k1, double k2, double k3, double p1, double 
     private static final int MAX_ITERATIONS = 30;
     private static final double TOLERANCE = 1e-12;
 
+    /**
+     * Checks that every term is finite.
+     *
+     * @param k1 radial, r^2
+     * @param k2 radial, r^4
+     * @param k3 radial, r^6
+     * @param p1 tangential (decentring), OpenCV's p1, BoofCV's t1
+     * @param p2 tangential, OpenCV's p2, BoofCV's t2
+     * @throws IllegalArgumentException when a term is NaN or infinite
+     */
     public LensDistortion {
         if (!Double.isFinite(k1) || !Double.isFinite(k2) || !Double.isFinite(k3) || !Double.isFinite(p1)
                 || !Double.isFinite(p2)) {
@@ -33,12 +43,23 @@ public record LensDistortion(double k1, double k2, double k3, double p1, double 
         }
     }
 
-    /** Whether every term is zero (an ideal pinhole: nothing to undo). */
+    /**
+     * Whether every term is zero (an ideal pinhole: nothing to undo).
+     *
+     * @return true when k1, k2, k3, p1 and p2 are all zero
+     */
     public boolean isNone() {
         return k1 == 0 && k2 == 0 && k3 == 0 && p1 == 0 && p2 == 0;
     }
 
-    /** Where the ideal normalised point (x, y) appears: (x_d, y_d) into {@code out[0..1]}. */
+    /**
+     * Where the ideal normalised point (x, y) appears: (x_d, y_d) into {@code out[0..1]}.
+     *
+     * @param x   the ideal point's normalised x, {@code X / Z}
+     * @param y   the ideal point's normalised y, {@code Y / Z} (camera y down)
+     * @param out receives x_d in {@code out[0]} and y_d in {@code out[1]}, also normalised (multiply by the focal
+     *            length and add the principal point for pixels); at least 2 long, other entries untouched
+     */
     public void distort(double x, double y, double[] out) {
         double x2 = x * x;
         double y2 = y * y;
@@ -52,6 +73,13 @@ public record LensDistortion(double k1, double k2, double k3, double p1, double 
      * The ideal normalised point that appears at (xd, yd), into {@code out[0..1]}; false when the
      * model cannot be inverted there (the point lies beyond where the lens model folds back, far
      * outside any real image), leaving {@code out} unspecified.
+     *
+     * @param xd  the distorted (observed) normalised x, {@code (u - cx) / fx} for pixel column u
+     * @param yd  the distorted normalised y, {@code (v - cy) / fy} for pixel row v
+     * @param out receives the ideal x in {@code out[0]} and y in {@code out[1]}; at least 2 long, other entries
+     *            untouched
+     * @return true when the inverse converged onto the lens model's true branch, false when it did not (then
+     *         {@code out} holds no meaningful point)
      */
     public boolean undistort(double xd, double yd, double[] out) {
         if (isNone()) {

@@ -22,6 +22,8 @@ public final class LensGlsl {
      * {@code shader} with its {@link #INCLUDE} line (alone on its line) replaced by the formulas; a
      * shader without that line comes back unchanged.
      *
+     * @param shader a fragment shader's GLSL source, possibly with the {@link #INCLUDE} line
+     * @return the expanded source, or {@code shader} itself when it has no such line
      * @throws IllegalStateException when the line occurs twice, or the resource cannot be read
      */
     public static String expand(String shader) {
@@ -31,6 +33,10 @@ public final class LensGlsl {
     /**
      * The arguments of {@code lensSourceCoord} for camera {@code k}, into {@code out[0..10]}: size
      * (w, h), pinhole (fx, fy, cx, cy), radial (k1, k2, k3), tangential (p1, p2).
+     *
+     * @param k   the camera whose image the background shows (its size in pixels, pinhole and lens)
+     * @param out at least 11 floats; entries 0..10 are overwritten, the rest untouched
+     * @return {@code out}, for chaining
      */
     public static float[] uniforms(CameraIntrinsics k, float[] out) {
         LensDistortion d = k.distortion();
@@ -48,7 +54,12 @@ public final class LensGlsl {
         return out;
     }
 
-    /** The formulas' text, read from the resource on each call (once per program a renderer builds). */
+    /**
+     * The formulas' text, read from the resource on each call (once per program a renderer builds).
+     *
+     * @return the GLSL text of {@code lens.glsl} that {@link #expand} puts in place of the {@link #INCLUDE} line
+     * @throws IllegalStateException when the resource cannot be read
+     */
     public static String formulas() {
         return FILE.text();
     }

@@ -32,7 +32,14 @@ public final class MarkerPattern {
         this.black = black;
     }
 
-    /** The pattern of code {@code id} of {@code dictionary}. */
+    /**
+     * The pattern of code {@code id} of {@code dictionary}.
+     *
+     * @param dictionary the dictionary the code belongs to
+     * @param id         the code's id, 0 to {@code dictionary.codeCount() - 1}
+     * @return a new pattern whose cells are read from BoofCV's marker generator
+     * @throws IllegalArgumentException when {@code id} is not in the dictionary
+     */
     public static MarkerPattern of(MarkerDictionary dictionary, int id) {
         ConfigHammingMarker config = dictionary.config();
         if (id < 0 || id >= config.encoding.size()) {
@@ -59,20 +66,41 @@ public final class MarkerPattern {
         return new MarkerPattern(dictionary, id, cells, black);
     }
 
+    /**
+     * The dictionary whose code this is.
+     *
+     * @return the dictionary given to {@link #of}
+     */
     public MarkerDictionary dictionary() {
         return dictionary;
     }
 
+    /**
+     * The code's id in its dictionary.
+     *
+     * @return the id given to {@link #of}, 0 to {@code dictionary().codeCount() - 1}
+     */
     public int id() {
         return id;
     }
 
-    /** Cells per side of the black square, border included (8 for 36h12). */
+    /**
+     * Cells per side of the black square, border included (8 for 36h12).
+     *
+     * @return the dictionary's {@link MarkerDictionary#gridWidth()} plus 2
+     */
     public int cells() {
         return cells;
     }
 
-    /** Whether the cell at {@code row} (0 = the printed marker's top) and {@code col} (0 = left) is black. */
+    /**
+     * Whether the cell at {@code row} (0 = the printed marker's top) and {@code col} (0 = left) is black.
+     *
+     * @param row the cell's row, 0 to {@link #cells()} - 1, counted down from the top edge
+     * @param col the cell's column, 0 to {@link #cells()} - 1, counted from the left edge
+     * @return true for a black cell (always for the border ring), false for a white one
+     * @throws IndexOutOfBoundsException when the cell is outside the grid
+     */
     public boolean isBlack(int row, int col) {
         if (row < 0 || row >= cells || col < 0 || col >= cells) {
             throw new IndexOutOfBoundsException("cell (" + row + ", " + col + ") outside " + cells + "x" + cells);
@@ -83,6 +111,11 @@ public final class MarkerPattern {
     /**
      * Whether the point (u, v) of the black square, both in [0, 1) from its top-left corner (u to
      * the right, v down), is black; outside the square: false (white paper).
+     *
+     * @param u the horizontal position as a fraction of the square's width, 0 at its left edge
+     * @param v the vertical position as a fraction of the square's height, 0 at its top edge
+     * @return true when the cell containing (u, v) is black, false when it is white or (u, v) lies outside
+     *         [0, 1) x [0, 1) (NaN included)
      */
     public boolean isBlackAt(double u, double v) {
         if (!(u >= 0 && u < 1 && v >= 0 && v < 1)) {

@@ -1,7 +1,7 @@
 package org.skinlab.ar;
 
 import org.joml.Matrix4f;
-import org.skinlab.scene.ModelFraming;
+import org.skinlab.internal.scene.ModelFraming;
 
 /**
  * The thesis' scene graph on the marker: marker -> scale -> transform -> mesh. The mesh stands as
@@ -18,6 +18,13 @@ public final class MarkerScene {
     private final double markerSizeMetres;
     private final double heightOverMarker;
 
+    /**
+     * A scene for a marker of the given size with the model scaled to a multiple of it.
+     *
+     * @param markerSizeMetres the printed black square's width in metres, positive (as in {@link TrackerConfig})
+     * @param heightOverMarker the model's height as a multiple of the marker's width, positive
+     * @throws IllegalArgumentException when either is not positive (or NaN)
+     */
     public MarkerScene(double markerSizeMetres, double heightOverMarker) {
         if (!(markerSizeMetres > 0) || !(heightOverMarker > 0)) {
             throw new IllegalArgumentException("marker size and model height must be positive: " + markerSizeMetres
@@ -27,15 +34,30 @@ public final class MarkerScene {
         this.heightOverMarker = heightOverMarker;
     }
 
+    /**
+     * A scene with the model {@link #DEFAULT_HEIGHT_OVER_MARKER} times as tall as the marker is wide.
+     *
+     * @param markerSizeMetres the printed black square's width in metres, positive
+     * @throws IllegalArgumentException when it is not positive (or NaN)
+     */
     public MarkerScene(double markerSizeMetres) {
         this(markerSizeMetres, DEFAULT_HEIGHT_OVER_MARKER);
     }
 
+    /**
+     * The printed black square's width.
+     *
+     * @return the marker's width in metres
+     */
     public double markerSizeMetres() {
         return markerSizeMetres;
     }
 
-    /** The model's height on the marker, in metres. */
+    /**
+     * The model's height on the marker, in metres.
+     *
+     * @return the marker's width times the height over marker
+     */
     public double modelHeightMetres() {
         return heightOverMarker * markerSizeMetres;
     }
@@ -43,6 +65,13 @@ public final class MarkerScene {
     /**
      * Document coordinates to the marker frame: {@code Rz(yaw) S Rx(90 degrees) upright}, S the uniform
      * scale that gives the framed model {@link #modelHeightMetres()}.
+     *
+     * @param framing    how the model stands upright in Y-up metres; its {@code height} (at least
+     *                   {@code ModelFraming.MIN_RADIUS}) is scaled to {@link #modelHeightMetres()}
+     * @param yawRadians the turn about the marker's normal (+z), counter-clockwise seen from above; 0 faces the
+     *                   model toward the marker's bottom edge
+     * @param dest       receives the matrix (overwritten)
+     * @return {@code dest}: from the model file's coordinates to marker coordinates in metres
      */
     public Matrix4f modelToMarker(ModelFraming framing, double yawRadians, Matrix4f dest) {
         float scale = (float) (modelHeightMetres() / Math.max(framing.height(), ModelFraming.MIN_RADIUS));
@@ -55,6 +84,13 @@ public final class MarkerScene {
      * and {@link #modelToMarker} into {@code model}, turned toward the camera by {@code follow}
      * (which keeps its last yaw when the camera is overhead) when {@code followCamera} is on. The
      * mesh's model-view is {@code markerView * model}.
+     *
+     * @param pose         the frame's published pose; only its rotation and translation are read
+     * @param follow       the presenter's follow state, updated when {@code followCamera} is on, untouched otherwise
+     * @param followCamera whether the model turns toward the camera; off, its yaw is 0
+     * @param framing      how the model stands upright in Y-up metres ({@link #modelToMarker})
+     * @param markerView   receives the marker's OpenGL model-view (overwritten)
+     * @param model        receives the model-to-marker matrix (overwritten)
      */
     public void place(ArPose pose, CameraFollow follow, boolean followCamera, ModelFraming framing, Matrix4f markerView,
             Matrix4f model) {

@@ -1,6 +1,7 @@
 package org.skinlab.ar;
 
 import java.util.List;
+import org.skinlab.internal.ar.PoseMath;
 
 /**
  * One marker followed over the frames of a video: which detection is the marker, its filtered pose
@@ -48,6 +49,7 @@ public final class MarkerTracking {
     /**
      * @param targetId  the marker's id, or -1 for the nearest marker of any id
      * @param holdNanos how long a lost marker's pose is held
+     * @throws IllegalArgumentException when {@code holdNanos} is negative
      */
     public MarkerTracking(int targetId, long holdNanos) {
         if (holdNanos < 0) {
@@ -62,11 +64,25 @@ public final class MarkerTracking {
         this(-1, DEFAULT_HOLD_NANOS);
     }
 
+    /**
+     * How long the last pose is held (state HOLDING) after the marker disappears, before LOST.
+     *
+     * @return the hold time in nanoseconds, 0 or more
+     */
     public long holdNanos() {
         return holdNanos;
     }
 
-    /** One frame's detections (possibly none), taken at {@code timeNanos}; returns the new state. */
+    /**
+     * One frame's detections (possibly none), taken at {@code timeNanos}; returns the new state.
+     *
+     * @param timeNanos  the frame's timestamp in nanoseconds, on one monotonic clock for all frames (the hold time
+     *                   and the filter measure differences of it)
+     * @param detections what the detector found in the frame, of any id, in any order; may be empty, not null; read,
+     *                   not kept
+     * @return the state after this frame: TRACKING when the followed marker is among the detections, else
+     *         HOLDING or LOST after TRACKING (by the hold time), else unchanged (SEARCHING or LOST)
+     */
     public TrackingState update(long timeNanos, List<MarkerDetection> detections) {
         MarkerDetection d = pick(detections);
         if (d == null) {
@@ -110,22 +126,42 @@ public final class MarkerTracking {
         return state;
     }
 
+    /**
+     * The state after the last {@link #update}.
+     *
+     * @return the current state; SEARCHING before the first detection and after {@link #reset()}
+     */
     public TrackingState state() {
         return state;
     }
 
-    /** The id of the marker the model is on while it is shown (TRACKING, HOLDING), else -1. */
+    /**
+     * The id of the marker the model is on while it is shown (TRACKING, HOLDING), else -1.
+     *
+     * @return the followed marker's id, or -1 while the model is not shown
+     */
     public int followedId() {
         return state.showsModel() ? followedId : -1;
     }
 
-    /** The filtered rotation (row-major) into {@code dest}; meaningful while {@link TrackingState#showsModel()}. */
+    /**
+     * The filtered rotation (row-major) into {@code dest}; meaningful while {@link TrackingState#showsModel()}.
+     *
+     * @param dest at least 9 doubles; entries 0..8 receive R ({@code X_cam = R X_marker + t}), the rest untouched
+     * @return {@code dest}
+     */
     public double[] rotation(double[] dest) {
         System.arraycopy(rotation, 0, dest, 0, 9);
         return dest;
     }
 
-    /** The filtered translation into {@code dest}. */
+    /**
+     * The filtered translation into {@code dest}.
+     *
+     * @param dest at least 3 doubles; entries 0..2 receive t in metres, the rest untouched; meaningful while
+     *             {@link TrackingState#showsModel()}
+     * @return {@code dest}
+     */
     public double[] translation(double[] dest) {
         System.arraycopy(translation, 0, dest, 0, 3);
         return dest;

@@ -13,7 +13,7 @@ package org.skinlab.ar;
  * </pre>
  * The first sample passes through. Not thread-safe; allocation-free.
  */
-public final class OneEuroFilter {
+final class OneEuroFilter {
     private final double minCutoff;
     private final double beta;
     private final double dCutoff;

@@ -18,7 +18,7 @@ import org.joml.Quaterniond;
  * rises to 7 Hz: the lag of a first-order filter, {@code 1 / (2 pi fc)}, falls from 159 ms at rest
  * to 23 ms. Not thread-safe; allocation-free per update.
  */
-public final class PoseFilter {
+final class PoseFilter {
     private final OneEuroFilter x;
     private final OneEuroFilter y;
     private final OneEuroFilter z;

@@ -40,6 +40,19 @@ public record TrackerConfig(MarkerDictionary dictionary, double markerSizeMetres
      */
     public static final int MAX_UNCERTAIN_BITS = 9;
 
+    /**
+     * Checks every component.
+     *
+     * @param dictionary         the marker's code dictionary, not null
+     * @param markerSizeMetres   the printed black square's width in metres, positive and finite
+     * @param targetId           the marker id to report, 0 to {@code dictionary.codeCount() - 1}, or -1 for every code
+     * @param maxBitErrors       the most a square's wrong bits' confidences may sum to, 0 to
+     *                           {@code (minimumHamming - 1) / 2} of the dictionary
+     * @param searchNearLastPose whether {@link FiducialTracker#track} first searches around the last frame's markers
+     * @throws IllegalArgumentException when {@code dictionary} is null, {@code markerSizeMetres} is not positive and
+     *                                  finite, {@code targetId} is neither -1 nor one of the dictionary's ids, or
+     *                                  {@code maxBitErrors} is outside 0 to {@code (minimumHamming - 1) / 2}
+     */
     public TrackerConfig {
         if (dictionary == null) {
             throw new IllegalArgumentException("no marker dictionary");
@@ -58,25 +71,63 @@ public record TrackerConfig(MarkerDictionary dictionary, double markerSizeMetres
         }
     }
 
-    /** The default dictionary, any id, {@link #DEFAULT_MAX_BIT_ERRORS} (or fewer if the dictionary needs), video search on. */
+    /**
+     * The default dictionary, any id, {@link #DEFAULT_MAX_BIT_ERRORS} (or fewer if the dictionary needs), video
+     * search on.
+     *
+     * @param markerSizeMetres the printed black square's width in metres, positive
+     * @return a config for {@link MarkerDictionary#DEFAULT}
+     * @throws IllegalArgumentException when the size is not positive and finite
+     */
     public static TrackerConfig defaults(double markerSizeMetres) {
         return of(MarkerDictionary.DEFAULT, markerSizeMetres);
     }
 
-    /** {@code dictionary}, any id, {@link #DEFAULT_MAX_BIT_ERRORS} (or fewer if the dictionary needs), video search on. */
+    /**
+     * {@code dictionary}, any id, {@link #DEFAULT_MAX_BIT_ERRORS} (or fewer if the dictionary needs), video search
+     * on.
+     *
+     * @param dictionary       the marker's code dictionary, not null
+     * @param markerSizeMetres the printed black square's width in metres, positive
+     * @return a config with target id -1 and {@code min(DEFAULT_MAX_BIT_ERRORS, (minimumHamming - 1) / 2)} bit errors
+     * @throws IllegalArgumentException when the size is not positive and finite
+     * @throws NullPointerException     when {@code dictionary} is null
+     */
     public static TrackerConfig of(MarkerDictionary dictionary, double markerSizeMetres) {
         double errors = Math.min(DEFAULT_MAX_BIT_ERRORS, (dictionary.minimumHamming() - 1) / 2);
         return new TrackerConfig(dictionary, markerSizeMetres, -1, errors, true);
     }
 
+    /**
+     * This config reporting only marker {@code id}.
+     *
+     * @param id the marker id to report, 0 to the dictionary's {@code codeCount() - 1}, or -1 for every code
+     * @return a new config, the other components unchanged
+     * @throws IllegalArgumentException when {@code id} is neither -1 nor one of the dictionary's ids
+     */
     public TrackerConfig withTargetId(int id) {
         return new TrackerConfig(dictionary, markerSizeMetres, id, maxBitErrors, searchNearLastPose);
     }
 
+    /**
+     * This config with another limit on a square's wrong bits ({@link #maxBitErrors()}).
+     *
+     * @param errors the most the wrong bits' confidences may sum to, 0 to {@code (minimumHamming - 1) / 2} of the
+     *               dictionary
+     * @return a new config, the other components unchanged
+     * @throws IllegalArgumentException when {@code errors} is outside that range (or NaN)
+     */
     public TrackerConfig withMaxBitErrors(double errors) {
         return new TrackerConfig(dictionary, markerSizeMetres, targetId, errors, searchNearLastPose);
     }
 
+    /**
+     * This config with the video search near the last frame's markers switched on or off.
+     *
+     * @param search whether {@link FiducialTracker#track} first searches around the last frame's markers; false
+     *               makes it search the whole frame every time, like {@link FiducialTracker#detect}
+     * @return a new config, the other components unchanged
+     */
     public TrackerConfig withSearchNearLastPose(boolean search) {
         return new TrackerConfig(dictionary, markerSizeMetres, targetId, maxBitErrors, search);
     }

@@ -11,12 +11,20 @@ public enum TrackingState {
     /** The marker has been gone longer than the hold time: the model is hidden. */
     LOST;
 
-    /** Whether the model is drawn in this state. */
+    /**
+     * Whether the model is drawn in this state.
+     *
+     * @return true for {@link #TRACKING} and {@link #HOLDING}, false for {@link #SEARCHING} and {@link #LOST}
+     */
     public boolean showsModel() {
         return this == TRACKING || this == HOLDING;
     }
 
-    /** Lower-case name for status lines. */
+    /**
+     * Lower-case name for status lines.
+     *
+     * @return the constant's name in lower case (locale-independent), e.g. "tracking"
+     */
     public String label() {
         return name().toLowerCase(java.util.Locale.ROOT);
     }

@@ -8,7 +8,7 @@
  * {@code X_cam = R X_marker + t} in metres; corners TL, TR, BR, BL of the printed marker. See
  * {@code docs/ar.md}.
  *
- * <p>Depends on BoofCV's recognition module (never boofcv-io), JOML, {@code org.skinlab.scene}
+ * <p>Depends on BoofCV's recognition module (never boofcv-io), JOML, {@code org.skinlab.internal.scene}
  * (standing a model on the marker) and {@code org.skinlab.glsl} (the lens formulas for the
  * background shaders); never on a GL binding.
  */

@@ -15,16 +15,35 @@ import org.skinlab.model.ImportException;
 public final class ColladaException extends ImportException {
     private static final long serialVersionUID = 1L;
 
+    /**
+     * An exception whose message is {@code file: element: problem}, on one line.
+     *
+     * @param file the file (or stream name) being imported
+     * @param element the element the problem was found in, with its id or nearest ancestor's and its line
+     * @param problem what is wrong, without the file and element
+     */
     public ColladaException(String file, String element, String problem) {
         super(file, element, problem);
     }
 
+    /**
+     * As {@link #ColladaException(String, String, String)}, with the exception that caused it.
+     *
+     * @param file the file (or stream name) being imported
+     * @param element the element the problem was found in, with its id or nearest ancestor's and its line
+     * @param problem what is wrong, without the file and element
+     * @param cause the underlying exception (an XML parser's, say), or null
+     */
     public ColladaException(String file, String element, String problem, Throwable cause) {
         this(file, element, problem);
         initCause(cause);
     }
 
-    /** The element the problem was found in, e.g. {@code <skin> in <controller id="c1"> at line 40}. */
+    /**
+     * The element the problem was found in, e.g. {@code <skin> in <controller id="c1"> at line 40}.
+     *
+     * @return the element description, the same as {@link #location()}
+     */
     public String element() {
         return location();
     }

@@ -40,6 +40,11 @@ public final class ColladaImporter {
     /**
      * Imports a file; its name (not its path) appears in messages. Relative URLs in it (image
      * files, references to itself by file name) are resolved against its folder.
+     *
+     * @param file the {@code .dae} file to read
+     * @return the imported model, with the file's name as its {@link Model#source()}
+     * @throws IOException when the file cannot be opened or read
+     * @throws ColladaException when its content cannot be imported (see {@link ColladaException})
      */
     public static Model read(Path file) throws IOException, ColladaException {
         String name = file.getFileName() == null ? file.toString() : file.getFileName().toString();
@@ -54,7 +59,11 @@ public final class ColladaImporter {
      * location (a path, possibly relative) for its relative URLs; see
      * {@link #read(InputStream, String, Path)}.
      *
+     * @param in   the document's bytes, not closed
      * @param name the name used in messages and {@link Model#source()}
+     * @return the imported model
+     * @throws IOException when reading the stream fails
+     * @throws ColladaException when the document cannot be imported (see {@link ColladaException})
      */
     public static Model read(InputStream in, String name) throws IOException, ColladaException {
         return read(in, name, DocumentLocation.fromName(name));
@@ -65,8 +74,12 @@ public final class ColladaImporter {
      * files, references to the document itself by file name) are resolved against that path's
      * folder. The importer never opens any file there.
      *
+     * @param in       the document's bytes, not closed
      * @param name     the name used in messages and {@link Model#source()}
      * @param location the document's path (absolute or relative), or null when unknown
+     * @return the imported model
+     * @throws IOException      when reading the stream fails
+     * @throws ColladaException when the document cannot be imported (see {@link ColladaException})
      */
     public static Model read(InputStream in, String name, Path location) throws IOException, ColladaException {
         XmlElement root = SafeXmlReader.read(in, name);

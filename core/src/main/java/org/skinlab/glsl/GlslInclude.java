@@ -49,6 +49,9 @@ public final class GlslInclude {
      * that a shader and Java code (a legend, a test) read the same numbers from one place.
      *
      * @param name the name the include line quotes, e.g. {@code colour-ramp.glsl}
+     * @param text the GLSL that replaces the include line, returned as is by {@link #text()}
+     * @return a new include that never reads a resource
+     * @throws IllegalArgumentException when {@code name} is empty or contains a slash or a double quote
      */
     public static GlslInclude generated(String name, String text) {
         if (name.isEmpty() || name.contains("/") || name.contains("\"")) {
@@ -57,7 +60,11 @@ public final class GlslInclude {
         return new GlslInclude(null, name, name, text);
     }
 
-    /** The line of a shader that {@link #expand} replaces with the file's text. */
+    /**
+     * The line of a shader that {@link #expand} replaces with the file's text.
+     *
+     * @return {@code #include "name"}, without a line break
+     */
     public String line() {
         return line;
     }
@@ -66,6 +73,8 @@ public final class GlslInclude {
      * {@code shader} with its {@link #line} (alone on its line) replaced by the file's text; a
      * shader without that line comes back unchanged.
      *
+     * @param shader the GLSL source text
+     * @return the expanded source, or {@code shader} itself when it has no include line
      * @throws IllegalStateException when the line occurs more than once (GLSL refuses functions
      *                               defined twice; better said here), or the resource cannot be read
      */
@@ -96,6 +105,9 @@ public final class GlslInclude {
     /**
      * The file's text, read from the resource on each call (once per program a renderer builds),
      * or the generated text.
+     *
+     * @return the GLSL text, decoded as UTF-8
+     * @throws IllegalStateException when the resource is missing from the classpath or cannot be read
      */
     public String text() {
         if (generatedText != null) {

@@ -36,6 +36,11 @@ public final class GltfImporter {
     /**
      * Imports a file; its name (not its path) appears in messages. Buffers and images it names by
      * relative URI are read from its folder (never outside it).
+     *
+     * @param file the {@code .gltf} or {@code .glb} file to read
+     * @return the imported model, with the file's name as its {@link Model#source()}
+     * @throws IOException when the file cannot be opened or read
+     * @throws GltfException when its content, or a buffer or image it needs, cannot be imported
      */
     public static Model read(Path file) throws IOException, GltfException {
         String name = file.getFileName() == null ? file.toString() : file.getFileName().toString();
@@ -47,9 +52,13 @@ public final class GltfImporter {
     /**
      * Imports from a stream (the caller closes it).
      *
+     * @param in       the document's bytes ({@code .gltf} JSON or {@code .glb}), not closed
      * @param name     the name used in messages and {@link Model#source()}
      * @param location the document's path, against whose folder relative URIs are resolved, or
      *                 null: then a URI naming a file is refused
+     * @return the imported model
+     * @throws IOException   when reading the stream fails
+     * @throws GltfException when the document, or a buffer or image it needs, cannot be imported
      */
     public static Model read(InputStream in, String name, Path location) throws IOException, GltfException {
         GltfContext ctx = new GltfContext(name);

@@ -24,13 +24,26 @@ public final class ModelImporter {
     private ModelImporter() {
     }
 
-    /** True for a name ending in .dae, .gltf or .glb (any case): the files this class reads. */
+    /**
+     * True for a name ending in .dae, .gltf or .glb (any case): the files this class reads.
+     *
+     * @param name a file name or path; only its ending is looked at, the file is not opened
+     * @return whether the name has one of the three extensions
+     */
     public static boolean isModelFile(String name) {
         String n = name.toLowerCase(Locale.ROOT);
         return n.endsWith(".dae") || n.endsWith(".gltf") || n.endsWith(".glb");
     }
 
-    /** Imports a file; its external files (glTF buffers, images) are found in its folder. */
+    /**
+     * Imports a file; its external files (glTF buffers, images) are found in its folder.
+     *
+     * @param file the model file, COLLADA or glTF (told apart by content, see the class comment)
+     * @return the imported model, with the file's name as its {@link Model#source()}
+     * @throws IOException when the file cannot be opened or read
+     * @throws ImportException when its content cannot be imported: a
+     *     {@link org.skinlab.collada.ColladaException} or a {@link org.skinlab.gltf.GltfException}
+     */
     public static Model read(Path file) throws IOException, ImportException {
         String name = file.getFileName() == null ? file.toString() : file.getFileName().toString();
         try (InputStream in = new BufferedInputStream(Files.newInputStream(file), 1 << 16)) {
@@ -41,10 +54,15 @@ public final class ModelImporter {
     /**
      * Imports from a stream (the caller closes it).
      *
+     * @param in       the document's bytes, not closed; wrapped in a buffer when it does not support mark
      * @param name     the name used in messages and {@link Model#source()}
      * @param location the document's path for relative URIs, or null: then a glTF URI naming a
      *                 file is refused, and COLLADA takes the name as its location, as
      *                 {@link ColladaImporter#read(InputStream, String)} does (it never opens files)
+     * @return the imported model
+     * @throws IOException     when reading the stream fails
+     * @throws ImportException when the document cannot be imported: a
+     *                         {@link org.skinlab.collada.ColladaException} or a {@link org.skinlab.gltf.GltfException}
      */
     public static Model read(InputStream in, String name, Path location) throws IOException, ImportException {
         InputStream buffered = in.markSupported() ? in : new BufferedInputStream(in, 1 << 16);

@@ -13,10 +13,16 @@ package org.skinlab.model;
  * @param node           index into {@link Model#nodes()}
  * @param transformIndex index into that node's {@link Node#transforms()}
  * @param valueOffset    first value of the element this channel drives
+ * @param track          the keys; each key's {@link KeyframeTrack#width()} values go to the element's
+ *                       values from {@code valueOffset} on
  * @param target         the {@code target} attribute as written, for messages
  */
 public record AnimationChannel(int node, int transformIndex, int valueOffset, KeyframeTrack track, String target) {
-    /** Number of values the channel drives (the track's width). */
+    /**
+     * Number of values the channel drives (the track's width).
+     *
+     * @return the number of consecutive element values driven, at least 1
+     */
     public int valueCount() {
         return track.width();
     }

@@ -20,6 +20,9 @@ public record AssetInfo(UpAxis upAxis, double unitMeter, String unitName, String
      * (right, up, in): Y_UP (+X, +Y, +Z), Z_UP (+X, +Z, -Y), X_UP (-Y, +X, +Z); the result maps
      * them to (+X, +Y, +Z) and scales by {@link #unitMeter()}. Z_UP is a -90 degree rotation about
      * X, X_UP a +90 degree rotation about Z.
+     *
+     * @param dest the matrix to overwrite
+     * @return {@code dest}, mapping points in document units and axes to Y-up metres
      */
     public Matrix4f toYUpMeters(Matrix4f dest) {
         dest.identity();

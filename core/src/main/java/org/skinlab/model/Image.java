@@ -20,22 +20,47 @@ import java.util.Objects;
  *                 in and out
  */
 public record Image(String id, String name, String uri, Path file, String mimeType, byte[] bytes) {
+    /**
+     * An image; {@code bytes} is copied. The components are described in the class comment.
+     *
+     * @param id       the image's id
+     * @param name     its name attribute, or null
+     * @param uri      the URI as written, or null
+     * @param file     the resolved file, or null
+     * @param mimeType the media type, or null
+     * @param bytes    the embedded picture, or null
+     */
     public Image {
         bytes = bytes == null ? null : bytes.clone();
     }
 
-    /** An image in a file (or at a URI that is none), with nothing embedded. */
+    /**
+     * An image in a file (or at a URI that is none), with nothing embedded.
+     *
+     * @param id   the image's id
+     * @param name its name attribute, or null
+     * @param uri  the URI as written, or null
+     * @param file the file the URI names, resolved and normalised, or null when the URI is not a file
+     */
     public Image(String id, String name, String uri, Path file) {
         this(id, name, uri, file, null, null);
     }
 
-    /** A copy of the embedded picture, or null. */
+    /**
+     * A copy of the embedded picture, or null.
+     *
+     * @return a new array of the encoded bytes (PNG, JPEG) the caller may change, or null when not embedded
+     */
     @Override
     public byte[] bytes() {
         return bytes == null ? null : bytes.clone();
     }
 
-    /** True when the picture is embedded in the document ({@link #bytes()} is not null). */
+    /**
+     * True when the picture is embedded in the document ({@link #bytes()} is not null).
+     *
+     * @return whether a renderer loads {@link #bytes()} rather than {@link #file()}
+     */
     public boolean isEmbedded() {
         return bytes != null;
     }

@@ -14,10 +14,21 @@ import java.util.Locale;
 public class ImportException extends Exception {
     private static final long serialVersionUID = 1L;
 
+    /** The file (or stream name) being imported, as given. */
     private final String file;
+    /** Where in the file, on one line. */
     private final String location;
+    /** What is wrong, on one line. */
     private final String problem;
 
+    /**
+     * An exception with the message {@code file: location: problem}, line breaks and other control
+     * characters in the location and problem written as Java escapes so that the message is one line.
+     *
+     * @param file     the file (or stream name) being imported, e.g. {@code cube.dae}
+     * @param location where in the file: an XML element with its line, or a JSON path; not null
+     * @param problem  what is wrong, without the file and location; not null
+     */
     public ImportException(String file, String location, String problem) {
         super(file + ": " + oneLine(location) + ": " + oneLine(problem));
         this.file = file;
@@ -25,6 +36,14 @@ public class ImportException extends Exception {
         this.problem = oneLine(problem);
     }
 
+    /**
+     * As {@link #ImportException(String, String, String)}, with the exception that led to this one.
+     *
+     * @param file     the file (or stream name) being imported, e.g. {@code cube.dae}
+     * @param location where in the file: an XML element with its line, or a JSON path; not null
+     * @param problem  what is wrong, without the file and location; not null
+     * @param cause    the underlying exception (e.g. the XML or JSON parser's, or an I/O error), or null
+     */
     public ImportException(String file, String location, String problem, Throwable cause) {
         this(file, location, problem);
         initCause(cause);
@@ -60,17 +79,29 @@ public class ImportException extends Exception {
         return sb == null ? text : sb.toString();
     }
 
-    /** The file (or stream name) being imported. */
+    /**
+     * The file (or stream name) being imported.
+     *
+     * @return the file name as given to the constructor
+     */
     public String file() {
         return file;
     }
 
-    /** Where in the file: an element with its line, or a JSON path. */
+    /**
+     * Where in the file: an element with its line, or a JSON path.
+     *
+     * @return the location, on one line (control characters escaped)
+     */
     public String location() {
         return location;
     }
 
-    /** What is wrong, without the file and location. */
+    /**
+     * What is wrong, without the file and location.
+     *
+     * @return the problem, on one line (control characters escaped)
+     */
     public String problem() {
         return problem;
     }

@@ -5,5 +5,12 @@ package org.skinlab.model;
  * and BSPLINE are imported as {@link #LINEAR} with a warning.
  */
 public enum Interpolation {
-    LINEAR, STEP, BEZIER, HERMITE
+    /** The value blends linearly to the next key's (rotations as {@code RotationInterpolation} says). */
+    LINEAR,
+    /** The value holds the key's until the next key. */
+    STEP,
+    /** A cubic Bezier, the key's out- and the next key's in-tangent its inner control points; glTF's CUBICSPLINE. */
+    BEZIER,
+    /** A cubic Hermite curve, its derivatives stored as Bezier control points (see {@link KeyframeTrack}). */
+    HERMITE
 }

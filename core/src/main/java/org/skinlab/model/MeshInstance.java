@@ -26,10 +26,14 @@ public final class MeshInstance {
 
     /**
      * @param node          index of the node that holds the instance
+     * @param mesh          the mesh drawn: a geometry's mesh or a morph's result; for a skinned instance the
+     *                      skin's {@link Skin#mesh()}
      * @param skin          the skin for a controller instance, or null
      * @param jointNodes    per skin joint, the node index (empty when static)
      * @param skeletonRoots the {@code <skeleton>} root node indices, in file order
      * @param materials     the material bound to each symbol, in {@code <instance_material>} order
+     * @throws IllegalArgumentException when the skin deforms another mesh than {@code mesh}, or
+     *         {@code jointNodes} does not hold one node per skin joint
      */
     public MeshInstance(int node, Mesh mesh, Skin skin, int[] jointNodes, int[] skeletonRoots,
             List<MaterialBinding> materials) {
@@ -47,40 +51,75 @@ public final class MeshInstance {
         this.materials = List.copyOf(materials);
     }
 
-    /** Index of the node holding the instance. */
+    /**
+     * Index of the node holding the instance.
+     *
+     * @return the node's index in {@link Model#nodes()}
+     */
     public int node() {
         return node;
     }
 
+    /**
+     * The mesh drawn, before skinning: for a skinned instance, the skin's {@link Skin#mesh()}.
+     *
+     * @return the mesh: a geometry's, or a morph's result
+     */
     public Mesh mesh() {
         return mesh;
     }
 
-    /** The skin, or null for a static mesh. */
+    /**
+     * The skin, or null for a static mesh.
+     *
+     * @return the skin, or null
+     */
     public Skin skin() {
         return skin;
     }
 
+    /**
+     * Whether the instance is skinned (placed by its joints, not by its node).
+     *
+     * @return true when {@link #skin()} is not null
+     */
     public boolean isSkinned() {
         return skin != null;
     }
 
-    /** Node index of skin joint {@code j}. */
+    /**
+     * Node index of skin joint {@code j}.
+     *
+     * @param j the skin's joint index, 0 to {@link Skin#jointCount()} - 1
+     * @return the index in {@link Model#nodes()} of the node the joint resolved to
+     */
     public int jointNode(int j) {
         return jointNodes[j];
     }
 
-    /** Node indices of all skin joints (a copy). */
+    /**
+     * Node indices of all skin joints (a copy).
+     *
+     * @return a new array with, per skin joint, its index in {@link Model#nodes()}; empty for a static instance
+     */
     public int[] jointNodes() {
         return jointNodes.clone();
     }
 
-    /** The {@code <skeleton>} roots (a copy; empty when the instance names none). */
+    /**
+     * The {@code <skeleton>} roots (a copy; empty when the instance names none).
+     *
+     * @return a new array of node indices in file order (for glTF, the skin's {@code skeleton} node, if any)
+     */
     public int[] skeletonRoots() {
         return skeletonRoots.clone();
     }
 
-    /** The materials bound to the instance's symbols, in {@code <instance_material>} order. */
+    /**
+     * The materials bound to the instance's symbols, in {@code <instance_material>} order.
+     *
+     * @return an unmodifiable list, one binding per bound symbol
+     */
     public List<MaterialBinding> materials() {
         return materials;
     }
@@ -89,6 +128,10 @@ public final class MeshInstance {
      * What the triangles of a {@link MeshPart} with this material symbol are drawn with: the
      * bound material, or {@link Material#DEFAULT} (texture coordinate set -1) when the file binds
      * none to it.
+     *
+     * @param symbol a material symbol, as {@link MeshPart#material()} gives it; null (a part without one) gets
+     *               the default
+     * @return the bound material's binding, or a new binding of {@link Material#DEFAULT}; never null
      */
     public MaterialBinding material(String symbol) {
         for (MaterialBinding b : materials) {

@@ -25,7 +25,10 @@ import java.util.List;
 public final class Morph {
     /** How targets combine with the base. */
     public enum Method {
-        NORMALIZED, RELATIVE
+        /** Targets are whole shapes; the base gets weight 1 - &Sigma; w<sub>i</sub> (COLLADA's default). */
+        NORMALIZED,
+        /** Targets are offsets added to the base, which keeps weight 1 (glTF's morph targets). */
+        RELATIVE
     }
 
     private final String controllerId;
@@ -42,9 +45,15 @@ public final class Morph {
     private final float[] baseNormals;
 
     /**
-     * @param base    the mesh being morphed (a geometry's, or another morph's result)
-     * @param targets meshes with at least as many positions as the base
-     * @param weights one per target
+     * @param controllerId the controller's id, also the id of {@link #result()} (for glTF, a JSON path ending
+     *                     in {@code /weights})
+     * @param name         the controller's name, or null
+     * @param base         the mesh being morphed (a geometry's, or another morph's result)
+     * @param method       how the targets combine with the base
+     * @param targets      meshes with at least as many positions as the base
+     * @param weights      one per target
+     * @throws IllegalArgumentException when there is not one weight per target, or a target has fewer positions
+     *         than the base
      */
     public Morph(String controllerId, String name, Mesh base, Method method, List<Mesh> targets, float[] weights) {
         if (weights.length != targets.size()) {
@@ -92,39 +101,75 @@ public final class Morph {
         return true;
     }
 
-    /** Whether normals are morphed too (see the class comment); else they are the base's. */
+    /**
+     * Whether normals are morphed too (see the class comment); else they are the base's.
+     *
+     * @return true when the base and every target have normals for the same vertices
+     */
     public boolean morphsNormals() {
         return targetNormals != null;
     }
 
-    /** The controller's id: also the id of {@link #result()}. */
+    /**
+     * The controller's id: also the id of {@link #result()}.
+     *
+     * @return the id (for glTF, a JSON path ending in {@code /weights})
+     */
     public String controllerId() {
         return controllerId;
     }
 
-    /** The controller's name, or null. */
+    /**
+     * The controller's name, or null.
+     *
+     * @return the name (for glTF, the mesh's), or null when the file gives none
+     */
     public String name() {
         return name;
     }
 
+    /**
+     * The mesh being morphed.
+     *
+     * @return the base: a geometry's mesh, or another morph's result
+     */
     public Mesh base() {
         return base;
     }
 
+    /**
+     * How the targets combine with the base.
+     *
+     * @return the method
+     */
     public Method method() {
         return method;
     }
 
+    /**
+     * The target meshes, in file order, each with at least as many positions as the base.
+     *
+     * @return an unmodifiable list, one mesh per weight
+     */
     public List<Mesh> targets() {
         return targets;
     }
 
-    /** A copy of the file's weights, one per target. */
+    /**
+     * A copy of the file's weights, one per target.
+     *
+     * @return a new array, in target order
+     */
     public float[] weights() {
         return weights.clone();
     }
 
-    /** The base morphed with the file's weights. */
+    /**
+     * The base morphed with the file's weights.
+     *
+     * @return the morphed mesh, with the base's topology, colours and texture coordinates, the id
+     *         {@link #controllerId()} and the name {@link #name()}
+     */
     public Mesh result() {
         return result;
     }
@@ -133,6 +178,11 @@ public final class Morph {
      * Writes the base's positions morphed with the given weights (one per target) into
      * {@code dest} (3 floats per base position), computed in double and rounded once; allocates
      * nothing, so animated weights can be applied per frame.
+     *
+     * @param w    one weight per target, in target order
+     * @param dest receives x, y, z of each base position from index 0; entries past them are left as they are
+     * @throws IllegalArgumentException when {@code w} does not hold one weight per target, or {@code dest} is
+     *         shorter than 3 floats per base position
      */
     public void apply(float[] w, float[] dest) {
         if (w.length != targets.size() || dest.length < 3 * base.positionCount()) {
@@ -159,7 +209,12 @@ public final class Morph {
      * into {@code dest} (3 floats per base vertex); a normal that morphs to zero stays zero.
      * Allocates nothing.
      *
+     * @param w    one weight per target, in target order
+     * @param dest receives x, y, z of each base vertex's normal from index 0, unit length or zero; entries past
+     *             them are left as they are
      * @throws IllegalStateException when normals are not morphed ({@link #morphsNormals()})
+     * @throws IllegalArgumentException when {@code w} does not hold one weight per target, or {@code dest} is
+     *         shorter than 3 floats per base vertex
      */
     public void applyNormals(float[] w, float[] dest) {
         if (targetNormals == null) {

@@ -12,16 +12,31 @@ package org.skinlab.model;
  *
  * @param instance     index into {@link Model#instances()}
  * @param weightOffset first weight the channel drives
+ * @param track        the keyframe track, one value per driven weight per key
  * @param target       the channel's target as written (JSON path or COLLADA target), for messages
  */
 public record MorphWeightChannel(int instance, int weightOffset, KeyframeTrack track, String target) {
+    /**
+     * Checks that the indices are not negative; the {@link Model} constructor checks them against the model's
+     * instances and morphs.
+     *
+     * @param instance     index into {@link Model#instances()}
+     * @param weightOffset first weight the channel drives
+     * @param track        the keyframe track, one value per driven weight per key
+     * @param target       the channel's target as written (JSON path or COLLADA target), for messages
+     * @throws IllegalArgumentException when {@code instance} or {@code weightOffset} is negative
+     */
     public MorphWeightChannel {
         if (instance < 0 || weightOffset < 0) {
             throw new IllegalArgumentException("negative instance or weight offset");
         }
     }
 
-    /** Number of weights the channel drives (the track's width). */
+    /**
+     * Number of weights the channel drives (the track's width).
+     *
+     * @return the weight count, at least 1
+     */
     public int weightCount() {
         return track.width();
     }

@@ -12,13 +12,26 @@ package org.skinlab.model;
  * @param transform the texture coordinate transform, never null
  */
 public record Texture(Image image, String texcoord, TextureTransform transform) {
+    /**
+     * A texture.
+     *
+     * @param image     the image
+     * @param texcoord  the effect's texture coordinate name, or null
+     * @param transform the texture coordinate transform ({@link TextureTransform#IDENTITY} for none)
+     * @throws IllegalArgumentException when {@code transform} is null
+     */
     public Texture {
         if (transform == null) {
             throw new IllegalArgumentException("a texture's transform is never null (use IDENTITY)");
         }
     }
 
-    /** A texture without a coordinate transform. */
+    /**
+     * A texture without a coordinate transform.
+     *
+     * @param image    the image
+     * @param texcoord the effect's texture coordinate name (e.g. "UVSET0", "TEXCOORD_0"), or null
+     */
     public Texture(Image image, String texcoord) {
         this(image, texcoord, TextureTransform.IDENTITY);
     }

@@ -30,7 +30,20 @@ import org.joml.Matrix4f;
 public final class TransformElement {
     /** The kinds of transform element and how many values each holds. */
     public enum Kind {
-        MATRIX(16), TRANSLATE(3), ROTATE(4), SCALE(3), LOOKAT(9), SKEW(7), QUATERNION(4);
+        /** COLLADA {@code <matrix>} (glTF {@code matrix}, transposed): 16 values, row-major. */
+        MATRIX(16),
+        /** COLLADA {@code <translate>} (glTF {@code translation}): x y z. */
+        TRANSLATE(3),
+        /** COLLADA {@code <rotate>}: axis x y z, then the angle in degrees. */
+        ROTATE(4),
+        /** COLLADA {@code <scale>} (glTF {@code scale}): x y z. */
+        SCALE(3),
+        /** COLLADA {@code <lookat>}: eye, interest point, up vector (9 values). */
+        LOOKAT(9),
+        /** COLLADA {@code <skew>}: angle in degrees, rotation axis, translation axis (7 values). */
+        SKEW(7),
+        /** glTF {@code rotation}: quaternion x y z w, in homogeneous form (see the class comment). */
+        QUATERNION(4);
 
         private final int size;
 
@@ -38,12 +51,20 @@ public final class TransformElement {
             this.size = size;
         }
 
-        /** Number of values an element of this kind holds. */
+        /**
+         * Number of values an element of this kind holds.
+         *
+         * @return the value count, 3 to 16
+         */
         public int size() {
             return size;
         }
 
-        /** The COLLADA element name, e.g. "translate". */
+        /**
+         * The COLLADA element name, e.g. "translate".
+         *
+         * @return the constant's name in lower case ("quaternion" for {@link #QUATERNION}, which COLLADA lacks)
+         */
         public String elementName() {
             return name().toLowerCase(java.util.Locale.ROOT);
         }
@@ -53,6 +74,14 @@ public final class TransformElement {
     private final String sid;
     private final float[] values;
 
+    /**
+     * An element with the given values.
+     *
+     * @param kind   what kind of transform it is
+     * @param sid    the element's sid, or null
+     * @param values {@code kind.size()} values in the layout described in the class comment; copied
+     * @throws IllegalArgumentException when {@code values} does not hold exactly {@code kind.size()} values
+     */
     public TransformElement(Kind kind, String sid, float[] values) {
         if (values.length != kind.size) {
             throw new IllegalArgumentException(kind + " needs " + kind.size + " values, got " + values.length);
@@ -62,30 +91,62 @@ public final class TransformElement {
         this.values = values.clone();
     }
 
+    /**
+     * What kind of transform the element is.
+     *
+     * @return the kind, which fixes the number and layout of the values
+     */
     public Kind kind() {
         return kind;
     }
 
-    /** The element's sid (what animation channels target), or null. */
+    /**
+     * The element's sid (what animation channels target), or null.
+     *
+     * @return the sid, or null when the element has none
+     */
     public String sid() {
         return sid;
     }
 
-    /** A copy of the values, in the layout described in the class comment. */
+    /**
+     * A copy of the values, in the layout described in the class comment.
+     *
+     * @return a new array of {@code kind().size()} floats the caller may change
+     */
     public float[] values() {
         return values.clone();
     }
 
+    /**
+     * One value, without copying the array.
+     *
+     * @param i the value's index, 0 to {@code kind().size() - 1}, in the layout described in the class comment
+     * @return the value as written in the file
+     * @throws ArrayIndexOutOfBoundsException when {@code i} is out of that range
+     */
     public float value(int i) {
         return values[i];
     }
 
-    /** Copies the values into {@code dest} at {@code offset}. */
+    /**
+     * Copies the values into {@code dest} at {@code offset}.
+     *
+     * @param dest   the array written: {@code kind().size()} values from {@code offset} on
+     * @param offset index in {@code dest} of the first value written
+     * @throws IndexOutOfBoundsException when {@code dest} is too short
+     */
     public void copyValues(float[] dest, int offset) {
         System.arraycopy(values, 0, dest, offset, values.length);
     }
 
-    /** Post-multiplies {@code dest} by this element: {@code dest = dest * T}. */
+    /**
+     * Post-multiplies {@code dest} by this element: {@code dest = dest * T}.
+     *
+     * @param dest    the matrix multiplied in place
+     * @param scratch a matrix to work in, overwritten; not {@code dest}
+     * @return {@code dest}
+     */
     public Matrix4f multiply(Matrix4f dest, Matrix4f scratch) {
         return multiply(kind, values, 0, dest, scratch);
     }
@@ -94,6 +155,13 @@ public final class TransformElement {
      * Post-multiplies {@code dest} by the transform of the given kind whose values start at
      * {@code v[offset]}: {@code dest = dest * T}. Allocation-free; {@code scratch} is overwritten.
      * The one place where transform elements become matrices.
+     *
+     * @param kind    the kind of transform, which fixes how many values are read
+     * @param v       the values, in the layout described in the class comment
+     * @param o       index in {@code v} of the first value (the {@code offset} above)
+     * @param dest    the matrix multiplied in place
+     * @param scratch a matrix to work in, overwritten; not {@code dest}
+     * @return {@code dest}
      */
     public static Matrix4f multiply(Kind kind, float[] v, int o, Matrix4f dest, Matrix4f scratch) {
         switch (kind) {
@@ -159,6 +227,13 @@ public final class TransformElement {
      * The rotation matrix of the quaternion (x, y, z, w) in homogeneous form: {@code |q|^2} times
      * that of q/|q|, so no division and no special case for a zero quaternion (which gives the
      * zero matrix, as the blend of two opposite keys would).
+     *
+     * @param x    the quaternion's x (vector part)
+     * @param y    the quaternion's y (vector part)
+     * @param z    the quaternion's z (vector part)
+     * @param w    the quaternion's w (scalar part)
+     * @param dest the matrix to write; all of it is overwritten (no translation, bottom row 0 0 0 1)
+     * @return {@code dest}
      */
     public static Matrix4f quaternionMatrix(float x, float y, float z, float w, Matrix4f dest) {
         float ww = w * w;

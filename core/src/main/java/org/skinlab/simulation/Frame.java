@@ -1,9 +1,11 @@
 package org.skinlab.simulation;
 
+import java.util.List;
 import java.util.concurrent.atomic.AtomicInteger;
 
 import org.skinlab.animation.RotationInterpolation;
 import org.skinlab.skinning.JointPalette;
+import org.skinlab.skinning.SkinnedGeometry;
 import org.skinlab.skinning.SkinningMethod;
 
 /**
@@ -26,49 +28,22 @@ import org.skinlab.skinning.SkinningMethod;
  *     if (frame.hasSkinnedMesh()) {
  *         upload(frame.positions(0), frame.normals(0));
  *     } else {
- *         uploadPalette(frame.skinningMatrices(0)); // skin on the GPU
+ *         uploadPalette(frame.palette(0).matrices()); // skin on the GPU
  *     }
  * }
  * }</pre>
  *
- * <p><b>The palette.</b> Per geometry {@code g}, {@link #jointCount(int) jointCount(g)} joints,
- * indexed as the geometry's influences index them
- * ({@link org.skinlab.skinning.SkinnedGeometry#jointArray()}), each with the data of
- * {@link JointPalette} for this step, in the same layouts:
- * <ul>
- * <li>{@link #skinningMatrices(int)}: 12 floats per joint, a 3x4 affine matrix M stored by rows
- *     {@code r00 r01 r02 tx, r10 r11 r12 ty, r20 r21 r22 tz}; it takes a point in bind space (the
- *     geometry's {@link org.skinlab.skinning.SkinnedGeometry#positionArray()} and
- *     {@link org.skinlab.skinning.SkinnedGeometry#normalArray()}, not the file's mesh positions:
- *     the bind shape matrix, and a mirror common to all bind frames, are already applied there)
- *     to its posed place, {@code p' = M (p, 1)}. LBS: {@code p' = (sum_k w_k M_(j_k)) (p, 1)},
- *     the normal by the inverse transpose of the blend's 3x3 part (the cofactor matrix, times
- *     the sign of its determinant when a joint mirrors). In GLSL, 12 floats per joint uploaded
- *     as-is to a {@code mat3x4} (three columns of four: the columns are our rows) apply as
- *     {@code vec4(p, 1.0) * m}.</li>
- * <li>{@link #dualQuaternions(int)}: 8 floats per joint, the unit dual quaternion {@code r + e d}
- *     of the joint's rigid part D: the rotation r as {@code x y z w}, then the dual part d as
- *     {@code x y z w}, with {@code d = (t, 0) r / 2} for the translation t, so
- *     {@code t = 2 (r.w d.xyz - d.w r.xyz + cross(r.xyz, d.xyz))}. DQS (Kavan et al. 2008):
- *     {@code b = sum_k s_k w_k q_(j_k)} with {@code s_k = sign(dot(r_(j_0), r_(j_k)))} against
- *     the dominant influence j_0 (the first: influences are sorted by decreasing weight), divide
- *     both parts of b by {@code |b.r|}, rotate the point by b's r and add b's t; the normal is
- *     only rotated. Filled in every frame, whatever {@link #method()} says.</li>
- * <li>{@link #scales(int)}: 12 floats per joint, row-major 3x4 like the matrices: the joint's
- *     scale/shear part S, with {@code M = D S}, centred on the joint's bind frame (so it may
- *     have a translation column); the identity for a joint without scale. DQS with scale runs a
- *     first phase before the dual quaternions: {@code p1 = (sum_k w_k S_(j_k)) (p, 1)} (a plain
- *     weighted sum, no sign flips), the normal by the inverse transpose of that blend's 3x3
- *     part, then the blended dual quaternion moves p1 and turns the normal. When
- *     {@link #hasScale(int) hasScale(g)} is false every S is the identity and a shader may
- *     skip the phase (a uniform flag).</li>
- * <li>{@link #boneRows(int)}: {@link JointPalette#BONE_FLOATS} floats per joint, six rows of four
- *     (posed head | twist, posed tail | stretch, the tail's stretch offset, the posed bone axis,
- *     rest head | length, rest tail | parent index; {@link JointPalette#boneRows()} defines them):
- *     what the methods that read bones ({@link SkinningMethod#usesBones()}) take of this step.
- *     Filled in every frame, whatever {@link #method()} says, as the dual quaternions are. A
- *     shader reads them as {@code boneRow(joint, row)} (skinning.glsl's header).</li>
- * </ul>
+ * <p><b>The palette.</b> Per geometry {@code g}, {@link #palette(int) palette(g)}: the
+ * {@link JointPalette} this step posed, with everything it can derive prepared
+ * ({@link JointPalette#prepareAll()}): the skinning matrices, the dual quaternions and scale parts,
+ * and the bone rows, whatever {@link #method()} says, so a split view may draw two methods from one
+ * frame. Its joints are indexed as the geometry's influences index them
+ * ({@link org.skinlab.skinning.SkinnedGeometry#jointArray()}); each array's layout is on its
+ * getter in {@link JointPalette}, and docs/skinning.md shows how a shader reads them. The
+ * matrices take a point in bind space (the geometry's
+ * {@link org.skinlab.skinning.SkinnedGeometry#positionArray()}, not the file's mesh positions:
+ * the bind shape matrix, and a mirror common to all bind frames, are already applied there) to
+ * its posed place. The palette is read-only, like the arrays.
  *
  * <p><b>Palette-only frames.</b> With {@link AnimationConfig#setCpuSkinning} off, a step poses
  * the skeleton and fills the palette but skins nothing; its frame says so with
@@ -81,13 +56,7 @@ import org.skinlab.skinning.SkinningMethod;
 public final class Frame implements AutoCloseable {
     private final float[][] positions;
     private final float[][] normals;
-    private final float[][] matrices;
-    private final float[][] dualQuaternions;
-    private final float[][] scales;
-    private final float[][] boneRows;
-    private final boolean[] scaled;
-    private final boolean[] matricesMirror;
-    private final boolean[] scalesMirror;
+    private final JointPalette[] palettes;
     /** Per geometry, the morphed rest positions of this step, or null where the rest shape does not morph. */
     private final float[][] restPositions;
     /** Per geometry, the rest normals that go with them, or null likewise. */
@@ -105,36 +74,27 @@ public final class Frame implements AutoCloseable {
     private boolean skinnedMesh;
 
     /**
-     * @param pointCounts points per geometry
-     * @param jointCounts palette joints per geometry
-     * @param morphing    per geometry, whether its rest shape morphs (animated morph weights)
+     * @param geometries the geometries, for their point counts and palettes
+     * @param morphing   per geometry, whether its rest shape morphs (animated morph weights)
      */
-    Frame(int[] pointCounts, int[] jointCounts, boolean[] morphing) {
-        int n = pointCounts.length;
-        if (jointCounts.length != n || morphing.length != n) {
-            throw new IllegalArgumentException(n + " point counts but " + jointCounts.length + " joint counts and "
-                    + morphing.length + " morph flags");
+    Frame(List<SkinnedGeometry> geometries, boolean[] morphing) {
+        int n = geometries.size();
+        if (morphing.length != n) {
+            throw new IllegalArgumentException(n + " geometries but " + morphing.length + " morph flags");
         }
         restPositions = new float[n][];
         restNormals = new float[n][];
         positions = new float[n][];
         normals = new float[n][];
-        matrices = new float[n][];
-        dualQuaternions = new float[n][];
-        scales = new float[n][];
-        boneRows = new float[n][];
-        scaled = new boolean[n];
-        matricesMirror = new boolean[n];
-        scalesMirror = new boolean[n];
+        palettes = new JointPalette[n];
         for (int g = 0; g < n; g++) {
-            positions[g] = new float[3 * pointCounts[g]];
-            normals[g] = new float[3 * pointCounts[g]];
-            matrices[g] = new float[12 * jointCounts[g]];
-            dualQuaternions[g] = new float[8 * jointCounts[g]];
-            scales[g] = new float[12 * jointCounts[g]];
-            boneRows[g] = new float[JointPalette.BONE_FLOATS * jointCounts[g]];
-            restPositions[g] = morphing[g] ? new float[3 * pointCounts[g]] : null;
-            restNormals[g] = morphing[g] ? new float[3 * pointCounts[g]] : null;
+            SkinnedGeometry geometry = geometries.get(g);
+            int points = geometry.pointCount();
+            positions[g] = new float[3 * points];
+            normals[g] = new float[3 * points];
+            palettes[g] = geometry.newPalette();
+            restPositions[g] = morphing[g] ? new float[3 * points] : null;
+            restNormals[g] = morphing[g] ? new float[3 * points] : null;
         }
     }
 
@@ -147,18 +107,9 @@ public final class Frame implements AutoCloseable {
         return normals[g];
     }
 
-    /**
-     * Copies geometry {@code g}'s palette (its dual quaternions and bone rows prepared) into this
-     * buffer (simulation side only).
-     */
+    /** Copies geometry {@code g}'s palette, everything prepared, into this buffer (simulation side only). */
     void copyPalette(int g, JointPalette palette) {
-        System.arraycopy(palette.matrices(), 0, matrices[g], 0, matrices[g].length);
-        System.arraycopy(palette.boneRows(), 0, boneRows[g], 0, boneRows[g].length);
-        System.arraycopy(palette.dualQuaternions(), 0, dualQuaternions[g], 0, dualQuaternions[g].length);
-        System.arraycopy(palette.scales(), 0, scales[g], 0, scales[g].length);
-        scaled[g] = palette.hasScale();
-        matricesMirror[g] = palette.mirrorsMatrices();
-        scalesMirror[g] = palette.mirrorsScales();
+        palettes[g].set(palette);
     }
 
     /** Copies geometry {@code g}'s morphed rest positions and normals of this step (simulation side only). */
@@ -173,6 +124,10 @@ public final class Frame implements AutoCloseable {
      * which a GPU skinner uploads in place of the bind positions. Null for a geometry whose rest
      * shape does not morph (its {@link org.skinlab.skinning.SkinnedGeometry#positionArray()}
      * never changes). Read-only.
+     *
+     * @param g the geometry, an index in [0, {@link #geometryCount()})
+     * @return the morphed rest positions (3 × the geometry's point count floats, x y z per point),
+     *         not a copy; or null when the geometry's rest shape does not morph
      */
     public float[] restPositions(int g) {
         return restPositions[g];
@@ -182,6 +137,10 @@ public final class Frame implements AutoCloseable {
      * The rest normals that go with {@link #restPositions(int)} (morphed too when the morph morphs
      * normals, else the geometry's), 3 floats per point; null where the rest shape does not morph.
      * Read-only.
+     *
+     * @param g the geometry, an index in [0, {@link #geometryCount()})
+     * @return the rest normals (3 floats per point, as the positions), not a copy; or null when
+     *         {@link #restPositions(int)} is null
      */
     public float[] restNormals(int g) {
         return restNormals[g];
@@ -199,7 +158,11 @@ public final class Frame implements AutoCloseable {
         this.meshSkinningNanos = meshSkinningNanos;
     }
 
-    /** Number of geometries, in {@link SkeletalAnimatedMesh#geometries()} order. */
+    /**
+     * Number of geometries, in {@link SkeletalAnimatedMesh#geometries()} order.
+     *
+     * @return the geometry count, the same for every frame of a mesh
+     */
     public int geometryCount() {
         return positions.length;
     }
@@ -207,6 +170,9 @@ public final class Frame implements AutoCloseable {
     /**
      * Whether this step skinned the mesh on the CPU: false for a frame published with
      * {@link AnimationConfig#setCpuSkinning CPU skinning} off, which carries only the palette.
+     *
+     * @return true when {@link #positions(int)} and {@link #normals(int)} may be read, false for a
+     *         palette-only frame
      */
     public boolean hasSkinnedMesh() {
         return skinnedMesh;
@@ -216,6 +182,9 @@ public final class Frame implements AutoCloseable {
      * Deformed positions of geometry {@code g}: 3 floats per point, in the point order of its
      * {@link org.skinlab.skinning.SkinnedGeometry}. Read-only.
      *
+     * @param g the geometry, an index in [0, {@link #geometryCount()})
+     * @return the posed positions (3 × the geometry's point count floats, x y z per point), where
+     *         this step's palette puts the bind-space points; the frame's own buffer, not a copy
      * @throws IllegalStateException for a palette-only frame ({@link #hasSkinnedMesh()} false):
      *                               its buffer holds some earlier step's mesh, if any
      */
@@ -227,6 +196,9 @@ public final class Frame implements AutoCloseable {
     /**
      * Deformed normals of geometry {@code g}, 3 floats per point. Read-only.
      *
+     * @param g the geometry, an index in [0, {@link #geometryCount()})
+     * @return the posed normals (3 floats per point, in the order of {@link #positions(int)}); the
+     *         frame's own buffer, not a copy
      * @throws IllegalStateException for a palette-only frame, as {@link #positions(int)}
      */
     public float[] normals(int g) {
@@ -242,77 +214,43 @@ public final class Frame implements AutoCloseable {
         }
     }
 
-    /** Palette joints of geometry {@code g} (skin joints, plus the bind-shape pseudo-joint when used). */
-    public int jointCount(int g) {
-        return matrices[g].length / 12;
-    }
-
     /**
-     * Skinning matrices of geometry {@code g} in this step: 12 floats per joint, a row-major 3x4
-     * affine matrix (see the class comment). Read-only.
+     * The joint palette of geometry {@code g} in this step, everything prepared (see the class
+     * comment). Read-only.
+     *
+     * @param g the geometry
+     * @return its palette
      */
-    public float[] skinningMatrices(int g) {
-        return matrices[g];
-    }
-
-    /**
-     * Dual quaternions of geometry {@code g}'s joints in this step: 8 floats per joint, real part
-     * x y z w then dual part x y z w (see the class comment). Filled whatever the method. Read-only.
-     */
-    public float[] dualQuaternions(int g) {
-        return dualQuaternions[g];
-    }
-
-    /**
-     * Scale/shear parts of geometry {@code g}'s joints in this step, for DQS: 12 floats per
-     * joint, row-major 3x4, the identity for unscaled joints (see the class comment). Read-only.
-     */
-    public float[] scales(int g) {
-        return scales[g];
-    }
-
-    /**
-     * Bone rows of geometry {@code g}'s joints in this step, for the methods that read bones:
-     * {@link JointPalette#BONE_FLOATS} floats per joint, six rows of four (see the class comment
-     * and {@link JointPalette#boneRows()}). Filled whatever the method. Read-only.
-     */
-    public float[] boneRows(int g) {
-        return boneRows[g];
-    }
-
-    /** Whether some joint of geometry {@code g} has a scale part in this step (DQS needs its first phase). */
-    public boolean hasScale(int g) {
-        return scaled[g];
-    }
-
-    /**
-     * Whether some joint's skinning matrix of geometry {@code g} mirrors in this step
-     * ({@link JointPalette#mirrorsMatrices()}): LBS's normals then carry the sign of the blend's
-     * determinant, in the CPU kernels and so in a shader.
-     */
-    public boolean mirrorsMatrices(int g) {
-        return matricesMirror[g];
-    }
-
-    /** As {@link #mirrorsMatrices(int)} for the scale parts ({@link JointPalette#mirrorsScales()}). */
-    public boolean mirrorsScales(int g) {
-        return scalesMirror[g];
+    public JointPalette palette(int g) {
+        return palettes[g];
     }
 
     /**
      * Publication number: 0 for the frame published when the mesh was built, then one more per
      * published step. A reader never sees it go down.
+     *
+     * @return the sequence number, 0 or more ({@link SkeletalAnimatedMesh#latestSequence()} for the latest)
      */
     public long sequence() {
         return sequence;
     }
 
-    /** Seconds of playback since the clip's start (after wrapping) this frame shows. */
+    /**
+     * Seconds of playback since the clip's start (after wrapping) this frame shows.
+     *
+     * @return the playback time in seconds: in [0, duration) when looping, [0, duration] when
+     *         clamped, 0 without a clip
+     */
     public double playbackTime() {
         return playbackTime;
     }
 
-    /** The clip time (seconds, in the clip's own time line) the skeleton was posed at. */
+    /**
+     * The clip time (seconds, in the clip's own time line) the skeleton was posed at.
+     *
+     * @return the clip time in seconds, between the clip's start and end; in a frame showing the
+     *         bind pose ({@link AnimationConfig#setBindPose}), the time the clip is at underneath
+     */
     public float clipTime() {
         return clipTime;
     }
@@ -320,12 +258,18 @@ public final class Frame implements AutoCloseable {
     /**
      * The method the configuration asked for in this step: what every geometry was skinned with,
      * or, in a palette-only frame, what a GPU renderer should apply.
+     *
+     * @return the method, never null
      */
     public SkinningMethod method() {
         return method;
     }
 
-    /** The rotation interpolation the pose was sampled with. */
+    /**
+     * The rotation interpolation the pose was sampled with.
+     *
+     * @return the interpolation, never null
+     */
     public RotationInterpolation interpolation() {
         return interpolation;
     }
@@ -333,6 +277,8 @@ public final class Frame implements AutoCloseable {
     /**
      * Wall time this step spent posing, preparing the palette and skinning (nanoseconds): the
      * thesis' "time per deformed mesh"; in a palette-only frame, posing and the palette alone.
+     *
+     * @return the step's time in nanoseconds ({@link System#nanoTime()} differences)
      */
     public long skinningNanos() {
         return skinningNanos;
@@ -342,6 +288,8 @@ public final class Frame implements AutoCloseable {
      * The part of {@link #skinningNanos()} the skinning kernels took to deform the mesh (positions
      * and normals of every geometry): 0 in a palette-only frame. The rest posed the skeleton and
      * prepared the palette, which GPU skinning needs too.
+     *
+     * @return the skinning kernels' time in nanoseconds, at most {@link #skinningNanos()}
      */
     public long meshSkinningNanos() {
         return meshSkinningNanos;

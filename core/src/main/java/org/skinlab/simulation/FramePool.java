@@ -1,7 +1,10 @@
 package org.skinlab.simulation;
 
 import java.util.Arrays;
+import java.util.List;
 import java.util.concurrent.atomic.AtomicReference;
+
+import org.skinlab.skinning.SkinnedGeometry;
 
 /**
  * The snapshot protocol of {@link SkeletalAnimatedMesh}: reusable {@link Frame} buffers, one of
@@ -27,8 +30,7 @@ import java.util.concurrent.atomic.AtomicReference;
 final class FramePool {
     private static final int INITIAL_BUFFERS = 3;
 
-    private final int[] pointCounts;
-    private final int[] jointCounts;
+    private final List<SkinnedGeometry> geometries;
     private final boolean[] morphing;
     private final int maxBuffers;
     private final AtomicReference<Frame> latest = new AtomicReference<>();
@@ -36,18 +38,16 @@ final class FramePool {
     private Frame[] buffers;
 
     /**
-     * @param pointCounts points per geometry
-     * @param jointCounts palette joints per geometry
-     * @param morphing    per geometry, whether its rest shape morphs ({@link Frame#restPositions})
+     * @param geometries the geometries a frame carries
+     * @param morphing   per geometry, whether its rest shape morphs ({@link Frame#restPositions})
      */
-    FramePool(int[] pointCounts, int[] jointCounts, boolean[] morphing, int maxBuffers) {
-        this.pointCounts = pointCounts.clone();
-        this.jointCounts = jointCounts.clone();
+    FramePool(List<SkinnedGeometry> geometries, boolean[] morphing, int maxBuffers) {
+        this.geometries = List.copyOf(geometries);
         this.morphing = morphing.clone();
         this.maxBuffers = maxBuffers;
         buffers = new Frame[Math.min(INITIAL_BUFFERS, maxBuffers)];
         for (int i = 0; i < buffers.length; i++) {
-            buffers[i] = new Frame(this.pointCounts, this.jointCounts, this.morphing);
+            buffers[i] = new Frame(this.geometries, this.morphing);
         }
     }
 
@@ -93,7 +93,7 @@ final class FramePool {
         }
         if (buffers.length < maxBuffers) {
             buffers = Arrays.copyOf(buffers, buffers.length + 1);
-            Frame f = new Frame(pointCounts, jointCounts, morphing);
+            Frame f = new Frame(geometries, morphing);
             buffers[buffers.length - 1] = f;
             return f;
         }

@@ -21,15 +21,11 @@ final class FrameWriter {
     /** A pool of frames shaped for this model's geometries. */
     FramePool newPool(int maxBuffers) {
         int n = skinned.geometries().size();
-        int[] pointCounts = new int[n];
-        int[] jointCounts = new int[n];
         boolean[] morphing = new boolean[n];
         for (int g = 0; g < n; g++) {
-            pointCounts[g] = skinned.geometries().get(g).pointCount();
-            jointCounts[g] = skinned.geometries().get(g).jointCount();
             morphing[g] = skinned.morphs(g);
         }
-        return new FramePool(pointCounts, jointCounts, morphing, maxBuffers);
+        return new FramePool(skinned.geometries(), morphing, maxBuffers);
     }
 
     /**
@@ -50,7 +46,7 @@ final class FrameWriter {
         }
         for (int g = 0; g < f.geometryCount(); g++) {
             // Dual quaternions and bone rows whatever the method: a split view may draw two methods from one frame.
-            f.copyPalette(g, skinned.prepareBones(g));
+            f.copyPalette(g, skinned.palette(g).prepareAll());
             if (f.restPositions(g) != null) {
                 SkinnedGeometry geometry = skinned.geometries().get(g);
                 f.copyRestShape(g, geometry.positionArray(), geometry.normalArray());

@@ -73,7 +73,9 @@ import org.skinlab.skinning.SkinnedModel;
 public final class SkeletalAnimatedMesh implements AutoCloseable {
     /** Steps per second unless {@link #setStepRate} says otherwise: a display's refresh rate. */
     public static final double DEFAULT_STEP_RATE = 60.0;
+    /** Slowest step rate {@link #setStepRate} accepts, in steps per second. */
     public static final double MIN_STEP_RATE = 1.0;
+    /** Fastest step rate {@link #setStepRate} accepts, in steps per second. */
     public static final double MAX_STEP_RATE = 10_000.0;
     /**
      * The longest time one threaded step advances playback by (seconds): after a stall (a
@@ -102,19 +104,37 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
     private volatile long steps;
     private volatile long droppedFrames;
 
-    /** The model's first clip (at rest if it has none), a fresh config, exact normals. */
+    /**
+     * The model's first clip (at rest if it has none), a fresh config, exact normals. Does all the
+     * bind-time work, as the constructor: call it on a loader thread.
+     *
+     * @param model the model to animate; not null
+     * @return a new mesh, not started, with frame 0 published
+     */
     public static SkeletalAnimatedMesh of(Model model) {
         return of(model, new AnimationConfig());
     }
 
-    /** The model's first clip (at rest if it has none) under {@code config}, exact normals. */
+    /**
+     * The model's first clip (at rest if it has none) under {@code config}, exact normals. Does all
+     * the bind-time work, as the constructor: call it on a loader thread.
+     *
+     * @param model  the model to animate; not null
+     * @param config the switches to follow; may be shared with other meshes; not null
+     * @return a new mesh, not started, with frame 0 published
+     */
     public static SkeletalAnimatedMesh of(Model model, AnimationConfig config) {
         return new SkeletalAnimatedMesh(model, model.clips().isEmpty() ? null : model.clips().get(0), config);
     }
 
     /**
-     * The model playing the clip named {@code clipName}.
+     * The model playing the clip named {@code clipName}. Does all the bind-time work, as the
+     * constructor: call it on a loader thread.
      *
+     * @param model    the model to animate; not null
+     * @param clipName the name of one of the model's clips ({@link AnimationClip#name()})
+     * @param config   the switches to follow; may be shared with other meshes; not null
+     * @return a new mesh, not started, with frame 0 published, exact normals
      * @throws IllegalArgumentException when the model has no such clip (the message lists those it has)
      */
     public static SkeletalAnimatedMesh of(Model model, String clipName, AnimationConfig config) {
@@ -128,18 +148,40 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
     }
 
     /**
+     * The model playing {@code clip} under {@code config}, with exact normals
+     * ({@link NormalTransform#INVERSE_TRANSPOSE}). Does all the bind-time work, as
+     * {@link #SkeletalAnimatedMesh(Model, AnimationClip, AnimationConfig, NormalTransform)} says:
+     * build it on a loader thread, not a UI or GL thread.
+     *
+     * @param model  the model to animate; not null
      * @param clip   the clip to play, or null to keep the model at rest
      * @param config the switches to follow; may be shared with other meshes
+     * @throws NullPointerException when {@code model} or {@code config} is null
      */
     public SkeletalAnimatedMesh(Model model, AnimationClip clip, AnimationConfig config) {
         this(model, clip, config, NormalTransform.INVERSE_TRANSPOSE);
     }
 
     /**
+     * The model playing {@code clip} under {@code config}. The constructor does all the bind-time
+     * work, through a {@link SkinnedModel} bound for every
+     * {@link org.skinlab.skinning.SkinningMethod}: each geometry's layout, bones and CoR's centres
+     * of rotation, and every method's skinner, so that switching the method later never stalls a
+     * step. That work grows with the model (its vertices, influences and joints), so build the mesh on
+     * a loader thread, not a UI or GL thread. It then publishes frame 0 at the clip's start, as
+     * the config's switches say (even with mesh updates stopped), so {@link #acquire()} always has
+     * a frame; the simulation thread is not started ({@link #start()}).
+     *
+     * @param model   the model to animate; not null
+     * @param clip    the clip to play (one of the model's {@link Model#clips()}), or null to keep
+     *                the model at rest
+     * @param config  the switches to follow; may be shared with other meshes; not null
      * @param normals how frames' normals are made: {@link NormalTransform#INVERSE_TRANSPOSE} or
      *                {@link NormalTransform#BLENDED_MATRIX}; frames carry normals for rendering and
      *                the switches may pick any method, so {@link NormalTransform#NONE} is refused
      *                (skin positions only with a {@link org.skinlab.skinning.SkinnedModel} or a skinner)
+     * @throws IllegalArgumentException for {@link NormalTransform#NONE}
+     * @throws NullPointerException     when {@code model}, {@code config} or {@code normals} is null
      */
     public SkeletalAnimatedMesh(Model model, AnimationClip clip, AnimationConfig config, NormalTransform normals) {
         if (normals == NormalTransform.NONE) {
@@ -159,15 +201,29 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
         thread.exclusively(() -> publish(config.settings()));
     }
 
+    /**
+     * The model this mesh animates.
+     *
+     * @return the model given to the constructor
+     */
     public Model model() {
         return model;
     }
 
-    /** The clip being played, or null when the model stays at rest. */
+    /**
+     * The clip being played, or null when the model stays at rest.
+     *
+     * @return the clip given to the constructor, or null
+     */
     public AnimationClip clip() {
         return clip;
     }
 
+    /**
+     * The switches this mesh follows, read once per step.
+     *
+     * @return the config given to the constructor, possibly shared with other meshes
+     */
     public AnimationConfig config() {
         return config;
     }
@@ -175,12 +231,19 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
     /**
      * The geometries in frame order (immutable runtime data: bind-shape arrays, influences,
      * the mapping from points to the mesh's vertices and positions).
+     *
+     * @return an unmodifiable list, index {@code g} the geometry of every frame's {@code palette(g)},
+     *         {@code positions(g)} and {@code normals(g)}
      */
     public List<SkinnedGeometry> geometries() {
         return skinned.geometries();
     }
 
-    /** The clip's length in seconds (0 at rest, without a clip). */
+    /**
+     * The clip's length in seconds (0 at rest, without a clip).
+     *
+     * @return the duration in seconds, 0 or more
+     */
     public double clipDuration() {
         return clip == null ? 0.0 : clip.duration();
     }
@@ -191,32 +254,55 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
      * The latest published frame, lent until its {@link Frame#close()}. Never null: a mesh
      * publishes frame 0 when it is built. Lock-free (it retries only if a frame is published
      * between its two reads) and allocation-free; any thread, any number of readers.
+     *
+     * @return the latest frame, leased to the caller, who must close it exactly once
      */
     public Frame acquire() {
         return pool.acquire();
     }
 
-    /** The sequence number of the latest published frame. */
+    /**
+     * The sequence number of the latest published frame.
+     *
+     * @return the latest {@link Frame#sequence()}: 0 after construction, one more per published step
+     */
     public long latestSequence() {
         return publishedSequence;
     }
 
-    /** Playback time (seconds since the clip's start) after the latest step, published or not. */
+    /**
+     * Playback time (seconds since the clip's start) after the latest step, published or not.
+     *
+     * @return the playback time in seconds, wrapped or held as the wrap mode says (0 at rest)
+     */
     public double playbackTime() {
         return playbackTime;
     }
 
-    /** Steps taken so far (threaded and by hand), whether or not they published a frame. */
+    /**
+     * Steps taken so far (threaded and by hand), whether or not they published a frame.
+     *
+     * @return the step count; frame 0, published by the constructor, is not a step
+     */
     public long stepCount() {
         return steps;
     }
 
-    /** Steps that skinned nothing because every buffer was leased to readers (see the class comment). */
+    /**
+     * Steps that skinned nothing because every buffer was leased to readers (see the class comment).
+     *
+     * @return the number of steps that published no frame for want of a free buffer
+     */
     public long droppedFrames() {
         return droppedFrames;
     }
 
-    /** What ended the simulation thread, or null. */
+    /**
+     * What ended the simulation thread, or null.
+     *
+     * @return what the simulation thread (a step, or the frame listener run on it) threw first, or
+     *         null while nothing has
+     */
     public Throwable failure() {
         return thread.failure();
     }
@@ -228,6 +314,13 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
 
     // ---------------------------------------------------------------------------- settings
 
+    /**
+     * Steps per second the simulation thread takes ({@link #DEFAULT_STEP_RATE} until
+     * {@link #setStepRate} is called).
+     *
+     * @return the step rate, as the thread paces it (a whole number of nanoseconds per step, so it
+     *         may differ from the rate set in its last digits)
+     */
     public double stepRate() {
         return thread.stepRate();
     }
@@ -235,6 +328,9 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
     /**
      * Steps per second of the simulation thread, in [{@link #MIN_STEP_RATE}, {@link #MAX_STEP_RATE}];
      * any thread, any time; the running thread uses it from its next step on.
+     *
+     * @param stepsPerSecond the rate, in [{@link #MIN_STEP_RATE}, {@link #MAX_STEP_RATE}]
+     * @throws IllegalArgumentException when the rate is outside that range or NaN
      */
     public void setStepRate(double stepsPerSecond) {
         thread.setStepRate(stepsPerSecond);
@@ -251,6 +347,8 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
      * What it throws on the simulation thread ends that thread as a {@link #failure()}; on a
      * hand step it propagates to the caller of {@link #step(double)}, the frame already
      * published. Null for none.
+     *
+     * @param listener the callback, or null for none; replaces the one set before
      */
     public void setFrameListener(Runnable listener) {
         thread.setFrameListener(listener);
@@ -268,7 +366,11 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
         return thread.start();
     }
 
-    /** Whether the simulation thread runs (started, not stopped, not ended by failure or interrupt). */
+    /**
+     * Whether the simulation thread runs (started, not stopped, not ended by failure or interrupt).
+     *
+     * @return true while the thread runs
+     */
     public boolean isRunning() {
         return thread.isRunning();
     }
@@ -289,6 +391,11 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
         thread.close();
     }
 
+    /**
+     * Whether {@link #close()} has been called: start and step then refuse.
+     *
+     * @return true once closed
+     */
     public boolean isClosed() {
         return thread.isClosed();
     }
@@ -299,6 +406,9 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
      * One simulation step on the caller's thread: advance playback by {@code dtSeconds} times the
      * speed (when the animation runs), then skin and publish (when mesh updates run).
      *
+     * @param dtSeconds real time to advance by, in seconds (the playback moves by this times the
+     *                  speed); finite and 0 or more: 0 re-poses and, while mesh updates run, republishes
+     *                  at the same time
      * @throws IllegalArgumentException for a negative, infinite or NaN step
      * @throws IllegalStateException    while the simulation thread runs, after close, after a failure
      */
@@ -316,6 +426,8 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
      * scrubber shows each position at once. By hand, {@code seek(t)} then {@code step(0)}
      * publishes the frame at {@code t}.
      *
+     * @param seconds the playback time to go to, in seconds after the clip's start; any finite value
+     *                (when looping, a negative one counts back from the clip's end)
      * @throws IllegalArgumentException for a NaN or infinite time
      */
     public void seek(double seconds) {

@@ -10,9 +10,21 @@ package org.skinlab.skinning;
 public abstract class AbstractSkinner implements Skinner {
     private final SkinningMethod method;
     private final String implementation;
+    /** The geometry the kernel reads, as {@link #geometry()} returns it. */
     protected final SkinnedGeometry geometry;
+    /** How the kernel moves normals, as {@link #normalTransform()} returns it. */
     protected final NormalTransform normals;
 
+    /**
+     * Binds the common part of a skinner.
+     *
+     * @param method         the method the subclass's kernel implements
+     * @param implementation a short name for reports, e.g. "scalar"
+     * @param geometry       the geometry the kernel reads
+     * @param normals        how the kernel moves normals
+     * @throws IllegalArgumentException for {@link NormalTransform#NONE} with a method that has no
+     *                                  positions-only kernels ({@link SkinningMethod#skinsPositionsOnly()})
+     */
     protected AbstractSkinner(SkinningMethod method, String implementation, SkinnedGeometry geometry,
             NormalTransform normals) {
         if (normals == NormalTransform.NONE && !method.skinsPositionsOnly()) {
@@ -48,6 +60,8 @@ public abstract class AbstractSkinner implements Skinner {
     /**
      * For {@link #skinDeformations} under {@link NormalTransform#NONE}: a deformation's record is
      * mostly its normal matrix, which positions-only skinning does not compute.
+     *
+     * @return the exception to throw, naming the method and implementation
      */
     protected final UnsupportedOperationException noDeformationsWithoutNormals() {
         return new UnsupportedOperationException(method.key() + " skinner (" + implementation

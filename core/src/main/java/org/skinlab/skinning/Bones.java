@@ -39,7 +39,13 @@ public final class Bones {
         this.segments = segments;
     }
 
-    /** The bones of a geometry's palette joints. */
+    /**
+     * The bones of a geometry's palette joints. Bind-time work, one pass over the points (for the
+     * leaves' lengths); a geometry computes them once when it is built ({@link SkinnedGeometry#bones()}).
+     *
+     * @param geometry the geometry whose bind matrices, joint hierarchy and points give the bones
+     * @return the bones, one per palette joint
+     */
     public static Bones of(SkinnedGeometry geometry) {
         int joints = geometry.jointCount();
         int[] parents = new int[joints];
@@ -163,31 +169,64 @@ public final class Bones {
         return parents;
     }
 
+    /**
+     * Number of bones, one per palette joint.
+     *
+     * @return the geometry's {@link SkinnedGeometry#jointCount()}
+     */
     public int jointCount() {
         return parents.length;
     }
 
-    /** Joint j's parent joint, or -1. */
+    /**
+     * Joint j's parent joint, or -1.
+     *
+     * @param j a palette joint, {@code [0, jointCount())}
+     * @return the parent's palette index (lower than {@code j} for {@link SkinnedGeometry#fromArrays}),
+     *         or -1 for a root or when no node tree was known
+     */
     public int parent(int j) {
         return parents[j];
     }
 
-    /** The child joint whose head is joint j's tail, or -1 for a leaf. */
+    /**
+     * The child joint whose head is joint j's tail, or -1 for a leaf.
+     *
+     * @param j a palette joint, {@code [0, jointCount())}
+     * @return the child's palette index, or -1 when the tail lies along j's own Y axis
+     */
     public int tailJoint(int j) {
         return tailJoints[j];
     }
 
-    /** Coordinate {@code axis} (0 x, 1 y, 2 z) of joint j's head in bind space. */
+    /**
+     * Coordinate {@code axis} (0 x, 1 y, 2 z) of joint j's head in bind space.
+     *
+     * @param j    a palette joint, {@code [0, jointCount())}
+     * @param axis 0, 1 or 2 for x, y or z
+     * @return that coordinate of the joint's rest origin, in the points' units
+     */
     public float head(int j, int axis) {
         return segments[6 * j + axis];
     }
 
-    /** Coordinate {@code axis} of joint j's tail in bind space. */
+    /**
+     * Coordinate {@code axis} of joint j's tail in bind space.
+     *
+     * @param j    a palette joint, {@code [0, jointCount())}
+     * @param axis 0, 1 or 2 for x, y or z
+     * @return that coordinate of the bone's far end, in the points' units; the head's for a point-like leaf
+     */
     public float tail(int j, int axis) {
         return segments[6 * j + 3 + axis];
     }
 
-    /** The bone's rest length (0 for a point-like leaf). */
+    /**
+     * The bone's rest length (0 for a point-like leaf).
+     *
+     * @param j a palette joint, {@code [0, jointCount())}
+     * @return the distance from head to tail in bind space, not negative
+     */
     public float length(int j) {
         float dx = tail(j, 0) - head(j, 0);
         float dy = tail(j, 1) - head(j, 1);

@@ -44,7 +44,12 @@ public final class BulgeFreeBinding {
         this.pairs = pairs;
     }
 
-    /** The binding of every point of a geometry, from its current rest positions and its bones. */
+    /**
+     * The binding of every point of a geometry, from its current rest positions and its bones.
+     *
+     * @param geometry the geometry, with its bones ({@link SkinnedGeometry#bones()})
+     * @return a new binding; bind-time work, one pass over the points' influences
+     */
     public static BulgeFreeBinding of(SkinnedGeometry geometry) {
         Bones bones = geometry.bones();
         float[] p = geometry.positionArray();
@@ -84,6 +89,11 @@ public final class BulgeFreeBinding {
      * a = ALLOWANCE spread r, a smooth saturation of the excess (slope 1 at e = 0, never above a);
      * r itself when a = 0. DQS's bulge grows with the sine of half the bend angle (spread), and
      * so does what is kept of it.
+     *
+     * @param d      the point's distance from its posed bone after DQS, in bind-space units
+     * @param r      its reference distance (the rest distance, or its scaled image), not negative
+     * @param spread the spread of its two heaviest influences ({@link #spread}), in [0, 1]
+     * @return the distance to pull the point to, in [r, d]
      */
     public static float pulledDistance(float d, float r, float spread) {
         float a = ALLOWANCE * spread * r;
@@ -111,12 +121,20 @@ public final class BulgeFreeBinding {
         return len2 > 0f ? Math.max(0f, Math.min(1f, (ax * ex + ay * ey + az * ez) / len2)) : 0f;
     }
 
-    /** The joints of all points, copied. */
+    /**
+     * The joints of all points, copied.
+     *
+     * @return per point, the palette joint whose rest bone it keeps its distance from
+     */
     public int[] jointArray() {
         return joints.clone();
     }
 
-    /** Per point the joints of its two heaviest influences (the first twice when it has one), copied. */
+    /**
+     * Per point the joints of its two heaviest influences (the first twice when it has one), copied.
+     *
+     * @return 2 palette joints per point, heaviest first, for {@link #spread}
+     */
     public int[] pairArray() {
         return pairs.clone();
     }
@@ -125,6 +143,11 @@ public final class BulgeFreeBinding {
      * sin(theta / 2) for theta the angle between the rotations of two joints whose dual
      * quaternions (real part first, unit) sit at {@code 8 a} and {@code 8 b} in {@code dq}:
      * {@code sqrt(1 - (q_a . q_b)^2)}, whichever sign either has.
+     *
+     * @param dq the palette's dual quaternions ({@link JointPalette#dualQuaternions()}), 8 floats per joint
+     * @param a  one palette joint
+     * @param b  another palette joint (or a itself, giving 0)
+     * @return the spread, in [0, 1]: 0 for the same rotation, 1 for rotations half a turn apart
      */
     public static float spread(float[] dq, int a, int b) {
         int p = 8 * a;
@@ -133,7 +156,12 @@ public final class BulgeFreeBinding {
         return (float) Math.sqrt(Math.max(0f, 1f - dot * dot));
     }
 
-    /** The rest distances of all points, copied. */
+    /**
+     * The rest distances of all points, copied.
+     *
+     * @return per point, its distance from its bone in the rest positions the binding was made from,
+     *         in bind-space units
+     */
     public float[] restDistanceArray() {
         return restDistances.clone();
     }
@@ -141,6 +169,10 @@ public final class BulgeFreeBinding {
     /**
      * Each point's distance from its own bone in rest positions {@code positions} (a morphed rest
      * shape) into {@code dest}, allocation-free.
+     *
+     * @param bones     the geometry's bones, as when the binding was made
+     * @param positions the rest positions, 3 floats per point, bind space
+     * @param dest      receives one distance per point
      */
     public void restDistances(Bones bones, float[] positions, float[] dest) {
         for (int i = 0; i < joints.length; i++) {

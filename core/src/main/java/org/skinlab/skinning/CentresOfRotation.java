@@ -37,10 +37,25 @@ public final class CentresOfRotation {
      * weight distance along an edge of the integration mesh (both the paper's defaults: 0.1).
      * Epsilon may be infinite (no subdivision, the triangles as they are); below
      * {@link #MIN_WEIGHT_EPSILON} the subdivision would grow without bound and is refused.
+     *
+     * @param sigma         the similarity kernel's width sigma, in weight units; finite and above 0
+     * @param weightEpsilon the largest difference of weight vectors (Euclidean) between the ends of an
+     *                      edge of the integration mesh; at least {@link #MIN_WEIGHT_EPSILON}, or
+     *                      infinite for no subdivision
      */
     public record Parameters(double sigma, double weightEpsilon) {
+        /** The paper's parameters, sigma 0.1, epsilon 0.1: those of {@link SkinnedGeometry#withCentresOfRotation()}. */
         public static final Parameters DEFAULT = new Parameters(0.1, 0.1);
 
+        /**
+         * Checks the parameters.
+         *
+         * @param sigma         the similarity kernel's width, finite and above 0
+         * @param weightEpsilon the largest weight distance along an integration edge, at least
+         *                      {@link #MIN_WEIGHT_EPSILON} (infinity for no subdivision)
+         * @throws IllegalArgumentException when sigma is not finite and above 0, or epsilon is below
+         *                                  {@link #MIN_WEIGHT_EPSILON} or NaN
+         */
         public Parameters {
             if (!(sigma > 0) || Double.isInfinite(sigma)) {
                 throw new IllegalArgumentException("sigma " + sigma + " (need a finite width > 0)");
@@ -58,8 +73,15 @@ public final class CentresOfRotation {
     /** Told how far a computation is: positions done of all; called from worker threads. */
     @FunctionalInterface
     public interface Progress {
+        /**
+         * Reports progress; calls may come from several threads at once and out of order.
+         *
+         * @param done  positions done so far
+         * @param total positions in all (1 of 1 when the centres came from the cache)
+         */
         void update(int done, int total);
 
+        /** Ignores every update. */
         Progress NONE = (done, total) -> {
         };
     }
@@ -76,11 +98,18 @@ public final class CentresOfRotation {
      * parameters), so that loading a file again costs a file read. Null turns the cache off (the
      * default). Set once by an application at start; a cache that cannot be read or written is
      * passed by silently (the centres are then computed).
+     *
+     * @param directory the cache's folder, or null for no cache
      */
     public static void setCacheDirectory(Path directory) {
         cacheDirectory = directory;
     }
 
+    /**
+     * The folder computed centres are kept in ({@link #setCacheDirectory}).
+     *
+     * @return the folder, or null when there is no cache (the default)
+     */
     public static Path cacheDirectory() {
         return cacheDirectory;
     }
@@ -88,6 +117,11 @@ public final class CentresOfRotation {
     /**
      * The centres from the cache when it holds them for this geometry and these parameters, else
      * computed (and then stored in the cache, if one is set).
+     *
+     * @param geometry   the geometry, at rest
+     * @param parameters the precomputation's parameters
+     * @param progress   told how far the computation is ({@link Progress#NONE} for nothing)
+     * @return the centres as {@link #compute} returns them; a new array
      */
     public static float[] computeOrLoad(SkinnedGeometry geometry, Parameters parameters, Progress progress) {
         Path dir = cacheDirectory;
@@ -108,12 +142,27 @@ public final class CentresOfRotation {
     /**
      * The centre of every point of {@code geometry}, 3 floats per point in bind space (the space
      * of {@link SkinnedGeometry#positionArray()}).
+     *
+     * <p>Bind-time work: in parallel on the common fork-join pool, up to a second for a large
+     * character. A geometry without triangles ({@link SkinnedGeometry#fromArrays}) gets every point
+     * as its own centre.
+     *
+     * @param geometry   the geometry, at rest
+     * @param parameters the precomputation's parameters
+     * @param progress   told how far the computation is ({@link Progress#NONE} for nothing)
+     * @return a new array of {@code 3 * pointCount()} floats, the point itself where its centre is undefined
      */
     public static float[] compute(SkinnedGeometry geometry, Parameters parameters, Progress progress) {
         return compute(geometry, triangles(geometry), parameters, progress);
     }
 
-    /** How many triangles the integration runs over after subdivision (for reports and benchmarks). */
+    /**
+     * How many triangles the integration runs over after subdivision (for reports and benchmarks).
+     *
+     * @param geometry   the geometry, at rest
+     * @param parameters the parameters; only the weight epsilon matters
+     * @return the number of sub-triangles, 0 for a geometry without triangles
+     */
     public static long integrationTriangles(SkinnedGeometry geometry, Parameters parameters) {
         return new SimilarityTriangles(geometry, triangles(geometry), parameters.weightEpsilon()).integrationTriangles();
     }

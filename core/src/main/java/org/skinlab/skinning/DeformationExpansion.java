@@ -17,10 +17,19 @@ public interface DeformationExpansion {
      *
      * @param deformations {@link Skinner#DEFORMATION_FLOATS} floats per deformation
      * @param normalise    scale each normal to unit length (the exact normal rule)
+     * @param outPositions receives the deformed positions, 3 floats per point
+     * @param outNormals   receives each point's rest normal moved by its deformation's normal matrix,
+     *                     3 floats per point
+     * @param from         the first point to write
+     * @param to           one past the last point to write
      */
     void expand(float[] deformations, float[] outPositions, float[] outNormals, int from, int to, boolean normalise);
 
-    /** A short name for reports. */
+    /**
+     * A short name for reports.
+     *
+     * @return the implementation's name, e.g. "scalar"
+     */
     String implementation();
 
     /**
@@ -28,6 +37,7 @@ public interface DeformationExpansion {
      *
      * @param deformationOfPoint the deformation of each point (read, not copied)
      * @param restNormals        3 floats per point (read, not copied)
+     * @return a new expansion bound to these arrays
      */
     static DeformationExpansion scalar(int[] deformationOfPoint, float[] restNormals) {
         return new DeformationExpansion() {

@@ -69,6 +69,9 @@ public final class InfluenceView {
      * The view of a geometry with {@code k} influences per point (any {@code k >= 1}; 4 and 8 are
      * what shaders usually take).
      *
+     * @param geometry the geometry whose influences are cut; its arrays are read, not kept
+     * @param k        influences per point in the view, at least 1
+     * @return a new view
      * @throws IllegalArgumentException if {@code k < 1} or the palette has more than
      *                                  {@value #MAX_JOINTS} joints
      */
@@ -151,32 +154,56 @@ public final class InfluenceView {
         return lost;
     }
 
-    /** Influences per point in this view ({@code k}). */
+    /**
+     * Influences per point in this view ({@code k}).
+     *
+     * @return k, the stride of {@link #jointIndices()} and {@link #weights()}
+     */
     public int influencesPerPoint() {
         return influences;
     }
 
-    /** Influences per point of the geometry it was made from. */
+    /**
+     * Influences per point of the geometry it was made from.
+     *
+     * @return the geometry's {@link SkinnedGeometry#influencesPerPoint()}
+     */
     public int sourceInfluencesPerPoint() {
         return sourceInfluences;
     }
 
-    /** Number of points, as in the geometry. */
+    /**
+     * Number of points, as in the geometry.
+     *
+     * @return the geometry's {@link SkinnedGeometry#pointCount()}
+     */
     public int pointCount() {
         return pointCount;
     }
 
-    /** Points {@code [0, vertexCount)} are the mesh's render vertices, what a renderer uploads. */
+    /**
+     * Points {@code [0, vertexCount)} are the mesh's render vertices, what a renderer uploads.
+     *
+     * @return the geometry's {@link SkinnedGeometry#vertexCount()}
+     */
     public int vertexCount() {
         return vertexCount;
     }
 
-    /** Palette size of the geometry: every joint index is below it. */
+    /**
+     * Palette size of the geometry: every joint index is below it.
+     *
+     * @return the geometry's {@link SkinnedGeometry#jointCount()}, at most {@value #MAX_JOINTS}
+     */
     public int jointCount() {
         return jointCount;
     }
 
-    /** How many points lost an influence of non-zero weight to the cap (0: the view is exact). */
+    /**
+     * How many points lost an influence of non-zero weight to the cap (0: the view is exact).
+     *
+     * @return the number of capped points, in {@code [0, pointCount()]}
+     */
     public int cappedPointCount() {
         return cappedPoints;
     }
@@ -184,17 +211,34 @@ public final class InfluenceView {
     /**
      * The weight the cap dropped at a point, before the kept weights were renormalised: the sum
      * of the geometry's weights beyond the {@code k} kept (0 when the point lost nothing).
+     *
+     * @param point a point, {@code [0, pointCount())}
+     * @return the dropped weight, not negative for a geometry's normalised weights
      */
     public float droppedWeight(int point) {
         return dropped[point];
     }
 
-    /** Palette joint of slot {@code slot} of point {@code point}. */
+    /**
+     * Palette joint of slot {@code slot} of point {@code point}.
+     *
+     * @param point a point, {@code [0, pointCount())}
+     * @param slot  a slot, {@code [0, influencesPerPoint())}, heaviest first
+     * @return the joint index, in {@code [0, jointCount())}; slot 0's joint for a zero-weight slot
+     * @throws IndexOutOfBoundsException for a slot outside the view
+     */
     public int joint(int point, int slot) {
         return Short.toUnsignedInt(joints[influences * point + checkSlot(slot)]);
     }
 
-    /** Weight of slot {@code slot} of point {@code point}. */
+    /**
+     * Weight of slot {@code slot} of point {@code point}.
+     *
+     * @param point a point, {@code [0, pointCount())}
+     * @param slot  a slot, {@code [0, influencesPerPoint())}, heaviest first
+     * @return the weight, renormalised when the point was capped; 0 for padding
+     * @throws IndexOutOfBoundsException for a slot outside the view
+     */
     public float weight(int point, int slot) {
         return weights[influences * point + checkSlot(slot)];
     }
@@ -209,12 +253,19 @@ public final class InfluenceView {
     /**
      * A copy of the joint indices, {@code k} per point: unsigned 16-bit values (read them with
      * {@link Short#toUnsignedInt}), for {@code GL_UNSIGNED_SHORT}.
+     *
+     * @return {@code k * pointCount()} indices, point-major; a new array on each call
      */
     public short[] jointIndices() {
         return joints.clone();
     }
 
-    /** A copy of the weights, {@code k} per point. */
+    /**
+     * A copy of the weights, {@code k} per point.
+     *
+     * @return {@code k * pointCount()} weights, point-major and parallel to {@link #jointIndices()}; a new
+     *         array on each call
+     */
     public float[] weights() {
         return weights.clone();
     }
@@ -222,6 +273,8 @@ public final class InfluenceView {
     /**
      * Joint indices of all points as palette indices in an {@code int[]} ({@code k} per point),
      * e.g. for {@link SkinnedGeometry#fromArrays}.
+     *
+     * @return {@code k * pointCount()} joint indices, point-major; a new array
      */
     public int[] jointIndicesAsInts() {
         int[] result = new int[joints.length];
@@ -235,12 +288,22 @@ public final class InfluenceView {
      * Writes the joint indices of points {@code [0, points)} at the buffer's position (relative
      * put: the position advances by {@code k * points}), e.g. into a direct buffer for
      * {@code glBufferData}. Pass {@link #vertexCount()} to upload the render vertices.
+     *
+     * @param dest   the buffer, with room for {@code k * points} shorts
+     * @param points how many points to write, from the first, {@code [0, pointCount()]}
+     * @throws IndexOutOfBoundsException when {@code points} is outside {@code [0, pointCount()]}
      */
     public void putJointIndices(ShortBuffer dest, int points) {
         dest.put(joints, 0, influences * checkPoints(points));
     }
 
-    /** As {@link #putJointIndices} for the weights. */
+    /**
+     * As {@link #putJointIndices} for the weights.
+     *
+     * @param dest   the buffer, with room for {@code k * points} floats
+     * @param points how many points to write, from the first, {@code [0, pointCount()]}
+     * @throws IndexOutOfBoundsException when {@code points} is outside {@code [0, pointCount()]}
+     */
     public void putWeights(FloatBuffer dest, int points) {
         dest.put(weights, 0, influences * checkPoints(points));
     }

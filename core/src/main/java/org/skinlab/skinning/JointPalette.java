@@ -1,7 +1,5 @@
 package org.skinlab.skinning;
 
-import java.util.function.Supplier;
-
 import org.joml.Matrix4f;
 import org.joml.Quaternionf;
 import org.skinlab.animation.AnimationHelper;
@@ -46,9 +44,11 @@ public final class JointPalette {
     /** Per joint this frame's rigid part D, row-major 3x4: the input of the second pass. */
     private final float[] rigidParts;
     private boolean scaled;
-    /** Where {@link #prepareBones()} finds the bones, asked on its first call (null: none). */
-    private final Supplier<Bones> boneSource;
-    private BoneRows boneRows;
+    /** The bone rows' owner, or null for a palette without bones. */
+    private final BoneRows boneRows;
+    /** Whether the dual quaternions and scales, and the bone rows, follow the current matrices. */
+    private boolean dualQuaternionsReady;
+    private boolean boneRowsReady;
 
     private final DualQuaternion dq = new DualQuaternion();
     /** Scratch for the rare frame without a usable Y axis (see {@link #boneAxisFrame}). */
@@ -70,14 +70,20 @@ public final class JointPalette {
     }
 
     /**
-     * As {@link #JointPalette(float[])} for a palette whose joints have bones
-     * ({@link #prepareBones()}), obtained from {@code bones} on first use.
+     * As {@link #JointPalette(float[])} for a palette whose joints have bones, for the methods
+     * that read them ({@link #boneRows()}).
+     *
+     * @param bindMatrices as {@link #JointPalette(float[])}
+     * @param bones        the bones of the same joints ({@link SkinnedGeometry#bones()}), or null
      */
-    public JointPalette(float[] bindMatrices, Supplier<Bones> bones) {
-        this.boneSource = bones;
+    public JointPalette(float[] bindMatrices, Bones bones) {
         if (bindMatrices.length % 16 != 0) {
             throw new IllegalArgumentException("bind matrices need 16 floats each");
         }
+        if (bones != null && bones.jointCount() != bindMatrices.length / 16) {
+            throw new IllegalArgumentException(bones.jointCount() + " bones for " + bindMatrices.length / 16 + " joints");
+        }
+        this.boneRows = bones == null ? null : new BoneRows(bones);
         joints = bindMatrices.length / 16;
         matrices = new float[12 * joints];
         dualQuaternions = new float[8 * joints];
@@ -101,7 +107,12 @@ public final class JointPalette {
         }
     }
 
-    /** A palette of {@code joints} joints whose bind frames are at the origin (e.g. benchmarks). */
+    /**
+     * A palette of {@code joints} joints whose bind frames are at the origin (e.g. benchmarks).
+     *
+     * @param joints the number of joints, not negative
+     * @return a new palette with identity bind matrices, identity skinning matrices and no bones
+     */
     public static JointPalette withoutBindFrames(int joints) {
         float[] identities = new float[16 * joints];
         for (int j = 0; j < joints; j++) {
@@ -110,21 +121,55 @@ public final class JointPalette {
         return new JointPalette(identities);
     }
 
+    /**
+     * The number of joints.
+     *
+     * @return joints in the palette
+     */
     public int jointCount() {
         return joints;
     }
 
-    /** Per joint 12 floats, row-major 3x4 skinning matrix. Written by the skeleton, read by skinners. */
+    /**
+     * Per joint 12 floats, the row-major 3x4 skinning matrix: read by skinners. Read-only: write
+     * through {@link #writableMatrices()} or {@link #setMatrix}, which tell the palette that what
+     * it derives from the matrices must be derived again.
+     *
+     * @return the matrices, not a copy
+     */
     public float[] matrices() {
         return matrices;
     }
 
-    /** Per joint 8 floats (real x y z w, dual x y z w): the rigid part D, after {@link #prepareDualQuaternions()}. */
+    /**
+     * The matrices' array for writing this frame's skinning matrices into (e.g.
+     * {@link org.skinlab.animation.Skeleton#skinningMatrices}): everything derived from them is
+     * stale from now until the next {@link #prepare}.
+     *
+     * @return the matrices, not a copy
+     */
+    public float[] writableMatrices() {
+        dualQuaternionsReady = false;
+        boneRowsReady = false;
+        return matrices;
+    }
+
+    /**
+     * Per joint 8 floats (real x y z w, dual x y z w): the dual quaternion of the rigid part D,
+     * once {@link #prepare} has run for a method that reads it. Read-only.
+     *
+     * @return the dual quaternions, not a copy
+     */
     public float[] dualQuaternions() {
         return dualQuaternions;
     }
 
-    /** Per joint 12 floats, row-major 3x4: the scale/shear part S, after {@link #prepareDualQuaternions()}. */
+    /**
+     * Per joint 12 floats, row-major 3x4: the scale/shear part S, once {@link #prepare} has run
+     * for a method that reads dual quaternions. Read-only.
+     *
+     * @return the scale parts, not a copy
+     */
     public float[] scales() {
         return scales;
     }
@@ -135,12 +180,18 @@ public final class JointPalette {
      * matrix's determinant (the cofactor alone would turn normals inwards there); without a
      * mirroring joint they use the cofactor as is, which keeps the common case free of that cost.
      * Computed from {@link #matrices()} on each call (9 multiplications per joint).
+     *
+     * @return whether some joint's matrix mirrors
      */
     public boolean mirrorsMatrices() {
         return mirrors(matrices, joints);
     }
 
-    /** As {@link #mirrorsMatrices()} for the DQS scale parts, after {@link #prepareDualQuaternions()}. */
+    /**
+     * As {@link #mirrorsMatrices()} for the DQS scale parts, once prepared.
+     *
+     * @return whether some joint's scale part mirrors
+     */
     public boolean mirrorsScales() {
         return scaled && mirrors(scales, joints);
     }
@@ -158,24 +209,99 @@ public final class JointPalette {
         return false;
     }
 
-    /** True when some joint has a scale part this frame (DQS must run its first phase). */
+    /**
+     * Whether some joint has a scale part this frame (DQS must run its first phase), once prepared.
+     *
+     * @return true when some scale part is not the identity
+     */
     public boolean hasScale() {
         return scaled;
     }
 
-    /** Sets joint {@code j}'s skinning matrix from a JOML matrix (its affine part). */
+    /**
+     * Sets a joint's skinning matrix (as {@link #writableMatrices()}, derived data goes stale).
+     *
+     * @param j      the joint
+     * @param matrix its skinning matrix (the affine part is taken)
+     */
     public void setMatrix(int j, Matrix4f matrix) {
-        AnimationHelper.putRowMajor3x4(matrix, matrices, 12 * j);
+        AnimationHelper.putRowMajor3x4(matrix, writableMatrices(), 12 * j);
     }
 
-    /** Joint {@code j}'s skinning matrix as a JOML matrix. */
+    /**
+     * A joint's skinning matrix as a JOML matrix.
+     *
+     * @param j    the joint
+     * @param dest where to put it
+     * @return dest
+     */
     public Matrix4f getMatrix(int j, Matrix4f dest) {
         return AnimationHelper.getRowMajor3x4(matrices, 12 * j, dest);
     }
 
     /**
-     * Derives each joint's dual quaternion (and scale part) from {@link #matrices()}: once per
-     * frame, before DQS skinning. See the class comment for the split. Allocation-free (except for
+     * Derives from the current matrices what {@code method} reads besides them, unless that is
+     * derived already: the dual quaternions and scale parts for the methods that read them
+     * ({@link SkinningMethod#usesDualQuaternions()}), and the bone rows too for the methods that
+     * read bones ({@link SkinningMethod#usesBones()}). Each is derived once per set of matrices,
+     * however many methods or geometries ask. Allocation-free.
+     *
+     * @param method the method about to skin with this palette
+     * @return this palette
+     * @throws IllegalStateException for a bone method on a palette made without bones
+     */
+    public JointPalette prepare(SkinningMethod method) {
+        if (method.usesDualQuaternions() || method.usesBones()) {
+            prepareDualQuaternions();
+        }
+        if (method.usesBones()) {
+            prepareBones();
+        }
+        return this;
+    }
+
+    /**
+     * Derives everything a palette can carry ({@link #prepare} for every method): for a reader
+     * that may apply any method to this frame, e.g. a renderer drawing two methods side by side.
+     *
+     * @return this palette
+     */
+    public JointPalette prepareAll() {
+        prepareDualQuaternions();
+        if (boneRows != null) {
+            prepareBones();
+        }
+        return this;
+    }
+
+    /**
+     * Makes this palette a copy of {@code source}: its matrices and whatever it has derived from
+     * them, and which of that is current. Allocation-free.
+     *
+     * @param source a palette of as many joints, with bones when this one has them
+     * @throws IllegalArgumentException when the two differ in joints or bones
+     */
+    public void set(JointPalette source) {
+        if (source.joints != joints || (boneRows == null) != (source.boneRows == null)) {
+            throw new IllegalArgumentException("a palette of " + source.joints + " joints"
+                    + (source.boneRows == null ? "" : " with bones") + " copied into one of " + joints
+                    + (boneRows == null ? "" : " with bones"));
+        }
+        System.arraycopy(source.matrices, 0, matrices, 0, matrices.length);
+        System.arraycopy(source.dualQuaternions, 0, dualQuaternions, 0, dualQuaternions.length);
+        System.arraycopy(source.scales, 0, scales, 0, scales.length);
+        System.arraycopy(source.rigidParts, 0, rigidParts, 0, rigidParts.length);
+        if (boneRows != null) {
+            System.arraycopy(source.boneRows.rows(), 0, boneRows.rows(), 0, boneRows.rows().length);
+        }
+        scaled = source.scaled;
+        dualQuaternionsReady = source.dualQuaternionsReady;
+        boneRowsReady = source.boneRowsReady;
+    }
+
+    /**
+     * Derives each joint's dual quaternion (and scale part) from {@link #matrices()}, when not done
+     * for these matrices yet. See the class comment for the split. Allocation-free (except for
      * a posed frame without a usable Y axis, see {@link #boneAxisFrame}).
      *
      * <p>Two passes: the first splits every matrix into its rigid part D and scale part S, the
@@ -183,7 +309,10 @@ public final class JointPalette {
      * roots and divisions per joint; apart, the loops are short enough for the processor to
      * overlap the chains of neighbouring joints (measured in docs/benchmarks.md).
      */
-    public void prepareDualQuaternions() {
+    private void prepareDualQuaternions() {
+        if (dualQuaternionsReady) {
+            return;
+        }
         boolean anyScale = false;
         for (int j = 0; j < joints; j++) {
             anyScale |= split(j);
@@ -196,6 +325,7 @@ public final class JointPalette {
             quaternionOf(d[o], d[o + 1], d[o + 2], d[o + 4], d[o + 5], d[o + 6], d[o + 8], d[o + 9], d[o + 10], q);
             dq.set(q[0], q[1], q[2], q[3], d[o + 3], d[o + 7], d[o + 11]).get(dualQuaternions, 8 * j);
         }
+        dualQuaternionsReady = true;
     }
 
     /**
@@ -450,7 +580,7 @@ public final class JointPalette {
     public static final int BONE_FLOATS = 24;
 
     /**
-     * Per joint {@link #BONE_FLOATS} floats, after {@link #prepareBones()}: what the bone methods
+     * Per joint {@link #BONE_FLOATS} floats, once {@link #prepare} has run for a bone method: what the bone methods
      * ({@link SkinningMethod#usesBones()}) read of this frame, in rows of four (the GPU uploads
      * them as they are). With M the joint's skinning matrix, D its rigid part (the DQS split),
      * h and t its bone's rest head and tail ({@link Bones}, bind space), L = |t - h|:
@@ -465,29 +595,35 @@ public final class JointPalette {
      * The twist is the angle of the joint's rotation relative to its parent's (both D's, so since
      * the bind pose) about its rest bone axis, the twist of the swing-twist split, in (-pi, pi];
      * 0 for a root, whose turns are rigid motions of everything it carries.
+     *
+     * @return the bone rows, not a copy
+     * @throws IllegalStateException for a palette made without bones
      */
     public float[] boneRows() {
         if (boneRows == null) {
-            throw new IllegalStateException("no bones prepared: call prepareBones() first");
+            throw new IllegalStateException("this palette was made without bones");
         }
         return boneRows.rows();
     }
 
     /**
-     * Fills {@link #boneRows()} from this frame's matrices and dual quaternions: after
-     * {@link #prepareDualQuaternions()}, before a bone method skins. Allocation-free after the
-     * first call, which fetches the bones.
+     * Whether the palette was made with bones, so that {@link #boneRows()} exists.
      *
-     * @throws IllegalStateException for a palette made without bones
+     * @return true when made with {@link Bones} (as {@link SkinnedGeometry#newPalette()} does)
      */
-    public void prepareBones() {
+    public boolean hasBones() {
+        return boneRows != null;
+    }
+
+    /** Fills the bone rows from this frame's matrices and dual quaternions, when not done yet. */
+    private void prepareBones() {
         if (boneRows == null) {
-            if (boneSource == null) {
-                throw new IllegalStateException("this palette was made without bones");
-            }
-            boneRows = new BoneRows(boneSource.get());
+            throw new IllegalStateException("this palette was made without bones: its geometry's bones are needed");
         }
-        boneRows.fill(matrices, rigidParts, dualQuaternions, pivots);
+        if (!boneRowsReady) {
+            boneRows.fill(matrices, rigidParts, dualQuaternions, pivots);
+            boneRowsReady = true;
+        }
     }
 
     private static void setIdentity3x4(float[] a, int o) {

@@ -31,16 +31,18 @@ final class MorphedRestShape {
     /** The morphed normals of the mesh's vertices, or null when the morph keeps the base's. */
     private final float[] meshNormals;
 
-    /** @param rest {@code SkinnedGeometry.of(instance)}, kept unmorphed */
+    /**
+     * @param rest {@code SkinnedGeometry.of(instance, nodes)}, kept unmorphed, with its centres of
+     *             rotation when CoR is to skin this shape
+     */
     MorphedRestShape(MeshInstance instance, List<Node> nodes, Morph morph, SkinnedGeometry rest) {
         this.morph = morph;
         this.rest = rest;
-        this.geometry = SkinnedGeometry.of(instance, nodes);
+        SkinnedGeometry own = SkinnedGeometry.of(instance, nodes);
+        // CoR's centres stay those of the rest shape, not recomputed per frame (docs/skinning.md).
+        this.geometry = rest.hasCentresOfRotation() ? own.withCentresOfRotation(rest.centresOfRotation()) : own;
         this.meshPositions = new float[3 * morph.base().positionCount()];
         this.positionOfPoint = PointLayout.of(instance.mesh()).positionOfPoint;
-        // CoR's centres stay those of the rest shape (computed once there, whoever asks first:
-        // a CoR skinner, or a GPU renderer uploading them), not recomputed per frame (docs/skinning.md).
-        geometry.takeCentresFrom(rest);
         Matrix4f m = BindSpace.pointTransform(instance);
         m.get(transform);
         Matrix3f n = m.get3x3(new Matrix3f()).cofactor();

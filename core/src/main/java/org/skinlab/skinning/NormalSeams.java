@@ -18,7 +18,7 @@ import java.util.Set;
  * increase of an edge's jump over the same edge in a baseline deformation (for bulge-free DQS: DQS),
  * so that the coarseness of the mesh, which both share, does not count. All in double.
  */
-public final class NormalSeams {
+final class NormalSeams {
     /** The largest jump: its angle (radians) and the edge's two POSITION entries. */
     public record Jump(double angle, int positionA, int positionB) {
     }

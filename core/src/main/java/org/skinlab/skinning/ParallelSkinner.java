@@ -94,7 +94,11 @@ public final class ParallelSkinner implements Skinner, AutoCloseable {
         }
     }
 
-    /** Threads a frame is split over, the caller's included. */
+    /**
+     * Threads a frame is split over, the caller's included.
+     *
+     * @return the thread count given to the constructor, at least 1
+     */
     public int threads() {
         return workers.length + 1;
     }

@@ -12,12 +12,22 @@ public enum PositionSharing {
     /** Skin every point on its own. */
     NEVER;
 
-    /** The lower-case name used on the command line. */
+    /**
+     * The lower-case name used on the command line.
+     *
+     * @return "auto", "always" or "never"
+     */
     public String key() {
         return name().toLowerCase(java.util.Locale.ROOT);
     }
 
-    /** The sharing for a command-line key, case-insensitive. */
+    /**
+     * The sharing for a command-line key, case-insensitive.
+     *
+     * @param key "auto", "always" or "never", in any case
+     * @return the matching constant
+     * @throws IllegalArgumentException for any other key
+     */
     public static PositionSharing fromKey(String key) {
         for (PositionSharing s : values()) {
             if (s.name().equalsIgnoreCase(key)) {

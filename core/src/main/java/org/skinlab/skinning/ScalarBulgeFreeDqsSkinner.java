@@ -35,6 +35,13 @@ public final class ScalarBulgeFreeDqsSkinner extends AbstractSkinner {
     private final float[] restDistances;
     private final BulgeFreeBinding binding;
 
+    /**
+     * A skinner whose binding ({@link BulgeFreeBinding#of}) is computed now: bind-time work.
+     *
+     * @param geometry the geometry to skin, with its bones
+     * @param normals  how normals move (as DQS moves them); not {@link NormalTransform#NONE}
+     * @throws IllegalArgumentException under {@link NormalTransform#NONE}
+     */
     public ScalarBulgeFreeDqsSkinner(SkinnedGeometry geometry, NormalTransform normals) {
         super(SkinningMethod.BFDQS, "scalar", geometry, normals);
         this.dqs = new ScalarDqsSkinner(geometry, normals);
@@ -75,6 +82,17 @@ public final class ScalarBulgeFreeDqsSkinner extends AbstractSkinner {
      * joint k, rest distance r) towards k's posed bone when it is farther than r from it, to
      * {@link BulgeFreeBinding#pulledDistance}. With {@code matrices} (a palette with scale) the
      * reference distance is {@code |M_k (p - c_rest)|} instead of r. Shared with the vector kernel.
+     *
+     * @param rows     the palette's bone rows ({@link JointPalette#boneRows()}), prepared this frame
+     * @param matrices the palette's skinning matrices when it has scale ({@link JointPalette#hasScale()}),
+     *                 else null
+     * @param rest     the rest positions, 3 floats per point, bind space
+     * @param i        the point
+     * @param k        the palette joint of the point's bone ({@link BulgeFreeBinding#jointArray()})
+     * @param r        the point's rest distance from that bone; unused when {@code matrices} is given
+     * @param spread   the spread of the point's two heaviest influences ({@link BulgeFreeBinding#spread})
+     * @param out      holds the DQS position at {@code o}, replaced by the pulled one
+     * @param o        the offset of the position's x in {@code out}
      */
     public static void pullPoint(float[] rows, float[] matrices, float[] rest, int i, int k, float r, float spread,
             float[] out, int o) {

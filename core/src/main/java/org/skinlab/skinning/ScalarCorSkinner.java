@@ -38,6 +38,15 @@ public final class ScalarCorSkinner extends AbstractSkinner {
     private final ThreadLocal<float[]> scratch = ThreadLocal.withInitial(
             () -> new float[S + SkinningSteps.SCALE_PHASE_FLOATS]);
 
+    /**
+     * A skinner for a geometry bound for CoR: it reads the geometry's arrays and centres in place.
+     *
+     * @param geometry the geometry to skin, with its centres of rotation
+     *                 ({@link SkinnedGeometry#withCentresOfRotation()})
+     * @param normals  how normals move; not {@link NormalTransform#NONE}
+     * @throws IllegalStateException    when the geometry has no centres of rotation
+     * @throws IllegalArgumentException under {@link NormalTransform#NONE}
+     */
     public ScalarCorSkinner(SkinnedGeometry geometry, NormalTransform normals) {
         super(SkinningMethod.COR, "scalar", geometry, normals);
         this.positions = geometry.positionArray();

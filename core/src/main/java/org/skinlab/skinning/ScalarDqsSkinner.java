@@ -34,6 +34,12 @@ public final class ScalarDqsSkinner extends AbstractSkinner {
      */
     private final ThreadLocal<float[]> blended = ThreadLocal.withInitial(() -> new float[53]);
 
+    /**
+     * A skinner that reads the geometry's arrays in place (a morphed rest shape is followed as is).
+     *
+     * @param geometry the geometry to skin
+     * @param normals  how normals move, or {@link NormalTransform#NONE} for positions only
+     */
     public ScalarDqsSkinner(SkinnedGeometry geometry, NormalTransform normals) {
         super(SkinningMethod.DQS, "scalar", geometry, normals);
         this.positions = geometry.positionArray();

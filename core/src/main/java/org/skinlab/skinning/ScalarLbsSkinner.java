@@ -23,6 +23,12 @@ public final class ScalarLbsSkinner extends AbstractSkinner {
     private final float[] weights;
     private final int width;
 
+    /**
+     * A skinner that reads the geometry's arrays in place (a morphed rest shape is followed as is).
+     *
+     * @param geometry the geometry to skin
+     * @param normals  how normals move, or {@link NormalTransform#NONE} for positions only
+     */
     public ScalarLbsSkinner(SkinnedGeometry geometry, NormalTransform normals) {
         super(SkinningMethod.LBS, "scalar", geometry, normals);
         this.positions = geometry.positionArray();

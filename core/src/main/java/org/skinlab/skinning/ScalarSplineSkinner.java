@@ -39,11 +39,27 @@ public final class ScalarSplineSkinner extends AbstractSkinner {
     private static final int NORMAL_MATRIX = 21, SCALE = 30;
     private final ThreadLocal<float[]> scratch = ThreadLocal.withInitial(() -> new float[SCALE + 12]);
 
+    /**
+     * A skinner with the default binding ({@link SplineBinding#of(SkinnedGeometry)}), computed now:
+     * bind-time work.
+     *
+     * @param geometry the geometry to skin, with its bones
+     * @param normals  how normals move; not {@link NormalTransform#NONE}
+     * @throws IllegalArgumentException under {@link NormalTransform#NONE}
+     */
     public ScalarSplineSkinner(SkinnedGeometry geometry, NormalTransform normals) {
         this(geometry, normals, SplineBinding.of(geometry));
     }
 
-    /** A skinner with a binding of the caller's choice of stiffness (made for this geometry). */
+    /**
+     * A skinner with a binding of the caller's choice of stiffness (made for this geometry).
+     *
+     * @param geometry the geometry to skin
+     * @param normals  how normals move; not {@link NormalTransform#NONE}
+     * @param binding  the binding of this geometry's points ({@link SplineBinding#of(SkinnedGeometry, float)})
+     * @throws IllegalArgumentException when the binding's influence slots do not match the geometry's,
+     *                                  or under {@link NormalTransform#NONE}
+     */
     public ScalarSplineSkinner(SkinnedGeometry geometry, NormalTransform normals, SplineBinding binding) {
         super(SkinningMethod.SPLINE, "scalar", geometry, normals);
         if (binding.influencesPerPoint() != geometry.influencesPerPoint()

@@ -16,7 +16,7 @@ package org.skinlab.skinning;
  * The joints' scale beyond the bone's stretch (a radial squash, shear) is not applied: each
  * influence is rigid plus the stretch along its bone (docs/skinning.md, "Stretchable and twistable
  * bones"). Normals ignore the change of e across the surface, as CoR's ignore the centre's. The
- * palette must have its bone rows prepared ({@link JointPalette#prepareBones()}).
+ * palette must have its bone rows prepared ({@link JointPalette#prepare}).
  */
 public final class ScalarStbsSkinner extends AbstractSkinner {
     private final float[] positions;
@@ -33,7 +33,14 @@ public final class ScalarStbsSkinner extends AbstractSkinner {
     private static final int T = 12, R = T + StbsInfluence.FLOATS, B = R + 9;
     private final ThreadLocal<float[]> scratch = ThreadLocal.withInitial(() -> new float[B + 12]);
 
-    /** @param method {@link SkinningMethod#STBS_LBS} or {@link SkinningMethod#STBS_DQS} */
+    /**
+     * A skinner that reads the geometry's arrays in place; its bones come from the palette's bone rows.
+     *
+     * @param method   {@link SkinningMethod#STBS_LBS} or {@link SkinningMethod#STBS_DQS}
+     * @param geometry the geometry to skin
+     * @param normals  how normals move; not {@link NormalTransform#NONE}
+     * @throws IllegalArgumentException for another method, or under {@link NormalTransform#NONE}
+     */
     public ScalarStbsSkinner(SkinningMethod method, SkinnedGeometry geometry, NormalTransform normals) {
         super(method, "scalar", geometry, normals);
         if (method != SkinningMethod.STBS_LBS && method != SkinningMethod.STBS_DQS) {

@@ -66,20 +66,10 @@ public final class SkinnedGeometry {
     private final boolean windingMirrored;
     /** Per palette joint, the palette joint of its nearest ancestor node that is one, else -1. */
     private final int[] jointParents;
-    /** The bone methods' segments, computed on first request ({@link Bones}). */
-    private volatile Bones bones;
-    /** CoR skinning's centres, computed on first request (CentresOfRotation). */
-    private volatile float[] centresOfRotation;
-    /**
-     * For a {@link #sharedPositions()} geometry, the geometry whose positions it holds: its centres
-     * come from there, since its mesh's triangles index that geometry's points, not its own. Set
-     * by that geometry's constructor, before either is published (and reached through its final
-     * field, so visible wherever it is).
-     */
-    private SkinnedGeometry positionsOf;
-    /** For a geometry whose rest shape morphs per frame, the unmorphed one that owns its centres. */
-    private volatile SkinnedGeometry centresOfRestShape;
-
+    /** The bones of the palette's joints, for the methods that read them ({@link Bones}). */
+    private final Bones bones;
+    /** CoR skinning's centre per point, or null when the geometry was not bound for CoR. */
+    private final float[] centres;
     /**
      * The arrays as they are, without copying or checking them beyond the palette's parents;
      * {@code deformationOfPoint} and {@code sharedPositions} are both null or both set (see the
@@ -106,15 +96,39 @@ public final class SkinnedGeometry {
         this.pointOfPosition = pointOfPosition;
         this.deformationOfPoint = deformationOfPoint;
         this.sharedPositions = sharedPositions;
-        if (sharedPositions != null) {
-            sharedPositions.positionsOf = this;
-        }
         this.windingMirrored = windingMirrored;
+        this.centres = null;
+        // Last: the bones read the fields above.
+        this.bones = Bones.of(this);
+    }
+
+    /** {@code g} with centres of rotation, and {@code shared} as its shared positions. */
+    private SkinnedGeometry(SkinnedGeometry g, float[] centres, SkinnedGeometry shared) {
+        this.instance = g.instance;
+        this.jointParents = g.jointParents;
+        this.vertexCount = g.vertexCount;
+        this.pointCount = g.pointCount;
+        this.positions = g.positions;
+        this.normals = g.normals;
+        this.influences = g.influences;
+        this.joints = g.joints;
+        this.weights = g.weights;
+        this.jointNodes = g.jointNodes;
+        this.bindMatrices = g.bindMatrices;
+        this.pointOfPosition = g.pointOfPosition;
+        this.deformationOfPoint = g.deformationOfPoint;
+        this.sharedPositions = shared;
+        this.windingMirrored = g.windingMirrored;
+        this.bones = g.bones;
+        this.centres = centres;
     }
 
     /**
      * The runtime geometry of a placed mesh, skinned or static, without the scene's node tree: no
      * joint has a parent ({@link #jointParent}), so each bone of {@link #bones()} is a leaf.
+     *
+     * @param instance the placed mesh; a static one gives a geometry with one joint, its own node
+     * @return a new geometry, without centres of rotation
      */
     public static SkinnedGeometry of(MeshInstance instance) {
         return of(instance, List.of());
@@ -124,6 +138,10 @@ public final class SkinnedGeometry {
      * The runtime geometry of a placed mesh of a model whose nodes are {@code nodes}
      * ({@link org.skinlab.model.Model#nodes()}): each joint's parent is the palette joint of its
      * nearest ancestor node that is one.
+     *
+     * @param instance the placed mesh; a static one gives a geometry with one joint, its own node
+     * @param nodes    the model's nodes, indexed as the instance's node indices; empty for no hierarchy
+     * @return a new geometry, without centres of rotation
      */
     public static SkinnedGeometry of(MeshInstance instance, List<Node> nodes) {
         return MeshGeometry.build(instance, nodes);
@@ -139,6 +157,9 @@ public final class SkinnedGeometry {
      * @param joints       palette joint per influence
      * @param weights      weight per influence
      * @param bindMatrices 16 floats column-major per joint (identity where there is no bind frame)
+     * @return a new geometry using these arrays, not copies; every joint is a root, no point shares a position
+     * @throws IllegalArgumentException when the array sizes disagree, a weight is negative or not finite,
+     *                                  or a joint index is outside the palette
      */
     public static SkinnedGeometry fromArrays(float[] positions, float[] normals, int influences, int[] joints,
             float[] weights, float[] bindMatrices) {
@@ -150,6 +171,18 @@ public final class SkinnedGeometry {
     /**
      * As {@link #fromArrays(float[], float[], int, int[], float[], float[])} with a joint
      * hierarchy: {@code jointParents[j]} is joint j's parent joint, or -1 for a root.
+     *
+     * @param positions    3 floats per point
+     * @param normals      3 floats per point
+     * @param influences   influences per point
+     * @param joints       palette joint per influence
+     * @param weights      weight per influence
+     * @param bindMatrices 16 floats column-major per joint (identity where there is no bind frame)
+     * @param jointParents per joint, its parent joint (an earlier one), or -1 for a root; copied
+     * @return a new geometry using the other arrays, not copies; no point shares a position
+     * @throws IllegalArgumentException when the array sizes disagree, a parent is not -1 or an earlier
+     *                                  joint, a weight is negative or not finite, or a joint index is
+     *                                  outside the palette
      */
     public static SkinnedGeometry fromArrays(float[] positions, float[] normals, int influences, int[] joints,
             float[] weights, float[] bindMatrices, int[] jointParents) {
@@ -210,55 +243,104 @@ public final class SkinnedGeometry {
      * both): the triangles' winding in bind space is then reversed against their (outward)
      * normals, so a renderer that culls back faces by winding must flip its front face for this
      * geometry (when the skinning matrices do not mirror it back).
+     *
+     * @return true when the bind-space winding is reversed against the file's
      */
     public boolean windingMirrored() {
         return windingMirrored;
     }
 
-    /** The placed mesh this geometry was built from, or null for {@link #fromArrays}. */
+    /**
+     * The placed mesh this geometry was built from, or null for {@link #fromArrays}.
+     *
+     * @return the instance, or null
+     */
     public MeshInstance instance() {
         return instance;
     }
 
-    /** The mesh, or null for {@link #fromArrays}. */
+    /**
+     * The mesh, or null for {@link #fromArrays}.
+     *
+     * @return the instance's mesh, or null
+     */
     public Mesh mesh() {
         return instance == null ? null : instance.mesh();
     }
 
+    /**
+     * Whether the placed mesh has a skin. A static mesh's geometry has one joint, its own node with
+     * the identity bind matrix; a geometry {@link #fromArrays} counts as skinned.
+     *
+     * @return false only for a geometry built from a static mesh instance
+     */
     public boolean isSkinned() {
         return instance == null || instance.isSkinned();
     }
 
-    /** Number of points (render vertices, then unused positions). */
+    /**
+     * Number of points (render vertices, then unused positions).
+     *
+     * @return the point count: a third of the length of {@link #positionArray()}
+     */
     public int pointCount() {
         return pointCount;
     }
 
-    /** Number of render vertices: points {@code [0, vertexCount)} are the mesh's vertices in order. */
+    /**
+     * Number of render vertices: points {@code [0, vertexCount)} are the mesh's vertices in order.
+     *
+     * @return the vertex count, at most {@link #pointCount()}; equal to it for {@link #fromArrays}
+     */
     public int vertexCount() {
         return vertexCount;
     }
 
-    /** The point that carries position {@code p} of the mesh's POSITION source. */
+    /**
+     * The point that carries position {@code p} of the mesh's POSITION source.
+     *
+     * @param p an index in the POSITION source, {@code [0, positionCount())}
+     * @return the point carrying it (the first render vertex using it, or a point past the vertices when
+     *         no vertex does); {@code p} itself for {@link #fromArrays}
+     */
     public int pointOfPosition(int p) {
         return pointOfPosition[p];
     }
 
+    /**
+     * Number of entries of the mesh's POSITION source, each carried by at least one point
+     * ({@link #pointOfPosition(int)}).
+     *
+     * @return the position count, at most {@link #pointCount()}; equal to it for {@link #fromArrays}
+     */
     public int positionCount() {
         return pointOfPosition.length;
     }
 
-    /** Influences per point (fixed width, zero-weight padded). */
+    /**
+     * Influences per point (fixed width, zero-weight padded).
+     *
+     * @return the stride of {@link #jointArray()} and {@link #weightArray()}, at least 1
+     */
     public int influencesPerPoint() {
         return influences;
     }
 
-    /** Palette size: skin joints plus the bind-shape pseudo-joint when used. */
+    /**
+     * Palette size: skin joints plus the bind-shape pseudo-joint when used.
+     *
+     * @return the number of skinning matrices a palette for this geometry holds
+     */
     public int jointCount() {
         return jointNodes.length;
     }
 
-    /** Scene node of palette joint {@code j}, -1 for the bind-shape pseudo-joint. */
+    /**
+     * Scene node of palette joint {@code j}, -1 for the bind-shape pseudo-joint.
+     *
+     * @param j a palette joint, {@code [0, jointCount())}
+     * @return the node's index in the model's nodes, or -1 (also for every joint of {@link #fromArrays})
+     */
     public int jointNode(int j) {
         return jointNodes[j];
     }
@@ -267,27 +349,47 @@ public final class SkinnedGeometry {
     // frame. Callers must not modify them (only MorphedRestShape rewrites the positions of the
     // geometry it owns, between frames).
 
-    /** Positions in bind space (after the bind shape matrix), 3 per point. Read-only. */
+    /**
+     * Positions in bind space (after the bind shape matrix), 3 per point. Read-only.
+     *
+     * @return x, y, z per point, not a copy
+     */
     public float[] positionArray() {
         return positions;
     }
 
-    /** Normals in bind space, 3 per point (zero where the mesh has none). Read-only. */
+    /**
+     * Normals in bind space, 3 per point (zero where the mesh has none). Read-only.
+     *
+     * @return x, y, z per point, not a copy
+     */
     public float[] normalArray() {
         return normals;
     }
 
-    /** Palette joint of each influence, {@link #influencesPerPoint()} per point. Read-only. */
+    /**
+     * Palette joint of each influence, {@link #influencesPerPoint()} per point. Read-only.
+     *
+     * @return the joints, point-major, dominant influence first; not a copy
+     */
     public int[] jointArray() {
         return joints;
     }
 
-    /** Normalised weight of each influence, {@link #influencesPerPoint()} per point. Read-only. */
+    /**
+     * Normalised weight of each influence, {@link #influencesPerPoint()} per point. Read-only.
+     *
+     * @return the weights, point-major and parallel to {@link #jointArray()}; not a copy
+     */
     public float[] weightArray() {
         return weights;
     }
 
-    /** Scene node per palette joint (-1: no node, identity world). Read-only. */
+    /**
+     * Scene node per palette joint (-1: no node, identity world). Read-only.
+     *
+     * @return {@link #jointCount()} node indices, not a copy
+     */
     public int[] jointNodeArray() {
         return jointNodes;
     }
@@ -295,6 +397,8 @@ public final class SkinnedGeometry {
     /**
      * Per palette joint, 16 floats column-major: INV_BIND_MATRIX (the identity for the bind-shape
      * pseudo-joint; the bind shape matrix is in the points already). Read-only.
+     *
+     * @return {@code 16 * jointCount()} floats, not a copy
      */
     public float[] bindMatrixArray() {
         return bindMatrices;
@@ -304,6 +408,8 @@ public final class SkinnedGeometry {
      * The geometry whose points are this one's positions (source order, zero normals, the same
      * influences, joints and bind matrices), when some position is carried by more than one point;
      * null when every position has its own point. See the class comment.
+     *
+     * @return the per-position geometry, or null
      */
     public SkinnedGeometry sharedPositions() {
         return sharedPositions;
@@ -312,89 +418,111 @@ public final class SkinnedGeometry {
     /**
      * Per point, the point of {@link #sharedPositions()} whose deformation it takes its position
      * and normal matrix from; null when positions are not shared. Read-only.
+     *
+     * @return one index into {@link #sharedPositions()}'s points per point, not a copy; or null
      */
     public int[] deformationOfPointArray() {
         return deformationOfPoint;
     }
 
     /**
-     * The centre of rotation of every point (3 floats per point, bind space) for CoR skinning,
-     * computed on the first call ({@link CentresOfRotation} with the paper's parameters, in parallel; read from
-     * its disk cache when one is set) and kept.
+     * Whether this geometry carries CoR's centres of rotation ({@link #withCentresOfRotation()}).
+     *
+     * @return true when {@link #centresOfRotation()} has them
+     */
+    public boolean hasCentresOfRotation() {
+        return centres != null;
+    }
+
+    /**
+     * The centre of rotation of every point for CoR skinning: 3 floats per point, bind space.
      * Read-only.
+     *
+     * @return the centres, not a copy
+     * @throws IllegalStateException when the geometry was not bound for CoR: a geometry has
+     *                               centres only from {@link #withCentresOfRotation()}
      */
     public float[] centresOfRotation() {
-        float[] c = centresOfRotation;
-        if (c == null) {
-            synchronized (this) {
-                c = centresOfRotation;
-                if (c == null) {
-                    SkinnedGeometry rest = centresOfRestShape;
-                    c = rest != null ? rest.centresOfRotation()
-                            : positionsOf != null ? positionsOf.centresOfSharedPositions()
-                            : CentresOfRotation.computeOrLoad(this, CentresOfRotation.Parameters.DEFAULT,
-                                    CentresOfRotation.Progress.NONE);
-                    centresOfRotation = c;
-                }
+        if (centres == null) {
+            throw new IllegalStateException(this + " has no centres of rotation: bind it for CoR first"
+                    + " (SkinnedGeometry.withCentresOfRotation(), or a SkinnedModel that skins with COR)");
+        }
+        return centres;
+    }
+
+    /**
+     * This geometry with CoR's centres of rotation: computed now with the paper's parameters, in
+     * parallel ({@link CentresOfRotation#computeOrLoad}, from its disk cache when one is set and
+     * holds them). Bind-time work, up to a second for a large character: run it where a model is
+     * loaded, not on a frame's thread.
+     *
+     * @return a geometry with the same arrays and the centres; this one when it has them already
+     */
+    public SkinnedGeometry withCentresOfRotation() {
+        return centres != null ? this : withCentresOfRotation(CentresOfRotation.computeOrLoad(this,
+                CentresOfRotation.Parameters.DEFAULT, CentresOfRotation.Progress.NONE));
+    }
+
+    /**
+     * This geometry with the given centres of rotation (e.g. computed with other parameters, or
+     * those of the unmorphed rest shape of a morphing mesh). Its {@link #sharedPositions()}
+     * get the centre of a point that carries each position.
+     *
+     * @param centres 3 floats per point, bind space; kept, not copied
+     * @return a geometry with the same arrays and these centres
+     */
+    public SkinnedGeometry withCentresOfRotation(float[] centres) {
+        if (centres.length != 3 * pointCount) {
+            throw new IllegalArgumentException(centres.length + " floats of centres for " + pointCount + " points");
+        }
+        SkinnedGeometry shared = sharedPositions;
+        if (shared != null) {
+            // A position no point carries keeps itself.
+            float[] perPosition = shared.positionArray().clone();
+            for (int i = 0; i < pointCount; i++) {
+                System.arraycopy(centres, 3 * i, perPosition, 3 * deformationOfPoint[i], 3);
             }
+            shared = new SkinnedGeometry(shared, perPosition, null);
         }
-        return c;
+        return new SkinnedGeometry(this, centres, shared);
     }
 
     /**
-     * Makes this geometry's centres of rotation those of {@code restShape}, the same mesh with the
-     * file's morph weights, computed there when first asked for: a geometry whose positions a
-     * morph rewrites per frame ({@link MorphedRestShape}) keeps the centres of its rest shape.
+     * Palette joint {@code j}'s parent joint, or -1 (a root, or no node tree known).
+     *
+     * @param j a palette joint, {@code [0, jointCount())}
+     * @return the parent's palette index, or -1
      */
-    void takeCentresFrom(SkinnedGeometry restShape) {
-        centresOfRestShape = restShape;
-    }
-
-    /**
-     * The centres of {@link #sharedPositions()}' points, one per position: every point carrying a
-     * position has that position's centre ({@link CentresOfRotation#compute}); a position no point
-     * carries keeps itself.
-     */
-    private float[] centresOfSharedPositions() {
-        float[] perPoint = centresOfRotation();
-        float[] perPosition = sharedPositions.positionArray().clone();
-        for (int i = 0; i < pointCount; i++) {
-            System.arraycopy(perPoint, 3 * i, perPosition, 3 * deformationOfPoint[i], 3);
-        }
-        return perPosition;
-    }
-
-    /** Palette joint {@code j}'s parent joint, or -1 (a root, or no node tree known). */
     public int jointParent(int j) {
         return jointParents[j];
     }
 
     /**
      * The bones of the palette's joints (segments in bind space) for the methods that read them
-     * ({@link SkinningMethod#usesBones()}), computed on the first call and kept; a geometry whose
-     * rest shape morphs has those of its unmorphed rest shape.
+     * ({@link SkinningMethod#usesBones()}), derived when the geometry was built.
+     *
+     * @return the bones
      */
     public Bones bones() {
-        Bones b = bones;
-        if (b == null) {
-            synchronized (this) {
-                b = bones;
-                if (b == null) {
-                    SkinnedGeometry rest = centresOfRestShape;
-                    b = rest != null ? rest.bones() : Bones.of(this);
-                    bones = b;
-                }
-            }
-        }
-        return b;
+        return bones;
     }
 
-    /** A palette sized for this geometry, with its DQS pivots and its bones. */
+    /**
+     * A palette sized for this geometry, with its DQS pivots and its bones.
+     *
+     * @return a new palette holding identity matrices
+     */
     public JointPalette newPalette() {
-        return new JointPalette(bindMatrices, this::bones);
+        return new JointPalette(bindMatrices, bones);
     }
 
-    /** Copies the deformed positions of points into position order (3 floats per POSITION entry). */
+    /**
+     * Copies the deformed positions of points into position order (3 floats per POSITION entry).
+     *
+     * @param pointPositions 3 floats per point, as a skinner writes them
+     * @param dest           receives 3 floats per POSITION entry; at least {@code 3 * positionCount()} long
+     * @return {@code dest}
+     */
     public float[] positionsInSourceOrder(float[] pointPositions, float[] dest) {
         for (int p = 0; p < pointOfPosition.length; p++) {
             System.arraycopy(pointPositions, 3 * pointOfPosition[p], dest, 3 * p, 3);

@@ -1,7 +1,9 @@
 package org.skinlab.skinning;
 
 import java.util.ArrayList;
+import java.util.EnumSet;
 import java.util.List;
+import java.util.Set;
 
 import org.skinlab.animation.AnimationSampler;
 import org.skinlab.animation.BindPose;
@@ -15,9 +17,15 @@ import org.skinlab.model.Model;
 
 /**
  * A model ready to deform, frame by frame: its skeleton, one clip's sampler, and per placed mesh
- * a {@link SkinnedGeometry}, a {@link JointPalette} and a skinner for each method. The per-frame
- * path is {@link #pose} (sample, evaluate, skinning matrices) then {@link #skin} per geometry;
- * neither allocates.
+ * a {@link SkinnedGeometry}, a {@link JointPalette} and a skinner for each method it was bound
+ * for. The per-frame path is {@link #pose} (sample, evaluate, skinning matrices) then
+ * {@link #skin} per geometry; neither allocates.
+ *
+ * <p><b>Bind time and frame time.</b> The constructor does all the bind-time work (each
+ * geometry's layout and bones, CoR's centres of rotation, every method's skinner with its
+ * bindings): run it where a model is loaded, e.g. on a loader thread. After it nothing is
+ * computed on first use: a getter returns what the constructor built, and asking for a method the
+ * model was not bound for fails.
  *
  * <p>A placed mesh whose morph weights the clip animates gets its own geometry
  * ({@link MorphedRestShape}) whose rest positions (and normals) {@link #pose} rewrites before
@@ -34,8 +42,7 @@ public final class SkinnedModel {
     private final Pose pose;
     private final List<SkinnedGeometry> geometries;
     private final JointPalette[] palettes;
-    private final boolean[] dualQuaternionsReady;
-    private final boolean[] bonesReady;
+    private final Set<SkinningMethod> methods;
     private final Skinner[][] skinners;
     private final NormalTransform normals;
     private final MorphWeightSampler morphSampler;
@@ -47,10 +54,41 @@ public final class SkinnedModel {
     private final MorphedRestShape[] morphed;
 
     /**
-     * @param clip the clip to play, or null to keep the model at rest
+     * A model bound for every method that can move its normals as asked: all of them, or for
+     * positions only ({@link NormalTransform#NONE}) those with such a kernel
+     * ({@link SkinningMethod#skinsPositionsOnly()}).
+     *
+     * @param model   the model
+     * @param clip    the clip to play, or null to keep the model at rest
      * @param normals how the skinners move normals
      */
     public SkinnedModel(Model model, AnimationClip clip, NormalTransform normals) {
+        this(model, clip, normals, methodsFor(normals));
+    }
+
+    private static Set<SkinningMethod> methodsFor(NormalTransform normals) {
+        Set<SkinningMethod> all = EnumSet.allOf(SkinningMethod.class);
+        if (normals == NormalTransform.NONE) {
+            all.removeIf(m -> !m.skinsPositionsOnly());
+        }
+        return all;
+    }
+
+    /**
+     * A model bound for the given methods: their skinners and what they need at bind time (CoR's
+     * centres only when {@code methods} holds {@link SkinningMethod#COR}).
+     *
+     * @param model   the model
+     * @param clip    the clip to play, or null to keep the model at rest
+     * @param normals how the skinners move normals
+     * @param methods the methods {@link #skin} and {@link #skinner} will be asked for (at least one)
+     */
+    public SkinnedModel(Model model, AnimationClip clip, NormalTransform normals, Set<SkinningMethod> methods) {
+        if (methods.isEmpty()) {
+            throw new IllegalArgumentException("a skinned model needs at least one method");
+        }
+        this.methods = Set.copyOf(methods);
+        boolean centres = methods.contains(SkinningMethod.COR);
         this.model = model;
         this.normals = normals;
         this.skeleton = Skeleton.of(model);
@@ -64,22 +102,19 @@ public final class SkinnedModel {
         List<SkinnedGeometry> list = new ArrayList<>();
         for (MeshInstance instance : model.instances()) {
             int g = list.size();
-            list.add(morphSampler.animates(g) ? morph(g, instance, SkinnedGeometry.of(instance, model.nodes()))
-                    : SkinnedGeometry.of(instance, model.nodes()));
+            SkinnedGeometry geometry = SkinnedGeometry.of(instance, model.nodes());
+            if (centres) {
+                geometry = geometry.withCentresOfRotation();
+            }
+            list.add(morphSampler.animates(g) ? morph(g, instance, geometry) : geometry);
         }
         this.geometries = List.copyOf(list);
         int n = geometries.size();
         palettes = new JointPalette[n];
-        dualQuaternionsReady = new boolean[n];
-        bonesReady = new boolean[n];
-        skinners = new Skinner[n][SkinningMethod.values().length];
+        skinners = new Skinner[n][];
         for (int g = 0; g < n; g++) {
-            SkinnedGeometry geometry = geometries.get(g);
-            palettes[g] = geometry.newPalette();
-            // LBS's and DQS's skinners at once; CoR's on first use (its centres take a precomputation).
-            for (SkinningMethod m : new SkinningMethod[] {SkinningMethod.LBS, SkinningMethod.DQS}) {
-                skinners[g][m.ordinal()] = newSkinner(g, m);
-            }
+            palettes[g] = geometries.get(g).newPalette();
+            skinners[g] = newSkinners(g);
         }
         pose(sampler.start(), RotationInterpolation.SLERP);
     }
@@ -90,6 +125,8 @@ public final class SkinnedModel {
      * its pose and palettes, so each copy poses at its own time and on its own thread with the
      * memory of a palette set instead of a whole model (and CoR's centres are computed once per
      * geometry, not per copy). Call it on the thread that drives this model.
+     *
+     * @return a new character bound for the same methods
      */
     public SkinnedModel newCharacter() {
         return new SkinnedModel(this);
@@ -98,6 +135,7 @@ public final class SkinnedModel {
     private SkinnedModel(SkinnedModel template) {
         this.model = template.model;
         this.normals = template.normals;
+        this.methods = template.methods;
         this.skeleton = template.skeleton;
         this.sampler = template.sampler;
         this.bindPose = template.bindPose;
@@ -109,27 +147,34 @@ public final class SkinnedModel {
         List<SkinnedGeometry> list = new ArrayList<>(template.geometries);
         int n = list.size();
         palettes = new JointPalette[n];
-        dualQuaternionsReady = new boolean[n];
-        bonesReady = new boolean[n];
         skinners = new Skinner[n][];
         for (int g = 0; g < n; g++) {
             if (template.morphed[g] != null) {
                 // A morphing mesh's rest shape follows this character's time: its own geometry.
                 list.set(g, morph(g, model.instances().get(g), template.morphed[g].rest()));
-                skinners[g] = new Skinner[SkinningMethod.values().length];
-            } else {
-                skinners[g] = template.skinners[g].clone();
             }
             palettes[g] = list.get(g).newPalette();
         }
         // The same list when nothing morphs: a crowd shares its geometries.
         this.geometries = morphSampler.animatesAny() ? List.copyOf(list) : template.geometries;
+        for (int g = 0; g < n; g++) {
+            skinners[g] = morphed[g] != null ? newSkinners(g) : template.skinners[g];
+        }
         pose(sampler.start(), RotationInterpolation.SLERP);
     }
 
     private SkinnedGeometry morph(int g, MeshInstance instance, SkinnedGeometry rest) {
         morphed[g] = new MorphedRestShape(instance, model.nodes(), morphSampler.morph(g), rest);
         return morphed[g].geometry();
+    }
+
+    /** Geometry {@code g}'s skinner for each bound method, indexed by ordinal (null for the others). */
+    private Skinner[] newSkinners(int g) {
+        Skinner[] made = new Skinner[SkinningMethod.values().length];
+        for (SkinningMethod m : methods) {
+            made[m.ordinal()] = newSkinner(g, m);
+        }
+        return made;
     }
 
     private Skinner newSkinner(int g, SkinningMethod method) {
@@ -142,30 +187,68 @@ public final class SkinnedModel {
                 morphed[g].morphsNormals() ? PositionSharing.NEVER : PositionSharing.AUTO);
     }
 
-    /** The model with its first clip (or at rest when it has none) and exact normals. */
+    /**
+     * The model with its first clip (or at rest when it has none) and exact normals, bound for
+     * every method.
+     *
+     * @param model the model
+     * @return a skinned model posed at the clip's start
+     */
     public static SkinnedModel of(Model model) {
         return new SkinnedModel(model, model.clips().isEmpty() ? null : model.clips().get(0),
                 NormalTransform.INVERSE_TRANSPOSE);
     }
 
+    /**
+     * The model this was built from.
+     *
+     * @return the model
+     */
     public Model model() {
         return model;
     }
 
+    /**
+     * The model's skeleton.
+     *
+     * @return the skeleton, shared by the characters of a crowd
+     */
     public Skeleton skeleton() {
         return skeleton;
     }
 
+    /**
+     * The sampler of the clip played (a rest sampler when there is none).
+     *
+     * @return the sampler
+     */
     public AnimationSampler sampler() {
         return sampler;
     }
 
-    /** The current pose (read-only use). */
+    /**
+     * The methods this model was bound for: those {@link #skin} and {@link #skinner} accept.
+     *
+     * @return an immutable set
+     */
+    public Set<SkinningMethod> methods() {
+        return methods;
+    }
+
+    /**
+     * The current pose.
+     *
+     * @return the pose (read-only use)
+     */
     public Pose pose() {
         return pose;
     }
 
-    /** One geometry per placed mesh, in {@link Model#instances()} order. */
+    /**
+     * One geometry per placed mesh, in {@link Model#instances()} order.
+     *
+     * @return an immutable list
+     */
     public List<SkinnedGeometry> geometries() {
         return geometries;
     }
@@ -174,52 +257,38 @@ public final class SkinnedModel {
      * Whether geometry {@code g}'s rest positions follow animated morph weights: its
      * {@link SkinnedGeometry#positionArray()} then changes with every {@link #pose} (a renderer
      * that skins on the GPU uploads them per frame).
+     *
+     * @param g the geometry
+     * @return true when its rest shape morphs
      */
     public boolean morphs(int g) {
         return morphed[g] != null;
     }
 
-    /** The palette of geometry {@code g}, holding the skinning matrices of the current pose. */
+    /**
+     * The palette of geometry {@code g}, holding the skinning matrices of the current pose; call
+     * its {@link JointPalette#prepare} for what a method reads besides them.
+     *
+     * @param g the geometry
+     * @return its palette
+     */
     public JointPalette palette(int g) {
         return palettes[g];
     }
 
     /**
-     * Fills the dual quaternions and scale parts of palette {@code g} for the current pose (once:
-     * later calls and DQS skinning reuse them), for a caller that hands the whole palette on.
+     * The skinner geometry {@code g} uses for a method.
+     *
+     * @param g      the geometry
+     * @param method one of {@link #methods()}
+     * @return the skinner, made when this model was built
+     * @throws IllegalArgumentException for a method the model was not bound for
      */
-    public JointPalette preparePalette(int g) {
-        if (!dualQuaternionsReady[g]) {
-            palettes[g].prepareDualQuaternions();
-            dualQuaternionsReady[g] = true;
-        }
-        return palettes[g];
-    }
-
-    /**
-     * As {@link #preparePalette(int)}, and fills the palette's bone rows for the current pose
-     * ({@link JointPalette#prepareBones()}, once), for the methods that read them.
-     */
-    public JointPalette prepareBones(int g) {
-        preparePalette(g);
-        if (!bonesReady[g]) {
-            palettes[g].prepareBones();
-            bonesReady[g] = true;
-        }
-        return palettes[g];
-    }
-
-    /** The palette of geometry {@code g} prepared for a method: what {@link #skin} hands its skinner. */
-    public JointPalette preparePalette(int g, SkinningMethod method) {
-        return method.usesBones() ? prepareBones(g) : method.usesDualQuaternions() ? preparePalette(g) : palettes[g];
-    }
-
-    /** The skinner geometry {@code g} uses for a method (made on first use). */
     public Skinner skinner(int g, SkinningMethod method) {
         Skinner s = skinners[g][method.ordinal()];
         if (s == null) {
-            s = newSkinner(g, method);
-            skinners[g][method.ordinal()] = s;
+            throw new IllegalArgumentException(method + " was not bound: this model skins with " + methods
+                    + " (bind it with the methods it will use: new SkinnedModel(model, clip, normals, methods))");
         }
         return s;
     }
@@ -228,6 +297,9 @@ public final class SkinnedModel {
      * Poses the model at clip time {@code clipTime} (seconds; clamped to the keys of each
      * channel): samples the clip, evaluates the skeleton and fills every palette, and morphs the
      * rest shape of every mesh whose weights the clip animates.
+     *
+     * @param clipTime  seconds in the clip's time line
+     * @param rotations how rotation keys are interpolated
      */
     public void pose(float clipTime, RotationInterpolation rotations) {
         sampler.sample(clipTime, rotations, pose);
@@ -271,17 +343,20 @@ public final class SkinnedModel {
         for (int g = 0; g < palettes.length; g++) {
             SkinnedGeometry geometry = geometries.get(g);
             skeleton.skinningMatrices(pose, geometry.jointNodeArray(), geometry.bindMatrixArray(),
-                    palettes[g].matrices());
-            dualQuaternionsReady[g] = false;
-            bonesReady[g] = false;
+                    palettes[g].writableMatrices());
         }
     }
 
     /**
      * Deforms geometry {@code g} in the current pose: 3 floats per point into each output array
-     * (size {@code 3 * pointCount()}). DQS derives the palette's dual quaternions once per pose.
+     * (size {@code 3 * pointCount()}). The palette derives what the method reads once per pose.
+     *
+     * @param g            the geometry
+     * @param method       one of {@link #methods()}
+     * @param outPositions the deformed positions
+     * @param outNormals   the deformed normals
      */
     public void skin(int g, SkinningMethod method, float[] outPositions, float[] outNormals) {
-        skinner(g, method).skinAll(preparePalette(g, method), outPositions, outNormals);
+        skinner(g, method).skinAll(palettes[g].prepare(method), outPositions, outNormals);
     }
 }

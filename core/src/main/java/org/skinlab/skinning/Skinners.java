@@ -32,12 +32,38 @@ public final class Skinners {
      * The fastest skinner available for the geometry; for one that shares positions
      * ({@link SkinnedGeometry#sharedPositions()}) the fastest kernel on its positions and the fastest
      * {@link DeformationExpansion}.
+     *
+     * <p>Bind-time work: a method's kernel computes its bindings here (BFDQS's, SPLINE's), and a
+     * SIMD kernel copies the geometry into its layout; make skinners where a model is loaded.
+     *
+     * @param method   the method to skin with
+     * @param geometry the geometry to bind the skinner to; for {@link SkinningMethod#COR} one with
+     *                 centres of rotation ({@link SkinnedGeometry#withCentresOfRotation()})
+     * @param normals  how normals move; {@link NormalTransform#NONE} only for a method whose
+     *                 {@link SkinningMethod#skinsPositionsOnly()} holds
+     * @return a new skinner, sharing positions where that pays ({@link PositionSharing#AUTO})
+     * @throws IllegalStateException    for CoR on a geometry without centres of rotation
+     * @throws IllegalArgumentException for {@link NormalTransform#NONE} with a method that has no
+     *                                  positions-only kernels
      */
     public static Skinner create(SkinningMethod method, SkinnedGeometry geometry, NormalTransform normals) {
         return create(method, geometry, normals, PositionSharing.AUTO);
     }
 
-    /** As {@link #create(SkinningMethod, SkinnedGeometry, NormalTransform)} with a choice of sharing. */
+    /**
+     * As {@link #create(SkinningMethod, SkinnedGeometry, NormalTransform)} with a choice of sharing.
+     *
+     * @param method   the method to skin with
+     * @param geometry the geometry to bind the skinner to; for {@link SkinningMethod#COR} one with
+     *                 centres of rotation
+     * @param normals  how normals move
+     * @param sharing  whether to skin each shared position once; no effect on a geometry without
+     *                 shared positions
+     * @return a new skinner
+     * @throws IllegalStateException    for CoR on a geometry without centres of rotation
+     * @throws IllegalArgumentException for {@link NormalTransform#NONE} with a method that has no
+     *                                  positions-only kernels
+     */
     public static Skinner create(SkinningMethod method, SkinnedGeometry geometry, NormalTransform normals,
             PositionSharing sharing) {
         SkinnedGeometry shared = shared(method, normals, geometry, sharing);
@@ -71,12 +97,24 @@ public final class Skinners {
                 shared.pointCount(), geometry.influencesPerPoint()) ? shared : null;
     }
 
-    /** Whether a skinner from here skins each shared position once (then derives the points). */
+    /**
+     * Whether a skinner from here skins each shared position once (then derives the points).
+     *
+     * @param skinner a skinner made by this class
+     * @return true when it deforms the geometry's {@link SkinnedGeometry#sharedPositions()} and expands them
+     */
     public static boolean sharesPositions(Skinner skinner) {
         return skinner instanceof SharedPositionSkinner;
     }
 
-    /** The fastest {@link DeformationExpansion} available for a mapping and rest normals. */
+    /**
+     * The fastest {@link DeformationExpansion} available for a mapping and rest normals.
+     *
+     * @param deformationOfPoint per point, the index of the deformation it takes
+     *                           ({@link SkinnedGeometry#deformationOfPointArray()})
+     * @param restNormals        the rest normals, 3 floats per point, bind space
+     * @return a provider's expansion, else {@link DeformationExpansion#scalar}
+     */
     public static DeformationExpansion expansion(int[] deformationOfPoint, float[] restNormals) {
         for (SkinnerProvider p : PROVIDERS) {
             DeformationExpansion e;
@@ -92,7 +130,15 @@ public final class Skinners {
         return DeformationExpansion.scalar(deformationOfPoint, restNormals);
     }
 
-    /** The fastest skinner with exact normals ({@link NormalTransform#INVERSE_TRANSPOSE}). */
+    /**
+     * The fastest skinner with exact normals ({@link NormalTransform#INVERSE_TRANSPOSE}).
+     *
+     * @param method   the method to skin with
+     * @param geometry the geometry to bind the skinner to; for {@link SkinningMethod#COR} one with
+     *                 centres of rotation
+     * @return a new skinner
+     * @throws IllegalStateException for CoR on a geometry without centres of rotation
+     */
     public static Skinner create(SkinningMethod method, SkinnedGeometry geometry) {
         return create(method, geometry, NormalTransform.INVERSE_TRANSPOSE);
     }
@@ -100,12 +146,34 @@ public final class Skinners {
     /**
      * The portable plain-Java skinner (for a geometry that shares positions, the scalar kernel on its
      * positions and the scalar expansion).
+     *
+     * @param method   the method to skin with
+     * @param geometry the geometry to bind the skinner to; for {@link SkinningMethod#COR} one with
+     *                 centres of rotation
+     * @param normals  how normals move
+     * @return a new scalar skinner, sharing positions where that pays ({@link PositionSharing#AUTO})
+     * @throws IllegalStateException    for CoR on a geometry without centres of rotation
+     * @throws IllegalArgumentException for {@link NormalTransform#NONE} with a method that has no
+     *                                  positions-only kernels
      */
     public static Skinner scalar(SkinningMethod method, SkinnedGeometry geometry, NormalTransform normals) {
         return scalar(method, geometry, normals, PositionSharing.AUTO);
     }
 
-    /** As {@link #scalar(SkinningMethod, SkinnedGeometry, NormalTransform)} with a choice of sharing. */
+    /**
+     * As {@link #scalar(SkinningMethod, SkinnedGeometry, NormalTransform)} with a choice of sharing.
+     *
+     * @param method   the method to skin with
+     * @param geometry the geometry to bind the skinner to; for {@link SkinningMethod#COR} one with
+     *                 centres of rotation
+     * @param normals  how normals move
+     * @param sharing  whether to skin each shared position once; no effect on a geometry without
+     *                 shared positions
+     * @return a new scalar skinner
+     * @throws IllegalStateException    for CoR on a geometry without centres of rotation
+     * @throws IllegalArgumentException for {@link NormalTransform#NONE} with a method that has no
+     *                                  positions-only kernels
+     */
     public static Skinner scalar(SkinningMethod method, SkinnedGeometry geometry, NormalTransform normals,
             PositionSharing sharing) {
         SkinnedGeometry shared = shared(method, normals, geometry, sharing);

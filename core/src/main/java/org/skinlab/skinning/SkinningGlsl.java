@@ -26,6 +26,8 @@ public final class SkinningGlsl {
      * {@code shader} with its {@link #INCLUDE} line replaced by the formulas; a shader without
      * that line comes back unchanged.
      *
+     * @param shader the GLSL source text, with {@link #INCLUDE} alone on its line where the formulas go
+     * @return the expanded source, or {@code shader} itself when it has no include line
      * @throws IllegalStateException when the line occurs more than once (GLSL refuses functions
      *                               defined twice; better said here), or the resource cannot be read
      */
@@ -36,6 +38,9 @@ public final class SkinningGlsl {
     /**
      * Whether the formulas' {@code skin(method, ...)} has code for {@code method}, so that a
      * renderer may skin it in the vertex shader; a method without is skinned on the CPU.
+     *
+     * @param method the method
+     * @return true for every method but {@link SkinningMethod#SPLINE}
      */
     public static boolean hasCode(SkinningMethod method) {
         return code(method) != 0;
@@ -45,6 +50,9 @@ public final class SkinningGlsl {
      * The code of a method in the formulas' {@code skin(method, ...)}: 1 LBS, 2 DQS, 3 CoR (0 skins
      * nothing).
      *
+     * @param method a method with shader code ({@link #hasCode})
+     * @return the value of the shader's {@code method} argument: 1 LBS, 2 DQS, 3 CoR, 4 BFDQS,
+     *         5 STBS_LBS, 6 STBS_DQS
      * @throws IllegalArgumentException for a method without shader code ({@link #hasCode})
      */
     public static int methodCode(SkinningMethod method) {
@@ -75,7 +83,12 @@ public final class SkinningGlsl {
         }
     }
 
-    /** The formulas' text, read from the resource on each call (once per program a renderer builds). */
+    /**
+     * The formulas' text, read from the resource on each call (once per program a renderer builds).
+     *
+     * @return the GLSL text of {@code skinning.glsl}, decoded as UTF-8
+     * @throws IllegalStateException when the resource is missing from the class path or cannot be read
+     */
     public static String formulas() {
         return FILE.text();
     }

@@ -39,14 +39,18 @@ public enum SkinningMethod {
     /**
      * The lower-case name used on the command line and in JSON ("lbs", "dqs", "cor", "bfdqs",
      * "stbs-lbs", "stbs-dqs", "spline").
+     *
+     * @return the key, the constant's name in lower case with '-' for '_'
      */
     public String key() {
         return name().toLowerCase(java.util.Locale.ROOT).replace('_', '-');
     }
 
     /**
-     * Whether the method reads its bones ({@link JointPalette#prepareBones()}, after the dual
+     * Whether the method reads its bones ({@link JointPalette#prepare}, after the dual
      * quaternions) besides the skinning matrices.
+     *
+     * @return true for BFDQS, STBS_LBS, STBS_DQS and SPLINE, which need a palette made with bones
      */
     public boolean usesBones() {
         return this == BFDQS || this == STBS_LBS || this == STBS_DQS || this == SPLINE;
@@ -55,17 +59,29 @@ public enum SkinningMethod {
     /**
      * Whether the method's kernels skin positions only ({@link NormalTransform#NONE}): LBS and DQS,
      * scalar and SIMD. The others refuse that rule.
+     *
+     * @return true for LBS and DQS
      */
     public boolean skinsPositionsOnly() {
         return this == LBS || this == DQS;
     }
 
-    /** Whether the method reads the palette's dual quaternions ({@link JointPalette#prepareDualQuaternions()}). */
+    /**
+     * Whether the method reads the palette's dual quaternions ({@link JointPalette#prepare}).
+     *
+     * @return true for every method but LBS
+     */
     public boolean usesDualQuaternions() {
         return this != LBS;
     }
 
-    /** The method for a command-line key, case-insensitive ("stbs_lbs" is taken for "stbs-lbs"). */
+    /**
+     * The method for a command-line key, case-insensitive ("stbs_lbs" is taken for "stbs-lbs").
+     *
+     * @param key a {@link #key()} or a constant's name, in any case
+     * @return the matching method
+     * @throws IllegalArgumentException for any other key, listing the valid ones
+     */
     public static SkinningMethod fromKey(String key) {
         for (SkinningMethod m : values()) {
             if (m.key().equalsIgnoreCase(key) || m.name().equalsIgnoreCase(key)) {

@@ -61,7 +61,13 @@ public final class SplineBinding {
         this.parameters = parameters;
     }
 
-    /** The binding of a geometry's points with {@link #DEFAULT_STIFFNESS}. */
+    /**
+     * The binding of a geometry's points with {@link #DEFAULT_STIFFNESS}.
+     *
+     * @param geometry the geometry, with its bones ({@link SkinnedGeometry#bones()}); its current rest
+     *                 positions are bound
+     * @return a new binding; bind-time work, a binary search per influence slot
+     */
     public static SplineBinding of(SkinnedGeometry geometry) {
         return of(geometry, DEFAULT_STIFFNESS);
     }
@@ -69,6 +75,9 @@ public final class SplineBinding {
     /**
      * The binding of a geometry's points (its current rest positions) to curves of stiffness a.
      *
+     * @param geometry the geometry, with its bones ({@link SkinnedGeometry#bones()})
+     * @param a        the curves' stiffness, at least 1 (see the class comment)
+     * @return a new binding; bind-time work, a binary search per influence slot
      * @throws IllegalArgumentException unless {@code a >= 1}
      */
     public static SplineBinding of(SkinnedGeometry geometry, float a) {
@@ -104,7 +113,13 @@ public final class SplineBinding {
         return new SplineBinding(a, width, curves, parameters);
     }
 
-    /** Whether a curve crosses joint c: its parent continues into it and both bones have length. */
+    /**
+     * Whether a curve crosses joint c: its parent continues into it and both bones have length.
+     *
+     * @param bones the bones of a geometry's palette
+     * @param c     a palette joint
+     * @return true when c has a parent whose tail joint is c, and both bones are longer than 0
+     */
     public static boolean hasCurve(Bones bones, int c) {
         int p = bones.parent(c);
         return p >= 0 && bones.tailJoint(p) == c && bones.length(p) > 0f && bones.length(c) > 0f;
@@ -170,22 +185,42 @@ public final class SplineBinding {
         return sum;
     }
 
-    /** The stiffness a of the curves this binding was made for. */
+    /**
+     * The stiffness a of the curves this binding was made for.
+     *
+     * @return a, at least 1
+     */
     public float stiffness() {
         return stiffness;
     }
 
-    /** Influence slots per point, as in the geometry. */
+    /**
+     * Influence slots per point, as in the geometry.
+     *
+     * @return the geometry's {@link SkinnedGeometry#influencesPerPoint()}
+     */
     public int influencesPerPoint() {
         return width;
     }
 
-    /** The joint whose curve slot {@code slot} of point {@code point} follows, or -1 (rigid). */
+    /**
+     * The joint whose curve slot {@code slot} of point {@code point} follows, or -1 (rigid).
+     *
+     * @param point a point of the geometry
+     * @param slot  an influence slot of that point, {@code [0, influencesPerPoint())}
+     * @return the palette joint the curve crosses, or -1 when the influence moves rigidly with its joint
+     */
     public int curve(int point, int slot) {
         return curves[width * point + slot];
     }
 
-    /** The curve parameter x of a slot (0 for a rigid one). */
+    /**
+     * The curve parameter x of a slot (0 for a rigid one).
+     *
+     * @param point a point of the geometry
+     * @param slot  an influence slot of that point, {@code [0, influencesPerPoint())}
+     * @return x in [0, 1]: 0 at the middle of the parent's bone, 1 at the middle of the crossed joint's
+     */
     public float x(int point, int slot) {
         return parameters[PARAMETER_FLOATS * (width * point + slot)];
     }

@@ -9,9 +9,9 @@ import java.util.List;
 import org.joml.Matrix4f;
 import org.joml.Vector4f;
 import org.junit.jupiter.api.Test;
-import org.skinlab.ar.synthetic.PlacedMarker;
-import org.skinlab.ar.synthetic.SceneOptions;
-import org.skinlab.ar.synthetic.SyntheticCamera;
+import org.skinlab.internal.synthetic.PlacedMarker;
+import org.skinlab.internal.synthetic.SceneOptions;
+import org.skinlab.internal.synthetic.SyntheticCamera;
 
 /**
  * {@link ArCamera}: a marker corner pushed through the OpenGL matrices lands on the pixel the

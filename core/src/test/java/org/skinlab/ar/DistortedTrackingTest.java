@@ -9,10 +9,10 @@ import java.util.Locale;
 import java.util.Random;
 
 import org.junit.jupiter.api.Test;
-import org.skinlab.ar.synthetic.DetectionTally;
-import org.skinlab.ar.synthetic.PlacedMarker;
-import org.skinlab.ar.synthetic.SceneOptions;
-import org.skinlab.ar.synthetic.SyntheticCamera;
+import org.skinlab.internal.synthetic.DetectionTally;
+import org.skinlab.internal.synthetic.PlacedMarker;
+import org.skinlab.internal.synthetic.SceneOptions;
+import org.skinlab.internal.synthetic.SyntheticCamera;
 
 /**
  * The tracker on frames seen through a lens ({@link SyntheticCamera} renders each sample's ray

@@ -17,9 +17,9 @@ import boofcv.struct.image.GrayF32;
 import boofcv.struct.image.GrayU8;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
-import org.skinlab.ar.synthetic.MarkerShot;
-import org.skinlab.ar.synthetic.MarkerShots;
-import org.skinlab.ar.synthetic.NegativeFrames;
+import org.skinlab.internal.synthetic.MarkerShot;
+import org.skinlab.internal.synthetic.MarkerShots;
+import org.skinlab.internal.synthetic.NegativeFrames;
 
 /**
  * The goal: markers far away and tilted are found (at least 95% at 1.5-2 m, tilts up to 70

@@ -6,8 +6,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.Random;
 
 import org.junit.jupiter.api.Test;
-import org.skinlab.ar.synthetic.MarkerShot;
-import org.skinlab.ar.synthetic.MarkerShots;
+import org.skinlab.internal.synthetic.MarkerShot;
+import org.skinlab.internal.synthetic.MarkerShots;
 
 /** FarTiltedDetectionTest's positive frames (150 mm, 1.5-2 m, tilt 0-70) through a lens. */
 class FarTiltedLensTest {

@@ -8,7 +8,7 @@ import org.joml.Vector3f;
 import org.junit.jupiter.api.Test;
 import org.skinlab.collada.ColladaImporter;
 import org.skinlab.model.Model;
-import org.skinlab.scene.ModelFraming;
+import org.skinlab.internal.scene.ModelFraming;
 import org.skinlab.simulation.Frame;
 import org.skinlab.simulation.SkeletalAnimatedMesh;
 import org.skinlab.skinning.SkinnedGeometry;
@@ -80,12 +80,12 @@ class MarkerSceneTest {
     @Test
     void theModelTurnsToFaceTheCamera() {
         // Camera in front of the marker's bottom edge, looking at it from 45 degrees above: yaw 0.
-        double[] r = org.skinlab.ar.synthetic.PlacedMarker.facingCamera(-45, 0, 0);
+        double[] r = org.skinlab.internal.synthetic.PlacedMarker.facingCamera(-45, 0, 0);
         double[] t = {0, 0, 0.5};
         assertEquals(0, CameraFollow.yawTowardCamera(r, t, 9), 1e-9);
         // The same camera turned about the marker's normal by 90 degrees (marker rotated -90 in the
         // image): the camera now sits off the marker's right (+x) edge, so the front turns to +x.
-        double[] turned = org.skinlab.ar.synthetic.PlacedMarker.facingCamera(-45, 0, 0);
+        double[] turned = org.skinlab.internal.synthetic.PlacedMarker.facingCamera(-45, 0, 0);
         double[] rz = {0, -1, 0, 1, 0, 0, 0, 0, 1}; // Rz(+90): marker frame to the old marker frame
         double[] r2 = multiply(turned, rz);
         double yaw = CameraFollow.yawTowardCamera(r2, t, 9);
@@ -97,17 +97,17 @@ class MarkerSceneTest {
         assertEquals(c[1] / n, front.y, 1e-5, "front toward the camera, y");
         assertEquals(0, front.z, 1e-5, "up kept");
         // Straight overhead: the yaw is kept.
-        assertEquals(1.25, CameraFollow.yawTowardCamera(org.skinlab.ar.synthetic.PlacedMarker.facingCamera(0, 0, 0),
+        assertEquals(1.25, CameraFollow.yawTowardCamera(org.skinlab.internal.synthetic.PlacedMarker.facingCamera(0, 0, 0),
                 new double[] {0, 0, 0.5}, 1.25), 0);
         CameraFollow follow = new CameraFollow();
         assertEquals(yaw, follow.update(r2, t), 1e-12);
-        assertEquals(yaw, follow.update(org.skinlab.ar.synthetic.PlacedMarker.facingCamera(1, 0, 0), t), 1e-12,
+        assertEquals(yaw, follow.update(org.skinlab.internal.synthetic.PlacedMarker.facingCamera(1, 0, 0), t), 1e-12,
                 "1 degree off the normal: still overhead, the last yaw stays");
     }
 
     @Test
     void placeGivesTheMarkersViewAndTheModelFollowingOrNot() {
-        double[] r = multiply(org.skinlab.ar.synthetic.PlacedMarker.facingCamera(-45, 0, 0),
+        double[] r = multiply(org.skinlab.internal.synthetic.PlacedMarker.facingCamera(-45, 0, 0),
                 new double[] {0, -1, 0, 1, 0, 0, 0, 0, 1});
         double[] t = {0.05, -0.02, 0.5};
         ArPose pose = new ArPose(TrackingState.TRACKING, r, t, 0, 1, 1.0, 0L, 1L);

@@ -9,7 +9,8 @@ import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.atomic.AtomicReference;
 
 import org.junit.jupiter.api.Test;
-import org.skinlab.ar.synthetic.PlacedMarker;
+import org.skinlab.internal.synthetic.PlacedMarker;
+import org.skinlab.internal.ar.PoseMath;
 
 /** {@link MarkerTracking}'s states and flip rule, and {@link ArSession}'s publication across threads. */
 class MarkerTrackingTest {

@@ -1,5 +1,7 @@
 package org.skinlab.ar;
 
+import org.skinlab.internal.ar.PoseMath;
+
 /** Pose differences for the tests: the angle of R_a^T R_b, and |t_a - t_b|. */
 final class PoseError {
     private PoseError() {

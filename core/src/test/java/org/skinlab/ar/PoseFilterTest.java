@@ -6,7 +6,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.Random;
 
 import org.junit.jupiter.api.Test;
-import org.skinlab.ar.synthetic.PlacedMarker;
+import org.skinlab.internal.synthetic.PlacedMarker;
+import org.skinlab.internal.ar.PoseMath;
 
 /**
  * {@link OneEuroFilter} and {@link PoseFilter} against the numbers their parameters predict.

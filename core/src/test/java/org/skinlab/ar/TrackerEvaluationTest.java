@@ -8,13 +8,13 @@ import java.util.Locale;
 import java.util.Random;
 
 import org.junit.jupiter.api.Test;
-import org.skinlab.ar.synthetic.DetectionTally;
-import org.skinlab.ar.synthetic.MarkerShot;
-import org.skinlab.ar.synthetic.MarkerShots;
-import org.skinlab.ar.synthetic.NegativeFrames;
-import org.skinlab.ar.synthetic.PlacedMarker;
-import org.skinlab.ar.synthetic.SceneOptions;
-import org.skinlab.ar.synthetic.SyntheticCamera;
+import org.skinlab.internal.synthetic.DetectionTally;
+import org.skinlab.internal.synthetic.MarkerShot;
+import org.skinlab.internal.synthetic.MarkerShots;
+import org.skinlab.internal.synthetic.NegativeFrames;
+import org.skinlab.internal.synthetic.PlacedMarker;
+import org.skinlab.internal.synthetic.SceneOptions;
+import org.skinlab.internal.synthetic.SyntheticCamera;
 
 /**
  * The tracker on synthetic camera frames of known pose: a 10 cm ArUco

@@ -89,7 +89,7 @@ final class FrameChecker {
                 || interpolation != cachedInterpolation) {
             reference.pose(time, interpolation);
             for (int g = 0; g < positions.length; g++) {
-                reference.preparePalette(g);
+                reference.palette(g).prepareAll();
                 reference.skin(g, method, positions[g], normals[g]);
             }
             cachedTime = time;
@@ -102,24 +102,24 @@ final class FrameChecker {
     private String paletteProblem(Frame frame, float time) {
         for (int g = 0; g < positions.length; g++) {
             JointPalette expected = reference.palette(g);
-            if (frame.jointCount(g) != expected.jointCount()) {
-                return "frame " + frame.sequence() + ": geometry " + g + " has " + frame.jointCount(g)
+            if (frame.palette(g).jointCount() != expected.jointCount()) {
+                return "frame " + frame.sequence() + ": geometry " + g + " has " + frame.palette(g).jointCount()
                         + " palette joints, the model " + expected.jointCount();
             }
-            String p = compare(frame, g, "skinning matrix", frame.skinningMatrices(g), expected.matrices());
+            String p = compare(frame, g, "skinning matrix", frame.palette(g).matrices(), expected.matrices());
             if (p == null) {
-                p = compare(frame, g, "dual quaternion", frame.dualQuaternions(g), expected.dualQuaternions());
+                p = compare(frame, g, "dual quaternion", frame.palette(g).dualQuaternions(), expected.dualQuaternions());
             }
             if (p == null) {
-                p = compare(frame, g, "scale part", frame.scales(g), expected.scales());
+                p = compare(frame, g, "scale part", frame.palette(g).scales(), expected.scales());
             }
-            if (p == null && frame.hasScale(g) != expected.hasScale()) {
-                p = "frame " + frame.sequence() + ": geometry " + g + " hasScale " + frame.hasScale(g);
+            if (p == null && frame.palette(g).hasScale() != expected.hasScale()) {
+                p = "frame " + frame.sequence() + ": geometry " + g + " hasScale " + frame.palette(g).hasScale();
             }
-            if (p == null && (frame.mirrorsMatrices(g) != expected.mirrorsMatrices()
-                    || frame.mirrorsScales(g) != expected.mirrorsScales())) {
-                p = "frame " + frame.sequence() + ": geometry " + g + " mirror flags " + frame.mirrorsMatrices(g)
-                        + ", " + frame.mirrorsScales(g);
+            if (p == null && (frame.palette(g).mirrorsMatrices() != expected.mirrorsMatrices()
+                    || frame.palette(g).mirrorsScales() != expected.mirrorsScales())) {
+                p = "frame " + frame.sequence() + ": geometry " + g + " mirror flags " + frame.palette(g).mirrorsMatrices()
+                        + ", " + frame.palette(g).mirrorsScales();
             }
             if (p != null) {
                 return p;
@@ -127,11 +127,11 @@ final class FrameChecker {
         }
         if (ribbon) {
             // Root is joint 0; its skinning matrix is its world matrix (identity bind): translate(t, 0, 0) R.
-            float x = frame.skinningMatrices(0)[3];
+            float x = frame.palette(0).matrices()[3];
             if (Math.abs(x - time) > AXIS_TOLERANCE) {
                 return "frame " + frame.sequence() + ": root matrix translation x = " + x + ", clip time " + time;
             }
-            float[] q = frame.dualQuaternions(0);
+            float[] q = frame.palette(0).dualQuaternions();
             // t = 2 (r.w d.xyz - d.w r.xyz + r.xyz x d.xyz), x component (Frame's class comment).
             float tx = 2 * (q[3] * q[4] - q[7] * q[0] + (q[1] * q[6] - q[2] * q[5]));
             if (Math.abs(tx - time) > AXIS_TOLERANCE) {

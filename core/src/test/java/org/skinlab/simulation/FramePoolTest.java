@@ -15,6 +15,7 @@ import java.util.Set;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import org.skinlab.skinning.SkinnedGeometry;
 
 /**
  * The snapshot protocol, one interleaving at a time: each test plays the reader's two steps
@@ -26,7 +27,12 @@ import org.junit.jupiter.api.Timeout;
 @Timeout(5)
 class FramePoolTest {
     private static FramePool pool() {
-        FramePool pool = new FramePool(new int[] {4}, new int[] {2}, new boolean[1], SkeletalAnimatedMesh.MAX_BUFFERS);
+        float[] identities = new float[32];
+        identities[0] = identities[5] = identities[10] = identities[15] = 1f;
+        identities[16] = identities[21] = identities[26] = identities[31] = 1f;
+        SkinnedGeometry geometry = SkinnedGeometry.fromArrays(new float[12], new float[12], 1, new int[4],
+                new float[] {1, 1, 1, 1}, identities);
+        FramePool pool = new FramePool(List.of(geometry), new boolean[1], SkeletalAnimatedMesh.MAX_BUFFERS);
         pool.publish(pool.claim());
         return pool;
     }

@@ -39,7 +39,7 @@ class MorphFrameTest {
                 SkinnedGeometry g = cpu.geometries().get(0);
                 float[] expected = new float[3 * g.pointCount()];
                 cpu.skin(0, SkinningMethod.LBS, expected, new float[expected.length]);
-                float[] m = f.skinningMatrices(0);
+                float[] m = f.palette(0).matrices();
                 int[] joints = g.jointArray();
                 float[] weights = g.weightArray();
                 int k = g.influencesPerPoint();

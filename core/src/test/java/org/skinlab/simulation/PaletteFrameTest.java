@@ -61,7 +61,7 @@ class PaletteFrameTest {
             try (Frame f = mesh.acquire()) {
                 assertFalse(f.hasSkinnedMesh());
                 assertEquals(1.25f, f.clipTime(), 1e-6f);
-                assertEquals(2, f.jointCount(0));
+                assertEquals(2, f.palette(0).jointCount());
                 // The palette is the skeleton's at 1.25 s, and Root's translation is the clip time.
                 assertNull(checker.problem(f));
                 // The buffer still holds an earlier step's mesh: handing it out would be a silent lie.
@@ -125,7 +125,7 @@ class PaletteFrameTest {
             try (Frame f = mesh.acquire()) {
                 assertEquals(SkinningMethod.LBS, f.method());
                 assertNull(FrameChecker.ribbon(RIBBON).problem(f));
-                float[] q = f.dualQuaternions(0);
+                float[] q = f.palette(0).dualQuaternions();
                 // Root at 1 s: rotation 90 degrees about x, r = (sin 45, 0, 0, cos 45), up to sign.
                 double s = Math.signum(q[3]);
                 assertEquals(Math.sqrt(0.5), s * q[0], 1e-6);
@@ -133,11 +133,11 @@ class PaletteFrameTest {
                 assertEquals(0.0, q[2], 1e-6);
                 assertEquals(Math.sqrt(0.5), s * q[3], 1e-6);
                 // No joint of the ribbon scales: every scale part is the identity.
-                assertFalse(f.hasScale(0));
+                assertFalse(f.palette(0).hasScale());
                 float[] identity = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
-                for (int j = 0; j < f.jointCount(0); j++) {
+                for (int j = 0; j < f.palette(0).jointCount(); j++) {
                     for (int i = 0; i < 12; i++) {
-                        assertEquals(identity[i], f.scales(0)[12 * j + i], "joint " + j + " scale " + i);
+                        assertEquals(identity[i], f.palette(0).scales()[12 * j + i], "joint " + j + " scale " + i);
                     }
                 }
             }
@@ -152,24 +152,23 @@ class PaletteFrameTest {
             identities[i] = 1f;
         }
         identities[16] = identities[21] = identities[26] = identities[31] = 1f;
-        JointPalette palette = SkinnedGeometry.fromArrays(new float[3], new float[] {0, 1, 0}, 1, new int[1],
-                new float[] {1}, identities, new int[] {-1, 0}).newPalette();
-        Frame f = new Frame(new int[] {1}, new int[] {2}, new boolean[1]);
-        palette.prepareDualQuaternions();
-        palette.prepareBones();
+        SkinnedGeometry geometry = SkinnedGeometry.fromArrays(new float[3], new float[] {0, 1, 0}, 1, new int[1],
+                new float[] {1}, identities, new int[] {-1, 0});
+        JointPalette palette = geometry.newPalette();
+        Frame f = new Frame(java.util.List.of(geometry), new boolean[1]);
+        palette.prepareAll();
         f.copyPalette(0, palette);
-        assertFalse(f.mirrorsMatrices(0));
-        assertFalse(f.mirrorsScales(0));
+        assertFalse(f.palette(0).mirrorsMatrices());
+        assertFalse(f.palette(0).mirrorsScales());
         // A reflection is no rigid motion: DQS's split moves it into the joint's scale part.
         palette.setMatrix(1, new Matrix4f().scaling(-1, 1, 1));
-        palette.prepareDualQuaternions();
-        palette.prepareBones();
+        palette.prepareAll();
         f.copyPalette(0, palette);
-        assertEquals(palette.boneRows()[JointPalette.BONE_FLOATS + 23], f.boneRows(0)[JointPalette.BONE_FLOATS + 23],
+        assertEquals(palette.boneRows()[JointPalette.BONE_FLOATS + 23], f.palette(0).boneRows()[JointPalette.BONE_FLOATS + 23],
                 "the bone rows come along: joint 1's parent");
-        assertTrue(f.mirrorsMatrices(0));
-        assertTrue(f.hasScale(0));
-        assertTrue(f.mirrorsScales(0));
+        assertTrue(f.palette(0).mirrorsMatrices());
+        assertTrue(f.palette(0).hasScale());
+        assertTrue(f.palette(0).mirrorsScales());
     }
 
     @Test
@@ -225,7 +224,7 @@ class PaletteFrameTest {
                     mesh.step(0.37);
                     try (Frame f = mesh.acquire()) {
                         for (int g = 0; g < f.geometryCount(); g++) {
-                            sawScale |= f.hasScale(g);
+                            sawScale |= f.palette(g).hasScale();
                             compare(asset, f, g, mesh.geometries().get(g));
                         }
                     }
@@ -300,15 +299,15 @@ class PaletteFrameTest {
         double py = bindPositions[3 * p + 1];
         double pz = bindPositions[3 * p + 2];
         if (f.method() == SkinningMethod.LBS) {
-            double[] m = blend(f.skinningMatrices(g), joints, weights);
+            double[] m = blend(f.palette(g).matrices(), joints, weights);
             apply(m, px, py, pz, n, out);
             return;
         }
         double[] p1 = {px, py, pz, n[0], n[1], n[2]};
-        if (f.hasScale(g)) {
-            apply(blend(f.scales(g), joints, weights), px, py, pz, n, p1);
+        if (f.palette(g).hasScale()) {
+            apply(blend(f.palette(g).scales(), joints, weights), px, py, pz, n, p1);
         }
-        float[] dq = f.dualQuaternions(g);
+        float[] dq = f.palette(g).dualQuaternions();
         int pivot = 0;
         for (int k = 1; k < joints.length; k++) {
             if (weights[k] > weights[pivot]) {

@@ -30,7 +30,7 @@ class BindSpaceTest {
         float end = skinned.sampler().end();
         for (int t = 0; t < 5; t++) {
             skinned.pose(start + (end - start) * t / 4f, RotationInterpolation.SLERP);
-            JointPalette palette = skinned.preparePalette(0);
+            JointPalette palette = skinned.palette(0).prepareAll();
             assertFalse(palette.mirrorsMatrices(), "no joint mirrors at step " + t);
             assertFalse(palette.hasScale(), "DQS needs no scale phase at step " + t);
         }

@@ -59,8 +59,7 @@ class BonesTest {
         Matrix4f m = new Matrix4f().translation(0, 1, 0).rotateY((float) (Math.PI / 2)).scale(1f, 1.5f, 1f)
                 .translate(0, -1, 0);
         palette.setMatrix(1, m);
-        palette.prepareDualQuaternions();
-        palette.prepareBones();
+        palette.prepareAll();
         float[] rows = palette.boneRows();
         int b = JointPalette.BONE_FLOATS;
         assertEquals((float) (Math.PI / 2), rows[b + 3], 1e-5f, "twist");
@@ -76,8 +75,8 @@ class BonesTest {
     @Test
     void aPaletteWithoutBonesSaysSo() {
         JointPalette palette = JointPalette.withoutBindFrames(2);
-        palette.prepareDualQuaternions();
-        assertThrows(IllegalStateException.class, palette::prepareBones);
+        palette.prepare(SkinningMethod.DQS);
+        assertThrows(IllegalStateException.class, () -> palette.prepare(SkinningMethod.SPLINE));
         assertThrows(IllegalStateException.class, palette::boneRows);
     }
 

@@ -8,6 +8,7 @@ import org.skinlab.animation.RotationInterpolation;
 import org.skinlab.collada.ColladaImporter;
 import org.skinlab.skinning.reference.IndependentBulgeFreeDqs;
 import org.skinlab.testing.TestPaths;
+import org.skinlab.internal.metrics.ArtifactMetrics;
 
 /**
  * The scalar bulge-free DQS kernel against {@link IndependentBulgeFreeDqs} (double, from the

@@ -12,6 +12,8 @@ import org.skinlab.animation.RotationInterpolation;
 import org.skinlab.collada.ColladaImporter;
 import org.skinlab.model.Model;
 import org.skinlab.testing.TestPaths;
+import org.skinlab.internal.metrics.JointArtifacts;
+import org.skinlab.internal.metrics.RestPose;
 
 /**
  * Bulge-free DQS where the issue sets its limits: on the bend cylinder at 90 and 170 degrees the
@@ -23,7 +25,7 @@ class BulgeFreeDqsTest {
 
     /** Bend angle between the posed axes of "lower" and "upper", in degrees. */
     private static double bendDegrees(SkinnedModel skinned, int lower, int upper) {
-        float[] rows = skinned.prepareBones(0).boneRows();
+        float[] rows = skinned.palette(0).prepareAll().boneRows();
         int a = JointPalette.BONE_FLOATS * lower + 12;
         int b = JointPalette.BONE_FLOATS * upper + 12;
         double dot = rows[a] * rows[b] + rows[a + 1] * rows[b + 1] + rows[a + 2] * rows[b + 2];
@@ -119,7 +121,7 @@ class BulgeFreeDqsTest {
         SkinnedModel skinned = SkinnedModel.of(ColladaImporter.read(TestPaths.asset("cylinders/cylinder-bend.dae")));
         SkinnedGeometry g = skinned.geometries().get(0);
         skinned.pose(4f, RotationInterpolation.SLERP);
-        JointPalette palette = skinned.preparePalette(0, SkinningMethod.BFDQS);
+        JointPalette palette = skinned.palette(0).prepare(SkinningMethod.BFDQS);
         Skinner scalar = new ScalarBulgeFreeDqsSkinner(g, NormalTransform.INVERSE_TRANSPOSE);
         float[] positions = new float[3 * g.pointCount()];
         scalar.skinAll(palette, positions, new float[positions.length]);

@@ -11,6 +11,8 @@ import org.skinlab.animation.RotationInterpolation;
 import org.skinlab.collada.ColladaImporter;
 import org.skinlab.model.Model;
 import org.skinlab.testing.TestPaths;
+import org.skinlab.internal.metrics.ArtifactMetrics;
+import org.skinlab.internal.metrics.RestPose;
 
 /**
  * The candy wrapper in numbers, on our twist cylinder (two joints, "upper" twisted about the

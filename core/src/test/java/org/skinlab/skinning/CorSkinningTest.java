@@ -12,6 +12,8 @@ import org.skinlab.animation.RotationInterpolation;
 import org.skinlab.collada.ColladaImporter;
 import org.skinlab.model.Model;
 import org.skinlab.testing.TestPaths;
+import org.skinlab.internal.metrics.ArtifactMetrics;
+import org.skinlab.internal.metrics.RestPose;
 
 /**
  * CoR skinning (Le and Hodgins 2016) against a second, plain implementation of its run-time
@@ -104,7 +106,7 @@ class CorSkinningTest {
         for (int j = 0; j < p.g.jointCount(); j++) {
             p.skinned.palette(0).setMatrix(j, m);
         }
-        p.skinned.palette(0).prepareDualQuaternions();
+        p.skinned.palette(0).prepareAll();
         float[] out = new float[3 * p.g.pointCount()];
         p.skinned.skinner(0, SkinningMethod.COR).skinAll(p.skinned.palette(0), out, new float[out.length]);
         Vector3f v = new Vector3f();

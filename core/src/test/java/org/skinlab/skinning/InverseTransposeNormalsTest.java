@@ -28,7 +28,7 @@ class InverseTransposeNormalsTest {
         float[] weights = new float[n];
         java.util.Arrays.fill(weights, 1f);
         return SkinnedGeometry.fromArrays(positions, NORMALS.clone(), 1, joints, weights,
-                new Matrix4f().get(new float[16]));
+                new Matrix4f().get(new float[16])).withCentresOfRotation();
     }
 
     private static void assertInverseTranspose(Matrix4f m, float[] out) {
@@ -79,7 +79,7 @@ class InverseTransposeNormalsTest {
         SkinnedGeometry g = oneJoint();
         JointPalette palette = g.newPalette();
         palette.setMatrix(0, m);
-        palette.prepareDualQuaternions();
+        palette.prepareAll();
         float[] p = new float[NORMALS.length];
         float[] n = new float[NORMALS.length];
         new ScalarDqsSkinner(g, NormalTransform.INVERSE_TRANSPOSE).skinAll(palette, p, n);
@@ -91,9 +91,9 @@ class InverseTransposeNormalsTest {
         SkinnedGeometry g = oneJoint();
         JointPalette palette = g.newPalette();
         palette.setMatrix(0, m);
-        palette.prepareDualQuaternions();
+        palette.prepareAll();
         if (method.usesBones()) {
-            palette.prepareBones();
+            palette.prepareAll();
         }
         Skinner k = Skinners.scalar(method, g, NormalTransform.INVERSE_TRANSPOSE);
         float[] p = new float[NORMALS.length];

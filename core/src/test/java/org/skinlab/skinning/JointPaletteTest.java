@@ -22,7 +22,7 @@ import org.skinlab.animation.DualQuaternion;
 import org.skinlab.animation.DualQuaternions;
 
 /**
- * {@link JointPalette#prepareDualQuaternions()}: the split {@code M = D S} of the class comment,
+ * {@link JointPalette#prepare}: the split {@code M = D S} of the class comment,
  * against its definitions evaluated here in double precision, step by step as the comment states
  * them ({@code X = M B}, R from X's Y axis, {@code X = [R|x] S0}, {@code S = B S0 B^-1},
  * {@code D = [R|x] B^-1}), on random joints: rigid, scaled, sheared, mirrored, and the
@@ -121,7 +121,7 @@ class JointPaletteTest {
         assertTrue(palette.hasScale());
         Matrix4f rigid = new Matrix4f().rotationZ(0.5f).setTranslation(1, 2, 3);
         palette.setMatrix(0, rigid);
-        palette.prepareDualQuaternions();
+        palette.prepareAll();
         assertFalse(palette.hasScale());
         assertArrayEquals(new float[] {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0}, row12(palette.scales(), 0), 0f);
         assertRigidPart(new Matrix4d(rigid), palette, 0);
@@ -134,7 +134,7 @@ class JointPaletteTest {
         for (int j = 0; j < matrices.length; j++) {
             palette.setMatrix(j, matrices[j]);
         }
-        palette.prepareDualQuaternions();
+        palette.prepareAll();
         return palette;
     }
 

@@ -122,7 +122,7 @@ class LimbAssetsTest {
 
         float[] rowsAt(float t) {
             skinned.pose(t, RotationInterpolation.SLERP);
-            return skinned.prepareBones(0).boneRows();
+            return skinned.palette(0).prepareAll().boneRows();
         }
     }
 }

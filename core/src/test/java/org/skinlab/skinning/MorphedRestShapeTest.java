@@ -12,6 +12,7 @@ import org.skinlab.gltf.GltfImporter;
 import org.skinlab.model.AnimationClip;
 import org.skinlab.model.Model;
 import org.skinlab.testing.TestPaths;
+import org.skinlab.internal.metrics.ArtifactMetrics;
 
 /**
  * The per-frame morph ahead of skinning on the fixture {@code morph-skin.gltf} (clip "breathe":
@@ -71,7 +72,7 @@ class MorphedRestShapeTest {
             SkinnedGeometry morphed = SkinnedGeometry.of(geometry.instance());
             System.arraycopy(geometry.positionArray(), 0, morphed.positionArray(), 0, n);
             float[] recomputed = new float[n];
-            new ScalarCorSkinner(morphed, NormalTransform.INVERSE_TRANSPOSE).skinAll(skinned.preparePalette(0),
+            new ScalarCorSkinner(morphed.withCentresOfRotation(), NormalTransform.INVERSE_TRANSPOSE).skinAll(skinned.palette(0).prepareAll(),
                     recomputed, new float[n]);
             float[] lbs = new float[n];
             skinned.skin(0, SkinningMethod.LBS, lbs, new float[n]);

@@ -38,7 +38,7 @@ class ParallelSkinnerTest {
             new Matrix4f().get(bind, 16 * j);
         }
         // A chain 0 <- 1 <- ... <- 5, so that the bone methods have bones with parents.
-        return SkinnedGeometry.fromArrays(pos, nrm, 4, joints, weights, bind, new int[] {-1, 0, 1, 2, 3, 4});
+        return SkinnedGeometry.fromArrays(pos, nrm, 4, joints, weights, bind, new int[] {-1, 0, 1, 2, 3, 4}).withCentresOfRotation();
     }
 
     /** Random rigid joints, prepared for every method. */
@@ -49,8 +49,7 @@ class ParallelSkinnerTest {
             p.setMatrix(j, new Matrix4f().translationRotate(r.nextFloat(), r.nextFloat(), r.nextFloat(),
                     new Quaternionf().rotateXYZ(r.nextFloat() * 3, r.nextFloat() * 3, r.nextFloat() * 3)));
         }
-        p.prepareDualQuaternions();
-        p.prepareBones();
+        p.prepareAll();
         return p;
     }
 

@@ -96,7 +96,7 @@ class PositionsOnlySkinningTest {
             }
             palette.setMatrix(j, m);
         }
-        palette.prepareDualQuaternions();
+        palette.prepareAll();
         return palette;
     }
 
@@ -201,7 +201,7 @@ class PositionsOnlySkinningTest {
                 "the cylinder's points share positions");
         int n = g.pointCount();
         for (SkinningMethod m : new SkinningMethod[] {SkinningMethod.LBS, SkinningMethod.DQS}) {
-            JointPalette palette = skinned.preparePalette(0, m);
+            JointPalette palette = skinned.palette(0).prepare(m);
             float[] expected = new float[3 * n];
             Skinners.scalar(m, g, NormalTransform.INVERSE_TRANSPOSE, PositionSharing.NEVER).skinAll(palette, expected,
                     new float[3 * n]);

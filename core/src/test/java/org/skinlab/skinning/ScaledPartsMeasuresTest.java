@@ -13,6 +13,9 @@ import org.skinlab.animation.RotationInterpolation;
 import org.skinlab.gltf.GltfImporter;
 import org.skinlab.model.Model;
 import org.skinlab.testing.TestPaths;
+import org.skinlab.internal.metrics.JointArtifacts;
+import org.skinlab.internal.metrics.MethodComparison;
+import org.skinlab.internal.metrics.RestPose;
 
 /**
  * The measures on a character of many parts as FBX and Sketchfab exports make them

@@ -121,7 +121,7 @@ class SharedPositionsTest {
                 Skinner everyPoint = Skinners.create(method, g, rule, PositionSharing.NEVER);
                 for (int t = 0; t < 5; t++) {
                     skinned.pose(start + (end - start) * t / 4f, RotationInterpolation.SLERP);
-                    JointPalette palette = skinned.preparePalette(0, method);
+                    JointPalette palette = skinned.palette(0).prepare(method);
                     int n = 3 * g.pointCount();
                     float[] p1 = new float[n], n1 = new float[n], p2 = new float[n], n2 = new float[n];
                     once.skinAll(palette, p1, n1);

@@ -12,6 +12,9 @@ import org.skinlab.animation.RotationInterpolation;
 import org.skinlab.collada.ColladaImporter;
 import org.skinlab.model.Model;
 import org.skinlab.testing.TestPaths;
+import org.skinlab.internal.metrics.ArtifactMetrics;
+import org.skinlab.internal.metrics.JointArtifacts;
+import org.skinlab.internal.metrics.RestPose;
 
 /** What spline-based skinning does at bent joints and where it parts from the other methods. */
 class SplineArtifactsTest {
@@ -31,7 +34,7 @@ class SplineArtifactsTest {
             float[] p = new float[3 * g.pointCount()];
             if (m == SkinningMethod.SPLINE) {
                 new ScalarSplineSkinner(g, NormalTransform.INVERSE_TRANSPOSE, SplineBinding.of(g, stiffness))
-                        .skinAll(skinned.preparePalette(0, m), p, new float[p.length]);
+                        .skinAll(skinned.palette(0).prepare(m), p, new float[p.length]);
             } else {
                 skinned.skin(0, m, p, new float[p.length]);
             }

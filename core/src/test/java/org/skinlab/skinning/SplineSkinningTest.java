@@ -10,6 +10,7 @@ import org.skinlab.collada.ColladaImporter;
 import org.skinlab.model.Model;
 import org.skinlab.skinning.reference.IndependentSpline;
 import org.skinlab.testing.TestPaths;
+import org.skinlab.internal.metrics.ArtifactMetrics;
 
 /**
  * The spline kernel against {@link IndependentSpline}, the double-precision evaluation written
@@ -77,8 +78,7 @@ class SplineSkinningTest {
                 .rotateY((float) Math.toRadians(60)).translate(0, -2, 0);
         palette.setMatrix(1, m1);
         palette.setMatrix(2, m2);
-        palette.prepareDualQuaternions();
-        palette.prepareBones();
+        palette.prepareAll();
         return palette;
     }
 
@@ -144,8 +144,7 @@ class SplineSkinningTest {
     void restPoseKeepsEveryPoint() {
         SkinnedGeometry g = chain();
         JointPalette palette = g.newPalette();
-        palette.prepareDualQuaternions();
-        palette.prepareBones();
+        palette.prepareAll();
         float[] p = new float[3 * g.pointCount()];
         Skinners.scalar(SkinningMethod.SPLINE, g, NormalTransform.INVERSE_TRANSPOSE).skinAll(palette, p,
                 new float[p.length]);
@@ -228,7 +227,7 @@ class SplineSkinningTest {
                 PositionSharing.NEVER);
         assertTrue(Skinners.sharesPositions(shared));
         skinned.pose(3f, RotationInterpolation.SLERP);
-        JointPalette palette = skinned.prepareBones(0);
+        JointPalette palette = skinned.palette(0).prepareAll();
         int n = g.pointCount();
         float[] sp = new float[3 * n], sn = new float[3 * n], dp = new float[3 * n], dn = new float[3 * n];
         shared.skinAll(palette, sp, sn);
@@ -252,7 +251,7 @@ class SplineSkinningTest {
             for (float t : times) {
                 skinned.pose(t, RotationInterpolation.SLERP);
                 assertAgrees(asset + " geometry " + g + " at " + t + " s",
-                        agreement(geometry, skinned.prepareBones(g), reference));
+                        agreement(geometry, skinned.palette(g).prepareAll(), reference));
             }
         }
     }

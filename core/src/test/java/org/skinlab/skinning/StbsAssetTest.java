@@ -14,6 +14,8 @@ import org.skinlab.collada.ColladaImporter;
 import org.skinlab.model.Model;
 import org.skinlab.skinning.reference.IndependentStbs;
 import org.skinlab.testing.TestPaths;
+import org.skinlab.internal.metrics.ArtifactMetrics;
+import org.skinlab.internal.metrics.BoneProfile;
 
 /**
  * Stretchable and twistable bones on our assets: the kernels against {@link IndependentStbs}, and
@@ -58,7 +60,7 @@ class StbsAssetTest {
                 // 0.3, 0.55, 0.875 of the clip: not arm-twist's 1 s, exactly 180 degrees (its sign is a float tie).
                 for (float f : new float[] {0.3f, 0.55f, 0.875f}) {
                     model.pose(start + f * (end - start), RotationInterpolation.SLERP);
-                    JointPalette palette = model.prepareBones(g);
+                    JointPalette palette = model.palette(g).prepareAll();
                     for (SkinningMethod m : new SkinningMethod[] {SkinningMethod.STBS_LBS, SkinningMethod.STBS_DQS}) {
                         double[] d = StbsSkinningTest.compare(geometry, palette, m, ref);
                         assertTrue(d[0] <= 1e-5 * size, asset + " " + m + " at " + f + ": position off by " + d[0]
@@ -77,7 +79,7 @@ class StbsAssetTest {
         SkinnedGeometry g = model.geometries().get(0);
         assertTrue(g.sharedPositions() != null, "the arm's caps share positions with its rings");
         model.pose(0.5f, RotationInterpolation.SLERP);
-        JointPalette palette = model.prepareBones(0);
+        JointPalette palette = model.palette(0).prepareAll();
         int n = g.pointCount();
         for (SkinningMethod m : new SkinningMethod[] {SkinningMethod.STBS_LBS, SkinningMethod.STBS_DQS}) {
             float[] p = new float[3 * n], nn = new float[3 * n], sp = new float[3 * n], sn = new float[3 * n];
@@ -103,7 +105,7 @@ class StbsAssetTest {
         Map<SkinningMethod, List<BoneProfile.Ring>> out = new EnumMap<>(SkinningMethod.class);
         for (SkinningMethod method : METHODS) {
             float[] p = skin(model, method);
-            out.put(method, profile.measure(p, model.prepareBones(0)));
+            out.put(method, profile.measure(p, model.palette(0).prepareAll()));
         }
         return out;
     }
@@ -154,7 +156,7 @@ class StbsAssetTest {
         BoneProfile profile = new BoneProfile(g, middle, -1, 2, 16);
         model.pose(1f, RotationInterpolation.SLERP);
         for (SkinningMethod method : METHODS) {
-            List<BoneProfile.Ring> rings = profile.measure(skin(model, method), model.prepareBones(0));
+            List<BoneProfile.Ring> rings = profile.measure(skin(model, method), model.palette(0).prepareAll());
             double spill = 0;
             double radius = 0;
             double minSpacing = Double.MAX_VALUE;

@@ -83,8 +83,7 @@ final class StbsChain {
             world.mul(local);
             palette.setMatrix(j, new Matrix4f(world).translate(0, -j, 0));
         }
-        palette.prepareDualQuaternions();
-        palette.prepareBones();
+        palette.prepareAll();
     }
 
     /** A random pose: rotations up to {@code maxAngle} about random axes, scales in [0.7, 1.4]. */

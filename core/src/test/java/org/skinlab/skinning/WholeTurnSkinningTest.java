@@ -16,6 +16,9 @@ import org.skinlab.animation.RotationInterpolation;
 import org.skinlab.importer.ModelImporter;
 import org.skinlab.model.Model;
 import org.skinlab.testing.TestPaths;
+import org.skinlab.internal.metrics.ArtifactMetrics;
+import org.skinlab.internal.metrics.JointArtifacts;
+import org.skinlab.internal.metrics.RestPose;
 
 /**
  * LBS and DQS of the whole-turn cylinders (assets/README.md) at 30 samples a second over the whole

@@ -23,7 +23,8 @@ import java.util.stream.Stream;
 
 /**
  * A module's public API as text, one signature a line, sorted: every public type of the classes
- * folder a given class was loaded from (nested ones too, when every enclosing type is public), and
+ * folder a given class was loaded from (nested ones too, when every enclosing type is public),
+ * outside the packages named {@code internal}, and
  * each one's public and protected constructors, methods and fields, with generic types as the
  * compiler keeps them. What a user of the published jar can call; {@code ApiFileTest} holds it to
  * the committed file, so that a change of the public API is a decision.
@@ -73,8 +74,14 @@ public final class PublicApi {
         return new ArrayList<>(lines);
     }
 
-    /** Public, and so is every type it is nested in; not synthetic or anonymous. */
+    /**
+     * Public, and so is every type it is nested in; not synthetic or anonymous; and not in a
+     * package named {@code internal} (public only for skinlab's own modules, not API).
+     */
     private static boolean visible(Class<?> c) {
+        if (c.getPackageName().contains(".internal")) {
+            return false;
+        }
         for (Class<?> t = c; t != null; t = t.getEnclosingClass()) {
             if (!Modifier.isPublic(t.getModifiers()) || t.isSynthetic() || t.isAnonymousClass() || t.isLocalClass()) {
                 return false;

@@ -37,7 +37,11 @@ public final class VectorSkinnerProvider implements SkinnerProvider {
         return VectorKernels.deformationExpansion(deformationOfPoint, restNormals);
     }
 
-    /** True when the incubator module is in the boot layer (the JVM got {@code --add-modules}). */
+    /**
+     * Whether the JDK's Vector API can be used here.
+     *
+     * @return true when the incubator module is in the boot layer (the JVM got {@code --add-modules})
+     */
     public static boolean moduleAvailable() {
         return ModuleLayer.boot().findModule(MODULE).isPresent();
     }

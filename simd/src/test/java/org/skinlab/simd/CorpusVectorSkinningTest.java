@@ -77,7 +77,7 @@ class CorpusVectorSkinningTest {
                     Skinner reference = Skinners.scalar(method, geometry, rule);
                     for (int t = 0; t < 5; t++) {
                         skinned.pose(start + (end - start) * t / 4f, RotationInterpolation.SLERP);
-                        skinned.preparePalette(g, method);
+                        skinned.palette(g).prepare(method);
                         compare(file, method, rule, geometry, fast, reference, skinned, g);
                     }
                 }

@@ -85,8 +85,7 @@ final class Geometries {
             }
             palette.setMatrix(j, m);
         }
-        palette.prepareDualQuaternions();
-        palette.prepareBones();
+        palette.prepareAll();
         return palette;
     }
 

@@ -44,7 +44,7 @@ class MorphVectorSkinningTest {
                 float[] sp = new float[n];
                 float[] sn = new float[n];
                 Skinners.scalar(method, g, NormalTransform.INVERSE_TRANSPOSE, PositionSharing.NEVER)
-                        .skinAll(skinned.preparePalette(0), sp, sn);
+                        .skinAll(skinned.palette(0).prepareAll(), sp, sn);
                 for (int i = 0; i < n; i++) {
                     assertTrue(Math.abs(p[i] - sp[i]) <= 2e-5f * 2.3f, method + " t=" + t + " position " + i);
                     assertTrue(Math.abs(nn[i] - sn[i]) <= 2e-5f, method + " t=" + t + " normal " + i);

@@ -32,7 +32,7 @@ class VectorBulgeFreeDqsSkinnerTest {
 
     private static JointPalette pose(SkinnedGeometry g, long seed, boolean scaled) {
         JointPalette palette = Geometries.pose(g, seed, scaled);
-        palette.prepareBones();
+        palette.prepareAll();
         return palette;
     }
 
@@ -85,7 +85,7 @@ class VectorBulgeFreeDqsSkinnerTest {
             skinned.skin(0, SkinningMethod.BFDQS, p, new float[p.length]);
             float[] sp = new float[p.length];
             Skinners.scalar(SkinningMethod.BFDQS, g, NormalTransform.INVERSE_TRANSPOSE,
-                    org.skinlab.skinning.PositionSharing.NEVER).skinAll(skinned.preparePalette(0, SkinningMethod.BFDQS),
+                    org.skinlab.skinning.PositionSharing.NEVER).skinAll(skinned.palette(0).prepare(SkinningMethod.BFDQS),
                     sp, new float[p.length]);
             for (int i = 0; i < p.length; i++) {
                 check("morphed position at " + t + " s", i, p[i], sp[i], 0, g.pointCount());

@@ -52,7 +52,7 @@ class VectorPositionsOnlyTest {
         for (int j = 0; j < palette.jointCount(); j += 2) {
             palette.setMatrix(j, palette.getMatrix(j, m).scale(-1f, 1f, 1f));
         }
-        palette.prepareDualQuaternions();
+        palette.prepareAll();
         return palette;
     }
 

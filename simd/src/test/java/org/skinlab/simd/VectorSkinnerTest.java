@@ -151,7 +151,7 @@ class VectorSkinnerTest {
         for (int j = 0; j < palette.jointCount(); j += 2) {
             palette.setMatrix(j, palette.getMatrix(j, m).scale(-1f, 1f, 1f));
         }
-        palette.prepareDualQuaternions();
+        palette.prepareAll();
         assertTrue(palette.hasScale(), "a mirrored joint is a scale part for DQS");
         assertAgrees(vector(method, g, normals), palette, 0, 203);
         assertDeformationsAgree(vector(method, g, normals), palette, 0, 203);
@@ -246,8 +246,7 @@ class VectorSkinnerTest {
         // Independent check: identity palette, so every kernel must return its input.
         SkinnedGeometry g = Geometries.random(31, 37, 4, 5);
         JointPalette palette = g.newPalette(); // identity skinning matrices until set
-        palette.prepareDualQuaternions();
-        palette.prepareBones();
+        palette.prepareAll();
         for (SkinningMethod m : WITH_VECTOR_KERNELS) {
             float[] p = new float[3 * 37];
             float[] n = new float[3 * 37];

@@ -49,7 +49,7 @@ class VectorSplineSkinnerTest {
                 Skinner scalar = Skinners.scalar(SkinningMethod.SPLINE, g, normals, PositionSharing.NEVER);
                 for (int step = 0; step < 5; step++) {
                     skinned.pose(duration * step / 5f, RotationInterpolation.SLERP);
-                    JointPalette palette = skinned.prepareBones(0);
+                    JointPalette palette = skinned.palette(0).prepareAll();
                     int n = g.pointCount();
                     assertAgrees(asset, vector, scalar, palette, 0, n);
                     assertAgrees(asset, vector, scalar, palette, 3, n - 5);

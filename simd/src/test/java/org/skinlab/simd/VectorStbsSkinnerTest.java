@@ -86,8 +86,7 @@ class VectorStbsSkinnerTest {
             }
             palette.setMatrix(j, new Matrix4f(world).translate(0, -j, 0));
         }
-        palette.prepareDualQuaternions();
-        palette.prepareBones();
+        palette.prepareAll();
         return palette;
     }
 

@@ -2,7 +2,7 @@ package org.skinlab.android.logic;
 
 import java.util.Locale;
 
-import org.skinlab.bench.DeviceResults;
+import org.skinlab.internal.bench.DeviceResults;
 
 /**
  * The CPU's name for the device file, from the best source a phone has: the SoC's maker and model

@@ -13,13 +13,13 @@ import java.util.Locale;
 import java.util.concurrent.CancellationException;
 import java.util.function.Supplier;
 
-import org.skinlab.bench.DeviceResults;
-import org.skinlab.bench.DeviceResultsJson;
-import org.skinlab.bench.FrameBench;
-import org.skinlab.bench.FrameTimes;
-import org.skinlab.bench.Rounds;
-import org.skinlab.bench.Spread;
-import org.skinlab.bench.Warmup;
+import org.skinlab.internal.bench.DeviceResults;
+import org.skinlab.internal.bench.DeviceResultsJson;
+import org.skinlab.internal.bench.FrameBench;
+import org.skinlab.internal.bench.FrameTimes;
+import org.skinlab.internal.bench.Rounds;
+import org.skinlab.internal.bench.Spread;
+import org.skinlab.internal.bench.Warmup;
 import org.skinlab.importer.ModelImporter;
 import org.skinlab.model.MeshInstance;
 import org.skinlab.model.Model;
@@ -27,7 +27,6 @@ import org.skinlab.simulation.AnimationConfig;
 import org.skinlab.simulation.SkeletalAnimatedMesh;
 import org.skinlab.skinning.NormalTransform;
 import org.skinlab.skinning.PositionSharing;
-import org.skinlab.skinning.SkinnedGeometry;
 import org.skinlab.skinning.SkinningMethod;
 
 /**
@@ -274,11 +273,6 @@ public final class DeviceMeasurement {
                     : model.clips().get(0), config);
             m.seek(0.37 * i);
             meshes.add(m);
-        }
-        for (SkinnedGeometry g : meshes.get(0).geometries()) {
-            if (g.isSkinned()) {
-                g.centresOfRotation();
-            }
         }
         return meshes;
     }

@@ -4,7 +4,7 @@ import java.util.List;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 
-import org.skinlab.bench.DeviceResults;
+import org.skinlab.internal.bench.DeviceResults;
 import org.skinlab.simulation.SkeletalAnimatedMesh;
 
 /**

@@ -1,7 +1,7 @@
 package org.skinlab.android.logic;
 
 import org.skinlab.ar.LensGlsl;
-import org.skinlab.scene.MaterialGlsl;
+import org.skinlab.internal.scene.MaterialGlsl;
 import org.skinlab.skinning.SkinningGlsl;
 
 /**

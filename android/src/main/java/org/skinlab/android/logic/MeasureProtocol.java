@@ -3,8 +3,8 @@ package org.skinlab.android.logic;
 import java.util.List;
 import java.util.Locale;
 
-import org.skinlab.bench.FrameTimes;
-import org.skinlab.bench.Rounds;
+import org.skinlab.internal.bench.FrameTimes;
+import org.skinlab.internal.bench.Rounds;
 import org.skinlab.skinning.SkinningMethod;
 
 /**

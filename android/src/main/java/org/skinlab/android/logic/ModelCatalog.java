@@ -5,7 +5,7 @@ import java.util.Arrays;
 import java.util.List;
 
 import org.skinlab.importer.ModelImporter;
-import org.skinlab.scene.DefaultAsset;
+import org.skinlab.internal.scene.DefaultAsset;
 
 /**
  * The models bundled in the APK ({@code .dae}, {@code .gltf}, {@code .glb}), the default character

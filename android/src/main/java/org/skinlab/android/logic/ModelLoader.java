@@ -10,7 +10,6 @@ import java.util.function.Consumer;
 import org.skinlab.importer.ModelImporter;
 import org.skinlab.simulation.AnimationConfig;
 import org.skinlab.simulation.SkeletalAnimatedMesh;
-import org.skinlab.skinning.SkinnedGeometry;
 
 /**
  * The app's models (COLLADA or glTF: {@link ModelImporter} tells them apart; a {@code .gltf}
@@ -73,12 +72,8 @@ public final class ModelLoader implements AutoCloseable {
         SkeletalAnimatedMesh mesh = null;
         ModelTextures textures;
         try (InputStream in = source.open(name)) {
+            // Bind time (CoR's centres too: up to half a second, then from the disk cache) is here, on this thread.
             mesh = SkeletalAnimatedMesh.of(ModelImporter.read(in, name, null), config);
-            for (SkinnedGeometry g : mesh.geometries()) {
-                if (g.isSkinned()) {
-                    g.centresOfRotation();
-                }
-            }
             textures = ModelTextures.decode(mesh.model(), decoder);
         } catch (Throwable e) { // errors too: a model too big for the heap must not end the app
             String message = e.getMessage() != null ? e.getMessage() : e.getClass().getSimpleName();

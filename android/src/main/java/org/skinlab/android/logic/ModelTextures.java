@@ -11,7 +11,7 @@ import org.skinlab.model.MeshInstance;
 import org.skinlab.model.MeshPart;
 import org.skinlab.model.Model;
 import org.skinlab.model.Texture;
-import org.skinlab.scene.PartMaterial;
+import org.skinlab.internal.scene.PartMaterial;
 
 /**
  * The decoded pictures of a model's drawn textures (base and emission textures of every part's

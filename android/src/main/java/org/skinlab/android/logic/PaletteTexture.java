@@ -38,11 +38,11 @@ public final class PaletteTexture {
 
     /** Packs geometry {@code g}'s palette of {@code frame} into {@code dest} (at least {@link #floats}). */
     public static void pack(Frame frame, int g, float[] dest) {
-        int joints = frame.jointCount(g);
-        float[] m = frame.skinningMatrices(g);
-        float[] dq = frame.dualQuaternions(g);
-        float[] sc = frame.hasScale(g) ? frame.scales(g) : null;
-        pack(joints, m, dq, sc, frame.boneRows(g), dest);
+        int joints = frame.palette(g).jointCount();
+        float[] m = frame.palette(g).matrices();
+        float[] dq = frame.palette(g).dualQuaternions();
+        float[] sc = frame.palette(g).hasScale() ? frame.palette(g).scales() : null;
+        pack(joints, m, dq, sc, frame.palette(g).boneRows(), dest);
     }
 
     /**

@@ -14,13 +14,13 @@ import org.skinlab.ar.GrayImage;
 import org.skinlab.ar.MarkerDictionary;
 import org.skinlab.ar.MarkerPattern;
 import org.skinlab.ar.TrackerConfig;
-import org.skinlab.ar.synthetic.PlacedMarker;
-import org.skinlab.ar.synthetic.SceneOptions;
-import org.skinlab.ar.synthetic.SyntheticCamera;
-import org.skinlab.bench.DeviceResults;
-import org.skinlab.bench.DeviceResultsReader;
-import org.skinlab.bench.FrameTimes;
-import org.skinlab.bench.Rounds;
+import org.skinlab.internal.synthetic.PlacedMarker;
+import org.skinlab.internal.synthetic.SceneOptions;
+import org.skinlab.internal.synthetic.SyntheticCamera;
+import org.skinlab.internal.bench.DeviceResults;
+import org.skinlab.internal.bench.DeviceResultsReader;
+import org.skinlab.internal.bench.FrameTimes;
+import org.skinlab.internal.bench.Rounds;
 import org.skinlab.importer.ModelImporter;
 import org.skinlab.simulation.AnimationConfig;
 import org.skinlab.simulation.Frame;
@@ -65,11 +65,13 @@ public final class ShrinkProbe {
                         .withCpuSkinning(false)))) {
             mesh.step(0.1);
             try (Frame f = mesh.acquire()) {
-                float[] palette = new float[PaletteTexture.floats(f.jointCount(0))];
+                float[] palette = new float[PaletteTexture.floats(f.palette(0).jointCount())];
                 PaletteTexture.pack(f, 0, palette);
             }
-            // CoR's centres as the Activity's loader prepares them, kept in the app's cache folder.
-            mesh.geometries().get(0).centresOfRotation();
+            // CoR's centres were bound with the mesh, as on the Activity's loader: the cache below holds them.
+            if (!mesh.geometries().get(0).hasCentresOfRotation()) {
+                throw new IllegalStateException(model.getFileName() + ": the mesh was built without CoR's centres");
+            }
         }
         try (Stream<Path> cached = Files.list(cache)) {
             List<Path> files = cached.collect(Collectors.toList());

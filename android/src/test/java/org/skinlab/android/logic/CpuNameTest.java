@@ -3,7 +3,7 @@ package org.skinlab.android.logic;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import org.junit.jupiter.api.Test;
-import org.skinlab.bench.DeviceResults;
+import org.skinlab.internal.bench.DeviceResults;
 
 /** The CPU's name from the best source a phone has, on texts in the forms kernels write. */
 class CpuNameTest {

@@ -17,11 +17,11 @@ import java.util.concurrent.TimeUnit;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.skinlab.bench.DeviceResults;
-import org.skinlab.bench.DeviceResultsJson;
-import org.skinlab.bench.DeviceResultsReader;
-import org.skinlab.bench.FrameTimes;
-import org.skinlab.bench.Rounds;
+import org.skinlab.internal.bench.DeviceResults;
+import org.skinlab.internal.bench.DeviceResultsJson;
+import org.skinlab.internal.bench.DeviceResultsReader;
+import org.skinlab.internal.bench.FrameTimes;
+import org.skinlab.internal.bench.Rounds;
 import org.skinlab.simulation.Frame;
 import org.skinlab.simulation.SkeletalAnimatedMesh;
 import org.skinlab.skinning.SkinningMethod;

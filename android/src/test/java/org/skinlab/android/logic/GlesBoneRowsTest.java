@@ -58,11 +58,11 @@ class GlesBoneRowsTest {
             int program = GlesPrograms.link(boneRowShader(), GlesShaders.skinnedFragment(), ROWS);
             try (Frame frame = mesh.acquire()) {
                 for (int g = 0; g < frame.geometryCount(); g++) {
-                    float[] expected = frame.boneRows(g);
+                    float[] expected = frame.palette(g).boneRows();
                     assertTrue(lengths(expected) > 0, "geometry " + g + " has bones of some length");
-                    float[] packed = new float[PaletteTexture.floats(frame.jointCount(g))];
+                    float[] packed = new float[PaletteTexture.floats(frame.palette(g).jointCount())];
                     PaletteTexture.pack(frame, g, packed);
-                    assertArrayEquals(expected, capture(program, packed, frame.jointCount(g)),
+                    assertArrayEquals(expected, capture(program, packed, frame.palette(g).jointCount()),
                             "geometry " + g + ": bone rows read by the shader");
                 }
             } finally {

@@ -7,7 +7,7 @@ import java.nio.ByteBuffer;
 
 import org.junit.jupiter.api.Test;
 import org.lwjgl.system.MemoryUtil;
-import org.skinlab.scene.ColourRamp;
+import org.skinlab.internal.scene.ColourRamp;
 
 /**
  * Core's colour map ({@link ColourRamp}, the desktop viewer's weight and difference views) is

@@ -20,7 +20,7 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.skinlab.importer.ModelImporter;
 import org.skinlab.model.Model;
-import org.skinlab.scene.ModelFraming;
+import org.skinlab.internal.scene.ModelFraming;
 import org.skinlab.simulation.AnimationConfig;
 import org.skinlab.simulation.Frame;
 import org.skinlab.simulation.SkeletalAnimatedMesh;
@@ -275,9 +275,9 @@ class GlesCopiesTest {
             glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, PaletteTexture.TEXELS_PER_JOINT, joints, GL_RGBA, GL_FLOAT,
                     paletteBuffer);
             glActiveTexture(GL_TEXTURE0);
-            glUniform1i(glGetUniformLocation(program, "uHasScale"), frame.hasScale(0) ? 1 : 0);
-            glUniform1i(glGetUniformLocation(program, "uMatricesMirror"), frame.mirrorsMatrices(0) ? 1 : 0);
-            glUniform1i(glGetUniformLocation(program, "uScalesMirror"), frame.mirrorsScales(0) ? 1 : 0);
+            glUniform1i(glGetUniformLocation(program, "uHasScale"), frame.palette(0).hasScale() ? 1 : 0);
+            glUniform1i(glGetUniformLocation(program, "uMatricesMirror"), frame.palette(0).mirrorsMatrices() ? 1 : 0);
+            glUniform1i(glGetUniformLocation(program, "uScalesMirror"), frame.palette(0).mirrorsScales() ? 1 : 0);
             glBindVertexArray(vao);
             glDrawElements(GL_TRIANGLES, indices, GL_UNSIGNED_INT, 0);
             glBindVertexArray(0);

@@ -21,10 +21,10 @@ import org.skinlab.model.Image;
 import org.skinlab.model.Model;
 import org.skinlab.model.MeshPart;
 import org.skinlab.model.Texture;
-import org.skinlab.scene.BlendOrder;
-import org.skinlab.scene.MaterialGlsl;
-import org.skinlab.scene.PartCentres;
-import org.skinlab.scene.PartMaterial;
+import org.skinlab.internal.scene.BlendOrder;
+import org.skinlab.internal.scene.MaterialGlsl;
+import org.skinlab.internal.scene.PartCentres;
+import org.skinlab.internal.scene.PartMaterial;
 import org.skinlab.simulation.AnimationConfig;
 import org.skinlab.simulation.Frame;
 import org.skinlab.simulation.SkeletalAnimatedMesh;
@@ -320,7 +320,7 @@ class GlesMaterialsTest {
                 PartCentres centres = PartCentres.of(geometry);
                 posed[g] = new float[3 * centres.partCount()];
                 for (int i = 0; i < centres.partCount(); i++) {
-                    centres.posed(i, frame.skinningMatrices(g), posed[g]);
+                    centres.posed(i, frame.palette(g).matrices(), posed[g]);
                 }
                 MeshPart part = geometry.mesh().parts().get(0);
                 PartMaterial m = PartMaterial.of(geometry.instance(), part);
@@ -340,20 +340,20 @@ class GlesMaterialsTest {
         }
 
         private void drawPart(Frame frame, int g, PartMaterial m, MeshPart part) {
-            float[] packed = new float[PaletteTexture.floats(frame.jointCount(g))];
+            float[] packed = new float[PaletteTexture.floats(frame.palette(g).jointCount())];
             PaletteTexture.pack(frame, g, packed);
             FloatBuffer pb = ByteBuffer.allocateDirect(4 * packed.length).order(ByteOrder.nativeOrder()).asFloatBuffer();
             pb.put(packed).flip();
             glActiveTexture(GL_TEXTURE0 + GlesShaders.PALETTE_UNIT);
             glBindTexture(GL_TEXTURE_2D, palettes[g]);
-            glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, PaletteTexture.TEXELS_PER_JOINT, frame.jointCount(g), 0, GL_RGBA,
+            glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, PaletteTexture.TEXELS_PER_JOINT, frame.palette(g).jointCount(), 0, GL_RGBA,
                     GL_FLOAT, pb);
             if (m.doubleSided()) {
                 glDisable(GL_CULL_FACE);
             } else {
                 glEnable(GL_CULL_FACE);
                 glCullFace(GL_BACK);
-                glFrontFace(PartCentres.firstJointMirrors(frame.skinningMatrices(g)) ? GL_CW : GL_CCW);
+                glFrontFace(PartCentres.firstJointMirrors(frame.palette(g).matrices()) ? GL_CW : GL_CCW);
             }
             glUniform4fv(glGetUniformLocation(program, "uBaseColor"), m.baseColor());
             glUniform3fv(glGetUniformLocation(program, "uEmission"), m.emission());

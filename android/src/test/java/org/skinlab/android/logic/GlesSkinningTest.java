@@ -22,7 +22,7 @@ import org.skinlab.model.Model;
 import org.skinlab.simulation.AnimationConfig;
 import org.skinlab.simulation.Frame;
 import org.skinlab.simulation.SkeletalAnimatedMesh;
-import org.skinlab.skinning.ArtifactMetrics;
+import org.skinlab.internal.metrics.ArtifactMetrics;
 import org.skinlab.skinning.InfluenceView;
 import org.skinlab.skinning.JointPalette;
 import org.skinlab.skinning.NormalTransform;
@@ -190,17 +190,16 @@ class GlesSkinningTest {
                 mesh.step(0.0);
                 try (Frame frame = mesh.acquire()) {
                     PaletteTexture.pack(frame, g, packed);
-                    gpu.capture(program, packed, code, frame.hasScale(g), frame.mirrorsMatrices(g),
-                            frame.mirrorsScales(g), gpuPositions, gpuNormals);
+                    gpu.capture(program, packed, code, frame.palette(g).hasScale(), frame.palette(g).mirrorsMatrices(),
+                            frame.palette(g).mirrorsScales(), gpuPositions, gpuNormals);
                     // The kernel's palette is the frame's: the same matrices, prepared by the same code.
-                    System.arraycopy(frame.skinningMatrices(g), 0, palette.matrices(), 0, palette.matrices().length);
-                    palette.prepareDualQuaternions();
-                    palette.prepareBones();
-                    assertArrayEquals(frame.dualQuaternions(g), palette.dualQuaternions(), "dual quaternions");
-                    assertArrayEquals(frame.boneRows(g), palette.boneRows(), "bone rows");
-                    assertArrayEquals(frame.scales(g), palette.scales(), "scale parts");
-                    assertEquals(frame.hasScale(g), palette.hasScale());
-                    errors.scaledPoses += frame.hasScale(g) ? 1 : 0;
+                    System.arraycopy(frame.palette(g).matrices(), 0, palette.writableMatrices(), 0, palette.matrices().length);
+                    palette.prepareAll();
+                    assertArrayEquals(frame.palette(g).dualQuaternions(), palette.dualQuaternions(), "dual quaternions");
+                    assertArrayEquals(frame.palette(g).boneRows(), palette.boneRows(), "bone rows");
+                    assertArrayEquals(frame.palette(g).scales(), palette.scales(), "scale parts");
+                    assertEquals(frame.palette(g).hasScale(), palette.hasScale());
+                    errors.scaledPoses += frame.palette(g).hasScale() ? 1 : 0;
                 }
                 kernel.skinAll(palette, cpuPositions, cpuNormals);
                 errors.add(compare(gpuPositions, gpuNormals, cpuPositions, cpuNormals, n));
@@ -208,7 +207,7 @@ class GlesSkinningTest {
                     mirror(palette);
                     assertTrue(palette.mirrorsMatrices() && palette.mirrorsScales(), "the mirrored pose mirrors");
                     // Packed and flagged as a frame carrying this palette is (Frame.copyPalette).
-                    palette.prepareBones();
+                    palette.prepareAll();
                     PaletteTexture.pack(palette.jointCount(), palette.matrices(), palette.dualQuaternions(),
                             palette.hasScale() ? palette.scales() : null, palette.boneRows(), packed);
                     gpu.capture(program, packed, code, palette.hasScale(), palette.mirrorsMatrices(),
@@ -228,7 +227,7 @@ class GlesSkinningTest {
                 m[12 * j + c] = -m[12 * j + c];
             }
         }
-        palette.prepareDualQuaternions();
+        palette.prepareAll();
     }
 
     /** The largest position distance (relative to the CPU's bounding box) and normal distance. */
@@ -279,7 +278,7 @@ class GlesSkinningTest {
             mesh.step(0.0);
             try (Frame frame = mesh.acquire()) {
                 for (int g = 0; g < frame.geometryCount(); g++) {
-                    double angle = largestAngle(mesh.geometries().get(g), frame.dualQuaternions(g));
+                    double angle = largestAngle(mesh.geometries().get(g), frame.palette(g).dualQuaternions());
                     if (angle > bestAngle) {
                         bestAngle = angle;
                         best = t;

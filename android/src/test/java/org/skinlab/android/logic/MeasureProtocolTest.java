@@ -8,8 +8,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.List;
 
 import org.junit.jupiter.api.Test;
-import org.skinlab.bench.FrameTimes;
-import org.skinlab.bench.Rounds;
+import org.skinlab.internal.bench.FrameTimes;
+import org.skinlab.internal.bench.Rounds;
 
 /** The measurement's protocols: the launch extra's names, at least the evaluation's five rounds, the planned time. */
 class MeasureProtocolTest {

@@ -64,7 +64,7 @@ class ModelLoaderTest {
         mesh.seek(seconds);
         mesh.step(0.0);
         try (org.skinlab.simulation.Frame f = mesh.acquire()) {
-            return f.skinningMatrices(0).clone();
+            return f.palette(0).matrices().clone();
         }
     }
 

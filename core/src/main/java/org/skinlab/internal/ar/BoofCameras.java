@@ -1,6 +1,8 @@
-package org.skinlab.ar;
+package org.skinlab.internal.ar;
 
 import boofcv.struct.calib.CameraPinholeBrown;
+import org.skinlab.ar.CameraIntrinsics;
+import org.skinlab.ar.LensDistortion;
 
 /**
  * Our {@link CameraIntrinsics} to and from BoofCV's {@link CameraPinholeBrown}: the one place that

@@ -1,4 +1,4 @@
-package org.skinlab.ar;
+package org.skinlab.internal.ar;
 
 import java.util.Locale;
 

@@ -1,4 +1,4 @@
-package org.skinlab.ar;
+package org.skinlab.internal.ar;
 
 /** Small pose helpers on row-major 3x3 rotations and translations. */
 public final class PoseMath {

@@ -1,4 +1,4 @@
-package org.skinlab.bench;
+package org.skinlab.internal.bench;
 
 import java.util.List;
 

@@ -1,4 +1,4 @@
-package org.skinlab.bench;
+package org.skinlab.internal.bench;
 
 import java.io.IOException;
 import java.util.ArrayList;

@@ -1,4 +1,4 @@
-package org.skinlab.bench;
+package org.skinlab.internal.bench;
 
 import java.util.Arrays;
 import java.util.LinkedHashSet;
@@ -184,7 +184,7 @@ public final class FrameBench {
         skinned.pose(t, RotationInterpolation.SLERP);
         for (int g = 0; g < positions.length; g++) {
             // What the method reads: the dual quaternions (all but LBS), the bone rows (the bone methods).
-            skinners[g][method.ordinal()].skinAll(skinned.preparePalette(g, method), positions[g], normals[g]);
+            skinners[g][method.ordinal()].skinAll(skinned.palette(g).prepare(method), positions[g], normals[g]);
         }
     }
 }

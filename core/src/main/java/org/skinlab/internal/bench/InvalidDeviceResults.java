@@ -1,4 +1,4 @@
-package org.skinlab.bench;
+package org.skinlab.internal.bench;
 
 /**
  * A device file ({@link DeviceResultsJson}) that is not one: its message names the file, the JSON

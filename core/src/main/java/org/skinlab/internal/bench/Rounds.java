@@ -1,4 +1,4 @@
-package org.skinlab.bench;
+package org.skinlab.internal.bench;
 
 /**
  * Repeated measurements of several things that are compared with each other (methods, kernels,

@@ -1,4 +1,4 @@
-package org.skinlab.bench;
+package org.skinlab.internal.bench;
 
 /**
  * How a measurement warms up before it times: runs the step for at least a minimum time and, where

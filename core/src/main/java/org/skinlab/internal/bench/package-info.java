@@ -8,4 +8,4 @@
  * the platform's choice (the desktop waits for HotSpot's JIT, docs/evaluation.md). Depends on
  * {@code org.skinlab.skinning}, {@code org.skinlab.animation} and {@code org.skinlab.model}.
  */
-package org.skinlab.bench;
+package org.skinlab.internal.bench;

@@ -1,7 +1,8 @@
-package org.skinlab.skinning;
+package org.skinlab.internal.metrics;
 
 import org.joml.Vector3f;
 import org.joml.Vector3fc;
+import org.skinlab.skinning.SkinnedGeometry;
 
 /**
  * Numbers for the artifacts the thesis could only show: the volume a closed mesh encloses, and

@@ -1,9 +1,12 @@
-package org.skinlab.skinning;
+package org.skinlab.internal.metrics;
 
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
+import org.skinlab.skinning.Bones;
+import org.skinlab.skinning.JointPalette;
+import org.skinlab.skinning.SkinnedGeometry;
 
 /**
  * How a method spreads a bone's twist and stretch along the bone, ring by ring: for a tube-like
@@ -20,7 +23,7 @@ import java.util.TreeMap;
  *     stretch shows in how these advance from ring to ring).</li>
  * </ul>
  * The posed axis and head are the palette's bone rows 3 and 0, so the palette must have its bones
- * prepared ({@link JointPalette#prepareBones()}). Rings are grouped to 0.1 mm along the bone.
+ * prepared ({@link JointPalette#prepare}). Rings are grouped to 0.1 mm along the bone.
  */
 public final class BoneProfile {
     /** One ring: rest position along the bone (in bone lengths from the head) and its measures in a pose. */

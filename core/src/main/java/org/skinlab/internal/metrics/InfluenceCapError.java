@@ -1,4 +1,4 @@
-package org.skinlab.skinning;
+package org.skinlab.internal.metrics;
 
 import java.util.ArrayList;
 import java.util.Arrays;
@@ -8,6 +8,15 @@ import org.skinlab.animation.AnimationSampler;
 import org.skinlab.animation.Pose;
 import org.skinlab.animation.RotationInterpolation;
 import org.skinlab.animation.Skeleton;
+import org.skinlab.skinning.InfluenceView;
+import org.skinlab.skinning.JointPalette;
+import org.skinlab.skinning.NormalTransform;
+import org.skinlab.skinning.ScalarDqsSkinner;
+import org.skinlab.skinning.ScalarLbsSkinner;
+import org.skinlab.skinning.SkinnedGeometry;
+import org.skinlab.skinning.SkinnedModel;
+import org.skinlab.skinning.Skinner;
+import org.skinlab.skinning.SkinningMethod;
 
 /**
  * How far an {@link InfluenceView}'s cap moves a model's positions over its clip: for each placed
@@ -117,7 +126,7 @@ public final class InfluenceCapError {
                 JointPalette palette = model.palette(g);
                 for (int m = 0; m < 2; m++) {
                     if (m == 1) {
-                        palette.prepareDualQuaternions();
+                        palette.prepare(SkinningMethod.DQS);
                     }
                     full[g].skin(m, palette);
                     for (Capped c : capped[g]) {
@@ -161,7 +170,7 @@ public final class InfluenceCapError {
     /** The diagonal of the bounding box of a geometry's positions in the rest pose. */
     private static double restDiagonal(Skeleton skeleton, Pose rest, SkinnedGeometry geometry, Side full) {
         JointPalette palette = geometry.newPalette();
-        skeleton.skinningMatrices(rest, geometry.jointNodeArray(), geometry.bindMatrixArray(), palette.matrices());
+        skeleton.skinningMatrices(rest, geometry.jointNodeArray(), geometry.bindMatrixArray(), palette.writableMatrices());
         full.skin(0, palette);
         double[] min = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY};
         double[] max = {Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};

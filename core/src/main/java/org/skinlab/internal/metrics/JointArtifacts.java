@@ -1,4 +1,4 @@
-package org.skinlab.skinning;
+package org.skinlab.internal.metrics;
 
 import java.util.ArrayList;
 import java.util.EnumMap;
@@ -7,6 +7,8 @@ import java.util.Map;
 
 import org.joml.Matrix4f;
 import org.joml.Vector3f;
+import org.skinlab.skinning.SkinnedGeometry;
+import org.skinlab.skinning.SkinningMethod;
 
 /**
  * Where each skinning method wins, at one joint of one part of a model in one pose: per method

@@ -1,4 +1,4 @@
-package org.skinlab.skinning;
+package org.skinlab.internal.metrics;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -6,6 +6,8 @@ import java.util.List;
 import org.skinlab.animation.RotationInterpolation;
 import org.skinlab.model.AnimationClip;
 import org.skinlab.model.Model;
+import org.skinlab.skinning.NormalTransform;
+import org.skinlab.skinning.SkinnedModel;
 
 /**
  * The largest distance between a point's LBS and its DQS position over a whole clip, relative to

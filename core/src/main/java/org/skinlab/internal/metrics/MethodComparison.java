@@ -1,7 +1,13 @@
-package org.skinlab.skinning;
+package org.skinlab.internal.metrics;
 
 import org.joml.Matrix4f;
 import org.skinlab.animation.AnimationHelper;
+import org.skinlab.skinning.JointPalette;
+import org.skinlab.skinning.NormalTransform;
+import org.skinlab.skinning.SkinnedGeometry;
+import org.skinlab.skinning.Skinner;
+import org.skinlab.skinning.Skinners;
+import org.skinlab.skinning.SkinningMethod;
 
 /**
  * LBS and DQS side by side on one part of a model in one pose: where the two methods place each
@@ -61,7 +67,7 @@ public final class MethodComparison {
             AnimationHelper.getRowMajor3x4(skinningMatrices, 12 * j, matrix);
             palette.setMatrix(j, matrix);
         }
-        palette.prepareDualQuaternions();
+        palette.prepare(SkinningMethod.DQS);
         lbs.skinAll(palette, lbsPositions, normals);
         dqs.skinAll(palette, dqsPositions, normals);
         double max = 0;

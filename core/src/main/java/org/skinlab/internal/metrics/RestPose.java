@@ -1,4 +1,4 @@
-package org.skinlab.skinning;
+package org.skinlab.internal.metrics;
 
 import java.util.ArrayList;
 import java.util.HashMap;
@@ -8,6 +8,12 @@ import java.util.Map;
 
 import org.skinlab.animation.Pose;
 import org.skinlab.animation.Skeleton;
+import org.skinlab.skinning.JointPalette;
+import org.skinlab.skinning.NormalTransform;
+import org.skinlab.skinning.SkinnedGeometry;
+import org.skinlab.skinning.SkinnedModel;
+import org.skinlab.skinning.Skinners;
+import org.skinlab.skinning.SkinningMethod;
 
 /**
  * A model's placed parts in its rest pose (every node's transforms as the file writes them, no
@@ -92,7 +98,7 @@ public final class RestPose {
                         + geometry.jointCount() + " joints");
             }
             matrices[g] = m.clone();
-            System.arraycopy(m, 0, palette.matrices(), 0, m.length);
+            System.arraycopy(m, 0, palette.writableMatrices(), 0, m.length);
             positions[g] = new float[3 * geometry.pointCount()];
             Skinners.scalar(SkinningMethod.LBS, geometry, NormalTransform.INVERSE_TRANSPOSE)
                     .skinAll(palette, positions[g], new float[positions[g].length]);

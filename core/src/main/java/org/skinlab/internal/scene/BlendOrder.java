@@ -1,4 +1,4 @@
-package org.skinlab.scene;
+package org.skinlab.internal.scene;
 
 import org.joml.Matrix4fc;
 

@@ -1,4 +1,4 @@
-package org.skinlab.scene;
+package org.skinlab.internal.scene;
 
 import java.util.Locale;
 
@@ -85,7 +85,7 @@ public final class ColourRamp {
     /** The definition of {@code colourRamp}, one segment per pair of neighbouring stops. */
     private static String glsl() {
         StringBuilder b = new StringBuilder();
-        b.append("// The data views' colour map, generated from org.skinlab.scene.ColourRamp's stops.\n");
+        b.append("// The data views' colour map, generated from org.skinlab.internal.scene.ColourRamp's stops.\n");
         b.append("vec3 colourRamp(float x) {\n");
         for (int i = 0; i < STOPS.length; i++) {
             b.append("    const vec3 c").append(i).append(" = vec3(").append(literal(STOPS[i][0])).append(", ")

@@ -1,4 +1,4 @@
-package org.skinlab.scene;
+package org.skinlab.internal.scene;
 
 /** Which of our assets every presenter opens first: the one home of that rule. */
 public final class DefaultAsset {

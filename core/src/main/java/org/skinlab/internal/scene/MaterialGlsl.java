@@ -1,4 +1,4 @@
-package org.skinlab.scene;
+package org.skinlab.internal.scene;
 
 import org.skinlab.glsl.GlslInclude;
 
@@ -9,7 +9,7 @@ import org.skinlab.glsl.GlslInclude;
  * app's model fragment shaders both include it. Plain text to core: no GL here.
  */
 public final class MaterialGlsl {
-    private static final GlslInclude FILE = new GlslInclude("/org/skinlab/scene/material.glsl",
+    private static final GlslInclude FILE = new GlslInclude("/org/skinlab/internal/scene/material.glsl",
             "the material shader's formulas");
 
     /** The line of a shader that {@link #expand} replaces with the formulas. */

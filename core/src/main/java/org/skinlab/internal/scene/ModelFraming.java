@@ -1,4 +1,4 @@
-package org.skinlab.scene;
+package org.skinlab.internal.scene;
 
 import java.util.List;
 
@@ -56,7 +56,7 @@ public record ModelFraming(Matrix4fc upright, Vector3f centre, float radius, flo
         Vector3f p = new Vector3f();
         for (int g = 0; g < geometries.size(); g++) {
             SkinnedGeometry geometry = geometries.get(g);
-            float[] m = frame.skinningMatrices(g);
+            float[] m = frame.palette(g).matrices();
             // A morphing geometry's own array is rewritten by the simulation thread; the frame holds
             // the rest shape its palette goes with.
             float[] points = frame.restPositions(g) != null ? frame.restPositions(g) : geometry.positionArray();

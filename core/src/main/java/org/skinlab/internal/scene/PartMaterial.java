@@ -1,4 +1,4 @@
-package org.skinlab.scene;
+package org.skinlab.internal.scene;
 
 import org.skinlab.model.Material;
 import org.skinlab.model.MaterialBinding;

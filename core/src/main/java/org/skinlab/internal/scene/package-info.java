@@ -7,4 +7,4 @@
  * Depends on {@code org.skinlab.model}, {@code org.skinlab.skinning},
  * {@code org.skinlab.simulation} (a frame's posed bounds) and {@code org.skinlab.glsl}.
  */
-package org.skinlab.scene;
+package org.skinlab.internal.scene;

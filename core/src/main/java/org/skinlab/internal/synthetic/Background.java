@@ -1,4 +1,4 @@
-package org.skinlab.ar.synthetic;
+package org.skinlab.internal.synthetic;
 
 import java.util.Random;
 

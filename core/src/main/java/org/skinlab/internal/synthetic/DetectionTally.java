@@ -1,10 +1,10 @@
-package org.skinlab.ar.synthetic;
+package org.skinlab.internal.synthetic;
 
 import java.util.Arrays;
 import java.util.List;
 
 import org.skinlab.ar.MarkerDetection;
-import org.skinlab.ar.PoseMath;
+import org.skinlab.internal.ar.PoseMath;
 
 /**
  * What a detector made of frames of one known marker each: frames, markers found with the right id,

@@ -1,4 +1,4 @@
-package org.skinlab.ar.synthetic;
+package org.skinlab.internal.synthetic;
 
 /**
  * A sheet of paper lying in the synthetic scene: its pose and what is printed on it. The sheet's

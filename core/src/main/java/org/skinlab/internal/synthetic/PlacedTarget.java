@@ -1,6 +1,6 @@
-package org.skinlab.ar.synthetic;
+package org.skinlab.internal.synthetic;
 
-import org.skinlab.ar.CalibrationTarget;
+import org.skinlab.internal.ar.CalibrationTarget;
 
 /**
  * A printed calibration target in the synthetic scene: the pattern centred on its sheet, white

@@ -1,4 +1,4 @@
-package org.skinlab.ar.synthetic;
+package org.skinlab.internal.synthetic;
 
 /**
  * How a synthetic frame is degraded, as a camera would.

@@ -4,4 +4,4 @@
  * {@code PlacedTarget}) over a {@code Background} through a lens, so the tracker and the
  * calibration can be measured against the truth (docs/ar.md). Depends on {@code org.skinlab.ar}.
  */
-package org.skinlab.ar.synthetic;
+package org.skinlab.internal.synthetic;

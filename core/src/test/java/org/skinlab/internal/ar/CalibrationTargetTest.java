@@ -1,4 +1,4 @@
-package org.skinlab.ar;
+package org.skinlab.internal.ar;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -6,9 +6,9 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.junit.jupiter.api.Test;
-import org.skinlab.ar.synthetic.PlacedMarker;
-import org.skinlab.ar.synthetic.PlacedTarget;
-import org.skinlab.ar.synthetic.SyntheticCamera;
+import org.skinlab.internal.synthetic.PlacedMarker;
+import org.skinlab.internal.synthetic.PlacedTarget;
+import org.skinlab.internal.synthetic.SyntheticCamera;
 
 /** The target's geometry (sizes, squares, points), its names, and the inputs it refuses. */
 class CalibrationTargetTest {

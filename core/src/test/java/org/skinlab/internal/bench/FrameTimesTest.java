@@ -1,4 +1,4 @@
-package org.skinlab.bench;
+package org.skinlab.internal.bench;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;

@@ -1,4 +1,4 @@
-package org.skinlab.skinning;
+package org.skinlab.internal.metrics;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -11,6 +11,8 @@ import org.skinlab.collada.ColladaImporter;
 import org.skinlab.model.Mesh;
 import org.skinlab.model.MeshInstance;
 import org.skinlab.testing.TestPaths;
+import org.skinlab.skinning.SkinnedGeometry;
+import org.skinlab.skinning.SkinnedModel;
 
 class ArtifactMetricsTest {
     // A tetrahedron (0,0,0), (1,0,0), (0,1,0), (0,0,1), faces wound counter-clockwise seen from

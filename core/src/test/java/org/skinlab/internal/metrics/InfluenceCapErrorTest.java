@@ -1,4 +1,4 @@
-package org.skinlab.skinning;
+package org.skinlab.internal.metrics;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -17,6 +17,13 @@ import org.skinlab.collada.Fixtures;
 import org.skinlab.model.Model;
 import org.skinlab.model.Skin;
 import org.skinlab.testing.TestPaths;
+import org.skinlab.skinning.InfluenceView;
+import org.skinlab.skinning.JointPalette;
+import org.skinlab.skinning.NormalTransform;
+import org.skinlab.skinning.SkinnedGeometry;
+import org.skinlab.skinning.SkinnedModel;
+import org.skinlab.skinning.Skinners;
+import org.skinlab.skinning.SkinningMethod;
 
 /**
  * {@link InfluenceCapError} against a direct computation written here from the formulas, in
@@ -94,7 +101,7 @@ class InfluenceCapErrorTest {
                 for (float t : InfluenceCapError.sampleTimes(skinned.sampler().start(), skinned.sampler().end())) {
                     skinned.pose(t, RotationInterpolation.SLERP);
                     JointPalette palette = skinned.palette(0);
-                    palette.prepareDualQuaternions();
+                    palette.prepareAll();
                     for (SkinningMethod m : LBS_AND_DQS) {
                         float[] a = new float[3 * g.pointCount()];
                         float[] b = new float[3 * g.pointCount()];
@@ -197,7 +204,7 @@ class InfluenceCapErrorTest {
             for (int t = 0; t < times.length; t++) {
                 model.pose(times[t], RotationInterpolation.SLERP);
                 JointPalette palette = model.palette(g);
-                palette.prepareDualQuaternions();
+                palette.prepareAll();
                 for (int p = 0; p < positions; p++) {
                     double[] lbs = lbs(palette.matrices(), full[p], rest, p);
                     double[] dqs = dqs(palette, full[p], rest, p);

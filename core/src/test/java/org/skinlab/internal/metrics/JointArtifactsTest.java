@@ -1,4 +1,4 @@
-package org.skinlab.skinning;
+package org.skinlab.internal.metrics;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -12,6 +12,9 @@ import org.skinlab.animation.RotationInterpolation;
 import org.skinlab.collada.ColladaImporter;
 import org.skinlab.model.Model;
 import org.skinlab.testing.TestPaths;
+import org.skinlab.skinning.SkinnedGeometry;
+import org.skinlab.skinning.SkinnedModel;
+import org.skinlab.skinning.SkinningMethod;
 
 /** The per-method table on the cylinders: each method's artifact where the thesis and the paper put it. */
 class JointArtifactsTest {

@@ -1,4 +1,4 @@
-package org.skinlab.skinning;
+package org.skinlab.internal.metrics;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -13,6 +13,10 @@ import org.skinlab.animation.RotationInterpolation;
 import org.skinlab.collada.ColladaImporter;
 import org.skinlab.model.Model;
 import org.skinlab.testing.TestPaths;
+import org.skinlab.skinning.JointPalette;
+import org.skinlab.skinning.SkinnedGeometry;
+import org.skinlab.skinning.SkinnedModel;
+import org.skinlab.skinning.SkinningMethod;
 
 /**
  * LBS against DQS on one pose, as the difference view shows it, checked against the kernels run
@@ -145,7 +149,7 @@ class MethodComparisonTest {
         SkinnedGeometry g = skinned.geometries().get(0);
         MethodComparison c = new MethodComparison(RestPose.of(skinned), 0);
         c.compare(skinned.palette(0).matrices());
-        JointPalette palette = skinned.preparePalette(0);
+        JointPalette palette = skinned.palette(0).prepareAll();
         int n = g.pointCount();
         int k = g.influencesPerPoint();
         float[] w = g.weightArray();

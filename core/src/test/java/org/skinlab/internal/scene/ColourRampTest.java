@@ -1,4 +1,4 @@
-package org.skinlab.scene;
+package org.skinlab.internal.scene;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;

@@ -1,4 +1,4 @@
-package org.skinlab.scene;
+package org.skinlab.internal.scene;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -120,10 +120,10 @@ class PartMaterialTest {
                 }
                 PartCentres centres = PartCentres.of(mesh.geometries().get(g));
                 float[] posed = new float[3];
-                centres.posed(0, frame.skinningMatrices(g), posed);
+                centres.posed(0, frame.palette(g).matrices(), posed);
                 // The glass quad's node: column 0, row 1, in front (make-fixtures.py's layout).
                 assertArrayEquals(new float[] {-1.25f, 1.25f, 0.3f}, posed, 1e-6f);
-                assertFalse(PartCentres.firstJointMirrors(frame.skinningMatrices(g)));
+                assertFalse(PartCentres.firstJointMirrors(frame.palette(g).matrices()));
                 return;
             }
         }

@@ -3,8 +3,8 @@ package org.skinlab.desktop.app;
 import java.util.List;
 
 import org.skinlab.simulation.Frame;
-import org.skinlab.skinning.MethodComparison;
-import org.skinlab.skinning.RestPose;
+import org.skinlab.internal.metrics.MethodComparison;
+import org.skinlab.internal.metrics.RestPose;
 
 /**
  * The numbers beside the difference view: LBS against DQS on the frame shown (core's
@@ -57,7 +57,7 @@ final class DifferenceProbe {
         measuredAt = now;
         double max = 0;
         for (int g = 0; g < comparisons.length; g++) {
-            comparisons[g].compare(frame.skinningMatrices(g));
+            comparisons[g].compare(frame.palette(g).matrices());
             max = Math.max(max, comparisons[g].maxDistance());
         }
         maxRelative = rest.size() > 0 ? max / rest.size() : 0;

@@ -13,7 +13,7 @@ import org.apache.pdfbox.pdmodel.PDPage;
 import org.apache.pdfbox.pdmodel.PDPageContentStream;
 import org.apache.pdfbox.pdmodel.common.PDRectangle;
 
-import org.skinlab.ar.CalibrationTarget;
+import org.skinlab.internal.ar.CalibrationTarget;
 
 /**
  * The printable calibration target: an A4 PDF (landscape when the target is wider than tall) with

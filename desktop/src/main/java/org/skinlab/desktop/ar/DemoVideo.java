@@ -8,9 +8,9 @@ import org.skinlab.ar.CameraIntrinsics;
 import org.skinlab.ar.GrayImage;
 import org.skinlab.ar.MarkerDictionary;
 import org.skinlab.ar.MarkerPattern;
-import org.skinlab.ar.synthetic.PlacedMarker;
-import org.skinlab.ar.synthetic.SceneOptions;
-import org.skinlab.ar.synthetic.SyntheticCamera;
+import org.skinlab.internal.synthetic.PlacedMarker;
+import org.skinlab.internal.synthetic.SceneOptions;
+import org.skinlab.internal.synthetic.SyntheticCamera;
 
 /**
  * A synthetic camera video of the default printed marker (id 0, 10 cm) on a desk: one loop of a

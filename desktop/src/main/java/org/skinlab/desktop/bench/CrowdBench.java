@@ -5,10 +5,10 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 
-import org.skinlab.bench.FrameBench;
-import org.skinlab.bench.FrameTimes;
-import org.skinlab.bench.Rounds;
-import org.skinlab.bench.Spread;
+import org.skinlab.internal.bench.FrameBench;
+import org.skinlab.internal.bench.FrameTimes;
+import org.skinlab.internal.bench.Rounds;
+import org.skinlab.internal.bench.Spread;
 import org.skinlab.model.Model;
 import org.skinlab.skinning.SkinnedGeometry;
 import org.skinlab.skinning.SkinnedModel;

@@ -4,7 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 
-import org.skinlab.bench.FrameBench;
+import org.skinlab.internal.bench.FrameBench;
 import org.skinlab.skinning.SkinningMethod;
 
 /**

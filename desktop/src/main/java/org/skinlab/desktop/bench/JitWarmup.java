@@ -3,7 +3,7 @@ package org.skinlab.desktop.bench;
 import java.lang.management.ManagementFactory;
 import java.lang.management.ThreadMXBean;
 
-import org.skinlab.bench.Warmup;
+import org.skinlab.internal.bench.Warmup;
 
 /**
  * A warm-up that waits for the JIT: frames for at least the given time, then on, a tenth of a

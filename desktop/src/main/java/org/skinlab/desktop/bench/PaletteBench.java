@@ -6,6 +6,7 @@ import java.util.List;
 import org.skinlab.animation.RotationInterpolation;
 import org.skinlab.animation.WrapMode;
 import org.skinlab.skinning.SkinnedModel;
+import org.skinlab.skinning.SkinningMethod;
 
 /**
  * {@code skinlab bench frame --palette-only}: the joint palette of a frame alone, no skinning. Per
@@ -46,7 +47,7 @@ public final class PaletteBench {
         do {
             skinned.pose(skinned.sampler().clipTime(frame++ / 60.0, WrapMode.LOOP), RotationInterpolation.SLERP);
             for (int g = 0; g < geometries; g++) {
-                skinned.palette(g).prepareDualQuaternions();
+                skinned.palette(g).prepare(SkinningMethod.DQS);
             }
         } while (System.nanoTime() < warmupEnd);
         double[] pose = new double[1024];
@@ -59,7 +60,7 @@ public final class PaletteBench {
             skinned.pose(t, RotationInterpolation.SLERP);
             long t1 = System.nanoTime();
             for (int g = 0; g < geometries; g++) {
-                skinned.palette(g).prepareDualQuaternions();
+                skinned.palette(g).prepare(SkinningMethod.DQS);
             }
             long t2 = System.nanoTime();
             if (n == pose.length) {

@@ -2,6 +2,7 @@ package org.skinlab.desktop.bench;
 
 import org.skinlab.skinning.JointPalette;
 import org.skinlab.skinning.SkinnedGeometry;
+import org.skinlab.skinning.SkinningMethod;
 
 /**
  * The synthetic skinning input of the shared side-by-side benchmark ({@code ../shared/perf/}:
@@ -180,13 +181,13 @@ public final class SyntheticSkinData {
 
     /**
      * A palette holding the reference's joint matrices, with its dual quaternions derived by
-     * {@link JointPalette#prepareDualQuaternions()} (equal to {@link #dualQuaternions()} up to
+     * {@link JointPalette#prepare} (equal to {@link #dualQuaternions()} up to
      * sign and float noise; see SyntheticSkinDataTest).
      */
     public JointPalette palette() {
         JointPalette palette = JointPalette.withoutBindFrames(JOINTS);
-        System.arraycopy(matrices, 0, palette.matrices(), 0, matrices.length);
-        palette.prepareDualQuaternions();
+        System.arraycopy(matrices, 0, palette.writableMatrices(), 0, matrices.length);
+        palette.prepare(SkinningMethod.DQS);
         return palette;
     }
 

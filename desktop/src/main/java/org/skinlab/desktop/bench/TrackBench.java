@@ -19,8 +19,8 @@ import org.skinlab.ar.GrayImage;
 import org.skinlab.ar.MarkerDetection;
 import org.skinlab.ar.MarkerDictionary;
 import org.skinlab.ar.TrackerConfig;
-import org.skinlab.bench.Rounds;
-import org.skinlab.bench.Spread;
+import org.skinlab.internal.bench.Rounds;
+import org.skinlab.internal.bench.Spread;
 
 /**
  * The timing of {@code skinlab bench track}: BoofCV's squareHamming detector with its default

@@ -16,7 +16,7 @@ import org.skinlab.ar.CameraIntrinsics;
 import org.skinlab.ar.GrayImage;
 import org.skinlab.ar.LensDistortion;
 import org.skinlab.ar.MarkerDetection;
-import org.skinlab.ar.synthetic.PlacedMarker;
+import org.skinlab.internal.synthetic.PlacedMarker;
 import org.skinlab.desktop.CommandFailure;
 import org.skinlab.desktop.ExitCodes;
 import org.skinlab.desktop.ar.DemoVideo;

@@ -10,7 +10,7 @@ import java.util.concurrent.Callable;
 
 import boofcv.alg.geo.calibration.CalibrationObservation;
 
-import org.skinlab.ar.CalibrationTarget;
+import org.skinlab.internal.ar.CalibrationTarget;
 import org.skinlab.ar.CameraIntrinsics;
 import org.skinlab.ar.GrayImage;
 import org.skinlab.ar.LensDistortion;

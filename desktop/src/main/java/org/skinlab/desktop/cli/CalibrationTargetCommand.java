@@ -3,7 +3,7 @@ package org.skinlab.desktop.cli;
 import java.io.IOException;
 import java.util.concurrent.Callable;
 
-import org.skinlab.ar.CalibrationTarget;
+import org.skinlab.internal.ar.CalibrationTarget;
 import org.skinlab.desktop.CommandFailure;
 import org.skinlab.desktop.ExitCodes;
 import org.skinlab.desktop.ar.CalibrationSheet;

@@ -17,7 +17,7 @@ import org.skinlab.model.Model;
 import org.skinlab.simulation.AnimationConfig;
 import org.skinlab.simulation.Frame;
 import org.skinlab.simulation.SkeletalAnimatedMesh;
-import org.skinlab.skinning.ArtifactMetrics;
+import org.skinlab.internal.metrics.ArtifactMetrics;
 import org.skinlab.skinning.SkinningGlsl;
 import org.skinlab.skinning.SkinningMethod;
 

@@ -15,7 +15,7 @@ import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
-import org.skinlab.bench.FrameBench;
+import org.skinlab.internal.bench.FrameBench;
 import org.skinlab.desktop.CommandFailure;
 import org.skinlab.desktop.ExitCodes;
 import org.skinlab.desktop.JavaRuntime;

@@ -28,7 +28,7 @@ import org.skinlab.model.Mesh;
 import org.skinlab.model.Model;
 import org.skinlab.model.Skin;
 import org.skinlab.model.Texture;
-import org.skinlab.skinning.InfluenceCapError;
+import org.skinlab.internal.metrics.InfluenceCapError;
 
 import picocli.CommandLine;
 import picocli.CommandLine.Command;

@@ -1,6 +1,6 @@
 package org.skinlab.desktop.cli;
 
-import org.skinlab.ar.CalibrationTarget;
+import org.skinlab.internal.ar.CalibrationTarget;
 import org.skinlab.desktop.CommandFailure;
 import org.skinlab.desktop.ExitCodes;
 

@@ -19,7 +19,7 @@ import boofcv.concurrency.BoofConcurrency;
 import org.skinlab.ar.BoofSquareHamming;
 import org.skinlab.ar.FiducialTracker;
 import org.skinlab.ar.MarkerDictionary;
-import org.skinlab.bench.Rounds;
+import org.skinlab.internal.bench.Rounds;
 import org.skinlab.desktop.CommandFailure;
 import org.skinlab.desktop.ExitCodes;
 import org.skinlab.desktop.bench.OpenCvAruco;

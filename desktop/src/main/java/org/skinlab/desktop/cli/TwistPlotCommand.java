@@ -18,7 +18,7 @@ import org.skinlab.desktop.ExitCodes;
 import org.skinlab.desktop.ModelFiles;
 import org.skinlab.model.Model;
 import org.skinlab.model.Node;
-import org.skinlab.skinning.BoneProfile;
+import org.skinlab.internal.metrics.BoneProfile;
 import org.skinlab.skinning.NormalTransform;
 import org.skinlab.skinning.SkinnedGeometry;
 import org.skinlab.skinning.SkinnedModel;
@@ -89,7 +89,7 @@ public final class TwistPlotCommand implements Callable<Integer> {
         for (SkinningMethod method : methods) {
             float[] points = new float[3 * geometry.pointCount()];
             skinned.skin(g, method, points, new float[points.length]);
-            List<BoneProfile.Ring> rings = profile.measure(points, skinned.prepareBones(g));
+            List<BoneProfile.Ring> rings = profile.measure(points, skinned.palette(g).prepareAll());
             List<Double> x = new ArrayList<>();
             List<Double> y = new ArrayList<>();
             StringBuilder line = new StringBuilder(String.format(Locale.ROOT, "%-9s", method.key()));

@@ -54,7 +54,7 @@ final class EvalAdviceSection implements EvalSection {
         double seconds = quick ? 0.04 : 0.3;
         results.put("warmupSeconds", warmup);
         results.put("seconds", seconds);
-        results.put("rounds", org.skinlab.bench.Rounds.MIN_RUNS);
+        results.put("rounds", org.skinlab.internal.bench.Rounds.MIN_RUNS);
         EvalScaling.vertices(quick ? List.of(2_000, 8_000, 32_000) : List.of(1_000, 4_000, 16_000, 64_000, 256_000),
                 warmup, seconds, results.putObject("vertices"), f -> context.progress(0.6 * f));
         EvalScaling.influences(quick ? 8_000 : 32_000, List.of(1, 2, 4, 8), warmup, seconds,

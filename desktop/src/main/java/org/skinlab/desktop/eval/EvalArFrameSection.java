@@ -21,7 +21,7 @@ import org.skinlab.desktop.bench.ArFrameInput;
 import org.skinlab.desktop.bench.ArFrameJson;
 import org.skinlab.desktop.render.GlWindow;
 import org.skinlab.model.Model;
-import org.skinlab.scene.DefaultAsset;
+import org.skinlab.internal.scene.DefaultAsset;
 import org.skinlab.skinning.SkinningMethod;
 
 /**

@@ -15,8 +15,8 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 
 import org.knowm.xchart.AnnotationLine;
 import org.knowm.xchart.XYChart;
-import org.skinlab.bench.Rounds;
-import org.skinlab.bench.Spread;
+import org.skinlab.internal.bench.Rounds;
+import org.skinlab.internal.bench.Spread;
 import org.skinlab.desktop.bench.CppSkinningReference;
 import org.skinlab.desktop.bench.SkinningTiming;
 import org.skinlab.desktop.bench.SyntheticSkinData;

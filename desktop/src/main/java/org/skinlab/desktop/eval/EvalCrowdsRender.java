@@ -8,7 +8,7 @@ import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
-import org.skinlab.bench.FrameTimes;
+import org.skinlab.internal.bench.FrameTimes;
 import org.skinlab.desktop.ModelFiles;
 import org.skinlab.desktop.bench.CrowdBench;
 import org.skinlab.desktop.bench.RenderBench;

@@ -9,10 +9,10 @@ import java.time.Instant;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
-import org.skinlab.bench.DeviceResults;
-import org.skinlab.bench.DeviceResultsJson;
-import org.skinlab.bench.DeviceResultsReader;
-import org.skinlab.bench.InvalidDeviceResults;
+import org.skinlab.internal.bench.DeviceResults;
+import org.skinlab.internal.bench.DeviceResultsJson;
+import org.skinlab.internal.bench.DeviceResultsReader;
+import org.skinlab.internal.bench.InvalidDeviceResults;
 import org.skinlab.desktop.CommandFailure;
 import org.skinlab.desktop.ExitCodes;
 

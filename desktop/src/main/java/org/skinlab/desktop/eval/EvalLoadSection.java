@@ -18,7 +18,7 @@ import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
-import org.skinlab.bench.Rounds;
+import org.skinlab.internal.bench.Rounds;
 import org.skinlab.desktop.CommandFailure;
 import org.skinlab.desktop.ExitCodes;
 import org.skinlab.desktop.ModelFileSearch;

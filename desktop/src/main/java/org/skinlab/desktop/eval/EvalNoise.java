@@ -23,7 +23,7 @@ final class EvalNoise {
         List<Double> range = new ArrayList<>();
         collect(sections, iqr, range);
         out.put("timings", iqr.size());
-        out.put("minRuns", org.skinlab.bench.Rounds.MIN_RUNS);
+        out.put("minRuns", org.skinlab.internal.bench.Rounds.MIN_RUNS);
         out.put("loadAverageStart", loadStart);
         out.put("loadAverageEnd", EvalMachine.loadAverage());
         if (iqr.isEmpty()) {

@@ -21,7 +21,7 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 
 import org.knowm.xchart.BitmapEncoder;
 import org.knowm.xchart.internal.chartpart.Chart;
-import org.skinlab.bench.Spread;
+import org.skinlab.internal.bench.Spread;
 
 /**
  * README.md of {@code skinlab eval}, built from results.json alone: sections add text, tables and

@@ -8,8 +8,8 @@ import java.util.function.DoubleConsumer;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
-import org.skinlab.bench.Rounds;
-import org.skinlab.bench.Spread;
+import org.skinlab.internal.bench.Rounds;
+import org.skinlab.internal.bench.Spread;
 import org.skinlab.desktop.ModelFiles;
 import org.skinlab.desktop.bench.PaletteBench;
 import org.skinlab.desktop.bench.SkinningTiming;

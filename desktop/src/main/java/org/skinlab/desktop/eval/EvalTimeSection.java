@@ -11,10 +11,10 @@ import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
 import org.knowm.xchart.XYChart;
-import org.skinlab.bench.FrameBench;
-import org.skinlab.bench.FrameTimes;
-import org.skinlab.bench.Rounds;
-import org.skinlab.bench.Spread;
+import org.skinlab.internal.bench.FrameBench;
+import org.skinlab.internal.bench.FrameTimes;
+import org.skinlab.internal.bench.Rounds;
+import org.skinlab.internal.bench.Spread;
 import org.skinlab.desktop.ModelFileSearch;
 import org.skinlab.desktop.ModelFiles;
 import org.skinlab.desktop.bench.JitWarmup;

@@ -19,10 +19,10 @@ import org.skinlab.ar.GrayImage;
 import org.skinlab.ar.MarkerDetection;
 import org.skinlab.ar.MarkerDictionary;
 import org.skinlab.ar.TrackerConfig;
-import org.skinlab.ar.synthetic.DetectionTally;
-import org.skinlab.ar.synthetic.MarkerShot;
-import org.skinlab.ar.synthetic.MarkerShots;
-import org.skinlab.ar.synthetic.NegativeFrames;
+import org.skinlab.internal.synthetic.DetectionTally;
+import org.skinlab.internal.synthetic.MarkerShot;
+import org.skinlab.internal.synthetic.MarkerShots;
+import org.skinlab.internal.synthetic.NegativeFrames;
 
 /**
  * Section "tracking": our marker tracker ({@link FiducialTracker#detect}, the whole frame) on

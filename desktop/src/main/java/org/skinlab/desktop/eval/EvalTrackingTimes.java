@@ -11,8 +11,8 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 import org.knowm.xchart.XYChart;
 import org.skinlab.ar.FiducialTracker;
 import org.skinlab.ar.MarkerDictionary;
-import org.skinlab.bench.Rounds;
-import org.skinlab.bench.Spread;
+import org.skinlab.internal.bench.Rounds;
+import org.skinlab.internal.bench.Spread;
 import org.skinlab.desktop.bench.TrackBench;
 import org.skinlab.desktop.bench.TrackBenchVideo;
 

@@ -10,7 +10,7 @@ import org.skinlab.model.AnimationClip;
 import org.skinlab.model.Mesh;
 import org.skinlab.model.MeshInstance;
 import org.skinlab.model.Model;
-import org.skinlab.skinning.InfluenceCapError;
+import org.skinlab.internal.metrics.InfluenceCapError;
 import org.skinlab.skinning.NormalTransform;
 import org.skinlab.skinning.SkinnedModel;
 

@@ -6,8 +6,8 @@ import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
 import org.skinlab.animation.RotationInterpolation;
-import org.skinlab.skinning.JointArtifacts;
-import org.skinlab.skinning.RestPose;
+import org.skinlab.internal.metrics.JointArtifacts;
+import org.skinlab.internal.metrics.RestPose;
 import org.skinlab.skinning.SkinnedGeometry;
 import org.skinlab.skinning.SkinnedModel;
 import org.skinlab.skinning.SkinningMethod;

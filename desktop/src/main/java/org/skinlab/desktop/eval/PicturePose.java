@@ -9,9 +9,9 @@ import org.joml.Vector3f;
 import org.skinlab.animation.AnimationHelper;
 import org.skinlab.animation.RotationInterpolation;
 import org.skinlab.model.Model;
-import org.skinlab.skinning.MethodComparison;
+import org.skinlab.internal.metrics.MethodComparison;
 import org.skinlab.skinning.NormalTransform;
-import org.skinlab.skinning.RestPose;
+import org.skinlab.internal.metrics.RestPose;
 import org.skinlab.skinning.SkinnedModel;
 
 /**

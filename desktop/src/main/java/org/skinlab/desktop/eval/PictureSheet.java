@@ -7,7 +7,7 @@ import java.awt.RenderingHints;
 import java.awt.image.BufferedImage;
 import java.util.List;
 
-import org.skinlab.scene.ColourRamp;
+import org.skinlab.internal.scene.ColourRamp;
 
 /**
  * The pictures section's figures: the viewer's panels in a grid under a title, each under its

@@ -3,7 +3,7 @@ package org.skinlab.desktop.eval;
 import org.joml.Matrix4f;
 import org.joml.Vector3f;
 import org.skinlab.animation.AnimationHelper;
-import org.skinlab.skinning.ArtifactMetrics;
+import org.skinlab.internal.metrics.ArtifactMetrics;
 import org.skinlab.skinning.SkinnedGeometry;
 
 /**

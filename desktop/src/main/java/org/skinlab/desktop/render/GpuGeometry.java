@@ -11,7 +11,7 @@ import org.lwjgl.system.MemoryUtil;
 import org.skinlab.model.Mesh;
 import org.skinlab.model.MeshInstance;
 import org.skinlab.model.MeshPart;
-import org.skinlab.scene.PartMaterial;
+import org.skinlab.internal.scene.PartMaterial;
 import org.skinlab.simulation.Frame;
 import org.skinlab.skinning.InfluenceView;
 import org.skinlab.skinning.SkinnedGeometry;

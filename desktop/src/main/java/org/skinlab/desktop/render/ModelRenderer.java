@@ -13,10 +13,10 @@ import org.skinlab.model.Image;
 import org.skinlab.model.MeshPart;
 import org.skinlab.model.Model;
 import org.skinlab.model.Texture;
-import org.skinlab.scene.BlendOrder;
-import org.skinlab.scene.MaterialGlsl;
-import org.skinlab.scene.PartCentres;
-import org.skinlab.scene.PartMaterial;
+import org.skinlab.internal.scene.BlendOrder;
+import org.skinlab.internal.scene.MaterialGlsl;
+import org.skinlab.internal.scene.PartCentres;
+import org.skinlab.internal.scene.PartMaterial;
 import org.skinlab.simulation.Frame;
 import org.skinlab.skinning.SkinnedGeometry;
 import org.skinlab.skinning.SkinningGlsl;
@@ -115,7 +115,7 @@ public final class ModelRenderer implements AutoCloseable {
         for (int g = 0; g < geometries.size(); g++) {
             geometries.get(g).upload(frame, g);
             bonesUploaded[g] = false;
-            float[] m = frame.skinningMatrices(g);
+            float[] m = frame.palette(g).matrices();
             mirrored[g] = geometries.get(g).geometry().windingMirrored() ^ PartCentres.firstJointMirrors(m);
             for (int i = 0; i < centres[g].partCount(); i++) {
                 centres[g].posed(i, m, posedCentres[g]);

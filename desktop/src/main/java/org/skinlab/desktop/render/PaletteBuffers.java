@@ -45,21 +45,21 @@ final class PaletteBuffers implements AutoCloseable {
     /** Uploads geometry {@code g}'s palette of {@code frame}, all but the bone rows. */
     void upload(Frame frame, int g) {
         glBindBuffer(GL_TEXTURE_BUFFER, buffers[0]);
-        glBufferSubData(GL_TEXTURE_BUFFER, 0, frame.skinningMatrices(g));
+        glBufferSubData(GL_TEXTURE_BUFFER, 0, frame.palette(g).matrices());
         glBindBuffer(GL_TEXTURE_BUFFER, buffers[1]);
-        glBufferSubData(GL_TEXTURE_BUFFER, 0, frame.dualQuaternions(g));
+        glBufferSubData(GL_TEXTURE_BUFFER, 0, frame.palette(g).dualQuaternions());
         glBindBuffer(GL_TEXTURE_BUFFER, buffers[2]);
-        glBufferSubData(GL_TEXTURE_BUFFER, 0, frame.scales(g));
+        glBufferSubData(GL_TEXTURE_BUFFER, 0, frame.palette(g).scales());
         glBindBuffer(GL_TEXTURE_BUFFER, 0);
-        hasScale = frame.hasScale(g);
-        matricesMirror = frame.mirrorsMatrices(g);
-        scalesMirror = frame.mirrorsScales(g);
+        hasScale = frame.palette(g).hasScale();
+        matricesMirror = frame.palette(g).mirrorsMatrices();
+        scalesMirror = frame.palette(g).mirrorsScales();
     }
 
     /** Uploads geometry {@code g}'s bone rows of {@code frame} (for the methods that read bones). */
     void uploadBones(Frame frame, int g) {
         glBindBuffer(GL_TEXTURE_BUFFER, buffers[3]);
-        glBufferSubData(GL_TEXTURE_BUFFER, 0, frame.boneRows(g));
+        glBufferSubData(GL_TEXTURE_BUFFER, 0, frame.palette(g).boneRows());
         glBindBuffer(GL_TEXTURE_BUFFER, 0);
     }
 

@@ -8,8 +8,8 @@ import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
 
 import org.skinlab.ar.LensGlsl;
-import org.skinlab.scene.ColourRamp;
-import org.skinlab.scene.MaterialGlsl;
+import org.skinlab.internal.scene.ColourRamp;
+import org.skinlab.internal.scene.MaterialGlsl;
 import org.skinlab.skinning.SkinningGlsl;
 
 /**

@@ -9,9 +9,9 @@ import org.skinlab.desktop.viewer.ViewerAction;
 import org.skinlab.desktop.viewer.ViewerSettings;
 import org.skinlab.model.AnimationClip;
 import org.skinlab.model.Model;
-import org.skinlab.scene.ColourRamp;
+import org.skinlab.internal.scene.ColourRamp;
 import org.skinlab.simulation.AnimationConfig;
-import org.skinlab.skinning.LargestDifference;
+import org.skinlab.internal.metrics.LargestDifference;
 import org.skinlab.skinning.SkinningMethod;
 
 import imgui.ImDrawList;

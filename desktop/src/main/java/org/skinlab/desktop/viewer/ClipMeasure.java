@@ -7,7 +7,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
 
 import org.skinlab.animation.RotationInterpolation;
-import org.skinlab.skinning.LargestDifference;
+import org.skinlab.internal.metrics.LargestDifference;
 
 /**
  * The auto difference scale's measure: the clip's largest LBS-DQS difference of the model shown

@@ -7,7 +7,7 @@ import org.skinlab.desktop.render.DrawSettings;
 /**
  * The top of the difference view's colour scale (red; blue is 0): a fixed share of the model's
  * size, or "auto", the largest LBS-DQS distance over the clip being played
- * ({@link org.skinlab.skinning.LargestDifference}), so that the whole scale is used and a colour
+ * ({@link org.skinlab.internal.metrics.LargestDifference}), so that the whole scale is used and a colour
  * means the same distance at every time of the clip. Immutable.
  *
  * @param auto     the clip's largest distance is red

@@ -5,10 +5,10 @@ import java.nio.file.Path;
 import java.util.List;
 
 import org.skinlab.model.Model;
-import org.skinlab.scene.ModelFraming;
+import org.skinlab.internal.scene.ModelFraming;
 import org.skinlab.simulation.SkeletalAnimatedMesh;
-import org.skinlab.skinning.MethodComparison;
-import org.skinlab.skinning.RestPose;
+import org.skinlab.internal.metrics.MethodComparison;
+import org.skinlab.internal.metrics.RestPose;
 
 /**
  * A model the viewer shows: the file, the imported {@link Model}, the clip it plays, its

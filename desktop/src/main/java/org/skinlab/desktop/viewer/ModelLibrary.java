@@ -20,7 +20,7 @@ import org.skinlab.importer.ModelImporter;
  */
 public final class ModelLibrary {
     /** The model the viewer opens when given none, relative to the assets folder. */
-    public static final String DEFAULT_ASSET = org.skinlab.scene.DefaultAsset.PATH;
+    public static final String DEFAULT_ASSET = org.skinlab.internal.scene.DefaultAsset.PATH;
 
     private final Path assets;
     private final List<Path> models = new ArrayList<>();

@@ -17,14 +17,13 @@ import org.skinlab.animation.RotationInterpolation;
 import org.skinlab.importer.ModelImporter;
 import org.skinlab.model.ImportException;
 import org.skinlab.model.Model;
-import org.skinlab.scene.ModelFraming;
+import org.skinlab.internal.scene.ModelFraming;
 import org.skinlab.simulation.AnimationConfig;
 import org.skinlab.simulation.Frame;
 import org.skinlab.simulation.SkeletalAnimatedMesh;
-import org.skinlab.skinning.LargestDifference;
-import org.skinlab.skinning.MethodComparison;
-import org.skinlab.skinning.RestPose;
-import org.skinlab.skinning.SkinnedGeometry;
+import org.skinlab.internal.metrics.LargestDifference;
+import org.skinlab.internal.metrics.MethodComparison;
+import org.skinlab.internal.metrics.RestPose;
 
 /**
  * The viewer's state and what its actions do, apart from drawing: the model shown (loaded off the
@@ -150,16 +149,6 @@ public final class Viewer implements AutoCloseable {
             Object replaced = finished.getAndSet(result);
             if (replaced instanceof LoadedModel) {
                 ((LoadedModel) replaced).close();
-            }
-            if (result instanceof LoadedModel && request == newestRequest) {
-                // CoR's centres (up to half a second the first time, then from the disk cache), here
-                // while the model is shown, not on the window's or the simulation's thread when the
-                // user first switches to CoR.
-                for (SkinnedGeometry g : ((LoadedModel) result).mesh().geometries()) {
-                    if (g.isSkinned()) {
-                        g.centresOfRotation();
-                    }
-                }
             }
         });
     }

@@ -14,7 +14,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.skinlab.ar.CameraIntrinsics;
 import org.skinlab.ar.LensDistortion;
-import org.skinlab.ar.synthetic.PlacedMarker;
+import org.skinlab.internal.synthetic.PlacedMarker;
 import org.skinlab.desktop.ar.DemoVideo;
 import org.skinlab.desktop.ar.GrayImages;
 import org.skinlab.desktop.ar.IntrinsicsFile;

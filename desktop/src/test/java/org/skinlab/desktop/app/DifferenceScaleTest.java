@@ -11,7 +11,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.skinlab.desktop.app.Pictures.Picture;
 import org.skinlab.desktop.render.GlTestDisplay;
-import org.skinlab.scene.ColourRamp;
+import org.skinlab.internal.scene.ColourRamp;
 
 /**
  * The difference view's scale ({@code --difference-scale}) changes the colours as the colour map

@@ -4,14 +4,14 @@ import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
 
-import org.skinlab.ar.CalibrationTarget;
+import org.skinlab.internal.ar.CalibrationTarget;
 import org.skinlab.ar.CameraIntrinsics;
 import org.skinlab.ar.GrayImage;
 import org.skinlab.ar.LensDistortion;
-import org.skinlab.ar.synthetic.PlacedMarker;
-import org.skinlab.ar.synthetic.PlacedTarget;
-import org.skinlab.ar.synthetic.SceneOptions;
-import org.skinlab.ar.synthetic.SyntheticCamera;
+import org.skinlab.internal.synthetic.PlacedMarker;
+import org.skinlab.internal.synthetic.PlacedTarget;
+import org.skinlab.internal.synthetic.SceneOptions;
+import org.skinlab.internal.synthetic.SyntheticCamera;
 
 /**
  * Synthetic photos of the printed calibration target through a known lens, as a user would take

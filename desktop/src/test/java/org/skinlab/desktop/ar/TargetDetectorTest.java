@@ -8,12 +8,12 @@ import java.util.List;
 import boofcv.struct.geo.PointIndex2D_F64;
 
 import org.junit.jupiter.api.Test;
-import org.skinlab.ar.CalibrationTarget;
+import org.skinlab.internal.ar.CalibrationTarget;
 import org.skinlab.ar.CameraIntrinsics;
-import org.skinlab.ar.synthetic.PlacedMarker;
-import org.skinlab.ar.synthetic.PlacedTarget;
-import org.skinlab.ar.synthetic.SceneOptions;
-import org.skinlab.ar.synthetic.SyntheticCamera;
+import org.skinlab.internal.synthetic.PlacedMarker;
+import org.skinlab.internal.synthetic.PlacedTarget;
+import org.skinlab.internal.synthetic.SceneOptions;
+import org.skinlab.internal.synthetic.SyntheticCamera;
 
 /**
  * The detector's points are in BoofCV's pixel convention, the calibration's input: on a sharp,

@@ -7,7 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.List;
 
 import org.junit.jupiter.api.Test;
-import org.skinlab.bench.FrameTimes;
+import org.skinlab.internal.bench.FrameTimes;
 import org.skinlab.desktop.Cli;
 import org.skinlab.desktop.ModelFiles;
 import org.skinlab.skinning.SkinningMethod;

@@ -10,8 +10,8 @@ import java.util.Arrays;
 import java.util.List;
 
 import org.junit.jupiter.api.Test;
-import org.skinlab.bench.Rounds;
-import org.skinlab.bench.Spread;
+import org.skinlab.internal.bench.Rounds;
+import org.skinlab.internal.bench.Spread;
 import org.skinlab.desktop.Cli;
 
 /**

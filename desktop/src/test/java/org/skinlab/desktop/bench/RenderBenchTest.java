@@ -7,7 +7,7 @@ import java.util.List;
 
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
-import org.skinlab.bench.FrameTimes;
+import org.skinlab.internal.bench.FrameTimes;
 import org.skinlab.desktop.Cli;
 import org.skinlab.desktop.ModelFiles;
 import org.skinlab.desktop.render.GlTestDisplay;

@@ -19,7 +19,7 @@ import org.skinlab.desktop.Cli;
 import org.skinlab.desktop.ExitCodes;
 import org.skinlab.model.AnimationClip;
 import org.skinlab.model.Model;
-import org.skinlab.skinning.InfluenceCapError;
+import org.skinlab.internal.metrics.InfluenceCapError;
 import org.skinlab.skinning.NormalTransform;
 import org.skinlab.skinning.SkinnedModel;
 

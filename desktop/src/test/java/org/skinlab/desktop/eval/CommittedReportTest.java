@@ -110,7 +110,7 @@ class CommittedReportTest {
         collectSpreads(results.get("sections"), spreads);
         assertTrue(spreads.size() > 100, "only " + spreads.size() + " timings with runs");
         for (JsonNode s : spreads) {
-            assertTrue(s.get("runs").size() >= org.skinlab.bench.Rounds.MIN_RUNS, s.toString());
+            assertTrue(s.get("runs").size() >= org.skinlab.internal.bench.Rounds.MIN_RUNS, s.toString());
         }
         EvalReportCheck.figuresAndNumbers(dir, results, readme);
     }

@@ -14,7 +14,7 @@ import com.fasterxml.jackson.databind.JsonNode;
 
 import org.junit.jupiter.api.Test;
 import org.knowm.xchart.XYChart;
-import org.skinlab.bench.Rounds;
+import org.skinlab.internal.bench.Rounds;
 import org.skinlab.desktop.Cli;
 import org.skinlab.desktop.bench.CrowdBench;
 import org.skinlab.desktop.bench.RenderBench;

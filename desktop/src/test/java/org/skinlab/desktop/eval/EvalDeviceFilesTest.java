@@ -23,11 +23,11 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.skinlab.bench.DeviceResults;
-import org.skinlab.bench.DeviceResultsJson;
-import org.skinlab.bench.FrameBench;
-import org.skinlab.bench.FrameTimes;
-import org.skinlab.bench.Spread;
+import org.skinlab.internal.bench.DeviceResults;
+import org.skinlab.internal.bench.DeviceResultsJson;
+import org.skinlab.internal.bench.FrameBench;
+import org.skinlab.internal.bench.FrameTimes;
+import org.skinlab.internal.bench.Spread;
 import org.skinlab.desktop.Cli;
 import org.skinlab.desktop.ExitCodes;
 import org.skinlab.skinning.SkinningMethod;

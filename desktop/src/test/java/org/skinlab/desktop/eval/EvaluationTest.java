@@ -140,12 +140,12 @@ class EvaluationTest {
         CommittedReportTest.collectSpreads(results.get("sections"), spreads);
         assertTrue(spreads.size() > 50, "only " + spreads.size() + " timings with runs");
         for (JsonNode s : spreads) {
-            assertTrue(s.get("runs").size() >= org.skinlab.bench.Rounds.MIN_RUNS, s.toString());
+            assertTrue(s.get("runs").size() >= org.skinlab.internal.bench.Rounds.MIN_RUNS, s.toString());
             double[] runs = new double[s.get("runs").size()];
             for (int i = 0; i < runs.length; i++) {
                 runs[i] = s.get("runs").get(i).asDouble();
             }
-            assertEquals(org.skinlab.bench.Spread.of(runs).median(), s.get("median").asDouble(), 0.0015, s.toString());
+            assertEquals(org.skinlab.internal.bench.Spread.of(runs).median(), s.get("median").asDouble(), 0.0015, s.toString());
         }
         for (JsonNode asset : results.at("/sections/time/assets")) {
             for (org.skinlab.skinning.SkinningMethod m : org.skinlab.skinning.SkinningMethod.values()) {

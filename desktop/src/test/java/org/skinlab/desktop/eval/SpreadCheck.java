@@ -7,7 +7,7 @@ import java.util.Arrays;
 
 import com.fasterxml.jackson.databind.JsonNode;
 
-import org.skinlab.bench.Rounds;
+import org.skinlab.internal.bench.Rounds;
 
 /**
  * What every timing of {@code skinlab eval}'s results.json must be ({@link EvalReport#putSpread}):

@@ -9,7 +9,7 @@ import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.lwjgl.system.MemoryUtil;
-import org.skinlab.scene.ColourRamp;
+import org.skinlab.internal.scene.ColourRamp;
 
 /**
  * The colours the GPU draws for the colour map are the ones {@link ColourRamp#colour(double)} gives
