@@ -464,6 +464,19 @@ public final class SkinnedGeometry {
     }
 
     /**
+     * This geometry with the bind-time data {@code method}'s skinners read beyond the arrays: CoR's
+     * centres of rotation ({@link #withCentresOfRotation()}) for {@link SkinningMethod#COR}; every
+     * other method's bindings are made by its skinner. Bind-time work, like
+     * {@link #withCentresOfRotation()}.
+     *
+     * @param method the method a skinner will be made for
+     * @return a geometry ready for that method's skinners; this one when it is already
+     */
+    public SkinnedGeometry boundFor(SkinningMethod method) {
+        return method == SkinningMethod.COR ? withCentresOfRotation() : this;
+    }
+
+    /**
      * This geometry with the given centres of rotation (e.g. computed with other parameters, or
      * those of the unmorphed rest shape of a morphing mesh). Its {@link #sharedPositions()}
      * get the centre of a point that carries each position.

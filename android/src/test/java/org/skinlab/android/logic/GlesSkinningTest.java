@@ -221,7 +221,7 @@ class GlesSkinningTest {
 
     /** Every skinning matrix M becomes F M, F = diag(-1, 1, 1); the palette prepared again. */
     private static void mirror(JointPalette palette) {
-        float[] m = palette.matrices();
+        float[] m = palette.writableMatrices();
         for (int j = 0; j < palette.jointCount(); j++) {
             for (int c = 0; c < 4; c++) {
                 m[12 * j + c] = -m[12 * j + c];

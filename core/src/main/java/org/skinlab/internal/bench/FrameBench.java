@@ -1,6 +1,7 @@
 package org.skinlab.internal.bench;
 
 import java.util.Arrays;
+import java.util.EnumSet;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Set;
@@ -59,7 +60,8 @@ public final class FrameBench {
     public FrameBench(Model model, NormalTransform rule, PositionSharing sharing, boolean scalar, int influenceCap,
             List<SkinningMethod> methods, Warmup warmup) {
         this.warmup = warmup;
-        skinned = new SkinnedModel(model, model.clips().isEmpty() ? null : model.clips().get(0), rule);
+        skinned = new SkinnedModel(model, model.clips().isEmpty() ? null : model.clips().get(0), rule,
+                EnumSet.copyOf(methods));
         int n = skinned.geometries().size();
         skinners = new Skinner[n][SkinningMethod.values().length];
         SkinnedGeometry[] used = new SkinnedGeometry[n];
@@ -101,8 +103,10 @@ public final class FrameBench {
         for (int j = 0; j < parents.length; j++) {
             parents[j] = geometry.jointParent(j);
         }
-        return SkinnedGeometry.fromArrays(geometry.positionArray(), geometry.normalArray(), view.influencesPerPoint(),
-                view.jointIndicesAsInts(), view.weights(), geometry.bindMatrixArray(), parents);
+        SkinnedGeometry capped = SkinnedGeometry.fromArrays(geometry.positionArray(), geometry.normalArray(),
+                view.influencesPerPoint(), view.jointIndicesAsInts(), view.weights(), geometry.bindMatrixArray(), parents);
+        // CoR keeps the mesh's centres: the capped arrays have no triangles to integrate over.
+        return geometry.hasCentresOfRotation() ? capped.withCentresOfRotation(geometry.centresOfRotation()) : capped;
     }
 
     /**

@@ -1,6 +1,7 @@
 package org.skinlab.internal.metrics;
 
 import java.util.ArrayList;
+import java.util.EnumSet;
 import java.util.List;
 
 import org.skinlab.animation.RotationInterpolation;
@@ -8,6 +9,7 @@ import org.skinlab.model.AnimationClip;
 import org.skinlab.model.Model;
 import org.skinlab.skinning.NormalTransform;
 import org.skinlab.skinning.SkinnedModel;
+import org.skinlab.skinning.SkinningMethod;
 
 /**
  * The largest distance between a point's LBS and its DQS position over a whole clip, relative to
@@ -29,7 +31,8 @@ public record LargestDifference(double relative, float clipTime, int samples) {
      * @param clip the clip, or null for the model at rest (one sample)
      */
     public static LargestDifference over(Model model, AnimationClip clip, RotationInterpolation rotations) {
-        SkinnedModel skinned = new SkinnedModel(model, clip, NormalTransform.INVERSE_TRANSPOSE);
+        SkinnedModel skinned = new SkinnedModel(model, clip, NormalTransform.INVERSE_TRANSPOSE,
+                EnumSet.of(SkinningMethod.LBS)); // poses and palettes: the comparisons skin
         RestPose rest = RestPose.of(skinned);
         List<MethodComparison> comparisons = new ArrayList<>();
         for (int g = 0; g < skinned.geometries().size(); g++) {

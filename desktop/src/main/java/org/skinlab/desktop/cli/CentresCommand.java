@@ -8,6 +8,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.EnumSet;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
@@ -22,6 +23,7 @@ import org.skinlab.desktop.ModelFiles;
 import org.skinlab.model.Mesh;
 import org.skinlab.model.Model;
 import org.skinlab.skinning.CentresOfRotation;
+import org.skinlab.skinning.NormalTransform;
 import org.skinlab.skinning.SkinnedGeometry;
 import org.skinlab.skinning.SkinnedModel;
 import org.skinlab.skinning.SkinningMethod;
@@ -111,7 +113,8 @@ public final class CentresCommand implements Callable<Integer> {
         report.flush();
         for (Path file : files) {
             Model model = ModelFiles.load(file).model;
-            SkinnedModel skinned = SkinnedModel.of(model);
+            SkinnedModel skinned = new SkinnedModel(model, model.clips().isEmpty() ? null : model.clips().get(0),
+                    NormalTransform.INVERSE_TRANSPOSE, EnumSet.of(SkinningMethod.COR));
             List<float[]> centres = new ArrayList<>();
             for (SkinnedGeometry g : skinned.geometries()) {
                 if (!g.isSkinned() || g.mesh() == null) {

@@ -4,6 +4,7 @@ import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.EnumMap;
+import java.util.EnumSet;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -64,7 +65,7 @@ public final class CompareCommand implements Callable<Integer> {
         List<SkinningMethod> compared = compared();
         Model model = ModelFiles.load(file).model;
         SkinnedModel skinned = new SkinnedModel(model, model.clips().isEmpty() ? null : model.clips().get(0),
-                NormalTransform.INVERSE_TRANSPOSE);
+                NormalTransform.INVERSE_TRANSPOSE, EnumSet.copyOf(compared));
         PrintWriter out = spec.commandLine().getOut();
         RestPose rest = RestPose.of(skinned);
         int found = 0;

@@ -154,7 +154,7 @@ public final class FrameBenchCommand implements Callable<Integer> {
             }
             if (paletteOnly) {
                 printPalette(out, input.name(), PaletteBench.measure(new SkinnedModel(model,
-                        model.clips().isEmpty() ? null : model.clips().get(0), rule),
+                        model.clips().isEmpty() ? null : model.clips().get(0), rule, EnumSet.of(SkinningMethod.LBS)),
                         warmupSeconds == null ? FIRST_WARMUP : warmup, timed));
                 continue;
             }

@@ -7,6 +7,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.EnumSet;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
@@ -159,7 +160,7 @@ public final class PoseCommand implements Callable<Integer> {
     static Result compute(String fileName, Model model, AnimationClip clip, SkinningMethod method,
             RotationInterpolation rotations, List<Float> requested) {
         // Normals are computed by the skinners anyway; the command reports positions only.
-        SkinnedModel skinned = new SkinnedModel(model, clip, NormalTransform.INVERSE_TRANSPOSE);
+        SkinnedModel skinned = new SkinnedModel(model, clip, NormalTransform.INVERSE_TRANSPOSE, EnumSet.of(method));
         List<SkinnedGeometry> geometries = skinned.geometries();
         float[] used = new float[requested.size()];
         for (int i = 0; i < used.length; i++) {

@@ -145,7 +145,8 @@ public final class SkinningBenchCommand implements Callable<Integer> {
         return ExitCodes.OK;
     }
 
-    private Skinner kernel(SkinningMethod m, SkinnedGeometry geometry, NormalTransform rule) {
+    private Skinner kernel(SkinningMethod m, SkinnedGeometry unbound, NormalTransform rule) {
+        SkinnedGeometry geometry = unbound.boundFor(m);
         switch (implementation.toLowerCase(Locale.ROOT)) {
             case "auto":
                 return Skinners.create(m, geometry, rule);

@@ -1,6 +1,7 @@
 package org.skinlab.desktop.eval;
 
 import java.util.Arrays;
+import java.util.EnumSet;
 
 import org.joml.Matrix4f;
 import org.joml.Vector3f;
@@ -8,6 +9,7 @@ import org.skinlab.animation.RotationInterpolation;
 import org.skinlab.model.Mesh;
 import org.skinlab.model.Model;
 import org.skinlab.model.Skin;
+import org.skinlab.skinning.NormalTransform;
 import org.skinlab.skinning.SkinnedGeometry;
 import org.skinlab.skinning.SkinnedModel;
 import org.skinlab.skinning.SkinningMethod;
@@ -62,8 +64,8 @@ final class AssetTwins {
     }
 
     static Comparison compare(Model dae, Model glb) {
-        SkinnedModel daeSkin = SkinnedModel.of(dae);
-        SkinnedModel glbSkin = SkinnedModel.of(glb);
+        SkinnedModel daeSkin = lbs(dae);
+        SkinnedModel glbSkin = lbs(glb);
         Matrix4f daeUp = dae.asset().toYUpMeters(new Matrix4f());
         Matrix4f glbUp = glb.asset().toYUpMeters(new Matrix4f());
         float[] daeBind = upright(daeUp, bind(daeSkin));
@@ -104,6 +106,12 @@ final class AssetTwins {
     }
 
     /** Every geometry's bind points, one after the other. */
+    /** The model with its first clip, bound for LBS alone: what the comparison skins with. */
+    private static SkinnedModel lbs(Model model) {
+        return new SkinnedModel(model, model.clips().isEmpty() ? null : model.clips().get(0),
+                NormalTransform.INVERSE_TRANSPOSE, EnumSet.of(SkinningMethod.LBS));
+    }
+
     private static float[] bind(SkinnedModel model) {
         int n = 0;
         for (SkinnedGeometry g : model.geometries()) {

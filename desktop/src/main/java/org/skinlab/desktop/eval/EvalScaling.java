@@ -2,6 +2,7 @@ package org.skinlab.desktop.eval;
 
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.EnumSet;
 import java.util.List;
 import java.util.function.DoubleConsumer;
 
@@ -141,7 +142,7 @@ final class EvalScaling {
             Model model = ModelFiles.load(f).model;
             if (model.instances().stream().anyMatch(MeshInstance::isSkinned) && !model.clips().isEmpty()) {
                 names.add(f.getFileName().toString());
-                models.add(new SkinnedModel(model, model.clips().get(0), NORMALS));
+                models.add(new SkinnedModel(model, model.clips().get(0), NORMALS, EnumSet.of(SkinningMethod.LBS)));
             }
         }
         int[] joints = new int[models.size()];
@@ -169,7 +170,8 @@ final class EvalScaling {
         }
     }
 
-    private static Skinner kernel(SkinningMethod m, SkinnedGeometry geometry, boolean scalar) {
+    private static Skinner kernel(SkinningMethod m, SkinnedGeometry unbound, boolean scalar) {
+        SkinnedGeometry geometry = unbound.boundFor(m);
         return scalar ? Skinners.scalar(m, geometry, NORMALS) : Skinners.create(m, geometry, NORMALS);
     }
 

@@ -2,6 +2,7 @@ package org.skinlab.desktop.eval;
 
 import java.util.ArrayList;
 import java.util.Collections;
+import java.util.EnumSet;
 import java.util.IdentityHashMap;
 import java.util.List;
 import java.util.Map;
@@ -13,6 +14,7 @@ import org.skinlab.model.Model;
 import org.skinlab.internal.metrics.InfluenceCapError;
 import org.skinlab.skinning.NormalTransform;
 import org.skinlab.skinning.SkinnedModel;
+import org.skinlab.skinning.SkinningMethod;
 
 /**
  * What {@code skinlab inspect} says of capping influences for a GPU (see {@link InfluenceCapError}):
@@ -65,7 +67,8 @@ public final class InfluenceCapReport {
         Map<Mesh, List<List<InfluenceCapError.Result>>> perClip = new IdentityHashMap<>();
         for (AnimationClip clip : clips) {
             // Normals are not compared: the cheaper rule will do.
-            SkinnedModel skinned = new SkinnedModel(model, clip, NormalTransform.BLENDED_MATRIX);
+            SkinnedModel skinned = new SkinnedModel(model, clip, NormalTransform.BLENDED_MATRIX,
+                    EnumSet.of(SkinningMethod.LBS)); // poses and palettes: the caps are skinned apart
             List<List<InfluenceCapError.Result>> results = InfluenceCapError.measure(skinned, CAPS);
             for (Map.Entry<Mesh, Integer> e : instanceOf.entrySet()) {
                 perClip.computeIfAbsent(e.getKey(), m -> new ArrayList<>()).add(results.get(e.getValue()));

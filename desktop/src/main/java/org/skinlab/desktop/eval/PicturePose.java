@@ -1,6 +1,7 @@
 package org.skinlab.desktop.eval;
 
 import java.util.ArrayList;
+import java.util.EnumSet;
 import java.util.List;
 
 import org.joml.Matrix3f;
@@ -13,6 +14,7 @@ import org.skinlab.internal.metrics.MethodComparison;
 import org.skinlab.skinning.NormalTransform;
 import org.skinlab.internal.metrics.RestPose;
 import org.skinlab.skinning.SkinnedModel;
+import org.skinlab.skinning.SkinningMethod;
 
 /**
  * Where and from where the pictures section shows an asset: the clip's sample at which LBS and
@@ -38,7 +40,7 @@ record PicturePose(double elapsed, double relative, double clipSeconds, double y
     /** The extreme pose of {@code model}'s first clip sampled at {@code perSecond}, and its camera. */
     static PicturePose of(Model model, int perSecond) {
         SkinnedModel skinned = new SkinnedModel(model, model.clips().isEmpty() ? null : model.clips().get(0),
-                NormalTransform.INVERSE_TRANSPOSE);
+                NormalTransform.INVERSE_TRANSPOSE, EnumSet.of(SkinningMethod.LBS)); // poses; the comparisons skin
         float start = skinned.sampler().start();
         float end = skinned.sampler().end();
         float[] times = EvalQualitySection.times(start, end, perSecond);
@@ -75,7 +77,7 @@ record PicturePose(double elapsed, double relative, double clipSeconds, double y
     /** The LBS-DQS distance of the bind pose (every joint at its bind frame), over the model's size. */
     static double bindPose(Model model) {
         SkinnedModel skinned = new SkinnedModel(model, model.clips().isEmpty() ? null : model.clips().get(0),
-                NormalTransform.INVERSE_TRANSPOSE);
+                NormalTransform.INVERSE_TRANSPOSE, EnumSet.of(SkinningMethod.LBS)); // poses; the comparisons skin
         skinned.poseBind();
         return compareCurrent(skinned, comparisons(skinned));
     }
