@@ -113,10 +113,13 @@ public final class PlayDesktop {
         }
 
         Matrix4f toYUp = model.asset().toYUpMeters(new Matrix4f()); // the file's frame to Y up, in metres
-        long window = openWindow("play-desktop: " + file, screenshot == null);
         AnimationConfig config = new AnimationConfig();
         config.setMethod(SkinningMethod.DQS); // skinned on the CPU (the default), with dual quaternions
-        try (SkeletalAnimatedMesh mesh = SkeletalAnimatedMesh.of(model, config)) {
+        // Building the mesh is bind time (every method's data, CoR's centres too): done before the
+        // window opens, so the GL thread never waits for it.
+        SkeletalAnimatedMesh mesh = SkeletalAnimatedMesh.of(model, config);
+        long window = openWindow("play-desktop: " + file, screenshot == null);
+        try {
             List<Drawable> drawables = upload(mesh.geometries());
             if (drawables.isEmpty()) {
                 fail(1, file + " has no mesh to draw");
@@ -166,6 +169,7 @@ public final class PlayDesktop {
                     file, drawables.stream().mapToInt(d -> mesh.geometries().get(d.geometry()).pointCount()).sum(),
                     drawables.stream().mapToInt(Drawable::triangleCount).sum(), clipTime);
         } finally {
+            mesh.close(); // stops the simulation thread
             glfwDestroyWindow(window);
             glfwTerminate();
         }

@@ -30,7 +30,7 @@ import org.skinlab.ar.CameraFollow;
 import org.skinlab.ar.CameraIntrinsics;
 import org.skinlab.ar.LensGlsl;
 import org.skinlab.ar.MarkerScene;
-import org.skinlab.internal.scene.ModelFraming;
+import org.skinlab.scene.ModelFraming;
 import org.skinlab.simulation.AnimationConfig;
 import org.skinlab.simulation.Frame;
 import org.skinlab.simulation.SkeletalAnimatedMesh;

@@ -9,7 +9,7 @@ import org.joml.Matrix4f;
 import org.skinlab.android.logic.CopiesLayout;
 import org.skinlab.android.logic.DrawnCopies;
 import org.skinlab.model.Model;
-import org.skinlab.internal.scene.ModelFraming;
+import org.skinlab.scene.ModelFraming;
 import org.skinlab.simulation.Frame;
 import org.skinlab.simulation.SkeletalAnimatedMesh;
 import org.skinlab.skinning.SkinnedGeometry;

@@ -1,7 +1,7 @@
 package org.skinlab.ar;
 
 import org.joml.Matrix4f;
-import org.skinlab.internal.scene.ModelFraming;
+import org.skinlab.scene.ModelFraming;
 
 /**
  * The thesis' scene graph on the marker: marker -> scale -> transform -> mesh. The mesh stands as

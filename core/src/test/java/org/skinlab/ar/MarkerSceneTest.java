@@ -8,7 +8,7 @@ import org.joml.Vector3f;
 import org.junit.jupiter.api.Test;
 import org.skinlab.collada.ColladaImporter;
 import org.skinlab.model.Model;
-import org.skinlab.internal.scene.ModelFraming;
+import org.skinlab.scene.ModelFraming;
 import org.skinlab.simulation.Frame;
 import org.skinlab.simulation.SkeletalAnimatedMesh;
 import org.skinlab.skinning.SkinnedGeometry;

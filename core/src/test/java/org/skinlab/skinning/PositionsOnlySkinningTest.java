@@ -7,16 +7,15 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assertions.fail;
 
 import java.util.Arrays;
-import java.util.Random;
 
-import org.joml.Matrix4f;
-import org.joml.Quaternionf;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 import org.skinlab.animation.RotationInterpolation;
 import org.skinlab.collada.ColladaImporter;
 import org.skinlab.model.Model;
+import org.skinlab.testing.RandomRigs;
+import org.skinlab.testing.RandomRigs.Joints;
 import org.skinlab.testing.TestPaths;
 
 /**
@@ -30,75 +29,6 @@ import org.skinlab.testing.TestPaths;
 class PositionsOnlySkinningTest {
     private static final NormalTransform[] WITH_NORMALS = {NormalTransform.BLENDED_MATRIX,
         NormalTransform.INVERSE_TRANSPOSE};
-
-    /** Palettes of random rigid joints, with every other joint scaled non-uniformly, or mirrored. */
-    enum Joints { RIGID, SCALED, MIRRORED }
-
-    /**
-     * {@code points} random points with {@code width} distinct joints of {@code joints} each and
-     * positive weights summing to 1, normals unit or (every 5th point) zero.
-     */
-    static SkinnedGeometry random(long seed, int points, int width, int joints) {
-        Random r = new Random(seed);
-        float[] pos = new float[3 * points];
-        float[] nrm = new float[3 * points];
-        int[] jnt = new int[width * points];
-        float[] w = new float[width * points];
-        for (int i = 0; i < points; i++) {
-            for (int c = 0; c < 3; c++) {
-                pos[3 * i + c] = 4 * r.nextFloat() - 2;
-            }
-            if (i % 5 != 4) {
-                float x = r.nextFloat() - 0.5f, y = r.nextFloat() - 0.5f, z = r.nextFloat() - 0.5f;
-                float n = (float) Math.sqrt(x * x + y * y + z * z);
-                nrm[3 * i] = x / n;
-                nrm[3 * i + 1] = y / n;
-                nrm[3 * i + 2] = z / n;
-            }
-            float sum = 0;
-            for (int k = 0; k < width; k++) {
-                int j;
-                boolean taken;
-                do {
-                    j = r.nextInt(joints);
-                    taken = false;
-                    for (int m = 0; m < k; m++) {
-                        taken |= jnt[width * i + m] == j;
-                    }
-                } while (taken);
-                jnt[width * i + k] = j;
-                w[width * i + k] = 0.05f + r.nextFloat();
-                sum += w[width * i + k];
-            }
-            for (int k = 0; k < width; k++) {
-                w[width * i + k] /= sum;
-            }
-        }
-        float[] bind = new float[16 * joints];
-        for (int j = 0; j < joints; j++) {
-            new Matrix4f().translation(r.nextFloat() - 0.5f, r.nextFloat(), 0).get(bind, 16 * j);
-        }
-        return SkinnedGeometry.fromArrays(pos, nrm, width, jnt, w, bind);
-    }
-
-    static JointPalette pose(SkinnedGeometry g, long seed, Joints kind) {
-        Random r = new Random(seed);
-        JointPalette palette = g.newPalette();
-        Matrix4f m = new Matrix4f();
-        for (int j = 0; j < palette.jointCount(); j++) {
-            Quaternionf q = new Quaternionf(r.nextFloat() - 0.5f, r.nextFloat() - 0.5f, r.nextFloat() - 0.5f,
-                    r.nextFloat() - 0.5f).normalize();
-            m.translationRotate(r.nextFloat() - 0.5f, r.nextFloat() - 0.5f, r.nextFloat() - 0.5f, q);
-            if (kind == Joints.SCALED && j % 2 == 1) {
-                m.scale(0.5f + 1.5f * r.nextFloat(), 0.5f + 1.5f * r.nextFloat(), 0.5f + 1.5f * r.nextFloat());
-            } else if (kind == Joints.MIRRORED && j % 2 == 0) {
-                m.scale(-1f, 1f, 1f);
-            }
-            palette.setMatrix(j, m);
-        }
-        palette.prepareAll();
-        return palette;
-    }
 
     private static float[] nanFilled(int n) {
         float[] a = new float[n];
@@ -127,8 +57,8 @@ class PositionsOnlySkinningTest {
         "DQS, 4, RIGID", "DQS, 4, SCALED", "DQS, 4, MIRRORED", "DQS, 8, RIGID", "DQS, 8, SCALED", "DQS, 8, MIRRORED",
         "DQS, 2, MIRRORED"})
     void positionsOnlyAreTheWithNormalsPositionsBitForBit(SkinningMethod method, int width, Joints kind) {
-        SkinnedGeometry g = random(100 + width, 203, width, 16);
-        JointPalette palette = pose(g, 7 + width, kind);
+        SkinnedGeometry g = RandomRigs.geometry(100 + width, 203, width, 16);
+        JointPalette palette = RandomRigs.palette(g, 7 + width, kind);
         assertEquals(kind != Joints.RIGID, palette.hasScale(), "scaled and mirrored joints are DQS scale parts");
         int n = g.pointCount();
         Skinner positionsOnly = Skinners.scalar(method, g, NormalTransform.NONE);
@@ -151,8 +81,8 @@ class PositionsOnlySkinningTest {
 
     @Test
     void theNormalsArrayIsNotTouched() {
-        SkinnedGeometry g = random(5, 50, 4, 8);
-        JointPalette palette = pose(g, 6, Joints.SCALED);
+        SkinnedGeometry g = RandomRigs.geometry(5, 50, 4, 8);
+        JointPalette palette = RandomRigs.palette(g, 6, Joints.SCALED);
         for (SkinningMethod m : new SkinningMethod[] {SkinningMethod.LBS, SkinningMethod.DQS}) {
             float[] normals = nanFilled(3 * 50);
             Skinners.scalar(m, g, NormalTransform.NONE).skinAll(palette, new float[3 * 50], normals);
@@ -228,7 +158,7 @@ class PositionsOnlySkinningTest {
 
     @Test
     void methodsWithoutAPositionsOnlyKernelRefuseIt() {
-        SkinnedGeometry g = random(3, 20, 2, 4);
+        SkinnedGeometry g = RandomRigs.geometry(3, 20, 2, 4);
         for (SkinningMethod m : SkinningMethod.values()) {
             if (m.skinsPositionsOnly()) {
                 continue;
@@ -243,8 +173,8 @@ class PositionsOnlySkinningTest {
 
     @Test
     void deformationsNeedANormalRule() {
-        SkinnedGeometry g = random(4, 20, 3, 4);
-        JointPalette palette = pose(g, 5, Joints.RIGID);
+        SkinnedGeometry g = RandomRigs.geometry(4, 20, 3, 4);
+        JointPalette palette = RandomRigs.palette(g, 5, Joints.RIGID);
         for (SkinningMethod m : new SkinningMethod[] {SkinningMethod.LBS, SkinningMethod.DQS}) {
             Skinner s = Skinners.scalar(m, g, NormalTransform.NONE);
             UnsupportedOperationException e = assertThrows(UnsupportedOperationException.class,

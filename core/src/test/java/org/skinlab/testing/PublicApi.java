@@ -147,8 +147,17 @@ public final class PublicApi {
         return exceptions.length == 0 ? "" : " throws " + types(exceptions);
     }
 
-    /** Fails, listing the lines that differ, unless {@code committed} holds {@code api}; writes the code's API into the module's build folder. */
+    /**
+     * Fails, listing the lines that differ, unless {@code committed} holds {@code api} (then writes the
+     * code's API into the module's build folder); fails too when the API names a type of a package
+     * named internal, which would make it API after all.
+     */
     public static void check(List<String> api, Path committed) throws IOException {
+        List<String> leaks = api.stream().filter(line -> line.contains(".internal.")).collect(Collectors.toList());
+        if (!leaks.isEmpty()) {
+            fail("The public API names types of packages named internal, which are not API: make those types"
+                    + " API, or keep them out of public signatures:\n  " + String.join("\n  ", leaks));
+        }
         List<String> have = Files.isRegularFile(committed) ? Files.readAllLines(committed) : List.of();
         if (have.equals(api)) {
             return;

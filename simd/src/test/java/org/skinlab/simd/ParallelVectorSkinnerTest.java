@@ -10,6 +10,7 @@ import org.skinlab.skinning.ParallelSkinner;
 import org.skinlab.skinning.SkinnedGeometry;
 import org.skinlab.skinning.Skinner;
 import org.skinlab.skinning.SkinningMethod;
+import org.skinlab.testing.RandomRigs;
 
 /**
  * The vector kernels split over threads give the same bits as one call: LBS computes a range's
@@ -22,8 +23,8 @@ class ParallelVectorSkinnerTest {
         "COR, BLENDED_MATRIX", "COR, INVERSE_TRANSPOSE"})
     void splitOverThreadsIsBitIdenticalToOneCall(SkinningMethod method, NormalTransform normals) {
         for (int points : new int[] {1, 2, 3, 17, 64, 1003}) {
-            SkinnedGeometry g = Geometries.random(points, points, 4, 10);
-            JointPalette palette = Geometries.pose(g, 3, false);
+            SkinnedGeometry g = RandomRigs.geometry(points, points, 4, 10);
+            JointPalette palette = RandomRigs.palette(g, 3, false);
             Skinner kernel = new VectorSkinnerProvider().create(method, g, normals);
             float[] p1 = new float[3 * points];
             float[] n1 = new float[3 * points];

@@ -3,6 +3,7 @@ package org.skinlab.simd;
 import org.skinlab.skinning.Skinner;
 import org.skinlab.skinning.Skinners;
 import org.skinlab.skinning.SkinningMethod;
+import org.skinlab.testing.RandomRigs;
 
 /** Run in a child JVM by {@link VectorSkinnerProviderTest}: prints which kernels Skinners picks. */
 public final class ProbeMain {
@@ -10,8 +11,8 @@ public final class ProbeMain {
     }
 
     public static void main(String[] args) {
-        var g = Geometries.random(1, 40, 4, 6);
-        var palette = Geometries.pose(g, 2, false);
+        var g = RandomRigs.geometry(1, 40, 4, 6);
+        var palette = RandomRigs.palette(g, 2, false);
         StringBuilder sb = new StringBuilder();
         for (SkinningMethod m : SkinningMethod.values()) {
             Skinner s = Skinners.create(m, g);

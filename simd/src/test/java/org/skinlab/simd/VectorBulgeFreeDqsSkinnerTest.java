@@ -13,6 +13,7 @@ import org.skinlab.skinning.SkinnedGeometry;
 import org.skinlab.skinning.Skinner;
 import org.skinlab.skinning.Skinners;
 import org.skinlab.skinning.SkinningMethod;
+import org.skinlab.testing.RandomRigs;
 
 /**
  * The vector bulge-free DQS kernel against the scalar one, as {@link VectorSkinnerTest} checks the
@@ -31,7 +32,7 @@ class VectorBulgeFreeDqsSkinnerTest {
     }
 
     private static JointPalette pose(SkinnedGeometry g, long seed, boolean scaled) {
-        JointPalette palette = Geometries.pose(g, seed, scaled);
+        JointPalette palette = RandomRigs.palette(g, seed, scaled);
         palette.prepareAll();
         return palette;
     }
@@ -41,7 +42,7 @@ class VectorBulgeFreeDqsSkinnerTest {
         "INVERSE_TRANSPOSE, 3, false", "INVERSE_TRANSPOSE, 6, false", "BLENDED_MATRIX, 9, false",
         "INVERSE_TRANSPOSE, 4, true", "INVERSE_TRANSPOSE, 6, true"})
     void agreesWithScalarForEveryRange(NormalTransform normals, int width, boolean scaled) {
-        SkinnedGeometry g = Geometries.random(17 + width, 203, width, 16);
+        SkinnedGeometry g = RandomRigs.geometry(17 + width, 203, width, 16);
         JointPalette palette = pose(g, 19, scaled);
         Skinner k = vector(g, normals);
         int[] edges = {0, 1, 3, 7, 8, 9, 16, 17, 64, 127, 128, 129, 200, 201, 203};
@@ -85,8 +86,8 @@ class VectorBulgeFreeDqsSkinnerTest {
             skinned.skin(0, SkinningMethod.BFDQS, p, new float[p.length]);
             float[] sp = new float[p.length];
             Skinners.scalar(SkinningMethod.BFDQS, g, NormalTransform.INVERSE_TRANSPOSE,
-                    org.skinlab.skinning.PositionSharing.NEVER).skinAll(skinned.palette(0).prepare(SkinningMethod.BFDQS),
-                    sp, new float[p.length]);
+                    org.skinlab.skinning.PositionSharing.NEVER)
+                    .skinAll(skinned.palette(0).prepare(SkinningMethod.BFDQS), sp, new float[p.length]);
             for (int i = 0; i < p.length; i++) {
                 check("morphed position at " + t + " s", i, p[i], sp[i], 0, g.pointCount());
             }
@@ -114,7 +115,7 @@ class VectorBulgeFreeDqsSkinnerTest {
                 "no per-thread allocation counter in this JVM");
         com.sun.management.ThreadMXBean threads = (com.sun.management.ThreadMXBean) bean;
         long thread = Thread.currentThread().getId();
-        SkinnedGeometry g = Geometries.random(23, 203, 4, 16);
+        SkinnedGeometry g = RandomRigs.geometry(23, 203, 4, 16);
         JointPalette palette = pose(g, 29, false);
         Skinner k = vector(g, NormalTransform.INVERSE_TRANSPOSE);
         float[] p = new float[3 * g.pointCount()];

@@ -17,6 +17,7 @@ import org.skinlab.skinning.SkinnedGeometry;
 import org.skinlab.skinning.Skinner;
 import org.skinlab.skinning.Skinners;
 import org.skinlab.skinning.SkinningMethod;
+import org.skinlab.testing.RandomRigs;
 
 /**
  * The Vector API kernels under {@link NormalTransform#NONE} (positions only) against the same
@@ -45,9 +46,9 @@ class VectorPositionsOnlyTest {
     /** Palettes: random rigid joints; every other joint scaled non-uniformly; every other mirrored. */
     private static JointPalette palette(SkinnedGeometry g, long seed, String joints) {
         if (!joints.equals("mirrored")) {
-            return Geometries.pose(g, seed, joints.equals("scaled"));
+            return RandomRigs.palette(g, seed, joints.equals("scaled"));
         }
-        JointPalette palette = Geometries.pose(g, seed, false);
+        JointPalette palette = RandomRigs.palette(g, seed, false);
         Matrix4f m = new Matrix4f();
         for (int j = 0; j < palette.jointCount(); j += 2) {
             palette.setMatrix(j, palette.getMatrix(j, m).scale(-1f, 1f, 1f));
@@ -77,7 +78,7 @@ class VectorPositionsOnlyTest {
         "DQS, 6, scaled", "DQS, 8, rigid", "DQS, 8, scaled", "DQS, 8, mirrored", "DQS, 11, rigid"})
     void positionsOnlyAreTheWithNormalsPositionsBitForBit(SkinningMethod method, int width, String joints) {
         // 203 points: 25 whole blocks of 8 and a tail of 3; 16 joints so 11 distinct ones fit.
-        SkinnedGeometry g = Geometries.random(200 + width, 203, width, 16);
+        SkinnedGeometry g = RandomRigs.geometry(200 + width, 203, width, 16);
         JointPalette palette = palette(g, 31 + width, joints);
         int n = g.pointCount();
         Skinner positionsOnly = vector(method, g, NormalTransform.NONE);
@@ -107,7 +108,7 @@ class VectorPositionsOnlyTest {
         int n = g.pointCount();
         for (SkinningMethod m : new SkinningMethod[] {SkinningMethod.LBS, SkinningMethod.DQS}) {
             for (boolean scaled : new boolean[] {false, true}) {
-                JointPalette palette = Geometries.pose(g, scaled ? 12 : 13, scaled);
+                JointPalette palette = RandomRigs.palette(g, scaled ? 12 : 13, scaled);
                 float[] expected = new float[3 * n];
                 vector(m, g, NormalTransform.INVERSE_TRANSPOSE).skinAll(palette, expected, new float[3 * n]);
                 float[] actual = nanFilled(3 * n);
@@ -121,8 +122,8 @@ class VectorPositionsOnlyTest {
 
     @Test
     void theNormalsArrayIsNotTouchedAndDeformationsAreRefused() {
-        SkinnedGeometry g = Geometries.random(9, 77, 4, 16);
-        JointPalette palette = Geometries.pose(g, 10, true);
+        SkinnedGeometry g = RandomRigs.geometry(9, 77, 4, 16);
+        JointPalette palette = RandomRigs.palette(g, 10, true);
         for (SkinningMethod m : new SkinningMethod[] {SkinningMethod.LBS, SkinningMethod.DQS}) {
             Skinner k = vector(m, g, NormalTransform.NONE);
             float[] normals = nanFilled(3 * 77);
@@ -137,7 +138,7 @@ class VectorPositionsOnlyTest {
 
     @Test
     void otherMethodsRefusePositionsOnlyInTheProviderToo() {
-        SkinnedGeometry g = Geometries.random(11, 40, 2, 8);
+        SkinnedGeometry g = RandomRigs.geometry(11, 40, 2, 8);
         for (SkinningMethod m : SkinningMethod.values()) {
             if (!m.skinsPositionsOnly()) {
                 IllegalArgumentException e = assertThrows(IllegalArgumentException.class,

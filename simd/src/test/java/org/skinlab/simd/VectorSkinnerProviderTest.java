@@ -18,6 +18,7 @@ import org.skinlab.skinning.SkinnedGeometry;
 import org.skinlab.skinning.Skinner;
 import org.skinlab.skinning.Skinners;
 import org.skinlab.skinning.SkinningMethod;
+import org.skinlab.testing.RandomRigs;
 
 /** When the provider offers its kernels and when core's scalar ones run instead. */
 class VectorSkinnerProviderTest {
@@ -30,7 +31,7 @@ class VectorSkinnerProviderTest {
         // AVX2 machine, and ServiceLoader finds the provider through META-INF/services.
         assertTrue(VectorSkinnerProvider.moduleAvailable());
         for (int width = 1; width <= 12; width++) {
-            SkinnedGeometry g = Geometries.random(width, 20, width, 16);
+            SkinnedGeometry g = RandomRigs.geometry(width, 20, width, 16);
             for (SkinningMethod m : WITH_VECTOR_KERNELS) {
                 Skinner s = Skinners.create(m, g, NormalTransform.INVERSE_TRANSPOSE);
                 assertEquals("vector-256", s.implementation(), m + " with " + width + " influences");

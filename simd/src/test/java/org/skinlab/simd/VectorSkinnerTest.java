@@ -16,6 +16,7 @@ import org.skinlab.skinning.SkinnedGeometry;
 import org.skinlab.skinning.Skinner;
 import org.skinlab.skinning.Skinners;
 import org.skinlab.skinning.SkinningMethod;
+import org.skinlab.testing.RandomRigs;
 
 /**
  * The Vector API kernels against core's scalar kernels, the reference: same points, same palette,
@@ -90,8 +91,8 @@ class VectorSkinnerTest {
         "COR, BLENDED_MATRIX, 11"})
     void agreesWithScalarOnRandomPointsForEveryRange(SkinningMethod method, NormalTransform normals, int width) {
         // 203 points: 25 whole blocks of 8 and a tail of 3; 16 joints so 12 distinct ones fit.
-        SkinnedGeometry g = Geometries.random(7 + width, 203, width, 16);
-        JointPalette palette = Geometries.pose(g, 11, false);
+        SkinnedGeometry g = RandomRigs.geometry(7 + width, 203, width, 16);
+        JointPalette palette = RandomRigs.palette(g, 11, false);
         Skinner k = vector(method, g, normals);
         assertAgrees(k, palette, 0, 203);
         // Starts and ends on and off the block grid, ranges shorter than a block or the spill.
@@ -111,8 +112,8 @@ class VectorSkinnerTest {
         "DQS, BLENDED_MATRIX, 8", "DQS, INVERSE_TRANSPOSE, 11", "LBS, INVERSE_TRANSPOSE, 6",
         "COR, INVERSE_TRANSPOSE, 4"})
     void agreesWithScalarWhenJointsAreScaled(SkinningMethod method, NormalTransform normals, int width) {
-        SkinnedGeometry g = Geometries.random(3 + width, 101, width, 16);
-        JointPalette palette = Geometries.pose(g, 5, true);
+        SkinnedGeometry g = RandomRigs.geometry(3 + width, 101, width, 16);
+        JointPalette palette = RandomRigs.palette(g, 5, true);
         assertTrue(palette.hasScale(), "the pose scales every other joint");
         assertAgrees(vector(method, g, normals), palette, 0, 101);
         assertAgrees(vector(method, g, normals), palette, 9, 90);
@@ -126,8 +127,8 @@ class VectorSkinnerTest {
         "DQS, INVERSE_TRANSPOSE, 6, false", "DQS, INVERSE_TRANSPOSE, 6, true", "DQS, BLENDED_MATRIX, 9, true",
         "COR, INVERSE_TRANSPOSE, 4, false", "COR, BLENDED_MATRIX, 6, false", "COR, INVERSE_TRANSPOSE, 9, false"})
     void deformationsAgreeWithScalar(SkinningMethod method, NormalTransform normals, int width, boolean scaled) {
-        SkinnedGeometry g = Geometries.random(40 + width, 203, width, 16);
-        JointPalette palette = Geometries.pose(g, 41, scaled);
+        SkinnedGeometry g = RandomRigs.geometry(40 + width, 203, width, 16);
+        JointPalette palette = RandomRigs.palette(g, 41, scaled);
         Skinner k = vector(method, g, normals);
         int[] edges = {0, 1, 7, 8, 9, 63, 64, 65, 130, 200, 203};
         for (int from : edges) {
@@ -145,8 +146,8 @@ class VectorSkinnerTest {
     void mirroringPalettesAgreeWithScalar(SkinningMethod method, NormalTransform normals, int width) {
         // Every other joint mirrored (a negative scale): LBS blends of mixed signs, DQS scale parts
         // with negative determinants; the scalar kernel turns such normals outwards.
-        SkinnedGeometry g = Geometries.random(60 + width, 203, width, 16);
-        JointPalette palette = Geometries.pose(g, 61, false);
+        SkinnedGeometry g = RandomRigs.geometry(60 + width, 203, width, 16);
+        JointPalette palette = RandomRigs.palette(g, 61, false);
         org.joml.Matrix4f m = new org.joml.Matrix4f();
         for (int j = 0; j < palette.jointCount(); j += 2) {
             palette.setMatrix(j, palette.getMatrix(j, m).scale(-1f, 1f, 1f));
@@ -162,13 +163,13 @@ class VectorSkinnerTest {
     void geometriesWithManyJointPairsAgreeWithScalar(int width) {
         // 64 joints in random order over 2003 points: thousands of distinct (pivot, joint) pairs,
         // so the blend's signed pair table is large and indexed all over.
-        SkinnedGeometry g = Geometries.random(80 + width, 2003, width, 64);
-        JointPalette palette = Geometries.pose(g, 81, false);
+        SkinnedGeometry g = RandomRigs.geometry(80 + width, 2003, width, 64);
+        JointPalette palette = RandomRigs.palette(g, 81, false);
         Skinner k = vector(SkinningMethod.DQS, g, NormalTransform.INVERSE_TRANSPOSE);
         assertAgrees(k, palette, 0, 2003);
         assertAgrees(k, palette, 5, 1999);
         assertDeformationsAgree(k, palette, 0, 2003);
-        JointPalette scaled = Geometries.pose(g, 82, true);
+        JointPalette scaled = RandomRigs.palette(g, 82, true);
         assertAgrees(k, scaled, 0, 2003);
     }
 
@@ -199,7 +200,7 @@ class VectorSkinnerTest {
     void agreesWithScalarOnTheDefaultCharacter(SkinningMethod method, NormalTransform normals) throws Exception {
         SkinnedGeometry g = Geometries.humanoid();
         assertTrue(g.influencesPerPoint() <= 4, "the humanoid has at most 4 influences per point");
-        JointPalette palette = Geometries.pose(g, 23, false);
+        JointPalette palette = RandomRigs.palette(g, 23, false);
         if (method == SkinningMethod.COR) {
             // Random geometries have no triangles, so their centres are the points themselves
             // (p' = A p); the character's mesh gives real centres, which this case must exercise.
@@ -221,8 +222,8 @@ class VectorSkinnerTest {
     void exactNormalsAreUnitAndBlendedOnesAreNotRenormalised() {
         // Independent of the scalar kernel: with LBS between two joints rotated apart, the blended
         // matrix shrinks normals (|n'| < 1), while the inverse-transpose rule gives unit normals.
-        SkinnedGeometry g = Geometries.random(19, 64, 4, 8);
-        JointPalette palette = Geometries.pose(g, 29, false);
+        SkinnedGeometry g = RandomRigs.geometry(19, 64, 4, 8);
+        JointPalette palette = RandomRigs.palette(g, 29, false);
         float[] p = new float[3 * 64];
         float[] exact = new float[3 * 64];
         float[] blended = new float[3 * 64];
@@ -244,7 +245,7 @@ class VectorSkinnerTest {
     @Test
     void identityPoseGivesTheBindShape() {
         // Independent check: identity palette, so every kernel must return its input.
-        SkinnedGeometry g = Geometries.random(31, 37, 4, 5);
+        SkinnedGeometry g = RandomRigs.geometry(31, 37, 4, 5);
         JointPalette palette = g.newPalette(); // identity skinning matrices until set
         palette.prepareAll();
         for (SkinningMethod m : WITH_VECTOR_KERNELS) {

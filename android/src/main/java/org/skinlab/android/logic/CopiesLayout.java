@@ -2,7 +2,7 @@ package org.skinlab.android.logic;
 
 import org.joml.Matrix4f;
 import org.joml.Vector3f;
-import org.skinlab.internal.scene.ModelFraming;
+import org.skinlab.scene.ModelFraming;
 
 /**
  * Where the measurement's copies of a model stand and the camera that sees them all: an about

@@ -6,7 +6,7 @@ import org.skinlab.desktop.ar.ArFeed;
 import org.skinlab.desktop.ar.CameraImage;
 import org.skinlab.desktop.render.ArView;
 import org.skinlab.desktop.render.DrawSettings;
-import org.skinlab.internal.scene.ModelFraming;
+import org.skinlab.scene.ModelFraming;
 import org.skinlab.simulation.AnimationConfig;
 
 /**

@@ -27,7 +27,7 @@ import org.skinlab.desktop.render.GlWindow;
 import org.skinlab.desktop.render.ModelRenderer;
 import org.skinlab.desktop.render.SkinningShader;
 import org.skinlab.model.Model;
-import org.skinlab.internal.scene.ModelFraming;
+import org.skinlab.scene.ModelFraming;
 import org.skinlab.simulation.AnimationConfig;
 import org.skinlab.simulation.Frame;
 import org.skinlab.simulation.SkeletalAnimatedMesh;

@@ -18,7 +18,7 @@ import org.skinlab.desktop.render.ModelRenderer;
 import org.skinlab.desktop.render.SkinningShader;
 import org.skinlab.desktop.viewer.OrbitCamera;
 import org.skinlab.model.Model;
-import org.skinlab.internal.scene.ModelFraming;
+import org.skinlab.scene.ModelFraming;
 import org.skinlab.simulation.AnimationConfig;
 import org.skinlab.simulation.Frame;
 import org.skinlab.simulation.SkeletalAnimatedMesh;

@@ -6,7 +6,7 @@ import org.skinlab.ar.ArPose;
 import org.skinlab.ar.CameraFollow;
 import org.skinlab.ar.CameraIntrinsics;
 import org.skinlab.ar.MarkerScene;
-import org.skinlab.internal.scene.ModelFraming;
+import org.skinlab.scene.ModelFraming;
 
 /**
  * One AR view: the camera's colour frame behind the scene ({@link CameraBackground}), and the

@@ -2,7 +2,7 @@ package org.skinlab.desktop.render;
 
 import org.joml.Matrix4f;
 import org.joml.Vector3f;
-import org.skinlab.internal.scene.ModelFraming;
+import org.skinlab.scene.ModelFraming;
 import org.skinlab.skinning.SkinningMethod;
 
 /**

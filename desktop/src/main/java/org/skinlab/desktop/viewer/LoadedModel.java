@@ -5,7 +5,7 @@ import java.nio.file.Path;
 import java.util.List;
 
 import org.skinlab.model.Model;
-import org.skinlab.internal.scene.ModelFraming;
+import org.skinlab.scene.ModelFraming;
 import org.skinlab.simulation.SkeletalAnimatedMesh;
 import org.skinlab.internal.metrics.MethodComparison;
 import org.skinlab.internal.metrics.RestPose;

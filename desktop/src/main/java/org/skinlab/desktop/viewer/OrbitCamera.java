@@ -3,7 +3,7 @@ package org.skinlab.desktop.viewer;
 import org.joml.Matrix4f;
 import org.joml.Vector3f;
 
-import org.skinlab.internal.scene.ModelFraming;
+import org.skinlab.scene.ModelFraming;
 
 /**
  * A camera orbiting a target: yaw and pitch around it at a distance, Y up. Dragging orbits,

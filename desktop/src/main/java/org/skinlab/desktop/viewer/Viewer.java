@@ -17,7 +17,7 @@ import org.skinlab.animation.RotationInterpolation;
 import org.skinlab.importer.ModelImporter;
 import org.skinlab.model.ImportException;
 import org.skinlab.model.Model;
-import org.skinlab.internal.scene.ModelFraming;
+import org.skinlab.scene.ModelFraming;
 import org.skinlab.simulation.AnimationConfig;
 import org.skinlab.simulation.Frame;
 import org.skinlab.simulation.SkeletalAnimatedMesh;

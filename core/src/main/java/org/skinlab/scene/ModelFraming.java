@@ -1,4 +1,4 @@
-package org.skinlab.internal.scene;
+package org.skinlab.scene;
 
 import java.util.List;
 
@@ -25,7 +25,11 @@ public record ModelFraming(Matrix4fc upright, Vector3f centre, float radius, flo
     /** The smallest radius a framing reports: a point-like or empty model still gets a camera. */
     public static final float MIN_RADIUS = 1e-3f;
 
-    /** Distance between copies in the instance grid: they never touch. */
+    /**
+     * Distance between copies in the instance grid: they never touch.
+     *
+     * @return the spacing in scene units (metres), 2.2 radii
+     */
     public float gridSpacing() {
         return 2.2f * radius;
     }
@@ -34,6 +38,11 @@ public record ModelFraming(Matrix4fc upright, Vector3f centre, float radius, flo
      * The bounding sphere of a grid of {@code instances} copies laid out as the skinning shader
      * does (rows of {@code columns} centred on x, going back along -z), into {@code centre};
      * returns its radius.
+     *
+     * @param instances the number of copies, at least 1
+     * @param columns   copies per row, at least 1
+     * @param centre    set to the sphere's centre in the scene
+     * @return the sphere's radius in scene units (metres)
      */
     public float gridSphere(int instances, int columns, Vector3f centre) {
         int rows = (instances + columns - 1) / columns;
@@ -43,12 +52,25 @@ public record ModelFraming(Matrix4fc upright, Vector3f centre, float radius, flo
         return (float) Math.sqrt(radius * radius + halfWidth * halfWidth + 0.25f * depth * depth);
     }
 
-    /** The size the difference view measures against: the bounds' diagonal. */
+    /**
+     * The size the difference view measures against: the bounds' diagonal.
+     *
+     * @return twice the radius, in scene units (metres)
+     */
     public float size() {
         return 2f * radius;
     }
 
-    /** The framing of the geometries posed as {@code frame} poses them. */
+    /**
+     * The framing of the geometries posed as {@code frame} poses them.
+     *
+     * @param asset      the file's up axis and unit ({@link org.skinlab.model.Model#asset()})
+     * @param geometries the model's geometries, in the frame's order
+     *                   ({@link org.skinlab.simulation.SkeletalAnimatedMesh#geometries()})
+     * @param frame      a frame of those geometries: its palettes pose the points measured
+     * @return the framing; a model with no finite point gets one at the origin of radius
+     *         {@link #MIN_RADIUS}
+     */
     public static ModelFraming of(AssetInfo asset, List<SkinnedGeometry> geometries, Frame frame) {
         Matrix4f toScene = asset.toYUpMeters(new Matrix4f());
         Vector3f min = new Vector3f(Float.POSITIVE_INFINITY);

@@ -1,4 +1,4 @@
-package org.skinlab.internal.scene;
+package org.skinlab.scene;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
