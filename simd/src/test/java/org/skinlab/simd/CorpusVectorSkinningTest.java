@@ -72,9 +72,9 @@ class CorpusVectorSkinningTest {
                 }
                 for (int g = 0; g < skinned.geometries().size(); g++) {
                     SkinnedGeometry geometry = skinned.geometries().get(g);
-                    Skinner fast = Skinners.create(method, geometry, rule);
+                    Skinner fast = Skinners.create(method, geometry.boundFor(method), rule);
                     assertTrue(fast.implementation().startsWith("vector-256"), fast.implementation());
-                    Skinner reference = Skinners.scalar(method, geometry, rule);
+                    Skinner reference = Skinners.scalar(method, geometry.boundFor(method), rule);
                     for (int t = 0; t < 5; t++) {
                         skinned.pose(start + (end - start) * t / 4f, RotationInterpolation.SLERP);
                         skinned.palette(g).prepare(method);

@@ -13,7 +13,10 @@ final class Geometries {
     private Geometries() {
     }
 
-    /** The skinned meshes of the default asset, assets/characters/humanoid-walk.dae. */
+    /**
+     * The skinned mesh of the default asset, assets/characters/humanoid-walk.dae, bound for CoR (its
+     * triangles give real centres of rotation).
+     */
     static SkinnedGeometry humanoid() throws Exception {
         Path root = Path.of(System.getProperty("skinlab.root", "..")).toAbsolutePath().normalize();
         Path file = root.resolve("assets/characters/humanoid-walk.dae");
@@ -23,7 +26,7 @@ final class Geometries {
         Model model = ColladaImporter.read(file);
         for (MeshInstance instance : model.instances()) {
             if (instance.isSkinned()) {
-                return SkinnedGeometry.of(instance);
+                return SkinnedGeometry.of(instance).withCentresOfRotation();
             }
         }
         throw new IllegalStateException(file + " has no skinned mesh");

@@ -43,7 +43,7 @@ class MorphVectorSkinningTest {
                 skinned.skin(0, method, p, nn);
                 float[] sp = new float[n];
                 float[] sn = new float[n];
-                Skinners.scalar(method, g, NormalTransform.INVERSE_TRANSPOSE, PositionSharing.NEVER)
+                Skinners.scalar(method, g.boundFor(method), NormalTransform.INVERSE_TRANSPOSE, PositionSharing.NEVER)
                         .skinAll(skinned.palette(0).prepareAll(), sp, sn);
                 for (int i = 0; i < n; i++) {
                     assertTrue(Math.abs(p[i] - sp[i]) <= 2e-5f * 2.3f, method + " t=" + t + " position " + i);

@@ -25,7 +25,7 @@ class ParallelVectorSkinnerTest {
         for (int points : new int[] {1, 2, 3, 17, 64, 1003}) {
             SkinnedGeometry g = RandomRigs.geometry(points, points, 4, 10);
             JointPalette palette = RandomRigs.palette(g, 3, false);
-            Skinner kernel = new VectorSkinnerProvider().create(method, g, normals);
+            Skinner kernel = new VectorSkinnerProvider().create(method, g.boundFor(method), normals);
             float[] p1 = new float[3 * points];
             float[] n1 = new float[3 * points];
             kernel.skinAll(palette, p1, n1);

@@ -15,7 +15,7 @@ public final class ProbeMain {
         var palette = RandomRigs.palette(g, 2, false);
         StringBuilder sb = new StringBuilder();
         for (SkinningMethod m : SkinningMethod.values()) {
-            Skinner s = Skinners.create(m, g);
+            Skinner s = Skinners.create(m, g.boundFor(m));
             float[] p = new float[3 * 40];
             float[] n = new float[3 * 40];
             s.skinAll(palette, p, n); // must run, whichever kernel it is

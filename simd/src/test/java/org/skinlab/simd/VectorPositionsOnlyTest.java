@@ -32,7 +32,7 @@ class VectorPositionsOnlyTest {
         NormalTransform.INVERSE_TRANSPOSE};
 
     private static Skinner vector(SkinningMethod method, SkinnedGeometry g, NormalTransform normals) {
-        Skinner s = new VectorSkinnerProvider().create(method, g, normals);
+        Skinner s = new VectorSkinnerProvider().create(method, g.boundFor(method), normals);
         assertTrue(s != null, "the test JVM has the incubator module and AVX2: the provider must offer a kernel");
         return s;
     }
@@ -112,7 +112,7 @@ class VectorPositionsOnlyTest {
                 float[] expected = new float[3 * n];
                 vector(m, g, NormalTransform.INVERSE_TRANSPOSE).skinAll(palette, expected, new float[3 * n]);
                 float[] actual = nanFilled(3 * n);
-                Skinner k = Skinners.create(m, g, NormalTransform.NONE);
+                Skinner k = Skinners.create(m, g.boundFor(m), NormalTransform.NONE);
                 assertEquals("vector-256", k.implementation(), "Skinners.create picks the vector kernel");
                 k.skinAll(palette, actual, null);
                 assertSameBits(expected, actual, 0, n, "humanoid " + m + (scaled ? " scaled" : ""));
@@ -142,7 +142,7 @@ class VectorPositionsOnlyTest {
         for (SkinningMethod m : SkinningMethod.values()) {
             if (!m.skinsPositionsOnly()) {
                 IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
-                        () -> new VectorSkinnerProvider().create(m, g, NormalTransform.NONE), m.key());
+                        () -> new VectorSkinnerProvider().create(m, g.boundFor(m), NormalTransform.NONE), m.key());
                 assertTrue(e.getMessage().contains(m.key()), e.getMessage());
             }
         }

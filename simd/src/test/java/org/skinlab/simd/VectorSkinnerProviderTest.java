@@ -33,7 +33,7 @@ class VectorSkinnerProviderTest {
         for (int width = 1; width <= 12; width++) {
             SkinnedGeometry g = RandomRigs.geometry(width, 20, width, 16);
             for (SkinningMethod m : WITH_VECTOR_KERNELS) {
-                Skinner s = Skinners.create(m, g, NormalTransform.INVERSE_TRANSPOSE);
+                Skinner s = Skinners.create(m, g.boundFor(m), NormalTransform.INVERSE_TRANSPOSE);
                 assertEquals("vector-256", s.implementation(), m + " with " + width + " influences");
                 assertEquals(m, s.method());
                 assertEquals(NormalTransform.INVERSE_TRANSPOSE, s.normalTransform());
@@ -69,11 +69,11 @@ class VectorSkinnerProviderTest {
         assertEquals(everyMethod("vector-256"), out);
     }
 
-    /** Test classes, simd's classes and resources (the service file), core and JOML. */
+    /** Test classes (simd's and core's), simd's classes and resources (the service file), core and JOML. */
     private static String classPath() throws Exception {
         List<String> entries = new ArrayList<>();
-        for (Class<?> c : new Class<?>[] {ProbeMain.class, VectorSkinnerProvider.class, Skinners.class,
-                org.joml.Matrix4f.class}) {
+        for (Class<?> c : new Class<?>[] {ProbeMain.class, org.skinlab.testing.RandomRigs.class,
+                VectorSkinnerProvider.class, Skinners.class, org.joml.Matrix4f.class}) {
             entries.add(Path.of(c.getProtectionDomain().getCodeSource().getLocation().toURI()).toString());
         }
         URL service = VectorSkinnerProviderTest.class.getClassLoader()

@@ -36,7 +36,7 @@ class VectorSkinnerTest {
     private static final float TOLERANCE = 2e-5f;
 
     private static Skinner vector(SkinningMethod method, SkinnedGeometry g, NormalTransform normals) {
-        Skinner s = new VectorSkinnerProvider().create(method, g, normals);
+        Skinner s = new VectorSkinnerProvider().create(method, g.boundFor(method), normals);
         assertTrue(s != null, "the test JVM has the incubator module and AVX2: the provider must offer a kernel");
         return s;
     }

@@ -96,9 +96,9 @@ class VectorStbsSkinnerTest {
         "STBS_DQS, BLENDED_MATRIX, 3, false", "STBS_DQS, INVERSE_TRANSPOSE, 1, false"})
     void agreesWithScalarForEveryRange(SkinningMethod method, NormalTransform normals, int width, boolean scaled) {
         SkinnedGeometry g = chain(width, 203, width, 6);
-        Skinner vector = new VectorSkinnerProvider().create(method, g, normals);
+        Skinner vector = new VectorSkinnerProvider().create(method, g.boundFor(method), normals);
         assertTrue(vector instanceof VectorStbsSkinner, "the provider offers the vector kernel for " + method);
-        Skinner scalar = Skinners.scalar(method, g, normals, PositionSharing.NEVER);
+        Skinner scalar = Skinners.scalar(method, g.boundFor(method), normals, PositionSharing.NEVER);
         for (int seed = 0; seed < 5; seed++) {
             JointPalette palette = pose(g, 100 * width + seed, scaled);
             for (int[] range : new int[][] {{0, 203}, {0, 200}, {3, 77}, {8, 16}, {9, 14}}) {
@@ -118,9 +118,9 @@ class VectorStbsSkinnerTest {
         "STBS_DQS, INVERSE_TRANSPOSE, 1, false", "STBS_DQS, BLENDED_MATRIX, 2, true"})
     void deformationsAgreeWithScalarForEveryRange(SkinningMethod method, NormalTransform normals, int width, boolean scaled) {
         SkinnedGeometry g = chain(width + 10, 203, width, 6);
-        Skinner vector = new VectorSkinnerProvider().create(method, g, normals);
+        Skinner vector = new VectorSkinnerProvider().create(method, g.boundFor(method), normals);
         assertTrue(vector instanceof VectorStbsSkinner, "the provider offers the vector kernel for " + method);
-        Skinner scalar = Skinners.scalar(method, g, normals, PositionSharing.NEVER);
+        Skinner scalar = Skinners.scalar(method, g.boundFor(method), normals, PositionSharing.NEVER);
         for (int seed = 0; seed < 5; seed++) {
             JointPalette palette = pose(g, 300 * width + seed, scaled);
             for (int[] range : new int[][] {{0, 203}, {0, 200}, {3, 77}, {8, 16}, {9, 14}}) {
@@ -156,7 +156,7 @@ class VectorStbsSkinnerTest {
         assumeTrue(Runtime.version().feature() >= 25, "JDK 17's C2 leaves some lane permutations to Java code");
         int calls = 2_000;
         SkinnedGeometry g = chain(7, 200, 4, 6);
-        Skinner vector = new VectorSkinnerProvider().create(method, g, normals);
+        Skinner vector = new VectorSkinnerProvider().create(method, g.boundFor(method), normals);
         assertTrue(vector instanceof VectorStbsSkinner, "the provider offers the vector kernel for " + method);
         JointPalette palette = pose(g, 7, true);
         float[] p = new float[3 * 200];
@@ -173,7 +173,7 @@ class VectorStbsSkinnerTest {
         assumeTrue(Runtime.version().feature() >= 25, "JDK 17's C2 leaves some lane permutations to Java code");
         int calls = 2_000;
         SkinnedGeometry g = chain(7, 200, 4, 6);
-        Skinner vector = new VectorSkinnerProvider().create(method, g, normals);
+        Skinner vector = new VectorSkinnerProvider().create(method, g.boundFor(method), normals);
         assertTrue(vector instanceof VectorStbsSkinner, "the provider offers the vector kernel for " + method);
         JointPalette palette = pose(g, 7, true);
         float[] f = new float[Skinner.DEFORMATION_FLOATS * 200];
