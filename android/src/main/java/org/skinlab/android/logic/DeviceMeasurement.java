@@ -58,6 +58,12 @@ public final class DeviceMeasurement {
     /** How the status line names it: "measure", or with a protocol other than the full one, e.g. "measure (quick)". */
     private final String prefix;
     private volatile boolean cancelled;
+    /**
+     * Set once the run has ended, just before its outcome is published in {@link #status}: a
+     * reader that sees the outcome sees the measurement ended ({@link #running()} false), so a
+     * status line never says "stopped" beside a button that still says "Stop measuring".
+     */
+    private volatile boolean finished;
     private volatile String status;
     private volatile File written;
     /** Measuring thread only: planned seconds of the runs and points started so far, and of all of them. */
@@ -107,8 +113,13 @@ public final class DeviceMeasurement {
         thread.interrupt();
     }
 
+    /**
+     * Whether the measurement is under way: started and its outcome not yet published.
+     *
+     * @return true from {@link #start()} until {@link #status()} says how it ended
+     */
     public boolean running() {
-        return thread.isAlive();
+        return thread.isAlive() && !finished;
     }
 
     /** What it is doing, or where the file went, or why it stopped: one line for the status line. */
@@ -122,6 +133,7 @@ public final class DeviceMeasurement {
     }
 
     private void run() {
+        String outcome;
         startNanos = System.nanoTime();
         String started = Instant.now().toString();
         drawing.begin();
@@ -151,15 +163,17 @@ public final class DeviceMeasurement {
                     drawing.gpu(), new DeviceResults.Protocol(protocol.name(), protocol.times()), times, skipped, drawn);
             File file = write(results);
             written = file;
-            status = prefix + ": wrote " + file.getPath() + " (" + seconds() + ")" + (drawn.measured() ? ""
+            outcome = prefix + ": wrote " + file.getPath() + " (" + seconds() + ")" + (drawn.measured() ? ""
                     : "; the GPU part was not measured: " + drawn.unavailable());
         } catch (CancellationException e) {
-            status = prefix + ": stopped";
+            outcome = prefix + ": stopped";
         } catch (Throwable e) { // errors too: a measurement must never end the app
-            status = prefix + ": failed: " + (e.getMessage() != null ? e.getMessage() : e.getClass().getSimpleName());
+            outcome = prefix + ": failed: " + (e.getMessage() != null ? e.getMessage() : e.getClass().getSimpleName());
         } finally {
             drawing.end();
         }
+        finished = true;
+        status = outcome;
     }
 
     /** The model in {@code name}, or null (and why, in {@code skipped}) when it does not load or has no skin. */
