@@ -7,7 +7,6 @@ import boofcv.factory.fiducial.ConfigHammingMarker;
 import boofcv.factory.fiducial.FactoryFiducial;
 import boofcv.struct.image.GrayU8;
 import georegression.struct.se.Se3_F64;
-import org.skinlab.internal.ar.BoofCameras;
 
 /**
  * BoofCV's own square-marker detector ({@code FactoryFiducial.squareHamming}) with its default

@@ -12,7 +12,6 @@ import boofcv.factory.distort.LensDistortionFactory;
 import boofcv.struct.image.GrayU8;
 import georegression.struct.se.Se3_F64;
 import georegression.struct.shapes.Quadrilateral_F64;
-import org.skinlab.internal.ar.BoofCameras;
 
 /**
  * Finds square fiducials (BoofCV's {@code squareHamming} detector: ArUco and AprilTag codes) in

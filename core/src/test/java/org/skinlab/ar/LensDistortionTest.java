@@ -11,7 +11,6 @@ import boofcv.alg.distort.brown.LensDistortionBrown;
 import boofcv.struct.distort.Point2Transform2_F64;
 import georegression.struct.point.Point2D_F64;
 import org.junit.jupiter.api.Test;
-import org.skinlab.internal.ar.BoofCameras;
 
 /**
  * The lens model against BoofCV's implementation of the same formulas (an independent reference),

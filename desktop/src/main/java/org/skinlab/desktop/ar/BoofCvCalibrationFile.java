@@ -3,7 +3,7 @@ package org.skinlab.desktop.ar;
 import java.nio.file.Path;
 
 import boofcv.struct.calib.CameraPinholeBrown;
-import org.skinlab.internal.ar.BoofCameras;
+import org.skinlab.ar.BoofCameras;
 import org.skinlab.ar.CameraIntrinsics;
 import org.yaml.snakeyaml.nodes.MappingNode;
 import org.yaml.snakeyaml.nodes.Node;

@@ -11,7 +11,7 @@ import boofcv.struct.geo.PointIndex2D_F64;
 import georegression.struct.point.Point2D_F64;
 import georegression.struct.se.Se3_F64;
 
-import org.skinlab.internal.ar.BoofCameras;
+import org.skinlab.ar.BoofCameras;
 import org.skinlab.ar.CameraIntrinsics;
 
 /**

@@ -22,7 +22,7 @@ import org.skinlab.ar.GrayImage;
  * Finds a {@link CalibrationTarget} in camera images with BoofCV's calibration detectors: X-corners
  * for a chessboard ({@code chessboardX}), black squares for a grid ({@code squareGrid}). Either
  * finds every point of the target or nothing, and says why when it finds nothing. Points are in
- * BoofCV's pixel convention (a pixel's centre at +0.5, {@link org.skinlab.internal.ar.BoofCameras}), the
+ * BoofCV's pixel convention (a pixel's centre at +0.5, {@link org.skinlab.ar.BoofCameras}), the
  * calibration's input. One instance per thread.
  */
 public final class TargetDetector {

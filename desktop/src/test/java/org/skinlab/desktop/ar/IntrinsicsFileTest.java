@@ -13,7 +13,7 @@ import java.nio.file.Path;
 import boofcv.struct.calib.CameraPinholeBrown;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.skinlab.internal.ar.BoofCameras;
+import org.skinlab.ar.BoofCameras;
 import org.skinlab.ar.CameraIntrinsics;
 import org.skinlab.ar.LensDistortion;
 

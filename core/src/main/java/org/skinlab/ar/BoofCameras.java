@@ -1,8 +1,6 @@
-package org.skinlab.internal.ar;
+package org.skinlab.ar;
 
 import boofcv.struct.calib.CameraPinholeBrown;
-import org.skinlab.ar.CameraIntrinsics;
-import org.skinlab.ar.LensDistortion;
 
 /**
  * Our {@link CameraIntrinsics} to and from BoofCV's {@link CameraPinholeBrown}: the one place that
@@ -14,7 +12,12 @@ public final class BoofCameras {
     private BoofCameras() {
     }
 
-    /** BoofCV's model of {@code k}. */
+    /**
+     * BoofCV's model of {@code k}.
+     *
+     * @param k our intrinsics (pixel centres at integers)
+     * @return a new BoofCV camera: the principal point moved by half a pixel, the lens terms copied
+     */
     public static CameraPinholeBrown toBoof(CameraIntrinsics k) {
         CameraPinholeBrown c = new CameraPinholeBrown(k.fx(), k.fy(), 0, k.cx() + 0.5, k.cy() + 0.5, k.width(),
                 k.height());
@@ -27,8 +30,12 @@ public final class BoofCameras {
     }
 
     /**
-     * Ours of BoofCV's {@code c}; IllegalArgumentException when it has a skew (no camera we
-     * support has one) or more than three radial terms.
+     * Ours of BoofCV's {@code c}.
+     *
+     * @param c a BoofCV camera (pixel centres at half-integers)
+     * @return our intrinsics of the same camera
+     * @throws IllegalArgumentException when it has a skew (no camera we support has one) or more
+     *                                  than three radial terms
      */
     public static CameraIntrinsics fromBoof(CameraPinholeBrown c) {
         if (Math.abs(c.skew) > 1e-9 * Math.max(c.fx, c.fy)) {
