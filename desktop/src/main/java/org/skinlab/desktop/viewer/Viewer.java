@@ -13,7 +13,6 @@ import java.util.concurrent.atomic.AtomicReference;
 
 import org.skinlab.animation.Skeleton;
 import org.skinlab.desktop.render.DrawSettings;
-import org.skinlab.animation.RotationInterpolation;
 import org.skinlab.importer.ModelImporter;
 import org.skinlab.model.ImportException;
 import org.skinlab.model.Model;
