@@ -45,7 +45,15 @@ import org.skinlab.model.TransformElement;
  */
 public final class AnimationSampler {
     private final AnimationClip clip;
+    private final Skeleton skeleton;
     private final Channel[] channels;
+    /** Per node, whether a channel drives one of its values. */
+    private final boolean[] animated;
+    /**
+     * The nodes {@link #sampleLocal} turns from transform values into T, R and S after the
+     * channels ran: those driven by channels other than a whole-matrix one on a one-matrix stack.
+     */
+    private final int[] valueNodes;
 
     /**
      * A sampler of {@code clip} for poses of {@code skeleton}. Resolves every channel to its place in the
@@ -57,9 +65,19 @@ public final class AnimationSampler {
      */
     public AnimationSampler(Skeleton skeleton, AnimationClip clip) {
         this.clip = clip;
+        this.skeleton = skeleton;
         List<AnimationChannel> list = clip.channels();
         channels = new Channel[list.size()];
         List<float[]> timelines = new ArrayList<>();
+        int nodes = skeleton.nodeCount();
+        animated = new boolean[nodes];
+        int[] channelsPerNode = new int[nodes];
+        for (AnimationChannel c : list) {
+            if (c.node() >= 0 && c.node() < nodes) {
+                channelsPerNode[c.node()]++;
+            }
+        }
+        boolean[] byValues = new boolean[nodes];
         for (int i = 0; i < channels.length; i++) {
             AnimationChannel c = list.get(i);
             int slot = skeleton.valueOffset(c.node(), c.transformIndex()) + c.valueOffset();
@@ -67,9 +85,42 @@ public final class AnimationSampler {
             boolean matrix = kind == TransformElement.Kind.MATRIX && c.valueOffset() == 0 && c.valueCount() == 16;
             boolean quaternion = kind == TransformElement.Kind.QUATERNION && c.valueOffset() == 0
                     && c.valueCount() == 4;
+            // A whole matrix that is its node's only transform and only channel goes to T, R, S directly.
+            boolean local = matrix && channelsPerNode[c.node()] == 1 && skeleton.node(c.node()).transforms().size() == 1;
             channels[i] = new Channel(slot, c.track(), sharedTimes(c.track().times(), timelines), matrix,
-                    quaternion);
+                    quaternion, local ? c.node() : -1);
+            animated[c.node()] = true;
+            byValues[c.node()] |= !local;
         }
+        int count = 0;
+        for (boolean b : byValues) {
+            count += b ? 1 : 0;
+        }
+        valueNodes = new int[count];
+        for (int i = 0, k = 0; i < nodes; i++) {
+            if (byValues[i]) {
+                valueNodes[k++] = i;
+            }
+        }
+    }
+
+    /**
+     * Whether the clip animates node {@code node} (a channel drives one of its transform values).
+     *
+     * @param node the node index, in [0, {@link Skeleton#nodeCount()})
+     * @return true when a channel of the clip drives the node
+     */
+    public boolean animates(int node) {
+        return animated[node];
+    }
+
+    /**
+     * The skeleton this sampler samples poses of.
+     *
+     * @return the skeleton given to the constructor
+     */
+    public Skeleton skeleton() {
+        return skeleton;
     }
 
     /**
@@ -199,6 +250,47 @@ public final class AnimationSampler {
     }
 
     /**
+     * Samples the clip at {@code time} into local translation, rotation and scale: the form poses
+     * are blended in. Every node the clip animates is written; the others are left as they are
+     * (at rest for a fresh {@link LocalPose}). Whole-matrix keys are interpolated as in
+     * {@link #sample} and written without being composed (on a key, its decomposition: shear
+     * dropped); other transform stacks are sampled into {@code values}' transform values and
+     * split into T, R and S. Allocation-free.
+     *
+     * @param time the clip time in seconds, as for {@link #sample}
+     * @param rotations how rotations are blended between LINEAR keys
+     * @param values a pose of this sampler's skeleton used for the transform values of nodes not written
+     *     directly; it must always be the same pose for the same destination (its values persist)
+     * @param dest receives the animated nodes' transforms
+     * @throws IllegalArgumentException when {@code time} is NaN
+     */
+    public void sampleLocal(float time, RotationInterpolation rotations, Pose values, LocalPose dest) {
+        if (Float.isNaN(time)) {
+            throw new IllegalArgumentException("sample time is NaN");
+        }
+        float[] v = values.values();
+        float[] trs = dest.array();
+        float[] searched = null;
+        int k = 0;
+        for (Channel c : channels) {
+            if (c.times != searched) {
+                searched = c.times;
+                k = segment(searched, time);
+            }
+            if (c.node < 0) {
+                c.sample(k, time, rotations, v, values);
+            } else if (!c.sampleLocal(k, time, rotations, trs, values)) {
+                // A BEZIER/HERMITE matrix segment: per value, then split.
+                c.sample(k, time, rotations, v, values);
+                skeleton.toLocal(c.node, v, values.local, values.scratch, values.q1, trs);
+            }
+        }
+        for (int node : valueNodes) {
+            skeleton.toLocal(node, v, values.local, values.scratch, values.q1, trs);
+        }
+    }
+
+    /**
      * The segment [k, k+1] of the keys that holds {@code time}: the last key at or before it, 0
      * before the first key (and for no keys), the last key from it on.
      */
@@ -249,8 +341,15 @@ public final class AnimationSampler {
         private final double[] slerpSines;
         /** Whether the channel drives a whole rotation quaternion (x y z w). */
         private final boolean quaternion;
+        /** The node whose T, R, S {@link #sampleLocal} writes directly, or -1. */
+        final int node;
 
         Channel(int slot, KeyframeTrack track, float[] times, boolean matrix, boolean quaternion) {
+            this(slot, track, times, matrix, quaternion, -1);
+        }
+
+        Channel(int slot, KeyframeTrack track, float[] times, boolean matrix, boolean quaternion, int node) {
+            this.node = node;
             this.slot = slot;
             this.width = track.width();
             this.times = times;
@@ -356,6 +455,54 @@ public final class AnimationSampler {
                 normalize(dest, slot);
             }
         }
+
+        /**
+         * Writes this whole-matrix channel's T, R, S at {@code time} (segment {@code k}) into
+         * {@code trs} at its node. False for a BEZIER or HERMITE segment, which it leaves to
+         * {@link #sample}.
+         */
+        boolean sampleLocal(int k, float time, RotationInterpolation rotations, float[] trs, Pose pose) {
+            int keys = times.length;
+            if (keys == 0) {
+                return true;
+            }
+            int o = LocalPose.STRIDE * node;
+            Interpolation how = interpolations[k];
+            if (k == keys - 1 || time <= times[k] || how == Interpolation.STEP) {
+                System.arraycopy(this.trs, 10 * k, trs, o, 10);
+                return true;
+            }
+            if (how != Interpolation.LINEAR) {
+                return false;
+            }
+            float t0 = times[k];
+            float t1 = times[k + 1];
+            float u = t1 > t0 ? (time - t0) / (t1 - t0) : 1f;
+            int a = 10 * k;
+            int b = a + 10;
+            double angle = slerpAngles[k];
+            if (rotations == RotationInterpolation.SLERP && !Double.isNaN(angle)) {
+                double wa = Math.sin((1 - u) * angle) / Math.abs(slerpSines[k]);
+                double wb = Math.sin(u * angle) / slerpSines[k];
+                for (int c = 3; c < 7; c++) {
+                    trs[o + c] = (float) (wa * this.trs[a + c] + wb * this.trs[b + c]);
+                }
+            } else {
+                Quaternionf q = AnimationHelper.interpolate(rotations,
+                        pose.q1.set(this.trs[a + 3], this.trs[a + 4], this.trs[a + 5], this.trs[a + 6]),
+                        pose.q2.set(this.trs[b + 3], this.trs[b + 4], this.trs[b + 5], this.trs[b + 6]), u, pose.q1);
+                trs[o + 3] = q.x;
+                trs[o + 4] = q.y;
+                trs[o + 5] = q.z;
+                trs[o + 6] = q.w;
+            }
+            for (int c : TRANSLATION_AND_SCALE) {
+                trs[o + c] = lerp(this.trs[a + c], this.trs[b + c], u);
+            }
+            return true;
+        }
+
+        private static final int[] TRANSLATION_AND_SCALE = {0, 1, 2, 7, 8, 9};
 
         private static void normalize(float[] q, int o) {
             double len = Math.sqrt((double) q[o] * q[o] + (double) q[o + 1] * q[o + 1]

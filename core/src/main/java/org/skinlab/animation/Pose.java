@@ -17,6 +17,8 @@ public final class Pose {
     final Matrix4f scratch = new Matrix4f();
     /** One column-major 4x4 matrix of scratch for {@link Skeleton#skinningMatrices}. */
     final float[] product = new float[16];
+    /** One row-major local matrix of scratch for {@link Skeleton#evaluate(LocalPose, Pose)}. */
+    final float[] localRows = new float[16];
     // Scratch for AnimationSampler's rotation blending other than slerp.
     final Quaternionf q1 = new Quaternionf();
     final Quaternionf q2 = new Quaternionf();

@@ -3,6 +3,7 @@ package org.skinlab.animation;
 import java.util.List;
 
 import org.joml.Matrix4f;
+import org.joml.Quaternionf;
 import org.skinlab.model.Model;
 import org.skinlab.model.Node;
 import org.skinlab.model.TransformElement;
@@ -41,6 +42,13 @@ public final class Skeleton {
     private final float[] restValues;
     /** Per node: its stack is one {@code <matrix>} (the common case), read straight from the values. */
     private final boolean[] singleMatrix;
+    /**
+     * Per node: its stack is glTF's translation, rotation quaternion, scale (each at most once,
+     * in that order), so its {@link LocalPose} transform is its values, read without a matrix.
+     */
+    private final boolean[] trsStack;
+    /** Every node's rest transform in {@link LocalPose}'s layout. */
+    private final float[] restLocal;
 
     private Skeleton(List<Node> nodes) {
         this.nodes = nodes;
@@ -74,10 +82,95 @@ public final class Skeleton {
         }
         elementStart[n] = e;
         singleMatrix = new boolean[n];
+        trsStack = new boolean[n];
         for (int i = 0; i < n; i++) {
             singleMatrix[i] = elementStart[i + 1] - elementStart[i] == 1
                     && kinds[elementStart[i]] == TransformElement.Kind.MATRIX;
+            trsStack[i] = isTrsStack(elementStart[i], elementStart[i + 1]);
         }
+        restLocal = new float[LocalPose.STRIDE * n];
+        Matrix4f m = new Matrix4f();
+        Matrix4f scratch = new Matrix4f();
+        Quaternionf q = new Quaternionf();
+        for (int i = 0; i < n; i++) {
+            toLocal(i, restValues, m, scratch, q, restLocal);
+        }
+    }
+
+    private boolean isTrsStack(int from, int to) {
+        int last = -1;
+        for (int e = from; e < to; e++) {
+            int rank = kinds[e] == TransformElement.Kind.TRANSLATE ? 0
+                    : kinds[e] == TransformElement.Kind.QUATERNION ? 1
+                    : kinds[e] == TransformElement.Kind.SCALE ? 2 : -1;
+            if (rank <= last) {
+                return false;
+            }
+            last = rank;
+        }
+        return true;
+    }
+
+    /**
+     * Writes node {@code i}'s local transform, made from its transform values in {@code values},
+     * into {@code dest} in {@link LocalPose}'s layout: read straight from a glTF TRS stack (the
+     * quaternion normalised), else the product of its stack split into T, R and S (shear dropped).
+     * Allocation-free; {@code m}, {@code scratch} and {@code q} are overwritten.
+     */
+    void toLocal(int i, float[] values, Matrix4f m, Matrix4f scratch, Quaternionf q, float[] dest) {
+        int o = LocalPose.STRIDE * i;
+        if (trsStack[i]) {
+            dest[o] = 0f;
+            dest[o + 1] = 0f;
+            dest[o + 2] = 0f;
+            dest[o + 3] = 0f;
+            dest[o + 4] = 0f;
+            dest[o + 5] = 0f;
+            dest[o + 6] = 1f;
+            dest[o + 7] = 1f;
+            dest[o + 8] = 1f;
+            dest[o + 9] = 1f;
+            for (int e = elementStart[i]; e < elementStart[i + 1]; e++) {
+                int v = valueOffsets[e];
+                switch (kinds[e]) {
+                    case TRANSLATE:
+                        System.arraycopy(values, v, dest, o, 3);
+                        break;
+                    case QUATERNION: {
+                        double len = Math.sqrt((double) values[v] * values[v] + (double) values[v + 1] * values[v + 1]
+                                + (double) values[v + 2] * values[v + 2] + (double) values[v + 3] * values[v + 3]);
+                        if (len > 0) {
+                            for (int c = 0; c < 4; c++) {
+                                dest[o + 3 + c] = (float) (values[v + c] / len);
+                            }
+                        }
+                        break;
+                    }
+                    default:
+                        System.arraycopy(values, v, dest, o + 7, 3);
+                        break;
+                }
+            }
+            return;
+        }
+        m.identity();
+        for (int e = elementStart[i]; e < elementStart[i + 1]; e++) {
+            TransformElement.multiply(kinds[e], values, valueOffsets[e], m, scratch);
+        }
+        LocalPose.split(m, q, dest, o);
+    }
+
+    /**
+     * A new local pose at rest: every node's rest transform split into T, R and S.
+     *
+     * @return a new local pose of this skeleton
+     */
+    public LocalPose newLocalPose() {
+        return new LocalPose(this, restLocal);
+    }
+
+    float[] restLocal() {
+        return restLocal;
     }
 
     /**
@@ -230,6 +323,31 @@ public final class Skeleton {
             if (p >= 0) {
                 mulAffine(world, 16 * p, world, w, COLUMN_MAJOR, world, w);
             }
+        }
+    }
+
+    /**
+     * Computes every node's world matrix from local transforms: {@code parent world * T * R * S}.
+     * Allocation-free. The pose's transform values are not touched (they no longer describe its
+     * world matrices until the next {@link #evaluate(Pose)}).
+     *
+     * @param local the nodes' local transforms, a local pose of this skeleton
+     * @param pose a pose of this skeleton; its world matrices are overwritten
+     * @throws IllegalArgumentException when either belongs to another skeleton
+     */
+    public void evaluate(LocalPose local, Pose pose) {
+        if (local.skeleton() != this || pose.skeleton() != this) {
+            throw new IllegalArgumentException("a pose of another skeleton");
+        }
+        float[] trs = local.array();
+        float[] world = pose.worldArray();
+        float[] rows = pose.localRows;
+        for (int i = 0; i < parents.length; i++) {
+            int o = LocalPose.STRIDE * i;
+            AnimationHelper.composeRowMajor(trs[o], trs[o + 1], trs[o + 2], trs[o + 3], trs[o + 4], trs[o + 5],
+                    trs[o + 6], trs[o + 7], trs[o + 8], trs[o + 9], rows, 0);
+            int p = parents[i];
+            mulAffine(p >= 0 ? world : IDENTITY, p >= 0 ? 16 * p : 0, rows, 0, ROW_MAJOR, world, 16 * i);
         }
     }
 

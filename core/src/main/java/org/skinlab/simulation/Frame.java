@@ -3,6 +3,8 @@ package org.skinlab.simulation;
 import java.util.List;
 import java.util.concurrent.atomic.AtomicInteger;
 
+import org.joml.Matrix4f;
+
 import org.skinlab.animation.RotationInterpolation;
 import org.skinlab.skinning.JointPalette;
 import org.skinlab.skinning.SkinnedGeometry;
@@ -72,6 +74,8 @@ public final class Frame implements AutoCloseable {
     private long skinningNanos;
     private long meshSkinningNanos;
     private boolean skinnedMesh;
+    /** Root motion's placement of the model, column-major. */
+    private final float[] placement = new float[16];
 
     /**
      * @param geometries the geometries, for their point counts and palettes
@@ -156,6 +160,22 @@ public final class Frame implements AutoCloseable {
         this.skinnedMesh = skinnedMesh;
         this.skinningNanos = skinningNanos;
         this.meshSkinningNanos = meshSkinningNanos;
+    }
+
+    void setPlacement(Matrix4f m) {
+        m.get(placement);
+    }
+
+    /**
+     * Where root motion has taken the model ({@link org.skinlab.mixer.Mixer#placement}): the
+     * renderer multiplies the model matrix by it on the right. The identity while no clip with
+     * root motion has played.
+     *
+     * @param dest receives the placement, in the model's space
+     * @return {@code dest}
+     */
+    public Matrix4f placement(Matrix4f dest) {
+        return dest.set(placement);
     }
 
     /**

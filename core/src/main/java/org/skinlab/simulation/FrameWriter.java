@@ -1,5 +1,8 @@
 package org.skinlab.simulation;
 
+import org.joml.Matrix4f;
+import org.skinlab.animation.LocalPose;
+import org.skinlab.mixer.Mixer;
 import org.skinlab.skinning.SkinnedGeometry;
 import org.skinlab.skinning.SkinnedModel;
 import org.skinlab.skinning.SkinningGlsl;
@@ -13,9 +16,14 @@ import org.skinlab.skinning.SkinningGlsl;
  */
 final class FrameWriter {
     private final SkinnedModel skinned;
+    private final Mixer mixer;
+    private final LocalPose local;
+    private final Matrix4f placement = new Matrix4f();
 
-    FrameWriter(SkinnedModel skinned) {
+    FrameWriter(SkinnedModel skinned, Mixer mixer) {
         this.skinned = skinned;
+        this.mixer = mixer;
+        this.local = skinned.skeleton().newLocalPose();
     }
 
     /** A pool of frames shaped for this model's geometries. */
@@ -29,21 +37,27 @@ final class FrameWriter {
     }
 
     /**
-     * Poses the model at {@code playback} (seconds since the clip's start, brought into the clip as
-     * {@code s.wrapMode()} says), or in its bind pose when {@code s.bindPose()}, and fills
-     * {@code f} as step {@code sequence} under {@code s}.
+     * Poses the model as the mixer says (its base layer at {@code playback} seconds since the
+     * heaviest clip's start), or in its bind pose when {@code s.bindPose()}, and fills {@code f}
+     * as step {@code sequence} under {@code s}. When the mixer plays the model's own clip alone,
+     * the clip's sampler poses it directly (the file's values exactly on keys); otherwise the
+     * mixer's blend.
      */
     void write(Frame f, double playback, AnimationConfig.Settings s, long sequence) {
-        float clipTime = skinned.sampler().clipTime(playback, s.wrapMode());
+        float clipTime = mixer.base().clipTime();
         // A method the shaders cannot skin is skinned here whatever the switch says (SkinningGlsl.hasCode).
         boolean cpuSkinned = s.cpuSkinning() || !SkinningGlsl.hasCode(s.method());
         long t0 = System.nanoTime();
         long meshSkinningNanos = 0;
         if (s.bindPose()) {
             skinned.poseBind();
-        } else {
+        } else if (mixer.soleClip() == skinned.sampler().clip() || mixer.playsNothing()) {
             skinned.pose(clipTime, s.interpolation());
+        } else {
+            mixer.evaluate(s.interpolation(), local);
+            skinned.pose(local);
         }
+        f.setPlacement(mixer.placement(placement));
         for (int g = 0; g < f.geometryCount(); g++) {
             // Dual quaternions and bone rows whatever the method: a split view may draw two methods from one frame.
             f.copyPalette(g, skinned.palette(g).prepareAll());

@@ -3,8 +3,11 @@ package org.skinlab.simulation;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Objects;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.ConcurrentLinkedQueue;
+import java.util.function.Consumer;
 
-import org.skinlab.animation.AnimationSampler;
+import org.skinlab.mixer.Mixer;
 import org.skinlab.model.AnimationClip;
 import org.skinlab.model.Model;
 import org.skinlab.skinning.NormalTransform;
@@ -92,7 +95,9 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
     private final SimulationThread thread;
 
     // Simulation side: touched only inside a step or under SimulationThread.exclusively.
-    private final AnimationSampler sampler;
+    private final Mixer mixer;
+    /** Changes to the mixer from any thread, applied at the start of the next step. */
+    private final ConcurrentLinkedQueue<Direction> directions = new ConcurrentLinkedQueue<>();
     private final FrameWriter writer;
     private final FramePool pool;
     private double playback;
@@ -192,8 +197,11 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
         this.clip = clip;
         this.config = Objects.requireNonNull(config, "config");
         this.skinned = new SkinnedModel(model, clip, Objects.requireNonNull(normals, "normals"));
-        this.sampler = skinned.sampler();
-        this.writer = new FrameWriter(skinned);
+        this.mixer = new Mixer(model, skinned.skeleton());
+        if (clip != null) {
+            mixer.base().play(clip.name());
+        }
+        this.writer = new FrameWriter(skinned, mixer);
         this.pool = writer.newPool(MAX_BUFFERS);
         this.thread = new SimulationThread(describe(), this::advance);
         // Frame 0: the clip's start, so acquire() always has something to give, whatever the
@@ -246,6 +254,28 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
      */
     public double clipDuration() {
         return clip == null ? 0.0 : clip.duration();
+    }
+
+    /**
+     * Directs the character: {@code change} runs on the simulation thread at the start of the next
+     * step (before the clock advances), so no frame shows half a change and the caller never
+     * waits for a step. Changes run in the order given. A change that throws (an unknown clip, a
+     * NaN weight) changes nothing more and completes the returned future with its exception;
+     * the simulation goes on. By hand, {@link #step(double)} applies the changes given so far.
+     *
+     * @param change what to do to the mixer (whose base layer plays the constructor's clip)
+     * @return completes once the change has run, exceptionally when it threw
+     */
+    public CompletableFuture<Void> direct(Consumer<Mixer> change) {
+        Direction d = new Direction(Objects.requireNonNull(change, "change"));
+        directions.add(d);
+        return d.done;
+    }
+
+    private record Direction(Consumer<Mixer> change, CompletableFuture<Void> done) {
+        Direction(Consumer<Mixer> change) {
+            this(change, new CompletableFuture<>());
+        }
     }
 
     // ------------------------------------------------------------------------------- readers
@@ -435,7 +465,9 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
             throw new IllegalArgumentException("seek to " + seconds + " s (need a finite time)");
         }
         thread.exclusively(() -> {
-            playback = sampler.wrapElapsed(seconds, config.settings().wrapMode());
+            mixer.base().setWrapMode(config.settings().wrapMode());
+            mixer.base().setTime(seconds);
+            playback = mixer.base().time();
             playbackTime = playback;
         });
     }
@@ -443,9 +475,19 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
     /** One step (the caller holds the step lock): the clock, then the frame. True when it published one. */
     private boolean advance(double dt) {
         AnimationConfig.Settings s = config.settings();
-        if (s.animationRunning()) {
-            playback = sampler.wrapElapsed(playback + dt * s.speed(), s.wrapMode());
+        for (Direction d = directions.poll(); d != null; d = directions.poll()) {
+            try {
+                d.change.accept(mixer);
+                d.done.complete(null);
+            } catch (RuntimeException e) {
+                d.done.completeExceptionally(e);
+            }
         }
+        mixer.base().setWrapMode(s.wrapMode());
+        if (s.animationRunning()) {
+            mixer.advance(dt * s.speed());
+        }
+        playback = mixer.base().time();
         playbackTime = playback;
         steps++;
         return s.meshUpdatesRunning() && publish(s);

@@ -6,6 +6,7 @@ import java.util.List;
 import java.util.Set;
 
 import org.skinlab.animation.AnimationSampler;
+import org.skinlab.animation.LocalPose;
 import org.skinlab.animation.BindPose;
 import org.skinlab.animation.MorphWeightSampler;
 import org.skinlab.animation.Pose;
@@ -307,6 +308,21 @@ public final class SkinnedModel {
         if (morphSampler.animatesAny()) {
             morphSampler.sample(clipTime, morphWeights);
             morphRestShapes(morphWeights);
+        }
+        fillPalettes();
+    }
+
+    /**
+     * Poses the model in blended local transforms (a {@code org.skinlab.mixer.Mixer}'s result):
+     * evaluates the skeleton from them and fills every palette. Meshes whose morph weights the
+     * clip animates take the file's weights: a blend has no single clip time to sample them at.
+     *
+     * @param local every node's local transform, a local pose of {@link #skeleton()}
+     */
+    public void pose(LocalPose local) {
+        skeleton.evaluate(local, pose);
+        if (morphSampler.animatesAny()) {
+            morphRestShapes(fileMorphWeights);
         }
         fillPalettes();
     }

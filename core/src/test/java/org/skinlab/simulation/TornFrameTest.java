@@ -15,6 +15,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.skinlab.animation.RotationInterpolation;
 import org.skinlab.animation.WrapMode;
+import org.skinlab.mixer.Mixer;
 import org.skinlab.model.Model;
 import org.skinlab.skinning.NormalTransform;
 import org.skinlab.skinning.SkinnedModel;
@@ -64,7 +65,8 @@ class TornFrameTest {
         private final AnimationConfig config;
         private final SkinnedModel skinned = new SkinnedModel(RIBBON, RIBBON.clips().get(0),
                 NormalTransform.INVERSE_TRANSPOSE);
-        private final FrameWriter writer = new FrameWriter(skinned);
+        private final Mixer mixer = new Mixer(RIBBON, skinned.skeleton());
+        private final FrameWriter writer = new FrameWriter(skinned, mixer);
         /** One buffer, published once: readers lease it while the writer keeps filling it. */
         private final FramePool pool = writer.newPool(1);
         private final Frame shared = pool.claim();
@@ -73,6 +75,7 @@ class TornFrameTest {
 
         InPlaceWriter(AnimationConfig config) {
             this.config = config;
+            mixer.base().play(RIBBON.clips().get(0).name());
             writer.write(shared, playback, config.settings(), sequence++);
             pool.publish(shared);
         }
@@ -80,7 +83,9 @@ class TornFrameTest {
         void step() {
             AnimationConfig.Settings s = config.settings();
             if (s.animationRunning()) {
-                playback = skinned.sampler().wrapElapsed(playback + 0.001 * s.speed(), s.wrapMode());
+                mixer.base().setWrapMode(s.wrapMode());
+                mixer.advance(0.001 * s.speed());
+                playback = mixer.base().time();
             }
             writer.write(shared, playback, s, sequence++);
         }
