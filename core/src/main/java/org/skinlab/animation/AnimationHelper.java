@@ -20,8 +20,11 @@ import org.skinlab.model.TransformElement;
 public final class AnimationHelper {
     /** Squared column-length deviation below which a matrix counts as unscaled (as Blender). */
     static final float SCALE_EPSILON_SQ = 1e-8f;
-    /** |cos| of the angle between two rotations above which {@link #slerp} falls back to {@link #nlerp}. */
-    static final double SLERP_NLERP_THRESHOLD = 0.9999999;
+    /**
+     * The |cos| of the angle between two rotations above which {@link #slerp} falls back to
+     * {@link #nlerp}: the sine of so small an angle (about 0.05 degrees) has lost its precision.
+     */
+    public static final double SLERP_NLERP_THRESHOLD = 0.9999999;
 
     private AnimationHelper() {
     }

@@ -85,12 +85,17 @@ public final class AnimationSampler {
             boolean matrix = kind == TransformElement.Kind.MATRIX && c.valueOffset() == 0 && c.valueCount() == 16;
             boolean quaternion = kind == TransformElement.Kind.QUATERNION && c.valueOffset() == 0
                     && c.valueCount() == 4;
-            // A whole matrix that is its node's only transform and only channel goes to T, R, S directly.
-            boolean local = matrix && channelsPerNode[c.node()] == 1 && skeleton.node(c.node()).transforms().size() == 1;
+            // A whole matrix that is its node's only transform and only channel goes to T, R, S directly,
+            // and so does a whole translation, rotation or scale of a glTF stack.
+            boolean localMatrix = matrix && channelsPerNode[c.node()] == 1
+                    && skeleton.node(c.node()).transforms().size() == 1;
+            int part = !skeleton.isTrsStack(c.node()) || c.valueOffset() != 0 || c.valueCount() != kind.size() ? -1
+                    : kind == TransformElement.Kind.TRANSLATE ? 0 : kind == TransformElement.Kind.QUATERNION ? 3 : 7;
+            int localSlot = localMatrix || part >= 0 ? LocalPose.STRIDE * c.node() + Math.max(part, 0) : -1;
             channels[i] = new Channel(slot, c.track(), sharedTimes(c.track().times(), timelines), matrix,
-                    quaternion, local ? c.node() : -1);
+                    quaternion, localSlot);
             animated[c.node()] = true;
-            byValues[c.node()] |= !local;
+            byValues[c.node()] |= localSlot < 0;
         }
         int count = 0;
         for (boolean b : byValues) {
@@ -245,7 +250,7 @@ public final class AnimationSampler {
                 searched = c.times;
                 k = segment(searched, time);
             }
-            c.sample(k, time, rotations, values, pose);
+            c.sample(k, time, rotations, values, c.slot, pose);
         }
     }
 
@@ -277,12 +282,14 @@ public final class AnimationSampler {
                 searched = c.times;
                 k = segment(searched, time);
             }
-            if (c.node < 0) {
-                c.sample(k, time, rotations, v, values);
+            if (c.localSlot < 0) {
+                c.sample(k, time, rotations, v, c.slot, values);
+            } else if (!c.isMatrix()) {
+                c.sample(k, time, rotations, trs, c.localSlot, values);
             } else if (!c.sampleLocal(k, time, rotations, trs, values)) {
                 // A BEZIER/HERMITE matrix segment: per value, then split.
-                c.sample(k, time, rotations, v, values);
-                skeleton.toLocal(c.node, v, values.local, values.scratch, values.q1, trs);
+                c.sample(k, time, rotations, v, c.slot, values);
+                skeleton.toLocal(c.localSlot / LocalPose.STRIDE, v, values.local, values.scratch, values.q1, trs);
             }
         }
         for (int node : valueNodes) {
@@ -320,7 +327,8 @@ public final class AnimationSampler {
      * {@link MorphWeightSampler} samples weights with (neither matrix nor quaternion, so no pose).
      */
     static final class Channel {
-        private final int slot;
+        /** Where the channel's values go in a pose's value array. */
+        final int slot;
         private final int width;
         /** Key times, the same array for every channel with the same times (see sharedTimes). */
         final float[] times;
@@ -331,7 +339,7 @@ public final class AnimationSampler {
         /** Per key translation (3), rotation (4), scale (3), or null when not a whole matrix. */
         private final float[] trs;
         /**
-         * Per segment of a whole-matrix channel, what {@link AnimationHelper#slerp} derives from
+         * Per segment of a whole-matrix or rotation quaternion channel, what {@link AnimationHelper#slerp} derives from
          * the two keys alone: the angle between them (NaN where slerp falls back to nlerp) and its
          * sine, negated when the keys lie in opposite hemispheres (the shortest arc). Computed
          * once here, the per-frame slerp is two sines instead of an arc cosine and three sines,
@@ -341,15 +349,19 @@ public final class AnimationSampler {
         private final double[] slerpSines;
         /** Whether the channel drives a whole rotation quaternion (x y z w). */
         private final boolean quaternion;
-        /** The node whose T, R, S {@link #sampleLocal} writes directly, or -1. */
-        final int node;
+        /**
+         * Where {@link AnimationSampler#sampleLocal} writes the channel straight into a
+         * {@link LocalPose}'s array (a whole matrix: its node's 10 floats; a glTF translation, rotation
+         * or scale: its part of them), or -1 when it goes through the transform values.
+         */
+        final int localSlot;
 
         Channel(int slot, KeyframeTrack track, float[] times, boolean matrix, boolean quaternion) {
             this(slot, track, times, matrix, quaternion, -1);
         }
 
-        Channel(int slot, KeyframeTrack track, float[] times, boolean matrix, boolean quaternion, int node) {
-            this.node = node;
+        Channel(int slot, KeyframeTrack track, float[] times, boolean matrix, boolean quaternion, int localSlot) {
+            this.localSlot = localSlot;
             this.slot = slot;
             this.width = track.width();
             this.times = times;
@@ -363,13 +375,16 @@ public final class AnimationSampler {
             this.out = track.outTangents();
             this.quaternion = quaternion;
             this.trs = matrix ? decomposeKeys(values, keys) : null;
-            this.slerpAngles = matrix ? new double[keys] : null;
-            this.slerpSines = matrix ? new double[keys] : null;
-            for (int k = 0; matrix && k + 1 < keys; k++) {
-                int a = 10 * k + 3;
-                int b = a + 10;
-                double dot = (double) trs[a] * trs[b] + (double) trs[a + 1] * trs[b + 1]
-                        + (double) trs[a + 2] * trs[b + 2] + (double) trs[a + 3] * trs[b + 3];
+            boolean rotations = matrix || quaternion;
+            this.slerpAngles = rotations ? new double[keys] : null;
+            this.slerpSines = rotations ? new double[keys] : null;
+            float[] q = matrix ? trs : values;
+            int stride = matrix ? 10 : 4;
+            for (int k = 0; rotations && k + 1 < keys; k++) {
+                int a = stride * k + (matrix ? 3 : 0);
+                int b = a + stride;
+                double dot = (double) q[a] * q[b] + (double) q[a + 1] * q[b + 1]
+                        + (double) q[a + 2] * q[b + 2] + (double) q[a + 3] * q[b + 3];
                 double cos = Math.min(1.0, Math.abs(dot));
                 if (cos > AnimationHelper.SLERP_NLERP_THRESHOLD) {
                     slerpAngles[k] = Double.NaN;
@@ -406,8 +421,15 @@ public final class AnimationSampler {
             return trs;
         }
 
-        /** Writes this channel's value at {@code time}, which lies in segment {@code k} of its keys. */
-        void sample(int k, float time, RotationInterpolation rotations, float[] dest, Pose pose) {
+        boolean isMatrix() {
+            return trs != null;
+        }
+
+        /**
+         * Writes this channel's value at {@code time}, which lies in segment {@code k} of its keys,
+         * into {@code dest} from {@code slot} on.
+         */
+        void sample(int k, float time, RotationInterpolation rotations, float[] dest, int slot, Pose pose) {
             // pose: scratch for matrices and quaternions only (null for morph weights)
             int keys = times.length;
             if (keys == 0) {
@@ -424,7 +446,16 @@ public final class AnimationSampler {
             if (how == Interpolation.LINEAR) {
                 float u = t1 > t0 ? (time - t0) / (t1 - t0) : 1f;
                 if (trs != null) {
-                    blendMatrix(k, u, rotations, dest, pose);
+                    blendMatrix(k, u, rotations, dest, slot, pose);
+                } else if (quaternion && rotations == RotationInterpolation.SLERP && !Double.isNaN(slerpAngles[k])) {
+                    // AnimationHelper.slerp with the constants of this pair of keys (see slerpAngles).
+                    double angle = slerpAngles[k];
+                    double wa = Math.sin((1 - u) * angle) / Math.abs(slerpSines[k]);
+                    double wb = Math.sin(u * angle) / slerpSines[k];
+                    int a = 4 * k;
+                    for (int c = 0; c < 4; c++) {
+                        dest[slot + c] = (float) (wa * values[a + c] + wb * values[a + 4 + c]);
+                    }
                 } else if (quaternion) {
                     int a = 4 * k;
                     Quaternionf q = AnimationHelper.interpolate(rotations,
@@ -466,7 +497,7 @@ public final class AnimationSampler {
             if (keys == 0) {
                 return true;
             }
-            int o = LocalPose.STRIDE * node;
+            int o = localSlot;
             Interpolation how = interpolations[k];
             if (k == keys - 1 || time <= times[k] || how == Interpolation.STEP) {
                 System.arraycopy(this.trs, 10 * k, trs, o, 10);
@@ -514,7 +545,7 @@ public final class AnimationSampler {
             }
         }
 
-        private void blendMatrix(int k, float u, RotationInterpolation rotations, float[] dest, Pose pose) {
+        private void blendMatrix(int k, float u, RotationInterpolation rotations, float[] dest, int slot, Pose pose) {
             int a = 10 * k;
             int b = a + 10;
             float qx;

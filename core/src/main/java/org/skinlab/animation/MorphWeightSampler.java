@@ -109,7 +109,7 @@ public final class MorphWeightSampler {
                 searched = c.times;
                 k = AnimationSampler.segment(searched, time);
             }
-            c.sample(k, time, RotationInterpolation.SLERP, weights[instanceOfChannel[i]], null);
+            c.sample(k, time, RotationInterpolation.SLERP, weights[instanceOfChannel[i]], c.slot, null);
         }
     }
 }

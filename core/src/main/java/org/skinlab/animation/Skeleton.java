@@ -86,7 +86,7 @@ public final class Skeleton {
         for (int i = 0; i < n; i++) {
             singleMatrix[i] = elementStart[i + 1] - elementStart[i] == 1
                     && kinds[elementStart[i]] == TransformElement.Kind.MATRIX;
-            trsStack[i] = isTrsStack(elementStart[i], elementStart[i + 1]);
+            trsStack[i] = inTrsOrder(elementStart[i], elementStart[i + 1]);
         }
         restLocal = new float[LocalPose.STRIDE * n];
         Matrix4f m = new Matrix4f();
@@ -97,7 +97,12 @@ public final class Skeleton {
         }
     }
 
-    private boolean isTrsStack(int from, int to) {
+    /** Whether node {@code node}'s stack is glTF's translation, rotation, scale (each at most once, in order). */
+    boolean isTrsStack(int node) {
+        return trsStack[node];
+    }
+
+    private boolean inTrsOrder(int from, int to) {
         int last = -1;
         for (int e = from; e < to; e++) {
             int rank = kinds[e] == TransformElement.Kind.TRANSLATE ? 0
