@@ -24,7 +24,8 @@ import org.skinlab.skinning.SkinningMethod;
  * in three parts timed apart on one thread: the mixer ({@link Mixer#advance} by 1/60 s, then
  * {@link Mixer#evaluate}: every layer's clips sampled into local translation, rotation and scale
  * and blended), the pose ({@link SkinnedModel#pose(LocalPose)}: the skeleton's world matrices and
- * the joint palette) and the skin (every mesh, positions and normals). Warm-up until the JIT has
+ * the joint palette's matrices) and the skin (the palette's preparation for the method, e.g. DQS's
+ * dual quaternions, then every mesh, positions and normals). Warm-up until the JIT has
  * compiled the frame ({@link Warmup}), then {@link #RUNS} runs, each giving the median step of
  * its window; then, untimed, the bytes the thread allocates per step, the mixer alone and the
  * whole frame.
