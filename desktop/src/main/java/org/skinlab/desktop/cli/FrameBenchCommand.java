@@ -86,12 +86,13 @@ public final class FrameBenchCommand implements Callable<Integer> {
     String normals = "exact";
 
     @Option(names = "--warmup-seconds", paramLabel = "S",
-            description = "warm-up per file and method (default: 2 for one file and method, else 0.5, and 2 for"
+            description = "warm-up per file and method (default: 2 for one file and method or --blend, else 0.5, and 2 for"
                     + " each method's first file)")
     Double warmupSeconds;
 
     @Option(names = "--seconds", paramLabel = "S",
-            description = "timed frames per file and method, at least 5 (default: 3 for one file and method, else 1)")
+            description = "timed frames per file and method, at least 5 (default: 3 for one file and method or"
+                    + " --blend, else 1)")
     Double seconds;
 
     @Option(names = "--share-positions", paramLabel = "auto|always|never",
