@@ -33,6 +33,7 @@ import org.skinlab.skinning.SkinnedModel;
 import org.skinlab.skinning.SkinningMethod;
 
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
@@ -49,11 +50,14 @@ import picocli.CommandLine.Model.CommandSpec;
  * a method's first file still warms up for 2 s, while the JIT compiles its kernels), so that
  * {@code --all-corpus} stays under a minute. {@code --json} prints one line per file
  * and method. A file that cannot be imported is one line on stderr; the others are measured, and
- * the status is then 3.
+ * the status is then 3. With {@code --blend} (one file) a mixer directs the frame
+ * ({@link BlendFrameBench}): the mixer's step is timed apart from the pose and the skinning.
  */
 @Command(name = "frame", mixinStandardHelpOptions = true,
         description = {"Time of one frame (sample, skinning matrices, skin) of characters, in microseconds.",
-            "One file and method: two lines; several files or --method both|all: a markdown table, one row per file."})
+            "One file and method: two lines; several files or --method both|all: a markdown table, one row per file.",
+            "With --blend (one file): the frame a mixer directs; the mixer's step (advance, sample every clip, blend)"
+                    + " apart from pose and skin, in ns per joint per layer, and the bytes allocated per step."})
 public final class FrameBenchCommand implements Callable<Integer> {
     static final Path DEFAULT_FILE = Path.of("assets/characters/humanoid-walk.dae");
     private static final double FIRST_WARMUP = 2.0;
@@ -82,12 +86,13 @@ public final class FrameBenchCommand implements Callable<Integer> {
     String normals = "exact";
 
     @Option(names = "--warmup-seconds", paramLabel = "S",
-            description = "warm-up per file and method (default: 2 for one file and method, else 0.5, and 2 for"
+            description = "warm-up per file and method (default: 2 for one file and method or --blend, else 0.5, and 2 for"
                     + " each method's first file)")
     Double warmupSeconds;
 
     @Option(names = "--seconds", paramLabel = "S",
-            description = "timed frames per file and method, at least 5 (default: 3 for one file and method, else 1)")
+            description = "timed frames per file and method, at least 5 (default: 3 for one file and method or"
+                    + " --blend, else 1)")
     Double seconds;
 
     @Option(names = "--share-positions", paramLabel = "auto|always|never",
@@ -101,6 +106,9 @@ public final class FrameBenchCommand implements Callable<Integer> {
 
     @Option(names = "--json", description = "print one line of JSON per file and method")
     boolean json;
+
+    @Mixin
+    BlendOptions blendOptions;
 
     @Spec
     CommandSpec spec;
@@ -121,6 +129,7 @@ public final class FrameBenchCommand implements Callable<Integer> {
         } catch (IllegalArgumentException e) {
             throw usage("--share-positions: " + e.getMessage());
         }
+        BlendSpec blend = blendOptions.spec("bench frame");
         List<Input> inputs = inputs();
         List<SkinningMethod> methods = parseMethods(inputs.size());
         for (SkinningMethod m : methods) {
@@ -131,6 +140,16 @@ public final class FrameBenchCommand implements Callable<Integer> {
         boolean single = inputs.size() == 1 && methods.size() == 1;
         double warmup = secondsOption("--warmup-seconds", warmupSeconds, single ? FIRST_WARMUP : 0.5);
         double timed = secondsOption("--seconds", seconds, single ? 3.0 : 1.0);
+        if (blend != null) {
+            if (inputs.size() != 1 || allCorpus || paletteOnly) {
+                throw usage("--blend measures one file (the clips are its own), without --all-corpus or"
+                        + " --palette-only");
+            }
+            // One file: every method warms up and times as a single file and method does.
+            return new BlendFrameBench(inputs.get(0).path(), blend, rule, normals.toLowerCase(Locale.ROOT), sharing,
+                    json).run(methods, secondsOption("--warmup-seconds", warmupSeconds, FIRST_WARMUP),
+                    secondsOption("--seconds", seconds, 3.0), spec.commandLine().getOut(), spec.commandLine().getErr());
+        }
         // The JIT compiles a method's kernels during its first file's warm-up (the Vector API is
         // slow until it has: milliseconds per frame); later files only need their own shapes.
         Set<SkinningMethod> warmed = EnumSet.noneOf(SkinningMethod.class);

@@ -32,7 +32,7 @@ class PoseCommandTest {
      * Z, so a local point (x, y, z) lands at (1 - y, 2 + x, 3 + z). A channel moves the translate's
      * X from 1 at t=1 s to 3 at t=2 s (LINEAR), clip "slide" over [1, 2]. The geometry has no name.
      */
-    private static final String STATIC_ANIMATED = """
+    static final String STATIC_ANIMATED = """
             <?xml version="1.0" encoding="utf-8"?>
             <COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">
               <library_geometries>
