@@ -283,12 +283,12 @@ public final class AnimationSampler {
                 k = segment(searched, time);
             }
             if (c.localSlot < 0) {
-                c.sample(k, time, rotations, v, c.slot, values);
+                c.sample(k, time, rotations, v, c.slot, values, true);
             } else if (!c.isMatrix()) {
-                c.sample(k, time, rotations, trs, c.localSlot, values);
+                c.sample(k, time, rotations, trs, c.localSlot, values, true);
             } else if (!c.sampleLocal(k, time, rotations, trs, values)) {
                 // A BEZIER/HERMITE matrix segment: per value, then split.
-                c.sample(k, time, rotations, v, c.slot, values);
+                c.sample(k, time, rotations, v, c.slot, values, true);
                 skeleton.toLocal(c.localSlot / LocalPose.STRIDE, v, values.local, values.scratch, values.q1, trs);
             }
         }
@@ -430,6 +430,16 @@ public final class AnimationSampler {
          * into {@code dest} from {@code slot} on.
          */
         void sample(int k, float time, RotationInterpolation rotations, float[] dest, int slot, Pose pose) {
+            sample(k, time, rotations, dest, slot, pose, false);
+        }
+
+        /**
+         * As above; {@code fast}: slerps take their sines from {@link AnimationHelper#sinFast} (the
+         * blend path, where they are most of the cost) rather than {@code Math.sin} (the one-clip
+         * path, which keeps {@link AnimationHelper#slerp}'s floats exactly).
+         */
+        void sample(int k, float time, RotationInterpolation rotations, float[] dest, int slot, Pose pose,
+                boolean fast) {
             // pose: scratch for matrices and quaternions only (null for morph weights)
             int keys = times.length;
             if (keys == 0) {
@@ -446,12 +456,12 @@ public final class AnimationSampler {
             if (how == Interpolation.LINEAR) {
                 float u = t1 > t0 ? (time - t0) / (t1 - t0) : 1f;
                 if (trs != null) {
-                    blendMatrix(k, u, rotations, dest, slot, pose);
+                    blendMatrix(k, u, rotations, dest, slot, pose, fast);
                 } else if (quaternion && rotations == RotationInterpolation.SLERP && !Double.isNaN(slerpAngles[k])) {
                     // AnimationHelper.slerp with the constants of this pair of keys (see slerpAngles).
                     double angle = slerpAngles[k];
-                    double wa = Math.sin((1 - u) * angle) / Math.abs(slerpSines[k]);
-                    double wb = Math.sin(u * angle) / slerpSines[k];
+                    double wa = sine((1 - u) * angle, fast) / Math.abs(slerpSines[k]);
+                    double wb = sine(u * angle, fast) / slerpSines[k];
                     int a = 4 * k;
                     for (int c = 0; c < 4; c++) {
                         dest[slot + c] = (float) (wa * values[a + c] + wb * values[a + 4 + c]);
@@ -513,8 +523,8 @@ public final class AnimationSampler {
             int b = a + 10;
             double angle = slerpAngles[k];
             if (rotations == RotationInterpolation.SLERP && !Double.isNaN(angle)) {
-                double wa = Math.sin((1 - u) * angle) / Math.abs(slerpSines[k]);
-                double wb = Math.sin(u * angle) / slerpSines[k];
+                double wa = AnimationHelper.sinFast((1 - u) * angle) / Math.abs(slerpSines[k]);
+                double wb = AnimationHelper.sinFast(u * angle) / slerpSines[k];
                 for (int c = 3; c < 7; c++) {
                     trs[o + c] = (float) (wa * this.trs[a + c] + wb * this.trs[b + c]);
                 }
@@ -545,7 +555,12 @@ public final class AnimationSampler {
             }
         }
 
-        private void blendMatrix(int k, float u, RotationInterpolation rotations, float[] dest, int slot, Pose pose) {
+        private static double sine(double x, boolean fast) {
+            return fast ? AnimationHelper.sinFast(x) : Math.sin(x);
+        }
+
+        private void blendMatrix(int k, float u, RotationInterpolation rotations, float[] dest, int slot, Pose pose,
+                boolean fast) {
             int a = 10 * k;
             int b = a + 10;
             float qx;
@@ -555,8 +570,8 @@ public final class AnimationSampler {
             double angle = slerpAngles[k];
             if (rotations == RotationInterpolation.SLERP && !Double.isNaN(angle)) {
                 // AnimationHelper.slerp with the constants of this pair of keys (see slerpAngles).
-                double wa = Math.sin((1 - u) * angle) / Math.abs(slerpSines[k]);
-                double wb = Math.sin(u * angle) / slerpSines[k];
+                double wa = sine((1 - u) * angle, fast) / Math.abs(slerpSines[k]);
+                double wb = sine(u * angle, fast) / slerpSines[k];
                 qx = (float) (wa * trs[a + 3] + wb * trs[b + 3]);
                 qy = (float) (wa * trs[a + 4] + wb * trs[b + 4]);
                 qz = (float) (wa * trs[a + 5] + wb * trs[b + 5]);

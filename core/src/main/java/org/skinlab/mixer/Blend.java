@@ -8,11 +8,9 @@ import org.skinlab.animation.AnimationHelper;
  * {@link org.skinlab.animation.LocalPose}'s layout. Holds scratch quaternions: one per thread.
  *
  * <p>Rotations are slerped along the shorter arc as {@link AnimationHelper#slerp} does (the same
- * nlerp below its threshold), but with polynomials for the arc cosine and the sines: the blend
- * runs once per node per clip per step, and {@code Math.acos} with three {@code Math.sin} cost
- * more than all the rest of it. Abramowitz and Stegun 4.4.46 gives acos on [0, 1] within 2e-8
- * rad; the sine's Taylor series to x^13 is within 1e-9 on [0, pi/2], where every angle of a
- * shortest-arc slerp lies. Both are far below a float's resolution of a unit quaternion.
+ * nlerp below its threshold), but with {@link AnimationHelper#acosFast} and
+ * {@link AnimationHelper#sinFast}: the blend runs once per node per clip per step, and
+ * {@code Math.acos} with three {@code Math.sin} cost more than all the rest of it.
  */
 final class Blend {
     private final Quaternionf q1 = new Quaternionf();
@@ -48,10 +46,10 @@ final class Blend {
             wa = 1 - u;
             wb = sign * u;
         } else {
-            double angle = acos(cos);
-            double sin = sin(angle);
-            wa = sin((1 - u) * angle) / sin;
-            wb = sign * sin(u * angle) / sin;
+            double angle = AnimationHelper.acosFast(cos);
+            double sin = AnimationHelper.sinFast(angle);
+            wa = AnimationHelper.sinFast((1 - u) * angle) / sin;
+            wb = sign * AnimationHelper.sinFast(u * angle) / sin;
         }
         double x = wa * ax + wb * bx;
         double y = wa * ay + wb * by;
@@ -68,32 +66,6 @@ final class Blend {
         dest[o + 1] = (float) y;
         dest[o + 2] = (float) z;
         dest[o + 3] = (float) w;
-    }
-
-    /** acos(x) for x in [0, 1] (Abramowitz and Stegun 4.4.46, within 2e-8). */
-    static double acos(double x) {
-        double p = -0.0012624911;
-        p = p * x + 0.0066700901;
-        p = p * x - 0.0170881256;
-        p = p * x + 0.0308918810;
-        p = p * x - 0.0501743046;
-        p = p * x + 0.0889789874;
-        p = p * x - 0.2145988016;
-        p = p * x + 1.5707963050;
-        return Math.sqrt(1 - x) * p;
-    }
-
-    /** sin(x) for x in [0, pi/2] (Taylor series to x^13, within 1e-9). */
-    static double sin(double x) {
-        double x2 = x * x;
-        double p = 1.0 / 6227020800.0;
-        p = p * x2 - 1.0 / 39916800.0;
-        p = p * x2 + 1.0 / 362880.0;
-        p = p * x2 - 1.0 / 5040.0;
-        p = p * x2 + 1.0 / 120.0;
-        p = p * x2 - 1.0 / 6.0;
-        p = p * x2 + 1.0;
-        return x * p;
     }
 
     /**
