@@ -85,10 +85,7 @@ public final class MixerControl {
         return s == null ? CompletableFuture.completedFuture(null) : s.mesh.direct(s::crossFadeToNext);
     }
 
-    public boolean rootMotion() {
-        return rootMotion;
-    }
-
+    /** The root motion button's label: the switch's state. */
     public String rootMotionLabel() {
         return rootMotion ? "Root motion: on" : "Root motion: off";
     }
