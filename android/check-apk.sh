@@ -34,13 +34,14 @@ trap 'rm -rf "$work"' EXIT
 unzip -q -o "$apk" 'classes*.dex' -d "$work"
 classes=$(for d in "$work"/classes*.dex; do dexdump "$d"; done | grep 'Class descriptor' | sed "s/.*'\(.*\)'.*/\1/")
 for c in Lorg/skinlab/android/SkinlabActivity\; Lorg/skinlab/android/ArRenderer\; Lorg/skinlab/android/CameraSource\; \
-    Lorg/skinlab/simulation/SkeletalAnimatedMesh\; Lorg/skinlab/ar/ArSession\; \
+    Lorg/skinlab/simulation/SkeletalAnimatedMesh\; Lorg/skinlab/ar/ArSession\; Lorg/skinlab/mixer/Mixer\; \
+    Lorg/skinlab/android/logic/MixerControl\; Lorg/skinlab/android/logic/MarkerSteering\; \
     Lboofcv/alg/fiducial/square/DetectFiducialSquareHamming\; Lboofcv/alg/fiducial/square/QuadPoseEstimator\;; do
   grep -qxF "$c" <<<"$classes" || fail "dex lacks $c"
 done
 # R8 inlines and merges classes, so the importer is checked by package (its readers survive).
 grep -q '^Lorg/skinlab/collada/' <<<"$classes" || fail "dex lacks core's COLLADA importer (org.skinlab.collada)"
-echo "check-apk: dex: $(wc -l <<<"$classes") classes; the Activity, renderer, camera, core's importer, simulation and AR session, BoofCV's detector and pose estimator present"
+echo "check-apk: dex: $(wc -l <<<"$classes") classes; the Activity, renderer, camera, the mixer and its buttons' steering, core's importer, simulation and AR session, BoofCV's detector and pose estimator present"
 
 listing=$(unzip -l "$apk")
 grep -q 'boofcv/factory/fiducial/aruco_mip_36h12.txt' <<<"$listing" || fail "BoofCV's dictionary resources missing"
@@ -49,6 +50,7 @@ grep -q ' org/skinlab/ar/lens.glsl$' <<<"$listing" || fail "the background shade
 grep -q ' org/skinlab/internal/scene/material.glsl$' <<<"$listing" || fail "the model shader's material formulas (core's material.glsl) missing"
 grep -q 'assets/models/humanoid-walk.dae' <<<"$listing" || fail "the default model is not bundled"
 grep -q 'assets/models/humanoid-walk.glb' <<<"$listing" || fail "the default model's .glb twin is not bundled"
+grep -q 'assets/models/humanoid-moves.glb' <<<"$listing" || fail "the five-clip humanoid (the mixer's buttons) is not bundled"
 grep -q '^Lorg/skinlab/gltf/' <<<"$classes" || fail "dex lacks core's glTF importer (org.skinlab.gltf)"
 size=$(stat -c %s "$apk")
 echo "check-apk: size $size bytes ($(( size / 1024 )) KiB; budget $(( budget / 1024 )) KiB)"

@@ -19,7 +19,8 @@ import org.skinlab.android.logic.PermissionFlow;
 
 /**
  * The views over the camera picture: the status line at the top, a button per user function at
- * the bottom ({@link AppActions}, labelled by the action's current state), and the camera
+ * the bottom ({@link AppActions}, labelled by the action's current state, greyed out while it
+ * cannot act), and the camera
  * permission's explanation with its retry button over everything; the status line and the
  * buttons kept clear of the system bars. UI thread only.
  */
@@ -51,6 +52,7 @@ final class ArControls {
             Button b = new Button(context);
             b.setAllCaps(false);
             b.setText(a.label().get());
+            b.setEnabled(a.enabled().getAsBoolean());
             b.setOnClickListener(v -> {
                 a.run().run();
                 b.setText(a.label().get());
@@ -87,11 +89,12 @@ final class ArControls {
         });
     }
 
-    /** The status line's text, and each button's label as its action now reads. */
+    /** The status line's text, and each button's label and whether it can be tapped, as its action now reads. */
     void refresh(CharSequence statusLine) {
         status.setText(statusLine);
         for (int i = 0; i < buttons.size(); i++) {
             buttons.get(i).setText(actions.get(i).label().get());
+            buttons.get(i).setEnabled(actions.get(i).enabled().getAsBoolean());
         }
     }
 

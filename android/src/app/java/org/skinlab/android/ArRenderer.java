@@ -39,8 +39,8 @@ import org.skinlab.simulation.SkeletalAnimatedMesh;
  * Draws one AR frame on the GL thread: the camera image (the preview's SurfaceTexture) across the
  * view, turned to the display as the projection is ({@link PreviewOrientation}), and the skinned model on the marker with the pose the tracking
  * thread published last ({@link ArSession#current()}); the joint palette of the simulation's latest
- * frame is skinned in the vertex shader. Everything it reads from other threads is one volatile
- * reference each (the session, the mesh, the intrinsics): a frame never mixes two of them.
+ * frame is skinned in the vertex shader, moved by the frame's root motion placement. Everything it
+ * reads from other threads is one volatile reference each (the session, the mesh, the intrinsics): a frame never mixes two of them.
  */
 final class ArRenderer implements GLSurfaceView.Renderer {
     private final AnimationConfig config;
@@ -52,6 +52,7 @@ final class ArRenderer implements GLSurfaceView.Renderer {
     private final Matrix4f imageToViewport = new Matrix4f();
     private final Matrix4f markerView = new Matrix4f();
     private final Matrix4f model = new Matrix4f();
+    private final Matrix4f placement = new Matrix4f();
     private final Matrix4f modelView = new Matrix4f();
     private final float[] matrix = new float[16];
     private final float[] textureTransform = new float[16];
@@ -233,6 +234,8 @@ final class ArRenderer implements GLSurfaceView.Renderer {
                 upload(shown, frame);
             }
             scene.place(pose, follow, config.isFollowCamera(), framing, markerView, model);
+            // Root motion walks the model across the marker: its placement, in the model's space.
+            model.mul(frame.placement(placement));
             markerView.mul(model, modelView);
             ArCamera.projection(k, 0.01f, 20f, width, height, imageRotation, false, projection);
             modelDraw.draw(models, frame, projection, modelView);

@@ -26,6 +26,7 @@ import org.skinlab.android.logic.AppActions;
 import org.skinlab.android.logic.DrawnCopies;
 import org.skinlab.android.logic.MarkerSize;
 import org.skinlab.android.logic.MeasureProtocol;
+import org.skinlab.android.logic.MixerControl;
 import org.skinlab.android.logic.ModelLoader;
 import org.skinlab.android.logic.ModelCatalog;
 import org.skinlab.android.logic.PermissionFlow;
@@ -43,8 +44,9 @@ import org.skinlab.skinning.CentresOfRotation;
 /**
  * The AR app's one Activity: the camera image with the animated character standing on the printed
  * marker (docs/marker: ArUco MIP_36h12 id 0, 100 mm by default; a button steps through other
- * printed sizes), a status line, and a button for every user function of the thesis
- * ({@link AppActions}; the views are {@link ArControls}), and "Measure" ({@link MeasureControl}): the bundled models timed on this
+ * printed sizes), a status line, a button for every user function of the thesis
+ * ({@link AppActions}; the views are {@link ArControls}), the mixer's cross-fade and root motion
+ * ({@link MixerControl}), and "Measure" ({@link MeasureControl}): the bundled models timed on this
  * phone into {@code results-android.json}. The launch intent's extra {@value MeasureProtocol#EXTRA}
  * = "quick" makes that a quick measurement (seconds; not figures to quote).
  *
@@ -69,6 +71,8 @@ public final class SkinlabActivity extends Activity {
     private MeasureControl measure;
     /** The printed marker's size (docs/marker's 100 mm unless the user taps another). */
     private final MarkerSize markerSize = new MarkerSize(metres -> ui.post(this::onMarkerSize));
+    /** The shown model's clips: the cross-fade and root motion buttons, the steering on the marker. */
+    private final MixerControl mixer = new MixerControl(() -> new MarkerScene(markerSize.metres()));
     private PermissionFlow permission;
     private ModelCatalog catalog;
     private GLSurfaceView glView;
@@ -84,7 +88,8 @@ public final class SkinlabActivity extends Activity {
     private CameraIntrinsics intrinsics;
     private int sensorOrientation = 90;
     private volatile ArSession session;
-    private volatile SkeletalAnimatedMesh mesh;
+    /** The shown model's simulation; package-private: the tests direct its mixer and read its frames. */
+    volatile SkeletalAnimatedMesh mesh;
     /** What the camera or tracking last reported ("" when it works); kept apart from the model's. */
     private volatile String cameraProblem = "";
     private volatile boolean resumed;
@@ -94,7 +99,8 @@ public final class SkinlabActivity extends Activity {
         public void run() {
             ArSession s = session;
             String model = models.loading() ? catalog.current() + " (loading)" : catalog.current();
-            String line = StatusLine.format(renderer.fps(), s == null ? null : s.current(), config.settings(), model);
+            String line = StatusLine.format(renderer.fps(), s == null ? null : s.current(), config.settings(),
+                    mixer.status(), model);
             String gl = renderer.problem();
             String[] measured = measure.statusLines();
             controls.refresh(StatusLine.withProblems(line, gl == null ? "" : "OpenGL ES: " + gl, cameraProblem,
@@ -137,7 +143,7 @@ public final class SkinlabActivity extends Activity {
         renderer = new ArRenderer(config, texture -> ui.post(() -> onSurfaceReady(texture)), drawnCopies);
         glView.setRenderer(renderer);
         glView.setRenderMode(GLSurfaceView.RENDERMODE_CONTINUOUSLY);
-        List<AppActions.Action> actions = AppActions.of(config, this::nextModel, markerSize, measure);
+        List<AppActions.Action> actions = AppActions.of(config, this::nextModel, mixer, markerSize, measure);
         controls = new ArControls(this, glView, actions, () -> {
             if (permission.onRetry()) {
                 requestCamera();
@@ -412,6 +418,7 @@ public final class SkinlabActivity extends Activity {
         }
         SkeletalAnimatedMesh old = mesh;
         mesh = next;
+        mixer.show(next);
         renderer.setModel(model);
         if (resumed && !measure.holding()) {
             next.start();

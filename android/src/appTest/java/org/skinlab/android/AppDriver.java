@@ -240,6 +240,21 @@ final class AppDriver {
         return null;
     }
 
+    /** Waits until a button's label starts with {@code label} (labels follow the app's state at each refresh); returns it. */
+    Button awaitButton(String label) {
+        Button[] found = {null};
+        await("a button \"" + label + "\"", () -> {
+            for (Button b : views(Button.class)) {
+                if (b.getText().toString().startsWith(label)) {
+                    found[0] = b;
+                    return true;
+                }
+            }
+            return false;
+        });
+        return found[0];
+    }
+
     /** Taps the button whose label starts with {@code label}, as a user does. */
     void tap(String label) {
         assertTrue(label + " tappable", button(label).performClick());

@@ -7,10 +7,13 @@ import java.util.List;
 import java.util.stream.Collectors;
 import java.util.stream.Stream;
 
+import org.joml.Matrix4f;
+import org.joml.Vector3f;
 import org.skinlab.ar.ArSession;
 import org.skinlab.ar.CameraIntrinsics;
 import org.skinlab.ar.FiducialTracker;
 import org.skinlab.ar.GrayImage;
+import org.skinlab.ar.MarkerScene;
 import org.skinlab.ar.MarkerDictionary;
 import org.skinlab.ar.MarkerPattern;
 import org.skinlab.ar.TrackerConfig;
@@ -29,8 +32,9 @@ import org.skinlab.skinning.CentresOfRotation;
 import org.skinlab.skinning.SkinningMethod;
 
 /**
- * Runs the app's core paths (import, simulation, CoR's centres and their cache, the skinning
- * shader's text with core's formulas, marker tracking, the measurement and its file) on a desktop JVM after R8 has shrunk them
+ * Runs the app's core paths (import, simulation, CoR's centres and their cache, the mixer's
+ * buttons on a model with several clips, the skinning shader's text with core's formulas, marker
+ * tracking, the measurement and its file) on a desktop JVM after R8 has shrunk them
  * with the APK's rules ({@code gradle :android:checkShrunk}): the APK cannot be run here, but this
  * shows that shrinking left BoofCV, JOML and core working (nothing they reach by reflection or as
  * a resource was removed). Exits 0 and prints "shrunk app paths work" on success.
@@ -39,7 +43,10 @@ public final class ShrinkProbe {
     private ShrinkProbe() {
     }
 
-    /** {@code ShrinkProbe MODEL...}: every model (a .dae, a .glb) through the app's paths, then the tracker. */
+    /**
+     * {@code ShrinkProbe MODEL...}: every model (a .dae, a .glb) through the app's paths (the mixer's
+     * buttons on those with several clips), then the tracker.
+     */
     public static void main(String[] args) throws Exception {
         for (String model : args) {
             probeModel(Path.of(model));
@@ -55,7 +62,7 @@ public final class ShrinkProbe {
         System.out.println("shrunk app paths work");
     }
 
-    /** Import, simulation, the GPU palette and CoR's centres with their cache, as the app runs them. */
+    /** Import, simulation, the GPU palette, the mixer's buttons and CoR's centres with their cache, as the app runs them. */
     private static void probeModel(Path model) throws Exception {
         Path cache = Files.createTempDirectory("skinlab-centres");
         CentresOfRotation.setCacheDirectory(cache);
@@ -68,6 +75,7 @@ public final class ShrinkProbe {
                 float[] palette = new float[PaletteTexture.floats(f.palette(0).jointCount())];
                 PaletteTexture.pack(f, 0, palette);
             }
+            probeMixer(mesh);
             // CoR's centres were bound with the mesh, as on the Activity's loader: the cache below holds them.
             if (!mesh.geometries().get(0).hasCentresOfRotation()) {
                 throw new IllegalStateException(model.getFileName() + ": the mesh was built without CoR's centres");
@@ -81,6 +89,33 @@ public final class ShrinkProbe {
             Files.delete(files.get(0));
         }
         Files.delete(cache);
+    }
+
+    /** The cross-fade and root motion buttons as the app directs them, on a model with several clips. */
+    private static void probeMixer(SkeletalAnimatedMesh mesh) {
+        MixerControl control = new MixerControl(() -> new MarkerScene(0.1));
+        control.show(mesh);
+        mesh.step(0.1);
+        mesh.step(0.1);
+        if (!control.canCrossFade()) {
+            return; // one clip: nothing to direct
+        }
+        control.toggleRootMotion();
+        double moved = 0;
+        // Through the clips until one with root motion walks.
+        for (int clip = 0; clip < 10 && moved == 0; clip++) {
+            control.crossFadeToNext();
+            for (int i = 0; i < 60; i++) {
+                mesh.step(1 / 60.0);
+            }
+            try (Frame f = mesh.acquire()) {
+                moved = f.placement(new Matrix4f()).getTranslation(new Vector3f()).length();
+            }
+        }
+        if (!control.status().endsWith("| root motion") || moved == 0) {
+            throw new IllegalStateException(mesh.model().source() + ": the shrunk mixer did not fade or walk: "
+                    + control.status());
+        }
     }
 
     /**

@@ -7,7 +7,8 @@ import org.skinlab.simulation.AnimationConfig;
 
 /**
  * The AR app's status line: fps, tracking state (with the followed marker's id and the markers in
- * view, {@link ArPose#markerLabel()}), method, interpolation, speed, model; below it,
+ * view, {@link ArPose#markerLabel()}), method, interpolation, speed, the clips ({@link
+ * MixerControl#status()}), model; below it,
  * each current problem on its own line. Problems come from different sources (the GL driver, the
  * camera, the model loader) and each is kept and cleared by its own source, so that one's success
  * never hides another's failure.
@@ -21,14 +22,15 @@ public final class StatusLine {
 
     /**
      * The line; {@code pose} is the tracking session's latest, or null while no camera is open
-     * (so that "searching" always means: the camera runs and the marker is not in view).
+     * (so that "searching" always means: the camera runs and the marker is not in view); {@code
+     * clips} what the mixer plays ("" for nothing to say). The model comes last.
      */
-    public static String format(double fps, ArPose pose, AnimationConfig.Settings s, String model) {
+    public static String format(double fps, ArPose pose, AnimationConfig.Settings s, String clips, String model) {
         String marker = pose == null ? NO_CAMERA
                 : String.format(Locale.ROOT, "%s (%.1f ms)", pose.markerLabel(), pose.trackerMillis());
-        return String.format(Locale.ROOT, "%.0f fps | marker: %s | %s %s x%.2f%s | %s", fps, marker,
+        return String.format(Locale.ROOT, "%.0f fps | marker: %s | %s %s x%.2f%s%s | %s", fps, marker,
                 s.method().key().toUpperCase(Locale.ROOT), s.interpolation().name(), s.speed(),
-                s.followCamera() ? " | follow" : "", model);
+                s.followCamera() ? " | follow" : "", clips.isEmpty() ? "" : " | " + clips, model);
     }
 
     /** The notes that are not null joined by "; ", or null when all are null (one problem line made of several). */

@@ -14,6 +14,7 @@ import org.junit.jupiter.api.Test;
 import org.skinlab.animation.RotationInterpolation;
 import org.skinlab.ar.ArPose;
 import org.skinlab.ar.GrayImage;
+import org.skinlab.ar.MarkerScene;
 import org.skinlab.ar.TrackingState;
 import org.skinlab.simulation.AnimationConfig;
 import org.skinlab.skinning.JointPalette;
@@ -31,16 +32,17 @@ class AndroidLogicTest {
         double[] told = new double[1];
         MarkerSize marker = new MarkerSize(m -> told[0] = m);
         FakeMeasuring measuring = new FakeMeasuring();
-        List<AppActions.Action> actions = AppActions.of(config, next::incrementAndGet, marker, measuring);
+        MixerControl mixer = new MixerControl(() -> new MarkerScene(0.1));
+        List<AppActions.Action> actions = AppActions.of(config, next::incrementAndGet, mixer, marker, measuring);
         assertEquals(List.of("mesh-updates", "animation", "follow-camera", "method", "interpolation", "slower", "faster",
-                "next-mesh", "marker-size", "measure", "save-results"),
+                "next-mesh", "cross-fade", "root-motion", "marker-size", "measure", "save-results"),
                 actions.stream().map(AppActions.Action::id).toList());
-        assertEquals("Marker 100 mm", actions.get(8).label().get(), "docs/marker's default");
-        actions.get(8).run().run();
+        assertEquals("Marker 100 mm", actions.get(10).label().get(), "docs/marker's default");
+        actions.get(10).run().run();
         assertEquals(0.15, told[0], 1e-12);
-        assertEquals("Marker 150 mm", actions.get(8).label().get());
+        assertEquals("Marker 150 mm", actions.get(10).label().get());
         for (int i = 1; i < MarkerSize.SIZES_MM.length; i++) {
-            actions.get(8).run().run();
+            actions.get(10).run().run();
         }
         assertEquals(100, marker.millimetres(), 0, "round the sizes back to 100 mm");
         AppActions.Action mesh = actions.get(0);
@@ -67,13 +69,18 @@ class AndroidLogicTest {
         assertEquals(1 / AnimationConfig.SPEED_STEP, config.speed(), 1e-12);
         actions.get(7).run().run();
         assertEquals(1, next.get());
-        assertEquals("Measure", actions.get(9).label().get());
+        assertEquals("Cross-fade", actions.get(8).label().get(), "no model yet");
+        assertFalse(actions.get(8).enabled().getAsBoolean());
+        assertEquals("Root motion: off", actions.get(9).label().get());
         actions.get(9).run().run();
-        assertEquals("Stop measuring", actions.get(9).label().get(), "a second tap stops it");
-        actions.get(9).run().run();
-        assertEquals("Measure", actions.get(9).label().get());
-        assertEquals("Save results", actions.get(10).label().get());
-        actions.get(10).run().run();
+        assertEquals("Root motion: on", actions.get(9).label().get(), "kept for the models to come");
+        assertEquals("Measure", actions.get(11).label().get());
+        actions.get(11).run().run();
+        assertEquals("Stop measuring", actions.get(11).label().get(), "a second tap stops it");
+        actions.get(11).run().run();
+        assertEquals("Measure", actions.get(11).label().get());
+        assertEquals("Save results", actions.get(12).label().get());
+        actions.get(12).run().run();
         assertEquals(1, measuring.saves);
     }
 
@@ -183,7 +190,8 @@ class AndroidLogicTest {
     @Test
     void theMethodButtonOffersEveryMethodAndTheChoiceOfEachIsSaved() {
         AnimationConfig config = new AnimationConfig();
-        AppActions.Action method = AppActions.of(config, () -> { }, new MarkerSize(m -> { }),
+        AppActions.Action method = AppActions.of(config, () -> { }, new MixerControl(() -> new MarkerScene(0.1)),
+                new MarkerSize(m -> { }),
                 new FakeMeasuring()).get(3);
         java.util.Set<SkinningMethod> offered = java.util.EnumSet.noneOf(SkinningMethod.class);
         for (SkinningMethod m : SkinningMethod.values()) {
@@ -333,19 +341,20 @@ class AndroidLogicTest {
         ArPose holding = new ArPose(TrackingState.HOLDING, ArPose.NONE.rotation(), ArPose.NONE.translation(), 3, 0,
                 2.54, 1, 1);
         String s = StatusLine.format(29.6, holding, AnimationConfig.Settings.DEFAULT.withMethod(SkinningMethod.COR)
-                .withFollowCamera(true), "humanoid-walk.dae");
-        assertEquals("30 fps | marker: holding id 3 (2.5 ms) | COR SLERP x1.00 | follow | humanoid-walk.dae", s);
+                .withFollowCamera(true), "clip walk -> run | root motion", "humanoid-moves.glb");
+        assertEquals("30 fps | marker: holding id 3 (2.5 ms) | COR SLERP x1.00 | follow | clip walk -> run | root motion"
+                + " | humanoid-moves.glb", s, "the clips before the model, which stays last");
         ArPose two = new ArPose(TrackingState.TRACKING, ArPose.NONE.rotation(), ArPose.NONE.translation(), 0, 2, 1.0,
                 2, 2);
         assertEquals("30 fps | marker: tracking id 0, 2 in view (1.0 ms) | LBS SLERP x1.00 | a.dae",
-                StatusLine.format(30, two, AnimationConfig.Settings.DEFAULT, "a.dae"), "the followed id and the count");
+                StatusLine.format(30, two, AnimationConfig.Settings.DEFAULT, "", "a.dae"), "the followed id and the count");
         ArPose otherInView = new ArPose(TrackingState.SEARCHING, ArPose.NONE.rotation(), ArPose.NONE.translation(),
                 -1, 1, 1.0, 3, 3);
         assertEquals("30 fps | marker: searching, 1 in view (1.0 ms) | LBS SLERP x1.00 | a.dae",
-                StatusLine.format(30, otherInView, AnimationConfig.Settings.DEFAULT, "a.dae"),
+                StatusLine.format(30, otherInView, AnimationConfig.Settings.DEFAULT, "", "a.dae"),
                 "a marker of another id than the target: in view, not followed");
         assertEquals("0 fps | marker: waiting for the camera | LBS SLERP x1.00 | a.dae",
-                StatusLine.format(0, null, AnimationConfig.Settings.DEFAULT, "a.dae"));
+                StatusLine.format(0, null, AnimationConfig.Settings.DEFAULT, "", "a.dae"));
         assertEquals("line\ncamera gone\nmodel broken", StatusLine.withProblems("line", "", null, "camera gone",
                 "model broken"), "each problem on its own line, empty ones left out");
         FpsCounter fps = new FpsCounter();
