@@ -98,6 +98,8 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
     private final Mixer mixer;
     /** Changes to the mixer from any thread, applied at the start of the next step. */
     private final ConcurrentLinkedQueue<Direction> directions = new ConcurrentLinkedQueue<>();
+    /** Runs every step after the queued changes (a scene's steering), or null. */
+    private volatile Consumer<Mixer> director;
     private final FrameWriter writer;
     private final FramePool pool;
     private double playback;
@@ -270,6 +272,19 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
         Direction d = new Direction(Objects.requireNonNull(change, "change"));
         directions.add(d);
         return d.done;
+    }
+
+    /**
+     * Sets a change that runs on the simulation thread at every step, after the changes queued by
+     * {@link #direct} and before the clock advances, whether or not the step publishes a frame: a
+     * scene's steering (turning a root-motion walker back towards a marker), or reading the
+     * mixer's state for a status line. It must not allocate per step if the steps are to allocate
+     * nothing; a director that throws fails the simulation like a failing step.
+     *
+     * @param director the change to run every step, or null for none
+     */
+    public void setDirector(Consumer<Mixer> director) {
+        this.director = director;
     }
 
     private record Direction(Consumer<Mixer> change, CompletableFuture<Void> done) {
@@ -482,6 +497,10 @@ public final class SkeletalAnimatedMesh implements AutoCloseable {
             } catch (RuntimeException e) {
                 d.done.completeExceptionally(e);
             }
+        }
+        Consumer<Mixer> d = director;
+        if (d != null) {
+            d.accept(mixer);
         }
         mixer.base().setWrapMode(s.wrapMode());
         if (s.animationRunning()) {

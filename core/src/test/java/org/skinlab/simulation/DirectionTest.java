@@ -77,4 +77,23 @@ class DirectionTest {
             }
         }
     }
+
+    @Test
+    void theDirectorRunsEveryStepAfterTheQueuedChangesPublishedOrNot() throws Exception {
+        Model model = model();
+        AnimationConfig config = new AnimationConfig();
+        try (SkeletalAnimatedMesh mesh = new SkeletalAnimatedMesh(model, model.clips().get(0), config)) {
+            java.util.List<String> seen = new java.util.ArrayList<>();
+            mesh.setDirector(m -> seen.add(m.base().heaviestClip()));
+            mesh.direct(m -> m.base().play("clip-b"));
+            mesh.step(0.1);
+            config.stopMeshUpdates();
+            long published = mesh.latestSequence();
+            mesh.step(0.1);
+            assertEquals(published, mesh.latestSequence(), "no frame with mesh updates stopped");
+            mesh.setDirector(null);
+            mesh.step(0.1);
+            assertEquals(java.util.List.of("clip-b", "clip-b"), seen);
+        }
+    }
 }

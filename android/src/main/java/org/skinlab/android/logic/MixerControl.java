@@ -2,7 +2,6 @@ package org.skinlab.android.logic;
 
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
-import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.function.Consumer;
 import java.util.function.Supplier;
 
@@ -18,8 +17,9 @@ import org.skinlab.simulation.SkeletalAnimatedMesh;
  * The shown character's mixer as the app's buttons direct it: a synchronised cross-fade to the
  * model's next clip, and root motion for all its clips with {@link MarkerSteering} keeping the
  * walker on the marker. Every change goes to the simulation thread through {@link
- * SkeletalAnimatedMesh#direct}; after each published frame one more direction reads back what the
- * status line says (the clip playing, or the fade and its two clips) and steers.
+ * SkeletalAnimatedMesh#direct}; at every step the mesh's director ({@link
+ * SkeletalAnimatedMesh#setDirector}) reads back what the status line says (the clip playing, or
+ * the fade and its two clips) and steers, whether or not the step publishes a frame.
  *
  * <p>Threads: {@link #show}, the two switches and the labels from the UI thread; the mixer is
  * touched only on the simulation thread, and what that thread publishes for the UI is one
@@ -40,7 +40,7 @@ public final class MixerControl {
 
     /**
      * Directs {@code mesh} from now on (call before starting it): reads its clips, turns root
-     * motion on if the switch is on, and takes its frame listener.
+     * motion on if the switch is on, and becomes its director.
      */
     public void show(SkeletalAnimatedMesh mesh) {
         Shown s = new Shown(mesh, scene.get());
@@ -52,7 +52,7 @@ public final class MixerControl {
                 s.setRootMotion(m, true);
             }
         });
-        mesh.setFrameListener(s::afterFrame);
+        mesh.setDirector(s.everyStep);
     }
 
     /** Whether the shown model has two clips or more to cross-fade between (false until they are read). */
@@ -117,7 +117,6 @@ public final class MixerControl {
     private static final class Shown {
         final SkeletalAnimatedMesh mesh;
         final MarkerScene scene;
-        final AtomicBoolean queued = new AtomicBoolean();
         final Consumer<Mixer> everyStep = this::everyStep;
         // Published for the UI thread.
         volatile List<String> clips;
@@ -135,15 +134,8 @@ public final class MixerControl {
             this.scene = scene;
         }
 
-        /** The frame listener: one reading (and steering) direction queued at a time. */
-        void afterFrame() {
-            if (queued.compareAndSet(false, true)) {
-                mesh.direct(everyStep);
-            }
-        }
-
+        /** Every step, on the simulation thread ({@link SkeletalAnimatedMesh#setDirector}): reads and steers. */
         void everyStep(Mixer m) {
-            queued.set(false);
             Layer base = m.base();
             if (fadeTo != null && !base.isFading()) {
                 fadeTo = null;
