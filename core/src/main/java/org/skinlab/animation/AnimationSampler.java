@@ -350,6 +350,11 @@ public final class AnimationSampler {
         /** Whether the channel drives a whole rotation quaternion (x y z w). */
         private final boolean quaternion;
         /**
+         * Whether every key holds the same values (exporters key every bone's scale, and often its
+         * translation, whether it changes or not): the blend path copies them.
+         */
+        private final boolean constant;
+        /**
          * Where {@link AnimationSampler#sampleLocal} writes the channel straight into a
          * {@link LocalPose}'s array (a whole matrix: its node's 10 floats; a glTF translation, rotation
          * or scale: its part of them), or -1 when it goes through the transform values.
@@ -374,6 +379,11 @@ public final class AnimationSampler {
             this.in = track.inTangents();
             this.out = track.outTangents();
             this.quaternion = quaternion;
+            boolean same = true;
+            for (int i = width; i < values.length && same; i++) {
+                same = Float.floatToRawIntBits(values[i]) == Float.floatToRawIntBits(values[i % width]);
+            }
+            this.constant = same && !matrix;
             this.trs = matrix ? decomposeKeys(values, keys) : null;
             boolean rotations = matrix || quaternion;
             this.slerpAngles = rotations ? new double[keys] : null;
@@ -443,6 +453,10 @@ public final class AnimationSampler {
             // pose: scratch for matrices and quaternions only (null for morph weights)
             int keys = times.length;
             if (keys == 0) {
+                return;
+            }
+            if (fast && constant) {
+                System.arraycopy(values, 0, dest, slot, width);
                 return;
             }
             Interpolation how = interpolations[k];

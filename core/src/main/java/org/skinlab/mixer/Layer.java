@@ -557,6 +557,14 @@ public final class Layer {
                 }
                 continue;
             }
+            if (active.size() == 1) {
+                // One clip: no accumulation; the rest fills what its weight leaves.
+                ClipState s = active.get(0);
+                if (s.weight >= 1 && s.clip.sampler.animates(j)) {
+                    blend.mix(dest, o, s.local.array(), o, m, dest, o);
+                    continue;
+                }
+            }
             double cumulative = 0;
             for (int i = 0; i < active.size(); i++) {
                 ClipState s = active.get(i);
