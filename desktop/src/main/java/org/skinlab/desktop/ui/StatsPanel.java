@@ -64,7 +64,7 @@ final class StatsPanel {
         Widgets.dim(drawn.of(scene.vertices()));
         ImGui.separator();
         comparison(scene, stats);
-        layout.numbersMeasured(ImGui.getWindowWidth());
+        layout.numbersMeasured(ImGui.getWindowWidth(), ImGui.getWindowHeight());
         ImGui.end();
     }
 

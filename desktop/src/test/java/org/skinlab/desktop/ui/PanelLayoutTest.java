@@ -10,13 +10,14 @@ import org.junit.jupiter.api.Test;
 class PanelLayoutTest {
     private static final float TOOLBAR = 297f;
     private static final float NUMBERS = 316f;
+    private static final float NUMBERS_HEIGHT = 330f;
     private static final float TITLE = 19f;
     private static final float STATUS = 44f;
 
     private static PanelLayout measured() {
         PanelLayout layout = new PanelLayout();
         layout.toolbarMeasured(TOOLBAR);
-        layout.numbersMeasured(NUMBERS);
+        layout.numbersMeasured(NUMBERS, NUMBERS_HEIGHT);
         layout.statusMeasured(STATUS);
         return layout;
     }
