@@ -54,6 +54,10 @@ echo "--- humanoid-walk"
 rm -f assets/characters/humanoid-walk.dae "$REF/humanoid-walk.json"
 run_blender humanoid "$SRC/make_humanoid.py" assets/characters/humanoid-walk.dae "$REF/humanoid-walk.json"
 
+echo "--- humanoid-moves"
+rm -f assets/characters/humanoid-moves.dae assets/characters/humanoid-moves.glb "$REF/humanoid-moves.json"
+run_blender humanoid-moves "$SRC/make_mover.py" assets/characters/humanoid-moves.dae "$REF/humanoid-moves.json"
+
 echo "--- tentacle-wave"
 rm -f assets/creatures/tentacle-wave.dae "$REF/tentacle-wave.json"
 run_blender tentacle "$SRC/make_tentacle.py" assets/creatures/tentacle-wave.dae "$REF/tentacle-wave.json"
@@ -90,6 +94,8 @@ if [ "$PREVIEWS" = 1 ]; then
   run_blender p8 "$SRC/render_preview.py" assets/twist/arm-twist.dae "$SRC/previews/arm-twist.png" front 0 0.5 0.875 1
   run_blender p9 "$SRC/render_preview.py" assets/cylinders/cylinder-twist-full.dae "$SRC/previews/cylinder-twist-full.png" front 0 1.5 2.75 3.25 4.5 6
   run_blender p10 "$SRC/render_preview.py" assets/cylinders/cylinder-bend-full.dae "$SRC/previews/cylinder-bend-full.png" side 0 1.5 2.75 3.25 4.5 6
+  run_blender p11 "$SRC/render_preview.py" assets/characters/humanoid-moves.dae "$SRC/previews/humanoid-moves-front.png" front --follow hips idle@1 walk@0.25 run@0.125 wave@0.375 lean@1.5
+  run_blender p12 "$SRC/render_preview.py" assets/characters/humanoid-moves.dae "$SRC/previews/humanoid-moves-side.png" side --follow hips walk@0 walk@0.25 walk@0.5 run@0 run@0.125 run@0.25
 fi
 
 echo "all assets built and checked"

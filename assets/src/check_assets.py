@@ -28,7 +28,11 @@ import check_glb
 NS = "{http://www.collada.org/2005/11/COLLADASchema}"
 MAX_BYTES = 2 * 1024 * 1024
 
-# Requirements per file (paths relative to the assets directory).
+HUMANOID = ("hips", "spine", "chest", "neck", "head", "shoulder_L", "upper_arm_L", "forearm_L", "hand_L",
+            "shoulder_R", "upper_arm_R", "forearm_R", "hand_R", "thigh_L", "shin_L", "foot_L", "thigh_R",
+            "shin_R", "foot_R")
+
+# Requirements per file (paths relative to the assets directory); "clips": per clip, by name.
 EXPECT = {
     "cylinders/cylinder-twist-low.dae": dict(
         joints=(2, 2), triangles=(1000, 1300), closed=True, min_keys=5,
@@ -49,6 +53,17 @@ EXPECT = {
     "characters/humanoid-walk.dae": dict(
         joints=(15, 64), triangles=(1000, 2000), closed=True, min_keys=5, loop=True,
         duration=(0.8, 1.2)),
+    # the same character with five clips (make_mover.py), each keying only the joints it moves
+    "characters/humanoid-moves.dae": dict(
+        joints=(19, 19), triangles=(1000, 2000), closed=True, clips={
+            "idle": dict(keyed=HUMANOID, min_keys=17, duration=(2.0, 2.0), loop=True, in_place="hips"),
+            "lean": dict(keyed=("spine", "chest"), min_keys=13, duration=(1.5, 1.5), starts_at_rest=True,
+                         bends=("chest", 1.0, 20.0, "Y")),
+            "run": dict(keyed=HUMANOID, min_keys=6, duration=(0.625, 0.625), root_motion=("hips", (0.0, -2.1875, 0.0))),
+            "walk": dict(keyed=HUMANOID, min_keys=9, duration=(1.0, 1.0), root_motion=("hips", (0.0, -1.2, 0.0))),
+            "wave": dict(keyed=("shoulder_R", "upper_arm_R", "forearm_R", "hand_R"), min_keys=13,
+                         duration=(1.5, 1.5), loop=True, raised=("hand_R", 1.7)),
+        }),
     "creatures/tentacle-wave.dae": dict(
         joints=(6, 10), triangles=(500, 3000), closed=True, min_keys=5, loop=True,
         scaled=True, non_uniform=True),
@@ -266,9 +281,27 @@ def read_scene(root):
     return nodes, order
 
 
-def read_animations(root):
+def read_clips(root):
+    """[dict(name, start, end, channels)] per <animation_clip>, channels as read_animations gives
+    them for the animations the clip instances (nested ones included); a file without clips has
+    one clip named None over all its channels."""
+    clips = []
+    for clip in root.iter(NS + "animation_clip"):
+        channels = {}
+        for inst in clip.findall(NS + "instance_animation"):
+            channels.update(read_animations(root, source_by_id(root, inst.get("url")), channels))
+        clips.append(dict(name=clip.get("name") or clip.get("id"), start=float(clip.get("start", "0")),
+                          end=float(clip.get("end")), channels=channels))
+    if not clips:
+        clips.append(dict(name=None, channels=read_animations(root)))
+    return clips
+
+
+def read_animations(root, within=None, seen=()):
+    """Channels of all animations (or of the animation `within` and those nested in it); a node
+    with two channels (also one in `seen`) is an error."""
     channels = {}   # target node id -> (times, matrices, interpolations, target string)
-    for anim in root.iter(NS + "animation"):
+    for anim in (within if within is not None else root).iter(NS + "animation"):
         for ch in anim.findall(NS + "channel"):
             target = ch.get("target")
             sampler = source_by_id(root, ch.get("source"))
@@ -280,7 +313,7 @@ def read_animations(root):
             if stride != 16:
                 raise CheckError("channel %s is not a baked matrix (stride %d)" % (target, stride))
             mats = [mat(out[i:i + 16]) for i in range(0, len(out), 16)]
-            if node_id in channels:
+            if node_id in channels or node_id in seen:
                 raise CheckError("two channels for node %s" % node_id)
             channels[node_id] = dict(times=times, mats=mats, interp=interp, target=target, what=what)
     return channels
@@ -498,7 +531,51 @@ def check_file(path, rel, ref_dir):
               % (inst[0], nodes[inst[0]]["parent"], sk.text if sk is not None else "-", skel_roots,
                  "<matrix>" if all(n["has_matrix_el"] for n in nodes.values()) else "decomposed"))
 
-    channels = read_animations(root)
+    clips = read_clips(root)
+    ref_path = os.path.join(ref_dir, os.path.splitext(os.path.basename(rel))[0] + ".json")
+    ref = None
+    if os.path.exists(ref_path):
+        with open(ref_path, encoding="utf-8") as fh:
+            ref = json.load(fh)
+        check(ref["vertex_count"] == len(g["points"]), "%s: reference has %d vertices" % (rel, ref["vertex_count"]))
+        check(("clips" in ref) == (clips[0]["name"] is not None),
+              "%s: the reference has %s, the file %s" % (rel, "clips" if "clips" in ref else "no clips",
+                                                         "clips" if clips[0]["name"] else "none"))
+    if "clips" in exp:
+        check([c["name"] for c in clips] == list(exp["clips"]),
+              "%s: clips %s, expected %s" % (rel, [c["name"] for c in clips], list(exp["clips"])))
+    print("  %d clip(s)%s" % (len(clips), "" if clips[0]["name"] is None
+                               else ": " + ", ".join(c["name"] for c in clips)))
+    facts = []
+    for clip in clips:
+        clip_exp = exp["clips"].get(clip["name"], {}) if "clips" in exp else exp
+        clip_ref = None
+        if ref is not None:
+            if clip["name"] is None:
+                clip_ref = ref
+            else:
+                clip_ref = next((c for c in ref["clips"] if c["name"] == clip["name"]), None)
+                check(clip_ref is not None, "%s: no reference for clip %s" % (rel, clip["name"]))
+        facts.append(check_clip(rel, clip, clip_exp, clip_ref, g, skin, nodes, order, joint_nodes, vol0))
+    if ref is None:
+        print("  (no reference %s: LBS comparison skipped)" % ref_path)
+    if None in facts:
+        return
+
+    glb = os.path.splitext(path)[0] + ".glb"
+    if check(os.path.exists(glb), "%s: no .glb beside it" % rel):
+        dae = dict(points=g["points"], triangles=g["triangles"], joint_names=skin["joints"], clips=facts)
+        check_glb.check_glb(glb, os.path.splitext(rel)[0] + ".glb", dae, ref, check)
+
+
+def check_clip(rel, clip, exp, ref, g, skin, nodes, order, joint_nodes, vol0):
+    """The checks of one clip (of the whole animation, in a file without clips); exp: the clip's
+    requirements, ref: its reference keys or None. Returns what check_glb needs (name, key times,
+    animated joints), or None when its channels have different key times."""
+    channels = clip["channels"]
+    if clip["name"] is not None:
+        rel = "%s clip %s" % (rel, clip["name"])
+        print("  -- clip %s (%g to %g s)" % (clip["name"], clip["start"], clip["end"]))
     check(len(channels) > 0, "%s: no animation" % rel)
     for t in channels:
         check(t in nodes, "%s: channel target %s does not resolve" % (rel, t))
@@ -526,6 +603,10 @@ def check_file(path, rel, ref_dir):
     if "duration" in exp:
         d = all_times[-1] - all_times[0]
         check(exp["duration"][0] <= d <= exp["duration"][1], "%s: duration %g s" % (rel, d))
+    if clip["name"] is not None:
+        check(abs(clip["start"] - all_times[0]) < 1e-6 and abs(clip["end"] - all_times[-1]) < 1e-6,
+              "%s: the clip runs from %g to %g s, its keys from %g to %g s"
+              % (rel, clip["start"], clip["end"], all_times[0], all_times[-1]))
 
     # rotation steps between consecutive keys, and scales
     worst_step = (0.0, None)
@@ -591,19 +672,38 @@ def check_file(path, rel, ref_dir):
         check_stretch(rel, exp["stretch"], nodes, order, channels, joint_nodes)
     unwrapped = check_turn(rel, exp["turn"], nodes, joint_nodes, channels) if "turn" in exp else None
 
+    if "keyed" in exp:
+        keyed = sorted(nodes[t]["sid"] for t in channels if t in joint_set)
+        check(keyed == sorted(exp["keyed"]) and not non_joint,
+              "%s: keys %s, expected the joints %s" % (rel, keyed + non_joint, sorted(exp["keyed"])))
+    if "root_motion" in exp:
+        check_root_motion(rel, exp["root_motion"], nodes, joint_nodes, channels)
+    if "in_place" in exp:
+        nid = [j for j in joint_nodes if nodes[j]["sid"] == exp["in_place"]][0]
+        moved = max(abs(m[r][3] - nodes[nid]["matrix"][r][3]) for m in channels[nid]["mats"] for r in range(3))
+        print("  %s stays in place: its translation is at most %.1e m from rest" % (exp["in_place"], moved))
+        check(moved < 1e-6, "%s: %s moves %.2e m" % (rel, exp["in_place"], moved))
+    if exp.get("starts_at_rest"):
+        off = max(max_abs_diff(c["mats"][0], nodes[t]["matrix"]) for t, c in channels.items())
+        print("  key 0 is the rest pose: largest difference of a key-0 matrix from its rest matrix %.1e" % off)
+        check(off < 1e-6, "%s: key 0 is %.2e from the rest pose" % (rel, off))
+    if "bends" in exp:
+        check_bend(rel, exp["bends"], nodes, order, joint_nodes, channels)
+    if "raised" in exp:
+        sid, least = exp["raised"]
+        nid = [j for j in joint_nodes if nodes[j]["sid"] == sid][0]
+        heights = [world_matrices(nodes, order, channels, k)[nid][2][3] for k in range(len(channels[nid]["times"]))]
+        print("  %s raised: its joint at z %.3f to %.3f m" % (sid, min(heights), max(heights)))
+        check(min(heights) > least, "%s: %s is at z %.3f, below %g" % (rel, sid, min(heights), least))
+
     # linear blend skinning from the file alone, against Blender's own deformation
-    ref_path = os.path.join(ref_dir, os.path.splitext(os.path.basename(rel))[0] + ".json")
     keyed = [t for t in channels if t in joint_set]
     base_times = channels[keyed[0]]["times"] if keyed else []
     same_times = all(channels[t]["times"] == base_times for t in channels)
     if not same_times:
         print("  (channels have different key times: LBS check skipped)")
-        return
-    ref = None
-    if os.path.exists(ref_path):
-        with open(ref_path, encoding="utf-8") as fh:
-            ref = json.load(fh)
-        check(ref["vertex_count"] == len(g["points"]), "%s: reference has %d vertices" % (rel, ref["vertex_count"]))
+        return None
+    if ref is not None:
         check(len(ref["keys"]) == len(base_times), "%s: reference has %d keys for %d key times" % (rel, len(ref["keys"]), len(base_times)))
     vols = []
     worst = 0.0
@@ -623,15 +723,64 @@ def check_file(path, rel, ref_dir):
     if unwrapped is not None and len(unwrapped) == len(vols):
         check_turn_volumes(rel, unwrapped, vols, vol0)
     if ref is not None:
-        print("  LBS from the file vs Blender's deformation (%s): max deviation %.2e m" % (os.path.basename(ref_path), worst))
+        print("  LBS from the file vs Blender's deformation: max deviation %.2e m" % worst)
         check(worst < 1e-4, "%s: LBS from the file deviates %.2e m from Blender's deformation" % (rel, worst))
-    else:
-        print("  (no reference %s: LBS comparison skipped)" % ref_path)
+    return dict(name=clip["name"], times=base_times,
+                joints=sorted(nodes[t]["sid"] for t in channels if t in joint_set))
 
-    glb = os.path.splitext(path)[0] + ".glb"
-    if check(os.path.exists(glb), "%s: no .glb beside it" % rel):
-        dae = dict(points=g["points"], triangles=g["triangles"], joint_names=skin["joints"], times=base_times)
-        check_glb.check_glb(glb, os.path.splitext(rel)[0] + ".glb", dae, ref, check)
+
+def check_root_motion(rel, spec, nodes, joint_nodes, channels):
+    """A loop that travels: the root joint's translation moves by `delta` (armature axes) from the
+    first key to the last at constant velocity (every key on the straight line, in proportion to
+    its time), up and down aside (a bob along z is allowed); every other value of the last key is
+    the first key's, so that the clip repeats from where it ends."""
+    sid, delta = spec
+    nid = [j for j in joint_nodes if nodes[j]["sid"] == sid][0]
+    c = channels[nid]
+    t0, t1 = c["times"][0], c["times"][-1]
+    first = [c["mats"][0][r][3] for r in range(3)]
+    line = 0.0
+    for t, m in zip(c["times"], c["mats"]):
+        u = (t - t0) / (t1 - t0)
+        line = max(line, max(abs(m[r][3] - first[r] - u * delta[r]) for r in range(2)))
+    moved = [c["mats"][-1][r][3] - first[r] for r in range(3)]
+    rest = 0.0
+    for t, ch in channels.items():
+        for i in range(4):
+            for j in range(4):
+                if not (t == nid and j == 3 and i < 3):
+                    rest = max(rest, abs(ch["mats"][0][i][j] - ch["mats"][-1][i][j]))
+    print("  root motion: %s moves (%.4f, %.4f, %.4f) m in %g s (%.3f m/s); keys off the line by at most "
+          "%.1e m; the last key's other values are the first's to %.1e"
+          % (sid, moved[0], moved[1], moved[2], t1 - t0, math.hypot(moved[0], moved[1]) / (t1 - t0), line, rest))
+    check(max(abs(a - b) for a, b in zip(moved, delta)) < 1e-5,
+          "%s: %s moves %s per loop, expected %s" % (rel, sid, moved, delta))
+    check(line < 1e-5, "%s: %s does not move at constant velocity (%.2e m off)" % (rel, sid, line))
+    check(rest < 1e-5, "%s: the last key differs from the first by %.2e beyond the root's travel" % (rel, rest))
+
+
+def check_bend(rel, spec, nodes, order, joint_nodes, channels):
+    """A joint's world rotation relative to its rest turns by `degrees` about a world axis by time
+    `at` and holds there to the end."""
+    sid, at, degrees, axis_name = spec
+    nid = [j for j in joint_nodes if nodes[j]["sid"] == sid][0]
+    rest = world_matrices(nodes, order, {}, 0)[nid]
+    a = "XYZ".index(axis_name)
+    angles, worst_axis = [], 0.0
+    times = next(iter(channels.values()))["times"]
+    for k, t in enumerate(times):
+        m = world_matrices(nodes, order, channels, k)[nid]
+        rel_rot = [[sum(m[r][i] * rest[r2][i] for i in range(3)) for r2 in range(3)] for r in range(3)]  # m R^T
+        c = max(-1.0, min(1.0, (rel_rot[0][0] + rel_rot[1][1] + rel_rot[2][2] - 1.0) / 2.0))
+        axis = [rel_rot[2][1] - rel_rot[1][2], rel_rot[0][2] - rel_rot[2][0], rel_rot[1][0] - rel_rot[0][1]]
+        n = math.sqrt(sum(x * x for x in axis))
+        angles.append(math.degrees(math.acos(c)))
+        if n > 1e-6:
+            worst_axis = max(worst_axis, 1.0 - abs(axis[a]) / n)
+    held = [x for t, x in zip(times, angles) if t >= at - 1e-9]
+    print("  %s bends about world %s: %s deg (axis off by %.1e)" % (sid, axis_name, " ".join("%.2f" % x for x in angles), worst_axis))
+    check(all(abs(x - degrees) < 0.01 for x in held), "%s: %s is at %s deg from %g s, not %g" % (rel, sid, held, at, degrees))
+    check(worst_axis < 1e-4, "%s: %s bends about another axis (%.1e)" % (rel, sid, worst_axis))
 
 
 def main():

@@ -2,9 +2,11 @@
 
 For each asset's .glb (written beside its .dae by common.export_glb) it reads the binary glTF
 itself and asserts that it holds the same scene as the .dae: no extension (so no Draco), one mesh,
-one skin with the .dae's joints, one animation whose every channel is LINEAR with exactly the
-.dae's key times, at most 4 influences summing to 1, every glTF vertex at the place of one .dae
-position. Then it skins the glTF mesh itself with linear blend skinning at every key,
+one skin with the .dae's joints, one animation per clip of the .dae (one in all for a .dae without
+clips; with clips, in the same order and with the same names), each animating the joints its clip
+animates, every channel LINEAR with exactly the clip's key times, at most 4 influences summing to
+1, every glTF vertex at the place of one .dae position. Then it skins the glTF mesh itself with
+linear blend skinning at every key of every animation (joints without a channel at rest),
   v' = sum_i w_i * World(joint_i, t) * inverseBindMatrix_i * v   (the mesh node's transform ignored),
 turns the result from glTF's Y-up back to Blender's Z-up ((x, y, z) -> (x, -z, y)) and matches it
 with Blender's own deformation in assets/reference/<name>.json (bounding box and sample vertices).
@@ -100,14 +102,16 @@ def transform(m, p):
 
 
 def check_glb(path, rel, dae, ref, check):
-    """dae: facts from the .dae (points, triangles as position indices, joint_names, times); ref: the reference JSON or None;
-    check(cond, message) records a failure."""
+    """dae: facts from the .dae (points, triangles as position indices, joint_names, and per clip
+    its name (None in a file without clips), key times and animated joints); ref: the reference JSON
+    or None; check(cond, message) records a failure."""
     doc, binary = read_glb(path)
     print("  glb: %s, generator %s" % (rel, doc["asset"].get("generator")))
     check(not doc.get("extensionsUsed") and not doc.get("extensionsRequired"),
           "%s: uses extensions %s" % (rel, doc.get("extensionsUsed")))
-    check(len(doc.get("meshes", ())) == 1 and len(doc.get("skins", ())) == 1 and len(doc.get("animations", ())) == 1,
-          "%s: expected one mesh, one skin, one animation" % rel)
+    check(len(doc.get("meshes", ())) == 1 and len(doc.get("skins", ())) == 1
+          and len(doc.get("animations", ())) == len(dae["clips"]),
+          "%s: expected one mesh, one skin, %d animation(s)" % (rel, len(dae["clips"])))
     check(not doc.get("cameras"), "%s: has cameras" % rel)
     skin = doc["skins"][0]
     joints = skin["joints"]
@@ -156,41 +160,52 @@ def check_glb(path, rel, dae, ref, check):
     print("  glb: %d vertices in %d primitive(s) (%d distinct .dae positions), %d joints, max %d influences"
           % (len(points), len(prims), len(set(s for s in source if s is not None)), len(joints), most))
 
-    anim = doc["animations"][0]
-    pose = {i: node_trs(n) for i, n in enumerate(doc["nodes"])}
-    tracks = []
-    for ch in anim["channels"]:
-        sampler = anim["samplers"][ch["sampler"]]
-        check(sampler.get("interpolation", "LINEAR") == "LINEAR", "%s: %s interpolation" % (rel, sampler.get("interpolation")))
-        times = [t[0] for t in accessor(doc, binary, sampler["input"])]
-        check(len(times) == len(dae["times"]) and all(abs(a - b) < 1e-6 for a, b in zip(times, dae["times"])),
-              "%s: channel on %s keyed at %s, the .dae at %s" % (rel, doc["nodes"][ch["target"]["node"]]["name"], times, dae["times"]))
-        tracks.append((ch["target"]["node"], ch["target"]["path"], accessor(doc, binary, sampler["output"])))
-    print("  glb: animation %r, %d channels, %d keys each" % (anim.get("name"), len(tracks), len(dae["times"])))
-
+    rest = {i: node_trs(n) for i, n in enumerate(doc["nodes"])}
     worst = 0.0
-    slot = {"translation": 0, "rotation": 1, "scale": 2}
-    for k in range(len(dae["times"])):
-        for node, what, values in tracks:
-            pose[node] = tuple(list(values[k]) if j == slot[what] else pose[node][j] for j in range(3))
-        world = world_matrices(doc, pose)
-        skinning = [mul(world[j], ibm[n]) for n, j in enumerate(joints)]
-        posed = []
-        for p, js, ws in zip(points, joint_sets, weight_sets):
-            acc = [0.0, 0.0, 0.0]
-            for j, w in zip(js, ws):
-                if w > 0:
-                    q = transform(skinning[j], p)
-                    acc = [a + w * b for a, b in zip(acc, q)]
-            posed.append((acc[0], -acc[2], acc[1]))
+    for anim, clip in zip(doc["animations"], dae["clips"]):
+        label = rel if clip["name"] is None else "%s animation %s" % (rel, clip["name"])
+        if clip["name"] is not None:
+            check(anim.get("name") == clip["name"], "%s: animation %r where the .dae has clip %r"
+                  % (rel, anim.get("name"), clip["name"]))
+        tracks = []
+        for ch in anim["channels"]:
+            sampler = anim["samplers"][ch["sampler"]]
+            check(sampler.get("interpolation", "LINEAR") == "LINEAR", "%s: %s interpolation" % (label, sampler.get("interpolation")))
+            times = [t[0] for t in accessor(doc, binary, sampler["input"])]
+            check(len(times) == len(clip["times"]) and all(abs(a - b) < 1e-6 for a, b in zip(times, clip["times"])),
+                  "%s: channel on %s keyed at %s, the .dae at %s" % (label, doc["nodes"][ch["target"]["node"]]["name"], times, clip["times"]))
+            tracks.append((ch["target"]["node"], ch["target"]["path"], accessor(doc, binary, sampler["output"])))
+        animated = sorted({doc["nodes"][node]["name"] for node, _, _ in tracks})
+        check(animated == clip["joints"], "%s: animates %s, the .dae %s" % (label, animated, clip["joints"]))
+        print("  glb: animation %r, %d channels on %d joints, %d keys each"
+              % (anim.get("name"), len(tracks), len(animated), len(clip["times"])))
+        keys = None
         if ref is not None:
-            rk = ref["keys"][k]
-            lo = [min(p[a] for p in posed) for a in range(3)]
-            hi = [max(p[a] for p in posed) for a in range(3)]
-            worst = max(worst, max(abs(a - b) for a, b in zip(lo + hi, rk["bbox_min"] + rk["bbox_max"])))
-            for v, s in enumerate(source):
-                if s is not None and str(s) in rk["vertices"]:
-                    worst = max(worst, max(abs(a - b) for a, b in zip(posed[v], rk["vertices"][str(s)])))
+            keys = ref["keys"] if clip["name"] is None else next(
+                (c["keys"] for c in ref["clips"] if c["name"] == clip["name"]), None)
+        pose = dict(rest)
+        slot = {"translation": 0, "rotation": 1, "scale": 2}
+        for k in range(len(clip["times"])):
+            for node, what, values in tracks:
+                pose[node] = tuple(list(values[k]) if j == slot[what] else pose[node][j] for j in range(3))
+            world = world_matrices(doc, pose)
+            skinning = [mul(world[j], ibm[n]) for n, j in enumerate(joints)]
+            posed = []
+            for p, js, ws in zip(points, joint_sets, weight_sets):
+                acc = [0.0, 0.0, 0.0]
+                for j, w in zip(js, ws):
+                    if w > 0:
+                        q = transform(skinning[j], p)
+                        acc = [a + w * b for a, b in zip(acc, q)]
+                posed.append((acc[0], -acc[2], acc[1]))
+            if keys is not None:
+                rk = keys[k]
+                lo = [min(p[a] for p in posed) for a in range(3)]
+                hi = [max(p[a] for p in posed) for a in range(3)]
+                worst = max(worst, max(abs(a - b) for a, b in zip(lo + hi, rk["bbox_min"] + rk["bbox_max"])))
+                for v, s in enumerate(source):
+                    if s is not None and str(s) in rk["vertices"]:
+                        worst = max(worst, max(abs(a - b) for a, b in zip(posed[v], rk["vertices"][str(s)])))
     if ref is not None:
         print("  LBS from the .glb vs Blender's deformation: max deviation %.2e m" % worst)
         check(worst < 1e-4, "%s: LBS from the .glb deviates %.2e m from Blender's deformation" % (rel, worst))

@@ -254,11 +254,9 @@ def apply_all_modifiers(obj):
         bpy.ops.object.modifier_apply(modifier=m.name)
 
 
-def write_reference(mesh_obj, frames, path, samples=24):
-    """Evaluate Blender's own (linear blend) deformation of the mesh at each key frame; print the
-    bounding boxes and, if path is given, write them with a few sample vertices to a JSON file.
-    check_assets.py recomputes the same numbers from the exported .dae alone."""
-    import json
+def reference_keys(mesh_obj, frames, samples=24):
+    """Blender's own (linear blend) deformation of the mesh at each key frame of the active
+    action: per frame the bounding box and a few sample vertices (also printed)."""
     scene = bpy.context.scene
     n = len(mesh_obj.data.vertices)
     picks = sorted({(i * n) // samples for i in range(samples)} | {n - 1})
@@ -282,32 +280,76 @@ def write_reference(mesh_obj, frames, path, samples=24):
         })
         ev.to_mesh_clear()
     scene.frame_set(0)
+    return keys
+
+
+def write_reference(mesh_obj, frames, path, samples=24):
+    """Evaluate Blender's own (linear blend) deformation of the mesh at each key frame; print the
+    bounding boxes and, if path is given, write them with a few sample vertices to a JSON file.
+    check_assets.py recomputes the same numbers from the exported .dae alone."""
+    keys = reference_keys(mesh_obj, frames, samples)
     if path:
-        os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
-        doc = {
+        _write_json(path, {
             "about": "Blender %s armature deformation (linear blend skinning) of the mesh at each key "
                      "frame, world coordinates; vertex keys are position indices in the .dae"
                      % bpy.app.version_string,
             "fps": FPS,
-            "vertex_count": n,
+            "vertex_count": len(mesh_obj.data.vertices),
             "keys": keys,
-        }
-        with open(path, "w", encoding="utf-8", newline="\n") as fh:
-            json.dump(doc, fh, indent=1, sort_keys=True)
-            fh.write("\n")
-        print("wrote %s" % path)
+        })
 
 
-def export_dae(path, sampling_rate):
-    """Export the scene with EXPORT_OPTIONS (sampling_rate = key spacing in frames) and pin the <created>/<modified> timestamps so a
-    rebuild gives a byte-identical file."""
+def write_clips_reference(mesh_obj, arm_obj, clips, path, samples=24):
+    """write_reference for several actions: clips is a list of (action, key frames, keyed bones);
+    the JSON has one entry per clip, {"name", "keys"}, in that order."""
+    entries = []
+    for action, frames, _ in clips:
+        print("clip %s" % action.name)
+        arm_obj.animation_data.action = action
+        rest_pose(arm_obj)
+        entries.append({"name": action.name, "keys": reference_keys(mesh_obj, frames, samples)})
+    if path:
+        _write_json(path, {
+            "about": "Blender %s armature deformation (linear blend skinning) of the mesh at each key "
+                     "frame of each clip (action), world coordinates; vertex keys are position "
+                     "indices in the .dae" % bpy.app.version_string,
+            "fps": FPS,
+            "vertex_count": len(mesh_obj.data.vertices),
+            "clips": entries,
+        })
+
+
+def _write_json(path, doc):
+    import json
+    os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
+    with open(path, "w", encoding="utf-8", newline="\n") as fh:
+        json.dump(doc, fh, indent=1, sort_keys=True)
+        fh.write("\n")
+    print("wrote %s" % path)
+
+
+def rest_pose(arm_obj):
+    """Every pose bone at rest. An action sets only the channels it keys, so before another
+    action is evaluated the bones it leaves alone must be put back."""
+    for pb in arm_obj.pose.bones:
+        pb.location = (0.0, 0.0, 0.0)
+        pb.rotation_quaternion = (1.0, 0.0, 0.0, 0.0)
+        pb.rotation_euler = (0.0, 0.0, 0.0)
+        pb.scale = (1.0, 1.0, 1.0)
+
+
+def export_dae(path, sampling_rate, **overrides):
+    """Export the scene with EXPORT_OPTIONS (sampling_rate = key spacing in frames; overrides replace
+    single options) and pin the <created>/<modified> timestamps so a rebuild gives a byte-identical
+    file."""
     path = os.path.abspath(path)
     os.makedirs(os.path.dirname(path), exist_ok=True)
     bpy.context.scene.frame_set(0)
     # no object is in edit mode and nothing else than one armature + one mesh is in the scene
     kinds = sorted(o.type for o in bpy.context.scene.objects)
     assert kinds == ['ARMATURE', 'MESH'], kinds
-    result = bpy.ops.wm.collada_export(filepath=path, sampling_rate=sampling_rate, **EXPORT_OPTIONS)
+    options = dict(EXPORT_OPTIONS, **overrides)
+    result = bpy.ops.wm.collada_export(filepath=path, sampling_rate=sampling_rate, **options)
     if result != {'FINISHED'}:
         raise RuntimeError("collada_export failed: %r" % (result,))
     with open(path, "r", encoding="utf-8") as f:
@@ -317,6 +359,91 @@ def export_dae(path, sampling_rate):
     with open(path, "w", encoding="utf-8", newline="\n") as f:
         f.write(text)
     print("wrote %s (%d bytes)" % (path, os.path.getsize(path)))
+
+
+_LIBRARY_ANIMATIONS = re.compile(r"  <library_animations>\n.*?  </library_animations>\n", re.S)
+_CHANNEL_ANIMATION = re.compile(r'      <animation id="[^"]*" name="[^"]*">\n.*?\n      </animation>\n', re.S)
+
+
+def export_dae_clips(path, sampling_rate, arm_obj, clips):
+    """Export several actions of arm_obj into one .dae, one <animation_clip> per action.
+
+    clips: list of (action, key frames, names of the bones the action keys), in the order the
+    clips are to be written. Blender 3.4's COLLADA exporter writes the active action only: its
+    include_all_actions option does nothing, because the call of its animation clip exporter is
+    compiled out (io/collada/AnimationExporter.cpp, '#if 0'). So each action is exported alone,
+    with the scene's frame range set to the action's keys, and the files are joined here: the
+    document of the first export (the others must be the same outside <library_animations>),
+    and per action one <animation> holding the channel animations of the bones it keys (the
+    exporter also writes the bones it does not key, at rest, and the armature object's identity
+    transform; both are left out), named by an <animation_clip> from 0 to the action's last key.
+    """
+    scene = bpy.context.scene
+    frame_end = scene.frame_end
+    base = None
+    containers, clip_elements = [], []
+    with tempfile.TemporaryDirectory() as tmp:
+        for k, (action, frames, bones) in enumerate(clips):
+            arm_obj.animation_data.action = action
+            rest_pose(arm_obj)
+            scene.frame_end = frames[-1]
+            part = os.path.join(tmp, "clip%d.dae" % k)
+            export_dae(part, sampling_rate)
+            with open(part, encoding="utf-8") as f:
+                text = f.read()
+            library = _LIBRARY_ANIMATIONS.search(text)
+            outside = text[:library.start()] + text[library.end():]
+            if base is None:
+                base, at = outside, library.start()
+            elif outside != base:
+                raise RuntimeError("exporting action %s changed the document outside its animations" % action.name)
+            by_target = {}
+            for block in _CHANNEL_ANIMATION.findall(library.group(0)):
+                target = re.search(r'<channel source="[^"]*" target="([^"]*)"/>', block).group(1)
+                by_target[target] = block
+            container = "action_container-%s-%s" % (arm_obj.name, action.name)
+            kept = [by_target["%s_%s/transform" % (arm_obj.name, bone.name)]
+                    for bone in arm_obj.data.bones if bone.name in bones]
+            if len(kept) != len(bones):
+                raise RuntimeError("action %s: %d of its %d bones were exported" % (action.name, len(kept), len(bones)))
+            containers.append('    <animation id="%s" name="%s">\n%s    </animation>\n'
+                              % (container, action.name, "".join(kept)))
+            clip_elements.append('    <animation_clip id="%s-%s" name="%s" start="0" end="%g">\n'
+                                 '      <instance_animation url="#%s"/>\n'
+                                 '    </animation_clip>\n'
+                                 % (arm_obj.name, action.name, action.name, frames[-1] / FPS, container))
+    scene.frame_end = frame_end
+    libraries = ("  <library_animations>\n" + "".join(containers) + "  </library_animations>\n"
+                 "  <library_animation_clips>\n" + "".join(clip_elements) + "  </library_animation_clips>\n")
+    path = os.path.abspath(path)
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    with open(path, "w", encoding="utf-8", newline="\n") as f:
+        f.write(base[:at] + libraries + base[at:])
+    print("wrote %s (%d bytes, clips %s)" % (path, os.path.getsize(path), " ".join(a.name for a, _, _ in clips)))
+
+
+_CLIP = re.compile(r'    <animation_clip id="[^"]*" name="([^"]*)"[^>]*>\n      <instance_animation url="#([^"]*)"/>\n')
+_CLIP_CONTAINER = re.compile(r'    <animation id="([^"]*)" name="[^"]*">\n.*?\n    </animation>\n', re.S)
+_LIBRARY_CLIPS = re.compile(r"  <library_animation_clips>\n.*?  </library_animation_clips>\n", re.S)
+
+
+def dae_clip_names(path):
+    """Names of the clips export_dae_clips wrote into a .dae, in order; [] for a file without."""
+    with open(path, encoding="utf-8") as f:
+        return [name for name, _ in _CLIP.findall(f.read())]
+
+
+def write_single_clip_dae(path, clip, out):
+    """A copy of a .dae written by export_dae_clips with only one clip's animations and no
+    <library_animation_clips>. Blender's COLLADA importer knows no clips: it merges the channels of
+    all of them into one action; given this copy it reads back the one clip."""
+    with open(path, encoding="utf-8") as f:
+        text = f.read()
+    container = dict(_CLIP.findall(text))[clip]
+    text = _CLIP_CONTAINER.sub(lambda m: m.group(0) if m.group(1) == container else "", text)
+    text = _LIBRARY_CLIPS.sub("", text)
+    with open(out, "w", encoding="utf-8", newline="\n") as f:
+        f.write(text)
 
 
 def triangulate_like_collada(mesh_obj):
@@ -335,16 +462,17 @@ def triangulate_like_collada(mesh_obj):
     me.update()
 
 
-def export_glb(dae_path, frame_step):
+def export_glb(dae_path, frame_step, **overrides):
     """Export the same scene as a .glb beside the .dae (same name, .glb), sampling every
-    frame_step frames (= the key spacing) with GLTF_EXPORT_OPTIONS. The exporter writes no date,
-    so a rebuild gives a byte-identical file."""
+    frame_step frames (= the key spacing) with GLTF_EXPORT_OPTIONS (overrides replace single
+    options). The exporter writes no date, so a rebuild gives a byte-identical file."""
     path = os.path.splitext(os.path.abspath(dae_path))[0] + ".glb"
     bpy.context.scene.frame_set(0)
     kinds = sorted(o.type for o in bpy.context.scene.objects)
     assert kinds == ['ARMATURE', 'MESH'], kinds
     triangulate_like_collada(next(o for o in bpy.context.scene.objects if o.type == 'MESH'))
-    result = bpy.ops.export_scene.gltf(filepath=path, export_frame_step=frame_step, **GLTF_EXPORT_OPTIONS)
+    options = dict(GLTF_EXPORT_OPTIONS, **overrides)
+    result = bpy.ops.export_scene.gltf(filepath=path, export_frame_step=frame_step, **options)
     if result != {'FINISHED'}:
         raise RuntimeError("gltf export failed: %r" % (result,))
     print("wrote %s (%d bytes)" % (path, os.path.getsize(path)))

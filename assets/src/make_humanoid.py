@@ -214,17 +214,19 @@ def walk_pose(phase):
     return pose
 
 
-def main():
-    args = common.script_args()
-    if len(args) not in (1, 2):
-        raise SystemExit("usage: make_humanoid.py -- OUT.dae [REFERENCE.json]")
-    out = args[0]
-    reference = args[1] if len(args) == 2 else None
+def to_bone_axes(pb, q_arm, loc_arm):
+    """A pose given in armature axes (rotation relative to the parent, location offset) as the
+    pose bone's own quaternion and location, which are relative to the bone's rest axes."""
+    rest = pb.bone.matrix_local.to_quaternion()       # bone axes in armature space
+    q = rest.inverted() @ q_arm @ rest               # same rotation in bone axes
+    q.normalize()
+    loc = (rest.inverted() @ loc_arm) if loc_arm is not None else Vector()
+    return q, loc
 
-    cycle, step = 24, 3
-    frames = list(range(0, cycle + 1, step))   # 0, 3, ..., 24
-    common.reset_scene(frame_end=cycle)
 
+def build_character():
+    """The skinned humanoid in the current (empty) scene: mesh, material, armature with rolls,
+    heat-diffusion weights. Returns (mesh object, armature object)."""
     mesh_obj, p = build_mesh()
     common.add_material(mesh_obj, "BodyMaterial", (0.45, 0.6, 0.8, 1.0))
     arm_obj = common.create_armature(
@@ -238,23 +240,33 @@ def main():
 
     worst = common.skin_with_auto_weights(mesh_obj, arm_obj, max_influences=4)
     assert worst <= 4
-
-    action = common.make_action(arm_obj, "Walk")
     for pb in arm_obj.pose.bones:
         pb.rotation_mode = 'QUATERNION'
+    return mesh_obj, arm_obj
+
+
+def main():
+    args = common.script_args()
+    if len(args) not in (1, 2):
+        raise SystemExit("usage: make_humanoid.py -- OUT.dae [REFERENCE.json]")
+    out = args[0]
+    reference = args[1] if len(args) == 2 else None
+
+    cycle, step = 24, 3
+    frames = list(range(0, cycle + 1, step))   # 0, 3, ..., 24
+    common.reset_scene(frame_end=cycle)
+    mesh_obj, arm_obj = build_character()
+
+    action = common.make_action(arm_obj, "Walk")
     previous = {}
     for frame in frames:
         phase = (frame % cycle) / cycle    # the last key is computed exactly like the first
         pose = walk_pose(phase)
         for pb in arm_obj.pose.bones:
-            q_arm, loc_arm = pose[pb.name]
-            rest = pb.bone.matrix_local.to_quaternion()       # bone axes in armature space
-            q = rest.inverted() @ q_arm @ rest               # same rotation in bone axes
-            q.normalize()
+            q, loc = to_bone_axes(pb, *pose[pb.name])
             if pb.name in previous and previous[pb.name].dot(q) < 0:
                 q.negate()                                    # shortest path for Blender's own playback
             previous[pb.name] = q.copy()
-            loc = (rest.inverted() @ loc_arm) if loc_arm is not None else Vector()
             common.key_pose_bone(pb, frame, loc=loc, rot=q, scale=(1, 1, 1))
     common.finish_action(action)
 
@@ -267,4 +279,5 @@ def main():
     common.export_glb(out, frame_step=step)
 
 
-main()
+if __name__ == "__main__":   # make_mover.py imports the character from here
+    main()

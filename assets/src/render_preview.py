@@ -2,8 +2,12 @@
 
 Usage (from the repository root):
   blender --background --factory-startup --python-exit-code 1 \
-      --python assets/src/render_preview.py -- IN.dae OUT.png VIEW TIME_S [TIME_S ...]
+      --python assets/src/render_preview.py -- IN.dae OUT.png VIEW [--follow BONE] TIME_S [TIME_S ...]
 VIEW is front (oblique, from the front right and a bit above) or side (from +X, the figure's left).
+A time may name a clip of a file with several clips, CLIP@TIME_S (e.g. walk@0.25): that tile is
+rendered from a copy of the file holding that clip alone (Blender's importer knows no clips).
+--follow BONE moves the camera along with the bone's horizontal travel (root motion), so that a
+figure walking away from its start stays in the picture.
 
 Imports IN.dae with bpy.ops.wm.collada_import, then renders the imported scene with the Workbench
 engine at the given times (seconds) from a fixed oblique front view and writes them side by side
@@ -25,15 +29,13 @@ TILE = 240
 VIEWS = {"front": Vector((0.55, -1.0, 0.35)), "side": Vector((1.0, 0.0, 0.08))}
 
 
-def main():
-    args = common.script_args()
-    if len(args) < 4 or args[2] not in VIEWS:
-        raise SystemExit("usage: render_preview.py -- IN.dae OUT.png front|side TIME_S [TIME_S ...]")
-    src, out, view, times = args[0], args[1], args[2], [float(t) for t in args[3:]]
+def import_scene(path, view):
+    """Empty scene, the file imported, an orthographic camera framing its bounding box as
+    imported; returns (scene, camera, the camera's location before any following)."""
     bpy.ops.wm.read_factory_settings(use_empty=True)
     scene = bpy.context.scene
     scene.render.fps = common.FPS
-    bpy.ops.wm.collada_import(filepath=os.path.abspath(src))
+    bpy.ops.wm.collada_import(filepath=os.path.abspath(path))
     meshes = [o for o in scene.objects if o.type == 'MESH']
     assert meshes, "no mesh imported"
 
@@ -65,12 +67,45 @@ def main():
     scene.render.image_settings.file_format = 'PNG'
     scene.render.image_settings.color_mode = 'RGB'
     scene.render.image_settings.compression = 100
+    return scene, cam, cam.location.copy()
+
+
+def travel(scene, bone):
+    """How far the bone's head has moved horizontally from its rest place, in world axes."""
+    arm = next(o for o in scene.objects if o.type == 'ARMATURE')
+    pb = arm.pose.bones[bone]
+    moved = arm.matrix_world @ pb.head - arm.matrix_world @ pb.bone.head_local
+    return Vector((moved.x, moved.y, 0.0))
+
+
+def main():
+    args = common.script_args()
+    follow = None
+    if "--follow" in args:
+        at = args.index("--follow")
+        follow = args[at + 1]
+        args = args[:at] + args[at + 2:]
+    if len(args) < 4 or args[2] not in VIEWS:
+        raise SystemExit("usage: render_preview.py -- IN.dae OUT.png front|side [--follow BONE] "
+                         "TIME_S|CLIP@TIME_S [...]")
+    src, out, view = args[0], args[1], args[2]
+    tiles_wanted = [(a.split("@")[0], float(a.split("@")[1])) if "@" in a else (None, float(a)) for a in args[3:]]
 
     tiles = []
+    loaded = scene = cam = cam_home = None
     with tempfile.TemporaryDirectory() as tmp:
-        for i, t in enumerate(times):
+        for i, (clip, t) in enumerate(tiles_wanted):
+            if scene is None or clip != loaded:
+                path = src
+                if clip is not None:
+                    path = os.path.join(tmp, clip + ".dae")
+                    common.write_single_clip_dae(src, clip, path)
+                scene, cam, cam_home = import_scene(path, view)
+                loaded = clip
             frame = int(round(t * common.FPS))
             scene.frame_set(frame)
+            if follow is not None:
+                cam.location = cam_home + travel(scene, follow)
             scene.render.filepath = os.path.join(tmp, "tile%02d.png" % i)
             bpy.ops.render.render(write_still=True)
             img = bpy.data.images.load(scene.render.filepath)
@@ -90,7 +125,7 @@ def main():
     strip.file_format = 'PNG'
     os.makedirs(os.path.dirname(os.path.abspath(out)), exist_ok=True)
     strip.save_render(os.path.abspath(out), scene=scene)
-    print("wrote %s (%d frames: %s)" % (out, len(times), " ".join("%g" % t for t in times)))
+    print("wrote %s (%d frames: %s)" % (out, len(tiles), " ".join(args[3:])))
 
 
 main()
