@@ -11,6 +11,7 @@ import org.skinlab.desktop.viewer.Viewer;
 
 import imgui.ImDrawList;
 import imgui.ImGui;
+import imgui.flag.ImGuiComboFlags;
 import imgui.flag.ImGuiCond;
 import imgui.flag.ImGuiSliderFlags;
 import imgui.flag.ImGuiWindowFlags;
@@ -27,7 +28,12 @@ final class MixerPanel {
     /** The panel's window title. */
     static final String TITLE = "Mixer";
     private static final float ITEM_WIDTH = 150f;
-    private static final float PAD_SIZE = 160f;
+    /**
+     * Combos open on every entry, unscrolled (a skeleton's masks run to dozens): a script clicks an
+     * entry where it was drawn, which in a scrolled list may lie outside it.
+     */
+    private static final int COMBO = ImGuiComboFlags.HeightLargest;
+    private static final float PAD_SIZE = 140f;
     private static final float MARK_RADIUS = 3f;
     private static final float DOT_RADIUS = 6f;
     // ImGui's colours are ABGR.
@@ -133,7 +139,7 @@ final class MixerPanel {
     // ------------------------------------------------------------------------------ layers
 
     private void layers() {
-        Widgets.dim("Layers (bottom first)");
+        Widgets.dim("Layers, bottom first: clip, weight, mask");
         LayerChoice removed = null;
         for (int i = 0; i < controls.layers().size(); i++) {
             LayerChoice l = controls.layers().get(i);
@@ -162,9 +168,9 @@ final class MixerPanel {
     /** One layer's items; true when its remove button was clicked. */
     private boolean row(LayerChoice l, RowNames n) {
         ImGui.pushID(l.name());
-        Widgets.dim(l.name());
         ImGui.setNextItemWidth(ITEM_WIDTH);
-        if (ImGui.beginCombo("Clip", preview(l))) {
+        // The layer's name labels its clip.
+        if (ImGui.beginCombo(l.name(), preview(l), COMBO)) {
             for (int c = 0; c < controls.clipCount(); c++) {
                 if (ImGui.selectable(controls.clip(c), c == l.clip())) {
                     controls.play(l, c);
@@ -196,7 +202,7 @@ final class MixerPanel {
             ImGui.setTooltip("add the clip's difference from its first pose to the layers below, instead of replacing them");
         }
         ImGui.setNextItemWidth(ITEM_WIDTH);
-        if (ImGui.beginCombo("Mask", controls.maskLabel(l.mask()))) {
+        if (ImGui.beginCombo("Mask", controls.maskLabel(l.mask()), COMBO)) {
             for (int m = 0; m < controls.maskCount(); m++) {
                 if (ImGui.selectable(controls.maskLabel(m), m == l.mask())) {
                     controls.setMask(l, m);
@@ -231,7 +237,7 @@ final class MixerPanel {
     private void crossFade() {
         Widgets.dim("Cross-fade the base layer");
         ImGui.setNextItemWidth(ITEM_WIDTH);
-        if (ImGui.beginCombo("To", controls.clip(controls.fadeTarget()))) {
+        if (ImGui.beginCombo("To", controls.clip(controls.fadeTarget()), COMBO)) {
             for (int c = 0; c < controls.clipCount(); c++) {
                 if (ImGui.selectable(controls.clip(c), c == controls.fadeTarget())) {
                     controls.setFadeTarget(c);
@@ -280,6 +286,10 @@ final class MixerPanel {
         ImDrawList draw = ImGui.getWindowDrawList();
         draw.addRectFilled(x0, y0, x0 + PAD_SIZE, y0 + PAD_SIZE, PAD_BACKGROUND);
         draw.addRect(x0, y0, x0 + PAD_SIZE, y0 + PAD_SIZE, PAD_BORDER);
+        if (!pad.space().isPlanar()) {
+            // A 1-D space reads its parameter up the pad: its axis.
+            draw.addLine(x0 + PAD_SIZE / 2, y0, x0 + PAD_SIZE / 2, y0 + PAD_SIZE, PAD_BORDER);
+        }
         float half = ImGui.getFontSize() / 2f;
         for (int i = 0; i < pad.clipCount(); i++) {
             float x = x0 + pad.u(i) * PAD_SIZE;
