@@ -89,6 +89,7 @@ final class MixerPanel {
             viewer.setStatus(message);
         }
         if (!begin(layout)) {
+            layout.mixerTitleMeasured(ImGui.getWindowWidth());
             ImGui.end();
             return;
         }
@@ -126,8 +127,7 @@ final class MixerPanel {
 
     /** Under the numbers in their column, no taller than the window leaves; collapsed with the column. */
     private static boolean begin(PanelLayout layout) {
-        ImGui.setNextWindowPos(layout.mixerRight(ImGui.getIO().getDisplaySizeX()), layout.mixerTop(), ImGuiCond.Always,
-                1f, 0f);
+        ImGui.setNextWindowPos(layout.mixerRight(), layout.mixerTop(), ImGuiCond.Always, 1f, 0f);
         ImGui.setNextWindowSizeConstraints(0f, 0f, Float.MAX_VALUE, layout.mixerMaxHeight());
         if (layout.numbersChanged()) {
             ImGui.setNextWindowCollapsed(!layout.numbersOpen(), ImGuiCond.Always);

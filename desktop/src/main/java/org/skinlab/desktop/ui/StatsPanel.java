@@ -49,6 +49,7 @@ final class StatsPanel {
         LiveStats stats = scene.stats();
         refreshMeans(stats);
         if (!begin(layout)) {
+            layout.numbersTitleMeasured(ImGui.getWindowWidth());
             ImGui.end();
             return;
         }
