@@ -61,7 +61,8 @@ final class ScriptPlayer {
 
     /** Whether every step ran (or one failed). */
     boolean done() {
-        return failure != null || (next >= script.steps().size() && clickPhase < 0 && waitFrames == 0 && waitUntil == 0);
+        return failure != null
+                || (next >= script.steps().size() && clickPhase < 0 && waitFrames == 0 && waitUntil == 0);
     }
 
     /** The first failed expectation or step, or null. */
@@ -243,8 +244,8 @@ final class ScriptPlayer {
                 String text = String.join(" ", s.args().subList(2, s.args().size()));
                 String layer = readMixer(mixer -> MixerReadout.layer(mixer, index));
                 if (!layer.contains(text)) {
-                    throw new IllegalStateException("expected layer " + index + " to contain \"" + text + "\" but it reads \""
-                            + layer + "\"");
+                    throw new IllegalStateException("expected layer " + index + " to contain \"" + text
+                            + "\" but it reads \"" + layer + "\"");
                 }
                 break;
             default:

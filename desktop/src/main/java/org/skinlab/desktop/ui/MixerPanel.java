@@ -199,7 +199,8 @@ final class MixerPanel {
         }
         widgets.remember(n.additive);
         if (ImGui.isItemHovered()) {
-            ImGui.setTooltip("add the clip's difference from its first pose to the layers below, instead of replacing them");
+            ImGui.setTooltip("add the clip's difference from its first pose to the layers below, "
+                    + "instead of replacing them");
         }
         ImGui.setNextItemWidth(ITEM_WIDTH);
         if (ImGui.beginCombo("Mask", controls.maskLabel(l.mask()), COMBO)) {
@@ -260,7 +261,8 @@ final class MixerPanel {
         }
         widgets.remember("Synchronised");
         if (ImGui.isItemHovered()) {
-            ImGui.setTooltip("start the new clip in step (at the same phase) with the clip playing, as two gaits should");
+            ImGui.setTooltip("start the new clip in step (at the same phase) with the clip playing, "
+                    + "as two gaits should");
         }
         ImGui.sameLine();
         if (ImGui.button("Cross-fade")) {

@@ -78,8 +78,8 @@ class MixerWindowTest {
                 "expect layer 0 root motion",
                 "screenshot mixer.png",
                 "quit"));
-        ViewerWindowTest.Run r = ViewerWindowTest.skinlab("view", FIXTURE.toString(), "--gl-debug", "--size", "1280x900",
-                "--script", script.toString());
+        ViewerWindowTest.Run r = ViewerWindowTest.skinlab("view", FIXTURE.toString(), "--gl-debug", "--size",
+                "1280x900", "--script", script.toString());
         assertEquals(0, r.status(), r::toString);
         assertTrue(r.out().contains("no OpenGL errors reported"), r::toString);
         assertTrue(Files.size(dir.resolve("mixer.png")) > 1000);
@@ -92,7 +92,8 @@ class MixerWindowTest {
         ViewerWindowTest.Run r = ViewerWindowTest.skinlab("view", FIXTURE.toString(), "--hide-ui", "--size", "320x200",
                 "--script", script.toString());
         assertEquals(1, r.status(), r::toString);
-        assertTrue(r.err().contains("line 1: expected layer 3 to contain \"anything\" but it reads \"no layer 3 (the mixer has 1)\""),
+        assertTrue(r.err().contains(
+                "line 1: expected layer 3 to contain \"anything\" but it reads \"no layer 3 (the mixer has 1)\""),
                 r::toString);
     }
 
@@ -149,7 +150,8 @@ class MixerWindowTest {
             for (int y = 0; y < height; y++) {
                 for (int x = 0; x < width; x++) {
                     int i = 4 * ((height - 1 - y) * width + x);
-                    rgb[y * width + x] = (rgba.get(i) & 0xFF) << 16 | (rgba.get(i + 1) & 0xFF) << 8 | rgba.get(i + 2) & 0xFF;
+                    rgb[y * width + x] = (rgba.get(i) & 0xFF) << 16 | (rgba.get(i + 1) & 0xFF) << 8
+                            | rgba.get(i + 2) & 0xFF;
                 }
             }
         } finally {
