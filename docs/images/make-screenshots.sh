@@ -9,6 +9,8 @@ run() {
   if [ -n "${DISPLAY:-}" ]; then "$@"; else xvfb-run -a -s '-screen 0 1920x1080x24' "$@"; fi
 }
 run "$skinlab" view --size 1280x800 --script docs/images/viewer.txt
+# The mixer panel: humanoid-moves on the blend pad, with a wave and an additive lean (docs/desktop.md).
+run "$skinlab" view assets/characters/humanoid-moves.glb --size 1280x960 --yaw 35 --script docs/images/viewer-layers.txt
 run "$skinlab" view --size 1280x720 --split dqs --script docs/images/split.txt
 run "$skinlab" view assets/cylinders/cylinder-twist-high.dae --size 1280x720 --view difference \
   --script docs/images/difference.txt

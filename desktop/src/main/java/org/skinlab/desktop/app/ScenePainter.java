@@ -4,6 +4,7 @@ import static org.lwjgl.opengl.GL33C.*;
 
 import java.util.List;
 
+import org.joml.Matrix4f;
 import org.joml.Vector3f;
 import org.skinlab.desktop.render.DrawSettings;
 import org.skinlab.desktop.render.FloorGrid;
@@ -39,6 +40,13 @@ final class ScenePainter implements AutoCloseable {
     private final TextureCache textures = new TextureCache();
     private final DrawSettings draw = new DrawSettings();
     private final Vector3f floorCentre = new Vector3f();
+    /** Root motion's placement of the frame drawn, in the model's space. */
+    private final Matrix4f placement = new Matrix4f();
+    /** The inverse of the shown model's upright matrix, and scratch for the placement in the scene. */
+    private final Matrix4f uprightInverse = new Matrix4f();
+    private final Matrix4f moved = new Matrix4f();
+    /** How far root motion has taken the model's framed centre, in the scene. */
+    private final Vector3f travel = new Vector3f();
     private LoadedModel shown;
     private ModelRenderer renderer;
     private DifferenceProbe difference;
@@ -109,6 +117,7 @@ final class ScenePainter implements AutoCloseable {
         info.stats.clear();
         textures.clear();
         if (current != null) {
+            current.framing().upright().invert(uprightInverse);
             renderer = new ModelRenderer(shader, current.model(), current.mesh().geometries(), textures::texture);
             window.setTitle("skinlab - " + current.displayName());
             if (!textures.warnings().isEmpty()) {
@@ -129,7 +138,11 @@ final class ScenePainter implements AutoCloseable {
         glEnable(GL_DEPTH_TEST);
         glEnable(GL_BLEND);
         glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-        draw.model.set(shown.framing().upright());
+        // Root motion's placement is in the model's space: it comes after the upright fix.
+        draw.model.set(shown.framing().upright()).mul(frame.placement(placement));
+        if (ar == null) {
+            follow();
+        }
         // Both methods' volumes are live numbers in every view; the difference view adds the distance.
         if (difference == null) {
             difference = new DifferenceProbe(shown.rest(), shown.comparisons());
@@ -162,6 +175,16 @@ final class ScenePainter implements AutoCloseable {
         }
         info.gpuSkinned = !cpuFrame;
         glViewport(0, 0, width, height);
+    }
+
+    /**
+     * Keeps a model that root motion moves in view: the camera's target goes with its framed centre
+     * (the placement conjugated into the scene: upright * placement * upright^-1).
+     */
+    private void follow() {
+        Vector3f centre = shown.framing().centre();
+        moved.set(draw.model).mul(uprightInverse).transformPosition(centre, travel).sub(centre);
+        viewer.camera().follow(travel);
     }
 
     /**
@@ -202,8 +225,11 @@ final class ScenePainter implements AutoCloseable {
         draw.spacing = shown.framing().gridSpacing();
         draw.wireframe = viewer.settings().wireframe();
         if (withFloor) {
-            // The floor reaches a little beyond the model, or the grid of its copies.
+            // The floor reaches a little beyond the model, or the grid of its copies, and goes where
+            // root motion takes them by whole lines, so its lines stay where they are on the ground.
             float extent = 1.3f * shown.framing().gridSphere(draw.instances, draw.gridColumns, floorCentre);
+            float line = FloorGrid.lineSpacing(extent);
+            floorCentre.add(line * Math.round(travel.x / line), 0f, line * Math.round(travel.z / line));
             floor.draw(draw, floorCentre.x, floorCentre.z, extent);
         }
         glEnable(GL_DEPTH_TEST);

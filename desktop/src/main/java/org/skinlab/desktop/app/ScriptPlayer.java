@@ -2,6 +2,12 @@ package org.skinlab.desktop.app;
 
 import static org.lwjgl.glfw.GLFW.*;
 
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
+import java.util.concurrent.atomic.AtomicReference;
+import java.util.function.Function;
+
 import org.lwjgl.glfw.GLFWCursorEnterCallback;
 import org.lwjgl.PointerBuffer;
 import org.lwjgl.glfw.GLFWCursorPosCallback;
@@ -13,8 +19,10 @@ import org.lwjgl.system.MemoryStack;
 import org.skinlab.desktop.render.GlWindow;
 import org.skinlab.desktop.ui.UserInterface;
 import org.skinlab.desktop.viewer.LoadedModel;
+import org.skinlab.desktop.viewer.MixerReadout;
 import org.skinlab.desktop.viewer.Viewer;
 import org.skinlab.desktop.viewer.ViewerAction;
+import org.skinlab.mixer.Mixer;
 import org.skinlab.skinning.SkinningMethod;
 
 /**
@@ -25,6 +33,7 @@ import org.skinlab.skinning.SkinningMethod;
  */
 final class ScriptPlayer {
     private static final int LOAD_TIMEOUT_FRAMES = 60 * 60;
+    private static final long MIXER_TIMEOUT_SECONDS = 10;
 
     private final UiScript script;
     private final GlWindow window;
@@ -33,6 +42,8 @@ final class ScriptPlayer {
     private final UserInterface ui;
     private int next;
     private int waitFrames;
+    /** When a wait-seconds step ends (System.nanoTime()); 0 when none runs. */
+    private long waitUntil;
     /** Frames waited for a load; -1 when not waiting. A script starts once the first model is shown. */
     private int loadWait = 0;
     /** A click in progress: frames until press (2), release (0). */
@@ -50,7 +61,8 @@ final class ScriptPlayer {
 
     /** Whether every step ran (or one failed). */
     boolean done() {
-        return failure != null || (next >= script.steps().size() && clickPhase < 0 && waitFrames == 0);
+        return failure != null
+                || (next >= script.steps().size() && clickPhase < 0 && waitFrames == 0 && waitUntil == 0);
     }
 
     /** The first failed expectation or step, or null. */
@@ -82,6 +94,12 @@ final class ScriptPlayer {
             waitFrames--;
             return;
         }
+        if (waitUntil != 0) {
+            if (System.nanoTime() - waitUntil < 0) {
+                return;
+            }
+            waitUntil = 0;
+        }
         if (loadWait >= 0) {
             if (viewer.loading() && loadWait < LOAD_TIMEOUT_FRAMES) {
                 loadWait++;
@@ -95,7 +113,8 @@ final class ScriptPlayer {
             // Show what finished before the next steps look at it.
             viewer.update();
         }
-        while (next < script.steps().size() && failure == null && waitFrames == 0 && clickPhase < 0 && loadWait < 0) {
+        while (next < script.steps().size() && failure == null && waitFrames == 0 && waitUntil == 0 && clickPhase < 0
+                && loadWait < 0) {
             UiScript.Step step = script.steps().get(next++);
             try {
                 run(step);
@@ -171,6 +190,10 @@ final class ScriptPlayer {
             case "wait":
                 waitFrames = Integer.parseInt(s.arg(0));
                 return true;
+            case "wait-seconds":
+                // Never 0: 0 means no wait runs.
+                waitUntil = (System.nanoTime() + (long) (s.number(0) * 1e9)) | 1L;
+                return true;
             case "wait-loaded":
                 loadWait = 0;
                 return true;
@@ -210,9 +233,47 @@ final class ScriptPlayer {
                     throw new IllegalStateException("expected method " + value + " but it is " + m);
                 }
                 break;
+            case "layers":
+                String count = readMixer(mixer -> String.valueOf(mixer.layers().size()));
+                if (!count.equals(s.arg(1))) {
+                    throw new IllegalStateException("expected " + s.arg(1) + " layers but the mixer has " + count);
+                }
+                break;
+            case "layer":
+                int index = Integer.parseInt(s.arg(1));
+                String text = String.join(" ", s.args().subList(2, s.args().size()));
+                String layer = readMixer(mixer -> MixerReadout.layer(mixer, index));
+                if (!layer.contains(text)) {
+                    throw new IllegalStateException("expected layer " + index + " to contain \"" + text
+                            + "\" but it reads \"" + layer + "\"");
+                }
+                break;
             default:
                 throw new IllegalArgumentException("cannot expect " + s.arg(0));
         }
+    }
+
+    /**
+     * Reads the shown model's mixer where it lives, on the simulation thread: the window waits for
+     * the next step (the changes handed over before it run first).
+     */
+    private String readMixer(Function<Mixer, String> read) {
+        LoadedModel current = viewer.current();
+        if (current == null) {
+            throw new IllegalStateException("no model is shown");
+        }
+        AtomicReference<String> text = new AtomicReference<>();
+        try {
+            current.mesh().direct(m -> text.set(read.apply(m))).get(MIXER_TIMEOUT_SECONDS, TimeUnit.SECONDS);
+        } catch (ExecutionException e) {
+            throw new IllegalStateException("reading the mixer failed: " + e.getCause());
+        } catch (TimeoutException e) {
+            throw new IllegalStateException("the simulation did not step within " + MIXER_TIMEOUT_SECONDS + " s");
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new IllegalStateException("interrupted while reading the mixer");
+        }
+        return text.get();
     }
 
     private void key(int key, int mods) {

@@ -23,11 +23,14 @@ import java.util.Locale;
  * open PATH              open a file (as the dialog would)
  * seek SECONDS           the playback time
  * wait N                 let N frames pass
+ * wait-seconds S         let S seconds pass (frames go on: the animation plays)
  * wait-loaded            wait until the file being loaded is shown (at most 60 s)
  * screenshot PATH        write the window as PNG
  * expect mesh NAME       the model shown is NAME (as the toolbar names it)
  * expect status TEXT     the status line contains TEXT
  * expect method KEY      the skinning method (any key SkinningMethod.fromKey takes)
+ * expect layers N        the model's mixer has N layers (the base included)
+ * expect layer I TEXT    the mixer's layer I (0: the base) as MixerReadout words it contains TEXT
  * quit                   close the window
  * </pre>
  * The first step runs once the first model is shown. Paths are relative to the script's folder. Parsing checks every line before anything runs;
@@ -50,7 +53,7 @@ public final class UiScript {
     }
 
     private static final List<String> VERBS = List.of("action", "key", "click", "move", "drag", "scroll", "drop",
-            "open", "seek", "wait", "wait-loaded", "screenshot", "expect", "quit");
+            "open", "seek", "wait", "wait-seconds", "wait-loaded", "screenshot", "expect", "quit");
 
     private final Path file;
     private final List<Step> steps;
@@ -107,6 +110,8 @@ public final class UiScript {
                 case "seek":
                     s.number(0);
                     return n == 1 ? null : "needs one number";
+                case "wait-seconds":
+                    return n == 1 && s.number(0) >= 0 ? null : "needs a number of seconds >= 0";
                 case "wait":
                     return n == 1 && Integer.parseInt(s.arg(0)) >= 0 ? null : "needs a frame count >= 0";
                 case "key":
@@ -118,11 +123,7 @@ public final class UiScript {
                     }
                     return n == 1 || Keys.modifier(s.arg(1)) >= 0 ? null : "unknown modifier " + s.arg(1);
                 case "expect":
-                    if (n < 2) {
-                        return "needs what (mesh, status, method) and a value";
-                    }
-                    return List.of("mesh", "status", "method").contains(s.arg(0)) ? null
-                            : "can expect mesh, status or method, not " + s.arg(0);
+                    return expectation(s);
                 case "quit":
                 case "wait-loaded":
                     return n == 0 ? null : "takes no arguments";
@@ -131,6 +132,25 @@ public final class UiScript {
             }
         } catch (NumberFormatException | IndexOutOfBoundsException e) {
             return "needs numbers";
+        }
+    }
+
+    private static String expectation(Step s) {
+        int n = s.args().size();
+        if (n < 2) {
+            return "needs what (mesh, status, method, layers, layer) and a value";
+        }
+        switch (s.arg(0)) {
+            case "mesh":
+            case "status":
+            case "method":
+                return null;
+            case "layers":
+                return n == 2 && Integer.parseInt(s.arg(1)) >= 1 ? null : "needs a layer count >= 1";
+            case "layer":
+                return n >= 3 && Integer.parseInt(s.arg(1)) >= 0 ? null : "needs a layer index >= 0 and a text";
+            default:
+                return "can expect mesh, status, method, layers or layer, not " + s.arg(0);
         }
     }
 

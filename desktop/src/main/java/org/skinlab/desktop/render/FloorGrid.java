@@ -58,6 +58,14 @@ public final class FloorGrid implements AutoCloseable {
         color = program.uniform("uColor");
     }
 
+    /**
+     * The distance between neighbouring lines of a grid {@code halfExtent} wide each way: a grid
+     * that moves by whole multiples of it looks still (a travelling model's floor).
+     */
+    public static float lineSpacing(float halfExtent) {
+        return 2f * halfExtent / (LINES - 1);
+    }
+
     /** Draws the grid, {@code halfExtent} wide each way, under the scene point (x, z). */
     public void draw(DrawSettings s, float x, float z, float halfExtent) {
         program.use();

@@ -17,8 +17,8 @@ import imgui.glfw.ImGuiImplGlfw;
 
 /**
  * The Dear ImGui interface (imgui-java): the toolbar with every thesis function, the live numbers
- * and plots, the help panel and the status line, placed by a {@link PanelLayout} around the
- * scene. It owns the ImGui and ImPlot contexts and their
+ * and plots, the mixer panel, the help panel and the status line, placed by a {@link PanelLayout}
+ * around the scene. It owns the ImGui and ImPlot contexts and their
  * GLFW and OpenGL 3 backends; the GLFW backend chains to the callbacks installed before it, so
  * the scene still gets the keys and the mouse the interface does not use.
  */
@@ -29,6 +29,7 @@ public final class ImGuiUi implements UserInterface {
     private final Map<String, float[]> itemRects = new HashMap<>();
     private final ToolbarPanel toolbar;
     private final StatsPanel stats;
+    private final MixerPanel mixer;
     private final HelpPanel help;
     private final StatusLine status;
     private final PanelLayout layout = new PanelLayout();
@@ -50,6 +51,7 @@ public final class ImGuiUi implements UserInterface {
         Widgets widgets = new Widgets(itemRects, actions);
         toolbar = new ToolbarPanel(widgets);
         stats = new StatsPanel();
+        mixer = new MixerPanel(widgets);
         help = new HelpPanel();
         status = new StatusLine();
     }
@@ -73,6 +75,7 @@ public final class ImGuiUi implements UserInterface {
         ImGui.newFrame();
         toolbar.draw(scene, layout);
         stats.draw(scene, layout);
+        mixer.draw(scene, layout);
         if (scene.viewer().settings().help()) {
             help.draw(scene);
         }

@@ -49,6 +49,7 @@ final class StatsPanel {
         LiveStats stats = scene.stats();
         refreshMeans(stats);
         if (!begin(layout)) {
+            layout.numbersTitleMeasured(ImGui.getWindowWidth());
             ImGui.end();
             return;
         }
@@ -64,7 +65,7 @@ final class StatsPanel {
         Widgets.dim(drawn.of(scene.vertices()));
         ImGui.separator();
         comparison(scene, stats);
-        layout.numbersMeasured(ImGui.getWindowWidth());
+        layout.numbersMeasured(ImGui.getWindowWidth(), ImGui.getWindowHeight());
         ImGui.end();
     }
 

@@ -64,6 +64,7 @@ final class ToolbarPanel {
 
     void draw(SceneReadout scene, PanelLayout layout) {
         if (!begin(layout)) {
+            layout.toolbarTitleMeasured(ImGui.getWindowWidth());
             ImGui.end();
             return;
         }

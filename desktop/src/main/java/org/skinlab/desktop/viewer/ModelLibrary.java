@@ -37,7 +37,12 @@ public final class ModelLibrary {
                 throw new UncheckedIOException("cannot list the assets in " + this.assets, e);
             }
             Collections.sort(found);
+            // The default character first, and its twin with it, so that every .glb stays right after its .dae.
             Path def = this.assets.resolve(DEFAULT_ASSET);
+            Path twin = def.resolveSibling(def.getFileName().toString().replaceFirst("\\.dae$", ".glb"));
+            if (!twin.equals(def) && found.remove(twin)) {
+                found.add(0, twin);
+            }
             if (found.remove(def)) {
                 found.add(0, def);
             }

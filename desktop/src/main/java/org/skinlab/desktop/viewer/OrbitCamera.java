@@ -2,6 +2,7 @@ package org.skinlab.desktop.viewer;
 
 import org.joml.Matrix4f;
 import org.joml.Vector3f;
+import org.joml.Vector3fc;
 
 import org.skinlab.scene.ModelFraming;
 
@@ -38,6 +39,8 @@ public final class OrbitCamera {
      * frames, and a window can be resized).
      */
     private boolean fitting;
+    /** How far {@link #follow} has moved the target since it was last framed. */
+    private final Vector3f followed = new Vector3f();
 
     /**
      * Looks at the sphere from the front (or the {@link #setHomeYaw home yaw}), slightly above (or
@@ -50,6 +53,17 @@ public final class OrbitCamera {
         pitch = homePitch;
         distance = radius / (float) Math.sin(FOV_Y / 2) * 1.1f;
         fitting = true;
+        followed.zero();
+    }
+
+    /**
+     * Keeps a travelling model in view (root motion): moves the target by as much as
+     * {@code offset}, how far the model has moved from where it was framed, changed since the last
+     * call, so the user's orbit, pan and zoom stay as they are. Allocation-free.
+     */
+    public void follow(Vector3fc offset) {
+        target.add(offset.x() - followed.x, offset.y() - followed.y, offset.z() - followed.z);
+        followed.set(offset);
     }
 
     /** The angle (radians) around the vertical axis that framing looks from: 0 from +z, pi/2 from +x. */

@@ -99,11 +99,11 @@ class ViewerWindowTest {
         // Each asset's .glb twin comes right after its .dae.
         Path s = script(dir, "expect mesh characters/humanoid-walk.dae", "click Next mesh", "wait 4", "wait-loaded",
                 "expect mesh characters/humanoid-walk.glb", "key PAGE_DOWN", "wait-loaded",
-                "expect mesh creatures/tentacle-wave.dae", "key M", "expect method DQS", "drop bad.dae", "wait-loaded",
-                "wait 2", "expect status bad.dae", "expect mesh creatures/tentacle-wave.dae", "wait 5", "quit");
+                "expect mesh characters/humanoid-moves.dae", "key M", "expect method DQS", "drop bad.dae",
+                "wait-loaded", "wait 2", "expect status bad.dae", "expect mesh characters/humanoid-moves.dae", "wait 5", "quit");
         Run r = skinlab("view", "--size", "800x500", "--script", s.toString());
         assertEquals(0, r.status(), r::toString);
-        assertTrue(r.out().contains("model creatures/tentacle-wave.dae"), r::toString);
+        assertTrue(r.out().contains("model characters/humanoid-moves.dae"), r::toString);
     }
 
     @Test

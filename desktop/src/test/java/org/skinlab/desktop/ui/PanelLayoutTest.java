@@ -10,13 +10,19 @@ import org.junit.jupiter.api.Test;
 class PanelLayoutTest {
     private static final float TOOLBAR = 297f;
     private static final float NUMBERS = 316f;
+    private static final float NUMBERS_HEIGHT = 330f;
     private static final float TITLE = 19f;
     private static final float STATUS = 44f;
+    private static final float MIXER = 340f;
+    /** Title bars drawn collapsed. */
+    private static final float TOOLBAR_TITLE = 200f;
+    private static final float NUMBERS_TITLE = 170f;
+    private static final float MIXER_TITLE = 115f;
 
     private static PanelLayout measured() {
         PanelLayout layout = new PanelLayout();
         layout.toolbarMeasured(TOOLBAR);
-        layout.numbersMeasured(NUMBERS);
+        layout.numbersMeasured(NUMBERS, NUMBERS_HEIGHT);
         layout.statusMeasured(STATUS);
         return layout;
     }
@@ -62,5 +68,41 @@ class PanelLayoutTest {
         assertEquals(480f, layout.sceneRight());
         assertEquals(400 - STATUS - 2 * PanelLayout.MARGIN - (TITLE + PanelLayout.MARGIN), layout.sceneBottom());
         assertEquals(480 - 2 * PanelLayout.MARGIN, layout.statusWidth());
+    }
+
+    @Test
+    void theMixerLiesUnderTheNumbersInAColumnAsWideAsTheWiderOfThem() {
+        PanelLayout layout = measured();
+        layout.mixerMeasured(MIXER);
+        layout.decide(1280, 800, TITLE);
+        assertTrue(layout.numbersOpen());
+        assertEquals(1280 - MIXER - 2 * PanelLayout.MARGIN, layout.sceneRight());
+        assertEquals(NUMBERS_HEIGHT + 2 * PanelLayout.MARGIN, layout.mixerTop());
+        assertEquals(1280 - PanelLayout.MARGIN, layout.mixerRight());
+        // It scrolls beyond the window's bottom margin.
+        assertEquals(800 - NUMBERS_HEIGHT - 3 * PanelLayout.MARGIN, layout.mixerMaxHeight());
+    }
+
+    @Test
+    void collapsedTheMixersTitleGoesLeftOfTheNumbersOrInASecondRowUnderThem() {
+        PanelLayout layout = measured();
+        layout.mixerMeasured(MIXER);
+        layout.toolbarTitleMeasured(TOOLBAR_TITLE);
+        layout.numbersTitleMeasured(NUMBERS_TITLE);
+        layout.mixerTitleMeasured(MIXER_TITLE);
+        // Beside the open toolbar there is room for both titles in one row.
+        layout.decide(640, 480, TITLE);
+        assertTrue(layout.toolbarOpen());
+        assertFalse(layout.numbersOpen());
+        assertEquals(PanelLayout.MARGIN, layout.mixerTop());
+        assertEquals(640 - NUMBERS_TITLE - 2 * PanelLayout.MARGIN, layout.mixerRight());
+        assertTrue(layout.mixerRight() - MIXER_TITLE >= TOOLBAR + 2 * PanelLayout.MARGIN);
+        assertEquals(TITLE + 2 * PanelLayout.MARGIN, layout.sceneTop());
+        // Three titles do not fit in 480: the mixer's goes under the numbers' and the scene below both rows.
+        layout.decide(480, 400, TITLE);
+        assertFalse(layout.toolbarOpen());
+        assertEquals(TITLE + 2 * PanelLayout.MARGIN, layout.mixerTop());
+        assertEquals(480 - PanelLayout.MARGIN, layout.mixerRight());
+        assertEquals(2 * TITLE + 3 * PanelLayout.MARGIN, layout.sceneTop());
     }
 }
