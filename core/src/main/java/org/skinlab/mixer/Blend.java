@@ -47,7 +47,8 @@ final class Blend {
             wb = sign * u;
         } else {
             double angle = AnimationHelper.acosFast(cos);
-            double sin = AnimationHelper.sinFast(angle);
+            // sin(angle) from the cosine: exact enough below the nlerp threshold (1 - cos^2 >= 2e-7).
+            double sin = Math.sqrt(1 - cos * cos);
             wa = AnimationHelper.sinFast((1 - u) * angle) / sin;
             wb = sign * AnimationHelper.sinFast(u * angle) / sin;
         }

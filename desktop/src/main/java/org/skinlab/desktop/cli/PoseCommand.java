@@ -99,10 +99,11 @@ public final class PoseCommand implements Callable<Integer> {
                     + " each clip's start, looped)")
     List<Float> times = new ArrayList<>();
 
-    @Option(names = "--method", required = true, paramLabel = MethodKeys.KEYS, converter = MethodKeys.Converter.class,
-            description = "skinning method: lbs (linear blend), dqs (dual quaternion), cor (optimized centres of rotation),"
-                    + " bfdqs (bulge-free DQS), stbs-lbs or stbs-dqs (stretchable and twistable bones on LBS or DQS),"
-                    + " spline (spline-based)")
+    @Option(names = "--method", paramLabel = MethodKeys.KEYS, converter = MethodKeys.Converter.class,
+            defaultValue = "lbs",
+            description = "skinning method: lbs (linear blend, the default: what glTF viewers and three.js do), dqs"
+                    + " (dual quaternion), cor (optimized centres of rotation), bfdqs (bulge-free DQS), stbs-lbs or"
+                    + " stbs-dqs (stretchable and twistable bones on LBS or DQS), spline (spline-based)")
     SkinningMethod method;
 
     @Option(names = "--clip", paramLabel = "NAME", description = "the clip to play (default: the file's first clip)")

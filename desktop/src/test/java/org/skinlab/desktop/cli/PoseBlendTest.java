@@ -118,6 +118,19 @@ class PoseBlendTest {
     }
 
     @Test
+    void theIssuesCommandLineWorksAsWrittenWithLbsByDefault() throws Exception {
+        // skinlab pose FILE --time T[,T...] --blend CLIP=W[,CLIP=W...] [--additive CLIP=W[@REFTIME]] [--json OUT]
+        Path out = dir.resolve("blend.json");
+        Cli r = Cli.run("pose", INTERPOLATION, "--time", "0.2,0.7", "--blend", "clip-a=0.4,clip-b=0.6", "--additive",
+                "clip-b=0.5@0.1", "--json", out.toString());
+        assertEquals(ExitCodes.OK, r.status, r::toString);
+        JsonNode written = MAPPER.readTree(out.toFile());
+        assertEquals("lbs", written.get("method").asText().toLowerCase(java.util.Locale.ROOT));
+        assertEquals(MAPPER.readTree(MAPPER.writeValueAsString(json(INTERPOLATION, "--time", "0.2,0.7", "--blend",
+                "clip-a=0.4,clip-b=0.6", "--additive", "clip-b=0.5@0.1"))), written);
+    }
+
+    @Test
     void everyClipOfASetLoopsByItsOwnDuration() throws Exception {
         // At 2 s clip-a (1.6 s) is at 0.4 and clip-b (1.8 s) at 0.2: each clip of the one weighted
         // set, the other at weight 0, is the plain pose of its clip at its own wrapped time.

@@ -330,8 +330,10 @@ class PoseCommandTest {
         Cli method = Cli.run("pose", file, "--time", "1", "--method", "blend");
         assertEquals(ExitCodes.USAGE, method.status, method::toString);
         assertTrue(method.err.startsWith("Invalid value for option '--method'"), method::toString);
+        // Without --method: LBS, as the blend command line has it.
         Cli missing = Cli.run("pose", file, "--time", "1");
-        assertEquals(ExitCodes.USAGE, missing.status, missing::toString);
+        assertEquals(ExitCodes.OK, missing.status, missing::toString);
+        assertEquals(Cli.run("pose", file, "--time", "1", "--method", "lbs").out, missing.out);
         Cli interpolation = Cli.run("pose", file, "--time", "1", "--method", "lbs", "--interpolation", "cubic");
         assertEquals(ExitCodes.USAGE, interpolation.status, interpolation::toString);
     }
