@@ -1,7 +1,8 @@
 #!/bin/sh
 # Regenerates the committed three.js references of the glTF agreement test (ThreeJsAgreementTest;
 # docs/references.md, "glTF: three.js"): our fixtures, our assets' .glb and, when present, the
-# third-party samples (tools/gltf/gltf-samples.py says which and from where).
+# third-party samples (tools/gltf/gltf-samples.py says which and from where); then the blend
+# references (blend-reference.mjs) of humanoid-moves and, when present, Fox.
 #
 #   sh bench/threejs/make-gltf-references.sh        from the repository root, after `npm ci` in bench/threejs
 set -e
@@ -25,4 +26,13 @@ if [ -d "$samples" ]; then
     $ref --out "$fixtures/threejs/samples" $(find "$samples" -mindepth 2 -maxdepth 2 \( -name '*.gltf' -o -name '*.glb' \) | sort)
 else
     echo "no samples at $samples: their references are left as they are"
+fi
+# Clips blended by three.js' AnimationMixer (blend-reference.mjs, the cases in blend-cases.json),
+# each file's clips also posed alone against its single-clip reference above.
+blend="node $root/bench/threejs/blend-reference.mjs --out $root/assets/reference/threejs/blends"
+$blend --single "$root/assets/reference/threejs/humanoid-moves.glb.json.gz" "$root/assets/characters/humanoid-moves.glb"
+if [ -f "$samples/Fox/Fox-notexture.gltf" ]; then
+    $blend --single "$fixtures/threejs/samples/Fox-notexture.gltf.json.gz" "$samples/Fox/Fox-notexture.gltf"
+else
+    echo "no Fox at $samples/Fox: its blend reference is left as it is"
 fi

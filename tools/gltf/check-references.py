@@ -15,6 +15,11 @@ CUBICSPLINE (Hermite, rotations normalized) samplers on translation, rotation, s
 weights, clamped outside their keys; morph targets (POSITION) with mesh or node weights; skins
 (every JOINTS_n/WEIGHTS_n set, inverse bind matrices or identity) as sum(w * jointWorld * ibm * p);
 static meshes by their node's world matrix.
+
+The blend references (bench/threejs/blend-reference.mjs, assets/reference/threejs/blends/) are
+checked the same way, with the clips blended as that script's header says three.js' AnimationMixer
+blends them (weights, the rest value filling up to 1, additive deltas from a reference time): it
+shows that description is what three.js computes.
 """
 
 import base64
@@ -163,18 +168,32 @@ def sample(doc, sampler, path, t):
     return unit(v) if path == "rotation" else v
 
 
+def rest_state(doc):
+    """Every node's own translation, rotation, scale and morph weights, as the file gives them."""
+    return {i: {"translation": list(n.get("translation", [0, 0, 0])), "rotation": list(n.get("rotation", [0, 0, 0, 1])),
+                "scale": list(n.get("scale", [1, 1, 1])), "weights": n.get("weights")}
+            for i, n in enumerate(doc.json["nodes"])}
+
+
+def channel_values(doc, anim, t):
+    """{(node, path): value} of an animation's node channels at time t."""
+    return {(ch["target"]["node"], ch["target"]["path"]): sample(doc, anim["samplers"][ch["sampler"]], ch["target"]["path"], t)
+            for ch in anim["channels"] if "node" in ch["target"]}
+
+
 def positions(doc, clip_index, t, entries):
     """World positions of each reference entry (node, mesh, primitive) at time t of a clip."""
     t = struct.unpack("<f", struct.pack("<f", t))[0]  # times are float32, as the key times are
-    nodes = doc.json["nodes"]
-    state = {i: {"translation": list(n.get("translation", [0, 0, 0])), "rotation": list(n.get("rotation", [0, 0, 0, 1])),
-                 "scale": list(n.get("scale", [1, 1, 1])), "weights": n.get("weights")} for i, n in enumerate(nodes)}
+    state = rest_state(doc)
     if clip_index is not None:
-        anim = doc.json["animations"][clip_index]
-        for ch in anim["channels"]:
-            target = ch["target"]
-            if "node" in target:
-                state[target["node"]][target["path"]] = sample(doc, anim["samplers"][ch["sampler"]], target["path"], t)
+        for (node, path), value in channel_values(doc, doc.json["animations"][clip_index], t).items():
+            state[node][path] = value
+    return skinned(doc, state, entries)
+
+
+def skinned(doc, state, entries):
+    """World positions of each reference entry (node, mesh, primitive) with the nodes at `state`."""
+    nodes = doc.json["nodes"]
     parent = {c: i for i, n in enumerate(nodes) for c in n.get("children", [])}
     world = {}
 
@@ -233,6 +252,72 @@ def positions(doc, clip_index, t, entries):
     return result
 
 
+def qmul(a, b):
+    """Hamilton product of quaternions stored x, y, z, w."""
+    x0, y0, z0, w0 = a
+    x1, y1, z1, w1 = b
+    return [x0 * w1 + w0 * x1 + y0 * z1 - z0 * y1, y0 * w1 + w0 * y1 + z0 * x1 - x0 * z1,
+            z0 * w1 + w0 * z1 + x0 * y1 - y0 * x1, w0 * w1 - x0 * x1 - y0 * y1 - z0 * z1]
+
+
+def mix(path, a, b, u):
+    return slerp(a, b, u) if path == "rotation" else [x + (y - x) * u for x, y in zip(a, b)]
+
+
+def blended_state(doc, case):
+    """The nodes' values with the case's clips blended as three.js' AnimationMixer blends them
+    (bench/threejs/blend-reference.mjs says how): each clip at the case's time wrapped into its
+    own length; normal clips averaged by weight in the order listed, the rest value filling up to a
+    weight of 1; then the additive clips' deltas from their reference times, on the right."""
+    names = {a.get("name"): a for a in doc.json["animations"]}
+    state = rest_state(doc)
+
+    def at(anim, t):
+        length = max(doc.accessor(s["input"])[-1][0] for s in anim["samplers"])
+        return channel_values(doc, anim, t - length * math.floor(t / length))
+
+    blended = {}
+    for entry in case["blend"]:
+        for key, value in at(names[entry["clip"]], case["time"]).items():
+            if key not in blended:
+                blended[key] = (value, entry["weight"])
+            else:
+                so_far, weight = blended[key]
+                weight += entry["weight"]
+                blended[key] = (mix(key[1], so_far, value, entry["weight"] / weight), weight)
+    for (node, path), (value, weight) in blended.items():
+        state[node][path] = mix(path, value, state[node][path], 1 - weight) if weight < 1 else value
+    deltas = {}
+    for entry in case["additive"]:
+        anim = names[entry["clip"]]
+        reference = channel_values(doc, anim, entry["refTime"])
+        for key, value in at(anim, case["time"]).items():
+            if key[1] == "rotation":
+                r = reference[key]
+                d = qmul([-r[0], -r[1], -r[2], r[3]], value)
+                so_far = deltas.get(key, [0.0, 0.0, 0.0, 1.0])
+                deltas[key] = slerp(so_far, qmul(so_far, d), entry["weight"])
+            else:
+                so_far = deltas.get(key, [0.0] * len(value))
+                deltas[key] = [a + entry["weight"] * (v - r) for a, v, r in zip(so_far, value, reference[key])]
+    for (node, path), d in deltas.items():
+        state[node][path] = qmul(state[node][path], d) if path == "rotation" else [a + b for a, b in zip(state[node][path], d)]
+    return state
+
+
+def check_blends(path, reference):
+    ref = json.load(gzip.open(reference))
+    doc = Document(path)
+    d = 0.0
+    for case in ref["cases"]:
+        ours = [x for mesh in skinned(doc, blended_state(doc, case), ref["meshes"]) for x in mesh]
+        d = max(d, worst([ours], [case["positions"]]))
+    ok = d <= TOLERANCE * ref["size"]
+    print("%-28s %6d blends %.2e of the size  %s" % (os.path.basename(path), len(ref["cases"]), d / ref["size"],
+                                                    "ok" if ok else "DIFFERENT"))
+    return ok
+
+
 def worst(ours, theirs):
     d = 0.0
     for a, b in zip(ours, theirs):
@@ -278,12 +363,31 @@ def pairs():
             print("%-28s skipped: not in %s" % (name, samples))
 
 
+def blend_pairs():
+    """(file, reference) per blend reference: the file among our assets' .glb, else among the samples."""
+    folder = os.path.join(ROOT, "assets", "reference", "threejs", "blends")
+    samples = os.environ.get("SKINLAB_GLTF_SAMPLES") or os.path.join(ROOT, "..", "shared", "gltf-samples")
+    for ref in sorted(os.listdir(folder)) if os.path.isdir(folder) else []:
+        name = ref[:ref.index(".blends.json")]
+        found = [os.path.join(d, name) for d, _, files in sorted(os.walk(os.path.join(ROOT, "assets"))) if name in files]
+        if not found and os.path.isdir(samples):
+            found = [os.path.join(samples, d, name) for d in sorted(os.listdir(samples))
+                     if os.path.isfile(os.path.join(samples, d, name))]
+        if found:
+            yield found[0], os.path.join(folder, ref)
+        else:
+            print("%-28s blends skipped: not in assets/ nor %s" % (name, samples))
+
+
 def main():
     bad = 0
     for path, reference in pairs():
         if not os.path.exists(reference):
             reference = reference[:-3] if reference.endswith(".gz") else reference + ".gz"
         if not check(path, reference):
+            bad += 1
+    for path, reference in blend_pairs():
+        if not check_blends(path, reference):
             bad += 1
     return 1 if bad else 0
 

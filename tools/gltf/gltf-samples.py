@@ -29,6 +29,15 @@ rotation keys, increasing key times, weights summing to one, joints below 24). T
 Fox declares byteStride on its animation and inverse-bind-matrix views, which glTF-Validator
 reports as errors (fixed in later versions of the sample); the content is unaffected.
 
+Fox's blend reference (assets/reference/threejs/blends/Fox-notexture.gltf.blends.json.gz, made by
+bench/threejs/blend-reference.mjs) was computed from a binary copy of the same fox, bevyengine/bevy
+@0cb3eaef6755f9482f49f220e71b1afbb40cfdb4:assets/models/animated/Fox.glb (sha256
+d97044e701822bac5a62696459b27d7b375aada5de8574ed4362edbba94771f7, its JSON says so), because the
+session that made it could not fetch the text file: three.js poses that copy exactly as it poses
+Fox-notexture.gltf (every position of the single-clip reference, rest and the three clips at all
+45 times, equal to the last digit), and tools/gltf/check-references.py checks the blend reference
+against Fox-notexture.gltf itself where it is present.
+
 Samples wanted but not here, and why (see docs/references.md): CesiumMan (615 kB as embedded
 text), RecursiveSkeletons (940 kB), BrainStem (4 MB),
 InterpolationTest (binary buffers only): the only way to fetch them in the session that made this

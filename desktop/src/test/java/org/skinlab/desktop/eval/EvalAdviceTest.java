@@ -109,8 +109,13 @@ class EvalAdviceTest {
             assertEquals("proportional", s.at("/fit/model").asText(), "a cost per vertex never goes negative");
         }
         // Joints: every skinned asset's pose, joints as the files have them.
-        JsonNode humanoid = advice.at("/joints/files/0");
-        assertEquals("humanoid-walk.dae", humanoid.get("file").asText());
+        JsonNode humanoid = null;
+        for (JsonNode f : advice.at("/joints/files")) {
+            if (f.get("file").asText().equals("humanoid-walk.dae")) {
+                humanoid = f;
+            }
+        }
+        assertTrue(humanoid != null, "the walking character's joints are measured: " + advice.at("/joints/files"));
         assertEquals(19, humanoid.get("joints").asInt());
     }
 
