@@ -1,11 +1,16 @@
 package org.skinlab.mixer;
 
+import java.util.List;
+
 import org.joml.Quaternionf;
 import org.skinlab.animation.AnimationHelper;
+import org.skinlab.animation.LocalPose;
 
 /**
- * The two operations poses are blended with, on one node's translation, rotation and scale in
- * {@link org.skinlab.animation.LocalPose}'s layout. Holds scratch quaternions: one per thread.
+ * How a layer's clips combine onto the pose below it ({@link #layer}: the rules of
+ * {@link Layer} and {@link LayerMode}), through the two operations poses are blended with, on one
+ * node's translation, rotation and scale in {@link LocalPose}'s layout ({@link #mix},
+ * {@link #add}). Holds scratch: one per thread.
  *
  * <p>Rotations are slerped along the shorter arc as {@link AnimationHelper#slerp} does (the same
  * nlerp below its threshold), but with {@link AnimationHelper#acosFast} and
@@ -16,6 +21,62 @@ final class Blend {
     private final Quaternionf q1 = new Quaternionf();
     private final Quaternionf q2 = new Quaternionf();
     private final float[] delta = new float[4];
+    /** One node's accumulation of a layer's clips. */
+    private final float[] accumulated = new float[LocalPose.STRIDE];
+
+    /**
+     * Blends a layer's clips ({@code active}, each sampled into its local pose) onto {@code dest},
+     * node by node, with the layer's weight times the mask's ({@code mask} null: 1 everywhere).
+     */
+    void layer(List<ClipState> active, LayerMode mode, double weight, float[] mask, float[] rest, float[] dest) {
+        int nodes = rest.length / LocalPose.STRIDE;
+        float[] acc = accumulated;
+        for (int j = 0; j < nodes; j++) {
+            double m = mask == null ? weight : weight * mask[j];
+            if (m == 0) {
+                continue;
+            }
+            int o = LocalPose.STRIDE * j;
+            if (mode == LayerMode.ADDITIVE) {
+                for (int i = 0; i < active.size(); i++) {
+                    ClipState s = active.get(i);
+                    if (s.weight > 0 && s.clip.sampler.animates(j)) {
+                        add(s.local.array(), o, s.reference.array(), o, s.weight * m, dest, o);
+                    }
+                }
+                continue;
+            }
+            if (active.size() == 1) {
+                // One clip: no accumulation; the rest fills what its weight leaves.
+                ClipState s = active.get(0);
+                if (s.weight >= 1 && s.clip.sampler.animates(j)) {
+                    mix(dest, o, s.local.array(), o, m, dest, o);
+                    continue;
+                }
+            }
+            double cumulative = 0;
+            for (int i = 0; i < active.size(); i++) {
+                ClipState s = active.get(i);
+                if (!(s.weight > 0) || !s.clip.sampler.animates(j)) {
+                    continue;
+                }
+                if (cumulative == 0) {
+                    System.arraycopy(s.local.array(), o, acc, 0, LocalPose.STRIDE);
+                    cumulative = s.weight;
+                } else {
+                    cumulative += s.weight;
+                    mix(acc, 0, s.local.array(), o, s.weight / cumulative, acc, 0);
+                }
+            }
+            if (cumulative == 0) {
+                continue;
+            }
+            if (cumulative < 1) {
+                mix(acc, 0, rest, o, 1 - cumulative, acc, 0);
+            }
+            mix(dest, o, acc, 0, m, dest, o);
+        }
+    }
 
     /**
      * {@code dest = a + t (b - a)} for translation and scale, the slerp from a to b along the

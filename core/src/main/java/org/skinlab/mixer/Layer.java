@@ -42,17 +42,12 @@ public final class Layer {
     private boolean synchronised;
     private double phase;
     // The running cross-fade.
-    private ClipState fadeTarget;
-    private double fadeSeconds;
-    private double fadeElapsed;
-    private FadeCurve fadeCurve = FadeCurve.LINEAR;
+    private CrossFade fade;
     // The blend space played, or null.
     private BlendSpace space;
     private double[] spaceWeights;
     private double spaceX;
     private double spaceY;
-    /** Per node: the weight of the clips that animate it, while evaluating. */
-    private final float[] accumulated = new float[LocalPose.STRIDE];
 
     Layer(Mixer mixer, String name) {
         this.mixer = mixer;
@@ -151,13 +146,7 @@ public final class Layer {
         }
         this.synchronised = synchronised;
         this.phase = inPhase;
-        for (ClipState s : active) {
-            s.fadeFrom = s.weight;
-        }
-        fadeTarget = target;
-        fadeSeconds = seconds;
-        fadeElapsed = 0;
-        fadeCurve = curve;
+        fade = new CrossFade(target, seconds, curve, active);
         if (seconds == 0) {
             finishFade();
         } else {
@@ -222,7 +211,7 @@ public final class Layer {
     }
 
     private void stopFadeAndSpace() {
-        fadeTarget = null;
+        fade = null;
         space = null;
     }
 
@@ -415,7 +404,7 @@ public final class Layer {
      * @return true from {@link #crossFade} until its duration has passed
      */
     public boolean isFading() {
-        return fadeTarget != null;
+        return fade != null;
     }
 
     /**
@@ -455,14 +444,7 @@ public final class Layer {
 
     /** Advances the fade and the clocks by {@code dt} seconds; root motion into each state (null: none). */
     void advance(double dt, RootMotion rootMotion) {
-        if (fadeTarget != null) {
-            fadeElapsed += dt;
-            double share = fadeCurve.share(fadeElapsed / fadeSeconds);
-            for (int i = 0; i < active.size(); i++) {
-                ClipState s = active.get(i);
-                s.weight = s.fadeFrom * (1 - share) + (s == fadeTarget ? share : 0);
-            }
-        }
+        boolean faded = fade != null && fade.advance(dt, active);
         double step = dt * speed;
         if (synchronised) {
             double sw = 0;
@@ -494,14 +476,14 @@ public final class Layer {
                 s.elapsed = s.clip.sampler.wrapElapsed(s.elapsed + step, wrap);
             }
         }
-        if (fadeTarget != null && fadeElapsed >= fadeSeconds) {
+        if (faded) {
             finishFade();
         }
     }
 
     private void finishFade() {
-        ClipState target = fadeTarget;
-        fadeTarget = null;
+        ClipState target = fade.target;
+        fade = null;
         active.clear();
         target.weight = 1;
         active.add(target);
@@ -540,59 +522,13 @@ public final class Layer {
 
     /** Blends this layer onto {@code dest}, node by node. */
     void blendOnto(float[] dest, float[] rest, Blend blend) {
-        int nodes = rest.length / LocalPose.STRIDE;
-        float[] acc = accumulated;
-        for (int j = 0; j < nodes; j++) {
-            double m = mask == null ? weight : weight * mask.weights()[j];
-            if (m == 0) {
-                continue;
-            }
-            int o = LocalPose.STRIDE * j;
-            if (mode == LayerMode.ADDITIVE) {
-                for (int i = 0; i < active.size(); i++) {
-                    ClipState s = active.get(i);
-                    if (s.weight > 0 && s.clip.sampler.animates(j)) {
-                        blend.add(s.local.array(), o, s.reference.array(), o, s.weight * m, dest, o);
-                    }
-                }
-                continue;
-            }
-            if (active.size() == 1) {
-                // One clip: no accumulation; the rest fills what its weight leaves.
-                ClipState s = active.get(0);
-                if (s.weight >= 1 && s.clip.sampler.animates(j)) {
-                    blend.mix(dest, o, s.local.array(), o, m, dest, o);
-                    continue;
-                }
-            }
-            double cumulative = 0;
-            for (int i = 0; i < active.size(); i++) {
-                ClipState s = active.get(i);
-                if (!(s.weight > 0) || !s.clip.sampler.animates(j)) {
-                    continue;
-                }
-                if (cumulative == 0) {
-                    System.arraycopy(s.local.array(), o, acc, 0, LocalPose.STRIDE);
-                    cumulative = s.weight;
-                } else {
-                    cumulative += s.weight;
-                    blend.mix(acc, 0, s.local.array(), o, s.weight / cumulative, acc, 0);
-                }
-            }
-            if (cumulative == 0) {
-                continue;
-            }
-            if (cumulative < 1) {
-                blend.mix(acc, 0, rest, o, 1 - cumulative, acc, 0);
-            }
-            blend.mix(dest, o, acc, 0, m, dest, o);
-        }
+        blend.layer(active, mode, weight, mask == null ? null : mask.weights(), rest, dest);
     }
 
     @Override
     public String toString() {
         return "Layer[" + name + ", " + mode + ", weight " + weight + ", " + clipWeights()
-                + (space != null ? ", " + space : "") + (fadeTarget != null ? ", fading to " + fadeTarget.clip.name() : "")
+                + (space != null ? ", " + space : "") + (fade != null ? ", fading to " + fade.target.clip.name() : "")
                 + "]";
     }
 }
