@@ -21,6 +21,9 @@ final class MixerClip {
     final double duration;
     /** Set by the simulation thread only. */
     boolean rootMotion;
+    /** The root's horizontal position and heading at the clip's start (RootMotion fills it once). */
+    final double[] rootStart = new double[4];
+    boolean rootStartKnown;
 
     MixerClip(Skeleton skeleton, AnimationClip clip, int root) {
         this.clip = clip;

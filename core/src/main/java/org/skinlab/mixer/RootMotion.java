@@ -45,7 +45,6 @@ final class RootMotion {
     /** Scratch: the root's horizontal position and heading at two times. */
     private final double[] a = new double[4];
     private final double[] b = new double[4];
-    private final double[] start = new double[4];
     /** Scratch for sampling the root alone at any time. */
     private final Pose values;
     private final LocalPose local;
@@ -77,9 +76,9 @@ final class RootMotion {
         if (c.rootSampler == null || !(d > 0) || step == 0) {
             return;
         }
-        sample(c, 0, start);
+        double[] start = startOf(c);
         if (wrap == WrapMode.CLAMP) {
-            segment(s, e0, Math.max(0, Math.min(d, e0 + step)), m);
+            segment(s, e0, Math.max(0, Math.min(d, e0 + step)), start, m);
             return;
         }
         double e = e0;
@@ -87,12 +86,12 @@ final class RootMotion {
         for (int loops = 0; loops <= MAX_LOOPS_PER_STEP && left != 0; loops++) {
             if (left > 0) {
                 double to = Math.min(d, e + left);
-                segment(s, e, to, m);
+                segment(s, e, to, start, m);
                 left -= to - e;
                 e = to >= d ? 0 : to;
             } else {
                 double to = Math.max(0, e + left);
-                segment(s, e, to, m);
+                segment(s, e, to, start, m);
                 left -= to - e;
                 e = to <= 0 ? d : to;
             }
@@ -100,7 +99,7 @@ final class RootMotion {
     }
 
     /** Composes the move from elapsed {@code from} to {@code to} (one pass) onto {@code m}. */
-    private void segment(ClipState s, double from, double to, double[] m) {
+    private void segment(ClipState s, double from, double to, double[] start, double[] m) {
         if (from == to) {
             return;
         }
@@ -114,6 +113,15 @@ final class RootMotion {
         m[1] += w[1];
         m[2] += w[2];
         m[3] += wrapAngle(b[3] - a[3]);
+    }
+
+    /** The root's horizontal position and heading at the clip's start, sampled once per clip. */
+    private double[] startOf(MixerClip c) {
+        if (!c.rootStartKnown) {
+            sample(c, 0, c.rootStart);
+            c.rootStartKnown = true;
+        }
+        return c.rootStart;
     }
 
     /** The root's horizontal position and heading at elapsed time {@code e} of the clip. */
@@ -148,7 +156,7 @@ final class RootMotion {
         if (c.rootSampler == null) {
             return;
         }
-        sample(c, 0, start);
+        double[] start = startOf(c);
         int o = LocalPose.STRIDE * root;
         read(trs, o, a);
         trs[o] += (float) (start[0] - a[0]);
