@@ -22,6 +22,7 @@ import {fileURLToPath} from 'node:url';
 import {launch} from './support/browser.mjs';
 import {comparePoses} from './support/compare.mjs';
 import {firstClipRange, gltfJson} from './support/glb.mjs';
+import {writeLightestFirst} from './support/permute.mjs';
 import {gpuPoses} from './positions.mjs';
 
 const REPO = resolve(dirname(fileURLToPath(import.meta.url)), '..', '..', '..');
@@ -103,6 +104,22 @@ describe('GPU positions agree with skinlab pose', {skip: SKIP}, () => {
             }
         });
     }
+
+    test('a file whose JOINTS_0 are not sorted heaviest first (lightest first here) agrees too', async () => {
+        const source = join(out, 'cylinder-twist-full.glb');
+        assert.ok(existsSync(source), `${source} was not exported`);
+        const permuted = join(out, 'cylinder-twist-full.lightest-first.glb');
+        assert.ok(writeLightestFirst(source, permuted) > 100, 'few vertices reordered');
+        const range = firstClipRange(permuted);
+        const times = FRACTIONS.map(f => range.start + f * (range.end - range.start));
+        for (const method of ['dqs', 'cor']) {
+            const file = join(out, `cylinder-twist-full.lightest-first.${method}.skinlab.json`);
+            skinlab('pose', permuted, '--time', times.join(','), '--method', method, '--json', file);
+            const r = comparePoses(JSON.parse(readFileSync(file, 'utf8')), await gpuPoses(permuted, {method, times, browser}));
+            results.push({method, file: 'cylinder-twist-full, lightest first', ...r, fromLbs: NaN});
+            assert.ok(r.relative <= TOLERANCE, `${method}: ${r.relative} of the size at ${r.where}`);
+        }
+    });
 
     test('the comparison can tell the methods apart: DQS and CoR move some asset far beyond the tolerance', () => {
         const apart = results.filter(r => r.method !== 'lbs' && r.fromLbs > 1000 * TOLERANCE);

@@ -12,7 +12,7 @@ import {setSkinningMethod} from '../../src/index.js';
 const CAPTURED = 'skinlabCaptured';
 
 /** A WebGL2 context whose programs with the captured output are linked for transform feedback. */
-function captureContext() {
+export function captureContext() {
     const canvas = document.createElement('canvas');
     canvas.width = canvas.height = 4;
     const gl = canvas.getContext('webgl2');
@@ -103,7 +103,7 @@ function feedback(gl, drawArrays, count) {
 }
 
 /** Adds the captured output to the material's vertex shader (after the add-on's rewrite, if any). */
-function withCapture(material) {
+export function withCapture(material) {
     if (material.userData.skinlabCapture) {
         return;
     }
