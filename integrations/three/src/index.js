@@ -155,19 +155,19 @@ class MeshSkinning {
         const bones = skeleton.boneMatrices;
         const b = this.boneMatrix;
         for (let j = 0; j < joints; j++) {
-            let e;
-            if (identity) {
-                e = bones.subarray(16 * j, 16 * j + 16);
-            } else {
-                b.fromArray(bones, 16 * j).premultiply(mesh.bindMatrixInverse).multiply(mesh.bindMatrix);
+            let e = bones;
+            let at = 16 * j;
+            if (!identity) {
+                b.fromArray(bones, at).premultiply(mesh.bindMatrixInverse).multiply(mesh.bindMatrix);
                 e = b.elements;
+                at = 0;
             }
             const o = 12 * j;
             for (let r = 0; r < 3; r++) {
-                this.matrices[o + 4 * r] = e[r];
-                this.matrices[o + 4 * r + 1] = e[4 + r];
-                this.matrices[o + 4 * r + 2] = e[8 + r];
-                this.matrices[o + 4 * r + 3] = e[12 + r];
+                this.matrices[o + 4 * r] = e[at + r];
+                this.matrices[o + 4 * r + 1] = e[at + 4 + r];
+                this.matrices[o + 4 * r + 2] = e[at + 8 + r];
+                this.matrices[o + 4 * r + 3] = e[at + 12 + r];
             }
         }
         const flags = splitPalette(this.matrices, this.pivots, this.texels);

@@ -42,6 +42,11 @@ export function bindPivots(bindMatrices) {
     return pivots;
 }
 
+/** Scratch of {@link splitPalette}: one joint's D, S and rotation quaternion. */
+const D = new Float64Array(12);
+const S = new Float64Array(12);
+const Q = new Float64Array(4);
+
 /**
  * Splits every joint's matrix into D and S and writes the palette's texels.
  *
@@ -56,9 +61,9 @@ export function splitPalette(matrices, pivots, texels) {
     let hasScale = false;
     let matricesMirror = false;
     let scalesMirror = false;
-    const d = new Float64Array(12);
-    const s = new Float64Array(12);
-    const q = new Float64Array(4);
+    const d = D;
+    const s = S;
+    const q = Q;
     for (let j = 0; j < joints; j++) {
         const o = 12 * j;
         const scaled = split(matrices, pivots, o, d, s);
@@ -90,50 +95,61 @@ export function splitPalette(matrices, pivots, texels) {
     return {hasScale, matricesMirror, scalesMirror: hasScale && scalesMirror};
 }
 
-/** Joint at offset o of matrices into D and S; true when it has a scale part (ScaleSplit.split). */
+/** Scratch of the split: the posed frame's linear part and its rotation, as columns. */
+const X = [[0, 0, 0], [0, 0, 0], [0, 0, 0]];
+const XT = [0, 0, 0];
+
+/**
+ * Joint at offset o of matrices into D and S; true when it has a scale part (ScaleSplit.split).
+ * Allocation-free for rigid joints (the common case); a scaled joint allocates a few small arrays.
+ */
 function split(m, p, o, d, s) {
     // Xl = Ml Bl, the posed joint frame's linear part, as columns.
-    const x = [[0, 0, 0], [0, 0, 0], [0, 0, 0]];
     for (let c = 0; c < 3; c++) {
         for (let r = 0; r < 3; r++) {
-            x[c][r] = m[o + 4 * r] * p[o + c] + m[o + 4 * r + 1] * p[o + 4 + c] + m[o + 4 * r + 2] * p[o + 8 + c];
+            X[c][r] = m[o + 4 * r] * p[o + c] + m[o + 4 * r + 1] * p[o + 4 + c] + m[o + 4 * r + 2] * p[o + 8 + c];
         }
     }
-    if (isRigid(x)) {
+    if (isRigid(X)) {
         for (let i = 0; i < 12; i++) {
             d[i] = m[o + i];
             s[i] = i === 0 || i === 5 || i === 10 ? 1 : 0;
         }
         return false;
     }
-    const rot = boneAxisFrame(x); // columns
+    const rot = boneAxisFrame(X); // columns
     // D = [R Bl^T | x - Dl b], x the translation of X = M B.
-    const xt = [0, 0, 0];
     for (let r = 0; r < 3; r++) {
-        xt[r] = m[o + 4 * r] * p[o + 3] + m[o + 4 * r + 1] * p[o + 7] + m[o + 4 * r + 2] * p[o + 11] + m[o + 4 * r + 3];
+        XT[r] = m[o + 4 * r] * p[o + 3] + m[o + 4 * r + 1] * p[o + 7] + m[o + 4 * r + 2] * p[o + 11] + m[o + 4 * r + 3];
     }
     for (let r = 0; r < 3; r++) {
         for (let c = 0; c < 3; c++) {
             // (R Bl^T)[r][c] = sum_k R[r][k] Bl[c][k]
             d[4 * r + c] = rot[0][r] * p[o + 4 * c] + rot[1][r] * p[o + 4 * c + 1] + rot[2][r] * p[o + 4 * c + 2];
         }
-        d[4 * r + 3] = xt[r] - (d[4 * r] * p[o + 3] + d[4 * r + 1] * p[o + 7] + d[4 * r + 2] * p[o + 11]);
+        d[4 * r + 3] = XT[r] - (d[4 * r] * p[o + 3] + d[4 * r + 1] * p[o + 7] + d[4 * r + 2] * p[o + 11]);
     }
     // S = [Dl^T Ml | Dl^T (m - d)].
-    const e = [m[o + 3] - d[3], m[o + 7] - d[7], m[o + 11] - d[11]];
+    const e0 = m[o + 3] - d[3];
+    const e1 = m[o + 7] - d[7];
+    const e2 = m[o + 11] - d[11];
     for (let r = 0; r < 3; r++) {
         for (let c = 0; c < 3; c++) {
             s[4 * r + c] = d[r] * m[o + c] + d[4 + r] * m[o + 4 + c] + d[8 + r] * m[o + 8 + c];
         }
-        s[4 * r + 3] = d[r] * e[0] + d[4 + r] * e[1] + d[8 + r] * e[2];
+        s[4 * r + 3] = d[r] * e0 + d[4 + r] * e1 + d[8 + r] * e2;
     }
     return true;
 }
 
 /** Unit columns to within Blender's 1e-4 and no reflection (ScaleSplit.isRigid). */
 function isRigid(x) {
-    const l = x.map(c => c[0] * c[0] + c[1] * c[1] + c[2] * c[2] - 1);
-    return !(l[0] * l[0] + l[1] * l[1] + l[2] * l[2] > 4e-8 || dot(x[0], cross(x[1], x[2])) < 0);
+    const [a, b, c] = x;
+    const l0 = a[0] * a[0] + a[1] * a[1] + a[2] * a[2] - 1;
+    const l1 = b[0] * b[0] + b[1] * b[1] + b[2] * b[2] - 1;
+    const l2 = c[0] * c[0] + c[1] * c[1] + c[2] * c[2] - 1;
+    const det = a[0] * (b[1] * c[2] - b[2] * c[1]) + a[1] * (b[2] * c[0] - b[0] * c[2]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
+    return !(l0 * l0 + l1 * l1 + l2 * l2 > 4e-8 || det < 0);
 }
 
 /** The rotation keeping the frame's Y axis (Blender's orthogonalize_m4 with axis 1), as columns. */

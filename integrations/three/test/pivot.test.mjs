@@ -70,4 +70,18 @@ describe('the DQS pivot is the heaviest influence', {skip: SKIP}, () => {
             assert.ok(Math.hypot(...got.map((v, i) => v - want[i])) < 1e-5, `${method}: GPU ${got}, expected ${want}`);
         });
     }
+
+    test('a mesh bound away from the origin (bindMatrix not the identity) moves rigidly with its one joint alike in'
+        + ' LBS, DQS and CoR', async () => {
+        const points = [0, 0, 0, 1, 0, 0, 0, 2, 0, -0.5, 0.3, 0.8];
+        const run = m => page.evaluate((method, p) => window.boundAwayCase(method, p), m, points);
+        const lbs = await run('lbs');
+        const rest = [2, -1, 0.5];
+        assert.ok(Math.hypot(lbs[0] - rest[0], lbs[1] - rest[1], lbs[2] - rest[2]) > 0.5, 'the joint moved the mesh');
+        for (const method of ['dqs', 'cor']) {
+            const got = await run(method);
+            const worst = Math.max(...got.map((v, i) => Math.abs(v - lbs[i])));
+            assert.ok(worst < 1e-5, `${method}: ${got} vs three's LBS ${lbs}`);
+        }
+    });
 });

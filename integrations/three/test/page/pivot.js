@@ -35,3 +35,39 @@ export function pivotCase(method, point, anglesDegrees, weights) {
     const camera = new THREE.PerspectiveCamera();
     return [...context.capture(1, () => renderer.render(mesh, camera))];
 }
+
+/**
+ * A mesh bound where it stands, away from the origin and turned (three's SkinnedMesh.bind with
+ * its world matrix, so bindMatrix is not the identity), its one bone then turned and moved: every
+ * vertex on that one joint moves rigidly, so LBS, DQS and CoR must put it at the same place.
+ * Returns the world positions of the given points under {@code method}.
+ */
+export function boundAwayCase(method, points) {
+    const context = captureContext();
+    const renderer = new THREE.WebGLRenderer({canvas: context.canvas, context: context.gl});
+    const count = points.length / 3;
+    const geometry = new THREE.BufferGeometry();
+    geometry.setAttribute('position', new THREE.Float32BufferAttribute(points, 3));
+    geometry.setAttribute('skinIndex', new THREE.Uint16BufferAttribute(new Array(4 * count).fill(0), 4));
+    geometry.setAttribute('skinWeight', new THREE.Float32BufferAttribute(
+        Array.from({length: 4 * count}, (_, i) => (i % 4 === 0 ? 1 : 0)), 4));
+    geometry.setAttribute('_cor_center', new THREE.Float32BufferAttribute(new Array(3 * count).fill(0.25), 3));
+    const scene = new THREE.Scene();
+    const bone = new THREE.Bone();
+    bone.position.set(0.5, 1, -0.3);
+    scene.add(bone);
+    const mesh = new THREE.SkinnedMesh(geometry, new THREE.MeshStandardMaterial());
+    mesh.frustumCulled = false;
+    mesh.position.set(2, -1, 0.5);
+    mesh.quaternion.setFromAxisAngle(new THREE.Vector3(1, 1, 0).normalize(), 0.7);
+    scene.add(mesh);
+    scene.updateMatrixWorld(true);
+    mesh.bind(new THREE.Skeleton([bone]));
+    bone.quaternion.setFromAxisAngle(new THREE.Vector3(0.2, 1, 0.4).normalize(), 1.9);
+    bone.position.set(-0.4, 0.3, 1.1);
+    scene.updateMatrixWorld(true);
+    setSkinningMethod(mesh, method);
+    withCapture(mesh.material);
+    const camera = new THREE.PerspectiveCamera();
+    return [...context.capture(count, () => renderer.render(mesh, camera))];
+}
