@@ -1,5 +1,6 @@
-// The add-on's GPU positions against `skinlab pose --json`: every bundled .glb asset, exported
-// by `skinlab export --methods lbs,dqs,cor` (so it carries _COR_CENTER), posed at three times of
+// The add-on's GPU positions against `skinlab pose --json`: every bundled asset (.glb, and .dae
+// through skinlab's COLLADA-to-glTF export, which bakes the bind shape matrix), exported by
+// `skinlab export --methods lbs,dqs,cor` (so it carries _COR_CENTER), posed at three times of
 // its first clip by LBS (three's own), DQS and CoR (the add-on's), read back from headless
 // Chromium by transform feedback (test/page/capture.js), must agree with skinlab's CPU pose of
 // the same file within 1e-5 of the model's size (its bounding box diagonal). Float32 GPU
@@ -38,7 +39,7 @@ const FRACTIONS = [0.2, 0.5, 0.85];
 function assets(folder) {
     return readdirSync(folder).flatMap(name => {
         const path = join(folder, name);
-        return statSync(path).isDirectory() ? assets(path) : name.endsWith('.glb') ? [path] : [];
+        return statSync(path).isDirectory() ? assets(path) : /\.(glb|dae)$/.test(name) ? [path] : [];
     }).sort();
 }
 
@@ -71,14 +72,15 @@ describe('GPU positions agree with skinlab pose', {skip: SKIP}, () => {
         }
     });
 
-    test('the assets folder has .glb files', () => {
-        assert.ok(sources.length >= 5, `${sources.length} .glb files under assets/`);
+    test('the assets folder has .glb and .dae files', () => {
+        assert.ok(sources.filter(f => f.endsWith('.glb')).length >= 5, 'few .glb files under assets/');
+        assert.ok(sources.filter(f => f.endsWith('.dae')).length >= 5, 'few .dae files under assets/');
     });
 
     for (const source of sources) {
         const name = relative(join(REPO, 'assets'), source);
         test(name, async t => {
-            const exported = join(out, basename(source));
+            const exported = join(out, basename(source).replace(/\.dae$/, '-dae.glb'));
             skinlab('export', source, '--out', exported, '--methods', 'lbs,dqs,cor');
             const json = gltfJson(exported);
             assert.ok(json.meshes.some(m => m.primitives.some(p => p.attributes._COR_CENTER !== undefined)),
@@ -88,7 +90,7 @@ describe('GPU positions agree with skinlab pose', {skip: SKIP}, () => {
             const times = FRACTIONS.map(f => range.start + f * (range.end - range.start));
             const reference = {};
             for (const method of METHODS) {
-                const file = join(out, `${basename(source, '.glb')}.${method}.skinlab.json`);
+                const file = join(out, `${basename(exported, '.glb')}.${method}.skinlab.json`);
                 skinlab('pose', exported, '--time', times.join(','), '--method', method, '--json', file);
                 reference[method] = JSON.parse(readFileSync(file, 'utf8'));
             }
