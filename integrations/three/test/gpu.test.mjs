@@ -20,7 +20,6 @@ import {existsSync, mkdirSync, mkdtempSync, readdirSync, readFileSync, statSync}
 import {tmpdir} from 'node:os';
 import {basename, dirname, join, relative, resolve} from 'node:path';
 import {fileURLToPath} from 'node:url';
-import {launch} from './support/browser.mjs';
 import {comparePoses} from './support/compare.mjs';
 import {firstClipRange, gltfJson} from './support/glb.mjs';
 import {writeLightestFirst} from './support/permute.mjs';
@@ -33,8 +32,14 @@ const SKIP = process.env.SKINLAB_THREE_SKIP_BROWSER === '1'
     ? 'SKINLAB_THREE_SKIP_BROWSER=1: the browser tests are skipped' : false;
 const TOLERANCE = 1e-5;
 const METHODS = ['lbs', 'dqs', 'cor'];
-/** Where in the clip the poses are taken: fractions of its length. */
-const FRACTIONS = [0.2, 0.5, 0.85];
+/**
+ * Where in the clip the poses are taken: fractions of its length. Not the middle: the "full"
+ * cylinders bend and twist by 180 degrees there, where DQS and CoR jump (two rotations half a
+ * turn apart are a tie for the hemisphere test, Kavan et al. 2008), and float noise decides the
+ * side: skinlab's DQS of cylinder-bend-full's COLLADA export moves by 18% of the model's size
+ * between t = 3.00 and 3.02 s.
+ */
+const FRACTIONS = [0.2, 0.45, 0.85];
 
 function assets(folder) {
     return readdirSync(folder).flatMap(name => {
@@ -50,7 +55,6 @@ function skinlab(...args) {
 describe('GPU positions agree with skinlab pose', {skip: SKIP}, () => {
     const sources = assets(join(REPO, 'assets'));
     const results = [];
-    let browser;
     let out;
 
     before(async () => {
@@ -59,11 +63,9 @@ describe('GPU positions agree with skinlab pose', {skip: SKIP}, () => {
         out = process.env.SKINLAB_EXPORT_DIR ? resolve(process.env.SKINLAB_EXPORT_DIR)
             : mkdtempSync(join(tmpdir(), 'skinlab-three-'));
         mkdirSync(out, {recursive: true});
-        browser = await launch();
     });
 
     after(async () => {
-        await browser?.close();
         if (results.length > 0) {
             const lines = results.map(r => `${r.method.padEnd(4)} ${r.file.padEnd(40)} worst ${r.relative.toExponential(2)}`
                 + ` of the size (${r.worst.toExponential(2)} at ${r.where}); skinlab's lbs is ${r.fromLbs.toExponential(2)}`
@@ -95,7 +97,7 @@ describe('GPU positions agree with skinlab pose', {skip: SKIP}, () => {
                 reference[method] = JSON.parse(readFileSync(file, 'utf8'));
             }
             for (const method of METHODS) {
-                const gpu = await gpuPoses(exported, {method, times, browser});
+                const gpu = await gpuPoses(exported, {method, times});
                 assert.equal(gpu.readBack, 'transform feedback');
                 const r = comparePoses(reference[method], gpu);
                 const fromLbs = comparePoses(reference.lbs, reference[method]).relative;
@@ -117,7 +119,7 @@ describe('GPU positions agree with skinlab pose', {skip: SKIP}, () => {
         for (const method of ['dqs', 'cor']) {
             const file = join(out, `cylinder-twist-full.lightest-first.${method}.skinlab.json`);
             skinlab('pose', permuted, '--time', times.join(','), '--method', method, '--json', file);
-            const r = comparePoses(JSON.parse(readFileSync(file, 'utf8')), await gpuPoses(permuted, {method, times, browser}));
+            const r = comparePoses(JSON.parse(readFileSync(file, 'utf8')), await gpuPoses(permuted, {method, times}));
             results.push({method, file: 'cylinder-twist-full, lightest first', ...r, fromLbs: NaN});
             assert.ok(r.relative <= TOLERANCE, `${method}: ${r.relative} of the size at ${r.where}`);
         }

@@ -15,6 +15,17 @@ import {launch, newPage} from './support/browser.mjs';
 import {serve} from './support/server.mjs';
 
 const PACKAGE = resolve(dirname(fileURLToPath(import.meta.url)), '..');
+/** How long one file's capture may take (SwiftShader on a busy machine: seconds). */
+const TIMEOUT_MS = 120000;
+
+/** The promise, or a rejection naming {@code what} once {@code ms} have passed. */
+function within(ms, what, promise) {
+    let timer;
+    const timeout = new Promise((_, reject) => {
+        timer = setTimeout(() => reject(new Error(`${what} took more than ${ms / 1000} s`)), ms);
+    });
+    return Promise.race([promise, timeout]).finally(() => clearTimeout(timer));
+}
 
 /**
  * The poses of {@code file} as the GPU computes them.
@@ -30,13 +41,14 @@ export async function gpuPoses(file, {method, times, clip, browser}) {
     try {
         const page = await newPage(browser ?? own);
         try {
-            await page.goto(server.url + '/test/page/capture.html');
-            await page.waitForFunction('window.captureReady === true', {timeout: 60000});
-            const result = await page.evaluate((url, m, t, c) => window.capturePoses(url, m, t, c),
-                server.url + model, method, times, clip ?? null);
+            await page.goto(server.url + '/test/page/capture.html', {timeout: TIMEOUT_MS});
+            await page.waitForFunction('window.captureReady === true', {timeout: TIMEOUT_MS});
+            const result = await within(TIMEOUT_MS, `capturing ${file} (${method})`,
+                page.evaluate((url, m, t, c) => window.capturePoses(url, m, t, c), server.url + model, method, times,
+                    clip ?? null));
             return {file, ...result};
         } finally {
-            await page.close();
+            await within(30000, 'closing the page', page.close()).catch(() => {});
         }
     } finally {
         await own?.close();

@@ -286,12 +286,16 @@ export async function capturePoses(url, method, times, clipName) {
     }
     const gl = context.gl;
     const debug = gl.getExtension('WEBGL_debug_renderer_info');
+    const rendererName = debug ? gl.getParameter(debug.UNMASKED_RENDERER_WEBGL) : gl.getParameter(gl.RENDERER);
+    // Chromium keeps a few WebGL contexts alive at a time: give this one back now.
+    renderer.dispose();
+    gl.getExtension('WEBGL_lose_context')?.loseContext();
     return {
         clip: clip ? clip.name : null,
         method,
         times: used,
         readBack: 'transform feedback',
-        renderer: debug ? gl.getParameter(debug.UNMASKED_RENDERER_WEBGL) : gl.getParameter(gl.RENDERER),
+        renderer: rendererName,
         meshes: placed.map((p, i) => ({geometry: '/meshes/' + p.index, name: p.def.name ?? null, poses: poses[i]})),
     };
 }
