@@ -67,7 +67,8 @@ public final class SkinlabSkinningControl extends AbstractControl {
     private final ArmaturePalette armature;
     private final SkinningMethod method;
     private final Mode mode;
-    private final List<Target> targets = new ArrayList<>();
+    /** An array, not a list: a frame's loop over it allocates no iterator. */
+    private final Target[] targets;
 
     /** One deformed geometry and what skinning it needs. */
     private static final class Target {
@@ -157,17 +158,19 @@ public final class SkinlabSkinningControl extends AbstractControl {
         if (mode == Mode.GPU) {
             SkinlabShaderLoader.register(assets);
         }
-        for (Geometry g : geometries) {
+        targets = new Target[geometries.size()];
+        for (int i = 0; i < targets.length; i++) {
+            Geometry g = geometries.get(i);
             SkinnedGeometry skinned = MeshBinding.bind(g, this.armature, method);
             if (mode == Mode.CPU) {
                 prepareCpu(g.getMesh());
-                targets.add(new Target(g, skinned, Skinners.create(method, skinned, NormalTransform.INVERSE_TRANSPOSE),
-                        null, null));
+                targets[i] = new Target(g, skinned, Skinners.create(method, skinned, NormalTransform.INVERSE_TRANSPOSE),
+                        null, null);
             } else {
                 PaletteTexture texture = new PaletteTexture(this.armature.jointCount());
                 Material material = gpuMaterial(assets, g, skinned, texture);
                 g.setMaterial(material);
-                targets.add(new Target(g, skinned, null, texture, material));
+                targets[i] = new Target(g, skinned, null, texture, material);
             }
         }
     }

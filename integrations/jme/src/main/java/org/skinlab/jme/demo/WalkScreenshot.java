@@ -98,7 +98,7 @@ public final class WalkScreenshot extends SimpleApplication {
         Vector3f centre = box.getCenter();
         float radius = box.getExtent(null).length();
         cam.setFrustumPerspective(35f, (float) WIDTH / HEIGHT, radius * 0.05f, radius * 20f);
-        cam.setLocation(centre.add(new Vector3f(0.9f, 0.35f, 1.6f).normalizeLocal().multLocal(2.6f * radius)));
+        cam.setLocation(centre.add(new Vector3f(0.8f, 0.25f, 1.6f).normalizeLocal().multLocal(3.4f * radius)));
         cam.lookAt(centre, Vector3f.UNIT_Y);
         viewPort.setBackgroundColor(new ColorRGBA(0.78f, 0.82f, 0.88f, 1f));
         target = new FrameBuffer(WIDTH, HEIGHT, 1);
