@@ -8,7 +8,6 @@ import java.nio.file.Paths;
 
 import com.jme3.anim.AnimComposer;
 import com.jme3.scene.Spatial;
-import org.junit.AfterClass;
 import org.junit.BeforeClass;
 import org.junit.Test;
 import org.skinlab.skinning.SkinningMethod;
@@ -26,14 +25,7 @@ public class FrameAllocationTest {
     public static void start() {
         Path repository = Paths.get(System.getProperty("skinlab.repository", "../..")).toAbsolutePath().normalize();
         character = repository.resolve("assets/characters/humanoid-walk.glb");
-        app = OffscreenApp.start(Paths.get("/"), 160, 120);
-    }
-
-    @AfterClass
-    public static void stop() {
-        if (app != null) {
-            app.stop(true);
-        }
+        app = OffscreenApp.shared();
     }
 
     @Test

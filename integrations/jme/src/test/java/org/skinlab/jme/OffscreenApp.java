@@ -1,6 +1,7 @@
 package org.skinlab.jme;
 
 import java.nio.file.Path;
+import java.nio.file.Paths;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
@@ -27,6 +28,19 @@ final class OffscreenApp extends SimpleApplication {
     private OffscreenApp(Path root) {
         super(new com.jme3.app.state.AppState[0]);
         this.root = root;
+    }
+
+    private static OffscreenApp shared;
+
+    /**
+     * The test JVM's one application, started on first use and left running: GLFW under Xvfb may
+     * find no monitor when initialised again in the same process after a terminate.
+     */
+    static synchronized OffscreenApp shared() {
+        if (shared == null) {
+            shared = start(Paths.get("/"), 320, 240);
+        }
+        return shared;
     }
 
     /**

@@ -46,14 +46,11 @@ public class SkinlabSkinningControlTest {
     @BeforeClass
     public static void start() {
         repository = Paths.get(System.getProperty("skinlab.repository", "../..")).toAbsolutePath().normalize();
-        app = OffscreenApp.start(Paths.get("/"), 320, 240);
+        app = OffscreenApp.shared();
     }
 
     @AfterClass
     public static void stop() throws IOException {
-        if (app != null) {
-            app.stop(true);
-        }
         Path out = Paths.get("build/reports/skinning-errors.txt");
         Files.createDirectories(out.getParent());
         Files.write(out, report);
