@@ -32,7 +32,8 @@ import org.skinlab.skinning.SkinningMethod;
  * Renders a glb's character walking with the control's GPU path in an offscreen jME application
  * and saves one frame as PNG: {@code WalkScreenshot [MODEL.glb [OUT.png [METHOD [SECONDS]]]]}
  * (defaults: assets/characters/humanoid-walk.glb, docs/screenshot.png, cor, 0.5 s into the clip).
- * Needs an X display (xvfb-run -a under CI).
+ * Needs an X display (xvfb-run -a under CI); fails when the frame shows almost nothing (under 1% of its
+ * pixels away from the background colour).
  */
 public final class WalkScreenshot extends SimpleApplication {
     private static final int WIDTH = 640;
@@ -126,6 +127,11 @@ public final class WalkScreenshot extends SimpleApplication {
         done.countDown();
     }
 
+    private static int colourDistance(int a, int b) {
+        return Math.abs((a >> 16 & 0xff) - (b >> 16 & 0xff)) + Math.abs((a >> 8 & 0xff) - (b >> 8 & 0xff))
+                + Math.abs((a & 0xff) - (b & 0xff));
+    }
+
     private void save() throws IOException {
         ByteBuffer pixels = BufferUtils.createByteBuffer(4 * WIDTH * HEIGHT);
         renderer.readFrameBufferWithFormat(target, pixels, Image.Format.RGBA8);
@@ -136,6 +142,20 @@ public final class WalkScreenshot extends SimpleApplication {
                 int rgb = (pixels.get(i) & 0xff) << 16 | (pixels.get(i + 1) & 0xff) << 8 | (pixels.get(i + 2) & 0xff);
                 image.setRGB(x, y, rgb);
             }
+        }
+        // The frame must show the character: enough pixels away from the background colour.
+        int background = image.getRGB(0, 0);
+        int covered = 0;
+        for (int y = 0; y < HEIGHT; y++) {
+            for (int x = 0; x < WIDTH; x++) {
+                if (colourDistance(image.getRGB(x, y), background) > 24) {
+                    covered++;
+                }
+            }
+        }
+        System.out.println("character covers " + covered + " of " + WIDTH * HEIGHT + " pixels");
+        if (covered < WIDTH * HEIGHT / 100) {
+            throw new IllegalStateException("the frame shows almost nothing: " + covered + " pixels differ from the background");
         }
         File file = out.toFile();
         file.getParentFile().mkdirs();
