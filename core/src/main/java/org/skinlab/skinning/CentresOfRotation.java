@@ -153,7 +153,7 @@ public final class CentresOfRotation {
      * @return a new array of {@code 3 * pointCount()} floats, the point itself where its centre is undefined
      */
     public static float[] compute(SkinnedGeometry geometry, Parameters parameters, Progress progress) {
-        return compute(geometry, triangles(geometry), parameters, progress);
+        return centres(geometry, triangles(geometry), parameters, progress);
     }
 
     /**
@@ -171,8 +171,31 @@ public final class CentresOfRotation {
         return geometry.mesh() == null ? new int[0] : geometry.mesh().triangles();
     }
 
+    /**
+     * As {@link #compute(SkinnedGeometry, Parameters, Progress)} over triangles given apart from the
+     * geometry: for a geometry made from arrays ({@link SkinnedGeometry#fromArrays}), e.g. an engine's
+     * mesh whose index buffer holds its triangles.
+     *
+     * @param geometry   the geometry, at rest
+     * @param triangles  3 indices of the geometry's points per triangle
+     * @param parameters the precomputation's parameters
+     * @param progress   told how far the computation is ({@link Progress#NONE} for nothing)
+     * @return a new array of {@code 3 * pointCount()} floats, the point itself where its centre is undefined
+     */
+    public static float[] compute(SkinnedGeometry geometry, int[] triangles, Parameters parameters, Progress progress) {
+        if (triangles.length % 3 != 0) {
+            throw new IllegalArgumentException(triangles.length + " triangle indices: need 3 per triangle");
+        }
+        for (int i : triangles) {
+            if (i < 0 || i >= geometry.pointCount()) {
+                throw new IllegalArgumentException("triangle index " + i + " outside the " + geometry.pointCount() + " points");
+            }
+        }
+        return centres(geometry, triangles, parameters, progress);
+    }
+
     /** The centres over the given triangles (indices of the geometry's points). */
-    static float[] compute(SkinnedGeometry geometry, int[] triangles, Parameters parameters, Progress progress) {
+    private static float[] centres(SkinnedGeometry geometry, int[] triangles, Parameters parameters, Progress progress) {
         SkinnedGeometry positions = geometry.sharedPositions() != null ? geometry.sharedPositions() : geometry;
         SimilarityTriangles t = new SimilarityTriangles(geometry, triangles, parameters.weightEpsilon());
         int n = positions.pointCount();

@@ -218,6 +218,30 @@ class CentresOfRotationTest {
     }
 
     @Test
+    void aGeometryFromArraysGetsTheModelsCentresFromTheTrianglesGivenApart() throws Exception {
+        // What an engine integration does (integrations/jme): its mesh's arrays and index buffer, no
+        // skinlab Mesh. The model's own geometry shares positions and computes per position; the
+        // arrays' one computes per point: the same integral, so the same centres up to rounding.
+        SkinnedGeometry model = geometry("characters/humanoid-walk.dae");
+        SkinnedGeometry arrays = SkinnedGeometry.fromArrays(model.positionArray(), model.normalArray(),
+                model.influencesPerPoint(), model.jointArray(), model.weightArray(), model.bindMatrixArray());
+        float[] expected = CentresOfRotation.compute(model, CentresOfRotation.Parameters.DEFAULT,
+                CentresOfRotation.Progress.NONE);
+        float[] actual = CentresOfRotation.compute(arrays, model.mesh().triangles(), CentresOfRotation.Parameters.DEFAULT,
+                CentresOfRotation.Progress.NONE);
+        double worst = 0;
+        for (int i = 0; i < expected.length; i++) {
+            worst = Math.max(worst, Math.abs(expected[i] - actual[i]));
+        }
+        // The character is 1.8 m tall: a micrometre is float rounding of sums in another order.
+        assertTrue(worst < 1e-6, "worst difference " + worst + " m");
+        assertThrows(IllegalArgumentException.class, () -> CentresOfRotation.compute(arrays,
+                new int[] {0, 1, model.pointCount()}, CentresOfRotation.Parameters.DEFAULT, CentresOfRotation.Progress.NONE));
+        assertThrows(IllegalArgumentException.class, () -> CentresOfRotation.compute(arrays, new int[] {0, 1},
+                CentresOfRotation.Parameters.DEFAULT, CentresOfRotation.Progress.NONE));
+    }
+
+    @Test
     void blendedPointsTurnAboutTheAxis() throws Exception {
         // cylinder-twist-high: axis z from 0 to 2, joint at z = 1, radius 0.25 (assets/README.md).
         SkinnedGeometry g = geometry("cylinders/cylinder-twist-high.dae");

@@ -1,0 +1,70 @@
+package org.skinlab.jme;
+
+import static org.junit.Assert.assertEquals;
+
+import java.lang.management.ManagementFactory;
+import java.nio.file.Path;
+import java.nio.file.Paths;
+
+import com.jme3.anim.AnimComposer;
+import com.jme3.scene.Spatial;
+import org.junit.BeforeClass;
+import org.junit.Test;
+import org.skinlab.skinning.SkinningMethod;
+
+/**
+ * The control's frame (controlUpdate: the armature's update, the palette, then the CPU kernels
+ * into the mesh's buffers or the palette texture for the GPU) allocates nothing once warm, measured
+ * with the JVM's per-thread allocation counter on the render thread.
+ */
+public class FrameAllocationTest {
+    private static OffscreenApp app;
+    private static Path character;
+
+    @BeforeClass
+    public static void start() {
+        Path repository = Paths.get(System.getProperty("skinlab.repository", "../..")).toAbsolutePath().normalize();
+        character = repository.resolve("assets/characters/humanoid-walk.glb");
+        app = OffscreenApp.shared();
+    }
+
+    @Test
+    public void aFrameAllocatesNothingOnEitherPath() {
+        for (SkinlabSkinningControl.Mode mode : SkinlabSkinningControl.Mode.values()) {
+            for (SkinningMethod method : new SkinningMethod[] {SkinningMethod.LBS, SkinningMethod.DQS, SkinningMethod.COR}) {
+                long bytes = app.call(() -> allocatedPerFrames(mode, method));
+                System.out.println(method.key() + " " + mode + ": " + bytes + " bytes allocated in 1000 frames (the least of five rounds)");
+                assertEquals(method.key() + " " + mode + " allocated", 0, bytes);
+            }
+        }
+    }
+
+    private static long allocatedPerFrames(SkinlabSkinningControl.Mode mode, SkinningMethod method) {
+        app.getAssetManager().clearCache();
+        Spatial model = app.getAssetManager().loadModel(character.toString());
+        SkinlabSkinningControl control = SkinlabSkinningControl.replace(model, method, mode, app.getAssetManager());
+        AnimComposer[] composer = new AnimComposer[1];
+        model.depthFirstTraversal(s -> {
+            if (s.getControl(AnimComposer.class) != null) {
+                composer[0] = s.getControl(AnimComposer.class);
+            }
+        });
+        composer[0].setCurrentAction(composer[0].getAnimClipsNames().iterator().next());
+        com.sun.management.ThreadMXBean threads = (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
+        long id = Thread.currentThread().getId();
+        for (int i = 0; i < 3000; i++) {
+            composer[0].update(0.016f);
+            control.update(0.016f);
+        }
+        // The least of five rounds: a round may catch the JIT's own one-off allocations on this thread.
+        long least = Long.MAX_VALUE;
+        for (int round = 0; round < 5; round++) {
+            long before = threads.getThreadAllocatedBytes(id);
+            for (int i = 0; i < 1000; i++) {
+                control.update(0.016f);
+            }
+            least = Math.min(least, threads.getThreadAllocatedBytes(id) - before);
+        }
+        return least;
+    }
+}
