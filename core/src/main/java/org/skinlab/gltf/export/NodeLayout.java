@@ -36,7 +36,7 @@ import com.fasterxml.jackson.core.JsonGenerator;
 final class NodeLayout {
     static final String ROOT_NAME = "skinlab_root";
     /** Largest difference of a recomposed T*R*S from the rest matrix before the matrix is written instead. */
-    private static final float SHEAR_TOLERANCE = 1e-5f;
+    private static final float SHEAR_TOLERANCE = 1e-6f;
 
     /** A glTF node being built. */
     static final class GltfNode {
