@@ -7,7 +7,6 @@ import java.util.List;
 import java.util.Set;
 
 import org.joml.Matrix4f;
-import org.joml.Quaternionf;
 import org.skinlab.animation.LocalPose;
 import org.skinlab.animation.Skeleton;
 import org.skinlab.model.AssetInfo;
@@ -80,9 +79,11 @@ final class NodeLayout {
         if (converts || needsRoot || modelRoots > 1 && skinned) {
             GltfNode r = new GltfNode(ROOT_NAME);
             if (converts) {
-                Matrix4f m = asset.toYUpMeters(new Matrix4f());
-                Quaternionf q = m.getNormalizedRotation(new Quaternionf());
-                r.rotation = new float[] {q.x, q.y, q.z, q.w};
+                // AssetInfo.toYUpMeters: Z_UP is -90 degrees about X, X_UP +90 degrees about Z; the
+                // quaternions written from their exact values, so they are unit to the last bit glTF checks.
+                float h = (float) Math.sqrt(0.5);
+                r.rotation = asset.upAxis() == UpAxis.Z_UP ? new float[] {-h, 0f, 0f, h}
+                        : asset.upAxis() == UpAxis.X_UP ? new float[] {0f, 0f, h, h} : null;
                 float s = (float) asset.unitMeter();
                 r.scale = new float[] {s, s, s};
             }
