@@ -40,10 +40,20 @@ for f in "${files[@]}"; do
         fi
     fi
 done
+if [ "${#exported[@]}" -eq 0 ]; then
+    echo "nothing exported" >&2
+    exit 1
+fi
 node "$here/validate.mjs" --json "${exported[@]}" | tee "$out/report" || true
-errors=$(grep -o '"errors":[0-9]*' "$out/report" | cut -d: -f2 | paste -sd+ | bc)
-warnings=$(grep -o '"warnings":[0-9]*' "$out/report" | cut -d: -f2 | paste -sd+ | bc)
-infos=$(grep -o '"infos":[0-9]*' "$out/report" | cut -d: -f2 | paste -sd+ | bc)
+reported=$(grep -c '"file"' "$out/report" || true)
+if [ "$reported" -ne "${#exported[@]}" ]; then
+    echo "the validator reported on $reported of ${#exported[@]} files" >&2
+    exit 1
+fi
+count() { grep -o "\"$1\":[0-9]*" "$out/report" | cut -d: -f2 | awk '{ s += $1 } END { print s + 0 }'; }
+errors=$(count errors)
+warnings=$(count warnings)
+infos=$(count infos)
 echo "validated ${#exported[@]} exported files: $errors errors, $warnings warnings, $infos infos"
 if [ "$failed" -ne 0 ] || [ "$errors" -ne 0 ] || [ "$warnings" -ne 0 ]; then
     exit 1

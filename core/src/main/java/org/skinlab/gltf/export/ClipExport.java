@@ -36,9 +36,8 @@ import com.fasterxml.jackson.core.JsonGenerator;
  *     becomes LINEAR translation, rotation and scale sampled with
  *     {@link AnimationSampler#sampleLocal} (rotations by SLERP, as glTF's LINEAR is) at the clip's
  *     start and end and every key time of the node's channels between; where that is not exact
- *     between keys (any channel but a LINEAR or STEP whole matrix that is its node's one
- *     transform), also every 1/{@value #RATE} s. A node whose channels are all STEP keeps STEP at its
- *     key times. Morph weights that are not copied are resampled alike with
+ *     between keys (anything but one LINEAR whole matrix that is its node's one transform), also
+ *     every 1/{@value #RATE} s. A node whose channels are all STEP keeps STEP at its key times. Morph weights that are not copied are resampled alike with
  *     {@link MorphWeightSampler}.</li>
  * </ul>
  */
@@ -203,19 +202,22 @@ final class ClipExport {
     private void resample(Animation a, AnimationClip clip, int node, List<AnimationChannel> channels,
             AnimationSampler sampler, Pose values, LocalPose local) {
         boolean step = true;
+        boolean linear = true;
         boolean exact = channels.size() == 1 && model.node(node).transforms().size() == 1;
         List<KeyframeTrack> tracks = new ArrayList<>();
         for (AnimationChannel c : channels) {
             tracks.add(c.track());
             TransformElement.Kind kind = model.node(node).transforms().get(c.transformIndex()).kind();
             exact &= kind == TransformElement.Kind.MATRIX && c.valueOffset() == 0 && c.valueCount() == 16;
-            for (int k = 0; k < c.track().keyCount(); k++) {
+            // The last key's interpolation starts no segment.
+            for (int k = 0; k + 1 < c.track().keyCount(); k++) {
                 Interpolation i = c.track().interpolation(k);
                 step &= i == Interpolation.STEP;
-                exact &= i == Interpolation.LINEAR || i == Interpolation.STEP;
+                linear &= i == Interpolation.LINEAR;
             }
         }
-        float[] times = sampleTimes(tracks, clip, !exact && !step);
+        // A STEP segment among LINEAR ones has no exact LINEAR form: the dense grid keeps its ramp short.
+        float[] times = sampleTimes(tracks, clip, !(exact && linear) && !step);
         int n = times.length;
         float[] t = new float[3 * n];
         float[] r = new float[4 * n];
@@ -300,23 +302,25 @@ final class ClipExport {
                 sampler = new MorphWeightSampler(model, clip);
                 weights = sampler.newWeights();
             }
-            boolean dense = false;
+            boolean linear = true;
+            boolean step = true;
             List<KeyframeTrack> tracks = new ArrayList<>();
             for (MorphWeightChannel c : channels) {
                 tracks.add(c.track());
-                for (int k = 0; k < c.track().keyCount(); k++) {
+                for (int k = 0; k + 1 < c.track().keyCount(); k++) {
                     Interpolation i = c.track().interpolation(k);
-                    dense |= i == Interpolation.BEZIER || i == Interpolation.HERMITE;
+                    linear &= i == Interpolation.LINEAR;
+                    step &= i == Interpolation.STEP;
                 }
             }
-            float[] times = sampleTimes(tracks, clip, dense);
+            float[] times = sampleTimes(tracks, clip, !linear && !step);
             float[] out = new float[times.length * targets];
             for (int i = 0; i < times.length; i++) {
                 sampler.sample(times[i] + clip.start(), weights);
                 System.arraycopy(weights[instance], 0, out, i * targets, targets);
             }
             int input = bin.floats(times, "SCALAR", 1, 0, true);
-            a.samplers.add(new Sampler(input, bin.floats(out, "SCALAR", 1, 0, false), "LINEAR"));
+            a.samplers.add(new Sampler(input, bin.floats(out, "SCALAR", 1, 0, false), step ? "STEP" : "LINEAR"));
             a.channels.add(new Channel(a.samplers.size() - 1, instanceNodes[instance], "weights"));
         }
     }

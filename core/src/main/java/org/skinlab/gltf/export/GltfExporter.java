@@ -6,9 +6,10 @@ import java.io.IOException;
 import java.io.OutputStream;
 import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
-import java.nio.charset.StandardCharsets;
+import java.nio.file.AtomicMoveNotSupportedException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
 import java.util.ArrayList;
 import java.util.EnumSet;
 import java.util.List;
@@ -63,8 +64,22 @@ public final class GltfExporter {
      * @throws IllegalArgumentException when {@code methods} is empty or holds a method outside {@link #METHODS}
      */
     public static ExportResult write(Model model, Set<SkinningMethod> methods, Path file) throws IOException {
-        try (OutputStream out = new BufferedOutputStream(Files.newOutputStream(file))) {
-            return write(model, methods, out);
+        // Written beside the target and moved into place: a failed export leaves no half file.
+        Path folder = file.toAbsolutePath().getParent();
+        Path partial = Files.createTempFile(folder, ".skinlab-export-", ".glb.part");
+        try {
+            ExportResult result;
+            try (OutputStream out = new BufferedOutputStream(Files.newOutputStream(partial))) {
+                result = write(model, methods, out);
+            }
+            try {
+                Files.move(partial, file, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+            } catch (AtomicMoveNotSupportedException e) {
+                Files.move(partial, file, StandardCopyOption.REPLACE_EXISTING);
+            }
+            return result;
+        } finally {
+            Files.deleteIfExists(partial);
         }
     }
 

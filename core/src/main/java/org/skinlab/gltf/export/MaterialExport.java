@@ -29,6 +29,8 @@ import com.fasterxml.jackson.core.JsonGenerator;
 final class MaterialExport {
     static final String UNLIT = "KHR_materials_unlit";
     static final String TEXTURE_TRANSFORM = "KHR_texture_transform";
+    /** Larger image files are left out (with a warning) rather than read into memory. */
+    static final long MAX_IMAGE_BYTES = 256L << 20;
 
     /** A material as drawn with one texture coordinate set. */
     private record Key(Material material, int texCoord) {
@@ -38,8 +40,8 @@ final class MaterialExport {
     private record Embedded(int view, String mimeType, String name) {
     }
 
-    /** A texture: an image and the set and transform it is sampled with. */
-    private record TextureRef(int image, int texCoord, TextureTransform transform) {
+    /** A glTF texture and the set and transform a material samples it with. */
+    private record TextureRef(int texture, int texCoord, TextureTransform transform) {
     }
 
     private final BinaryChunk bin;
@@ -88,6 +90,9 @@ final class MaterialExport {
         String label = image.file() != null ? image.file().toString() : image.uri() != null ? image.uri() : image.id();
         if (bytes == null && image.file() != null) {
             try {
+                if (Files.size(image.file()) > MAX_IMAGE_BYTES) {
+                    throw new IOException("larger than " + (MAX_IMAGE_BYTES >> 20) + " MiB");
+                }
                 bytes = Files.readAllBytes(image.file());
             } catch (IOException | SecurityException e) {
                 warnings.add("image " + label + " cannot be read (" + e.getMessage() + "); left out");
@@ -245,7 +250,7 @@ final class MaterialExport {
 
     private void writeTextureInfo(JsonGenerator g, String name, TextureRef t) throws IOException {
         g.writeObjectFieldStart(name);
-        g.writeNumberField("index", t.image);
+        g.writeNumberField("index", t.texture);
         if (t.texCoord != 0) {
             g.writeNumberField("texCoord", t.texCoord);
         }

@@ -81,7 +81,7 @@ final class MeshExport {
      * Writes the mesh {@code instance} draws; {@code geometry} is its skinned geometry (null for a
      * static mesh), {@code centres} its centres of rotation per point (null without cor).
      *
-     * @return the glTF mesh index, and {@code morphWeights[0]} gets the mesh's weights (or null)
+     * @return the glTF mesh index
      */
     int mesh(Model model, MeshInstance instance, SkinnedGeometry geometry, float[] centres) {
         Mesh mesh = instance.mesh();

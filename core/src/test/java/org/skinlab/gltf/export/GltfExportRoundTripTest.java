@@ -156,6 +156,7 @@ class GltfExportRoundTripTest {
             assertEquals(a.isSkinned(), b.isSkinned(), "mesh " + i + " skinned");
         }
         assertEquals(vertices, result.vertices(), "vertices reported");
+        checkMaterials(original, backOf);
         checkExtension(exported, original, backOf);
         double[] centreDev = checkSkins(original, back, backOf, exported, size);
         assertEquals(original.clips().stream().map(AnimationClip::name).collect(Collectors.toList()),
@@ -209,6 +210,61 @@ class GltfExportRoundTripTest {
             }
         }
         return false;
+    }
+
+    /**
+     * Each drawn part's material read back: the base colour (alpha from COLLADA's opacity), texture
+     * image bytes and coordinate transform (within 1e-6), and for glTF input alpha mode, cutoff and
+     * sidedness as read; a part bound to no material stays so.
+     */
+    private static void checkMaterials(Model original, MeshInstance[] backOf) throws IOException {
+        boolean gltf = original.source().endsWith(".glb") || original.source().endsWith(".gltf");
+        for (int i = 0; i < backOf.length; i++) {
+            MeshInstance a = original.instances().get(i);
+            List<org.skinlab.model.MeshPart> partsA = a.mesh().parts().stream().filter(p -> p.triangleCount() > 0)
+                    .collect(Collectors.toList());
+            List<org.skinlab.model.MeshPart> partsB = backOf[i].mesh().parts();
+            assertEquals(partsA.size(), partsB.size(), "primitives of mesh " + i);
+            for (int p = 0; p < partsA.size(); p++) {
+                org.skinlab.model.Material ma = a.material(partsA.get(p).material()).material();
+                org.skinlab.model.Material mb = backOf[i].material(partsB.get(p).material()).material();
+                String where = "mesh " + i + " part " + p + " (" + ma.name() + ")";
+                if (ma == org.skinlab.model.Material.DEFAULT) {
+                    assertTrue(mb == org.skinlab.model.Material.DEFAULT, where + " stays unbound");
+                    continue;
+                }
+                assertEquals(ma.name(), mb.name(), where);
+                float[] colour = ma.shading() == org.skinlab.model.Material.Shading.CONSTANT ? ma.emission() : ma.diffuse();
+                float[] back = mb.shading() == org.skinlab.model.Material.Shading.CONSTANT ? mb.emission() : mb.diffuse();
+                if (colour != null) {
+                    for (int c = 0; c < 3; c++) {
+                        assertEquals(Math.max(0f, Math.min(1f, colour[c])), back[c], 1e-6, where + " colour " + c);
+                    }
+                }
+                assertEquals(ma.shading() == org.skinlab.model.Material.Shading.CONSTANT,
+                        mb.shading() == org.skinlab.model.Material.Shading.CONSTANT, where + " unlit");
+                org.skinlab.model.Texture ta = ma.baseTexture();
+                org.skinlab.model.Texture tb = mb.baseTexture();
+                byte[] image = ta == null ? null : ta.image().isEmbedded() ? ta.image().bytes()
+                        : ta.image().file() != null && Files.isRegularFile(ta.image().file())
+                        ? Files.readAllBytes(ta.image().file()) : null;
+                if (image != null && MaterialExport.mediaType(image) != null) {
+                    assertTrue(tb != null, where + " keeps its texture");
+                    assertTrue(java.util.Arrays.equals(image, tb.image().bytes()), where + " image bytes");
+                    float[] xa = ta.transform().values();
+                    float[] xb = tb.transform().values();
+                    for (int k = 0; k < 6; k++) {
+                        assertEquals(xa[k], xb[k], 1e-6, where + " texture transform " + k);
+                    }
+                }
+                if (gltf) {
+                    assertEquals(ma.alphaMode(), mb.alphaMode(), where + " alpha mode");
+                    assertEquals(ma.alphaCutoff(), mb.alphaCutoff(), 0f, where + " alpha cutoff");
+                    assertEquals(ma.doubleSided(), mb.doubleSided(), where + " double-sided");
+                    assertEquals(ma.opacity(), mb.opacity(), 1e-6, where + " opacity");
+                }
+            }
+        }
     }
 
     /** Per original instance, the re-imported instance drawing the mesh the export wrote for it (mesh i). */
