@@ -291,7 +291,7 @@ final class ClipExport {
         for (Map.Entry<Integer, List<MorphWeightChannel>> e : byInstance.entrySet()) {
             int instance = e.getKey();
             List<MorphWeightChannel> channels = e.getValue();
-            int targets = model.morphOf(model.instances().get(instance)).orElseThrow().targets().size();
+            int targets = model.morphOf(model.instances().get(instance)).get().targets().size();
             MorphWeightChannel first = channels.get(0);
             if (channels.size() == 1 && first.weightOffset() == 0 && first.weightCount() == targets
                     && clip.start() == 0f && copyable(first.track(), clip)) {
