@@ -148,6 +148,19 @@ public final class SkinnedGeometry {
     }
 
     /**
+     * What takes a position of the instance's mesh to its point in bind space: the skin's bind
+     * shape matrix, then the common mirror of the bind frames when they all mirror (see the class
+     * comment); the identity for a static mesh. An exporter that writes bind-space points maps
+     * other per-position data (morph offsets) with it.
+     *
+     * @param instance a placed mesh
+     * @return a new matrix
+     */
+    public static org.joml.Matrix4f bindSpaceTransform(MeshInstance instance) {
+        return BindSpace.pointTransform(instance);
+    }
+
+    /**
      * A geometry straight from arrays, without a mesh (synthetic benchmark data, tests). Influences
      * are taken in the order given, so the first one is the DQS pivot; weights are used as given.
      *

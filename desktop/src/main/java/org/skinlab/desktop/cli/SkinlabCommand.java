@@ -14,7 +14,7 @@ import org.skinlab.desktop.JavaRuntime;
         description = "Skeletal animation lab: view COLLADA characters skinned with LBS and DQS (no subcommand: the window "
                 + "on the default character), inspect them, pose them, benchmark.",
         subcommands = {ViewCommand.class, EvalCommand.class, CheckGpuCommand.class, RenderBenchCommand.class, CompareCommand.class,
-                CentresCommand.class, TwistPlotCommand.class,
+                CentresCommand.class, ExportCommand.class, TwistPlotCommand.class,
                 InspectCommand.class, PoseCommand.class, BenchCommand.class, TrackCommand.class,
                 MarkerCommand.class, CalibrationTargetCommand.class, CalibrateCommand.class, ArCommand.class, ArDemoCommand.class,
                 CommandLine.HelpCommand.class})
