@@ -137,7 +137,8 @@ public final class GltfExporter {
                 for (int j = 0; j < joints.length; j++) {
                     joints[j] = g.jointNode(j) < 0 ? nodes.documentFrame() : nodes.node(g.jointNode(j));
                 }
-                nodes.get(node).skin = meshes.skin(instance.skin().name(), g, nodes.jointNodes(joints));
+                nodes.get(node).skin = meshes.skin(instance.skin().name(), g,
+                        nodes.withTransformedAncestors(nodes.jointNodes(joints)));
             }
         }
         ClipExport clips = new ClipExport(model, skeleton, nodes, instanceNodes, bin, warnings);

@@ -185,7 +185,12 @@ final class MeshExport {
 
     /** Writes the skin of {@code geometry} with the given joint nodes (one per palette joint). */
     int skin(String name, SkinnedGeometry geometry, int[] jointNodes) {
-        int ibm = bin.floats(geometry.bindMatrixArray(), "MAT4", 16, 0, false);
+        // Joints past the geometry's are ancestors no vertex is bound to (NodeLayout.withTransformedAncestors).
+        float[] matrices = java.util.Arrays.copyOf(geometry.bindMatrixArray(), 16 * jointNodes.length);
+        for (int j = geometry.jointCount(); j < jointNodes.length; j++) {
+            new Matrix4f().get(matrices, 16 * j);
+        }
+        int ibm = bin.floats(matrices, "MAT4", 16, 0, false);
         skins.add(new GltfSkin(name, jointNodes, ibm));
         return skins.size() - 1;
     }

@@ -60,6 +60,8 @@ final class NodeLayout {
     private final Model model;
     private final int root;
     private final boolean[] holdsMesh;
+    /** Per glTF node (those made from the model's): whether some clip animates it. */
+    private final boolean[] animated;
     private int documentFrame = -1;
 
     /**
@@ -109,6 +111,10 @@ final class NodeLayout {
             }
         }
         this.holdsMesh = new boolean[nodes.size()];
+        this.animated = new boolean[nodes.size()];
+        for (Node n : model.nodes()) {
+            this.animated[offset + n.index()] = animated[n.index()];
+        }
     }
 
     private static void transform(Node n, boolean animated, float[] rest, GltfNode g) {
@@ -219,6 +225,70 @@ final class NodeLayout {
             return g;
         }
         return add(-1, name);
+    }
+
+    /**
+     * The skin's joints {@code joints} followed by the skeleton's non-joint ancestors when one of
+     * them has a transform of its own (the up-axis root, an armature object), as joints no vertex
+     * is bound to. A skinned mesh node is a scene root (see {@link #skinnedMeshNode}), and engines
+     * differ in what they make of the skeleton's other ancestors: jMonkeyEngine's loader drops
+     * their transforms, three.js binds the mesh at its own world matrix when it sits under them.
+     * Every engine keeps a joint's transform.
+     */
+    int[] withTransformedAncestors(int[] joints) {
+        int[] parents = new int[nodes.size()];
+        java.util.Arrays.fill(parents, -1);
+        for (int i = 0; i < nodes.size(); i++) {
+            for (int c : nodes.get(i).children) {
+                parents[c] = i;
+            }
+        }
+        Set<Integer> jointSet = new HashSet<>();
+        for (int j : joints) {
+            jointSet.add(j);
+        }
+        // The deepest node on the first joint's path to the root that every joint's path passes through.
+        List<Integer> path = new ArrayList<>();
+        for (int a = joints.length > 0 ? joints[0] : -1; a >= 0; a = parents[a]) {
+            path.add(a);
+        }
+        int common = 0;
+        for (int j : joints) {
+            Set<Integer> ancestors = new HashSet<>();
+            for (int a = j; a >= 0; a = parents[a]) {
+                ancestors.add(a);
+            }
+            while (common < path.size() && !ancestors.contains(path.get(common))) {
+                common++;
+            }
+        }
+        List<Integer> added = new ArrayList<>();
+        boolean transformed = false;
+        for (int i = common; i < path.size(); i++) {
+            int a = path.get(i);
+            if (!jointSet.contains(a)) {
+                added.add(a);
+                transformed |= !isIdentity(nodes.get(a), a);
+            }
+        }
+        if (!transformed) {
+            return joints;
+        }
+        int[] result = java.util.Arrays.copyOf(joints, joints.length + added.size());
+        for (int i = 0; i < added.size(); i++) {
+            result[joints.length + i] = added.get(i);
+        }
+        return result;
+    }
+
+    private boolean isIdentity(GltfNode n, int gltfNode) {
+        if (n.matrix != null) {
+            return new Matrix4f().set(n.matrix).equals(new Matrix4f(), 0f);
+        }
+        boolean t = n.translation == null || n.translation[0] == 0f && n.translation[1] == 0f && n.translation[2] == 0f;
+        boolean r = n.rotation == null || n.rotation[0] == 0f && n.rotation[1] == 0f && n.rotation[2] == 0f;
+        boolean s = n.scale == null || n.scale[0] == 1f && n.scale[1] == 1f && n.scale[2] == 1f;
+        return t && r && s && (gltfNode >= animated.length || !animated[gltfNode]);
     }
 
     /** Distinct joint nodes for a skin: a node named twice gets an identity child for its second use. */
