@@ -34,7 +34,7 @@ import com.fasterxml.jackson.core.JsonGenerator;
  * naming the methods, and for CoR the vertex attribute {@value MeshExport#COR_ATTRIBUTE} (each
  * vertex's centre of rotation, computed here by {@link CentresOfRotation} with the paper's
  * parameters, in the space of POSITION). The layout, the extension's schema and what is converted
- * how (bind shape, up axis, resampled clips) are in docs/integrations-export.md. A COLLADA
+ * how (bind shape, up axis, resampled clips) are in docs/integrations.md. A COLLADA
  * document that is not Y-up in metres gets a root node that makes it so; the model's own
  * coordinates are written unchanged beneath it.
  *

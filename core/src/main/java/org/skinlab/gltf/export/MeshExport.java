@@ -361,7 +361,7 @@ final class MeshExport {
         g.writeEndObject();
     }
 
-    /** The primitive's {@value #EXTENSION} object (docs/integrations-export.md). */
+    /** The primitive's {@value #EXTENSION} object (docs/integrations.md). */
     private void writeExtension(JsonGenerator g) throws IOException {
         g.writeObjectFieldStart("extensions");
         g.writeObjectFieldStart(EXTENSION);

@@ -28,7 +28,7 @@ import picocli.CommandLine.Model.CommandSpec;
 
 /**
  * {@code skinlab export FILE --out OUT.glb [--methods lbs,dqs,cor]}: the model as a binary glTF
- * with skinlab's bind-time skinning data ({@link GltfExporter}; docs/integrations-export.md).
+ * with skinlab's bind-time skinning data ({@link GltfExporter}; docs/integrations.md).
  * Prints one summary line, and a line per warning (an image left out, ...) on stderr. Exit 0 when
  * written, 2 for a usage error (a method the export has no data for, an output that cannot be
  * written), 3 when FILE cannot be imported.
