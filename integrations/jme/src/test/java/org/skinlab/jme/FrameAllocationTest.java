@@ -33,7 +33,7 @@ public class FrameAllocationTest {
         for (SkinlabSkinningControl.Mode mode : SkinlabSkinningControl.Mode.values()) {
             for (SkinningMethod method : new SkinningMethod[] {SkinningMethod.LBS, SkinningMethod.DQS, SkinningMethod.COR}) {
                 long bytes = app.call(() -> allocatedPerFrames(mode, method));
-                System.out.println(method.key() + " " + mode + ": " + bytes + " bytes allocated in 1000 frames (the least of five rounds)");
+                System.out.println(method.key() + " " + mode + ": " + bytes + " bytes allocated in 1000 frames (the least of up to twenty rounds)");
                 assertEquals(method.key() + " " + mode + " allocated", 0, bytes);
             }
         }
@@ -56,9 +56,11 @@ public class FrameAllocationTest {
             composer[0].update(0.016f);
             control.update(0.016f);
         }
-        // The least of five rounds: a round may catch the JIT's own one-off allocations on this thread.
+        // The least of up to twenty rounds, stopping at a round that allocates nothing: until C2 has
+        // compiled the kernels (later on a busy machine), the interpreter and C1 allocate what
+        // escape analysis removes; a frame that truly allocates does so in every round.
         long least = Long.MAX_VALUE;
-        for (int round = 0; round < 5; round++) {
+        for (int round = 0; round < 20 && least > 0; round++) {
             long before = threads.getThreadAllocatedBytes(id);
             for (int i = 0; i < 1000; i++) {
                 control.update(0.016f);

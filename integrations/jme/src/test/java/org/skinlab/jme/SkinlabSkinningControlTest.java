@@ -32,7 +32,7 @@ import org.skinlab.skinning.SkinningMethod;
  * The control's CPU path (the mesh's Position buffer) and GPU path (positions read back from the
  * GPU, {@link GpuReadback}) against skinlab's own CLI ({@code skinlab pose}) on every bundled glb
  * and every skinlab-exported glb (-Pexported=DIR), for LBS, DQS and CoR, at three key times of the
- * file's first clip: world positions agree within 1e-5 of the model's size (its bounding box
+ * file's first clip (about 0.2, 0.45 and 0.85 through, {@link #keyTimes}): world positions agree within 1e-5 of the model's size (its bounding box
  * diagonal at that time). Times on keys, so that jME's and skinlab's interpolation between keys
  * (nlerp against slerp) does not enter: the test is about the skinning.
  */
@@ -148,7 +148,12 @@ public class SkinlabSkinningControlTest {
         }
     }
 
-    /** Three key times of the clip's first track with keys (a quarter, half, three quarters through). */
+    /**
+     * Three key times of the clip's first track with keys, about 0.2, 0.45 and 0.85 through (as the
+     * three.js add-on's test). Not the middle: the "full" cylinders bend and twist by 180 degrees
+     * there, where DQS and CoR jump (two rotations half a turn apart tie for the hemisphere test,
+     * Kavan et al. 2008) and float noise decides the side.
+     */
     private double[] keyTimes(Path file, String clip) {
         return app.call(() -> {
             app.getAssetManager().clearCache();
@@ -165,7 +170,8 @@ public class SkinlabSkinningControlTest {
                 throw new IllegalStateException(file + ": clip " + clip + " has no track with 4 keys");
             }
             int n = keys.length;
-            return new double[] {keys[n / 4], keys[n / 2], keys[3 * n / 4]};
+            // Never the last key: jME's composer wraps a looping clip's end to its start.
+            return new double[] {keys[Math.max(1, n / 5)], keys[9 * n / 20], keys[Math.min(n - 2, 17 * n / 20)]};
         });
     }
 
