@@ -5,6 +5,10 @@
 // axis (Blender's choice); JointPalette's class comment gives the reasons. The arithmetic is in
 // doubles here and in floats in core; both round to the same floats up to a few ulps.
 
+import {Matrix4} from 'three';
+
+const IDENTITY = Object.freeze([1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]);
+
 /** Texels (RGBA floats) per joint in the palette texture: M rows 0-2, S rows 3-5, rotation 6, dual 7. */
 export const TEXELS_PER_JOINT = 8;
 export const MATRIX_ROWS = 0;
@@ -24,10 +28,11 @@ export function bindPivots(bindMatrices) {
     const joints = bindMatrices.length / 16;
     const pivots = new Float64Array(12 * joints);
     for (let j = 0; j < joints; j++) {
-        let base = invert4(bindMatrices, 16 * j);
-        if (base === null) {
-            base = [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]; // singular: centre scale at the origin, as core
-        }
+        const bind = new Matrix4().fromArray(bindMatrices, 16 * j);
+        const det = bind.determinant();
+        // Singular or not finite: centre scale at the origin, as core does.
+        const base = det !== 0 && Number.isFinite(det) && bind.invert().elements.every(Number.isFinite)
+            ? bind.elements : IDENTITY;
         // Columns of the linear part.
         const cols = [[base[0], base[1], base[2]], [base[4], base[5], base[6]], [base[8], base[9], base[10]]];
         const r = rotationOf(cols);
@@ -300,32 +305,4 @@ function frobenius(c) {
 function inverseTransposeColumns(c) {
     const det = dot(c[0], cross(c[1], c[2]));
     return [cross(c[1], c[2]), cross(c[2], c[0]), cross(c[0], c[1])].map(v => v.map(x => x / det));
-}
-
-/** The inverse of the column-major 4x4 at m[o], or null when singular or not finite. */
-function invert4(m, o) {
-    const a = Array.from({length: 16}, (_, i) => m[o + i]);
-    const inv = new Array(16);
-    inv[0] = a[5] * a[10] * a[15] - a[5] * a[11] * a[14] - a[9] * a[6] * a[15] + a[9] * a[7] * a[14] + a[13] * a[6] * a[11] - a[13] * a[7] * a[10];
-    inv[4] = -a[4] * a[10] * a[15] + a[4] * a[11] * a[14] + a[8] * a[6] * a[15] - a[8] * a[7] * a[14] - a[12] * a[6] * a[11] + a[12] * a[7] * a[10];
-    inv[8] = a[4] * a[9] * a[15] - a[4] * a[11] * a[13] - a[8] * a[5] * a[15] + a[8] * a[7] * a[13] + a[12] * a[5] * a[11] - a[12] * a[7] * a[9];
-    inv[12] = -a[4] * a[9] * a[14] + a[4] * a[10] * a[13] + a[8] * a[5] * a[14] - a[8] * a[6] * a[13] - a[12] * a[5] * a[10] + a[12] * a[6] * a[9];
-    inv[1] = -a[1] * a[10] * a[15] + a[1] * a[11] * a[14] + a[9] * a[2] * a[15] - a[9] * a[3] * a[14] - a[13] * a[2] * a[11] + a[13] * a[3] * a[10];
-    inv[5] = a[0] * a[10] * a[15] - a[0] * a[11] * a[14] - a[8] * a[2] * a[15] + a[8] * a[3] * a[14] + a[12] * a[2] * a[11] - a[12] * a[3] * a[10];
-    inv[9] = -a[0] * a[9] * a[15] + a[0] * a[11] * a[13] + a[8] * a[1] * a[15] - a[8] * a[3] * a[13] - a[12] * a[1] * a[11] + a[12] * a[3] * a[9];
-    inv[13] = a[0] * a[9] * a[14] - a[0] * a[10] * a[13] - a[8] * a[1] * a[14] + a[8] * a[2] * a[13] + a[12] * a[1] * a[10] - a[12] * a[2] * a[9];
-    inv[2] = a[1] * a[6] * a[15] - a[1] * a[7] * a[14] - a[5] * a[2] * a[15] + a[5] * a[3] * a[14] + a[13] * a[2] * a[7] - a[13] * a[3] * a[6];
-    inv[6] = -a[0] * a[6] * a[15] + a[0] * a[7] * a[14] + a[4] * a[2] * a[15] - a[4] * a[3] * a[14] - a[12] * a[2] * a[7] + a[12] * a[3] * a[6];
-    inv[10] = a[0] * a[5] * a[15] - a[0] * a[7] * a[13] - a[4] * a[1] * a[15] + a[4] * a[3] * a[13] + a[12] * a[1] * a[7] - a[12] * a[3] * a[5];
-    inv[14] = -a[0] * a[5] * a[14] + a[0] * a[6] * a[13] + a[4] * a[1] * a[14] - a[4] * a[2] * a[13] - a[12] * a[1] * a[6] + a[12] * a[2] * a[5];
-    inv[3] = -a[1] * a[6] * a[11] + a[1] * a[7] * a[10] + a[5] * a[2] * a[11] - a[5] * a[3] * a[10] - a[9] * a[2] * a[7] + a[9] * a[3] * a[6];
-    inv[7] = a[0] * a[6] * a[11] - a[0] * a[7] * a[10] - a[4] * a[2] * a[11] + a[4] * a[3] * a[10] + a[8] * a[2] * a[7] - a[8] * a[3] * a[6];
-    inv[11] = -a[0] * a[5] * a[11] + a[0] * a[7] * a[9] + a[4] * a[1] * a[11] - a[4] * a[3] * a[9] - a[8] * a[1] * a[7] + a[8] * a[3] * a[5];
-    inv[15] = a[0] * a[5] * a[10] - a[0] * a[6] * a[9] - a[4] * a[1] * a[10] + a[4] * a[2] * a[9] + a[8] * a[1] * a[6] - a[8] * a[2] * a[5];
-    const det = a[0] * inv[0] + a[1] * inv[4] + a[2] * inv[8] + a[3] * inv[12];
-    if (det === 0 || !Number.isFinite(det)) {
-        return null;
-    }
-    const r = inv.map(v => v / det);
-    return r.every(Number.isFinite) ? r : null;
 }
