@@ -97,7 +97,8 @@ final class MeshExport {
         if (morph.isPresent()) {
             Morph m = morph.get();
             positions = perVertex(mesh, m.base().positions(), bind, false);
-            normals = m.base().hasNormals() && mesh.hasNormals() ? transformNormals(m.base().normals(), bind) : null;
+            normals = m.base().hasNormals() && mesh.hasNormals()
+                    ? transformNormalOffsets(m.base().normals(), bind) : null;
             boolean relative = m.method() == Morph.Method.RELATIVE;
             float[] basePositions = m.base().positions();
             float[] baseNormals = m.base().normals();
@@ -215,7 +216,7 @@ final class MeshExport {
         return out;
     }
 
-    /** Normals by the inverse-transpose of {@code m} (cofactor, sign of the determinant). */
+    /** Normals, or their morph offsets, by the inverse-transpose of {@code m} (cofactor, sign of the determinant). */
     private static float[] transformNormalOffsets(float[] normals, Matrix4f m) {
         Matrix3f c = new Matrix3f();
         m.get3x3(c).cofactor();
@@ -231,10 +232,6 @@ final class MeshExport {
             out[i + 2] = v.z;
         }
         return out;
-    }
-
-    private static float[] transformNormals(float[] normals, Matrix4f m) {
-        return transformNormalOffsets(normals, m);
     }
 
     /**
