@@ -2,6 +2,7 @@ package org.skinlab.android.logic;
 
 import org.skinlab.ar.LensGlsl;
 import org.skinlab.internal.scene.MaterialGlsl;
+import org.skinlab.skinning.PaletteTexels;
 import org.skinlab.skinning.SkinningGlsl;
 
 /**
@@ -110,10 +111,10 @@ public final class GlesShaders {
             + "#define UV_LOCATION " + UV + "\n"
             + "#define COLOR_LOCATION " + COLOR + "\n"
             + "#define INFLUENCES " + INFLUENCES + "\n"
-            + "#define MATRIX_TEXEL " + PaletteTexture.MATRIX_TEXEL + "\n"
-            + "#define ROTATION_TEXEL " + PaletteTexture.ROTATION_TEXEL + "\n"
-            + "#define SCALE_TEXEL " + PaletteTexture.SCALE_TEXEL + "\n"
-            + "#define BONE_TEXEL " + PaletteTexture.BONE_TEXEL + "\n";
+            + "#define MATRIX_TEXEL " + PaletteTexels.MATRIX_TEXEL + "\n"
+            + "#define ROTATION_TEXEL " + PaletteTexels.ROTATION_TEXEL + "\n"
+            + "#define SCALE_TEXEL " + PaletteTexels.SCALE_TEXEL + "\n"
+            + "#define BONE_TEXEL " + PaletteTexels.BONE_TEXEL + "\n";
 
     private static final String SKINNED_VERTEX_BODY = """
             precision highp float;

@@ -26,6 +26,7 @@ import org.skinlab.internal.metrics.ArtifactMetrics;
 import org.skinlab.skinning.InfluenceView;
 import org.skinlab.skinning.JointPalette;
 import org.skinlab.skinning.NormalTransform;
+import org.skinlab.skinning.PaletteTexels;
 import org.skinlab.skinning.SkinnedGeometry;
 import org.skinlab.skinning.Skinner;
 import org.skinlab.skinning.Skinners;
@@ -208,8 +209,7 @@ class GlesSkinningTest {
                     assertTrue(palette.mirrorsMatrices() && palette.mirrorsScales(), "the mirrored pose mirrors");
                     // Packed and flagged as a frame carrying this palette is (Frame.copyPalette).
                     palette.prepareAll();
-                    PaletteTexture.pack(palette.jointCount(), palette.matrices(), palette.dualQuaternions(),
-                            palette.hasScale() ? palette.scales() : null, palette.boneRows(), packed);
+                    PaletteTexels.pack(palette, true, packed);
                     gpu.capture(program, packed, code, palette.hasScale(), palette.mirrorsMatrices(),
                             palette.mirrorsScales(), gpuPositions, gpuNormals);
                     kernel.skinAll(palette, cpuPositions, cpuNormals);
