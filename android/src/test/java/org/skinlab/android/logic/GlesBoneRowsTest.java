@@ -53,6 +53,7 @@ class GlesBoneRowsTest {
         config.stopAnimation();
         try (GlesContext context = GlesContext.openOrSkip();
                 SkeletalAnimatedMesh mesh = new SkeletalAnimatedMesh(model, model.clips().get(0), config)) {
+            assertTrue(context.capabilities().GLES30, "an OpenGL ES 3.0 context");
             mesh.seek(0.3 * mesh.clipDuration());
             mesh.step(0.0);
             int program = GlesPrograms.link(boneRowShader(), GlesShaders.skinnedFragment(), ROWS);

@@ -1,6 +1,7 @@
 package org.skinlab.android.logic;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.lwjgl.opengles.GLES30.*;
 
 import java.nio.ByteBuffer;
@@ -49,6 +50,7 @@ class GlesColourRampTest {
     @Test
     void theStripDrawsTheJavaColours() {
         try (GlesContext context = GlesContext.openOrSkip()) {
+            assertTrue(context.capabilities().GLES30, "an OpenGL ES 3.0 context");
             int program = GlesPrograms.link(VERTEX, ColourRamp.expand(FRAGMENT));
             int target = glGenTextures();
             glBindTexture(GL_TEXTURE_2D, target);
