@@ -11,7 +11,7 @@
 #    Environment ...`, `OpenJDK 64-Bit Server VM ...`) are dropped; every other line passes
 #    unchanged, at once. Gradle 8's launcher has no such probe.
 #  - The exit status is Gradle's, except for `run` (`gradle :desktop:run`): there it is skinlab's
-#    own (docs/running.md, "Exit statuses"), handed over through the file named by
+#    own (docs/cli.md, "Exit statuses"), handed over through the file named by
 #    SKINLAB_EXIT_STATUS_FILE, so that a status such as 4 (no display) reaches the shell without
 #    Gradle's failure banner. Plain `gradle` fails the build with the status in its message.
 #

@@ -6,7 +6,7 @@
 #     skip reason, its slowest tests). On a failure of the tests themselves, after their summary,
 #     the full log of each failing run.
 #  2. `./gradlew -q :desktop:run` without a display: exactly one line, starting "skinlab: ", and
-#     exit status 4 (unavailable; docs/running.md, "Exit statuses").
+#     exit status 4 (unavailable; docs/cli.md, "Exit statuses").
 #
 # Any other line fails the check, printed with its number. The clone is made from the committed
 # HEAD (what a newcomer gets); build outputs and untracked files of this checkout play no part. It
