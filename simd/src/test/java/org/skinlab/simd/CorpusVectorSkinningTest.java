@@ -60,7 +60,7 @@ class CorpusVectorSkinningTest {
     @MethodSource("characters")
     void fastKernelsEqualTheScalarOnes(Path file) throws Exception {
         Model model = ColladaImporter.read(file);
-        assumeTrue(model.instances().stream().anyMatch(i -> i.isSkinned()), file + " has no skin");
+        assumeTrue(model.instances().stream().anyMatch(i -> i.isSkinned()), "a corpus file without a skin");
         assumeTrue(VectorSkinnerProvider.moduleAvailable(), "no incubator module");
         SkinnedModel skinned = SkinnedModel.of(model);
         float start = skinned.sampler().start();

@@ -16,6 +16,9 @@ import java.util.Map;
 public final class TestSummary {
     /** How many of the slowest tests the summary names. */
     static final int SLOWEST = 5;
+    /** How many skip reasons and failures it names at most; the rest are counted, the log has them. */
+    static final int REASONS = 5;
+    static final int FAILURES = 20;
 
     /** What became of one test. */
     public enum Outcome { PASSED, SKIPPED, FAILED }
@@ -68,11 +71,23 @@ public final class TestSummary {
                 skipped.merge(r.reason(), 1, Integer::sum);
             }
         }
-        skipped.forEach((reason, n) -> lines.add(String.format(Locale.ROOT, "  skipped %d: %s", n, reason)));
-        for (Result r : results) {
-            if (r.outcome() == Outcome.FAILED) {
-                lines.add("  FAILED " + r.name() + ": " + r.reason());
+        int shown = 0;
+        int more = 0;
+        for (Map.Entry<String, Integer> reason : skipped.entrySet()) {
+            if (shown++ < REASONS) {
+                lines.add(String.format(Locale.ROOT, "  skipped %d: %s", reason.getValue(), reason.getKey()));
+            } else {
+                more += reason.getValue();
             }
+        }
+        if (more > 0) {
+            lines.add(String.format(Locale.ROOT, "  skipped %d more, for %d other reasons (the log names them)",
+                    more, skipped.size() - REASONS));
+        }
+        results.stream().filter(r -> r.outcome() == Outcome.FAILED).limit(FAILURES)
+                .forEach(r -> lines.add("  FAILED " + r.name() + ": " + r.reason()));
+        if (failed > FAILURES) {
+            lines.add(String.format(Locale.ROOT, "  and %d more failures (the log has them)", failed - FAILURES));
         }
         List<Result> slowest = results.stream()
                 .filter(r -> r.outcome() != Outcome.SKIPPED)

@@ -33,6 +33,26 @@ class TestSummaryTest {
     }
 
     @Test
+    void manyReasonsAndFailuresAreCountedBeyondTheirCaps() {
+        TestSummary summary = new TestSummary("desktop");
+        for (int i = 0; i < 8; i++) {
+            summary.add(result("S.s" + i, TestSummary.Outcome.SKIPPED, 0, "reason " + i));
+        }
+        summary.add(result("S.again", TestSummary.Outcome.SKIPPED, 0, "reason 7"));
+        for (int i = 0; i < 23; i++) {
+            summary.add(result("F.f" + i, TestSummary.Outcome.FAILED, 0, "broke " + i));
+        }
+        List<String> lines = summary.lines(Duration.ofSeconds(1), "l");
+        assertEquals(List.of("  skipped 1: reason 0", "  skipped 1: reason 1", "  skipped 1: reason 2",
+                "  skipped 1: reason 3", "  skipped 1: reason 4",
+                "  skipped 4 more, for 3 other reasons (the log names them)"), lines.subList(1, 7));
+        assertEquals("  FAILED F.f0: broke 0", lines.get(7));
+        assertEquals("  FAILED F.f19: broke 19", lines.get(26));
+        assertEquals("  and 3 more failures (the log has them)", lines.get(27));
+        assertEquals(29, lines.size(), "with the slowest line");
+    }
+
+    @Test
     void aRunWithoutTestsIsOneLine() {
         assertEquals(List.of("simd: 0 tests, 0 passed, 0 skipped, 0 failed in 0.3 s (full log: l)"),
                 new TestSummary("simd").lines(Duration.ofMillis(300), "l"));
