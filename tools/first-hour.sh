@@ -57,27 +57,28 @@ check_lines() { # NAME FILE PATTERN...: every line of FILE matches one of the pa
     done < "$file"
 }
 
+# The full log of every test run that failed, or that ended without its summary (the modules'
+# build/test-output folders, gradle/test-summary's among them).
+show_failing_logs() {
+    local log
+    while IFS= read -r log; do
+        if [ ! -e "${log%.log}-counts.properties" ]; then
+            echo "=== the full log of a run that ended without its summary: $log"
+            cat "$log"
+        elif ! grep -qx 'failed=0' "${log%.log}-counts.properties"; then
+            echo "=== the full log of the failing run: $log"
+            cat "$log"
+        fi
+    done < <(find . -path '*/build/test-output/*.log' -not -path './integrations/*' -not -path './examples/*' | sort)
+}
+
 echo "=== ./gradlew test (on a clean clone: $clone)"
 test_out=$(mktemp)
 ./gradlew test > "$test_out" 2>&1
 test_status=$?
 cat "$test_out"
 if [ "$test_status" != 0 ]; then
-    # The full log of every run that failed, or that ended without its summary.
-    for counts in */build/test-output/*-counts.properties; do
-        [ -e "$counts" ] || continue
-        if ! grep -qx 'failed=0' "$counts"; then
-            echo "=== the full log of the failing run: ${counts%-counts.properties}.log"
-            cat "${counts%-counts.properties}.log"
-        fi
-    done
-    for log in */build/test-output/*.log; do
-        [ -e "$log" ] || continue
-        if [ ! -e "${log%.log}-counts.properties" ]; then
-            echo "=== the full log of a run that ended without its summary: $log"
-            cat "$log"
-        fi
-    done
+    show_failing_logs
     echo "first-hour: ./gradlew test failed (status $test_status)"
     exit 1
 fi
