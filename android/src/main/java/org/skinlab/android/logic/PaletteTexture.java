@@ -1,7 +1,6 @@
 package org.skinlab.android.logic;
 
 import org.skinlab.simulation.Frame;
-import org.skinlab.skinning.JointPalette;
 import org.skinlab.skinning.PaletteTexels;
 
 /**
@@ -28,8 +27,6 @@ public final class PaletteTexture {
 
     /** Packs geometry {@code g}'s palette of {@code frame} into {@code dest} (at least {@link #floats}). */
     public static void pack(Frame frame, int g, float[] dest) {
-        JointPalette palette = frame.palette(g);
-        PaletteTexels.pack(palette.jointCount(), palette.matrices(), palette.dualQuaternions(),
-                palette.hasScale() ? palette.scales() : null, palette.boneRows(), dest);
+        PaletteTexels.pack(frame.palette(g), true, dest);
     }
 }
