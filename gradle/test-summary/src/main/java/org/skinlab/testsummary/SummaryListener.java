@@ -144,15 +144,14 @@ public final class SummaryListener implements TestExecutionListener {
             report(id, TestSummary.Outcome.SKIPPED, reason);
             return;
         }
-        boolean any = false;
-        for (TestIdentifier d : plan.getDescendants(id)) {
+        Set<TestIdentifier> descendants = plan.getDescendants(id);
+        if (descendants.isEmpty() && id.getParentId().isPresent()) {
+            report(id, TestSummary.Outcome.SKIPPED, reason);
+        }
+        for (TestIdentifier d : descendants) {
             if (d.isTest() && !reported.contains(d.getUniqueId())) {
                 report(d, TestSummary.Outcome.SKIPPED, reason);
-                any = true;
             }
-        }
-        if (!any && plan.getDescendants(id).isEmpty() && id.getParentId().isPresent()) {
-            report(id, TestSummary.Outcome.SKIPPED, reason);
         }
     }
 
@@ -165,7 +164,7 @@ public final class SummaryListener implements TestExecutionListener {
 
     /**
      * "SimpleClass.method" for a method, with the invocation's display name after it for a
-     * parameterized or repeated one ("SkinnerTest.agrees [3] dqs"); a test without a class (a
+     * parameterized or repeated one ("SkinnerTest.agrees [3] method=dqs"); a test without a class (a
      * dynamic one, an engine's own failure) adds its display names below the nearest class.
      */
     private String name(TestIdentifier id) {
